@@ -1,0 +1,48 @@
+//! The finished diagram as the library hands it out: the store, renumbered
+//! to public ids, plus the sites and the build statistics. Its accessors live
+//! in `query`.
+
+use super::ids::{HalfEdgeId, SiteId};
+use super::store::Store;
+use crate::geometry::Point;
+
+/// Counts from one build.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct BuildStats {
+    /// Points given to the builder.
+    pub input_points: usize,
+    /// Distinct sites in the diagram.
+    pub sites: usize,
+    /// Input points that repeated an earlier point and were merged into it.
+    pub duplicate_points: usize,
+    /// Voronoi vertices (finite ones; vertices at infinity are not counted).
+    pub vertices: usize,
+    /// Voronoi edges between two sites, rays and lines included.
+    pub edges: usize,
+}
+
+/// A Voronoi diagram. Immutable; reading it from many threads at once is safe.
+///
+/// Site ids are public and dense: site `k` is the `k`-th distinct input point
+/// in order of first appearance. Vertex ids `0..vertex_count()` are the finite
+/// vertices. Edge ids `0..edge_count()` are the edges between two sites.
+#[derive(Clone, Debug)]
+pub struct Diagram {
+    /// Sites `0..sites.len()` are the real ones; the point at infinity is
+    /// `sites.len()`. Vertices `0..finite_vertices` are finite, the rest at
+    /// infinity.
+    pub(crate) store: Store,
+    /// Input coordinates of each site.
+    pub(crate) sites: Vec<Point>,
+    pub(crate) finite_vertices: usize,
+    /// Per public edge: its canonical half-edge.
+    pub(crate) edges: Vec<HalfEdgeId>,
+    /// Per half-edge: its public edge id, or `NONE` for edges along the
+    /// point at infinity.
+    pub(crate) edge_of_half_edge: Vec<u32>,
+    /// Per input point: the site it became.
+    pub(crate) input_site: Vec<SiteId>,
+    pub(crate) stats: BuildStats,
+    /// Diagonal of the input's bounding box, the scale of "zero length".
+    pub(crate) extent: f64,
+}

@@ -1,0 +1,50 @@
+//! The error type of the builder.
+
+/// What kind of input problem stopped a build or an insertion.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum ErrorKind {
+    /// A coordinate is NaN or infinite.
+    InvalidCoordinate,
+    /// More sites than the 32-bit ids of the diagram can hold.
+    TooLarge,
+}
+
+/// An input error: its kind, a message that names the offending input
+/// indices, and those indices.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Error {
+    kind: ErrorKind,
+    message: String,
+    indices: Vec<usize>,
+}
+
+impl Error {
+    pub(crate) fn new(kind: ErrorKind, message: String, indices: Vec<usize>) -> Error {
+        Error { kind, message, indices }
+    }
+
+    /// The kind of problem.
+    pub fn kind(&self) -> ErrorKind {
+        self.kind
+    }
+
+    /// The input indices involved (for points: their index in the order they
+    /// were added to the builder).
+    pub fn indices(&self) -> &[usize] {
+        &self.indices
+    }
+
+    /// The message, naming the offending input indices.
+    pub fn message(&self) -> &str {
+        &self.message
+    }
+}
+
+impl std::fmt::Display for Error {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for Error {}

@@ -1,0 +1,14 @@
+//! Geometry: coordinates, exact sign predicates, vertex solvers, and the
+//! power-of-two normalisation of the input.
+//!
+//! Nothing here knows about the diagram. Every sign decision the construction
+//! makes goes through [`predicates`], which returns enums, so no other module
+//! compares a raw determinant with zero.
+
+pub(crate) mod fault;
+pub mod point;
+pub mod predicates;
+pub(crate) mod scale;
+pub mod solvers;
+
+pub use point::Point;

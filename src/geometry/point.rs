@@ -1,0 +1,68 @@
+//! The coordinate type shared by the whole crate.
+
+/// A point of the plane, in `f64` coordinates.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Point {
+    /// The x coordinate.
+    pub x: f64,
+    /// The y coordinate.
+    pub y: f64,
+}
+
+impl Point {
+    /// A point from its coordinates.
+    #[inline]
+    pub const fn new(x: f64, y: f64) -> Self {
+        Point { x, y }
+    }
+
+    /// The same point with `-0.0` replaced by `+0.0`, so that equal points
+    /// compare equal bit for bit.
+    #[inline]
+    pub(crate) fn canonical_zero(self) -> Self {
+        Point::new(self.x + 0.0, self.y + 0.0)
+    }
+
+    /// Squared Euclidean distance.
+    #[inline]
+    pub fn distance_squared(self, other: Point) -> f64 {
+        let dx = self.x - other.x;
+        let dy = self.y - other.y;
+        dx * dx + dy * dy
+    }
+
+    /// Euclidean distance.
+    #[inline]
+    pub fn distance(self, other: Point) -> f64 {
+        self.distance_squared(other).sqrt()
+    }
+
+    /// `true` when both coordinates are finite.
+    #[inline]
+    pub fn is_finite(self) -> bool {
+        self.x.is_finite() && self.y.is_finite()
+    }
+
+    #[inline]
+    pub(crate) fn scaled(self, factor: f64) -> Self {
+        Point::new(self.x * factor, self.y * factor)
+    }
+}
+
+impl From<[f64; 2]> for Point {
+    fn from(p: [f64; 2]) -> Self {
+        Point::new(p[0], p[1])
+    }
+}
+
+impl From<(f64, f64)> for Point {
+    fn from(p: (f64, f64)) -> Self {
+        Point::new(p.0, p.1)
+    }
+}
+
+impl From<Point> for [f64; 2] {
+    fn from(p: Point) -> Self {
+        [p.x, p.y]
+    }
+}

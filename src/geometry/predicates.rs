@@ -1,0 +1,184 @@
+//! Sign predicates.
+//!
+//! Sign convention: [`orientation`] is `CounterClockwise` when `c` lies to the
+//! left of the directed line `a → b`; [`in_circle`] is `Inside` when `d` lies
+//! strictly inside the circle through `a`, `b`, `c` given in counter-clockwise
+//! order.
+//!
+//! Precision: both are exact for every finite `f64` input whose intermediate
+//! products neither overflow nor underflow (Shewchuk's adaptive expansions,
+//! through the `robust` crate). The builder keeps coordinates within
+//! `2^-60 ..= 2^60` in magnitude (see `scale`), where that holds unless two
+//! points are closer than about `1e-70` times the input extent.
+//!
+//! In the `fault-injection` test build these predicates can be told to lie
+//! (see `fault`); the construction must stay valid whatever they answer.
+
+use super::fault;
+use super::point::Point;
+
+/// Which side of a directed line a point lies on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Orientation {
+    /// To the left of the line (counter-clockwise turn).
+    CounterClockwise,
+    /// To the right of the line (clockwise turn).
+    Clockwise,
+    /// On the line.
+    Collinear,
+}
+
+/// Where a point lies with respect to a circle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CirclePosition {
+    /// Strictly inside.
+    Inside,
+    /// Strictly outside.
+    Outside,
+    /// On the circle.
+    On,
+}
+
+#[inline]
+fn coord(p: Point) -> robust::Coord<f64> {
+    robust::Coord { x: p.x, y: p.y }
+}
+
+/// The orientation of the triple `(a, b, c)`: exact.
+#[inline]
+pub fn orientation(a: Point, b: Point, c: Point) -> Orientation {
+    let det = if fault::active() {
+        fault::perturb_difference(
+            (b.x - a.x) * (c.y - a.y),
+            (b.y - a.y) * (c.x - a.x),
+        )
+    } else {
+        robust::orient2d(coord(a), coord(b), coord(c))
+    };
+    if det > 0.0 {
+        Orientation::CounterClockwise
+    } else if det < 0.0 {
+        Orientation::Clockwise
+    } else {
+        Orientation::Collinear
+    }
+}
+
+/// Whether `d` lies inside the circle through the counter-clockwise triple
+/// `(a, b, c)`: exact.
+#[inline]
+pub fn in_circle(a: Point, b: Point, c: Point, d: Point) -> CirclePosition {
+    let det = if fault::active() {
+        // The same determinant split into the two halves whose difference
+        // decides the sign, so that relative noise can flip it near zero.
+        let (adx, ady) = (a.x - d.x, a.y - d.y);
+        let (bdx, bdy) = (b.x - d.x, b.y - d.y);
+        let (cdx, cdy) = (c.x - d.x, c.y - d.y);
+        let alift = adx * adx + ady * ady;
+        let blift = bdx * bdx + bdy * bdy;
+        let clift = cdx * cdx + cdy * cdy;
+        let plus = alift * (bdx * cdy) + blift * (cdx * ady) + clift * (adx * bdy);
+        let minus = alift * (cdx * bdy) + blift * (adx * cdy) + clift * (bdx * ady);
+        fault::perturb_difference(plus, minus)
+    } else {
+        robust::incircle(coord(a), coord(b), coord(c), coord(d))
+    };
+    if det > 0.0 {
+        CirclePosition::Inside
+    } else if det < 0.0 {
+        CirclePosition::Outside
+    } else {
+        CirclePosition::On
+    }
+}
+
+/// For three collinear points, whether `p` lies strictly between `a` and `b`.
+/// Exact: it compares coordinates only.
+#[inline]
+pub fn strictly_between(a: Point, b: Point, p: Point) -> bool {
+    if a.x != b.x {
+        (a.x < p.x && p.x < b.x) || (b.x < p.x && p.x < a.x)
+    } else {
+        (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y)
+    }
+}
+
+/// Whether the circle "through `a`, `b` and the point at infinity on the left
+/// of `a → b`" contains `p`: the open half-plane left of `a → b`, plus the
+/// open segment `ab` itself (the limit of circles through `a` and `b` whose
+/// centre runs off to the left). Exact.
+#[inline]
+pub fn in_half_plane_circle(a: Point, b: Point, p: Point) -> bool {
+    match orientation(a, b, p) {
+        Orientation::CounterClockwise => true,
+        Orientation::Clockwise => false,
+        Orientation::Collinear => !fault::active() && strictly_between(a, b, p),
+    }
+}
+
+/// Compares two squared distances as the construction sees them (perturbed
+/// in the fault-injection build). `true` when `d1 < d2`.
+#[inline]
+pub(crate) fn closer(d1: f64, d2: f64) -> bool {
+    if fault::active() {
+        fault::perturb(d1) < fault::perturb(d2)
+    } else {
+        d1 < d2
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    #[test]
+    fn orientation_signs() {
+        assert_eq!(orientation(p(0., 0.), p(1., 0.), p(0., 1.)), Orientation::CounterClockwise);
+        assert_eq!(orientation(p(0., 0.), p(1., 0.), p(0., -1.)), Orientation::Clockwise);
+        assert_eq!(orientation(p(0., 0.), p(1., 1.), p(3., 3.)), Orientation::Collinear);
+    }
+
+    #[test]
+    fn orientation_is_exact_near_degeneracy() {
+        // 0.1 + 0.2 style rounding: a point one ulp off the line is not collinear.
+        let a = p(0.5, 0.5);
+        let b = p(12.0, 12.0);
+        let c = p(24.0, f64::from_bits(24.0f64.to_bits() + 1));
+        assert_eq!(orientation(a, b, c), Orientation::CounterClockwise);
+        let c = p(24.0, 24.0);
+        assert_eq!(orientation(a, b, c), Orientation::Collinear);
+    }
+
+    #[test]
+    fn in_circle_cocircular_lattice_points() {
+        // The four corners of a unit square are cocircular.
+        let (a, b, c) = (p(0., 0.), p(1., 0.), p(1., 1.));
+        assert_eq!(in_circle(a, b, c, p(0., 1.)), CirclePosition::On);
+        assert_eq!(in_circle(a, b, c, p(0.5, 0.5)), CirclePosition::Inside);
+        assert_eq!(in_circle(a, b, c, p(2., 2.)), CirclePosition::Outside);
+        // One ulp inside the circle.
+        let y = f64::from_bits(1.0f64.to_bits() - 1);
+        assert_eq!(in_circle(a, b, c, p(0., y)), CirclePosition::Inside);
+    }
+
+    #[test]
+    fn half_plane_circle_boundary_cases() {
+        let (a, b) = (p(0., 0.), p(2., 0.));
+        assert!(in_half_plane_circle(a, b, p(1., 1e-300)));
+        assert!(!in_half_plane_circle(a, b, p(1., -1e-300)));
+        assert!(in_half_plane_circle(a, b, p(1., 0.)), "open segment is inside");
+        assert!(!in_half_plane_circle(a, b, p(3., 0.)), "beyond an endpoint is outside");
+        assert!(!in_half_plane_circle(a, b, p(0., 0.)), "the endpoint is on the circle");
+    }
+
+    #[test]
+    fn strictly_between_vertical() {
+        assert!(strictly_between(p(1., 0.), p(1., 4.), p(1., 2.)));
+        assert!(!strictly_between(p(1., 0.), p(1., 4.), p(1., 4.)));
+        assert!(!strictly_between(p(1., 0.), p(1., 4.), p(1., -2.)));
+    }
+}

@@ -1,0 +1,79 @@
+//! Normalisation of the input by an exact power of two.
+//!
+//! The predicates are exact as long as their intermediate products neither
+//! overflow nor underflow. Coordinates up to `2^60` in magnitude are used as
+//! they are; larger or tinier inputs are multiplied by a power of two (exact
+//! in binary floating point) to bring the largest magnitude near 1. Nothing
+//! is translated, because a translation rounds and would change the answer
+//! to near-degenerate questions.
+
+/// Largest magnitude used without rescaling.
+const UPPER: f64 = (1u64 << 60) as f64;
+/// Smallest largest-magnitude used without rescaling.
+const LOWER: f64 = 1.0 / UPPER;
+
+/// A power-of-two scale factor and its inverse.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Scale {
+    /// Input coordinates are multiplied by this to get internal ones.
+    pub to_internal: f64,
+    /// Internal coordinates are multiplied by this to get input ones.
+    pub to_input: f64,
+}
+
+impl Scale {
+    pub const IDENTITY: Scale = Scale { to_internal: 1.0, to_input: 1.0 };
+
+    /// The scale for inputs whose largest coordinate magnitude is `max_abs`.
+    pub fn for_max_abs(max_abs: f64) -> Scale {
+        if max_abs == 0.0 || (LOWER..=UPPER).contains(&max_abs) || !max_abs.is_finite() {
+            return Scale::IDENTITY;
+        }
+        // exponent e with 2^e <= max_abs < 2^(e+1)
+        let e = exponent_of(max_abs);
+        Scale { to_internal: pow2(-e), to_input: pow2(e) }
+    }
+
+    pub fn is_identity(&self) -> bool {
+        self.to_internal == 1.0
+    }
+}
+
+fn exponent_of(x: f64) -> i32 {
+    let bits = x.to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    if biased == 0 {
+        // subnormal: scale up first
+        exponent_of(x * pow2(64)) - 64
+    } else {
+        biased - 1023
+    }
+}
+
+/// 2^e for e in the normal range, built from bits.
+fn pow2(e: i32) -> f64 {
+    debug_assert!((-1022..=1023).contains(&e));
+    f64::from_bits(((e + 1023) as u64) << 52)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ordinary_inputs_are_not_scaled() {
+        assert!(Scale::for_max_abs(1e9).is_identity());
+        assert!(Scale::for_max_abs(1e-9).is_identity());
+        assert!(Scale::for_max_abs(0.0).is_identity());
+    }
+
+    #[test]
+    fn huge_and_tiny_inputs_are_scaled_by_powers_of_two() {
+        for &m in &[1e300, 3e-300, 5e-320, f64::MAX] {
+            let s = Scale::for_max_abs(m);
+            let v = m * s.to_internal;
+            assert!((1.0..2.0).contains(&v), "{m} -> {v}");
+            assert_eq!(s.to_internal * s.to_input, 1.0);
+        }
+    }
+}

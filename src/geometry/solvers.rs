@@ -1,0 +1,80 @@
+//! Vertex solvers: the position of a Voronoi vertex computed directly from its
+//! sites, never from old edge geometry, so errors do not accumulate.
+//!
+//! Precision: not exact. The circumcentre is computed relative to the first
+//! site, which keeps the relative error near a few ulps of the circle's
+//! radius for well-shaped triangles; it grows as the three sites approach a
+//! line. A solver that finds no solution says so, and the caller (the
+//! topology) decides what to store.
+
+use super::point::Point;
+
+/// The centre and radius of the circle through three points, or `None` when
+/// the points are collinear (as computed), where no such circle exists.
+#[inline]
+pub fn circumcircle(a: Point, b: Point, c: Point) -> Option<(Point, f64)> {
+    let (bx, by) = (b.x - a.x, b.y - a.y);
+    let (cx, cy) = (c.x - a.x, c.y - a.y);
+    let d = 2.0 * (bx * cy - by * cx);
+    if d == 0.0 {
+        return None;
+    }
+    let b2 = bx * bx + by * by;
+    let c2 = cx * cx + cy * cy;
+    let ux = (cy * b2 - by * c2) / d;
+    let uy = (bx * c2 - cx * b2) / d;
+    if !(ux.is_finite() && uy.is_finite()) {
+        return None;
+    }
+    Some((Point::new(a.x + ux, a.y + uy), (ux * ux + uy * uy).sqrt()))
+}
+
+/// The unit direction of the Voronoi edge that runs to infinity between two
+/// consecutive convex-hull sites `a → b` (hull counter-clockwise... seen from
+/// the outside: the left normal of `b - a`). `None` when `a == b`.
+#[inline]
+pub fn left_normal(a: Point, b: Point) -> Option<Point> {
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    let len = dx.hypot(dy);
+    if len == 0.0 || !len.is_finite() {
+        return None;
+    }
+    Some(Point::new(-dy / len, dx / len))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    #[test]
+    fn circumcircle_of_right_triangle_is_hypotenuse_midpoint() {
+        let (c, r) = circumcircle(p(0., 0.), p(4., 0.), p(0., 3.)).unwrap();
+        assert!((c.x - 2.0).abs() < 1e-15 && (c.y - 1.5).abs() < 1e-15);
+        assert!((r - 2.5).abs() < 1e-15);
+    }
+
+    #[test]
+    fn circumcircle_far_from_origin() {
+        let o = 1e9;
+        let (c, r) = circumcircle(p(o, o), p(o + 2., o), p(o, o + 2.)).unwrap();
+        assert_eq!((c.x, c.y), (o + 1., o + 1.));
+        assert!((r - 2f64.sqrt()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn circumcircle_of_collinear_points_is_none() {
+        assert!(circumcircle(p(0., 0.), p(1., 1.), p(2., 2.)).is_none());
+        assert!(circumcircle(p(0., 0.), p(0., 0.), p(2., 2.)).is_none());
+    }
+
+    #[test]
+    fn left_normal_points_left() {
+        let n = left_normal(p(0., 0.), p(2., 0.)).unwrap();
+        assert_eq!((n.x, n.y), (0., 1.));
+        assert!(left_normal(p(1., 1.), p(1., 1.)).is_none());
+    }
+}

@@ -1,0 +1,62 @@
+//! # segvoronoi
+//!
+//! The Voronoi diagram of points in the plane (line segments follow), built by
+//! the topology-oriented method of Sugihara, Iri and Imai: the combinatorial
+//! structure is kept valid by integer bookkeeping alone, and floating point
+//! only chooses among valid structures. The build never fails on degenerate
+//! or near-degenerate input, and with the exact predicates used here the
+//! topology is the exact one.
+//!
+//! ```
+//! use segvoronoi::{Builder, EdgeEnd};
+//!
+//! let mut builder = Builder::new();
+//! builder.add_points([[0.0, 0.0], [2.0, 0.0], [1.0, 2.0], [1.0, 0.7]])?;
+//! let diagram = builder.build()?;
+//! for edge in diagram.edges() {
+//!     let [a, b] = edge.sites;
+//!     match edge.ends {
+//!         [EdgeEnd::Vertex(u), EdgeEnd::Vertex(v)] => println!("{a}|{b}: segment {u}-{v}"),
+//!         _ => println!("{a}|{b}: ray or line"),
+//!     }
+//! }
+//! assert_eq!(diagram.vertex_count(), 3);
+//! # Ok::<(), segvoronoi::Error>(())
+//! ```
+//!
+//! ## Map of the crate
+//! Dependencies point one way, top to bottom:
+//! - [`geometry`]: coordinates, exact predicates (enums, never raw
+//!   determinants), vertex solvers, power-of-two normalisation.
+//! - `diagram`: the half-edge store with typed ids and its invariant checker
+//!   ([`Diagram::validate`]); it never reads coordinates to decide anything.
+//! - `build`: [`Builder`], input checking, insertion order, the
+//!   topology-oriented insertion.
+//! - `query`: iteration over vertices, edges and cells, canonical topology.
+//! - `ffi`: the C API (`include/segvoronoi.h`), which only converts and
+//!   delegates.
+
+#![warn(missing_docs)]
+
+mod build;
+mod diagram;
+mod error;
+pub mod ffi;
+pub mod geometry;
+mod query;
+
+pub use build::{Builder, MAX_POINTS};
+pub use diagram::{BuildStats, Diagram, EdgeId, SiteId, ValidationError, VertexId};
+pub use error::{Error, ErrorKind};
+pub use geometry::Point;
+pub use query::{Cell, Edge, EdgeEnd, TopologyOptions, Vertex};
+
+/// Fault injection for tests: make the floating-point decisions lie and watch
+/// the topology survive. Only in builds with the `fault-injection` feature.
+#[cfg(feature = "fault-injection")]
+pub mod fault_injection {
+    pub use crate::geometry::fault::{set_fault_mode, FaultMode};
+}
+
+/// The crate version, as in `Cargo.toml`.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");

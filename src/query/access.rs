@@ -1,0 +1,198 @@
+//! Iterators and accessors of [`Diagram`].
+
+use crate::diagram::{BuildStats, Diagram, EdgeId, HalfEdgeId, SiteId, ValidationError, VertexId, NONE};
+use crate::geometry::Point;
+
+/// A finite Voronoi vertex.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vertex {
+    /// Its id.
+    pub id: VertexId,
+    /// Its position, in input coordinates.
+    pub position: Point,
+    /// Its distance to each of its three sites.
+    pub clearance: f64,
+    /// The three sites whose cells meet here, counter-clockwise.
+    pub sites: [SiteId; 3],
+}
+
+/// One end of an edge.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum EdgeEnd {
+    /// The edge ends at this finite vertex.
+    Vertex(VertexId),
+    /// The edge runs off to infinity in this unit direction.
+    Infinite {
+        /// Unit direction of the edge at infinity.
+        direction: Point,
+    },
+}
+
+/// A Voronoi edge between two sites: a segment between two vertices, a ray
+/// (one end at infinity) or a whole line (both ends at infinity, when all
+/// sites are collinear).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Edge {
+    /// Its id.
+    pub id: EdgeId,
+    /// The site on its left and the site on its right, walking from
+    /// `ends[0]` to `ends[1]`.
+    pub sites: [SiteId; 2],
+    /// Where it starts and where it ends.
+    pub ends: [EdgeEnd; 2],
+}
+
+impl Edge {
+    /// `true` when at least one end is at infinity.
+    pub fn is_infinite(&self) -> bool {
+        self.ends.iter().any(|e| matches!(e, EdgeEnd::Infinite { .. }))
+    }
+}
+
+/// The cell (Voronoi region) of one site.
+#[derive(Clone, Copy, Debug)]
+pub struct Cell<'a> {
+    diagram: &'a Diagram,
+    site: SiteId,
+}
+
+impl<'a> Cell<'a> {
+    /// The site the cell belongs to.
+    pub fn site(&self) -> SiteId {
+        self.site
+    }
+
+    /// The site's position.
+    pub fn point(&self) -> Point {
+        self.diagram.sites[self.site.index()]
+    }
+
+    /// The edges around the cell, counter-clockwise. An unbounded cell has
+    /// two rays (or lines) among them and no edge "at infinity".
+    pub fn edges(&self) -> impl Iterator<Item = EdgeId> + 'a {
+        let d = self.diagram;
+        d.store
+            .cell_boundary(self.site)
+            .filter_map(move |h| {
+                let e = d.edge_of_half_edge[h.index()];
+                (e != NONE).then_some(EdgeId(e))
+            })
+    }
+
+    /// The neighbouring sites, counter-clockwise, one per edge.
+    pub fn neighbors(&self) -> impl Iterator<Item = SiteId> + 'a {
+        let d = self.diagram;
+        let infinite = d.store.infinite_site;
+        d.store.cell_boundary(self.site).map(move |h| d.store.right(h)).filter(move |&s| s != infinite)
+    }
+
+    /// `true` when the cell reaches infinity (its site is on the convex hull).
+    pub fn is_unbounded(&self) -> bool {
+        let d = self.diagram;
+        d.sites.len() <= 1 || d.store.cell_boundary(self.site).any(|h| d.store.right(h) == d.store.infinite_site)
+    }
+}
+
+impl Diagram {
+    /// Number of sites (distinct input points).
+    pub fn site_count(&self) -> usize {
+        self.sites.len()
+    }
+
+    /// The position of a site. Panics if the id is out of range.
+    pub fn site(&self, site: SiteId) -> Point {
+        self.sites[site.index()]
+    }
+
+    /// All site ids.
+    pub fn site_ids(&self) -> impl ExactSizeIterator<Item = SiteId> {
+        (0..self.sites.len()).map(SiteId::from_index)
+    }
+
+    /// The site that the `index`-th input point became (repeated points share
+    /// one site), or `None` if there is no such input point.
+    pub fn site_of_input(&self, index: usize) -> Option<SiteId> {
+        self.input_site.get(index).copied()
+    }
+
+    /// Number of finite Voronoi vertices.
+    pub fn vertex_count(&self) -> usize {
+        self.finite_vertices
+    }
+
+    /// A finite vertex, or `None` if the id is out of range.
+    pub fn vertex(&self, id: VertexId) -> Option<Vertex> {
+        (id.index() < self.finite_vertices).then(|| Vertex {
+            id,
+            position: self.store.position[id.index()],
+            clearance: self.store.clearance[id.index()],
+            sites: self.store.sites_of(id),
+        })
+    }
+
+    /// All finite vertices, by id.
+    pub fn vertices(&self) -> impl ExactSizeIterator<Item = Vertex> + '_ {
+        (0..self.finite_vertices).map(move |v| self.vertex(VertexId::from_index(v)).expect("in range"))
+    }
+
+    /// Number of edges between two sites.
+    pub fn edge_count(&self) -> usize {
+        self.edges.len()
+    }
+
+    /// An edge, or `None` if the id is out of range.
+    pub fn edge(&self, id: EdgeId) -> Option<Edge> {
+        let &h = self.edges.get(id.index())?;
+        let t = self.store.twin(h);
+        Some(Edge { id, sites: [self.store.left(h), self.store.right(h)], ends: [self.end_of(h), self.end_of(t)] })
+    }
+
+    fn end_of(&self, h: HalfEdgeId) -> EdgeEnd {
+        let v = h.origin();
+        if v.index() < self.finite_vertices {
+            EdgeEnd::Vertex(v)
+        } else {
+            EdgeEnd::Infinite { direction: self.store.position[v.index()] }
+        }
+    }
+
+    /// All edges, by id.
+    pub fn edges(&self) -> impl ExactSizeIterator<Item = Edge> + '_ {
+        (0..self.edges.len()).map(move |e| self.edge(EdgeId::from_index(e)).expect("in range"))
+    }
+
+    /// The cell of a site, or `None` if the id is out of range.
+    pub fn cell(&self, site: SiteId) -> Option<Cell<'_>> {
+        (site.index() < self.sites.len()).then_some(Cell { diagram: self, site })
+    }
+
+    /// All cells, by site id.
+    pub fn cells(&self) -> impl ExactSizeIterator<Item = Cell<'_>> {
+        (0..self.sites.len()).map(move |s| Cell { diagram: self, site: SiteId::from_index(s) })
+    }
+
+    /// Counts from the build.
+    pub fn stats(&self) -> BuildStats {
+        self.stats
+    }
+
+    /// Checks every topological invariant of the diagram (see the invariant
+    /// checker in the `diagram` module). A diagram returned by the library
+    /// always passes; tests call this on every diagram they build.
+    pub fn validate(&self) -> Result<(), ValidationError> {
+        self.store.validate()?;
+        let is_inf = |v: usize| self.store.is_at_infinity(VertexId::from_index(v));
+        if (0..self.store.vertex_count()).any(|v| is_inf(v) != (v >= self.finite_vertices)) {
+            return Err(ValidationError("finite vertices are not numbered first".into()));
+        }
+        if self.store.site_count() != self.sites.len() + 1 {
+            return Err(ValidationError("site count disagrees with the store".into()));
+        }
+        Ok(())
+    }
+
+    /// The diagonal of the input's bounding box.
+    pub fn extent(&self) -> f64 {
+        self.extent
+    }
+}

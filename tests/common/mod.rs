@@ -1,0 +1,73 @@
+//! Helpers shared by the integration tests: input generators and the
+//! brute-force geometric checks.
+#![allow(dead_code)]
+
+use segvoronoi::{Builder, Diagram, EdgeEnd, Point};
+
+/// A small deterministic generator.
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    /// Uniform in [0, 1).
+    pub fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+pub fn uniform(n: usize, seed: u64) -> Vec<[f64; 2]> {
+    let mut r = Rng(seed);
+    (0..n).map(|_| [r.unit(), r.unit()]).collect()
+}
+
+pub fn build(points: &[[f64; 2]]) -> Diagram {
+    let mut b = Builder::new();
+    b.add_points(points.iter().copied()).unwrap();
+    let d = b.build().unwrap();
+    d.validate().unwrap_or_else(|e| panic!("{e}"));
+    d
+}
+
+/// Every vertex is equidistant from its three sites (within `tol` of the
+/// input scale) and no site is closer than those (empty circle).
+pub fn check_empty_circles(d: &Diagram, tol: f64) {
+    let scale = d.extent().max(f64::MIN_POSITIVE);
+    for v in d.vertices() {
+        let r: Vec<f64> = v.sites.iter().map(|&s| d.site(s).distance(v.position)).collect();
+        for &ri in &r {
+            assert!((ri - v.clearance).abs() <= tol * scale, "vertex {} not equidistant: {r:?} vs {}", v.id, v.clearance);
+        }
+        for s in d.site_ids() {
+            let dist = d.site(s).distance(v.position);
+            assert!(dist >= v.clearance - tol * scale, "site {s} inside the circle of vertex {}", v.id);
+        }
+    }
+}
+
+/// The site whose cell contains `q`, found by brute force, has `q` within
+/// its cell in the diagram too: every edge of the cell keeps `q` on the
+/// cell's side of the bisector (checked on all neighbours).
+pub fn check_nearest_sites(d: &Diagram, queries: &[Point], tol: f64) {
+    let scale = d.extent().max(f64::MIN_POSITIVE);
+    for &q in queries {
+        let best = d.site_ids().map(|s| d.site(s).distance(q)).fold(f64::INFINITY, f64::min);
+        // the brute-force nearest sites (ties allowed)
+        let nearest: Vec<_> = d.site_ids().filter(|&s| d.site(s).distance(q) <= best + tol * scale).collect();
+        // q lies in the cell of s iff no Voronoi neighbour of s is closer
+        let inside = nearest.iter().any(|&s| {
+            d.cell(s).unwrap().neighbors().all(|n| d.site(n).distance(q) >= d.site(s).distance(q) - tol * scale)
+        });
+        assert!(inside, "query {q:?}: no nearest site {nearest:?} has it in its cell");
+    }
+}
+
+/// Number of rays (edges with one end at infinity).
+pub fn ray_count(d: &Diagram) -> usize {
+    d.edges().filter(|e| matches!(e.ends, [EdgeEnd::Vertex(_), EdgeEnd::Infinite { .. }] | [EdgeEnd::Infinite { .. }, EdgeEnd::Vertex(_)])).count()
+}
