@@ -15,7 +15,8 @@ macro_rules! typed_id {
             }
 
             #[inline]
-            pub(crate) fn from_index(i: usize) -> Self {
+            /// The id of the given array index.
+            pub fn from_index(i: usize) -> Self {
                 debug_assert!(i < u32::MAX as usize);
                 $name(i as u32)
             }

@@ -1,1 +1,32 @@
-//! C API (to come)
+//! The C API. Declared in `include/segvoronoi.h`, which cbindgen generates
+//! from this module (`tests/header.rs` regenerates it and fails on any
+//! difference).
+//!
+//! Conventions, as in every export below:
+//! - names are `segvoronoi_<type>_<verb>`; handles are opaque;
+//! - every fallible call returns a [`segvoronoi_status`]; outputs come last
+//!   and are written only on success;
+//! - every pointer argument is checked for NULL
+//!   (`SEGVORONOI_STATUS_NULL_ARGUMENT`);
+//! - memory the library hands out is freed by the library's own `_free`
+//!   function, and `_free(NULL)` does nothing;
+//! - no panic crosses the boundary: a panic becomes `SEGVORONOI_STATUS_INTERNAL`;
+//! - a diagram is immutable: any number of threads may read one
+//!   `const segvoronoi_diagram *` at once. A builder is used by one thread at
+//!   a time.
+//!
+//! This is the only module with `unsafe` code; it converts and delegates.
+
+#![allow(non_camel_case_types)]
+#![allow(clippy::missing_safety_doc)]
+
+mod builder;
+mod diagram;
+mod plumbing;
+
+pub use builder::*;
+pub use diagram::*;
+pub use plumbing::{
+    segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version, SEGVORONOI_VERSION_MAJOR,
+    SEGVORONOI_VERSION_MINOR, SEGVORONOI_VERSION_PATCH,
+};

@@ -1,0 +1,147 @@
+//! `segvoronoi_builder`: collects input and builds diagrams.
+
+use std::ffi::{c_char, CString};
+
+use super::diagram::segvoronoi_diagram;
+use super::plumbing::{guard, guard_or, require_non_null, segvoronoi_status};
+use crate::error::Error;
+use crate::Builder;
+
+/// Collects input sites. Opaque. Create with `segvoronoi_builder_new`, free
+/// with `segvoronoi_builder_free`. Used by one thread at a time.
+pub struct segvoronoi_builder {
+    inner: Builder,
+    last_error: CString,
+}
+
+impl segvoronoi_builder {
+    fn record(&mut self, result: Result<(), Error>) -> segvoronoi_status {
+        match result {
+            Ok(()) => {
+                self.last_error = CString::default();
+                segvoronoi_status::Ok
+            }
+            Err(e) => {
+                self.last_error = CString::new(e.message()).unwrap_or_default();
+                segvoronoi_status::from(&e)
+            }
+        }
+    }
+}
+
+/// A new, empty builder. Returns NULL only if memory is exhausted.
+///
+/// Ownership: the caller owns the builder and frees it with
+/// `segvoronoi_builder_free`.
+#[no_mangle]
+pub extern "C" fn segvoronoi_builder_new() -> *mut segvoronoi_builder {
+    guard_or(std::ptr::null_mut(), || {
+        Box::into_raw(Box::new(segvoronoi_builder { inner: Builder::new(), last_error: CString::default() }))
+    })
+}
+
+/// Frees a builder. NULL does nothing. Diagrams built from it stay valid.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_free(builder: *mut segvoronoi_builder) {
+    if builder.is_null() {
+        return;
+    }
+    // SAFETY: the caller passes a builder from `segvoronoi_builder_new`, not freed yet.
+    guard_or((), || drop(unsafe { Box::from_raw(builder) }))
+}
+
+/// Adds one point. Its input index is the number of points added before it.
+///
+/// Errors: `SEGVORONOI_STATUS_INVALID_COORDINATE` if `x` or `y` is NaN or
+/// infinite; the builder is then unchanged and
+/// `segvoronoi_builder_last_error` names the input index.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_add_point(builder: *mut segvoronoi_builder, x: f64, y: f64) -> segvoronoi_status {
+    require_non_null!(builder);
+    guard(|| {
+        // SAFETY: non-null, and the caller passes a live builder used by this thread only.
+        let b = unsafe { &mut *builder };
+        let r = b.inner.add_point(x, y).map(|_| ());
+        b.record(r)
+    })
+}
+
+/// Adds `count` points from `xy` = `{x0, y0, x1, y1, ...}` (`2 * count`
+/// doubles), all or none. `xy` may be NULL when `count` is 0.
+///
+/// Errors: `SEGVORONOI_STATUS_INVALID_COORDINATE` for the first non-finite
+/// coordinate; nothing is added and the message names the input index the
+/// point would have had.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_add_points(
+    builder: *mut segvoronoi_builder,
+    xy: *const f64,
+    count: usize,
+) -> segvoronoi_status {
+    require_non_null!(builder);
+    if count > 0 {
+        require_non_null!(xy);
+    }
+    guard(|| {
+        // SAFETY: non-null; the caller keeps builder exclusive and xy valid for 2*count reads.
+        let b = unsafe { &mut *builder };
+        if count > isize::MAX as usize / 16 {
+            return segvoronoi_status::TooLarge;
+        }
+        let coords: &[f64] = if count == 0 { &[] } else { unsafe { std::slice::from_raw_parts(xy, 2 * count) } };
+        let r = b.inner.add_points(coords.chunks_exact(2).map(|c| [c[0], c[1]]));
+        b.record(r)
+    })
+}
+
+/// The number of points added so far (repeats included); 0 for NULL.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_point_count(builder: *const segvoronoi_builder) -> usize {
+    if builder.is_null() {
+        return 0;
+    }
+    // SAFETY: non-null live builder.
+    guard_or(0, || unsafe { &*builder }.inner.point_count())
+}
+
+/// Builds the diagram of everything added so far and stores it in `*out`.
+/// The builder is not consumed and stays as it was.
+///
+/// Ownership: on success the caller owns `*out` and frees it with
+/// `segvoronoi_diagram_free`. On error `*out` is set to NULL.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_build(
+    builder: *mut segvoronoi_builder,
+    out: *mut *mut segvoronoi_diagram,
+) -> segvoronoi_status {
+    require_non_null!(builder, out);
+    // SAFETY: out is non-null and writable.
+    unsafe { *out = std::ptr::null_mut() };
+    guard(|| {
+        // SAFETY: non-null live builder, exclusive to this thread.
+        let b = unsafe { &mut *builder };
+        match b.inner.build() {
+            Ok(d) => {
+                b.last_error = CString::default();
+                // SAFETY: out is non-null and writable.
+                unsafe { *out = segvoronoi_diagram::into_raw(d) };
+                segvoronoi_status::Ok
+            }
+            Err(e) => b.record(Err(e)),
+        }
+    })
+}
+
+/// The message of the last failed call on this builder (naming the offending
+/// input indices), or `""` if the last call succeeded. Never NULL.
+///
+/// Ownership: the builder owns the text; it stays valid until the next call
+/// on this builder or its `_free`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_last_error(builder: *const segvoronoi_builder) -> *const c_char {
+    if builder.is_null() {
+        return c"builder is NULL".as_ptr();
+    }
+    // SAFETY: non-null live builder.
+    guard_or(c"internal error".as_ptr(), || unsafe { &*builder }.last_error.as_ptr())
+}

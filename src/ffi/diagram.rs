@@ -1,0 +1,320 @@
+//! `segvoronoi_diagram`: read access to a built diagram.
+
+use std::ffi::c_char;
+
+use super::plumbing::{guard, guard_or, into_c_string, require_non_null, segvoronoi_status};
+use crate::{Diagram, EdgeEnd, EdgeId, SiteId, TopologyOptions, VertexId};
+
+/// Marks an edge end at infinity in `segvoronoi_edge_end::vertex`.
+pub const SEGVORONOI_NO_VERTEX: u32 = u32::MAX;
+
+/// Flag for `segvoronoi_diagram_topology`: add the `VPAIRS` and `VVERTICES`
+/// sections (positive-length edges; vertices merged across zero-length edges).
+pub const SEGVORONOI_TOPOLOGY_VORONOI_PAIRS: u32 = 1;
+
+/// A built Voronoi diagram. Opaque and immutable: any number of threads may
+/// read it at once. Free with `segvoronoi_diagram_free`.
+pub struct segvoronoi_diagram {
+    inner: Diagram,
+}
+
+impl segvoronoi_diagram {
+    pub(crate) fn into_raw(d: Diagram) -> *mut segvoronoi_diagram {
+        Box::into_raw(Box::new(segvoronoi_diagram { inner: d }))
+    }
+}
+
+/// A site: an input point.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct segvoronoi_site {
+    /// Position, in input coordinates.
+    pub x: f64,
+    /// Position, in input coordinates.
+    pub y: f64,
+}
+
+/// A finite Voronoi vertex.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct segvoronoi_vertex {
+    /// Position, in input coordinates.
+    pub x: f64,
+    /// Position, in input coordinates.
+    pub y: f64,
+    /// Distance from the vertex to each of its sites.
+    pub clearance: f64,
+    /// The three sites whose cells meet here, counter-clockwise.
+    pub sites: [u32; 3],
+}
+
+/// One end of an edge: a finite vertex, or a direction to infinity.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct segvoronoi_edge_end {
+    /// The vertex id, or `SEGVORONOI_NO_VERTEX` if this end is at infinity.
+    pub vertex: u32,
+    /// The vertex position, or the unit direction of the edge at infinity.
+    pub x: f64,
+    /// The vertex position, or the unit direction of the edge at infinity.
+    pub y: f64,
+}
+
+/// A Voronoi edge between two sites: a segment, a ray (one end at infinity)
+/// or a whole line (both ends at infinity; all sites collinear).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct segvoronoi_edge {
+    /// The site on the left and the site on the right, going from
+    /// `ends[0]` to `ends[1]`.
+    pub sites: [u32; 2],
+    /// Start and end.
+    pub ends: [segvoronoi_edge_end; 2],
+}
+
+/// Counts from the build.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct segvoronoi_stats {
+    /// Points given to the builder.
+    pub input_points: usize,
+    /// Distinct sites in the diagram.
+    pub sites: usize,
+    /// Input points merged into an equal earlier point.
+    pub duplicate_points: usize,
+    /// Finite Voronoi vertices.
+    pub vertices: usize,
+    /// Voronoi edges between two sites.
+    pub edges: usize,
+}
+
+/// Runs `f` on the diagram behind a checked, non-null pointer.
+fn with_diagram(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> segvoronoi_status) -> segvoronoi_status {
+    require_non_null!(d);
+    // SAFETY: non-null; the caller passes a live diagram (shared reads are fine).
+    guard(|| f(&unsafe { &*d }.inner))
+}
+
+fn count(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> usize) -> usize {
+    if d.is_null() {
+        return 0;
+    }
+    // SAFETY: non-null live diagram.
+    guard_or(0, || f(&unsafe { &*d }.inner))
+}
+
+/// Writes `value` through `out` and reports success.
+fn write_out<T>(out: *mut T, value: T) -> segvoronoi_status {
+    // SAFETY: callers check `out` for NULL first; it points to writable memory.
+    unsafe { out.write(value) };
+    segvoronoi_status::Ok
+}
+
+/// Frees a diagram. NULL does nothing.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_free(diagram: *mut segvoronoi_diagram) {
+    if diagram.is_null() {
+        return;
+    }
+    // SAFETY: the caller passes a diagram from `segvoronoi_builder_build`, not freed yet.
+    guard_or((), || drop(unsafe { Box::from_raw(diagram) }))
+}
+
+/// Checks every topological invariant. `SEGVORONOI_STATUS_OK` for every
+/// diagram the library builds; `SEGVORONOI_STATUS_INTERNAL` would be a bug.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_validate(diagram: *const segvoronoi_diagram) -> segvoronoi_status {
+    with_diagram(diagram, |d| match d.validate() {
+        Ok(()) => segvoronoi_status::Ok,
+        Err(_) => segvoronoi_status::Internal,
+    })
+}
+
+/// Number of sites (distinct input points); 0 for NULL.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_site_count(diagram: *const segvoronoi_diagram) -> usize {
+    count(diagram, Diagram::site_count)
+}
+
+/// Number of finite Voronoi vertices; 0 for NULL.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_vertex_count(diagram: *const segvoronoi_diagram) -> usize {
+    count(diagram, Diagram::vertex_count)
+}
+
+/// Number of Voronoi edges; 0 for NULL.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_edge_count(diagram: *const segvoronoi_diagram) -> usize {
+    count(diagram, Diagram::edge_count)
+}
+
+/// Site `index` (`0 <= index < site_count`).
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (then `*out` is untouched).
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_site(
+    diagram: *const segvoronoi_diagram,
+    index: usize,
+    out: *mut segvoronoi_site,
+) -> segvoronoi_status {
+    require_non_null!(out);
+    with_diagram(diagram, |d| {
+        if index >= d.site_count() {
+            return segvoronoi_status::OutOfRange;
+        }
+        let p = d.site(SiteId::from_index(index));
+        write_out(out, segvoronoi_site { x: p.x, y: p.y })
+    })
+}
+
+/// The site that input point `input_index` became (equal points share a site).
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_site_of_input(
+    diagram: *const segvoronoi_diagram,
+    input_index: usize,
+    out_site: *mut u32,
+) -> segvoronoi_status {
+    require_non_null!(out_site);
+    with_diagram(diagram, |d| match d.site_of_input(input_index) {
+        Some(s) => write_out(out_site, s.index() as u32),
+        None => segvoronoi_status::OutOfRange,
+    })
+}
+
+/// Vertex `index` (`0 <= index < vertex_count`).
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_vertex(
+    diagram: *const segvoronoi_diagram,
+    index: usize,
+    out: *mut segvoronoi_vertex,
+) -> segvoronoi_status {
+    require_non_null!(out);
+    with_diagram(diagram, |d| {
+        let Some(v) = (index < d.vertex_count()).then(|| d.vertex(VertexId::from_index(index))).flatten() else {
+            return segvoronoi_status::OutOfRange;
+        };
+        let sites = v.sites.map(|s| s.index() as u32);
+        write_out(out, segvoronoi_vertex { x: v.position.x, y: v.position.y, clearance: v.clearance, sites })
+    })
+}
+
+/// Edge `index` (`0 <= index < edge_count`).
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_edge(
+    diagram: *const segvoronoi_diagram,
+    index: usize,
+    out: *mut segvoronoi_edge,
+) -> segvoronoi_status {
+    require_non_null!(out);
+    with_diagram(diagram, |d| {
+        let Some(e) = (index < d.edge_count()).then(|| d.edge(EdgeId::from_index(index))).flatten() else {
+            return segvoronoi_status::OutOfRange;
+        };
+        let end = |end: EdgeEnd| match end {
+            EdgeEnd::Vertex(v) => {
+                let p = d.vertex(v).map(|v| v.position).unwrap_or_default();
+                segvoronoi_edge_end { vertex: v.index() as u32, x: p.x, y: p.y }
+            }
+            EdgeEnd::Infinite { direction } => {
+                segvoronoi_edge_end { vertex: SEGVORONOI_NO_VERTEX, x: direction.x, y: direction.y }
+            }
+        };
+        let sites = e.sites.map(|s| s.index() as u32);
+        write_out(out, segvoronoi_edge { sites, ends: [end(e.ends[0]), end(e.ends[1])] })
+    })
+}
+
+/// The ids of the edges around the cell of site `site`, counter-clockwise.
+/// Writes up to `capacity` ids to `edges` and the full number to `*count`.
+/// Call with `edges = NULL, capacity = 0` to learn the number.
+///
+/// Errors: `NULL_ARGUMENT` (`count` NULL, or `edges` NULL with
+/// `capacity > 0`), `OUT_OF_RANGE`, `BUFFER_TOO_SMALL` (then `*count` holds
+/// the number needed and the first `capacity` ids are written).
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_cell_edges(
+    diagram: *const segvoronoi_diagram,
+    site: usize,
+    edges: *mut u32,
+    capacity: usize,
+    count: *mut usize,
+) -> segvoronoi_status {
+    require_non_null!(count);
+    if capacity > 0 {
+        require_non_null!(edges);
+    }
+    with_diagram(diagram, |d| {
+        let Some(cell) = (site < d.site_count()).then(|| d.cell(SiteId::from_index(site))).flatten() else {
+            return segvoronoi_status::OutOfRange;
+        };
+        let mut n = 0usize;
+        for e in cell.edges() {
+            if n < capacity {
+                // SAFETY: edges holds `capacity` writable u32 (checked non-null above).
+                unsafe { edges.add(n).write(e.index() as u32) };
+            }
+            n += 1;
+        }
+        write_out(count, n);
+        if n > capacity {
+            segvoronoi_status::BufferTooSmall
+        } else {
+            segvoronoi_status::Ok
+        }
+    })
+}
+
+/// Counts from the build. Errors: `NULL_ARGUMENT`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_stats(
+    diagram: *const segvoronoi_diagram,
+    out: *mut segvoronoi_stats,
+) -> segvoronoi_status {
+    require_non_null!(out);
+    with_diagram(diagram, |d| {
+        let s = d.stats();
+        write_out(
+            out,
+            segvoronoi_stats {
+                input_points: s.input_points,
+                sites: s.sites,
+                duplicate_points: s.duplicate_points,
+                vertices: s.vertices,
+                edges: s.edges,
+            },
+        )
+    })
+}
+
+/// The canonical topology text (`EDGES`, `FACES`, and with
+/// `SEGVORONOI_TOPOLOGY_VORONOI_PAIRS` in `flags` also `VPAIRS`,
+/// `VVERTICES`): NUL-terminated in `*text`, its length without the NUL in
+/// `*length` (`length` may be NULL).
+///
+/// Ownership: the caller owns `*text` and frees it with
+/// `segvoronoi_string_free`. On error `*text` is set to NULL.
+/// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (unknown flag bits).
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_topology(
+    diagram: *const segvoronoi_diagram,
+    flags: u32,
+    text: *mut *mut c_char,
+    length: *mut usize,
+) -> segvoronoi_status {
+    require_non_null!(text);
+    // SAFETY: text is non-null and writable.
+    unsafe { *text = std::ptr::null_mut() };
+    if flags & !SEGVORONOI_TOPOLOGY_VORONOI_PAIRS != 0 {
+        return segvoronoi_status::InvalidArgument;
+    }
+    with_diagram(diagram, |d| {
+        let options = TopologyOptions { voronoi_pairs: flags & SEGVORONOI_TOPOLOGY_VORONOI_PAIRS != 0 };
+        let (ptr, len) = into_c_string(d.topology(options));
+        if !length.is_null() {
+            write_out(length, len);
+        }
+        write_out(text, ptr)
+    })
+}

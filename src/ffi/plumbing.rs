@@ -1,0 +1,119 @@
+//! Status codes, the panic boundary, pointer helpers, static strings.
+
+use std::ffi::{c_char, CStr};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+use crate::error::{Error, ErrorKind};
+
+/// Result of every fallible call. The numbers are stable across versions.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum segvoronoi_status {
+    /// Success.
+    Ok = 0,
+    /// A required pointer argument was NULL.
+    NullArgument = 1,
+    /// An input coordinate is NaN or infinite (the message names the input index).
+    InvalidCoordinate = 2,
+    /// Input segments cross or overlap, or a point lies inside a segment
+    /// (the message names both input indices). Reserved for segment input.
+    Intersecting = 3,
+    /// An index argument is out of range.
+    OutOfRange = 4,
+    /// The caller's buffer is too small; the required count was written.
+    BufferTooSmall = 5,
+    /// More input than the diagram's 32-bit ids can hold.
+    TooLarge = 6,
+    /// An argument has an invalid value (for example unknown flag bits).
+    InvalidArgument = 7,
+    /// A bug in segvoronoi (a caught panic or a failed invariant). Please report it.
+    Internal = 8,
+}
+
+impl From<&Error> for segvoronoi_status {
+    fn from(e: &Error) -> Self {
+        match e.kind() {
+            ErrorKind::InvalidCoordinate => segvoronoi_status::InvalidCoordinate,
+            ErrorKind::TooLarge => segvoronoi_status::TooLarge,
+        }
+    }
+}
+
+/// Runs `f`, turning a panic into `Internal`.
+pub(crate) fn guard(f: impl FnOnce() -> segvoronoi_status) -> segvoronoi_status {
+    catch_unwind(AssertUnwindSafe(f)).unwrap_or(segvoronoi_status::Internal)
+}
+
+/// Runs `f`, turning a panic into `fallback`.
+pub(crate) fn guard_or<T>(fallback: T, f: impl FnOnce() -> T) -> T {
+    catch_unwind(AssertUnwindSafe(f)).unwrap_or(fallback)
+}
+
+/// Returns early with `NullArgument` when any pointer is NULL.
+macro_rules! require_non_null {
+    ($($p:expr),+) => {
+        if $($p.is_null())||+ {
+            return $crate::ffi::plumbing::segvoronoi_status::NullArgument;
+        }
+    };
+}
+pub(crate) use require_non_null;
+
+/// Static text for a status code; never NULL, valid forever.
+///
+/// Thread safety: safe from any thread.
+#[no_mangle]
+pub extern "C" fn segvoronoi_status_str(status: segvoronoi_status) -> *const c_char {
+    let s: &'static CStr = match status {
+        segvoronoi_status::Ok => c"ok",
+        segvoronoi_status::NullArgument => c"a required pointer argument is NULL",
+        segvoronoi_status::InvalidCoordinate => c"a coordinate is NaN or infinite",
+        segvoronoi_status::Intersecting => c"input segments intersect",
+        segvoronoi_status::OutOfRange => c"index out of range",
+        segvoronoi_status::BufferTooSmall => c"buffer too small",
+        segvoronoi_status::TooLarge => c"too many input sites",
+        segvoronoi_status::InvalidArgument => c"invalid argument",
+        segvoronoi_status::Internal => c"internal error in segvoronoi",
+    };
+    s.as_ptr()
+}
+
+/// The library version, `"MAJOR.MINOR.PATCH"`, the same as
+/// `SEGVORONOI_VERSION_STRING` in a matching header. Static, never NULL.
+///
+/// Thread safety: safe from any thread.
+#[no_mangle]
+pub extern "C" fn segvoronoi_version() -> *const c_char {
+    const V: &str = concat!(env!("CARGO_PKG_VERSION"), "\0");
+    V.as_ptr() as *const c_char
+}
+
+/// Frees a string returned by segvoronoi (for example by
+/// `segvoronoi_diagram_topology`). NULL does nothing.
+///
+/// Ownership: takes back the string; it must not be used afterwards.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_string_free(text: *mut c_char) {
+    if text.is_null() {
+        return;
+    }
+    guard_or((), || {
+        // SAFETY: the caller passes a string made by `into_c_string` and not freed yet.
+        drop(unsafe { std::ffi::CString::from_raw(text) });
+    })
+}
+
+/// Hands a Rust string to C as an owned, NUL-terminated buffer and its length.
+pub(crate) fn into_c_string(text: String) -> (*mut c_char, usize) {
+    let len = text.len();
+    // The text never contains NUL: it is made of names and numbers.
+    let c = std::ffi::CString::new(text).unwrap_or_default();
+    (c.into_raw(), len)
+}
+
+/// Major version of the library this header belongs to.
+pub const SEGVORONOI_VERSION_MAJOR: u32 = 0;
+/// Minor version of the library this header belongs to.
+pub const SEGVORONOI_VERSION_MINOR: u32 = 1;
+/// Patch version of the library this header belongs to.
+pub const SEGVORONOI_VERSION_PATCH: u32 = 0;
