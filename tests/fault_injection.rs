@@ -1,0 +1,75 @@
+//! The topology survives lying arithmetic: with every decided quantity
+//! perturbed by up to 1e-3 relative, or replaced by random numbers, builds
+//! terminate and pass every topological invariant. Run with
+//! `cargo test --features fault-injection --test fault_injection`.
+#![cfg(feature = "fault-injection")]
+
+mod common;
+
+use common::*;
+use segvoronoi::fault_injection::{set_fault_mode, FaultMode};
+use segvoronoi::Builder;
+
+fn build_under(mode: FaultMode, seed: u64, points: &[[f64; 2]]) -> segvoronoi::Diagram {
+    set_fault_mode(mode, seed);
+    let mut b = Builder::new();
+    b.add_points(points.iter().copied()).unwrap();
+    let d = b.build().unwrap();
+    set_fault_mode(FaultMode::Off, 0);
+    d.validate().unwrap_or_else(|e| panic!("{mode:?}: {e}"));
+    d
+}
+
+fn lattice(side: usize) -> Vec<[f64; 2]> {
+    (0..side * side).map(|i| [(i % side) as f64, (i / side) as f64]).collect()
+}
+
+fn circle(n: usize) -> Vec<[f64; 2]> {
+    (0..n).map(|i| {
+        let a = i as f64 * std::f64::consts::TAU / n as f64;
+        [a.cos(), a.sin()]
+    }).collect()
+}
+
+#[test]
+fn ten_thousand_points_with_relative_noise() {
+    for seed in 0..3 {
+        let pts = uniform(10_000, seed);
+        let d = build_under(FaultMode::Noise(1e-3), seed, &pts);
+        assert_eq!(d.site_count(), 10_000);
+    }
+}
+
+#[test]
+fn ten_thousand_points_with_random_arithmetic() {
+    for seed in 0..3 {
+        let pts = uniform(10_000, 100 + seed);
+        let d = build_under(FaultMode::Random, seed, &pts);
+        assert!(d.site_count() >= 1);
+    }
+}
+
+#[test]
+fn degenerate_inputs_with_lying_arithmetic() {
+    for (mode, seed) in [(FaultMode::Noise(1e-3), 1), (FaultMode::Random, 2), (FaultMode::Noise(1e-9), 3)] {
+        build_under(mode, seed, &lattice(60));
+        build_under(mode, seed, &circle(2000));
+        let collinear: Vec<[f64; 2]> = (0..500).map(|i| [i as f64, 2.0 * i as f64]).collect();
+        build_under(mode, seed, &collinear);
+        let mut nearly: Vec<[f64; 2]> = collinear.clone();
+        nearly.push([3.0, 1e-12]);
+        build_under(mode, seed, &nearly);
+    }
+}
+
+#[test]
+fn exact_mode_is_restored_after_faults() {
+    let pts = uniform(2000, 9);
+    let exact = build(&pts).topology(Default::default());
+    // the faults really change decisions (else these tests would prove nothing)
+    let faulty = build_under(FaultMode::Random, 5, &pts).topology(Default::default());
+    assert_ne!(faulty, exact);
+    let noisy = build_under(FaultMode::Noise(1e-3), 5, &pts).topology(Default::default());
+    assert_ne!(noisy, exact);
+    assert_eq!(build(&pts).topology(Default::default()), exact);
+}
