@@ -76,3 +76,47 @@ fn invalid_coordinate_names_index_and_keeps_builder() {
     assert_eq!(e.indices(), &[2]);
     assert_eq!(b.point_count(), 2);
 }
+
+#[test]
+fn extreme_magnitudes_give_the_same_topology_as_unit_scale() {
+    let base = uniform(500, 3);
+    let reference = build(&base).topology(TopologyOptions::default());
+    for k in [-1070, -1000, -300, -40, 40, 300, 1000] {
+        let f = 2f64.powi(k);
+        let scaled: Vec<[f64; 2]> = base.iter().map(|p| [p[0] * f, p[1] * f]).collect();
+        let d = build(&scaled);
+        if k >= -1000 {
+            assert_eq!(d.topology(TopologyOptions::default()), reference, "scale 2^{k}");
+            for v in d.vertices() {
+                assert!(v.position.is_finite() && v.clearance.is_finite(), "scale 2^{k}: {v:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn near_cocircular_points_one_ulp_apart() {
+    // A regular 64-gon with every other vertex nudged by one ulp outward:
+    // the exact predicates must see each nudge.
+    let mut pts: Vec<[f64; 2]> = Vec::new();
+    for i in 0..64 {
+        let a = i as f64 * std::f64::consts::TAU / 64.0;
+        let (mut x, mut y) = (1e3 * a.cos(), 1e3 * a.sin());
+        if i % 2 == 1 {
+            x = f64::from_bits(x.to_bits() + 1);
+            y = f64::from_bits(y.to_bits() + 1);
+        }
+        pts.push([x, y]);
+    }
+    pts.push([0.0, 0.0]);
+    let d = build(&pts);
+    check_empty_circles(&d, 1e-9);
+}
+
+#[test]
+fn huge_offset_tiny_extent() {
+    // extent 1e-6 around 1e9: differences are a few hundred ulps
+    let pts: Vec<[f64; 2]> = uniform(300, 11).iter().map(|p| [1e9 + p[0] * 1e-6, 1e9 + p[1] * 1e-6]).collect();
+    let d = build(&pts);
+    assert_eq!(d.site_count(), pts.iter().map(|p| (p[0].to_bits(), p[1].to_bits())).collect::<std::collections::HashSet<_>>().len());
+}

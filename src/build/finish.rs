@@ -60,12 +60,9 @@ pub(super) fn finish(built: PointDiagram, site_of_input: &[SiteId], input: &[Poi
 
     // Public edges: one per pair of twins, between two real sites.
     let mut edges = Vec::with_capacity(store.twin.len() / 2);
-    let mut edge_of_half_edge = vec![NONE; store.twin.len()];
     for h in (0..store.twin.len()).map(HalfEdgeId::from_index) {
         let t = store.twin(h);
         if h < t && store.left(h) != infinite && store.right(h) != infinite {
-            edge_of_half_edge[h.index()] = edges.len() as u32;
-            edge_of_half_edge[t.index()] = edges.len() as u32;
             edges.push(h);
         }
     }
@@ -78,7 +75,7 @@ pub(super) fn finish(built: PointDiagram, site_of_input: &[SiteId], input: &[Poi
         vertices: finite_vertices,
         edges: edges.len(),
     };
-    let diagram = Diagram { store, sites, finite_vertices, edges, edge_of_half_edge, input_site, stats, extent };
+    let diagram = Diagram { store, sites, finite_vertices, edges, edge_of_half_edge: Default::default(), input_site, stats, extent };
     debug_assert_eq!(diagram.validate(), Ok(()));
     diagram
 }

@@ -10,8 +10,9 @@
 
 use crate::geometry::Point;
 
-/// Bits of the Hilbert grid per axis.
-const GRID_BITS: u32 = 26;
+/// Bits of the Hilbert grid per axis: 65536 cells a side separate far more
+/// points than one diagram holds; more bits only cost time.
+const GRID_BITS: u32 = 16;
 /// Number of BRIO rounds beyond the first.
 const MAX_LEVEL: u64 = 30;
 

@@ -244,16 +244,22 @@ impl PointDiagram {
         }
     }
 
-    /// How deep `p` lies inside the circle of `v` (negative inside), as a
-    /// length; only used to choose among candidates.
+    /// How deep `p` lies inside the circle of `v` (negative inside): the
+    /// power `|p - c|^2 - r^2` of `p` for a finite vertex, minus the squared
+    /// distance beyond the hull edge for a vertex at infinity. Only used to
+    /// choose among candidates.
     fn conflict_depth(&self, v: VertexId, p: Point) -> f64 {
         let c = self.store.position[v.index()];
         let depth = match infinite_rotation(self.store.sites_of(v)) {
             Some((x, _)) => {
                 let x = self.sites[x.index()];
-                -((p.x - x.x) * c.x + (p.y - x.y) * c.y)
+                let beyond = (p.x - x.x) * c.x + (p.y - x.y) * c.y;
+                -beyond * beyond.abs()
             }
-            None => p.distance(c) - self.store.clearance[v.index()],
+            None => {
+                let r = self.store.clearance[v.index()];
+                p.distance_squared(c) - r * r
+            }
         };
         let depth = fault::perturb(depth);
         if depth.is_nan() {

@@ -38,8 +38,8 @@ pub struct Diagram {
     /// Per public edge: its canonical half-edge.
     pub(crate) edges: Vec<HalfEdgeId>,
     /// Per half-edge: its public edge id, or `NONE` for edges along the
-    /// point at infinity.
-    pub(crate) edge_of_half_edge: Vec<u32>,
+    /// point at infinity. Made on first use: only cell walks need it.
+    pub(crate) edge_of_half_edge: std::sync::OnceLock<Vec<u32>>,
     /// Per input point: the site it became.
     pub(crate) input_site: Vec<SiteId>,
     pub(crate) stats: BuildStats,

@@ -30,7 +30,9 @@ impl Scale {
             return Scale::IDENTITY;
         }
         // exponent e with 2^e <= max_abs < 2^(e+1)
-        let e = exponent_of(max_abs);
+        // Clamped so that both factors are normal numbers; subnormal inputs
+        // then land a little below 1, still well inside the exact range.
+        let e = exponent_of(max_abs).clamp(-1022, 1022);
         Scale { to_internal: pow2(-e), to_input: pow2(e) }
     }
 
@@ -72,7 +74,7 @@ mod tests {
         for &m in &[1e300, 3e-300, 5e-320, f64::MAX] {
             let s = Scale::for_max_abs(m);
             let v = m * s.to_internal;
-            assert!((1.0..2.0).contains(&v), "{m} -> {v}");
+            assert!((LOWER..4.0).contains(&v), "{m} -> {v}");
             assert_eq!(s.to_internal * s.to_input, 1.0);
         }
     }

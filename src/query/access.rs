@@ -71,10 +71,11 @@ impl<'a> Cell<'a> {
     /// two rays (or lines) among them and no edge "at infinity".
     pub fn edges(&self) -> impl Iterator<Item = EdgeId> + 'a {
         let d = self.diagram;
+        let edge_of = d.edge_of_half_edge();
         d.store
             .cell_boundary(self.site)
             .filter_map(move |h| {
-                let e = d.edge_of_half_edge[h.index()];
+                let e = edge_of[h.index()];
                 (e != NONE).then_some(EdgeId(e))
             })
     }
@@ -189,6 +190,18 @@ impl Diagram {
             return Err(ValidationError("site count disagrees with the store".into()));
         }
         Ok(())
+    }
+
+    /// Per half-edge its public edge id (`NONE` along the point at infinity).
+    fn edge_of_half_edge(&self) -> &[u32] {
+        self.edge_of_half_edge.get_or_init(|| {
+            let mut map = vec![NONE; self.store.twin.len()];
+            for (i, &h) in self.edges.iter().enumerate() {
+                map[h.index()] = i as u32;
+                map[self.store.twin(h).index()] = i as u32;
+            }
+            map
+        })
     }
 
     /// The diagonal of the input's bounding box.
