@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Sets up a fresh Debian/Ubuntu machine (Rust toolchain assumed) and runs every
+# test of segvoronoi: cargo tests (unit, property, header, C API through cc,
+# doctests), the fault-injection suite, then the CMake package installed into a
+# temporary prefix and the downstream C tests and CGAL cross-check under ctest.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+step() { printf '\n=== %s ===\n' "$*"; }
+
+need_packages=()
+for pkg in cmake g++ pkg-config valgrind libcgal-dev libgmp-dev libmpfr-dev libboost-dev; do
+  dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || need_packages+=("$pkg")
+done
+if [ ${#need_packages[@]} -gt 0 ]; then
+  step "installing ${need_packages[*]}"
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${need_packages[@]}" >/dev/null
+fi
+
+step "cargo test (workspace: library, C API via cc, header, properties, doctests)"
+cargo test --workspace --quiet
+
+step "fault injection (predicates perturbed or random)"
+cargo test --quiet --release --features fault-injection --test fault_injection
+
+step "CMake package, downstream C tests, CGAL cross-check (ctest)"
+bash c_tests/run.sh
