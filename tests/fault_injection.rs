@@ -73,3 +73,31 @@ fn exact_mode_is_restored_after_faults() {
     assert_ne!(noisy, exact);
     assert_eq!(build(&pts).topology(Default::default()), exact);
 }
+
+mod small_inputs {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn points() -> impl Strategy<Value = Vec<[f64; 2]>> {
+        prop_oneof![
+            prop::collection::vec((0..5i32, 0..5i32).prop_map(|(x, y)| [x as f64, y as f64]), 0..40),
+            prop::collection::vec((-1.0f64..1.0, -1.0f64..1.0).prop_map(|(x, y)| [x, y]), 0..60),
+            prop::collection::vec((0..50i32).prop_map(|t| [t as f64, 3.0 * t as f64]), 0..30),
+        ]
+    }
+
+    fn mode() -> impl Strategy<Value = FaultMode> {
+        prop_oneof![Just(FaultMode::Random), (1e-12f64..0.5).prop_map(FaultMode::Noise)]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+        /// Many tiny, degenerate inputs under every kind of lie: no panic,
+        /// no endless loop, always a valid diagram.
+        #[test]
+        fn any_small_input_under_any_fault(points in points(), mode in mode(), seed in any::<u64>()) {
+            build_under(mode, seed, &points);
+        }
+    }
+}
