@@ -20,6 +20,10 @@
 // Marks an edge end at infinity in `segvoronoi_edge_end::vertex`.
 #define SEGVORONOI_NO_VERTEX UINT32_MAX
 
+// "No site": pass as the hint of `segvoronoi_diagram_nearest_site` to start
+// anywhere.
+#define SEGVORONOI_NO_SITE UINT32_MAX
+
 // Flag for `segvoronoi_diagram_topology`: add the `VPAIRS` and `VVERTICES`
 // sections (positive-length edges; vertices merged across zero-length edges).
 #define SEGVORONOI_TOPOLOGY_VORONOI_PAIRS 1
@@ -222,6 +226,20 @@ enum segvoronoi_status segvoronoi_diagram_cell_edges(const struct segvoronoi_dia
                                                      uint32_t *edges,
                                                      size_t capacity,
                                                      size_t *count);
+
+// The site nearest to `(x, y)` (whose cell contains the point; on a cell
+// boundary any of the tied sites) in `*out_site`. The search walks the
+// diagram from site `hint` (`SEGVORONOI_NO_SITE` for none); the answer of a
+// previous query near `(x, y)` makes a good hint.
+//
+// Errors: `NULL_ARGUMENT`, `INVALID_COORDINATE` (`x` or `y` not finite),
+// `OUT_OF_RANGE` (the diagram has no sites, or `hint` is neither a site nor
+// `SEGVORONOI_NO_SITE`).
+enum segvoronoi_status segvoronoi_diagram_nearest_site(const struct segvoronoi_diagram *diagram,
+                                                       double x,
+                                                       double y,
+                                                       uint32_t hint,
+                                                       uint32_t *out_site);
 
 // Counts from the build. Errors: `NULL_ARGUMENT`.
 enum segvoronoi_status segvoronoi_diagram_stats(const struct segvoronoi_diagram *diagram,

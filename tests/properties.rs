@@ -109,5 +109,14 @@ proptest! {
         let mut rng = Rng(seed);
         let queries: Vec<Point> = (0..50).map(|_| Point::new(rng.unit() * 1200.0 - 600.0, rng.unit() * 1200.0 - 600.0)).collect();
         check_nearest_sites(&d, &queries, 1e-9);
+        if d.site_count() > 0 {
+            let mut hint = None;
+            for q in queries {
+                let found = d.nearest_site(q, hint).unwrap();
+                let best = d.site_ids().map(|s| d.site(s).distance(q)).fold(f64::INFINITY, f64::min);
+                prop_assert!(d.site(found).distance(q) <= best * (1.0 + 1e-12), "query {:?}", q);
+                hint = Some(found);
+            }
+        }
     }
 }

@@ -75,7 +75,7 @@ pub(super) fn finish(built: PointDiagram, site_of_input: &[SiteId], input: &[Poi
         vertices: finite_vertices,
         edges: edges.len(),
     };
-    let diagram = Diagram { store, sites, finite_vertices, edges, edge_of_half_edge: Default::default(), input_site, stats, extent };
+    let diagram = Diagram { store, sites, finite_vertices, edges, edge_of_half_edge: Default::default(), input_site, stats, extent, scale };
     debug_assert_eq!(diagram.validate(), Ok(()));
     diagram
 }

@@ -200,36 +200,12 @@ impl PointDiagram {
         }
     }
 
-    /// Greedy walk over neighbouring cells towards `p`. With exact distance
-    /// comparisons it ends at the nearest site; the step bound only matters
-    /// when the comparisons lie.
+    /// The site nearest to `p`, by a greedy walk from `start`. With exact
+    /// distance comparisons it ends at the nearest site; the step bound only
+    /// matters when the comparisons lie.
     fn nearest_site(&self, start: SiteId, p: Point) -> SiteId {
-        let mut current = start;
-        let mut d_current = self.sites[current.index()].distance_squared(p);
-        let limit = self.sites.len() + 8;
-        for _ in 0..limit {
-            if d_current == 0.0 {
-                break;
-            }
-            let (mut best, mut d_best) = (current, d_current);
-            for h in self.store.cell_boundary(current) {
-                let q = self.store.right(h);
-                if q == INFINITE {
-                    continue;
-                }
-                let d = self.sites[q.index()].distance_squared(p);
-                if closer(d, d_best) {
-                    best = q;
-                    d_best = d;
-                }
-            }
-            if best == current {
-                break;
-            }
-            current = best;
-            d_current = d_best;
-        }
-        current
+        let sites = &self.sites;
+        self.store.descend(start, self.sites.len() + 8, |q| sites[q.index()].distance_squared(p), closer)
     }
 
     /// Whether the circle of `v` strictly contains `p` (exact).

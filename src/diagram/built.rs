@@ -45,4 +45,7 @@ pub struct Diagram {
     pub(crate) stats: BuildStats,
     /// Diagonal of the input's bounding box, the scale of "zero length".
     pub(crate) extent: f64,
+    /// The power-of-two factor that brings the input into the range where
+    /// squared distances cannot overflow (used by queries).
+    pub(crate) scale: crate::geometry::scale::Scale,
 }

@@ -8,6 +8,10 @@ use crate::{Diagram, EdgeEnd, EdgeId, SiteId, TopologyOptions, VertexId};
 /// Marks an edge end at infinity in `segvoronoi_edge_end::vertex`.
 pub const SEGVORONOI_NO_VERTEX: u32 = u32::MAX;
 
+/// "No site": pass as the hint of `segvoronoi_diagram_nearest_site` to start
+/// anywhere.
+pub const SEGVORONOI_NO_SITE: u32 = u32::MAX;
+
 /// Flag for `segvoronoi_diagram_topology`: add the `VPAIRS` and `VVERTICES`
 /// sections (positive-length edges; vertices merged across zero-length edges).
 pub const SEGVORONOI_TOPOLOGY_VORONOI_PAIRS: u32 = 1;
@@ -262,6 +266,40 @@ pub unsafe extern "C" fn segvoronoi_diagram_cell_edges(
             segvoronoi_status::BufferTooSmall
         } else {
             segvoronoi_status::Ok
+        }
+    })
+}
+
+/// The site nearest to `(x, y)` (whose cell contains the point; on a cell
+/// boundary any of the tied sites) in `*out_site`. The search walks the
+/// diagram from site `hint` (`SEGVORONOI_NO_SITE` for none); the answer of a
+/// previous query near `(x, y)` makes a good hint.
+///
+/// Errors: `NULL_ARGUMENT`, `INVALID_COORDINATE` (`x` or `y` not finite),
+/// `OUT_OF_RANGE` (the diagram has no sites, or `hint` is neither a site nor
+/// `SEGVORONOI_NO_SITE`).
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_nearest_site(
+    diagram: *const segvoronoi_diagram,
+    x: f64,
+    y: f64,
+    hint: u32,
+    out_site: *mut u32,
+) -> segvoronoi_status {
+    require_non_null!(out_site);
+    with_diagram(diagram, |d| {
+        let p = crate::Point::new(x, y);
+        if !p.is_finite() {
+            return segvoronoi_status::InvalidCoordinate;
+        }
+        let hint = match hint {
+            SEGVORONOI_NO_SITE => None,
+            h if (h as usize) < d.site_count() => Some(SiteId::from_index(h as usize)),
+            _ => return segvoronoi_status::OutOfRange,
+        };
+        match d.nearest_site(p, hint) {
+            Some(s) => write_out(out_site, s.index() as u32),
+            None => segvoronoi_status::OutOfRange,
         }
     })
 }

@@ -121,6 +121,36 @@ impl Diagram {
         self.finite_vertices
     }
 
+    /// A site nearest to `p` (the one whose cell contains `p`; on a cell
+    /// boundary any of the tied sites), or `None` for an empty diagram.
+    /// Walks the diagram from `hint`, or from site 0 without one: a hint near
+    /// `p` (say the answer of the previous, nearby query) makes it fast.
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, Point};
+    /// let mut b = Builder::new();
+    /// b.add_points([[0.0, 0.0], [10.0, 0.0], [5.0, 8.0]])?;
+    /// let d = b.build()?;
+    /// let s = d.nearest_site(Point::new(9.0, 1.0), None).unwrap();
+    /// assert_eq!(d.site(s), Point::new(10.0, 0.0));
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn nearest_site(&self, p: Point, hint: Option<SiteId>) -> Option<SiteId> {
+        let n = self.sites.len();
+        if n == 0 || !p.is_finite() {
+            return None;
+        }
+        let start = hint.filter(|h| h.index() < n).unwrap_or(SiteId(0));
+        if n == 1 {
+            return Some(start);
+        }
+        // Compare distances in the builder's scaled coordinates, where squares
+        // of input-sized numbers cannot overflow.
+        let f = self.scale.to_internal;
+        let (sites, p) = (&self.sites, p.scaled(f));
+        Some(self.store.descend(start, n, |q| sites[q.index()].scaled(f).distance_squared(p), |a, b| a < b))
+    }
+
     /// A finite vertex, or `None` if the id is out of range.
     pub fn vertex(&self, id: VertexId) -> Option<Vertex> {
         (id.index() < self.finite_vertices).then(|| Vertex {
