@@ -1,0 +1,760 @@
+// segvoronoi_cgal_check: builds the Voronoi diagram of one point set with
+// segvoronoi (through its C API) and with CGAL's segment Delaunay graph
+// (exact predicates), writes both in the canonical topology of
+// src/query/topology.rs and compares them as multisets of lines.
+//
+//   segvoronoi_cgal_check <family> <n> [seed]
+//   segvoronoi_cgal_check --file input.txt [--degenerate]
+//
+// Families: uniform, clustered, tiny, tiny-offset, huge (generic: EDGES and
+// FACES must agree exactly) and lattice, circle, collinear (degenerate: only
+// VPAIRS and VVERTICES are unique, so only they must agree). The file is in
+// Boost.Polygon's text format: P, then P lines "x y", then S (must be 0), then
+// S segment lines. Exit status: 0 agreement and a valid diagram, 1 a
+// difference or an invalid diagram, 2 bad usage or input, 3 a library error.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
+#include <CGAL/Segment_Delaunay_graph_hierarchy_2.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/spatial_sort.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "segvoronoi.h"
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// Input
+// ---------------------------------------------------------------------------
+
+struct Point {
+    double x;
+    double y;
+};
+
+struct Input {
+    std::string family;
+    std::vector<Point> points;
+    // Degenerate input has many valid Delaunay graphs: only the Voronoi
+    // sections (positive-length edges, merged vertices) are unique.
+    bool degenerate = false;
+};
+
+// splitmix64: tiny, and the same sequence on every platform (the standard
+// library's distributions are implementation-defined).
+class Rng {
+  public:
+    explicit Rng(std::uint64_t seed) : state_(seed) {}
+
+    std::uint64_t next() {
+        std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        return z ^ (z >> 31);
+    }
+
+    // Uniform in [0, 1), 53 random bits.
+    double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+
+    std::size_t below(std::size_t bound) { return static_cast<std::size_t>(next() % bound); }
+
+    // Standard normal by Box-Muller (one of the pair is enough here).
+    double normal() {
+        const double u = 1.0 - unit();  // in (0, 1], so the log is finite
+        const double v = unit();
+        const double two_pi = 6.283185307179586;
+        return std::sqrt(-2.0 * std::log(u)) * std::cos(two_pi * v);
+    }
+
+  private:
+    std::uint64_t state_;
+};
+
+template <class T>
+void shuffle(std::vector<T>& items, Rng& rng) {
+    for (std::size_t i = items.size(); i > 1; --i) {
+        std::swap(items[i - 1], items[rng.below(i)]);
+    }
+}
+
+std::vector<Point> scaled_uniform(std::size_t n, Rng& rng, double offset, double size) {
+    std::vector<Point> points(n);
+    for (auto& p : points) {
+        p.x = offset + size * rng.unit();
+        p.y = offset + size * rng.unit();
+    }
+    return points;
+}
+
+// Gaussian clusters of different spreads around random centres.
+std::vector<Point> clustered(std::size_t n, Rng& rng) {
+    const std::size_t cluster_count = std::max<std::size_t>(1, n / 500);
+    std::vector<Point> centres(cluster_count);
+    std::vector<double> spreads(cluster_count);
+    for (std::size_t c = 0; c < cluster_count; ++c) {
+        centres[c] = {0.1 + 0.8 * rng.unit(), 0.1 + 0.8 * rng.unit()};
+        spreads[c] = 0.001 + 0.02 * rng.unit();
+    }
+    std::vector<Point> points(n);
+    for (auto& p : points) {
+        const std::size_t c = rng.below(cluster_count);
+        p.x = centres[c].x + spreads[c] * rng.normal();
+        p.y = centres[c].y + spreads[c] * rng.normal();
+    }
+    return points;
+}
+
+// The integer grid side x side with side = floor(sqrt(n)), shuffled: every
+// unit square is cocircular.
+std::vector<Point> lattice(std::size_t n, Rng& rng) {
+    std::size_t side = static_cast<std::size_t>(std::sqrt(static_cast<double>(n)));
+    while ((side + 1) * (side + 1) <= n) ++side;
+    std::vector<Point> points;
+    points.reserve(side * side);
+    for (std::size_t i = 0; i < side; ++i) {
+        for (std::size_t j = 0; j < side; ++j) {
+            points.push_back({static_cast<double>(i), static_cast<double>(j)});
+        }
+    }
+    shuffle(points, rng);
+    return points;
+}
+
+// Every integer point of x^2 + y^2 = R^2 for R = 5*13*17*29*37*41: R^2 is a
+// product of six squared primes of the form 4k + 1, so it has 4 * 3^6 = 2916
+// representations, all exactly cocircular (and R^2 < 2^53, so exact doubles).
+// Shuffled; the first n are kept.
+std::vector<Point> circle(std::size_t n, Rng& rng) {
+    const std::int64_t radius = 5LL * 13 * 17 * 29 * 37 * 41;
+    const std::int64_t r2 = radius * radius;
+    std::vector<Point> points;
+    for (std::int64_t x = 0; x <= radius; ++x) {
+        const std::int64_t rest = r2 - x * x;
+        std::int64_t y = static_cast<std::int64_t>(std::sqrt(static_cast<double>(rest)));
+        while (y * y > rest) --y;
+        while ((y + 1) * (y + 1) <= rest) ++y;
+        if (y * y != rest) continue;
+        // (x, y) with x >= 0, y >= 0 and its mirror images, each once.
+        for (const std::int64_t sx : {1, -1}) {
+            for (const std::int64_t sy : {1, -1}) {
+                if ((sx < 0 && x == 0) || (sy < 0 && y == 0)) continue;
+                points.push_back({static_cast<double>(sx * x), static_cast<double>(sy * y)});
+            }
+        }
+    }
+    shuffle(points, rng);
+    if (points.size() > n) points.resize(n);
+    return points;
+}
+
+// Points (i, 2i + 1) on one line, about a tenth of them repeated, shuffled.
+std::vector<Point> collinear(std::size_t n, Rng& rng) {
+    const std::size_t repeats = n / 10;
+    const std::size_t distinct = n - repeats;
+    std::vector<Point> points;
+    points.reserve(n);
+    for (std::size_t i = 0; i < distinct; ++i) {
+        const double t = static_cast<double>(i);
+        points.push_back({t, 2.0 * t + 1.0});
+    }
+    for (std::size_t k = 0; k < repeats && distinct > 0; ++k) {
+        points.push_back(points[rng.below(distinct)]);
+    }
+    shuffle(points, rng);
+    return points;
+}
+
+bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, Input& input) {
+    Rng rng(seed);
+    input.family = family;
+    input.degenerate = false;
+    if (family == "uniform") {
+        input.points = scaled_uniform(n, rng, 0.0, 1.0);
+    } else if (family == "clustered") {
+        input.points = clustered(n, rng);
+    } else if (family == "tiny") {
+        input.points = scaled_uniform(n, rng, 0.0, 1e-9);
+    } else if (family == "tiny-offset") {
+        input.points = scaled_uniform(n, rng, 1.0, 1e-9);
+    } else if (family == "huge") {
+        input.points = scaled_uniform(n, rng, 0.0, 1e9);
+    } else if (family == "lattice") {
+        input.points = lattice(n, rng);
+        input.degenerate = true;
+    } else if (family == "circle") {
+        input.points = circle(n, rng);
+        input.degenerate = true;
+    } else if (family == "collinear") {
+        input.points = collinear(n, rng);
+        input.degenerate = true;
+    } else {
+        return false;
+    }
+    return true;
+}
+
+// Boost.Polygon text format: P, P lines "x y", S, S lines "x0 y0 x1 y1".
+bool read_file(const std::string& path, Input& input, std::string& error) {
+    std::ifstream in(path);
+    if (!in) {
+        error = "cannot open " + path;
+        return false;
+    }
+    std::size_t point_count = 0;
+    if (!(in >> point_count)) {
+        error = "missing point count";
+        return false;
+    }
+    input.points.resize(point_count);
+    for (std::size_t i = 0; i < point_count; ++i) {
+        Point& p = input.points[i];
+        if (!(in >> p.x >> p.y) || !std::isfinite(p.x) || !std::isfinite(p.y)) {
+            error = "point " + std::to_string(i) + " is missing, malformed or not finite";
+            return false;
+        }
+    }
+    std::size_t segment_count = 0;
+    if (in >> segment_count && segment_count != 0) {
+        error = "segments are not supported yet (S = " + std::to_string(segment_count) + ")";
+        return false;
+    }
+    input.family = "file";
+    return true;
+}
+
+// ---------------------------------------------------------------------------
+// Canonical topology: sections of lines, each line a sorted list of names.
+// ---------------------------------------------------------------------------
+
+// Kind (0 = point "P", 1 = segment "S") and index: the pair order is the
+// canonical name order (P before S, then numerically).
+using Name = std::pair<int, std::uint32_t>;
+using Line = std::vector<Name>;
+// Line -> multiplicity.
+using Section = std::map<Line, std::size_t>;
+
+const char* const kSectionTitles[] = {"EDGES", "FACES", "VPAIRS", "VVERTICES"};
+
+struct Topology {
+    std::map<std::string, Section> sections;
+
+    void add(const std::string& title, Line line) {
+        std::sort(line.begin(), line.end());
+        ++sections[title][line];
+    }
+
+    std::size_t count(const std::string& title) const {
+        auto it = sections.find(title);
+        if (it == sections.end()) return 0;
+        std::size_t total = 0;
+        for (const auto& entry : it->second) total += entry.second;
+        return total;
+    }
+
+    const Section& section(const std::string& title) const {
+        static const Section empty;
+        auto it = sections.find(title);
+        return it == sections.end() ? empty : it->second;
+    }
+};
+
+std::string format_line(const Line& line) {
+    std::string text;
+    for (const Name& name : line) {
+        if (!text.empty()) text += ' ';
+        text += name.first == 0 ? 'P' : 'S';
+        text += std::to_string(name.second);
+    }
+    return text;
+}
+
+Name parse_name(const std::string& token) {
+    if (token.size() < 2 || (token[0] != 'P' && token[0] != 'S')) {
+        throw std::runtime_error("bad site name '" + token + "'");
+    }
+    std::size_t used = 0;
+    const unsigned long index = std::stoul(token.substr(1), &used);
+    if (used != token.size() - 1) throw std::runtime_error("bad site name '" + token + "'");
+    return {token[0] == 'P' ? 0 : 1, static_cast<std::uint32_t>(index)};
+}
+
+// Parses the library's text: "TITLE count" headers, each followed by
+// exactly count lines of names. Throws on anything else.
+Topology parse_topology(const std::string& text) {
+    Topology topology;
+    std::istringstream in(text);
+    std::string header;
+    while (std::getline(in, header)) {
+        std::istringstream words(header);
+        std::string title;
+        std::size_t count = 0;
+        if (!(words >> title >> count)) throw std::runtime_error("bad section header '" + header + "'");
+        topology.sections[title];  // an empty section is still a section
+        for (std::size_t i = 0; i < count; ++i) {
+            std::string row;
+            if (!std::getline(in, row)) throw std::runtime_error("section " + title + " is short");
+            std::istringstream tokens(row);
+            Line line;
+            std::string token;
+            while (tokens >> token) line.push_back(parse_name(token));
+            if (line.empty()) throw std::runtime_error("empty line in section " + title);
+            topology.add(title, line);
+        }
+    }
+    return topology;
+}
+
+// Sites in order of first appearance; equal coordinates (and -0 == +0, which
+// the map's ordering already treats as equal) are one site.
+struct Sites {
+    std::vector<Point> distinct;
+    std::map<std::pair<double, double>, std::uint32_t> index_of;
+
+    explicit Sites(const std::vector<Point>& input) {
+        for (const Point& p : input) {
+            auto inserted = index_of.emplace(std::make_pair(p.x, p.y), static_cast<std::uint32_t>(distinct.size()));
+            if (inserted.second) distinct.push_back({p.x == 0.0 ? 0.0 : p.x, p.y == 0.0 ? 0.0 : p.y});
+        }
+    }
+
+    std::uint32_t index(double x, double y) const {
+        auto it = index_of.find(std::make_pair(x, y));
+        if (it == index_of.end()) throw std::runtime_error("CGAL vertex at a point that is not an input point");
+        return it->second;
+    }
+
+    // Bounding-box diagonal, computed as the library does (halved first so
+    // that huge inputs do not overflow): the scale of "zero length".
+    double extent() const {
+        if (distinct.empty()) return 0.0;
+        Point lo = distinct[0], hi = distinct[0];
+        for (const Point& p : distinct) {
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+        }
+        return 2.0 * std::hypot(hi.x / 2.0 - lo.x / 2.0, hi.y / 2.0 - lo.y / 2.0);
+    }
+};
+
+// Same constant as segvoronoi::query::topology::ZERO_LENGTH.
+constexpr double kZeroLength = 1e-9;
+
+class UnionFind {
+  public:
+    explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+
+    std::size_t root(std::size_t v) {
+        while (parent_[v] != v) {
+            parent_[v] = parent_[parent_[v]];
+            v = parent_[v];
+        }
+        return v;
+    }
+
+    void join(std::size_t a, std::size_t b) { parent_[root(a)] = root(b); }
+
+  private:
+    std::vector<std::size_t> parent_;
+};
+
+double elapsed_ms(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// ---------------------------------------------------------------------------
+// Our side, through the C API
+// ---------------------------------------------------------------------------
+
+struct OursResult {
+    Topology plain;  // flags 0: EDGES, FACES
+    Topology full;   // SEGVORONOI_TOPOLOGY_VORONOI_PAIRS: all four sections
+    double build_ms = 0.0;
+    std::vector<std::string> problems;  // validity and consistency failures
+};
+
+class LibraryError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+void check_status(segvoronoi_status status, const char* call, const segvoronoi_builder* builder = nullptr) {
+    if (status == SEGVORONOI_STATUS_OK) return;
+    std::string message = std::string(call) + ": " + segvoronoi_status_str(status);
+    if (builder != nullptr) message += std::string(" (") + segvoronoi_builder_last_error(builder) + ")";
+    throw LibraryError(message);
+}
+
+std::string topology_text(const segvoronoi_diagram* diagram, std::uint32_t flags) {
+    char* text = nullptr;
+    std::size_t length = 0;
+    check_status(segvoronoi_diagram_topology(diagram, flags, &text, &length), "segvoronoi_diagram_topology");
+    std::string copy(text, length);
+    segvoronoi_string_free(text);
+    return copy;
+}
+
+void check_ours_consistent(const segvoronoi_diagram* diagram, const Sites& sites, OursResult& ours) {
+    if (segvoronoi_diagram_validate(diagram) != SEGVORONOI_STATUS_OK) {
+        ours.problems.push_back("segvoronoi_diagram_validate failed");
+    }
+    for (const char* title : {"EDGES", "FACES"}) {
+        if (ours.plain.section(title) != ours.full.section(title)) {
+            ours.problems.push_back(std::string(title) + " differs between the two topology calls");
+        }
+    }
+    if (segvoronoi_diagram_site_count(diagram) != sites.distinct.size()) {
+        ours.problems.push_back("site count " + std::to_string(segvoronoi_diagram_site_count(diagram)) +
+                                " != distinct points " + std::to_string(sites.distinct.size()));
+    }
+    if (segvoronoi_diagram_edge_count(diagram) != ours.plain.count("EDGES")) {
+        ours.problems.push_back("edge count differs from the EDGES section");
+    }
+    if (segvoronoi_diagram_vertex_count(diagram) != ours.plain.count("FACES")) {
+        ours.problems.push_back("vertex count differs from the FACES section");
+    }
+}
+
+OursResult build_ours(const Input& input, const Sites& sites) {
+    OursResult ours;
+    std::vector<double> xy;
+    xy.reserve(2 * input.points.size());
+    for (const Point& p : input.points) {
+        xy.push_back(p.x);
+        xy.push_back(p.y);
+    }
+    segvoronoi_builder* builder = segvoronoi_builder_new();
+    if (builder == nullptr) throw LibraryError("segvoronoi_builder_new returned NULL");
+    segvoronoi_diagram* diagram = nullptr;
+    try {
+        const auto start = std::chrono::steady_clock::now();
+        check_status(segvoronoi_builder_add_points(builder, xy.data(), input.points.size()),
+                     "segvoronoi_builder_add_points", builder);
+        check_status(segvoronoi_builder_build(builder, &diagram), "segvoronoi_builder_build", builder);
+        ours.build_ms = elapsed_ms(start);
+        ours.plain = parse_topology(topology_text(diagram, 0));
+        ours.full = parse_topology(topology_text(diagram, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS));
+        check_ours_consistent(diagram, sites, ours);
+    } catch (...) {
+        segvoronoi_diagram_free(diagram);
+        segvoronoi_builder_free(builder);
+        throw;
+    }
+    segvoronoi_diagram_free(diagram);
+    segvoronoi_builder_free(builder);
+    return ours;
+}
+
+// ---------------------------------------------------------------------------
+// CGAL's side
+// ---------------------------------------------------------------------------
+
+using K = CGAL::Simple_cartesian<double>;
+// Exact predicates (interval filter, then Gmpq) on double input; the input
+// has no segments, so the cheaper traits without intersections suffice.
+using Gt = CGAL::Segment_Delaunay_graph_filtered_traits_without_intersections_2<K, CGAL::Field_with_sqrt_tag>;
+using Sdg = CGAL::Segment_Delaunay_graph_hierarchy_2<Gt>;
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+struct CgalResult {
+    Topology topology;
+    double build_ms = 0.0;
+    int dimension = 0;
+    // Finite edges whose four points are exactly cocircular: where the
+    // Delaunay graph is not unique (diagnostic for "generic" inputs).
+    std::size_t cocircular_edges = 0;
+};
+
+std::uint32_t site_index(const Sdg::Vertex_handle& v, const Sites& sites) {
+    const K::Point_2 p = v->site().point();
+    return sites.index(p.x(), p.y());
+}
+
+// The two sites of an edge (f, i): the vertices of f other than i. In
+// dimension 1 the edges are (f, 2), and ccw(2) = 0, cw(2) = 1 are the two
+// vertices of the segment f, so the same rule holds.
+std::pair<Sdg::Vertex_handle, Sdg::Vertex_handle> edge_vertices(const Sdg::Edge& e) {
+    return {e.first->vertex(Sdg::ccw(e.second)), e.first->vertex(Sdg::cw(e.second))};
+}
+
+// Circumcentre of three points, exact in rationals, then rounded: the
+// Voronoi vertex of a Delaunay face of points.
+Point exact_circumcentre(const K::Point_2& a, const K::Point_2& b, const K::Point_2& c) {
+    using Q = CGAL::Gmpq;
+    const Q bx = Q(b.x()) - Q(a.x()), by = Q(b.y()) - Q(a.y());
+    const Q cx = Q(c.x()) - Q(a.x()), cy = Q(c.y()) - Q(a.y());
+    const Q b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+    const Q d = Q(2) * (bx * cy - by * cx);
+    if (CGAL::is_zero(d)) throw std::runtime_error("CGAL has a finite face with three collinear points");
+    const Q ux = (cy * b2 - by * c2) / d + Q(a.x());
+    const Q uy = (bx * c2 - cx * b2) / d + Q(a.y());
+    return {CGAL::to_double(ux), CGAL::to_double(uy)};
+}
+
+Epick::Point_2 as_epick(const Sdg::Vertex_handle& v) {
+    const K::Point_2 p = v->site().point();
+    return {p.x(), p.y()};
+}
+
+void build_cgal_graph(const Sites& sites, Sdg& sdg, CgalResult& cgal) {
+    std::vector<K::Point_2> points;
+    points.reserve(sites.distinct.size());
+    for (const Point& p : sites.distinct) points.emplace_back(p.x, p.y);
+    const auto start = std::chrono::steady_clock::now();
+    CGAL::spatial_sort(points.begin(), points.end());
+    for (const K::Point_2& p : points) sdg.insert(p);
+    cgal.build_ms = elapsed_ms(start);
+    cgal.dimension = sdg.dimension();
+    if (sdg.number_of_vertices() != sites.distinct.size()) {
+        throw std::runtime_error("CGAL kept " + std::to_string(sdg.number_of_vertices()) + " of " +
+                                 std::to_string(sites.distinct.size()) + " distinct points");
+    }
+}
+
+// EDGES and FACES: every finite Delaunay edge and face.
+void add_delaunay_sections(const Sdg& sdg, const Sites& sites, Topology& topology) {
+    topology.sections["EDGES"];
+    topology.sections["FACES"];
+    if (sdg.dimension() >= 1) {
+        for (auto e = sdg.finite_edges_begin(); e != sdg.finite_edges_end(); ++e) {
+            const auto ends = edge_vertices(*e);
+            topology.add("EDGES", {{0, site_index(ends.first, sites)}, {0, site_index(ends.second, sites)}});
+        }
+    }
+    if (sdg.dimension() == 2) {
+        for (auto f = sdg.finite_faces_begin(); f != sdg.finite_faces_end(); ++f) {
+            topology.add("FACES", {{0, site_index(f->vertex(0), sites)},
+                                   {0, site_index(f->vertex(1), sites)},
+                                   {0, site_index(f->vertex(2), sites)}});
+        }
+    }
+}
+
+// VPAIRS and VVERTICES. Zero length is decided by the distance of the two
+// Voronoi vertices (not by CGAL's is_degenerate_edge, which also says
+// "degenerate" for two far-apart vertices of the same three sites). An edge
+// next to an infinite face is a ray (or a line), always of positive length.
+void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) {
+    Topology& topology = cgal.topology;
+    topology.sections["VPAIRS"];
+    topology.sections["VVERTICES"];
+    if (sdg.dimension() < 1) return;
+
+    std::unordered_map<const void*, std::size_t> face_number;
+    std::vector<Sdg::Face_handle> faces;
+    std::vector<Point> centres;
+    if (sdg.dimension() == 2) {
+        for (auto f = sdg.finite_faces_begin(); f != sdg.finite_faces_end(); ++f) {
+            face_number.emplace(&*f, faces.size());
+            faces.push_back(f);
+            centres.push_back(exact_circumcentre(f->vertex(0)->site().point(), f->vertex(1)->site().point(),
+                                                 f->vertex(2)->site().point()));
+        }
+    }
+
+    const double threshold = kZeroLength * sites.extent();
+    UnionFind merged(faces.size());
+    for (auto e = sdg.finite_edges_begin(); e != sdg.finite_edges_end(); ++e) {
+        const auto ends = edge_vertices(*e);
+        const Line pair = {{0, site_index(ends.first, sites)}, {0, site_index(ends.second, sites)}};
+        const bool finite = sdg.dimension() == 2 && !sdg.is_infinite(e->first) &&
+                            !sdg.is_infinite(e->first->neighbor(e->second));
+        if (!finite) {
+            topology.add("VPAIRS", pair);
+            continue;
+        }
+        const std::size_t a = face_number.at(&*e->first);
+        const std::size_t b = face_number.at(&*e->first->neighbor(e->second));
+        const double length = std::hypot(centres[a].x - centres[b].x, centres[a].y - centres[b].y);
+        if (length > threshold) {
+            topology.add("VPAIRS", pair);
+        } else {
+            merged.join(a, b);
+        }
+        const Sdg::Vertex_handle apex_a = e->first->vertex(e->second);
+        const Sdg::Vertex_handle apex_b = sdg.tds().mirror_vertex(e->first, e->second);
+        if (CGAL::side_of_oriented_circle(as_epick(ends.first), as_epick(ends.second), as_epick(apex_a),
+                                          as_epick(apex_b)) == CGAL::ON_ORIENTED_BOUNDARY) {
+            ++cgal.cocircular_edges;
+        }
+    }
+
+    std::map<std::size_t, Line> groups;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        Line& group = groups[merged.root(f)];
+        for (int i = 0; i < 3; ++i) {
+            const Name name{0, site_index(faces[f]->vertex(i), sites)};
+            if (std::find(group.begin(), group.end(), name) == group.end()) group.push_back(name);
+        }
+    }
+    for (auto& entry : groups) topology.add("VVERTICES", entry.second);
+}
+
+CgalResult build_cgal(const Sites& sites) {
+    CgalResult cgal;
+    Sdg sdg;
+    build_cgal_graph(sites, sdg, cgal);
+    add_delaunay_sections(sdg, sites, cgal.topology);
+    add_voronoi_sections(sdg, sites, cgal);
+    return cgal;
+}
+
+// ---------------------------------------------------------------------------
+// Comparison and report
+// ---------------------------------------------------------------------------
+
+struct SectionDiff {
+    std::size_t matched = 0;
+    std::size_t only_ours = 0;
+    std::size_t only_cgal = 0;
+    // (side, line) for the first differing lines.
+    std::vector<std::pair<std::string, Line>> examples;
+};
+
+constexpr std::size_t kMaxExamples = 10;
+
+void note_excess(SectionDiff& diff, const char* side, const Line& line, std::size_t excess, std::size_t& total) {
+    total += excess;
+    for (std::size_t k = 0; k < excess && diff.examples.size() < kMaxExamples; ++k) {
+        diff.examples.emplace_back(side, line);
+    }
+}
+
+// Multiset comparison: a line present m times in ours and c times in CGAL's
+// matches min(m, c) times; the rest is excess on one side.
+SectionDiff compare_section(const Section& ours, const Section& cgal) {
+    SectionDiff diff;
+    for (const auto& entry : ours) {
+        auto it = cgal.find(entry.first);
+        const std::size_t theirs = it == cgal.end() ? 0 : it->second;
+        diff.matched += std::min(entry.second, theirs);
+        if (entry.second > theirs) note_excess(diff, "only_ours", entry.first, entry.second - theirs, diff.only_ours);
+    }
+    for (const auto& entry : cgal) {
+        auto it = ours.find(entry.first);
+        const std::size_t mine = it == ours.end() ? 0 : it->second;
+        if (entry.second > mine) note_excess(diff, "only_cgal", entry.first, entry.second - mine, diff.only_cgal);
+    }
+    return diff;
+}
+
+bool is_checked(const std::string& title, bool degenerate) {
+    if (degenerate) return title == "VPAIRS" || title == "VVERTICES";
+    return title == "EDGES" || title == "FACES";
+}
+
+int report(const Input& input, const Sites& sites, const OursResult& ours, const CgalResult& cgal) {
+    std::size_t matched = 0, only_ours = 0, only_cgal = 0;
+    std::ostringstream details;
+    for (const char* title : kSectionTitles) {
+        const bool checked = is_checked(title, input.degenerate);
+        const SectionDiff diff = compare_section(ours.full.section(title), cgal.topology.section(title));
+        if (checked) {
+            matched += diff.matched;
+            only_ours += diff.only_ours;
+            only_cgal += diff.only_cgal;
+        }
+        details << "  " << title << (checked ? " (checked)" : " (info)") << ": ours=" << ours.full.count(title)
+                << " cgal=" << cgal.topology.count(title) << " matched=" << diff.matched
+                << " only_ours=" << diff.only_ours << " only_cgal=" << diff.only_cgal << "\n";
+        if (!checked) continue;
+        for (const auto& example : diff.examples) {
+            details << "    " << example.first << " " << title << ": " << format_line(example.second) << "\n";
+        }
+    }
+    const bool agree = only_ours == 0 && only_cgal == 0;
+    const bool valid = ours.problems.empty();
+    std::printf("family=%s n=%zu sites=%zu degenerate=%s ours_edges=%zu cgal_edges=%zu ours_faces=%zu cgal_faces=%zu "
+                "matched=%zu only_ours=%zu only_cgal=%zu cgal_dimension=%d cocircular_edges=%zu "
+                "ours_build_ms=%.1f cgal_build_ms=%.1f valid=%s verdict=%s\n",
+                input.family.c_str(), input.points.size(), sites.distinct.size(), input.degenerate ? "yes" : "no",
+                ours.full.count("EDGES"), cgal.topology.count("EDGES"), ours.full.count("FACES"),
+                cgal.topology.count("FACES"), matched, only_ours, only_cgal, cgal.dimension, cgal.cocircular_edges,
+                ours.build_ms, cgal.build_ms, valid ? "yes" : "no", agree && valid ? "AGREE" : "DIFFER");
+    std::fputs(details.str().c_str(), stdout);
+    for (const std::string& problem : ours.problems) std::printf("  invalid: %s\n", problem.c_str());
+    if (!input.degenerate && !agree && cgal.cocircular_edges > 0) {
+        std::printf("  note: the input has %zu exactly cocircular Delaunay edges, so it is not generic\n",
+                    cgal.cocircular_edges);
+    }
+    return agree && valid ? 0 : 1;
+}
+
+int usage() {
+    std::fprintf(stderr,
+                 "usage: segvoronoi_cgal_check <family> <n> [seed]\n"
+                 "       segvoronoi_cgal_check --file input.txt [--degenerate]\n"
+                 "families: uniform clustered tiny tiny-offset huge (generic), lattice circle collinear "
+                 "(degenerate)\n");
+    return 2;
+}
+
+bool parse_count(const char* text, std::uint64_t& value) {
+    char* end = nullptr;
+    errno = 0;
+    value = std::strtoull(text, &end, 10);
+    return errno == 0 && end != text && *end == '\0' && text[0] != '-';
+}
+
+// Fills `input` from the command line; returns false after printing why not.
+bool parse_arguments(int argc, char** argv, Input& input) {
+    if (argc >= 3 && std::string(argv[1]) == "--file") {
+        if (argc > 4 || (argc == 4 && std::string(argv[3]) != "--degenerate")) return usage(), false;
+        std::string error;
+        if (!read_file(argv[2], input, error)) {
+            std::fprintf(stderr, "segvoronoi_cgal_check: %s: %s\n", argv[2], error.c_str());
+            return false;
+        }
+        input.degenerate = argc == 4;
+        return true;
+    }
+    std::uint64_t n = 0, seed = 1;
+    if (argc < 3 || argc > 4 || !parse_count(argv[2], n) || (argc == 4 && !parse_count(argv[3], seed))) {
+        return usage(), false;
+    }
+    if (!make_family(argv[1], static_cast<std::size_t>(n), seed, input)) return usage(), false;
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Input input;
+    if (!parse_arguments(argc, argv, input)) return 2;
+    const Sites sites(input.points);
+    OursResult ours;
+    try {
+        ours = build_ours(input, sites);
+    } catch (const std::exception& error) {
+        std::printf("family=%s n=%zu verdict=ERROR segvoronoi: %s\n", input.family.c_str(), input.points.size(),
+                    error.what());
+        return 3;
+    }
+    CgalResult cgal;
+    try {
+        cgal = build_cgal(sites);
+    } catch (const std::exception& error) {
+        std::printf("family=%s n=%zu verdict=ERROR cgal: %s\n", input.family.c_str(), input.points.size(),
+                    error.what());
+        return 3;
+    }
+    return report(input, sites, ours, cgal);
+}
