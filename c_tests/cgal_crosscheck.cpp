@@ -7,8 +7,9 @@
 //   segvoronoi_cgal_check --file input.txt [--degenerate]
 //
 // Families: uniform, clustered, tiny, tiny-offset, huge (generic: EDGES and
-// FACES must agree exactly) and lattice, circle, collinear (degenerate: only
-// VPAIRS and VVERTICES are unique, so only they must agree). The file is in
+// FACES must agree exactly) and lattice, circle, collinear, tiny-lattice,
+// snapped (degenerate: only VPAIRS and VVERTICES are unique, so only they
+// must agree). The file is in
 // Boost.Polygon's text format: P, then P lines "x y", then S (must be 0), then
 // S segment lines. Exit status: 0 agreement and a valid diagram, 1 a
 // difference or an invalid diagram, 2 bad usage or input, 3 a library error.
@@ -183,6 +184,25 @@ std::vector<Point> collinear(std::size_t n, Rng& rng) {
     return points;
 }
 
+// The lattice scaled by 2^-600 (exact): Voronoi edges about 1e-181 long,
+// whose squared lengths underflow. Exactly as degenerate as the lattice.
+std::vector<Point> tiny_lattice(std::size_t n, Rng& rng) {
+    std::vector<Point> points = lattice(n, rng);
+    for (Point& p : points) p = {std::ldexp(p.x, -600), std::ldexp(p.y, -600)};
+    return points;
+}
+
+// Coordinates drawn from a few values, some a hair apart (1e-20, 3e-17 next
+// to 0 and 1): many repeats, collinear and cocircular points, and
+// near-collinear triples whose Voronoi vertices are hard to place.
+std::vector<Point> snapped(std::size_t n, Rng& rng) {
+    const double values[] = {0.0, 1.0, -1.0, 1e-20, -1e-20, 2.0, 0.5, -3e-17};
+    const std::size_t count = sizeof values / sizeof values[0];
+    std::vector<Point> points(n);
+    for (Point& p : points) p = {values[rng.below(count)], values[rng.below(count)]};
+    return points;
+}
+
 bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, Input& input) {
     Rng rng(seed);
     input.family = family;
@@ -205,6 +225,12 @@ bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, I
         input.degenerate = true;
     } else if (family == "collinear") {
         input.points = collinear(n, rng);
+        input.degenerate = true;
+    } else if (family == "tiny-lattice") {
+        input.points = tiny_lattice(n, rng);
+        input.degenerate = true;
+    } else if (family == "snapped") {
+        input.points = snapped(n, rng);
         input.degenerate = true;
     } else {
         return false;
@@ -495,18 +521,31 @@ std::pair<Sdg::Vertex_handle, Sdg::Vertex_handle> edge_vertices(const Sdg::Edge&
     return {e.first->vertex(Sdg::ccw(e.second)), e.first->vertex(Sdg::cw(e.second))};
 }
 
-// Circumcentre of three points, exact in rationals, then rounded: the
-// Voronoi vertex of a Delaunay face of points.
-Point exact_circumcentre(const K::Point_2& a, const K::Point_2& b, const K::Point_2& c) {
-    using Q = CGAL::Gmpq;
+using Rational = CGAL::Gmpq;
+
+struct ExactPoint {
+    Rational x;
+    Rational y;
+};
+
+// Circumcentre of three points in exact rationals: the Voronoi vertex of a
+// Delaunay face of points, free of rounding, so that the zero-length test
+// below depends on the threshold alone.
+ExactPoint exact_circumcentre(const K::Point_2& a, const K::Point_2& b, const K::Point_2& c) {
+    using Q = Rational;
     const Q bx = Q(b.x()) - Q(a.x()), by = Q(b.y()) - Q(a.y());
     const Q cx = Q(c.x()) - Q(a.x()), cy = Q(c.y()) - Q(a.y());
     const Q b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
     const Q d = Q(2) * (bx * cy - by * cx);
     if (CGAL::is_zero(d)) throw std::runtime_error("CGAL has a finite face with three collinear points");
-    const Q ux = (cy * b2 - by * c2) / d + Q(a.x());
-    const Q uy = (bx * c2 - cx * b2) / d + Q(a.y());
-    return {CGAL::to_double(ux), CGAL::to_double(uy)};
+    return {(cy * b2 - by * c2) / d + Q(a.x()), (bx * c2 - cx * b2) / d + Q(a.y())};
+}
+
+// The library's rule, `!(length > threshold)`, decided exactly.
+bool is_zero_length(const ExactPoint& p, const ExactPoint& q, double threshold) {
+    const Rational dx = p.x - q.x, dy = p.y - q.y;
+    const Rational limit(threshold);
+    return dx * dx + dy * dy <= limit * limit;
 }
 
 Epick::Point_2 as_epick(const Sdg::Vertex_handle& v) {
@@ -548,9 +587,10 @@ void add_delaunay_sections(const Sdg& sdg, const Sites& sites, Topology& topolog
     }
 }
 
-// VPAIRS and VVERTICES. Zero length is decided by the distance of the two
-// Voronoi vertices (not by CGAL's is_degenerate_edge, which also says
-// "degenerate" for two far-apart vertices of the same three sites). An edge
+// VPAIRS and VVERTICES. Zero length is decided by the exact distance of the
+// two Voronoi vertices against the library's threshold (not by CGAL's
+// is_degenerate_edge, which also says "degenerate" for two far-apart vertices
+// of the same three sites). An edge
 // next to an infinite face is a ray (or a line), always of positive length.
 void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) {
     Topology& topology = cgal.topology;
@@ -560,7 +600,7 @@ void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) 
 
     std::unordered_map<const void*, std::size_t> face_number;
     std::vector<Sdg::Face_handle> faces;
-    std::vector<Point> centres;
+    std::vector<ExactPoint> centres;
     if (sdg.dimension() == 2) {
         for (auto f = sdg.finite_faces_begin(); f != sdg.finite_faces_end(); ++f) {
             face_number.emplace(&*f, faces.size());
@@ -583,11 +623,10 @@ void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) 
         }
         const std::size_t a = face_number.at(&*e->first);
         const std::size_t b = face_number.at(&*e->first->neighbor(e->second));
-        const double length = std::hypot(centres[a].x - centres[b].x, centres[a].y - centres[b].y);
-        if (length > threshold) {
-            topology.add("VPAIRS", pair);
-        } else {
+        if (is_zero_length(centres[a], centres[b], threshold)) {
             merged.join(a, b);
+        } else {
+            topology.add("VPAIRS", pair);
         }
         const Sdg::Vertex_handle apex_a = e->first->vertex(e->second);
         const Sdg::Vertex_handle apex_b = sdg.tds().mirror_vertex(e->first, e->second);
@@ -703,7 +742,7 @@ int usage() {
                  "usage: segvoronoi_cgal_check <family> <n> [seed]\n"
                  "       segvoronoi_cgal_check --file input.txt [--degenerate]\n"
                  "families: uniform clustered tiny tiny-offset huge (generic), lattice circle collinear "
-                 "(degenerate)\n");
+                 "tiny-lattice snapped (degenerate)\n");
     return 2;
 }
 
