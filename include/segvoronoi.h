@@ -151,7 +151,8 @@ enum segvoronoi_status segvoronoi_builder_add_point(struct segvoronoi_builder *b
 //
 // Errors: `SEGVORONOI_STATUS_INVALID_COORDINATE` for the first non-finite
 // coordinate; nothing is added and the message names the input index the
-// point would have had.
+// point would have had. `SEGVORONOI_STATUS_TOO_LARGE` when the builder
+// would hold more than 600 million points (checked before `xy` is read).
 enum segvoronoi_status segvoronoi_builder_add_points(struct segvoronoi_builder *builder,
                                                      const double *xy,
                                                      size_t count);
@@ -258,10 +259,11 @@ enum segvoronoi_status segvoronoi_diagram_topology(const struct segvoronoi_diagr
                                                    char **text,
                                                    size_t *length);
 
-// Static text for a status code; never NULL, valid forever.
+// Static text for a status code (a `segvoronoi_status` value); never NULL,
+// valid forever. Numbers that are no status give `"unknown status"`.
 //
 // Thread safety: safe from any thread.
-const char *segvoronoi_status_str(enum segvoronoi_status status);
+const char *segvoronoi_status_str(int status);
 
 // The library version, `"MAJOR.MINOR.PATCH"`, the same as
 // `SEGVORONOI_VERSION_STRING` in a matching header. Static, never NULL.

@@ -62,6 +62,15 @@ impl Builder {
         Ok(index)
     }
 
+    /// Makes room for `additional` more points, or fails with
+    /// [`ErrorKind::TooLarge`] (the builder unchanged) when the total would
+    /// exceed [`MAX_POINTS`].
+    pub fn reserve(&mut self, additional: usize) -> Result<(), Error> {
+        check_capacity(self.points.len().saturating_add(additional))?;
+        self.points.reserve(additional);
+        Ok(())
+    }
+
     /// Adds many points, all or none: on error (the first non-finite
     /// coordinate, named by the index it would have had) nothing is added.
     pub fn add_points<P, I>(&mut self, points: I) -> Result<(), Error>
@@ -71,7 +80,7 @@ impl Builder {
     {
         let start = self.points.len();
         let iter = points.into_iter();
-        self.points.reserve(iter.size_hint().0);
+        self.reserve(iter.size_hint().0)?;
         for (k, p) in iter.enumerate() {
             let p = p.into();
             if let Err(e) = check_point(start + k, p).and_then(|_| check_capacity(start + k + 1)) {
@@ -107,8 +116,8 @@ fn check_capacity(count: usize) -> Result<(), Error> {
     }
     Err(Error::new(
         ErrorKind::TooLarge,
-        format!("point {} is one too many: a diagram holds at most {MAX_POINTS} points", count - 1),
-        vec![count - 1],
+        format!("point {MAX_POINTS} is one too many: a diagram holds at most {MAX_POINTS} points"),
+        vec![MAX_POINTS],
     ))
 }
 

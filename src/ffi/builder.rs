@@ -71,7 +71,8 @@ pub unsafe extern "C" fn segvoronoi_builder_add_point(builder: *mut segvoronoi_b
 ///
 /// Errors: `SEGVORONOI_STATUS_INVALID_COORDINATE` for the first non-finite
 /// coordinate; nothing is added and the message names the input index the
-/// point would have had.
+/// point would have had. `SEGVORONOI_STATUS_TOO_LARGE` when the builder
+/// would hold more than 600 million points (checked before `xy` is read).
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_builder_add_points(
     builder: *mut segvoronoi_builder,
@@ -85,8 +86,10 @@ pub unsafe extern "C" fn segvoronoi_builder_add_points(
     guard(|| {
         // SAFETY: non-null; the caller keeps builder exclusive and xy valid for 2*count reads.
         let b = unsafe { &mut *builder };
-        if count > isize::MAX as usize / 16 {
-            return segvoronoi_status::TooLarge;
+        // Checked before `xy` is turned into a slice: a count this large
+        // cannot describe a real buffer.
+        if let Err(e) = b.inner.reserve(count) {
+            return b.record(Err(e));
         }
         let coords: &[f64] = if count == 0 { &[] } else { unsafe { std::slice::from_raw_parts(xy, 2 * count) } };
         let r = b.inner.add_points(coords.chunks_exact(2).map(|c| [c[0], c[1]]));
@@ -114,9 +117,11 @@ pub unsafe extern "C" fn segvoronoi_builder_build(
     builder: *mut segvoronoi_builder,
     out: *mut *mut segvoronoi_diagram,
 ) -> segvoronoi_status {
+    if !out.is_null() {
+        // SAFETY: out is non-null and writable.
+        unsafe { *out = std::ptr::null_mut() };
+    }
     require_non_null!(builder, out);
-    // SAFETY: out is non-null and writable.
-    unsafe { *out = std::ptr::null_mut() };
     guard(|| {
         // SAFETY: non-null live builder, exclusive to this thread.
         let b = unsafe { &mut *builder };

@@ -1,6 +1,6 @@
 //! Status codes, the panic boundary, pointer helpers, static strings.
 
-use std::ffi::{c_char, CStr};
+use std::ffi::{c_char, c_int, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use crate::error::{Error, ErrorKind};
@@ -28,6 +28,25 @@ pub enum segvoronoi_status {
     InvalidArgument = 7,
     /// A bug in segvoronoi (a caught panic or a failed invariant). Please report it.
     Internal = 8,
+}
+
+impl segvoronoi_status {
+    /// Every status, in numeric order.
+    const ALL: [segvoronoi_status; 9] = [
+        segvoronoi_status::Ok,
+        segvoronoi_status::NullArgument,
+        segvoronoi_status::InvalidCoordinate,
+        segvoronoi_status::Intersecting,
+        segvoronoi_status::OutOfRange,
+        segvoronoi_status::BufferTooSmall,
+        segvoronoi_status::TooLarge,
+        segvoronoi_status::InvalidArgument,
+        segvoronoi_status::Internal,
+    ];
+
+    fn from_number(n: c_int) -> Option<segvoronoi_status> {
+        Self::ALL.into_iter().find(|s| *s as c_int == n)
+    }
 }
 
 impl From<&Error> for segvoronoi_status {
@@ -59,11 +78,17 @@ macro_rules! require_non_null {
 }
 pub(crate) use require_non_null;
 
-/// Static text for a status code; never NULL, valid forever.
+/// Static text for a status code (a `segvoronoi_status` value); never NULL,
+/// valid forever. Numbers that are no status give `"unknown status"`.
 ///
 /// Thread safety: safe from any thread.
 #[no_mangle]
-pub extern "C" fn segvoronoi_status_str(status: segvoronoi_status) -> *const c_char {
+pub extern "C" fn segvoronoi_status_str(status: c_int) -> *const c_char {
+    // An `int`, not the enum: C may pass any number, and a Rust enum holding
+    // an undeclared value would be undefined behaviour.
+    let Some(status) = segvoronoi_status::from_number(status) else {
+        return c"unknown status".as_ptr();
+    };
     let s: &'static CStr = match status {
         segvoronoi_status::Ok => c"ok",
         segvoronoi_status::NullArgument => c"a required pointer argument is NULL",

@@ -1,0 +1,97 @@
+# Builds the crate with cargo and defines the build-tree targets
+# segvoronoi::segvoronoi (shared) and segvoronoi::segvoronoi_static.
+#
+# Sets for SegvoronoiInstall.cmake:
+#   SEGVORONOI_SOVERSION          ABI version in the SONAME (see build.rs)
+#   SEGVORONOI_SHARED_FILE        versioned shared library in the build tree
+#   SEGVORONOI_SHARED_LINKS       its SONAME and development symlinks
+#   SEGVORONOI_STATIC_FILE        static library in the build tree
+#   SEGVORONOI_STATIC_SYSTEM_LIBS system libraries a static link needs
+
+find_program(SEGVORONOI_CARGO cargo HINTS "$ENV{CARGO_HOME}/bin" "$ENV{HOME}/.cargo/bin" REQUIRED)
+find_program(SEGVORONOI_RUSTC rustc HINTS "$ENV{CARGO_HOME}/bin" "$ENV{HOME}/.cargo/bin" REQUIRED)
+
+# Same rule as build.rs: before 1.0 every minor release may break the ABI.
+if(PROJECT_VERSION_MAJOR EQUAL 0)
+  set(SEGVORONOI_SOVERSION "0.${PROJECT_VERSION_MINOR}")
+else()
+  set(SEGVORONOI_SOVERSION "${PROJECT_VERSION_MAJOR}")
+endif()
+
+# Debug builds use cargo's dev profile; everything else the release profile.
+if(CMAKE_BUILD_TYPE STREQUAL "Debug")
+  set(_segvoronoi_profile_flag "")
+  set(_segvoronoi_profile_dir debug)
+else()
+  set(_segvoronoi_profile_flag --release)
+  set(_segvoronoi_profile_dir release)
+endif()
+
+set(_segvoronoi_cargo_dir "${CMAKE_CURRENT_BINARY_DIR}/cargo")
+set(_segvoronoi_out "${_segvoronoi_cargo_dir}/${_segvoronoi_profile_dir}")
+set(SEGVORONOI_SHARED_FILE "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so.${PROJECT_VERSION}")
+set(SEGVORONOI_SHARED_LINKS
+    "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
+    "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so")
+set(SEGVORONOI_STATIC_FILE "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.a")
+
+# cargo decides itself what is out of date, so it runs on every build; the
+# copies keep the installed names stable whatever cargo's layout.
+add_custom_target(segvoronoi_cargo ALL
+  COMMAND "${SEGVORONOI_CARGO}" build --lib --locked ${_segvoronoi_profile_flag}
+          --manifest-path "${PROJECT_SOURCE_DIR}/Cargo.toml"
+          --target-dir "${_segvoronoi_cargo_dir}"
+  COMMAND "${CMAKE_COMMAND}" -E make_directory "${CMAKE_CURRENT_BINARY_DIR}/lib"
+  COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${_segvoronoi_out}/libsegvoronoi.so" "${SEGVORONOI_SHARED_FILE}"
+  COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${_segvoronoi_out}/libsegvoronoi.a" "${SEGVORONOI_STATIC_FILE}"
+  COMMAND "${CMAKE_COMMAND}" -E create_symlink "libsegvoronoi.so.${PROJECT_VERSION}"
+          "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
+  COMMAND "${CMAKE_COMMAND}" -E create_symlink "libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
+          "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so"
+  BYPRODUCTS ${SEGVORONOI_SHARED_FILE} ${SEGVORONOI_SHARED_LINKS} ${SEGVORONOI_STATIC_FILE}
+  WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"
+  COMMENT "cargo build segvoronoi (${_segvoronoi_profile_dir})"
+  USES_TERMINAL
+  VERBATIM)
+
+# What a static link of a Rust library needs from the system, as rustc itself
+# reports it for this toolchain and target (an empty staticlib has the same
+# needs as ours: we depend on std and libc only).
+set(_segvoronoi_probe "${CMAKE_CURRENT_BINARY_DIR}/native_libs_probe.rs")
+file(WRITE "${_segvoronoi_probe}" "")
+execute_process(
+  COMMAND "${SEGVORONOI_RUSTC}" --crate-type staticlib --crate-name native_libs_probe
+          --print native-static-libs -o "${CMAKE_CURRENT_BINARY_DIR}/libnative_libs_probe.a" "${_segvoronoi_probe}"
+  RESULT_VARIABLE _segvoronoi_probe_result
+  OUTPUT_VARIABLE _segvoronoi_probe_out
+  ERROR_VARIABLE _segvoronoi_probe_out)
+string(REGEX MATCH "native-static-libs: ([^\n]*)" _segvoronoi_native_line "${_segvoronoi_probe_out}")
+if(NOT _segvoronoi_probe_result EQUAL 0 OR NOT CMAKE_MATCH_1)
+  message(FATAL_ERROR "could not ask rustc which system libraries a static link needs:\n${_segvoronoi_probe_out}")
+endif()
+separate_arguments(_segvoronoi_native_flags UNIX_COMMAND "${CMAKE_MATCH_1}")
+set(SEGVORONOI_STATIC_SYSTEM_LIBS "")
+foreach(_flag IN LISTS _segvoronoi_native_flags)
+  string(REGEX REPLACE "^-l" "" _lib "${_flag}")
+  list(APPEND SEGVORONOI_STATIC_SYSTEM_LIBS "${_lib}")
+endforeach()
+list(REMOVE_DUPLICATES SEGVORONOI_STATIC_SYSTEM_LIBS)
+message(STATUS "segvoronoi: a static link needs ${SEGVORONOI_STATIC_SYSTEM_LIBS}")
+
+# Build-tree targets, for add_subdirectory() and FetchContent users.
+add_library(segvoronoi_shared SHARED IMPORTED GLOBAL)
+set_target_properties(segvoronoi_shared PROPERTIES
+  IMPORTED_LOCATION "${SEGVORONOI_SHARED_FILE}"
+  IMPORTED_SONAME "libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
+  INTERFACE_INCLUDE_DIRECTORIES "${PROJECT_SOURCE_DIR}/include")
+add_dependencies(segvoronoi_shared segvoronoi_cargo)
+add_library(segvoronoi::segvoronoi ALIAS segvoronoi_shared)
+
+add_library(segvoronoi_static STATIC IMPORTED GLOBAL)
+set_target_properties(segvoronoi_static PROPERTIES
+  IMPORTED_LOCATION "${SEGVORONOI_STATIC_FILE}"
+  IMPORTED_LINK_INTERFACE_LANGUAGES C
+  INTERFACE_LINK_LIBRARIES "${SEGVORONOI_STATIC_SYSTEM_LIBS}"
+  INTERFACE_INCLUDE_DIRECTORIES "${PROJECT_SOURCE_DIR}/include")
+add_dependencies(segvoronoi_static segvoronoi_cargo)
+add_library(segvoronoi::segvoronoi_static ALIAS segvoronoi_static)
