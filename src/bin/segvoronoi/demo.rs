@@ -1,0 +1,89 @@
+//! The built-in demo input: generated, not stored, and the same on every run
+//! (a fixed seed). Besides a pleasant picture it exercises the cases that
+//! break naive Voronoi code: points on one line, four and more points on one
+//! circle (a grid), and a repeated point.
+
+/// A small deterministic generator (SplitMix64): the demo must not depend on
+/// a random-number crate or on the platform.
+struct SplitMix64(u64);
+
+impl SplitMix64 {
+    fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in `[-1, 1)`.
+    fn symmetric(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    }
+}
+
+/// About sixty points: a jittered ring, a tight cluster inside it, a row of
+/// collinear points, a 3×3 grid (cocircular quadruples) and one repeat.
+pub fn points() -> Vec<[f64; 2]> {
+    let mut rng = SplitMix64(0x5E6_7020_0201);
+    let mut points = Vec::with_capacity(64);
+    let ring = 36;
+    for k in 0..ring {
+        let angle = std::f64::consts::TAU * (k as f64 + 0.3 * rng.symmetric()) / ring as f64;
+        let radius = 10.0 + 0.7 * rng.symmetric();
+        points.push([radius * angle.cos(), radius * angle.sin()]);
+    }
+    for _ in 0..9 {
+        points.push([3.5 + 1.3 * rng.symmetric(), 3.0 + 1.3 * rng.symmetric()]);
+    }
+    // Exactly collinear: integer steps along a line of slope 1/2.
+    for k in 0..7 {
+        let t = k as f64 - 3.0;
+        points.push([-1.0 + 2.0 * t * 0.5, -5.5 + t * 0.5]);
+    }
+    // A grid: every unit square is four cocircular sites, a degree-4 vertex.
+    for i in 0..3 {
+        for j in 0..3 {
+            points.push([-6.0 + 1.5 * i as f64, 1.0 + 1.5 * j as f64]);
+        }
+    }
+    // A repeated point, merged by the library and counted in the statistics.
+    points.push(points[ring]);
+    points
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn deterministic_finite_and_about_sixty() {
+        let (a, b) = (points(), points());
+        assert_eq!(a, b);
+        assert!((55..=70).contains(&a.len()));
+        assert!(a.iter().all(|p| p[0].is_finite() && p[1].is_finite()));
+    }
+
+    #[test]
+    fn contains_its_degenerate_cases() {
+        let diagram = {
+            let mut b = segvoronoi::Builder::new();
+            b.add_points(points()).unwrap();
+            b.build().unwrap()
+        };
+        assert_eq!(diagram.stats().duplicate_points, 1);
+        // The grid's four unit squares each give a zero-length edge.
+        let zero_length = diagram
+            .edges()
+            .filter(|e| match e.ends {
+                [segvoronoi::EdgeEnd::Vertex(a), segvoronoi::EdgeEnd::Vertex(b)] => {
+                    let (pa, pb) = (diagram.vertex(a).unwrap().position, diagram.vertex(b).unwrap().position);
+                    pa.distance(pb) < 1e-9
+                }
+                _ => false,
+            })
+            .count();
+        assert!(zero_length >= 4, "{zero_length} zero-length edges");
+        assert!(diagram.validate().is_ok());
+    }
+}

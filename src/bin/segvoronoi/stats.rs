@@ -1,0 +1,73 @@
+//! The `--stats` report: one `key=value` line per figure, so that scripts can
+//! pick figures out with `grep` or split on `=`.
+
+use std::fmt::Write;
+
+use segvoronoi::{Diagram, EdgeEnd};
+
+/// The report for a diagram whose construction took `build_s` seconds.
+pub fn report(diagram: &Diagram, build_s: f64) -> String {
+    let stats = diagram.stats();
+    let (mut segments, mut rays, mut lines) = (0usize, 0usize, 0usize);
+    for edge in diagram.edges() {
+        match edge.ends {
+            [EdgeEnd::Vertex(_), EdgeEnd::Vertex(_)] => segments += 1,
+            [EdgeEnd::Infinite { .. }, EdgeEnd::Infinite { .. }] => lines += 1,
+            _ => rays += 1,
+        }
+    }
+    let mut out = String::new();
+    let figures: [(&str, &dyn std::fmt::Display); 9] = [
+        ("input_points", &stats.input_points),
+        ("sites", &stats.sites),
+        ("duplicates", &stats.duplicate_points),
+        ("vertices", &stats.vertices),
+        ("edges", &stats.edges),
+        ("finite_edges", &segments),
+        ("rays", &rays),
+        ("lines", &lines),
+        ("build_s", &format_args!("{build_s:.6}")),
+    ];
+    for (key, value) in figures {
+        let _ = writeln!(out, "{key}={value}");
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn value(report: &str, key: &str) -> String {
+        let prefix = format!("{key}=");
+        report
+            .lines()
+            .find_map(|l| l.strip_prefix(&prefix))
+            .unwrap_or_else(|| panic!("no {key} in {report}"))
+            .to_string()
+    }
+
+    #[test]
+    fn counts_add_up() {
+        let mut b = segvoronoi::Builder::new();
+        b.add_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0], [1.0, 1.0]]).unwrap();
+        let r = report(&b.build().unwrap(), 0.25);
+        assert_eq!(value(&r, "input_points"), "6");
+        assert_eq!(value(&r, "sites"), "5");
+        assert_eq!(value(&r, "duplicates"), "1");
+        assert_eq!(value(&r, "vertices"), "4");
+        assert_eq!(value(&r, "edges"), "8");
+        assert_eq!(value(&r, "finite_edges"), "4");
+        assert_eq!(value(&r, "rays"), "4");
+        assert_eq!(value(&r, "lines"), "0");
+        assert_eq!(value(&r, "build_s").parse::<f64>().unwrap(), 0.25);
+    }
+
+    #[test]
+    fn collinear_sites_have_lines() {
+        let mut b = segvoronoi::Builder::new();
+        b.add_points([[0.0, 0.0], [1.0, 1.0], [3.0, 3.0]]).unwrap();
+        let r = report(&b.build().unwrap(), 0.0);
+        assert_eq!((value(&r, "lines").as_str(), value(&r, "rays").as_str()), ("2", "0"));
+    }
+}

@@ -1,0 +1,250 @@
+//! The `segvoronoi` program, run as a user would: exit status, standard
+//! output and standard error, files written.
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::{Command, Output, Stdio};
+
+use segvoronoi::{Builder, TopologyOptions};
+
+const BIN: &str = env!("CARGO_BIN_EXE_segvoronoi");
+
+/// A path in the temporary directory, unique to this test process and name.
+fn temp_path(name: &str) -> PathBuf {
+    std::env::temp_dir().join(format!("segvoronoi-cli-{}-{name}", std::process::id()))
+}
+
+/// Writes `text` to a temporary input file and returns its path.
+fn input_file(name: &str, text: &str) -> PathBuf {
+    let path = temp_path(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+fn run(args: &[&str]) -> Output {
+    Command::new(BIN).args(args).output().expect("the binary runs")
+}
+
+fn run_with_stdin(args: &[&str], stdin: &str) -> Output {
+    let mut child = Command::new(BIN)
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(stdin.as_bytes()).unwrap();
+    child.wait_with_output().unwrap()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8(o.stdout.clone()).unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8(o.stderr.clone()).unwrap()
+}
+
+/// Boost.Polygon's text format for points only.
+fn boost_text(points: &[[f64; 2]]) -> String {
+    let mut text = format!("{}\n", points.len());
+    for p in points {
+        text += &format!("{} {}\n", p[0], p[1]);
+    }
+    text + "0\n"
+}
+
+/// The topology text the library gives for the same points.
+fn library_topology(points: &[[f64; 2]], voronoi_pairs: bool) -> String {
+    let mut b = Builder::new();
+    b.add_points(points.iter().copied()).unwrap();
+    b.build().unwrap().topology(TopologyOptions { voronoi_pairs })
+}
+
+/// A dozen points with a repeat, a collinear triple and a cocircular square.
+const MIXED: [[f64; 2]; 12] = [
+    [0.0, 0.0],
+    [4.0, 0.0],
+    [4.0, 4.0],
+    [0.0, 4.0],
+    [2.0, 2.0],
+    [7.5, 1.25],
+    [-3.0, 6.0],
+    [1.0, -2.0],
+    [3.0, -2.0],
+    [5.0, -2.0],
+    [4.0, 4.0],
+    [6.0, 5.5],
+];
+
+#[test]
+fn demo_svg_is_a_picture() {
+    let path = temp_path("demo.svg");
+    let o = run(&["--svg", path.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(&path).unwrap();
+    std::fs::remove_file(&path).unwrap();
+    assert!(svg.starts_with("<svg"), "{}", &svg[..100.min(svg.len())]);
+    assert!(svg.trim_end().ends_with("</svg>"));
+    // The demo has about sixty sites and more vertices than that.
+    assert!(svg.matches("<circle").count() > 100, "too few dots");
+    assert!(svg.matches("<line").count() > 100, "too few edges");
+    assert!(!svg.contains("NaN") && !svg.contains("inf"));
+}
+
+#[test]
+fn no_output_asked_prints_a_summary() {
+    let o = run(&[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.starts_with("demo input: ") && out.contains(" sites, "), "{out}");
+}
+
+#[test]
+fn topology_is_the_libraries() {
+    let path = input_file("mixed.txt", &boost_text(&MIXED));
+    let o = run(&[path.to_str().unwrap(), "--topology"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(stdout(&o), library_topology(&MIXED, false));
+    let o = run(&[path.to_str().unwrap(), "--voronoi-pairs"]);
+    std::fs::remove_file(&path).unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(stdout(&o), library_topology(&MIXED, true));
+    assert!(stdout(&o).contains("\nVVERTICES "));
+}
+
+#[test]
+fn square_and_centre_by_hand() {
+    // Sites P0..P3 are the corners counter-clockwise, P4 the centre. The
+    // centre is strictly inside the circle through any three corners, so no
+    // corner triangle is Delaunay: the Delaunay triangles are the four fans
+    // P4 + a square side (four Voronoi vertices, at the sides' midpoints),
+    // and the Delaunay edges are the four sides plus four spokes to the
+    // centre. The diagonals are not edges (the centre blocks them).
+    let path = input_file("square-centre.txt", "5\n0 0\n2 0\n2 2\n0 2\n1 1\n0\n");
+    let o = run(&[path.to_str().unwrap(), "--topology"]);
+    std::fs::remove_file(&path).unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let expected = "EDGES 8\nP0 P1\nP0 P3\nP0 P4\nP1 P2\nP1 P4\nP2 P3\nP2 P4\nP3 P4\n\
+                    FACES 4\nP0 P1 P4\nP0 P3 P4\nP1 P2 P4\nP2 P3 P4\n";
+    assert_eq!(stdout(&o), expected);
+}
+
+#[test]
+fn cocircular_square_by_hand() {
+    // Four cocircular corners: a degree-4 vertex, stored as two degree-3
+    // vertices (FACES 2) joined by a zero-length edge along one diagonal
+    // (EDGES 5: the sides plus that diagonal). The voronoi-pairs sections,
+    // which every correct answer shares, drop the diagonal and merge the two
+    // vertices into one touching all four cells.
+    let o = run_with_stdin(&["-", "--voronoi-pairs"], "4\n0 0\n2 0\n2 2\n0 2\n");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.starts_with("EDGES 5\n"), "{out}");
+    assert!(out.contains("\nFACES 2\n"), "{out}");
+    let pairs = &out[out.find("VPAIRS").expect(&out)..];
+    assert_eq!(pairs, "VPAIRS 4\nP0 P1\nP0 P3\nP1 P2\nP2 P3\nVVERTICES 1\nP0 P1 P2 P3\n");
+}
+
+#[test]
+fn stdin_input() {
+    let o = run_with_stdin(&["-", "--topology"], &boost_text(&MIXED));
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(stdout(&o), library_topology(&MIXED, false));
+}
+
+#[test]
+fn stats_on_stderr() {
+    let path = input_file("stats.txt", &boost_text(&MIXED));
+    let o = run(&[path.to_str().unwrap(), "--stats"]);
+    std::fs::remove_file(&path).unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).is_empty(), "stats go to stderr only");
+    let err = stderr(&o);
+    let value = |key: &str| -> String {
+        let prefix = format!("{key}=");
+        err.lines().find_map(|l| l.strip_prefix(&prefix)).unwrap_or_else(|| panic!("no {key}= in {err}")).to_string()
+    };
+    let mut b = Builder::new();
+    b.add_points(MIXED).unwrap();
+    let d = b.build().unwrap();
+    assert_eq!(value("input_points"), "12");
+    assert_eq!(value("sites"), "11");
+    assert_eq!(value("duplicates"), "1");
+    assert_eq!(value("vertices"), d.vertex_count().to_string());
+    assert_eq!(value("edges"), d.edge_count().to_string());
+    let rays: usize = value("rays").parse().unwrap();
+    let finite: usize = value("finite_edges").parse().unwrap();
+    assert_eq!(rays + finite, d.edge_count());
+    let build_s: f64 = value("build_s").parse().unwrap();
+    assert!(build_s.is_finite() && build_s >= 0.0);
+}
+
+#[test]
+fn segments_are_refused_with_status_2() {
+    let path = input_file("segments.txt", "2\n0 0\n1 1\n2\n0 0 5 5\n1 0 1 3\n");
+    let o = run(&[path.to_str().unwrap()]);
+    std::fs::remove_file(&path).unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(err.contains("line-segment sites are not supported yet (2 segments in"), "{err}");
+    assert!(err.contains("segments.txt"), "{err}");
+}
+
+#[test]
+fn malformed_input_names_the_line() {
+    let path = input_file("malformed.txt", "3\n0 0\n\n1 one\n2 2\n");
+    let o = run(&[path.to_str().unwrap(), "--topology"]);
+    std::fs::remove_file(&path).unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stdout(&o).is_empty());
+    let err = stderr(&o);
+    assert!(err.contains("line 4") && err.contains("\"one\""), "{err}");
+
+    let o = run_with_stdin(&["-"], "4\n0 0\n1 1\n");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("line 3") && stderr(&o).contains("point 2"), "{}", stderr(&o));
+}
+
+#[test]
+fn non_finite_coordinate_is_a_library_error_naming_the_index() {
+    let o = run_with_stdin(&["-", "--topology"], "4\n0 0\n1 0\n0 1\nnan 2\n0\n");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).is_empty());
+    let err = stderr(&o);
+    assert!(err.contains("point 3"), "{err}");
+}
+
+#[test]
+fn usage_errors_and_help() {
+    let o = run(&["--frobnicate"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--frobnicate") && stderr(&o).contains("--help"));
+    let o = run(&["--svg"]);
+    assert_eq!(o.status.code(), Some(2));
+    let o = run(&[temp_path("does-not-exist.txt").to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("cannot read"), "{}", stderr(&o));
+    let o = run(&["--help"]);
+    assert!(o.status.success());
+    assert!(stdout(&o).starts_with("Usage: segvoronoi"));
+}
+
+#[test]
+fn degenerate_inputs_draw_without_nan() {
+    let cases = [
+        ("empty", "0\n"),
+        ("one", "1\n5 5\n"),
+        ("same", "3\n2 2\n2 2\n2 2\n"),
+        ("two", "2\n0 0\n3 1\n"),
+        ("collinear", "4\n0 0\n1 2\n2 4\n5 10\n"),
+    ];
+    for (name, text) in cases {
+        let path = temp_path(&format!("{name}.svg"));
+        let o = run_with_stdin(&["-", "--svg", path.to_str().unwrap()], text);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let svg = std::fs::read_to_string(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        assert!(svg.starts_with("<svg") && !svg.contains("NaN") && !svg.contains("inf"), "{name}: {svg}");
+    }
+}
