@@ -54,10 +54,9 @@ foreach(_run IN LISTS _segvoronoi_cgal_runs)
 endforeach()
 unset(_segvoronoi_cgal_runs)
 
-# Known library bugs found by this cross-check, disabled until fixed (then
-# drop DISABLED): VPAIRS squares edge lengths, which underflow for an input
-# this small; and a repeated point that the nearest-site walk misses on
-# near-degenerate input becomes a second site.
+# Regression inputs from library bugs this cross-check found: edge lengths
+# that underflowed when squared (tiny lattice), and a repeated point that a
+# walk with rounded distance comparisons missed (snapped, seed 3).
 add_test(NAME cgal_tiny-lattice_2500 COMMAND segvoronoi_cgal_check tiny-lattice 2500)
 add_test(NAME cgal_snapped_40_seed3 COMMAND segvoronoi_cgal_check snapped 40 3)
-set_tests_properties(cgal_tiny-lattice_2500 cgal_snapped_40_seed3 PROPERTIES TIMEOUT 120 LABELS cgal DISABLED TRUE)
+set_tests_properties(cgal_tiny-lattice_2500 cgal_snapped_40_seed3 PROPERTIES TIMEOUT 120 LABELS cgal)

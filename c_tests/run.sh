@@ -33,8 +33,10 @@ echo "SONAME $soname"
 mv "$prefix" "$work/moved"
 prefix="$work/moved"
 
-echo "--- downstream: c_tests through find_package(segvoronoi)"
-cmake -S "$repo/c_tests" -B "$work/c_tests" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
+echo "--- downstream: c_tests, copied out of the repository, through find_package(segvoronoi)"
+mkdir "$work/consumer"
+cp "$repo"/c_tests/*.c "$repo"/c_tests/*.cpp "$repo"/c_tests/*.cmake "$repo"/c_tests/CMakeLists.txt "$work/consumer/"
+cmake -S "$work/consumer" -B "$work/c_tests" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
   >"$work/c_configure.log" || { cat "$work/c_configure.log"; exit 1; }
 grep -E "using segvoronoi|WARNING|skipped" "$work/c_configure.log" || true
 cmake --build "$work/c_tests" -j "$jobs"
@@ -45,11 +47,11 @@ echo "--- downstream: pkg-config, shared and static"
 export PKG_CONFIG_PATH="$(dirname "$(ls -d "$prefix"/lib*/pkgconfig/segvoronoi.pc)")"
 pkg-config --exists --print-errors "segvoronoi = $(sed -n 's/^version = "\(.*\)"/\1/p' "$repo/Cargo.toml" | head -n1)"
 # shellcheck disable=SC2046
-cc -std=c99 -Wall -Wextra -Werror -o "$work/pc_shared" "$repo/c_tests/test_c_api.c" \
+cc -std=c99 -Wall -Wextra -Werror -o "$work/pc_shared" "$work/consumer/test_c_api.c" \
   $(pkg-config --cflags --libs segvoronoi) -lm
 LD_LIBRARY_PATH="$(pkg-config --variable=libdir segvoronoi)" "$work/pc_shared"
 # shellcheck disable=SC2046
-cc -std=c99 -Wall -Wextra -Werror -o "$work/pc_static" "$repo/c_tests/test_c_api.c" \
+cc -std=c99 -Wall -Wextra -Werror -o "$work/pc_static" "$work/consumer/test_c_api.c" \
   $(pkg-config --cflags segvoronoi) "$(pkg-config --variable=libdir segvoronoi)/libsegvoronoi.a" \
   $(pkg-config --libs-only-l --static segvoronoi | sed 's/-lsegvoronoi//') -lm
 "$work/pc_static"

@@ -124,3 +124,30 @@ fn huge_offset_tiny_extent() {
     let d = build(&pts);
     assert_eq!(d.site_count(), pts.iter().map(|p| (p[0].to_bits(), p[1].to_bits())).collect::<std::collections::HashSet<_>>().len());
 }
+
+/// Found by the CGAL cross-check: with distances of about 1 that differ by
+/// 1e-40, a walk comparing rounded distances stopped one site early and the
+/// repeated point became a second site at the same place.
+#[test]
+fn repeated_point_on_a_near_tie_is_merged() {
+    let points = [[-1.0, 0.0], [1.0, -1e-20], [1e-20, -1.0], [-1e-20, -1.0], [1.0, -1e-20]];
+    let d = common::build(&points);
+    assert_eq!(d.site_count(), 4);
+    assert_eq!(d.stats().duplicate_points, 1);
+    assert_eq!(d.site_of_input(1), d.site_of_input(4));
+    common::check_empty_circles(&d, 1e-9);
+}
+
+/// Found by the CGAL cross-check: nearly collinear sites whose Voronoi vertex
+/// lies far away; a rounded orientation determinant put it elsewhere.
+#[test]
+fn nearly_collinear_triples_get_accurate_vertices() {
+    let points = [[1e-20, -1.0], [-1e-20, -1.0], [1e-20, -3e-17], [1e-20, -1e-20], [0.0, 0.0], [0.5, 0.0]];
+    let d = common::build(&points);
+    common::check_empty_circles(&d, 1e-9);
+    for v in d.vertices() {
+        let r = v.sites.map(|s| d.site(s).distance(v.position));
+        let spread = r.iter().fold(0.0f64, |m, x| m.max((x - v.clearance).abs()));
+        assert!(spread <= 1e-12 * v.clearance.max(1.0), "vertex {v:?}: distances {r:?}");
+    }
+}

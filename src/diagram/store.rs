@@ -124,42 +124,26 @@ impl Store {
         CellBoundary { store: self, start, current: start, limit: self.twin.len() }
     }
 
-    /// Greedy descent over neighbouring cells: from `start`, move to the
-    /// neighbour with the smallest `distance` while one is `closer` than the
-    /// current site, at most `limit` moves. The store reads no coordinate;
-    /// the caller's metric decides. In a Voronoi diagram, with exact
-    /// comparisons, the descent ends at the site nearest to the point the
-    /// metric measures from.
-    pub fn descend(
-        &self,
-        start: SiteId,
-        limit: usize,
-        distance: impl Fn(SiteId) -> f64,
-        closer: impl Fn(f64, f64) -> bool,
-    ) -> SiteId {
+    /// Greedy descent over neighbouring cells: from `start`, move to a
+    /// neighbour that is `closer(neighbour, current)` while there is one, at
+    /// most `limit` moves. The store reads no coordinate; the caller's
+    /// comparison decides. In a Voronoi diagram, with an exact comparison,
+    /// the descent ends at a site nearest to the point it measures from
+    /// (greedy routing succeeds on a Delaunay graph).
+    pub fn descend(&self, start: SiteId, limit: usize, closer: impl Fn(SiteId, SiteId) -> bool) -> SiteId {
         let mut current = start;
-        let mut d_current = distance(current);
         for _ in 0..limit {
-            if d_current == 0.0 {
-                break;
-            }
-            let (mut best, mut d_best) = (current, d_current);
+            let mut best = current;
             for h in self.cell_boundary(current) {
                 let q = self.right(h);
-                if q == self.infinite_site {
-                    continue;
-                }
-                let d = distance(q);
-                if closer(d, d_best) {
+                if q != self.infinite_site && closer(q, best) {
                     best = q;
-                    d_best = d;
                 }
             }
             if best == current {
                 break;
             }
             current = best;
-            d_current = d_best;
         }
         current
     }

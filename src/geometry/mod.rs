@@ -5,6 +5,7 @@
 //! makes goes through [`predicates`], which returns enums, so no other module
 //! compares a raw determinant with zero.
 
+mod expansion;
 pub(crate) mod fault;
 pub mod point;
 pub mod predicates;

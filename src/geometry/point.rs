@@ -31,10 +31,11 @@ impl Point {
         dx * dx + dy * dy
     }
 
-    /// Euclidean distance.
+    /// Euclidean distance, without overflow or underflow in between (a
+    /// distance of 1e-200 stays 1e-200, where squaring would give 0).
     #[inline]
     pub fn distance(self, other: Point) -> f64 {
-        self.distance_squared(other).sqrt()
+        (self.x - other.x).hypot(self.y - other.y)
     }
 
     /// `true` when both coordinates are finite.

@@ -14,6 +14,7 @@
 //! In the `fault-injection` test build these predicates can be told to lie
 //! (see `fault`); the construction must stay valid whatever they answer.
 
+use super::expansion::Expansion;
 use super::fault;
 use super::point::Point;
 
@@ -116,15 +117,38 @@ pub fn in_half_plane_circle(a: Point, b: Point, p: Point) -> bool {
     }
 }
 
-/// Compares two squared distances as the construction sees them (perturbed
-/// in the fault-injection build). `true` when `d1 < d2`.
+/// Whether `p` is strictly closer to `a` than to `b`: exact.
+///
+/// A floating-point filter answers when the two squared distances differ by
+/// more than their rounding error can explain; otherwise the exact sign of
+/// `|p - a|^2 - |p - b|^2` is computed with expansions.
 #[inline]
-pub(crate) fn closer(d1: f64, d2: f64) -> bool {
+pub fn strictly_closer(p: Point, a: Point, b: Point) -> bool {
+    let da = p.distance_squared(a);
+    let db = p.distance_squared(b);
     if fault::active() {
-        fault::perturb(d1) < fault::perturb(d2)
-    } else {
-        d1 < d2
+        return fault::perturb(da) < fault::perturb(db);
     }
+    // Each squared distance is within 4 ulps (relative) of its true value
+    // (two differences, two squares, one sum); below 1e-290 subnormal
+    // results would break that bound, so the exact path decides there.
+    let sum = da + db;
+    if (da - db).abs() > 9.0 * f64::EPSILON * sum && sum > 1e-290 {
+        return da < db;
+    }
+    exact_distance_difference_sign(p, a, b) < 0
+}
+
+/// The sign of `|p - a|^2 - |p - b|^2`, exactly.
+#[cold]
+fn exact_distance_difference_sign(p: Point, a: Point, b: Point) -> i8 {
+    let mut e = Expansion::default();
+    e.add_squared_difference(p.x, b.x);
+    e.add_squared_difference(p.y, b.y);
+    e.negate();
+    e.add_squared_difference(p.x, a.x);
+    e.add_squared_difference(p.y, a.y);
+    e.sign()
 }
 
 #[cfg(test)]
@@ -173,6 +197,22 @@ mod tests {
         assert!(in_half_plane_circle(a, b, p(1., 0.)), "open segment is inside");
         assert!(!in_half_plane_circle(a, b, p(3., 0.)), "beyond an endpoint is outside");
         assert!(!in_half_plane_circle(a, b, p(0., 0.)), "the endpoint is on the circle");
+    }
+
+    #[test]
+    fn strictly_closer_decides_ties_and_near_ties_exactly() {
+        let (a, b) = (p(-1.0, 0.0), p(1.0, 0.0));
+        assert!(!strictly_closer(p(0.0, 5.0), a, b), "equidistant");
+        assert!(!strictly_closer(p(0.0, 5.0), b, a), "equidistant");
+        assert!(strictly_closer(p(-1e-300, 5.0), a, b));
+        assert!(!strictly_closer(p(1e-300, 5.0), a, b));
+        // Distances of about 1 that differ by 1e-40: invisible to doubles.
+        let q = p(1.0, -1e-20);
+        let (c, d) = (p(1e-20, -1.0), p(-1e-20, -1.0));
+        assert!(strictly_closer(q, c, d));
+        assert!(!strictly_closer(q, d, c));
+        assert!(!strictly_closer(q, q, q));
+        assert!(strictly_closer(q, q, c));
     }
 
     #[test]

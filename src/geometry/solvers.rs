@@ -2,9 +2,9 @@
 //! sites, never from old edge geometry, so errors do not accumulate.
 //!
 //! Precision: not exact. The circumcentre is computed relative to the first
-//! site, which keeps the relative error near a few ulps of the circle's
-//! radius for well-shaped triangles; it grows as the three sites approach a
-//! line. A solver that finds no solution says so, and the caller (the
+//! site, with the orientation determinant (the denominator) to full
+//! precision, which keeps the error near a few ulps of the circle's radius
+//! also for nearly collinear sites. A solver that finds no solution says so, and the caller (the
 //! topology) decides what to store.
 
 use super::point::Point;
@@ -15,7 +15,15 @@ use super::point::Point;
 pub fn circumcircle(a: Point, b: Point, c: Point) -> Option<(Point, f64)> {
     let (bx, by) = (b.x - a.x, b.y - a.y);
     let (cx, cy) = (c.x - a.x, c.y - a.y);
-    let d = 2.0 * (bx * cy - by * cx);
+    // The denominator is the orientation determinant, which cancels badly
+    // for nearly collinear sites (exactly where the centre runs far away):
+    // the adaptive predicate gives it to full relative precision.
+    let orient = robust::orient2d(
+        robust::Coord { x: a.x, y: a.y },
+        robust::Coord { x: b.x, y: b.y },
+        robust::Coord { x: c.x, y: c.y },
+    );
+    let d = 2.0 * orient;
     if d == 0.0 {
         return None;
     }
@@ -63,6 +71,18 @@ mod tests {
         let (c, r) = circumcircle(p(o, o), p(o + 2., o), p(o, o + 2.)).unwrap();
         assert_eq!((c.x, c.y), (o + 1., o + 1.));
         assert!((r - 2f64.sqrt()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn circumcircle_of_nearly_collinear_points() {
+        // Sites 1e-20 off a line: the centre is far, and the plain
+        // determinant (2e-20 - 1e-20 rounded against terms of size 1) is 0.
+        let (a, b, c) = (p(-1.0, 1e-20), p(0.0, 0.0), p(1.0, 1e-20));
+        let (centre, r) = circumcircle(a, b, c).unwrap();
+        // Exact: centre (0, (1 + 1e-40) / 2e-20), radius its y.
+        let y = 0.5e20;
+        assert!((centre.x).abs() < 1e-12 * y, "{centre:?}");
+        assert!((centre.y - y).abs() < 1e-12 * y && (r - y).abs() < 1e-12 * y, "{centre:?} {r}");
     }
 
     #[test]

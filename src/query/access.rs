@@ -1,5 +1,6 @@
 //! Iterators and accessors of [`Diagram`].
 
+use crate::geometry::predicates::strictly_closer;
 use crate::diagram::{BuildStats, Diagram, EdgeId, HalfEdgeId, SiteId, ValidationError, VertexId, NONE};
 use crate::geometry::Point;
 
@@ -145,10 +146,13 @@ impl Diagram {
             return Some(start);
         }
         // Compare distances in the builder's scaled coordinates, where squares
-        // of input-sized numbers cannot overflow.
-        let f = self.scale.to_internal;
+        // of input-sized numbers cannot overflow (a query point far beyond
+        // the input may still overflow there: then in input coordinates).
+        let f = if p.scaled(self.scale.to_internal).is_finite() { self.scale.to_internal } else { 1.0 };
         let (sites, p) = (&self.sites, p.scaled(f));
-        Some(self.store.descend(start, n, |q| sites[q.index()].scaled(f).distance_squared(p), |a, b| a < b))
+        Some(self.store.descend(start, n, |q, best| {
+            strictly_closer(p, sites[q.index()].scaled(f), sites[best.index()].scaled(f))
+        }))
     }
 
     /// A finite vertex, or `None` if the id is out of range.

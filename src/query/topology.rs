@@ -101,7 +101,7 @@ impl Diagram {
         }
         for e in self.edges() {
             match self.finite_length(&e) {
-                Some((a, b, len)) if !(len > threshold) => {
+                Some((a, b, len)) if len <= threshold || len.is_nan() => {
                     let (ra, rb) = (root(&mut parent, a.0), root(&mut parent, b.0));
                     parent[ra as usize] = rb;
                 }

@@ -1,0 +1,106 @@
+//! Exact sums of products of doubles, for the one predicate the `robust`
+//! crate does not cover (comparing two distances). Shewchuk's expansion
+//! arithmetic: a number is kept as a sum of non-overlapping doubles, in
+//! increasing magnitude, whose sign is the sign of its largest component.
+//! Exact as long as no product underflows (the same condition as `robust`).
+
+/// `a + b` as `(sum, error)` with `sum + error == a + b` exactly.
+#[inline]
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bv = s - a;
+    let av = s - bv;
+    (s, (a - av) + (b - bv))
+}
+
+/// `a * b` as `(product, error)` with `product + error == a * b` exactly.
+#[inline]
+fn two_product(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    (p, a.mul_add(b, -p))
+}
+
+/// A number held exactly as a sum of doubles.
+#[derive(Default)]
+pub(crate) struct Expansion {
+    components: Vec<f64>,
+}
+
+impl Expansion {
+    /// Adds `b` exactly (Shewchuk's GROW-EXPANSION with zero elimination).
+    pub(crate) fn add(&mut self, mut b: f64) {
+        let mut out = 0;
+        for i in 0..self.components.len() {
+            let (s, e) = two_sum(b, self.components[i]);
+            b = s;
+            if e != 0.0 {
+                self.components[out] = e;
+                out += 1;
+            }
+        }
+        self.components.truncate(out);
+        if b != 0.0 {
+            self.components.push(b);
+        }
+    }
+
+    /// Adds `x * y` exactly.
+    pub(crate) fn add_product(&mut self, x: f64, y: f64) {
+        let (p, e) = two_product(x, y);
+        self.add(e);
+        self.add(p);
+    }
+
+    /// Adds `(x - y)^2` exactly.
+    pub(crate) fn add_squared_difference(&mut self, x: f64, y: f64) {
+        let (h, l) = two_sum(x, -y);
+        self.add_product(h, h);
+        self.add_product(2.0 * h, l);
+        self.add_product(l, l);
+    }
+
+    /// -1, 0 or 1.
+    pub(crate) fn sign(&self) -> i8 {
+        match self.components.last() {
+            Some(&c) if c > 0.0 => 1,
+            Some(&c) if c < 0.0 => -1,
+            _ => 0,
+        }
+    }
+
+    /// Negates the number.
+    pub(crate) fn negate(&mut self) {
+        self.components.iter_mut().for_each(|c| *c = -*c);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cancellation_is_exact() {
+        let mut e = Expansion::default();
+        e.add(1e100);
+        e.add(1.0);
+        e.add(-1e100);
+        assert_eq!(e.sign(), 1);
+        e.add(-1.0);
+        assert_eq!(e.sign(), 0);
+    }
+
+    #[test]
+    fn squared_difference_keeps_the_low_bits() {
+        // (1 + 2^-52)^2 - 1 - 2^-51 = 2^-104: far below one ulp of 1.
+        let x = 1.0 + f64::EPSILON;
+        let mut e = Expansion::default();
+        e.add_squared_difference(x, 0.0);
+        e.add(-1.0);
+        e.add(-2.0 * f64::EPSILON);
+        assert_eq!(e.sign(), 1);
+        e.add(-f64::EPSILON * f64::EPSILON);
+        assert_eq!(e.sign(), 0);
+        e.negate();
+        assert_eq!(e.sign(), 0);
+    }
+}
