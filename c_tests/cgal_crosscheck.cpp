@@ -239,6 +239,17 @@ bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, I
 }
 
 // Boost.Polygon text format: P, P lines "x y", S, S lines "x0 y0 x1 y1".
+// Writes the input in the format read_file reads, with every digit needed to
+// read back the same doubles: a generated case becomes a file to debug with.
+bool write_file(const std::string& path, const Input& input) {
+    std::FILE* out = std::fopen(path.c_str(), "w");
+    if (out == nullptr) return false;
+    std::fprintf(out, "%zu\n", input.points.size());
+    for (const Point& p : input.points) std::fprintf(out, "%.17g %.17g\n", p.x, p.y);
+    std::fprintf(out, "0\n");
+    return std::fclose(out) == 0;
+}
+
 bool read_file(const std::string& path, Input& input, std::string& error) {
     std::ifstream in(path);
     if (!in) {
@@ -739,7 +750,7 @@ int report(const Input& input, const Sites& sites, const OursResult& ours, const
 
 int usage() {
     std::fprintf(stderr,
-                 "usage: segvoronoi_cgal_check <family> <n> [seed]\n"
+                 "usage: segvoronoi_cgal_check <family> <n> [seed] [--write-input FILE]\n"
                  "       segvoronoi_cgal_check --file input.txt [--degenerate]\n"
                  "families: uniform clustered tiny tiny-offset huge (generic), lattice circle collinear "
                  "tiny-lattice snapped (degenerate)\n");
@@ -765,11 +776,20 @@ bool parse_arguments(int argc, char** argv, Input& input) {
         input.degenerate = argc == 4;
         return true;
     }
+    std::string write_to;
+    if (argc >= 5 && std::string(argv[argc - 2]) == "--write-input") {
+        write_to = argv[argc - 1];
+        argc -= 2;
+    }
     std::uint64_t n = 0, seed = 1;
     if (argc < 3 || argc > 4 || !parse_count(argv[2], n) || (argc == 4 && !parse_count(argv[3], seed))) {
         return usage(), false;
     }
     if (!make_family(argv[1], static_cast<std::size_t>(n), seed, input)) return usage(), false;
+    if (!write_to.empty() && !write_file(write_to, input)) {
+        std::fprintf(stderr, "segvoronoi_cgal_check: cannot write %s\n", write_to.c_str());
+        return false;
+    }
     return true;
 }
 

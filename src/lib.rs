@@ -58,5 +58,10 @@ pub mod fault_injection {
     pub use crate::geometry::fault::{set_fault_mode, FaultMode};
 }
 
+/// The README's Rust quick start, run as a doctest so it cannot rot.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
+
 /// The crate version, as in `Cargo.toml`.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");

@@ -1,10 +1,10 @@
 //! Vertex solvers: the position of a Voronoi vertex computed directly from its
 //! sites, never from old edge geometry, so errors do not accumulate.
 //!
-//! Precision: not exact. The circumcentre is computed relative to the first
-//! site, with the orientation determinant (the denominator) to full
-//! precision, which keeps the error near a few ulps of the circle's radius
-//! also for nearly collinear sites. A solver that finds no solution says so, and the caller (the
+//! Precision: not exact. The circumcentre is computed relative to the corner
+//! opposite the longest side, with the orientation determinant (the
+//! denominator) to full precision, which keeps the error near a few ulps of
+//! the circle's radius also for nearly collinear sites. A solver that finds no solution says so, and the caller (the
 //! topology) decides what to store.
 
 use super::point::Point;
@@ -13,6 +13,19 @@ use super::point::Point;
 /// the points are collinear (as computed), where no such circle exists.
 #[inline]
 pub fn circumcircle(a: Point, b: Point, c: Point) -> Option<(Point, f64)> {
+    // Work relative to the corner opposite the longest side, which is an end
+    // of the shortest side: the short side's coordinate differences, where a
+    // nearly degenerate triangle keeps its information, then come out of one
+    // rounding-free subtraction instead of the difference of two rounded
+    // long ones. (A cyclic rotation keeps the orientation.)
+    let (ab, bc, ca) = (a.distance_squared(b), b.distance_squared(c), c.distance_squared(a));
+    let (a, b, c) = if bc >= ab && bc >= ca {
+        (a, b, c)
+    } else if ca >= ab {
+        (b, c, a)
+    } else {
+        (c, a, b)
+    };
     let (bx, by) = (b.x - a.x, b.y - a.y);
     let (cx, cy) = (c.x - a.x, c.y - a.y);
     // The denominator is the orientation determinant, which cancels badly
@@ -83,6 +96,21 @@ mod tests {
         let y = 0.5e20;
         assert!((centre.x).abs() < 1e-12 * y, "{centre:?}");
         assert!((centre.y - y).abs() < 1e-12 * y && (r - y).abs() < 1e-12 * y, "{centre:?} {r}");
+    }
+
+    #[test]
+    fn circumcircle_of_a_needle_triangle() {
+        // Found by the CGAL cross-check: two sites 3e-17 apart and one 0.5
+        // away. Relative to the far site the 1e-20 offsets are rounded away
+        // and the centre lands 1.7e-4 off; the exact centre is
+        // (0.25, -1.5e-17 - 0.25 * 2e-20 / 3e-17) to within 1e-20.
+        let (far, b, c) = (p(0.5, -3e-17), p(-1e-20, -3e-17), p(1e-20, 0.0));
+        for (a, b, c) in [(far, b, c), (b, c, far), (c, far, b)] {
+            let (centre, r) = circumcircle(a, b, c).unwrap();
+            let y = -1.5e-17 - 0.25 * 2e-20 / 3e-17;
+            assert!((centre.x - 0.25).abs() < 1e-15 && (centre.y - y).abs() < 1e-15, "{centre:?}");
+            assert!((r - far.distance(centre)).abs() < 1e-15);
+        }
     }
 
     #[test]
