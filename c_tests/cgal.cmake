@@ -60,3 +60,10 @@ unset(_segvoronoi_cgal_runs)
 add_test(NAME cgal_tiny-lattice_2500 COMMAND segvoronoi_cgal_check tiny-lattice 2500)
 add_test(NAME cgal_snapped_40_seed3 COMMAND segvoronoi_cgal_check snapped 40 3)
 set_tests_properties(cgal_tiny-lattice_2500 cgal_snapped_40_seed3 PROPERTIES TIMEOUT 120 LABELS cgal)
+
+# Few distinct coordinate values a hair apart: repeats, collinear and
+# cocircular points and needle triangles, several seeds.
+foreach(_seed 1 2 3 4 5)
+  add_test(NAME cgal_snapped_150_seed${_seed} COMMAND segvoronoi_cgal_check snapped 150 ${_seed})
+  set_tests_properties(cgal_snapped_150_seed${_seed} PROPERTIES TIMEOUT 60 LABELS cgal)
+endforeach()
