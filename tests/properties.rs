@@ -2,7 +2,7 @@
 //! input order, on translation or on power-of-two scaling; brute-force
 //! empty-circle and nearest-site checks on small inputs. Inputs mix generic
 //! random points with degenerate ones (small integer grids: many cocircular
-//! and collinear subsets, and repeated points).
+//! and collinear subsets, and repeated points; coordinates a hair apart).
 
 mod common;
 
@@ -60,8 +60,16 @@ fn random_points(max_len: usize) -> impl Strategy<Value = Vec<[f64; 2]>> {
     prop::collection::vec((-1.0e3f64..1.0e3, -1.0e3f64..1.0e3).prop_map(|(x, y)| [x, y]), 0..max_len)
 }
 
+/// Coordinates from a few values, some a hair apart: repeats, collinear and
+/// cocircular subsets, and needle triangles whose vertices are hard to place
+/// (the family that found the circumcentre and walk bugs in the CGAL check).
+fn snapped_points(max_len: usize) -> impl Strategy<Value = Vec<[f64; 2]>> {
+    const VALUES: [f64; 8] = [0.0, 1.0, -1.0, 1e-20, -1e-20, 2.0, 0.5, -3e-17];
+    prop::collection::vec((0..VALUES.len(), 0..VALUES.len()).prop_map(|(i, j)| [VALUES[i], VALUES[j]]), 0..max_len)
+}
+
 fn any_points() -> impl Strategy<Value = Vec<[f64; 2]>> {
-    prop_oneof![grid_points(120, 6), grid_points(200, 40), random_points(200)]
+    prop_oneof![grid_points(120, 6), grid_points(200, 40), random_points(200), snapped_points(120)]
 }
 
 proptest! {
@@ -103,7 +111,7 @@ proptest! {
     }
 
     #[test]
-    fn brute_force_geometry_holds(points in prop_oneof![grid_points(200, 25), random_points(200)], seed in any::<u64>()) {
+    fn brute_force_geometry_holds(points in prop_oneof![grid_points(200, 25), random_points(200), snapped_points(150)], seed in any::<u64>()) {
         let d = build(&points);
         check_empty_circles(&d, 1e-9);
         let mut rng = Rng(seed);

@@ -55,6 +55,9 @@ pub fn check_empty_circles(d: &Diagram, tol: f64) {
 /// cell's side of the bisector (checked on all neighbours).
 pub fn check_nearest_sites(d: &Diagram, queries: &[Point], tol: f64) {
     let scale = d.extent().max(f64::MIN_POSITIVE);
+    if d.site_count() == 0 {
+        return;
+    }
     for &q in queries {
         let best = d.site_ids().map(|s| d.site(s).distance(q)).fold(f64::INFINITY, f64::min);
         // the brute-force nearest sites (ties allowed)
