@@ -162,8 +162,16 @@ fn construct(points: &[Point]) -> (PointDiagram, Vec<SiteId>) {
     site_of[first as usize] = ids[0];
     site_of[second as usize] = ids[1];
     let mut last = ids[1];
-    for i in std::iter::once(third).chain(order.iter().copied().filter(|&i| i != first && i != second && i != third)) {
-        match diagram.insert(points[i as usize], last) {
+    // Gather the points into insertion order first: the loads are
+    // independent here and overlap, where inside the loop each would be a
+    // cache miss waiting behind a whole insertion.
+    let rest: Vec<(u32, Point)> = std::iter::once(third)
+        .chain(order.iter().copied().filter(|&i| i != first && i != second && i != third))
+        .map(|i| (i, points[i as usize]))
+        .collect();
+    drop(order);
+    for (i, p) in rest {
+        match diagram.insert(p, last) {
             Inserted::New(s) => {
                 site_of[i as usize] = s;
                 last = s;

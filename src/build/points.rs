@@ -19,7 +19,7 @@
 
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
 use crate::diagram::Store;
-use crate::geometry::predicates::{in_circle, strictly_closer, in_half_plane_circle, CirclePosition};
+use crate::geometry::predicates::{in_circle, strictly_closer_given, in_half_plane_circle, CirclePosition};
 use crate::geometry::solvers::{circumcircle, left_normal};
 use crate::geometry::{fault, Point};
 
@@ -205,9 +205,12 @@ impl PointDiagram {
     /// matters when the comparisons lie.
     fn nearest_site(&self, start: SiteId, p: Point) -> SiteId {
         let sites = &self.sites;
-        self.store.descend(start, self.sites.len() + 8, |q, best| {
-            strictly_closer(p, sites[q.index()], sites[best.index()])
-        })
+        self.store.descend(
+            start,
+            self.sites.len() + 8,
+            |q| sites[q.index()].distance_squared(p),
+            |(q, dq), (best, d_best)| strictly_closer_given(p, sites[q.index()], dq, sites[best.index()], d_best),
+        )
     }
 
     /// Whether the circle of `v` strictly contains `p` (exact).

@@ -125,27 +125,37 @@ impl Store {
     }
 
     /// Greedy descent over neighbouring cells: from `start`, move to a
-    /// neighbour that is `closer(neighbour, current)` while there is one, at
-    /// most `limit` moves. The store reads no coordinate; the caller's
-    /// comparison decides. In a Voronoi diagram, with an exact comparison,
-    /// the descent ends at a site nearest to the point it measures from
-    /// (greedy routing succeeds on a Delaunay graph).
-    pub fn descend(&self, start: SiteId, limit: usize, closer: impl Fn(SiteId, SiteId) -> bool) -> SiteId {
-        let mut current = start;
+    /// neighbour that is `closer` than the current site while there is one,
+    /// at most `limit` moves. `distance` is a rounded measure computed once
+    /// per site and handed to `closer((q, dq), (best, d_best))`, which
+    /// decides. The store reads no coordinate. In a Voronoi diagram, with an
+    /// exact `closer`, the descent ends at a site nearest to the point it
+    /// measures from (greedy routing succeeds on a Delaunay graph).
+    pub fn descend(
+        &self,
+        start: SiteId,
+        limit: usize,
+        distance: impl Fn(SiteId) -> f64,
+        closer: impl Fn((SiteId, f64), (SiteId, f64)) -> bool,
+    ) -> SiteId {
+        let mut current = (start, distance(start));
         for _ in 0..limit {
             let mut best = current;
-            for h in self.cell_boundary(current) {
+            for h in self.cell_boundary(current.0) {
                 let q = self.right(h);
-                if q != self.infinite_site && closer(q, best) {
-                    best = q;
+                if q != self.infinite_site {
+                    let candidate = (q, distance(q));
+                    if closer(candidate, best) {
+                        best = candidate;
+                    }
                 }
             }
-            if best == current {
+            if best.0 == current.0 {
                 break;
             }
             current = best;
         }
-        current
+        current.0
     }
 
     /// Joins two half-edges as twins.

@@ -118,14 +118,20 @@ pub fn in_half_plane_circle(a: Point, b: Point, p: Point) -> bool {
 }
 
 /// Whether `p` is strictly closer to `a` than to `b`: exact.
+#[inline]
+pub fn strictly_closer(p: Point, a: Point, b: Point) -> bool {
+    strictly_closer_given(p, a, p.distance_squared(a), b, p.distance_squared(b))
+}
+
+/// [`strictly_closer`] for a caller that already has the rounded squared
+/// distances `da = p.distance_squared(a)` and `db = p.distance_squared(b)`
+/// (a walk compares each site with several others).
 ///
 /// A floating-point filter answers when the two squared distances differ by
 /// more than their rounding error can explain; otherwise the exact sign of
 /// `|p - a|^2 - |p - b|^2` is computed with expansions.
 #[inline]
-pub fn strictly_closer(p: Point, a: Point, b: Point) -> bool {
-    let da = p.distance_squared(a);
-    let db = p.distance_squared(b);
+pub fn strictly_closer_given(p: Point, a: Point, da: f64, b: Point, db: f64) -> bool {
     if fault::active() {
         return fault::perturb(da) < fault::perturb(db);
     }

@@ -2,9 +2,9 @@
 //! sites, never from old edge geometry, so errors do not accumulate.
 //!
 //! Precision: not exact. The circumcentre is computed relative to the corner
-//! opposite the longest side, with the orientation determinant (the
-//! denominator) to full precision, which keeps the error near a few ulps of
-//! the circle's radius also for nearly collinear sites. A solver that finds no solution says so, and the caller (the
+//! opposite the longest side, which keeps the error near a few ulps of the
+//! circle's radius also for needle-shaped triangles, and with the
+//! denominator's sign always right. A solver that finds no solution says so, and the caller (the
 //! topology) decides what to store.
 
 use super::point::Point;
@@ -28,14 +28,20 @@ pub fn circumcircle(a: Point, b: Point, c: Point) -> Option<(Point, f64)> {
     };
     let (bx, by) = (b.x - a.x, b.y - a.y);
     let (cx, cy) = (c.x - a.x, c.y - a.y);
-    // The denominator is the orientation determinant, which cancels badly
-    // for nearly collinear sites (exactly where the centre runs far away):
-    // the adaptive predicate gives it to full relative precision.
-    let orient = robust::orient2d(
-        robust::Coord { x: a.x, y: a.y },
-        robust::Coord { x: b.x, y: b.y },
-        robust::Coord { x: c.x, y: c.y },
-    );
+    // The denominator is the orientation determinant. When rounding could
+    // have changed its sign (Shewchuk's first error bound), the adaptive
+    // predicate gives it instead, so it never comes out 0 or of the wrong
+    // sign for three non-collinear sites.
+    let (left, right) = (bx * cy, by * cx);
+    let mut orient = left - right;
+    const HALF_EPSILON: f64 = f64::EPSILON / 2.0;
+    if orient.abs() <= (3.0 + 16.0 * HALF_EPSILON) * HALF_EPSILON * (left.abs() + right.abs()) {
+        orient = robust::orient2d(
+            robust::Coord { x: a.x, y: a.y },
+            robust::Coord { x: b.x, y: b.y },
+            robust::Coord { x: c.x, y: c.y },
+        );
+    }
     let d = 2.0 * orient;
     if d == 0.0 {
         return None;

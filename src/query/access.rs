@@ -1,6 +1,6 @@
 //! Iterators and accessors of [`Diagram`].
 
-use crate::geometry::predicates::strictly_closer;
+use crate::geometry::predicates::strictly_closer_given;
 use crate::diagram::{BuildStats, Diagram, EdgeId, HalfEdgeId, SiteId, ValidationError, VertexId, NONE};
 use crate::geometry::Point;
 
@@ -150,9 +150,13 @@ impl Diagram {
         // the input may still overflow there: then in input coordinates).
         let f = if p.scaled(self.scale.to_internal).is_finite() { self.scale.to_internal } else { 1.0 };
         let (sites, p) = (&self.sites, p.scaled(f));
-        Some(self.store.descend(start, n, |q, best| {
-            strictly_closer(p, sites[q.index()].scaled(f), sites[best.index()].scaled(f))
-        }))
+        let site = |s: SiteId| sites[s.index()].scaled(f);
+        Some(self.store.descend(
+            start,
+            n,
+            |q| site(q).distance_squared(p),
+            |(q, dq), (best, d_best)| strictly_closer_given(p, site(q), dq, site(best), d_best),
+        ))
     }
 
     /// A finite vertex, or `None` if the id is out of range.
