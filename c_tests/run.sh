@@ -42,6 +42,8 @@ grep -E "using segvoronoi|WARNING|skipped" "$work/c_configure.log" || true
 cmake --build "$work/c_tests" -j "$jobs"
 # shellcheck disable=SC2086
 ctest --test-dir "$work/c_tests" --output-on-failure -j "$jobs" ${CTEST_ARGS:-}
+echo "--- CGAL cross-check: agreement per input (from the ctest log)"
+grep -h "^family=" "$work/c_tests/Testing/Temporary/LastTest.log" | sort || echo "(no CGAL runs)"
 
 echo "--- downstream: pkg-config, shared and static"
 export PKG_CONFIG_PATH="$(dirname "$(ls -d "$prefix"/lib*/pkgconfig/segvoronoi.pc)")"

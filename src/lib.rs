@@ -36,7 +36,8 @@
 //! - `ffi`: the C API (`include/segvoronoi.h`), which only converts and
 //!   delegates.
 
-#![warn(missing_docs)]
+// An undocumented public item (and so an undocumented C export) fails the build.
+#![deny(missing_docs)]
 
 mod build;
 mod diagram;
