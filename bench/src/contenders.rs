@@ -15,16 +15,26 @@ use crate::input::{float_points, grid_points, SEED};
 pub enum Contender {
     Segvoronoi,
     Boostvoronoi,
+    /// Boost.Polygon's C++ original, compiled in by build.rs when the Boost
+    /// headers are there.
+    BoostCpp,
     Spade,
 }
 
 impl Contender {
-    pub const ALL: [Contender; 3] = [Contender::Segvoronoi, Contender::Boostvoronoi, Contender::Spade];
+    pub const ALL: [Contender; 4] =
+        [Contender::Segvoronoi, Contender::BoostCpp, Contender::Boostvoronoi, Contender::Spade];
+
+    /// The contenders this binary can run (boost-cpp only when compiled in).
+    pub fn available() -> Vec<Contender> {
+        Contender::ALL.into_iter().filter(|c| *c != Contender::BoostCpp || cfg!(has_boost_cpp)).collect()
+    }
 
     pub fn name(self) -> &'static str {
         match self {
             Contender::Segvoronoi => "segvoronoi",
             Contender::Boostvoronoi => "boostvoronoi",
+            Contender::BoostCpp => "boost-cpp",
             Contender::Spade => "spade",
         }
     }
@@ -58,6 +68,10 @@ pub fn measure(contender: Contender, n: usize, runs: usize) -> Measured {
             let points = grid_points(n, SEED);
             time_runs(runs, || boostvoronoi_build(&points), |d| (d.cells().len(), d.vertices().len()))
         }
+        Contender::BoostCpp => {
+            let points = grid_points(n, SEED);
+            time_runs(runs, || boost_cpp::Diagram::build(&points), |d| (d.cells(), d.vertices()))
+        }
         Contender::Spade => {
             let points = float_points(n, SEED);
             time_runs(runs, || spade_build(&points), |t| (t.num_vertices(), t.num_inner_faces()))
@@ -87,6 +101,63 @@ fn boostvoronoi_build(points: &[[i32; 2]]) -> boostvoronoi::prelude::Diagram {
 fn spade_build(points: &[[f64; 2]]) -> DelaunayTriangulation<Point2<f64>> {
     let vertices = points.iter().map(|&[x, y]| Point2::new(x, y)).collect();
     DelaunayTriangulation::bulk_load(vertices).expect("spade bulk_load")
+}
+
+/// The C++ builder through the C interface of `cpp/boost_polygon.cpp`.
+mod boost_cpp {
+    use std::ffi::c_void;
+
+    #[cfg(has_boost_cpp)]
+    extern "C" {
+        fn boost_polygon_voronoi_build(xy: *const i32, n: usize) -> *mut c_void;
+        fn boost_polygon_voronoi_cells(diagram: *const c_void) -> usize;
+        fn boost_polygon_voronoi_vertices(diagram: *const c_void) -> usize;
+        fn boost_polygon_voronoi_free(diagram: *mut c_void);
+    }
+
+    /// An owned C++ `voronoi_diagram<double>`.
+    pub struct Diagram(*mut c_void);
+
+    #[cfg(has_boost_cpp)]
+    impl Diagram {
+        pub fn build(points: &[[i32; 2]]) -> Diagram {
+            // SAFETY: `points` is `2 * len` contiguous i32, read during the call only.
+            let raw = unsafe { boost_polygon_voronoi_build(points.as_ptr().cast(), points.len()) };
+            assert!(!raw.is_null(), "Boost.Polygon build failed");
+            Diagram(raw)
+        }
+
+        pub fn cells(&self) -> usize {
+            // SAFETY: a live diagram from `build`.
+            unsafe { boost_polygon_voronoi_cells(self.0) }
+        }
+
+        pub fn vertices(&self) -> usize {
+            // SAFETY: a live diagram from `build`.
+            unsafe { boost_polygon_voronoi_vertices(self.0) }
+        }
+    }
+
+    #[cfg(has_boost_cpp)]
+    impl Drop for Diagram {
+        fn drop(&mut self) {
+            // SAFETY: built by `build`, freed once.
+            unsafe { boost_polygon_voronoi_free(self.0) }
+        }
+    }
+
+    #[cfg(not(has_boost_cpp))]
+    impl Diagram {
+        pub fn build(_: &[[i32; 2]]) -> Diagram {
+            panic!("boost-cpp was not compiled in (Boost headers missing at build time)")
+        }
+        pub fn cells(&self) -> usize {
+            0
+        }
+        pub fn vertices(&self) -> usize {
+            0
+        }
+    }
 }
 
 fn time_runs<T>(runs: usize, mut build: impl FnMut() -> T, counts: impl Fn(&T) -> (usize, usize)) -> Measured {

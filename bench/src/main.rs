@@ -1,8 +1,8 @@
-//! Wall time and peak memory of segvoronoi, boostvoronoi and spade on uniform
-//! random points.
+//! Wall time and peak memory of segvoronoi, Boost.Polygon's voronoi (the C++
+//! original and the boostvoronoi port) and spade on uniform random points.
 //!
 //! `cargo run --release -- [--sizes 10000,100000,1000000] [--runs 5]
-//! [--contenders segvoronoi,boostvoronoi,spade]`
+//! [--contenders segvoronoi,boost-cpp,boostvoronoi,spade]`
 //!
 //! Each (contender, size) runs in a child process (this binary again, in the
 //! hidden `--child` mode), so the peak resident set size it reports (VmHWM) is
@@ -102,7 +102,7 @@ fn parse_options(args: &[String]) -> Result<Options, String> {
     let mut options = Options {
         sizes: vec![10_000, 100_000, 1_000_000],
         runs: 5,
-        contenders: Contender::ALL.to_vec(),
+        contenders: Contender::available(),
     };
     let mut args = args.iter();
     while let Some(flag) = args.next() {

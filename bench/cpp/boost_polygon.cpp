@@ -1,0 +1,39 @@
+// Boost.Polygon's C++ Voronoi builder behind a small C interface, so the
+// benchmark can time it in the same process and the same way as the Rust
+// contenders: build from a borrowed array of integer points, read the counts,
+// free outside the timed region.
+
+#include <boost/polygon/voronoi.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <new>
+
+using Diagram = boost::polygon::voronoi_diagram<double>;
+
+extern "C" {
+
+// Builds the diagram of `n` points `xy = {x0, y0, x1, y1, ...}`; NULL on
+// failure (out of memory or an exception from Boost).
+void* boost_polygon_voronoi_build(const std::int32_t* xy, std::size_t n) {
+    try {
+        boost::polygon::voronoi_builder<std::int32_t> builder;
+        for (std::size_t i = 0; i < n; ++i) builder.insert_point(xy[2 * i], xy[2 * i + 1]);
+        Diagram* diagram = new Diagram;
+        builder.construct(diagram);
+        return diagram;
+    } catch (...) {
+        return nullptr;
+    }
+}
+
+std::size_t boost_polygon_voronoi_cells(const void* diagram) {
+    return static_cast<const Diagram*>(diagram)->num_cells();
+}
+
+std::size_t boost_polygon_voronoi_vertices(const void* diagram) {
+    return static_cast<const Diagram*>(diagram)->num_vertices();
+}
+
+void boost_polygon_voronoi_free(void* diagram) { delete static_cast<Diagram*>(diagram); }
+}
