@@ -6,6 +6,7 @@
 //! compares a raw determinant with zero.
 
 mod expansion;
+pub(crate) mod parabola;
 pub(crate) mod fault;
 pub mod point;
 pub mod predicates;
