@@ -4,6 +4,7 @@
 mod finish;
 mod order;
 mod points;
+mod segment_input;
 
 use crate::diagram::{Diagram, SiteId, NONE};
 use crate::error::{Error, ErrorKind};
