@@ -12,5 +12,7 @@ pub mod point;
 pub mod predicates;
 pub(crate) mod scale;
 pub mod solvers;
+pub(crate) mod site;
+pub(crate) mod segment_solvers;
 
 pub use point::Point;

@@ -1,0 +1,1009 @@
+#![allow(dead_code)] // used by segment insertion (issue 3), not wired yet
+//! Voronoi-vertex solvers for every combination of point and segment sites
+//! (seed 000 §5.2, DESIGN §2.3).
+//!
+//! A Voronoi vertex of sites `a`, `b`, `c` is the centre of a circle that
+//! touches the three sites: it passes through point sites and is tangent to
+//! the supporting line of each segment site. Around the vertex the regions of
+//! `a`, `b`, `c` appear counter-clockwise, which is the same as saying that the
+//! *touching points* of `a`, `b`, `c` lie counter-clockwise on the circle.
+//! That order is what the construction knows exactly (from the topology), so
+//! [`vertex`] takes it as part of the question: of the up to four algebraic
+//! solutions it returns the one with that order, and where possible decides
+//! which one *before* computing, so the wrong root (which may be at infinity)
+//! is never evaluated. When no circle with that order exists it returns
+//! `None` and the topology decides what to do.
+//!
+//! Touching points that coincide: when a point site `p` is an endpoint of a
+//! segment site `s`, a circle centred on the perpendicular to `s` at `p`
+//! touches both at `p`. Their order is then the limit order: the segment's
+//! touching point is `p` moved an infinitesimal step into the segment, so `s`
+//! comes just after `p` counter-clockwise when that step turns
+//! counter-clockwise around the centre, and just before it otherwise.
+//!
+//! The cases, named by the site types after rotating to a canonical order
+//! (points first; any rotation of the arguments gives the same answer):
+//! - `PPP`: circumcircle ([`super::solvers::circumcircle`]).
+//! - `PPS`: circle through two points tangent to a line (quadratic).
+//! - `PPS`, one point an endpoint of the segment: bisector ∩ perpendicular.
+//! - `PSS`: parabola ∩ angle bisector (quadratic).
+//! - `PSS`, the point an endpoint of one segment: perpendicular ∩ parabola,
+//!   which on that perpendicular is linear.
+//! - `PSS`, the point the common endpoint of both: the point itself, radius 0.
+//! - `SSS`: in- or excentre of the triangle of the three supporting lines.
+//!
+//! The solvers use the segments' supporting lines. They do not reject a
+//! circle whose tangent point falls outside its open segment (except that the
+//! `SSS` solver uses the segments' extent to choose among three excentres):
+//! the topology has already decided that the vertex exists, and a tangent
+//! point a rounding error beyond an endpoint must not erase it. A caller that
+//! wants the check has [`Site::nearest_point`] and
+//! [`super::site::segment_parameter`].
+//!
+//! Precision (all cases): not exact. Every solver works relative to a local
+//! origin (a point site or a segment endpoint of the triple), turns sides and
+//! orders into exact orientation predicates where they decide a case, and
+//! takes each quadratic root from whichever of the two algebraically equal
+//! formulas has no cancellation. The error is a few ulps of the configuration's
+//! extent (the radius plus the distance from the local origin), times the
+//! condition of the problem: near a double root (two solutions about to merge)
+//! a perturbation `δ` of the input moves the answer by up to `√δ`, which no
+//! formula avoids. Non-finite intermediate results give `None`, never a panic.
+
+use super::point::Point;
+use super::predicates::{orientation, Orientation};
+use super::site::{segment_parameter, Site};
+use super::solvers::circumcircle;
+
+/// The centre and radius of the circle touching `a`, `b`, `c` with touching
+/// points in counter-clockwise order (see the module documentation), or `None`
+/// when there is no such circle or it cannot be determined. Any rotation of
+/// the arguments gives the same answer (bit for bit); swapping two arguments
+/// asks for the other orientation.
+pub(crate) fn vertex(a: &Site, b: &Site, c: &Site) -> Option<(Point, f64)> {
+    let sites = [*a, *b, *c];
+    let points = sites.iter().filter(|s| s.is_point()).count();
+    let result = match points {
+        3 => ppp(rotate_smallest_first(sites)),
+        2 => {
+            // The rotation that puts the segment last: (p, q, S).
+            let [p, q, s] = rotate_until(sites, |r| !r[2].is_point());
+            pps_dispatch(point_of(p)?, point_of(q)?, segment_of(s)?)
+        }
+        1 => {
+            // The rotation that puts the point first: (p, S1, S2).
+            let [p, s1, s2] = rotate_until(sites, |r| r[0].is_point());
+            pss_dispatch(point_of(p)?, segment_of(s1)?, segment_of(s2)?)
+        }
+        _ => {
+            let [s1, s2, s3] = rotate_smallest_first(sites);
+            sss(segment_of(s1)?, segment_of(s2)?, segment_of(s3)?)
+        }
+    };
+    result.filter(|(centre, r)| centre.is_finite() && r.is_finite() && *r >= 0.0)
+}
+
+// ---------------------------------------------------------------------------
+// Canonical order.
+
+/// The first rotation of `sites` that satisfies `wanted` (the identity if
+/// none does, which the callers rule out by counting site types).
+fn rotate_until(sites: [Site; 3], wanted: impl Fn(&[Site; 3]) -> bool) -> [Site; 3] {
+    let [a, b, c] = sites;
+    [[a, b, c], [b, c, a], [c, a, b]]
+        .into_iter()
+        .find(|r| wanted(r))
+        .unwrap_or(sites)
+}
+
+/// The rotation that starts with the site of smallest coordinates (lexicographic
+/// over the coordinates, `total_cmp`), so that the three rotations of one
+/// question are computed by identical arithmetic.
+fn rotate_smallest_first(sites: [Site; 3]) -> [Site; 3] {
+    let key = |s: &Site| -> [f64; 4] {
+        match *s {
+            Site::Point(p) => [p.x, p.y, 0.0, 0.0],
+            Site::Segment { a, b } => [a.x, a.y, b.x, b.y],
+        }
+    };
+    let less = |s: &Site, t: &Site| {
+        key(s)
+            .iter()
+            .zip(key(t).iter())
+            .map(|(x, y)| x.total_cmp(y))
+            .find(|o| o.is_ne())
+            .is_some_and(|o| o.is_lt())
+    };
+    let [a, b, c] = sites;
+    if less(&b, &a) && !less(&c, &b) {
+        [b, c, a]
+    } else if less(&c, &a) && less(&c, &b) {
+        [c, a, b]
+    } else {
+        sites
+    }
+}
+
+fn point_of(s: Site) -> Option<Point> {
+    match s {
+        Site::Point(p) => Some(p),
+        Site::Segment { .. } => None,
+    }
+}
+
+fn segment_of(s: Site) -> Option<(Point, Point)> {
+    match s {
+        Site::Segment { a, b } => Some((a, b)),
+        Site::Point(_) => None,
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Small vector helpers (points used as vectors).
+
+fn sub(a: Point, b: Point) -> Point {
+    Point::new(a.x - b.x, a.y - b.y)
+}
+
+fn add(a: Point, b: Point) -> Point {
+    Point::new(a.x + b.x, a.y + b.y)
+}
+
+fn scale(s: f64, v: Point) -> Point {
+    Point::new(s * v.x, s * v.y)
+}
+
+fn dot(a: Point, b: Point) -> f64 {
+    a.x * b.x + a.y * b.y
+}
+
+fn cross(a: Point, b: Point) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+fn norm(v: Point) -> f64 {
+    v.x.hypot(v.y)
+}
+
+/// `v` turned a quarter counter-clockwise.
+fn rot_ccw(v: Point) -> Point {
+    Point::new(-v.y, v.x)
+}
+
+/// `v / |v|`, or `None` for a zero or non-finite vector.
+fn unit(v: Point) -> Option<Point> {
+    let len = norm(v);
+    (len > 0.0 && len.is_finite()).then(|| scale(1.0 / len, v))
+}
+
+/// The unit normal of the line `a → b` that points to the side of `p`, and
+/// the distance of `p` from the line. `None` when `p` is on the line (exact
+/// test) or `a == b`.
+///
+/// Precision: the side is exact; the distance is computed from the endpoint
+/// nearer to `p`, a few ulps of that distance.
+fn normal_toward(a: Point, b: Point, p: Point) -> Option<(Point, f64)> {
+    let n = rot_ccw(unit(sub(b, a))?);
+    let n = match orientation(a, b, p) {
+        Orientation::CounterClockwise => n,
+        Orientation::Clockwise => scale(-1.0, n),
+        Orientation::Collinear => return None,
+    };
+    let near = if p.distance_squared(a) <= p.distance_squared(b) { a } else { b };
+    Some((n, dot(n, sub(p, near)).abs()))
+}
+
+/// Whether the two segments lie on one line (exact).
+fn collinear_segments(s: (Point, Point), t: (Point, Point)) -> bool {
+    orientation(s.0, s.1, t.0) == Orientation::Collinear
+        && orientation(s.0, s.1, t.1) == Orientation::Collinear
+}
+
+// ---------------------------------------------------------------------------
+// Point, point, point.
+
+/// Three point sites: their circumcircle when they are counter-clockwise
+/// (exact test), else `None` (clockwise: the other orientation was meant;
+/// collinear: no circle).
+///
+/// Precision: that of [`circumcircle`] (a few ulps of the radius, also for
+/// needle triangles).
+fn ppp(sites: [Site; 3]) -> Option<(Point, f64)> {
+    let [a, b, c] = sites.map(point_of);
+    let (a, b, c) = (a?, b?, c?);
+    if orientation(a, b, c) != Orientation::CounterClockwise {
+        return None;
+    }
+    circumcircle(a, b, c)
+}
+
+// ---------------------------------------------------------------------------
+// Point, point, segment.
+
+/// `(p, q, S)`: chooses the endpoint case or the general one.
+fn pps_dispatch(p: Point, q: Point, s: (Point, Point)) -> Option<(Point, f64)> {
+    let seg = Site::Segment { a: s.0, b: s.1 };
+    match (seg.other_endpoint(p), seg.other_endpoint(q)) {
+        // S = pq: the perpendiculars at p and q are parallel.
+        (Some(_), Some(_)) => None,
+        (Some(e), None) => pps_endpoint(p, q, p, e),
+        (None, Some(e)) => pps_endpoint(p, q, q, e),
+        (None, None) => pps(p, q, s.0, s.1),
+    }
+}
+
+/// `(p, q, S)` where `S` runs from `shared` (which is `p` or `q`) to `far`.
+///
+/// The segment touches the circle at `shared`, so the centre is on the
+/// perpendicular to `S` at `shared`: `u = shared + λ n` (`n` a unit normal of
+/// `S`). With `v = other - shared`, `|u - shared| = |u - other|` gives
+/// `λ² = λ² - 2λ n·v + |v|²`, so `λ = |v|² / (2 n·v)`: linear, one solution.
+///
+/// Its order: if `shared = q`, `S` touches just after `q`, which is
+/// counter-clockwise exactly when `orientation(p, q, far)` is; if
+/// `shared = p`, `S` touches just before `p`, i.e. `(q, S⁺, p)` must be
+/// clockwise, which is again `orientation(p, q, far)` counter-clockwise. So in
+/// both cases the circle is wanted iff `p, q, far` are counter-clockwise (seed
+/// 000 §5.2.1). Collinear: the bisector is parallel to the perpendicular.
+///
+/// Precision: relative to `shared`; a few ulps of `|λ|`, except that `λ` is
+/// ill-conditioned when `other` is nearly on the line of `S` (the vertex runs
+/// off to infinity).
+fn pps_endpoint(p: Point, q: Point, shared: Point, far: Point) -> Option<(Point, f64)> {
+    if orientation(p, q, far) != Orientation::CounterClockwise {
+        return None;
+    }
+    let other = if shared == p { q } else { p };
+    let n = rot_ccw(unit(sub(far, shared))?);
+    let v = sub(other, shared);
+    let lambda = dot(v, v) / (2.0 * dot(n, v));
+    Some((add(shared, scale(lambda, n)), lambda.abs()))
+}
+
+/// `(p, q, S)`, neither point an endpoint of `S`: the circle through `p` and
+/// `q` tangent to the line `L` of `S`.
+///
+/// Frame: `x` along `L`, `y` the height above `L`, origin at the foot of `p`,
+/// right-handed, oriented so that `p = (0, hp)` with `hp > 0`; then
+/// `q = (a, hq)` with `hq = hp + dy`. A circle tangent to `L` at `(ξ, 0)`
+/// has its centre at `(ξ, r)`; through `p` and `q`:
+/// `r = (ξ² + hp²) / 2hp = ((a - ξ)² + hq²) / 2hq`, i.e.
+/// `dy ξ² + 2 hp a ξ - hp (a² + hq dy) = 0`, with discriminant
+/// `4 hp hq |pq|²`. Both points must be strictly on one side of `L`.
+///
+/// Root: the touching points `p, q, t = (ξ, 0)` are counter-clockwise iff
+/// `cross(q - p, t - p) = -a hp - dy ξ > 0`, which for `dy > 0` is the smaller
+/// root and for `dy < 0` the larger; both are
+/// `ξ = -(hp a + D) / dy` with `D = √(hp hq) |pq|`. For `a < 0` that sum
+/// cancels, and the rationalised form `ξ = hp (a² + hq dy) / (hp a - D)` is
+/// used instead (its denominator is then a sum of two negatives). When
+/// `dy = 0` (line `pq` parallel to `L`) only the second form is finite, and
+/// only for `a < 0`; for `a ≥ 0` the circle has the other order, giving
+/// `None`.
+///
+/// Precision: relative to `p`; `r` is taken from the point farther from `L`
+/// (the smaller relative error of the division). A few ulps of the
+/// configuration's extent, worse when `p` or `q` is very close to `L`
+/// relative to `|pq|` (the circle is then nearly determined by one point).
+fn pps(p: Point, q: Point, a: Point, b: Point) -> Option<(Point, f64)> {
+    let (n, hp) = normal_toward(a, b, p)?;
+    // The side of q, exactly: both points must be strictly on p's side.
+    if orientation(a, b, q) != orientation(a, b, p) {
+        return None;
+    }
+    let d = Point::new(n.y, -n.x); // n = rot_ccw(d): the frame is right-handed
+    let v = sub(q, p);
+    let (along, dy) = (dot(d, v), dot(n, v));
+    let hq = hp + dy;
+    let disc_root = hp.sqrt() * hq.sqrt() * norm(v);
+    let xi = if along >= 0.0 {
+        -(hp * along + disc_root) / dy
+    } else {
+        hp * (along * along + hq * dy) / (hp * along - disc_root)
+    };
+    let r = if hq > hp {
+        let ax = along - xi;
+        (ax * ax + hq * hq) / (2.0 * hq)
+    } else {
+        (xi * xi + hp * hp) / (2.0 * hp)
+    };
+    // Centre = foot of p + ξ d + r n = p + ξ d + (r - hp) n.
+    let centre = add(p, add(scale(xi, d), scale(r - hp, n)));
+    Some((centre, r))
+}
+
+// ---------------------------------------------------------------------------
+// Point, segment, segment.
+
+/// `(p, S1, S2)`: chooses the endpoint cases or the general one.
+fn pss_dispatch(p: Point, s1: (Point, Point), s2: (Point, Point)) -> Option<(Point, f64)> {
+    let e1 = Site::Segment { a: s1.0, b: s1.1 }.other_endpoint(p);
+    let e2 = Site::Segment { a: s2.0, b: s2.1 }.other_endpoint(p);
+    match (e1, e2) {
+        (Some(f1), Some(f2)) => pss_common_endpoint(p, f1, f2),
+        (Some(f1), None) => pss_endpoint(p, f1, true, s2),
+        (None, Some(f2)) => pss_endpoint(p, f2, false, s1),
+        (None, None) => pss(p, s1, s2),
+    }
+}
+
+/// `(p, S1, S2)` with `p` an endpoint of both: `S1 = p f1`, `S2 = p f2`.
+///
+/// The centre is on the perpendiculars at `p` to both segments, which meet at
+/// `p` itself: the vertex is `p` with radius 0. The three regions meet there
+/// in the order `(p, S1, S2)` exactly when `f1, f2` turn counter-clockwise
+/// around `p` by less than a half turn (`orientation(p, f1, f2)`
+/// counter-clockwise, exact): then, counter-clockwise around `p`, come the
+/// strip of `S1`, the wedge between the segments where `S1` and `S2` share
+/// the angle bisector, the strip of `S2`, and the region of `p` behind both
+/// perpendiculars. (E.g. `S1` along +x and `S2` along +y: `S1` owns angles
+/// -90°..45°, `S2` 45°..180°, `p` 180°..270°.) Otherwise `None`: at a reflex
+/// angle the order is `(p, S2, S1)`.
+///
+/// Collinear consecutive segments (a straight angle): the two perpendiculars
+/// coincide and the region of `p` shrinks to that line, so a vertex of these
+/// three sites is anywhere on it — undetermined: `None`, and the topology
+/// decides. The same for `f1`, `f2` on one side (overlapping segments, which
+/// the input rules exclude).
+///
+/// Precision: exact (the answer is an input point).
+fn pss_common_endpoint(p: Point, f1: Point, f2: Point) -> Option<(Point, f64)> {
+    (orientation(p, f1, f2) == Orientation::CounterClockwise).then_some((p, 0.0))
+}
+
+/// `(p, S1, S2)` where `p` is an endpoint of exactly one of the segments: the
+/// segment `p → far` (which is `S1` when `incident_first`, else `S2`), and
+/// `other`, the segment not incident to `p`.
+///
+/// The centre lies on the perpendicular at `p`: `u = p + λ m` with `λ > 0`,
+/// where the unit normal `m` is chosen by the order. The circle touches the
+/// incident segment at `p`, and its touching point moves from `p` along the
+/// segment, which is counter-clockwise around `u` iff `u` is to the left of
+/// `p → far`. `S1` must come just after `p`, so for `incident_first`
+/// `m` = left normal of `p → far`; `S2` must come just before `p`, so
+/// otherwise `m` = right normal.
+///
+/// With `n` the unit normal of `other`'s line toward `p` and `h > 0` the
+/// distance of `p` from it, `u` must be on `p`'s side of that line (a point
+/// on the other side is nearer to the line than to `p`), at height
+/// `h + λ c`, `c = m·n`. `|u - p| = λ = h + λ c` gives `λ = h / (1 - c)`,
+/// valid when `c < 1`; `1 - c` is computed as `|m - n|² / 2` to keep it
+/// accurate when the lines are nearly parallel (`λ` then runs off to
+/// infinity, as it should). `p` on `other`'s line (exact test): `None` — it
+/// would touch at `p` itself, outside the open segment `other`.
+///
+/// Precision: relative to `p`; a few ulps of `λ`.
+fn pss_endpoint(
+    p: Point,
+    far: Point,
+    incident_first: bool,
+    other: (Point, Point),
+) -> Option<(Point, f64)> {
+    let d = unit(sub(far, p))?;
+    let m = if incident_first { rot_ccw(d) } else { scale(-1.0, rot_ccw(d)) };
+    let (n, h) = normal_toward(other.0, other.1, p)?;
+    let gap = sub(m, n);
+    let one_minus_c = 0.5 * dot(gap, gap);
+    let lambda = h / one_minus_c;
+    Some((add(p, scale(lambda, m)), lambda))
+}
+
+/// `(p, S1, S2)`, `p` an endpoint of neither: parabola ∩ angle bisector.
+///
+/// With `n_i` the unit normal of line `i` toward `p` and `h_i > 0` the
+/// distance of `p` from it, a point `p + w` is at height `h_i + n_i·w` above
+/// line `i`. The centre is on `p`'s side of both lines (a point on the far
+/// side of a line is nearer to it than to `p`), so the angle bisector is
+/// `(n1 - n2)·w = h2 - h1`: the line through `w0 = (h2 - h1) m / |m|²`
+/// (`m = n1 - n2`) with direction `e = rot_ccw(m) / |m|`. (Parallel lines:
+/// `m = 2 n1`, the mid-line of the strip; same-side parallel or coincident:
+/// `m = 0`, no vertex.) On it, `w = w0 + t e`, the parabola `|w| = h1 + n1·w`
+/// reads `(1 - k²) t² - 2 g k t + |w0|² - g² = 0` with `k = n1·e`,
+/// `g = h1 + n1·w0`, discriminant `Δ = g² - (1 - k²) |w0|²`.
+///
+/// Root: the lines meet at `O`; the circles tangent to both form a
+/// homothetic family from `O`, and `p` is the far point (from `O`) of the
+/// smaller solution circle and the near point of the larger. The near arc is
+/// the one between the tangent points, so there `p` sits between the
+/// touching directions `-n1`, `-n2`; those turn counter-clockwise iff
+/// `cross(n1, n2) > 0`. Working it through, `(p, S1, S2)` is the smaller
+/// circle when `cross(n1, n2) > 0` and the larger otherwise — and
+/// `e·(n1 + n2) = 2 cross(n1, n2)`, so `e` points away from `O` exactly in
+/// the first case: either way the wanted root is the smaller `t`,
+/// `t = (g k - √Δ) / (1 - k²) = (|w0|² - g²) / (g k + √Δ)`, the first form
+/// for `g k ≤ 0` and the second for `g k > 0` (no cancellation; the second
+/// never divides by zero, so the far root of nearly parallel lines is not
+/// computed when it is not wanted). In the strip, `k = 0` and
+/// `t = -√Δ`, the same rule. `Δ < 0`: the bisector misses the parabola.
+///
+/// `p` on a supporting line (exact test): `None`, it would be touched at `p`,
+/// outside that open segment. Collinear segments (exact test): `None`.
+///
+/// Precision: relative to `p`. `1 - k² = cross(n1, e)²` and
+/// `Δ = (g - s|w0|)(g + s|w0|)`, `s = |cross(n1, e)|`, avoid needless
+/// cancellation; the error is a few ulps of the extent times the condition,
+/// which grows like `1/√Δ` near a double root (`p` near a tangent point).
+fn pss(p: Point, s1: (Point, Point), s2: (Point, Point)) -> Option<(Point, f64)> {
+    if collinear_segments(s1, s2) {
+        return None;
+    }
+    let (n1, h1) = normal_toward(s1.0, s1.1, p)?;
+    let (n2, h2) = normal_toward(s2.0, s2.1, p)?;
+    let m = sub(n1, n2);
+    let mm = dot(m, m);
+    if mm == 0.0 {
+        return None;
+    }
+    let w0 = scale((h2 - h1) / mm, m);
+    let e = scale(1.0 / mm.sqrt(), rot_ccw(m));
+    let k = dot(n1, e);
+    let s = cross(n1, e).abs();
+    let g = h1 + dot(n1, w0);
+    let w0_len = norm(w0);
+    let disc = (g - s * w0_len) * (g + s * w0_len);
+    if disc < 0.0 {
+        return None;
+    }
+    let root = disc.sqrt();
+    let gk = g * k;
+    let t = if gk > 0.0 {
+        (w0_len - g) * (w0_len + g) / (gk + root)
+    } else {
+        (gk - root) / (s * s)
+    };
+    let w = add(w0, scale(t, e));
+    Some((add(p, w), norm(w)))
+}
+
+// ---------------------------------------------------------------------------
+// Segment, segment, segment.
+
+/// `(S1, S2, S3)`: a circle tangent to the three supporting lines.
+///
+/// With unit normals `n_i` (left of `a_i → b_i`) and `c_i = n_i·(a_i - o)`
+/// relative to the origin `o = a_1`, a circle with centre `o + w`, radius
+/// `r` and centre on side `σ_i = ±1` of line `i` solves the linear system
+/// `n_i·w - σ_i r = c_i` (Cramer's rule). Up to a common sign flip (which
+/// only flips `r`) there are four sign patterns: the in- and the three
+/// excentres of the triangle of the lines. The touching point on line `i` is
+/// in direction `-σ_i n_i` from the centre, so a pattern has the wanted order
+/// iff `σ_1 n_1, σ_2 n_2, σ_3 n_3` are counter-clockwise — known before
+/// solving. For a proper triangle one pattern (the incentre: the seed's
+/// "q_i, q_j, q_k positively oriented") or three (the excentres) pass; the
+/// seed leaves the choice among excentres to "the relative position of the
+/// segments", which is made precise here as: the candidate whose tangent
+/// points lie inside the open segments, or when none does, the one whose
+/// tangent points stray least beyond the segments' ends (sum of distances).
+/// For segments that do not cross, at most one excentre touches all three.
+///
+/// Two parallel lines (a strip) make two patterns singular (a zero
+/// determinant, skipped) and leave the two circles on the mid-line, one per
+/// order. Three parallel lines, or two segments on one line (exact test):
+/// `None` (no circle, or a whole family). Three lines through one point: the
+/// answer is that point with radius about 0.
+///
+/// Precision: relative to `a_1`; each solution costs a 3×3 determinant of
+/// unit-normal entries, a few ulps of the extent divided by the sine of the
+/// smallest angle between the lines that matter.
+fn sss(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point)) -> Option<(Point, f64)> {
+    let segs = [s1, s2, s3];
+    if collinear_segments(s1, s2) || collinear_segments(s2, s3) || collinear_segments(s3, s1) {
+        return None;
+    }
+    let o = s1.0;
+    let mut n = [Point::default(); 3];
+    let mut c = [0.0; 3];
+    for i in 0..3 {
+        n[i] = rot_ccw(unit(sub(segs[i].1, segs[i].0))?);
+        c[i] = dot(n[i], sub(segs[i].0, o));
+    }
+    const PATTERNS: [[f64; 3]; 4] =
+        [[1.0, 1.0, 1.0], [-1.0, 1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 1.0, -1.0]];
+    let mut best: Option<(f64, Point, f64)> = None;
+    for sigma in PATTERNS {
+        let dirs = [0, 1, 2].map(|i| scale(sigma[i], n[i]));
+        if orientation(dirs[0], dirs[1], dirs[2]) != Orientation::CounterClockwise {
+            continue;
+        }
+        let Some((w, r)) = solve_tangent_system(n, c, sigma) else { continue };
+        let centre = add(o, w);
+        let stray = stray_distance(&segs, centre);
+        if best.map_or(true, |(b, _, _)| stray < b) {
+            best = Some((stray, centre, r.abs()));
+        }
+    }
+    best.map(|(_, centre, r)| (centre, r))
+}
+
+/// Solves `n_i·w - σ_i r = c_i` (i = 0, 1, 2) by Cramer's rule; `None` when
+/// the determinant is 0 or the result is not finite.
+fn solve_tangent_system(n: [Point; 3], c: [f64; 3], sigma: [f64; 3]) -> Option<(Point, f64)> {
+    let col_s = [-sigma[0], -sigma[1], -sigma[2]];
+    let col_x = [n[0].x, n[1].x, n[2].x];
+    let col_y = [n[0].y, n[1].y, n[2].y];
+    let det = det3(col_x, col_y, col_s);
+    if det == 0.0 {
+        return None;
+    }
+    let x = det3(c, col_y, col_s) / det;
+    let y = det3(col_x, c, col_s) / det;
+    let r = det3(col_x, col_y, c) / det;
+    (x.is_finite() && y.is_finite() && r.is_finite()).then_some((Point::new(x, y), r))
+}
+
+/// The determinant of the 3×3 matrix with columns `a`, `b`, `c`.
+fn det3(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
+    a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+        + a[2] * (b[0] * c[1] - b[1] * c[0])
+}
+
+/// How far, in all, the feet of `centre` on the three supporting lines lie
+/// beyond the ends of their segments (0 when all are inside).
+fn stray_distance(segs: &[(Point, Point); 3], centre: Point) -> f64 {
+    segs.iter()
+        .map(|&(a, b)| {
+            let t = segment_parameter(a, b, centre);
+            let beyond = if t < 0.0 { -t } else { (t - 1.0).max(0.0) };
+            beyond * a.distance(b)
+        })
+        .sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use std::f64::consts::TAU;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    fn pt(x: f64, y: f64) -> Site {
+        Site::Point(p(x, y))
+    }
+
+    fn seg(ax: f64, ay: f64, bx: f64, by: f64) -> Site {
+        Site::Segment { a: p(ax, ay), b: p(bx, by) }
+    }
+
+    /// `vertex` of the three rotations, which must agree bit for bit.
+    fn solve(a: Site, b: Site, c: Site) -> Option<(Point, f64)> {
+        let first = vertex(&a, &b, &c);
+        let bits = |v: Option<(Point, f64)>| v.map(|(q, r)| [q.x, q.y, r].map(f64::to_bits));
+        assert_eq!(bits(first), bits(vertex(&b, &c, &a)), "rotation (b, c, a)");
+        assert_eq!(bits(first), bits(vertex(&c, &a, &b)), "rotation (c, a, b)");
+        first
+    }
+
+    #[track_caller]
+    fn assert_circle(got: Option<(Point, f64)>, cx: f64, cy: f64, r: f64) {
+        let (c, radius) = got.expect("a circle");
+        let tol = 1e-12 * (r + cx.abs().max(cy.abs()));
+        assert!(
+            (c.x - cx).abs() <= tol && (c.y - cy).abs() <= tol && (radius - r).abs() <= tol,
+            "got {c:?} r={radius}, want ({cx}, {cy}) r={r}"
+        );
+    }
+
+    /// The angle around `centre` at which `site` touches the circle. A
+    /// segment whose endpoint is a point site of the triple touches at that
+    /// endpoint, moved a hair along the segment (the limit order of the
+    /// module documentation).
+    fn touching_angle(site: &Site, others: &[Site], centre: Point) -> f64 {
+        let angle = |q: Point| (q.y - centre.y).atan2(q.x - centre.x);
+        match *site {
+            Site::Point(q) => angle(q),
+            Site::Segment { a, b } => {
+                for o in others {
+                    if let Site::Point(q) = *o {
+                        if let Some(far) = site.other_endpoint(q) {
+                            let turn = cross(sub(q, centre), sub(far, q)).signum();
+                            return angle(q) + 1e-7 * turn;
+                        }
+                    }
+                }
+                let t = segment_parameter(a, b, centre);
+                angle(Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)))
+            }
+        }
+    }
+
+    /// Whether the touching points of `sites` are counter-clockwise around
+    /// `centre`.
+    fn touching_order_is_ccw(sites: [Site; 3], centre: Point) -> bool {
+        let th = sites.map(|s| touching_angle(&s, &sites, centre));
+        let a1 = (th[1] - th[0]).rem_euclid(TAU);
+        let a2 = (th[2] - th[0]).rem_euclid(TAU);
+        0.0 < a1 && a1 < a2
+    }
+
+    // --- point, point, point ----------------------------------------------
+
+    #[test]
+    fn ppp_is_the_circumcircle_of_a_ccw_triple_only() {
+        // Right angle at the origin: centre the hypotenuse's midpoint (2, 1.5),
+        // radius half the hypotenuse, 5 / 2.
+        let (a, b, c) = (pt(0., 0.), pt(4., 0.), pt(0., 3.));
+        assert_circle(solve(a, b, c), 2.0, 1.5, 2.5);
+        assert_eq!(solve(b, a, c), None, "clockwise");
+        assert_eq!(solve(pt(0., 0.), pt(1., 1.), pt(2., 2.)), None, "collinear");
+    }
+
+    // --- point, point, segment --------------------------------------------
+
+    #[test]
+    fn pps_two_roots_are_told_apart_by_the_order() {
+        // Line y = 0. (3,1) and (-4,2) both lie on the circle centred (0,5)
+        // of radius 5 (9 + 16 = 16 + 9 = 25), tangent at (0,0). Angles seen
+        // from (0,5): (-4,2) at 217°, the tangent point at 270°, (3,1) at
+        // 307°: counter-clockwise order ((-4,2), S, (3,1)) = ((3,1), (-4,2), S).
+        // The other circle tangent at (x,0): (3-x)^2 + 1 = 2R and
+        // (4+x)^2 + 4 = 4R give x^2 - 20x = 0, so x = 20, R = (17^2 + 1)/2 = 145.
+        let s = seg(-30., 0., 30., 0.);
+        let (q1, q2) = (pt(3., 1.), pt(-4., 2.));
+        assert_circle(solve(q1, q2, s), 0.0, 5.0, 5.0);
+        assert_circle(solve(q2, q1, s), 20.0, 145.0, 145.0);
+        // The segment's direction does not matter.
+        assert_circle(solve(q1, q2, seg(30., 0., -30., 0.)), 0.0, 5.0, 5.0);
+        assert_circle(solve(q2, q1, seg(30., 0., -30., 0.)), 20.0, 145.0, 145.0);
+    }
+
+    #[test]
+    fn pps_points_parallel_to_the_line_have_one_circle() {
+        // (1,1), (-1,1) over y = 0: only the circle centred (0,1), radius 1
+        // (r^2 = 1 + (1-r)^2). From (0,1): (1,1) at 0°, (-1,1) at 180°, the
+        // tangent point at 270°: order ((1,1), (-1,1), S).
+        let s = seg(-5., 0., 5., 0.);
+        assert_circle(solve(pt(1., 1.), pt(-1., 1.), s), 0.0, 1.0, 1.0);
+        // The other order would need the second root, which is at infinity.
+        assert_eq!(solve(pt(-1., 1.), pt(1., 1.), s), None);
+    }
+
+    #[test]
+    fn pps_nearly_parallel_takes_the_rationalised_root() {
+        // (1,0.7) and (-1,0.7+1e-12) over y = 0 (as doubles). Exact, from
+        // 60-digit arithmetic on those doubles: tangent point
+        // x = 1.8213882782917e-13, radius 1.064285714285454. The textbook
+        // form -(hp a + D) / dy divides a cancelled difference, rounded to
+        // about 1e-16, by dy = 1e-12, and is off by about 1e-4.
+        let s = seg(-5., 0., 5., 0.);
+        let (c, r) = solve(pt(1., 0.7), pt(-1., 0.7 + 1e-12), s).expect("a circle");
+        assert!((c.x - 1.8213882782917e-13).abs() < 1e-14, "{c:?}");
+        assert!((r - 1.064285714285454).abs() < 1e-14 && (c.y - r).abs() < 1e-14, "{c:?} {r}");
+    }
+
+    #[test]
+    fn pps_degenerate_sides() {
+        let s = seg(-5., 0., 5., 0.);
+        // The line separates the points: no circle touches it and both.
+        assert_eq!(solve(pt(1., 1.), pt(-1., -1.), s), None);
+        assert_eq!(solve(pt(-1., -1.), pt(1., 1.), s), None);
+        // A point on the supporting line (outside the segment) is touched at
+        // itself, never inside the open segment.
+        assert_eq!(solve(pt(7., 0.), pt(-1., 1.), s), None);
+        assert_eq!(solve(pt(-1., 1.), pt(7., 0.), s), None);
+    }
+
+    #[test]
+    fn pps_with_an_endpoint_is_perpendicular_meets_bisector() {
+        // S from p = (0,0) to (1,0); the centre is on x = 0. With q = (1,-1):
+        // y^2 = 1 + (y+1)^2 gives y = -1, centre (0,-1), radius 1. From it q
+        // is at 0°, p at 90°, and S touches just clockwise of p (moving +x at
+        // the top of the circle): order (q, S, p) = (p, q, S).
+        let s = seg(0., 0., 1., 0.);
+        assert_circle(solve(pt(0., 0.), pt(1., -1.), s), 0.0, -1.0, 1.0);
+        assert_eq!(solve(pt(1., -1.), pt(0., 0.), s), None, "wrong order");
+        // The endpoint second: q' = (0,0) with S just after it. Centre (0,1)
+        // (x^2... y^2 = 1 + (y-1)^2 for p' = (-1,1) gives y = 1); from it p'
+        // is at 180°, q' at 270°, S at 270° + (moving +x at the bottom).
+        assert_circle(solve(pt(-1., 1.), pt(0., 0.), s), 0.0, 1.0, 1.0);
+        assert_eq!(solve(pt(0., 0.), pt(-1., 1.), s), None, "wrong order");
+        // The other point on the supporting line: bisector parallel to the
+        // perpendicular.
+        assert_eq!(solve(pt(0., 0.), pt(3., 0.), s), None);
+        assert_eq!(solve(pt(3., 0.), pt(0., 0.), s), None);
+        // Both points are endpoints: perpendiculars parallel.
+        assert_eq!(solve(pt(0., 0.), pt(1., 0.), s), None);
+        assert_eq!(solve(pt(1., 0.), pt(0., 0.), s), None);
+    }
+
+    // --- point, segment, segment ------------------------------------------
+
+    #[test]
+    fn pss_parabola_meets_angle_bisector() {
+        // Lines y = 0 and x = 0, p = (1,2): centres (s,s) with
+        // (s-1)^2 + (s-2)^2 = s^2, i.e. s^2 - 6s + 5 = 0, s = 1 or 5.
+        // From (5,5): S2 touches at 180°, p at 217°, S1 at 270°: (p, S1, S2).
+        // From (1,1): p at 90°, S2 at 180°, S1 at 270°: (p, S2, S1).
+        let (s1, s2) = (seg(0.5, 0., 10., 0.), seg(0., 0.5, 0., 10.));
+        let q = pt(1., 2.);
+        assert_circle(solve(q, s1, s2), 5.0, 5.0, 5.0);
+        assert_circle(solve(q, s2, s1), 1.0, 1.0, 1.0);
+        // Reversing a segment's direction changes nothing.
+        assert_circle(solve(q, seg(10., 0., 0.5, 0.), s2), 5.0, 5.0, 5.0);
+    }
+
+    #[test]
+    fn pss_strip_of_parallel_segments() {
+        // y = 0 and y = 2, p = (0, 1.5): centre (x, 1), radius 1, with
+        // x^2 + 0.25 = 1, x = ±√0.75. From (+√0.75, 1): S2 at 90°, p at about
+        // 150°, S1 at 270°: (p, S1, S2). The other root has the other order.
+        let (s1, s2) = (seg(-10., 0., 10., 0.), seg(10., 2., -10., 2.));
+        let q = pt(0., 1.5);
+        let x = 0.75f64.sqrt();
+        assert_circle(solve(q, s1, s2), x, 1.0, 1.0);
+        assert_circle(solve(q, s2, s1), -x, 1.0, 1.0);
+    }
+
+    #[test]
+    fn pss_degenerate_lines() {
+        let q = pt(0., 1.);
+        // Parallel, both below p: no point is equidistant from the two lines
+        // on p's side.
+        assert_eq!(solve(q, seg(-5., 0., 5., 0.), seg(-5., -2., 5., -2.)), None);
+        // Collinear segments: every circle touching the line does.
+        let (s1, s2) = (seg(-5., 0., -1., 0.), seg(1., 0., 5., 0.));
+        assert_eq!(solve(q, s1, s2), None);
+        assert_eq!(solve(q, s2, s1), None);
+        // p on the supporting line of S2, outside it.
+        assert_eq!(solve(pt(3., 0.), seg(0., 1., 0., 5.), seg(-5., 0., -1., 0.)), None);
+        assert_eq!(solve(pt(3., 0.), seg(-5., 0., -1., 0.), seg(0., 1., 0., 5.)), None);
+    }
+
+    #[test]
+    fn pss_with_p_an_endpoint_of_one_segment() {
+        // S1 from p = (0,0) along +x; the centre is on x = 0.
+        // Other line x = 4: from (0,λ), |λ| = 4 - 0 gives (0,4) or (0,-4),
+        // radius 4. From (0,4): p at 270°, S1 just after (moving +x at the
+        // bottom), S2 at 0°: (p, S1, S2). From (0,-4): S2 at 0°, S1 just
+        // before p (moving +x at the top is clockwise), p at 90°: (p, S2, S1).
+        let q = pt(0., 0.);
+        let s1 = seg(0., 0., 3., 0.);
+        let s2 = seg(4., -10., 4., 10.);
+        assert_circle(solve(q, s1, s2), 0.0, 4.0, 4.0);
+        assert_circle(solve(q, s2, s1), 0.0, -4.0, 4.0);
+        // Other line y = 4: only (0,2), radius 2 (|λ| = 4 - λ); below p the
+        // circle would have to reach y = 4 with centre below 0.
+        let s3 = seg(-5., 4., 5., 4.);
+        assert_circle(solve(q, s1, s3), 0.0, 2.0, 2.0);
+        assert_eq!(solve(q, s3, s1), None);
+        // Other line y = -4 lies on the other side: mirror image.
+        let s4 = seg(-5., -4., 5., -4.);
+        assert_circle(solve(q, s4, s1), 0.0, -2.0, 2.0);
+        assert_eq!(solve(q, s1, s4), None);
+        // p on the other segment's supporting line.
+        assert_eq!(solve(q, s1, seg(-1., 0., -5., 0.)), None);
+    }
+
+    #[test]
+    fn pss_at_a_common_endpoint() {
+        let q = pt(0., 0.);
+        let east = seg(0., 0., 2., 0.);
+        let north = seg(0., 0., 0., 2.);
+        let south = seg(0., -2., 0., 0.);
+        let west = seg(-2., 0., 0., 0.);
+        // 90°: around p, S_east owns -90°..45°, S_north 45°..180°, p the rest.
+        assert_eq!(solve(q, east, north), Some((p(0., 0.), 0.0)));
+        assert_eq!(solve(q, north, east), None);
+        // 270° (east to south counter-clockwise): the order is reversed.
+        assert_eq!(solve(q, east, south), None);
+        assert_eq!(solve(q, south, east), Some((p(0., 0.), 0.0)));
+        // 180°: collinear neighbours, the vertex is undetermined.
+        assert_eq!(solve(q, east, west), None);
+        assert_eq!(solve(q, west, east), None);
+    }
+
+    // --- segment, segment, segment ----------------------------------------
+
+    #[test]
+    fn sss_incentre_of_a_triangle() {
+        // The 3-4-5 triangle (0,0), (4,0), (0,3) as a closed polygon: incircle
+        // radius (3 + 4 - 5) / 2 = 1, centre (1,1), touching (1,0) at 270°,
+        // (1.6,1.8) at 53° and (0,1) at 180°: order (bottom, hypotenuse, left).
+        let bottom = seg(0., 0., 4., 0.);
+        let hyp = seg(4., 0., 0., 3.);
+        let left = seg(0., 3., 0., 0.);
+        assert_circle(solve(bottom, hyp, left), 1.0, 1.0, 1.0);
+        // The opposite order is an excentre; every excentre of a closed
+        // triangle touches two extensions, so the answer is a fallback, but it
+        // must have the asked order.
+        let (c, _) = solve(bottom, left, hyp).expect("an excentre");
+        assert!(touching_order_is_ccw([bottom, left, hyp], c));
+    }
+
+    #[test]
+    fn sss_excentre_is_chosen_by_the_segments() {
+        // Same lines; segments placed so that the excircle opposite (0,0)
+        // touches all three: radius area / (s - a) = 6 / (6 - 5) = 6, centre
+        // (6,6), touching (6,0) (on 5..8), (0,6) (on 5..8) and
+        // (6,6) - 6 (3,4)/5 = (2.4,1.2) (on the hypotenuse). Angles from
+        // (6,6): left 180°, hypotenuse 233°, bottom 270°. The other two
+        // excentres, (-2,2) r 2 and (3,-3) r 3, touch the x-axis at -2 and 3,
+        // outside 5..8.
+        let bottom = seg(5., 0., 8., 0.);
+        let hyp = seg(4., 0., 0., 3.);
+        let left = seg(0., 8., 0., 5.);
+        assert_circle(solve(bottom, left, hyp), 6.0, 6.0, 6.0);
+        // The incircle is the only circle of the other order (its feet miss
+        // these segments, which is not checked: see the module docs).
+        assert_circle(solve(bottom, hyp, left), 1.0, 1.0, 1.0);
+    }
+
+    #[test]
+    fn sss_strip_and_transversal() {
+        // y = 0, y = 2 and x = 3: centres (2,1) and (4,1), radius 1.
+        // From (4,1): S2 at 90°, S3 at 180°, S1 at 270°: (S1, S2, S3).
+        let (s1, s2, s3) = (seg(-10., 0., 10., 0.), seg(-10., 2., 10., 2.), seg(3., 0.5, 3., 1.5));
+        assert_circle(solve(s1, s2, s3), 4.0, 1.0, 1.0);
+        assert_circle(solve(s1, s3, s2), 2.0, 1.0, 1.0);
+    }
+
+    #[test]
+    fn sss_degenerate_lines() {
+        // Three parallel lines.
+        let (s1, s2, s3) = (seg(0., 0., 1., 0.), seg(0., 1., 1., 1.), seg(0., 3., 1., 3.));
+        assert_eq!(solve(s1, s2, s3), None);
+        assert_eq!(solve(s1, s3, s2), None);
+        // Two collinear segments and a third.
+        let (s1, s2, s3) = (seg(-5., 0., -1., 0.), seg(1., 0., 5., 0.), seg(0., 1., 0., 5.));
+        assert_eq!(solve(s1, s2, s3), None);
+        assert_eq!(solve(s2, s1, s3), None);
+    }
+
+    // --- robustness ---------------------------------------------------------
+
+    #[test]
+    fn far_from_the_origin_the_error_stays_relative_to_the_configuration() {
+        // The PPS and PSS examples above, moved by (1e9, -1e9): the answers
+        // move with them to within a few ulps of 1e9.
+        let (ox, oy) = (1e9, -1e9);
+        let s = seg(ox - 30., oy, ox + 30., oy);
+        let got = solve(pt(ox + 3., oy + 1.), pt(ox - 4., oy + 2.), s);
+        assert_circle(got, ox, oy + 5.0, 5.0);
+        let (s1, s2) = (seg(ox + 0.5, oy, ox + 10., oy), seg(ox, oy + 0.5, ox, oy + 10.));
+        assert_circle(solve(pt(ox + 1., oy + 2.), s1, s2), ox + 5., oy + 5., 5.0);
+        assert_circle(solve(pt(ox + 1., oy + 2.), s2, s1), ox + 1., oy + 1., 1.0);
+    }
+
+    #[test]
+    fn degenerate_and_non_finite_inputs_do_not_panic() {
+        let zero = seg(1., 1., 1., 1.);
+        let nan = pt(f64::NAN, 0.);
+        let inf = seg(0., 0., f64::INFINITY, 0.);
+        let ordinary = [pt(0., 0.), pt(5., 1.), seg(-3., -2., 3., -2.), seg(-3., 4., 3., 4.)];
+        for odd in [zero, nan, inf] {
+            for x in ordinary {
+                for y in ordinary {
+                    for (a, b, c) in [(odd, x, y), (x, odd, y), (x, y, odd)] {
+                        if let Some((c, r)) = vertex(&a, &b, &c) {
+                            assert!(c.is_finite() && r.is_finite() && r >= 0.0);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    // --- property test --------------------------------------------------------
+
+    /// What a slot of a generated configuration holds.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    enum Slot {
+        Point,
+        /// A segment tangent to the circle at the slot's angle.
+        Free,
+        /// A segment starting at the previous slot's point, along the
+        /// circle's counter-clockwise tangent (so it touches just after it).
+        After,
+        /// A segment ending at the next slot's point, along the clockwise
+        /// tangent (so it touches just before it).
+        Before,
+    }
+
+    /// Builds the three sites touching the circle `(centre, r)`
+    /// counter-clockwise at `angles`, with segments short enough not to meet
+    /// each other (a tangent at angle `θ` meets the one at `φ` at distance
+    /// `r |tan((θ - φ)/2)|` from its tangent point).
+    fn configuration(
+        centre: Point,
+        r: f64,
+        angles: [f64; 3],
+        slots: [Slot; 3],
+        lengths: [(f64, f64); 3],
+    ) -> [Site; 3] {
+        let on_circle = |th: f64| p(centre.x + r * th.cos(), centre.y + r * th.sin());
+        let tangent = |th: f64| p(-th.sin(), th.cos());
+        let reach = |th: f64| {
+            angles
+                .iter()
+                .filter(|&&o| (o - th).abs() > 1e-12)
+                .map(|&o| r * ((o - th) / 2.0).tan().abs())
+                .fold(f64::INFINITY, f64::min)
+        };
+        let mut sites = [Site::Point(centre); 3];
+        for i in 0..3 {
+            let (l0, l1) = lengths[i];
+            sites[i] = match slots[i] {
+                Slot::Point => Site::Point(on_circle(angles[i])),
+                Slot::Free => {
+                    let (t, d, k) = (on_circle(angles[i]), tangent(angles[i]), reach(angles[i]));
+                    Site::Segment { a: add(t, scale(-l0 * k, d)), b: add(t, scale(l1 * k, d)) }
+                }
+                Slot::After => {
+                    let th = angles[(i + 2) % 3];
+                    let q = on_circle(th);
+                    Site::Segment { a: q, b: add(q, scale(l1 * reach(th), tangent(th))) }
+                }
+                Slot::Before => {
+                    let th = angles[(i + 1) % 3];
+                    let q = on_circle(th);
+                    Site::Segment { a: add(q, scale(-l0 * reach(th), tangent(th))), b: q }
+                }
+            };
+        }
+        sites
+    }
+
+    fn slot_kinds() -> impl Strategy<Value = [Slot; 3]> {
+        let free = prop_oneof![Just(Slot::Point), Just(Slot::Free)];
+        ([free.clone(), free.clone(), free], 0usize..7).prop_map(|(mut slots, attach)| {
+            // attach 1..=3: slot attach-1 follows the point before it;
+            // 4..=6: slot attach-4 precedes the point after it.
+            match attach {
+                1..=3 => {
+                    let i = attach - 1;
+                    slots[i] = Slot::After;
+                    slots[(i + 2) % 3] = Slot::Point;
+                }
+                4..=6 => {
+                    let i = attach - 4;
+                    slots[i] = Slot::Before;
+                    slots[(i + 1) % 3] = Slot::Point;
+                }
+                _ => {}
+            }
+            slots
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(2000))]
+
+        #[test]
+        fn touching_circle_is_found_with_its_order(
+            cx in -1e3f64..1e3, cy in -1e3f64..1e3, r in 1e-2f64..1e3,
+            start in 0.0f64..TAU,
+            weights in [0.0f64..1.0, 0.0f64..1.0, 0.0f64..1.0],
+            slots in slot_kinds(),
+            lengths in [(0.05f64..0.9, 0.05f64..0.9), (0.05f64..0.9, 0.05f64..0.9),
+                        (0.05f64..0.9, 0.05f64..0.9)],
+        ) {
+            // Three angles at least 0.3 apart (also across 2π).
+            let total: f64 = weights.iter().sum::<f64>() + 1e-9;
+            let gap = |w: f64| 0.3 + (TAU - 0.9) * w / total;
+            let angles = [start, start + gap(weights[0]), start + gap(weights[0]) + gap(weights[1])];
+            let centre = p(cx, cy);
+            let sites = configuration(centre, r, angles, slots, lengths);
+            let [a, b, c] = sites;
+
+            let (got, radius) = solve(a, b, c).expect("the generating circle");
+            let scale = r + cx.abs().max(cy.abs());
+            let tol = 1e-9 * scale;
+            prop_assert!(got.distance(centre) <= tol && (radius - r).abs() <= tol,
+                "got {:?} r={} want {:?} r={}", got, radius, centre, r);
+            for s in &sites {
+                let d = s.distance(got);
+                prop_assert!((d - radius).abs() <= tol, "site {:?}: distance {} radius {}", s, d, radius);
+            }
+            prop_assert!(touching_order_is_ccw(sites, got));
+
+            // The other order: another circle of that order, or none — never
+            // the generating one.
+            if let Some((other, other_r)) = solve(b, a, c) {
+                prop_assert!(touching_order_is_ccw([b, a, c], other),
+                    "swapped order answered {:?} r={}", other, other_r);
+            }
+        }
+    }
+}

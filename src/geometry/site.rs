@@ -1,0 +1,219 @@
+#![allow(dead_code)] // used by segment insertion (issue 3), not wired yet
+//! The geometric view of a site of the separated diagram (DESIGN §1).
+//!
+//! Every input segment becomes three sites: its two endpoints (point sites)
+//! and the *open* segment between them. The open segment's own region is the
+//! set of points whose nearest point on the closed segment is an interior
+//! point, i.e. the strip between the perpendiculars at the two endpoints;
+//! beyond those perpendiculars the endpoints' regions take over. That is why
+//! the distance from a point to a segment site is the distance to the
+//! supporting line when the foot falls inside the segment and the distance to
+//! the nearer endpoint otherwise: outside the strip the segment site is never
+//! the nearest site, and this value keeps the distance continuous (it is the
+//! distance to the closed segment).
+//!
+//! Endpoints are recognised by exact coordinate equality: the builder stores
+//! each endpoint once and hands the same coordinates to the point site and to
+//! the segment site, so no tolerance is wanted (or safe) here.
+
+use super::point::Point;
+
+/// A site as geometry: a point, or an open segment whose endpoints are
+/// separate point sites.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Site {
+    /// A point site.
+    Point(Point),
+    /// The open segment from `a` to `b` (`a != b`). The direction `a → b`
+    /// carries no meaning for the diagram; solvers may use either.
+    Segment {
+        /// One endpoint.
+        a: Point,
+        /// The other endpoint.
+        b: Point,
+    },
+}
+
+impl Site {
+    /// `true` for a point site.
+    #[inline]
+    pub(crate) fn is_point(&self) -> bool {
+        matches!(self, Site::Point(_))
+    }
+
+    /// Whether `p` is an endpoint of this segment site (exact coordinate
+    /// equality; `-0.0 == 0.0`). Always `false` for a point site.
+    #[inline]
+    pub(crate) fn has_endpoint(&self, p: Point) -> bool {
+        match *self {
+            Site::Point(_) => false,
+            Site::Segment { a, b } => a == p || b == p,
+        }
+    }
+
+    /// The endpoint of this segment site that is not `p`, when `p` is one of
+    /// its endpoints; `None` otherwise (and for point sites).
+    #[inline]
+    pub(crate) fn other_endpoint(&self, p: Point) -> Option<Point> {
+        match *self {
+            Site::Segment { a, b } if a == p => Some(b),
+            Site::Segment { a, b } if b == p => Some(a),
+            _ => None,
+        }
+    }
+
+    /// The point of the (closed) site nearest to `p`: the point itself, or
+    /// for a segment the foot of the perpendicular from `p` when it falls
+    /// inside the segment, else the nearer endpoint.
+    ///
+    /// Precision: the foot is `a + τ (b - a)` with `τ` from
+    /// [`segment_parameter`]; a few ulps of the segment's extent.
+    pub(crate) fn nearest_point(&self, p: Point) -> Point {
+        match *self {
+            Site::Point(q) => q,
+            Site::Segment { a, b } => {
+                let t = segment_parameter(a, b, p);
+                if t > 0.0 && t < 1.0 {
+                    Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y))
+                } else if t >= 0.5 {
+                    b
+                } else {
+                    // t <= 0, or NaN for a zero-length segment.
+                    a
+                }
+            }
+        }
+    }
+
+    /// The squared distance from `p` to the site: to the point; for a
+    /// segment, to its supporting line when the foot of `p` lies inside the
+    /// open segment (the segment's Voronoi region lies between the
+    /// perpendiculars at its endpoints), else to the nearer endpoint.
+    ///
+    /// Precision: the line distance is `|cross(b - a, p - a)| / |b - a|`,
+    /// computed relative to `a`; its error is a few ulps of `|p - a|`, so it
+    /// is relatively accurate unless `p` is much closer to the line than to
+    /// `a`. Not exact: decisions must not compare two of these values.
+    pub(crate) fn distance_squared(&self, p: Point) -> f64 {
+        let d = self.distance(p);
+        d * d
+    }
+
+    /// The distance from `p` to the site (see [`Site::distance_squared`]).
+    ///
+    /// Precision: as [`Site::distance_squared`], without the squaring's
+    /// overflow or underflow.
+    pub(crate) fn distance(&self, p: Point) -> f64 {
+        match *self {
+            Site::Point(q) => p.distance(q),
+            Site::Segment { a, b } => {
+                let t = segment_parameter(a, b, p);
+                if t > 0.0 && t < 1.0 {
+                    let (ux, uy) = (b.x - a.x, b.y - a.y);
+                    let cross = ux * (p.y - a.y) - uy * (p.x - a.x);
+                    cross.abs() / ux.hypot(uy)
+                } else {
+                    p.distance(a).min(p.distance(b))
+                }
+            }
+        }
+    }
+}
+
+/// The parameter `τ` of the foot of `p` on the line `a → b`:
+/// the foot is `a + τ (b - a)`, inside the open segment exactly when
+/// `0 < τ < 1`. `NaN` when `a == b`.
+///
+/// Precision: `dot(p - a, b - a) / |b - a|^2`, a few ulps of
+/// `|p - a| / |b - a|` in absolute terms; the sign near `τ = 0` or `τ = 1` is
+/// not exact.
+#[inline]
+pub(crate) fn segment_parameter(a: Point, b: Point, p: Point) -> f64 {
+    let (ux, uy) = (b.x - a.x, b.y - a.y);
+    let dot = ux * (p.x - a.x) + uy * (p.y - a.y);
+    dot / (ux * ux + uy * uy)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    fn seg(ax: f64, ay: f64, bx: f64, by: f64) -> Site {
+        Site::Segment { a: p(ax, ay), b: p(bx, by) }
+    }
+
+    #[test]
+    fn distance_to_a_point_site() {
+        let s = Site::Point(p(1., 1.));
+        assert_eq!(s.distance_squared(p(4., 5.)), 25.0);
+        assert_eq!(s.nearest_point(p(4., 5.)), p(1., 1.));
+        assert!(s.is_point());
+        assert!(!s.has_endpoint(p(1., 1.)), "a point site has no endpoints");
+    }
+
+    #[test]
+    fn distance_to_a_segment_inside_its_strip_is_to_the_line() {
+        // Segment (0,0)-(4,0); (1,3) projects to (1,0), inside: distance 3.
+        let s = seg(0., 0., 4., 0.);
+        assert_eq!(s.distance_squared(p(1., 3.)), 9.0);
+        assert_eq!(s.nearest_point(p(1., 3.)), p(1., 0.));
+        // Slanted: segment (0,0)-(3,4) (length 5); (-4,3) is at distance
+        // |cross((3,4),(-4,3))| / 5 = |9 + 16| / 5 = 5, foot
+        // τ = dot((3,4),(-4,3)) / 25 = 0 -> on the perpendicular at a: the
+        // nearer endpoint (0,0), also at distance 5.
+        let s = seg(0., 0., 3., 4.);
+        assert_eq!(s.distance_squared(p(-4., 3.)), 25.0);
+        assert_eq!(s.nearest_point(p(-4., 3.)), p(0., 0.));
+        // (-1,7): τ = (-3 + 28) / 25 = 1 -> the endpoint b: distance^2 = 16 + 9.
+        assert_eq!(s.distance_squared(p(-1., 7.)), 25.0);
+        // (-2.5,4.5): τ = (-7.5 + 18) / 25 = 0.42, cross = 3*4.5 + 4*2.5 = 23.5.
+        let d = s.distance(p(-2.5, 4.5));
+        assert!((d - 23.5 / 5.0).abs() < 1e-15, "{d}");
+    }
+
+    #[test]
+    fn distance_beyond_an_endpoint_is_to_that_endpoint() {
+        let s = seg(0., 0., 4., 0.);
+        // Beyond b: (7,4) is 5 from (4,0); its distance to the line is 4.
+        assert_eq!(s.distance_squared(p(7., 4.)), 25.0);
+        assert_eq!(s.nearest_point(p(7., 4.)), p(4., 0.));
+        // Beyond a, on the supporting line.
+        assert_eq!(s.distance_squared(p(-2., 0.)), 4.0);
+        assert_eq!(s.nearest_point(p(-2., 0.)), p(0., 0.));
+    }
+
+    #[test]
+    fn endpoints_are_recognised_exactly() {
+        let s = seg(0., 0., 4., 0.);
+        assert!(s.has_endpoint(p(0., 0.)));
+        assert!(s.has_endpoint(p(-0., 0.)), "-0 is 0");
+        assert!(s.has_endpoint(p(4., 0.)));
+        assert!(!s.has_endpoint(p(4., f64::EPSILON)));
+        assert!(!s.has_endpoint(p(2., 0.)), "an interior point is not an endpoint");
+        assert_eq!(s.other_endpoint(p(0., 0.)), Some(p(4., 0.)));
+        assert_eq!(s.other_endpoint(p(4., 0.)), Some(p(0., 0.)));
+        assert_eq!(s.other_endpoint(p(1., 0.)), None);
+        assert_eq!(Site::Point(p(0., 0.)).other_endpoint(p(0., 0.)), None);
+    }
+
+    #[test]
+    fn segment_parameter_marks_the_open_segment() {
+        let (a, b) = (p(1., 1.), p(3., 5.));
+        assert_eq!(segment_parameter(a, b, a), 0.0);
+        assert_eq!(segment_parameter(a, b, b), 1.0);
+        assert_eq!(segment_parameter(a, b, p(2., 3.)), 0.5);
+        assert!(segment_parameter(a, b, p(0., 0.)) < 0.0);
+        assert!(segment_parameter(a, a, p(0., 0.)).is_nan());
+    }
+
+    #[test]
+    fn zero_length_segment_does_not_panic() {
+        let s = seg(1., 1., 1., 1.);
+        assert_eq!(s.nearest_point(p(4., 5.)), p(1., 1.));
+        assert_eq!(s.distance_squared(p(4., 5.)), 25.0);
+    }
+}
