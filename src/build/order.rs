@@ -7,6 +7,9 @@
 //! conflict regions). Random rounds of doubling size give the second, the
 //! Hilbert order inside each round gives the first. This plays the part of
 //! the bucket quadtree order of Sugihara's survey (seed 004 §3.2).
+//!
+//! Large inputs are keyed and sorted in two halves on two threads and then
+//! merged; the order is the same as on one thread.
 
 use crate::geometry::Point;
 
@@ -18,6 +21,12 @@ const MAX_LEVEL: u64 = 30;
 
 /// The order in which to insert `points` (indices into it). Deterministic.
 pub(crate) fn insertion_order(points: &[Point]) -> Vec<u32> {
+    insertion_order_threaded(points, PARALLEL_FROM)
+}
+
+/// [`insertion_order`], on two threads when there are `parallel_from`
+/// points or more; the answer does not depend on it.
+fn insertion_order_threaded(points: &[Point], parallel_from: usize) -> Vec<u32> {
     let n = points.len();
     if n == 0 {
         return Vec::new();
@@ -41,24 +50,63 @@ pub(crate) fn insertion_order(points: &[Point]) -> Vec<u32> {
         }
     };
 
-    let mut rng = SplitMix(0x5EED_5EED ^ n as u64);
-    let mut keyed: Vec<(u64, u32)> = points
-        .iter()
-        .enumerate()
-        .map(|(i, p)| {
-            // level k with probability 2^-(k+1): half the points in the last round
-            let level = (rng.next() | (1 << MAX_LEVEL)).trailing_zeros() as u64;
-            let round = MAX_LEVEL - level;
-            let mut h = hilbert_index(grid(p.x, lo.x), grid(p.y, lo.y));
-            if round % 2 == 1 {
-                // run the curve backwards so consecutive rounds meet end to start
-                h = (1u64 << (2 * GRID_BITS)) - 1 - h;
-            }
-            ((round << (2 * GRID_BITS)) | h, i as u32)
-        })
-        .collect();
-    keyed.sort_unstable();
-    keyed.into_iter().map(|(_, i)| i).collect()
+    let seed = 0x5EED_5EED ^ n as u64;
+    let key = |i: usize, p: &Point| -> (u64, u32) {
+        // Level k with probability 2^-(k+1): half the points in the last
+        // round. Drawn from the index alone, so any split of the work gives
+        // the same order.
+        let level = (SplitMix(seed ^ (i as u64).wrapping_mul(0xD1B5_4A32_D192_ED03)).next() | (1 << MAX_LEVEL))
+            .trailing_zeros() as u64;
+        let round = MAX_LEVEL - level;
+        let mut h = hilbert_index(grid(p.x, lo.x), grid(p.y, lo.y));
+        if round % 2 == 1 {
+            // run the curve backwards so consecutive rounds meet end to start
+            h = (1u64 << (2 * GRID_BITS)) - 1 - h;
+        }
+        ((round << (2 * GRID_BITS)) | h, i as u32)
+    };
+    let keyed_sorted = |start: usize, chunk: &[Point]| -> Vec<(u64, u32)> {
+        let mut keyed: Vec<(u64, u32)> = chunk.iter().enumerate().map(|(k, p)| key(start + k, p)).collect();
+        keyed.sort_unstable();
+        keyed
+    };
+    // Large inputs: key and sort the two halves on two threads, then merge
+    // (the construction itself is sequential; this is its one parallel step).
+    if n < parallel_from {
+        return keyed_sorted(0, points).into_iter().map(|(_, i)| i).collect();
+    }
+    let half = n / 2;
+    std::thread::scope(|scope| {
+        // No thread to be had (resource limits): one thread does it all.
+        let Ok(second) = std::thread::Builder::new().spawn_scoped(scope, || keyed_sorted(half, &points[half..])) else {
+            return keyed_sorted(0, points).into_iter().map(|(_, i)| i).collect();
+        };
+        let first = keyed_sorted(0, &points[..half]);
+        // A panic in the helper thread is a bug; pass it on.
+        let second = second.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
+        merge_indices(&first, &second)
+    })
+}
+
+/// Below this many points one thread orders faster than two.
+const PARALLEL_FROM: usize = 100_000;
+
+/// The indices of two sorted runs of `(key, index)`, merged by key.
+fn merge_indices(a: &[(u64, u32)], b: &[(u64, u32)]) -> Vec<u32> {
+    let mut out = Vec::with_capacity(a.len() + b.len());
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() && j < b.len() {
+        if b[j] < a[i] {
+            out.push(b[j].1);
+            j += 1;
+        } else {
+            out.push(a[i].1);
+            i += 1;
+        }
+    }
+    out.extend(a[i..].iter().map(|&(_, k)| k));
+    out.extend(b[j..].iter().map(|&(_, k)| k));
+    out
 }
 
 /// Position of grid cell `(x, y)` along the Hilbert curve of side `2^GRID_BITS`.
@@ -122,6 +170,26 @@ mod tests {
             let ((_, (x0, y0)), (_, (x1, y1))) = (w[0], w[1]);
             assert_eq!(x0.abs_diff(x1) + y0.abs_diff(y1), 1);
         }
+    }
+
+    #[test]
+    fn two_threads_give_the_single_thread_order() {
+        let n = 5001;
+        let pts: Vec<Point> = (0..n).map(|i| Point::new((i * 7919 % 10007) as f64, (i * 104729 % 9973) as f64)).collect();
+        let one = insertion_order_threaded(&pts, usize::MAX);
+        assert_eq!(insertion_order_threaded(&pts, 2), one);
+        assert_eq!(insertion_order_threaded(&pts[..4], 2), insertion_order_threaded(&pts[..4], usize::MAX));
+        let mut sorted = one;
+        sorted.sort_unstable();
+        assert_eq!(sorted, (0..n as u32).collect::<Vec<u32>>());
+    }
+
+    #[test]
+    fn merge_keeps_key_order() {
+        let a = [(1u64, 10u32), (4, 11), (9, 12)];
+        let b = [(2u64, 20u32), (3, 21), (10, 22)];
+        assert_eq!(merge_indices(&a, &b), vec![10, 20, 21, 11, 12, 22]);
+        assert_eq!(merge_indices(&[], &b), vec![20, 21, 22]);
     }
 
     #[test]

@@ -112,6 +112,10 @@ pub unsafe extern "C" fn segvoronoi_builder_point_count(builder: *const segvoron
 ///
 /// Ownership: on success the caller owns `*out` and frees it with
 /// `segvoronoi_diagram_free`. On error `*out` is set to NULL.
+///
+/// Thread safety: one builder must not be used from two threads at once.
+/// For 100,000 points or more the call sorts its insertion order on a second,
+/// short-lived thread of its own, joined before it returns.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_builder_build(
     builder: *mut segvoronoi_builder,
