@@ -25,6 +25,8 @@ use crate::geometry::{fault, Point};
 
 pub(crate) use super::order::insertion_order;
 
+mod segments;
+
 /// The id of the point at infinity inside the construction.
 pub(crate) const INFINITE: SiteId = SiteId(0);
 
@@ -57,6 +59,10 @@ pub(crate) struct PointDiagram {
     tree: Vec<VertexId>,
     cuts: Vec<(HalfEdgeId, SiteId, SiteId)>,
     new_vertices: Vec<VertexId>,
+    /// Site ids from here on are open segments (`u32::MAX`: none yet).
+    first_segment: u32,
+    /// Per segment site (id minus `first_segment`): its two endpoint sites.
+    segment_ends: Vec<[SiteId; 2]>,
 }
 
 impl PointDiagram {
@@ -75,6 +81,8 @@ impl PointDiagram {
             tree: Vec::new(),
             cuts: Vec::new(),
             new_vertices: Vec::new(),
+            first_segment: u32::MAX,
+            segment_ends: Vec::new(),
         }
         .with_marks()
     }
@@ -153,6 +161,10 @@ impl PointDiagram {
     /// Computes the position and clearance of `v` from its three sites.
     fn place_vertex(&mut self, v: VertexId) {
         let [a, b, c] = self.store.sites_of(v);
+        if self.has_segment([a, b, c]) {
+            self.place_segment_vertex(v);
+            return;
+        }
         let (pos, clearance) = match infinite_rotation([a, b, c]) {
             Some((x, y)) => {
                 let dir = left_normal(self.sites[x.index()], self.sites[y.index()]);
@@ -168,6 +180,11 @@ impl PointDiagram {
                 })
             }
         };
+        self.set_position(v, pos, clearance);
+    }
+
+    /// Stores a computed position (perturbed in the fault-injection build).
+    fn set_position(&mut self, v: VertexId, pos: Point, clearance: f64) {
         self.store.position[v.index()] = if fault::active() {
             Point::new(fault::perturb(pos.x), fault::perturb(pos.y))
         } else {

@@ -1,0 +1,525 @@
+//! Topology-oriented insertion of open segments (seed 000 algorithm 3,
+//! DESIGN §2.2), into a diagram that already holds every point site.
+//!
+//! Inserting the open segment `e` between the point sites `a` and `b`
+//! deletes a tree `T` of the current diagram and puts the cell of `e` in its
+//! place. Kept exactly, by integer bookkeeping:
+//! - P3: `T` is a tree (as P1 for points);
+//! - P4: `T` contains a path from `R(a)`'s boundary to `R(b)`'s: it is found
+//!   first, by a walk that keeps sites left of `e` on its left and sites
+//!   right of `e` on its right (left-degree of seed 000), backtracking to
+//!   its least certain decision (smallest `|L|`) when it is stuck;
+//! - P5: `R(a)` and `R(b)` each lose exactly one connected piece of their
+//!   boundary — no step of the walk or of the growth may reach a vertex whose
+//!   third cell is `R(a)`, or `R(b)` once touched. Other cells may lose
+//!   several pieces (seed 000 figure 2: unlike points, a segment's cell can
+//!   wrap around a site's cell), and P3 keeps every cell from losing all of
+//!   its boundary.
+//!
+//! The numbers only choose: the walk's direction, and which neighbours the
+//! tree grows into (those whose circle the segment enters, seed criteria 1
+//! and 2.3, never beyond a vertex outside the strip between the
+//! perpendiculars at `a` and `b`, criterion 2.2). Then, as for points, every
+//! edge leaving `T` gets a new vertex and the new vertices bound `e`'s cell;
+//! the new edges shared with `R(a)` and `R(b)` are the separators.
+//!
+//! A vertex at infinity `(x, y, ∞)` conflicts with `e` exactly when
+//! `{x, y} = {a, b}` (then `e` is a convex-hull edge): decided without
+//! numbers, so the symbolic point at infinity needs no far-away sites.
+//!
+//! Not handled yet (issue 3): inputs whose sites are all collinear (the
+//! ladder diagram has two hull sides), which still give a valid but wrong
+//! structure; shared endpoints are untested.
+#![allow(dead_code)] // reached from Builder once segment input is wired (issue 3)
+
+use std::cmp::Reverse;
+use std::collections::{BinaryHeap, HashSet};
+
+use super::{infinite_rotation, PointDiagram, INFINITE};
+use crate::diagram::{HalfEdgeId, SiteId, VertexId, NONE};
+use crate::geometry::segment_solvers;
+use crate::geometry::site::Site;
+use crate::geometry::solvers::left_normal;
+use crate::geometry::{fault, Point};
+
+/// The walk of P4 in progress: its vertices and the half-edges already tried.
+#[derive(Default)]
+struct PathWalk {
+    vertices: Vec<VertexId>,
+    /// The half-edge by which each vertex after the first was entered.
+    entered_by: Vec<HalfEdgeId>,
+    on_walk: HashSet<VertexId>,
+    tried: HashSet<HalfEdgeId>,
+    /// Alternatives not taken: (certainty, position on the path, vertex
+    /// there, half-edge to take instead), least certain first.
+    alternatives: BinaryHeap<Reverse<(u64, usize, VertexId, HalfEdgeId)>>,
+}
+
+impl PointDiagram {
+    /// Whether any of the sites is an open segment.
+    #[inline]
+    pub(super) fn has_segment(&self, sites: [SiteId; 3]) -> bool {
+        sites.iter().any(|&s| self.is_segment(s))
+    }
+
+    #[inline]
+    fn is_segment(&self, s: SiteId) -> bool {
+        s.0 >= self.first_segment
+    }
+
+    /// The geometry of a real site (not the point at infinity).
+    fn site_geometry(&self, s: SiteId) -> Site {
+        if self.is_segment(s) {
+            let [a, b] = self.segment_ends[(s.0 - self.first_segment) as usize];
+            Site::Segment { a: self.sites[a.index()], b: self.sites[b.index()] }
+        } else {
+            Site::Point(self.sites[s.index()])
+        }
+    }
+
+    /// One point of a real site: the point, or a segment's midpoint.
+    fn representative(&self, s: SiteId) -> Point {
+        match self.site_geometry(s) {
+            Site::Point(p) => p,
+            Site::Segment { a, b } => Point::new(0.5 * a.x + 0.5 * b.x, 0.5 * a.y + 0.5 * b.y),
+        }
+    }
+
+    /// Adds the open segment between the point sites `a` and `b`; every
+    /// point must be in already.
+    pub(crate) fn insert_segment(&mut self, a: SiteId, b: SiteId) -> SiteId {
+        let e = self.add_segment_site(a, b);
+        self.fresh_epoch();
+        self.find_segment_path(a, b);
+        self.grow_segment_tree(a, b);
+        self.replace_tree(e);
+        e
+    }
+
+    fn add_segment_site(&mut self, a: SiteId, b: SiteId) -> SiteId {
+        let s = SiteId::from_index(self.sites.len());
+        if self.first_segment == u32::MAX {
+            self.first_segment = s.0;
+        }
+        self.segment_ends.push([a, b]);
+        self.sites.push(Point::new(f64::NAN, f64::NAN));
+        self.store.cell_edge.push(NONE);
+        self.cell_mark.push(0);
+        s
+    }
+
+    /// How far inside the circle of the finite vertex `v` the open segment
+    /// `ab` reaches (negative: it enters), perturbed in fault injection.
+    ///
+    /// When `a` is one of `v`'s sites, `a` lies on the circle and the
+    /// distance test would compare two equal numbers; the segment enters the
+    /// circle exactly when it leaves `a` towards the centre, so the sign of
+    /// `(b - a) · (c - a)` decides, with no cancellation (likewise for `b`).
+    fn segment_depth(&self, v: VertexId, a: SiteId, b: SiteId) -> f64 {
+        let sites = self.store.sites_of(v);
+        let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
+        let c = self.store.position[v.index()];
+        let entering = |from: Point, to: Point| {
+            let (dx, dy) = (to.x - from.x, to.y - from.y);
+            -((c.x - from.x) * dx + (c.y - from.y) * dy) / dx.hypot(dy)
+        };
+        let depth = if sites.contains(&a) {
+            entering(pa, pb)
+        } else if sites.contains(&b) {
+            entering(pb, pa)
+        } else {
+            Site::Segment { a: pa, b: pb }.distance(c) - self.store.clearance[v.index()]
+        };
+        let depth = fault::perturb(depth);
+        if depth.is_nan() {
+            f64::INFINITY
+        } else {
+            depth
+        }
+    }
+
+    /// Whether the segment `ab` conflicts with `v` (see the module doc for
+    /// vertices at infinity).
+    fn segment_conflict(&self, v: VertexId, a: SiteId, b: SiteId) -> bool {
+        match infinite_rotation(self.store.sites_of(v)) {
+            Some((x, y)) => (x == a && y == b) || (x == b && y == a),
+            None => self.segment_depth(v, a, b) < 0.0,
+        }
+    }
+
+    /// Seed 000's left-degree of site `g` seen from vertex `v` against the
+    /// directed line `a → b`: positive when the projection of `v` on `g` is
+    /// left of it. Only its sign and size guide the walk.
+    fn left_degree(&self, v: VertexId, g: SiteId, a: Point, b: Point) -> f64 {
+        if g == INFINITE {
+            return 0.0;
+        }
+        let q = if self.store.is_at_infinity(v) {
+            self.representative(g)
+        } else {
+            self.site_geometry(g).nearest_point(self.store.position[v.index()])
+        };
+        fault::perturb((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x))
+    }
+
+    /// Whether `v` may join the walk: not at infinity unless it conflicts.
+    fn walkable(&self, v: VertexId, a: SiteId, b: SiteId) -> bool {
+        !self.store.is_at_infinity(v) || self.segment_conflict(v, a, b)
+    }
+
+    /// Finds the path of P4 and makes it the start of the tree (marked with
+    /// the current epoch). Returns `false` when the walk found no
+    /// path (only possible when the numbers lie badly); the tree is then the
+    /// walk's first vertex alone.
+    fn find_segment_path(&mut self, a: SiteId, b: SiteId) -> bool {
+        let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
+        let start = self.path_start(a, b);
+        let mut walk = PathWalk::default();
+        self.walk_push(&mut walk, start, None);
+        let found = loop {
+            let v = *walk.vertices.last().expect("the walk always holds its start");
+            if self.store.sites_of(v).contains(&b) {
+                break true;
+            }
+            let next = self.walk_step(&mut walk, v, a, b, pa, pb).or_else(|| self.walk_backtrack(&mut walk, a, b));
+            match next {
+                Some(h) => {
+                    walk.tried.insert(h);
+                    let w = self.store.target(h);
+                    self.walk_push(&mut walk, w, Some(h));
+                }
+                None => break false,
+            }
+        };
+        if !found {
+            walk.vertices.truncate(1);
+        }
+        let epoch = self.epoch;
+        self.tree.clear();
+        for &v in &walk.vertices {
+            self.vertex_mark[v.index()] = epoch;
+            self.tree.push(v);
+        }
+        found
+    }
+
+    /// The walk's first vertex: on `R(a)`'s boundary, one with `b` among its
+    /// sites if there is one, else the one the segment enters deepest.
+    fn path_start(&self, a: SiteId, b: SiteId) -> VertexId {
+        let mut best: Option<(VertexId, f64)> = None;
+        for h in self.store.cell_boundary(a) {
+            let v = h.origin();
+            let key = if self.store.sites_of(v).contains(&b) && self.walkable(v, a, b) {
+                f64::NEG_INFINITY
+            } else if self.store.is_at_infinity(v) {
+                f64::INFINITY
+            } else {
+                self.segment_depth(v, a, b)
+            };
+            if best.is_none_or(|(_, k)| key < k) {
+                best = Some((v, key));
+            }
+        }
+        best.map(|(v, _)| v).expect("a point site among others has a cell boundary")
+    }
+
+    fn walk_push(&self, walk: &mut PathWalk, v: VertexId, entered_by: Option<HalfEdgeId>) {
+        walk.vertices.push(v);
+        if let Some(h) = entered_by {
+            walk.entered_by.push(h);
+        }
+        walk.on_walk.insert(v);
+    }
+
+    /// Shortens the walk to its first `len` vertices.
+    fn walk_truncate(&self, walk: &mut PathWalk, len: usize) {
+        while walk.vertices.len() > len {
+            let v = walk.vertices.pop().expect("longer than len");
+            walk.entered_by.pop();
+            walk.on_walk.remove(&v);
+        }
+    }
+
+    /// Whether leaving the walk's last vertex by `h` keeps the walk a path
+    /// with no chord (P3) and `R(a)` touched in one piece (P5): the vertex
+    /// reached is new, none of its other edges leads back to the walk, its
+    /// third cell is not `R(a)`, and it is not at infinity unless it
+    /// conflicts.
+    fn walk_allows(&self, walk: &PathWalk, h: HalfEdgeId, a: SiteId, b: SiteId) -> bool {
+        if walk.tried.contains(&h) {
+            return false;
+        }
+        let back = self.store.twin(h);
+        let w = back.origin();
+        let chord = |x: HalfEdgeId| walk.on_walk.contains(&self.store.target(x));
+        !walk.on_walk.contains(&w)
+            && !chord(back.rotate(1))
+            && !chord(back.rotate(2))
+            && self.store.opposite(back) != a
+            && self.walkable(w, a, b)
+    }
+
+    /// The next half-edge to follow from `v`, by the left/right rule, with
+    /// the other choice kept for backtracking; `None` when neither is open.
+    fn walk_step(
+        &self,
+        walk: &mut PathWalk,
+        v: VertexId,
+        a: SiteId,
+        b: SiteId,
+        pa: Point,
+        pb: Point,
+    ) -> Option<HalfEdgeId> {
+        let pos = walk.vertices.len() - 1;
+        let (preferred, other, certainty) = match walk.entered_by.last() {
+            Some(&h) => {
+                // Arrived by h; t leaves v back. The cell ahead, N, should
+                // stay on the side of the walk it is on of the segment.
+                let t = self.store.twin(h);
+                let ahead = self.store.opposite(t);
+                let l = self.left_degree(v, ahead, pa, pb);
+                let (keep_left, keep_right) = (t.rotate(1), t.rotate(2));
+                if l > 0.0 {
+                    (keep_left, keep_right, l.abs())
+                } else {
+                    (keep_right, keep_left, l.abs())
+                }
+            }
+            None => {
+                // At the start every direction is open: deepest conflict first.
+                let mut options: Vec<(f64, HalfEdgeId)> = (0..3)
+                    .map(|k| v.half_edge(k))
+                    .map(|h| {
+                        let w = self.store.target(h);
+                        let depth =
+                            if self.store.is_at_infinity(w) { f64::INFINITY } else { self.segment_depth(w, a, b) };
+                        (depth, h)
+                    })
+                    .collect();
+                options.sort_by(|x, y| x.0.total_cmp(&y.0));
+                for &(depth, h) in &options[1..] {
+                    if self.walk_allows(walk, h, a, b) {
+                        walk.alternatives.push(Reverse((certainty_key(depth), pos, v, h)));
+                    }
+                }
+                return self.walk_allows(walk, options[0].1, a, b).then_some(options[0].1);
+            }
+        };
+        // Only vertices the segment conflicts with belong on the path; the
+        // left/right rule decides between two of them, and a vertex out of
+        // conflict is taken only when nothing else is left (backtracking).
+        let conflicts = |h: HalfEdgeId| self.segment_conflict(self.store.target(h), a, b);
+        let mut options: Vec<(bool, HalfEdgeId)> = [preferred, other]
+            .into_iter()
+            .filter(|&h| self.walk_allows(walk, h, a, b))
+            .map(|h| (!conflicts(h), h))
+            .collect();
+        options.sort_by_key(|&(out_of_conflict, _)| out_of_conflict); // stable: rule order among equals
+        let (_, chosen) = *options.first()?;
+        for &(out_of_conflict, h) in &options[1..] {
+            let c = if out_of_conflict { f64::INFINITY } else { certainty };
+            walk.alternatives.push(Reverse((certainty_key(c), pos, v, h)));
+        }
+        Some(chosen)
+    }
+
+    /// Goes back to the least certain open alternative; `None` when none is
+    /// left.
+    fn walk_backtrack(&self, walk: &mut PathWalk, a: SiteId, b: SiteId) -> Option<HalfEdgeId> {
+        while let Some(Reverse((_, pos, v, h))) = walk.alternatives.pop() {
+            if pos >= walk.vertices.len() || walk.vertices[pos] != v {
+                continue;
+            }
+            self.walk_truncate(walk, pos + 1);
+            if self.walk_allows(walk, h, a, b) {
+                return Some(h);
+            }
+        }
+        None
+    }
+
+    /// Grows the tree from the path: P3 as for points, P5, the segment
+    /// entering the circle (criteria 1, 2.3), never beyond a deleted vertex
+    /// outside the strip (criterion 2.2).
+    fn grow_segment_tree(&mut self, a: SiteId, b: SiteId) {
+        let epoch = self.epoch;
+        let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
+        let mut i = 0;
+        while i < self.tree.len() {
+            let u = self.tree[i];
+            i += 1;
+            if !self.store.is_at_infinity(u) && !in_strip(self.store.position[u.index()], pa, pb) {
+                continue;
+            }
+            for slot in 0..3 {
+                let back = self.store.twin(u.half_edge(slot));
+                let w = back.origin();
+                if self.vertex_mark[w.index()] == epoch {
+                    continue;
+                }
+                let in_tree = |h: HalfEdgeId| self.vertex_mark[self.store.target(h).index()] == epoch;
+                if in_tree(back.rotate(1)) || in_tree(back.rotate(2)) {
+                    continue;
+                }
+                // P5: R(a) and R(b), touched by the path, must not be touched again.
+                let third = self.store.opposite(back);
+                if third == a || third == b {
+                    continue;
+                }
+                if !self.segment_conflict(w, a, b) {
+                    continue;
+                }
+                self.vertex_mark[w.index()] = epoch;
+                self.tree.push(w);
+            }
+        }
+    }
+
+    /// Position and clearance of a vertex with a segment among its sites.
+    pub(super) fn place_segment_vertex(&mut self, v: VertexId) {
+        let sites = self.store.sites_of(v);
+        if let Some((x, y)) = infinite_rotation(sites) {
+            let (p, q) = self.hull_pair(x, y);
+            self.set_position(v, left_normal(p, q).unwrap_or_default(), f64::INFINITY);
+            return;
+        }
+        let [ga, gb, gc] = sites.map(|s| self.site_geometry(s));
+        let (pos, clearance) = segment_solvers::vertex(&ga, &gb, &gc).unwrap_or_else(|| {
+            // No circle: keep the topology, place the vertex among its sites.
+            let r = sites.map(|s| self.representative(s));
+            let g = Point::new((r[0].x + r[1].x + r[2].x) / 3.0, (r[0].y + r[1].y + r[2].y) / 3.0);
+            (g, ga.distance(g))
+        });
+        self.set_position(v, pos, clearance);
+    }
+
+    /// For consecutive hull sites `x → y` (the outside on the left), two
+    /// points whose left normal is the direction of the edge between them at
+    /// infinity: a segment stands for itself by its endpoints.
+    fn hull_pair(&self, x: SiteId, y: SiteId) -> (Point, Point) {
+        let (gx, gy) = (self.site_geometry(x), self.site_geometry(y));
+        match (gx, gy) {
+            (Site::Segment { .. }, Site::Point(q)) => (gx.other_endpoint(q).unwrap_or(self.representative(x)), q),
+            (Site::Point(p), Site::Segment { .. }) => (p, gy.other_endpoint(p).unwrap_or(self.representative(y))),
+            _ => (self.representative(x), self.representative(y)),
+        }
+    }
+}
+
+/// Whether `p` lies in the closed strip between the perpendiculars to `ab`
+/// at `a` and at `b`.
+fn in_strip(p: Point, a: Point, b: Point) -> bool {
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    let t = (p.x - a.x) * dx + (p.y - a.y) * dy;
+    let t = fault::perturb(t);
+    (0.0..=dx * dx + dy * dy).contains(&t)
+}
+
+/// A heap key for a non-negative certainty (NaN last): the bits of a
+/// non-negative double order like the double.
+fn certainty_key(c: f64) -> u64 {
+    if c.is_nan() {
+        u64::MAX
+    } else {
+        c.abs().to_bits()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Builds the point diagram of `points` (not all collinear), then
+    /// inserts `segments` (pairs of indices into `points`).
+    fn build(points: &[Point], segments: &[[usize; 2]]) -> PointDiagram {
+        let mut d = PointDiagram::new(points.len() + segments.len());
+        let ids = d.start_collinear(&points[..2]);
+        let mut all = ids.clone();
+        let mut last = ids[1];
+        for &p in &points[2..] {
+            match d.insert(p, last) {
+                super::super::Inserted::New(s) => {
+                    all.push(s);
+                    last = s;
+                }
+                super::super::Inserted::Duplicate(_) => panic!("test points must be distinct"),
+            }
+        }
+        for &[i, j] in segments {
+            d.insert_segment(all[i], all[j]);
+        }
+        d
+    }
+
+    /// Every finite vertex is equidistant from its three sites and no site
+    /// is closer (brute force), within `tol`.
+    fn check_geometry(d: &PointDiagram, tol: f64) {
+        let real: Vec<SiteId> = (1..d.sites.len()).map(SiteId::from_index).collect();
+        for vi in 0..d.store.vertex_count() {
+            let v = VertexId::from_index(vi);
+            let sites = d.store.sites_of(v);
+            if sites.contains(&INFINITE) || sites[0].0 == NONE {
+                continue;
+            }
+            let pos = d.store.position[vi];
+            let r = d.store.clearance[vi];
+            for s in sites {
+                let dist = d.site_geometry(s).distance(pos);
+                assert!((dist - r).abs() <= tol, "vertex {vi} {sites:?} at {pos:?}: site {s:?} at {dist}, clearance {r}");
+            }
+            for &s in &real {
+                let dist = d.site_geometry(s).distance(pos);
+                assert!(dist >= r - tol, "vertex {vi} {sites:?}: site {s:?} inside ({dist} < {r})");
+            }
+        }
+    }
+
+    fn validate(d: &PointDiagram) {
+        d.store.validate().unwrap_or_else(|e| panic!("{e}"));
+    }
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    #[test]
+    fn one_segment_among_points() {
+        let pts = [p(0.0, 0.0), p(4.0, 0.3), p(2.0, 3.0), p(1.5, -2.5), p(5.0, 4.0), p(-1.0, 3.5), p(2.2, 0.9)];
+        let d = build(&pts, &[[0, 6]]);
+        validate(&d);
+        check_geometry(&d, 1e-9);
+    }
+
+    /// Points on a jittered grid; in some cells two points joined by a short
+    /// segment that stays inside its cell, so no two segments meet.
+    fn jittered(side: usize, seed: u64) -> (Vec<Point>, Vec<[usize; 2]>) {
+        let mut rng = crate::build::order::SplitMix(seed);
+        let mut unit = move || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
+        let (mut pts, mut segs) = (Vec::new(), Vec::new());
+        for i in 0..side {
+            for j in 0..side {
+                let (x, y) = (i as f64, j as f64);
+                let a = p(x + 0.1 + 0.8 * unit(), y + 0.1 + 0.8 * unit());
+                pts.push(a);
+                if unit() < 0.5 {
+                    let b = p(x + 0.1 + 0.8 * unit(), y + 0.1 + 0.8 * unit());
+                    if b != a {
+                        pts.push(b);
+                        segs.push([pts.len() - 2, pts.len() - 1]);
+                    }
+                }
+            }
+        }
+        (pts, segs)
+    }
+
+    #[test]
+    fn random_disjoint_segments() {
+        for seed in 0..40 {
+            let (pts, segs) = jittered(6 + (seed as usize % 10), seed);
+            let d = build(&pts, &segs);
+            validate(&d);
+            check_geometry(&d, 1e-9);
+        }
+    }
+}
