@@ -23,10 +23,10 @@ fn main() -> Result<(), segvoronoi::Error> {
     }
     // --- beyond the README ---
     for cell in diagram.cells() {
-        let p = cell.point();
+        let site = cell.geometry();
         let neighbours: Vec<String> = cell.neighbors().map(|s| s.to_string()).collect();
         let kind = if cell.is_unbounded() { "unbounded" } else { "bounded" };
-        println!("cell of site {} at ({}, {}): {kind}, neighbours [{}]", cell.site(), p.x, p.y, neighbours.join(", "));
+        println!("cell of site {} ({site:?}): {kind}, neighbours [{}]", cell.site(), neighbours.join(", "));
     }
     let stats = diagram.stats();
     println!(

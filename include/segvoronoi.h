@@ -28,6 +28,13 @@
 // sections (positive-length edges; vertices merged across zero-length edges).
 #define SEGVORONOI_TOPOLOGY_VORONOI_PAIRS 1
 
+// `segvoronoi_site.kind` of a point site.
+#define SEGVORONOI_SITE_POINT 0
+
+// `segvoronoi_site.kind` of an open-segment site (its endpoints are point
+// sites of their own).
+#define SEGVORONOI_SITE_SEGMENT 1
+
 // Major version of the library this header belongs to.
 #define SEGVORONOI_VERSION_MAJOR 0
 
@@ -46,7 +53,7 @@ typedef enum segvoronoi_status {
   // An input coordinate is NaN or infinite (the message names the input index).
   SEGVORONOI_STATUS_INVALID_COORDINATE = 2,
   // Input segments cross or overlap, or a point lies inside a segment
-  // (the message names both input indices). Reserved for segment input.
+  // (the message names both input indices).
   SEGVORONOI_STATUS_INTERSECTING = 3,
   // An index argument is out of range.
   SEGVORONOI_STATUS_OUT_OF_RANGE = 4,
@@ -70,10 +77,16 @@ typedef struct segvoronoi_diagram segvoronoi_diagram;
 
 // A site: an input point.
 typedef struct segvoronoi_site {
-  // Position, in input coordinates.
+  // `SEGVORONOI_SITE_POINT` or `SEGVORONOI_SITE_SEGMENT`.
+  uint32_t kind;
+  // The point, or the segment's first endpoint, in input coordinates.
   double x;
-  // Position, in input coordinates.
+  // The point, or the segment's first endpoint, in input coordinates.
   double y;
+  // The segment's second endpoint (the point again for a point site).
+  double x2;
+  // The segment's second endpoint (the point again for a point site).
+  double y2;
 } segvoronoi_site;
 
 // A finite Voronoi vertex.
@@ -112,10 +125,16 @@ typedef struct segvoronoi_edge {
 typedef struct segvoronoi_stats {
   // Points given to the builder.
   size_t input_points;
-  // Distinct sites in the diagram.
+  // Segments given to the builder.
+  size_t input_segments;
+  // Distinct sites in the diagram (points, then open segments).
   size_t sites;
-  // Input points merged into an equal earlier point.
+  // Input points merged into an equal earlier point or segment endpoint.
   size_t duplicate_points;
+  // Input segments merged into an equal earlier segment.
+  size_t duplicate_segments;
+  // Input segments of zero length (they became points).
+  size_t zero_length_segments;
   // Finite Voronoi vertices.
   size_t vertices;
   // Voronoi edges between two sites.
@@ -157,11 +176,41 @@ enum segvoronoi_status segvoronoi_builder_add_points(struct segvoronoi_builder *
                                                      const double *xy,
                                                      size_t count);
 
+// Adds the segment from `(x1, y1)` to `(x2, y2)`. Its input index is the
+// number of segments added before it. Segments may share endpoints;
+// crossings are reported by `segvoronoi_builder_build`.
+//
+// Errors: `SEGVORONOI_STATUS_INVALID_COORDINATE` if a coordinate is NaN or
+// infinite (the builder is then unchanged and the message names the
+// segment's index), `SEGVORONOI_STATUS_TOO_LARGE`.
+enum segvoronoi_status segvoronoi_builder_add_segment(struct segvoronoi_builder *builder,
+                                                      double x1,
+                                                      double y1,
+                                                      double x2,
+                                                      double y2);
+
+// Adds `count` segments from `xy` = `{x1, y1, x2, y2, ...}` (`4 * count`
+// doubles), all or none. `xy` may be NULL when `count` is 0.
+//
+// Errors: as `segvoronoi_builder_add_segment`, for the first bad segment;
+// nothing is added. `SEGVORONOI_STATUS_TOO_LARGE` is checked before `xy` is
+// read.
+enum segvoronoi_status segvoronoi_builder_add_segments(struct segvoronoi_builder *builder,
+                                                       const double *xy,
+                                                       size_t count);
+
+// The number of segments added so far (repeats included); 0 for NULL.
+size_t segvoronoi_builder_segment_count(const struct segvoronoi_builder *builder);
+
 // The number of points added so far (repeats included); 0 for NULL.
 size_t segvoronoi_builder_point_count(const struct segvoronoi_builder *builder);
 
 // Builds the diagram of everything added so far and stores it in `*out`.
 // The builder is not consumed and stays as it was.
+//
+// Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments cross or
+// overlap or a point lies inside a segment (the message names both input
+// indices).
 //
 // Ownership: on success the caller owns `*out` and frees it with
 // `segvoronoi_diagram_free`. On error `*out` is set to NULL.
@@ -186,8 +235,12 @@ void segvoronoi_diagram_free(struct segvoronoi_diagram *diagram);
 // diagram the library builds; `SEGVORONOI_STATUS_INTERNAL` would be a bug.
 enum segvoronoi_status segvoronoi_diagram_validate(const struct segvoronoi_diagram *diagram);
 
-// Number of sites (distinct input points); 0 for NULL.
+// Number of sites (distinct points, then open segments); 0 for NULL.
 size_t segvoronoi_diagram_site_count(const struct segvoronoi_diagram *diagram);
+
+// Number of point sites; sites `0..point_site_count` are points, the rest
+// open segments. 0 for NULL.
+size_t segvoronoi_diagram_point_site_count(const struct segvoronoi_diagram *diagram);
 
 // Number of finite Voronoi vertices; 0 for NULL.
 size_t segvoronoi_diagram_vertex_count(const struct segvoronoi_diagram *diagram);
@@ -206,6 +259,13 @@ enum segvoronoi_status segvoronoi_diagram_site(const struct segvoronoi_diagram *
 enum segvoronoi_status segvoronoi_diagram_site_of_input(const struct segvoronoi_diagram *diagram,
                                                         size_t input_index,
                                                         uint32_t *out_site);
+
+// The site that input segment `input_index` became: its open segment (a
+// repeated segment shares the first one's), or for a zero-length segment
+// the point site it is. Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.
+enum segvoronoi_status segvoronoi_diagram_site_of_segment(const struct segvoronoi_diagram *diagram,
+                                                          size_t input_index,
+                                                          uint32_t *out_site);
 
 // Vertex `index` (`0 <= index < vertex_count`).
 // Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.

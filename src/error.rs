@@ -8,6 +8,10 @@ pub enum ErrorKind {
     InvalidCoordinate,
     /// More sites than the 32-bit ids of the diagram can hold.
     TooLarge,
+    /// Two segments cross or overlap, or a point lies inside a segment;
+    /// [`Error::indices`] holds both input indices (segment indices, or the
+    /// point's index and then the segment's).
+    Intersecting,
 }
 
 /// An input error: its kind, a message that names the offending input
@@ -29,8 +33,8 @@ impl Error {
         self.kind
     }
 
-    /// The input indices involved (for points: their index in the order they
-    /// were added to the builder).
+    /// The input indices involved (for points and segments: their index in
+    /// the order they were added to the builder).
     pub fn indices(&self) -> &[usize] {
         &self.indices
     }

@@ -49,7 +49,7 @@ mod query;
 pub use build::{Builder, MAX_POINTS};
 pub use diagram::{BuildStats, Diagram, EdgeId, SiteId, ValidationError, VertexId};
 pub use error::{Error, ErrorKind};
-pub use geometry::Point;
+pub use geometry::{Point, Site};
 pub use query::{Cell, Edge, EdgeEnd, TopologyOptions, Vertex};
 
 /// Fault injection for tests: make the floating-point decisions lie and watch

@@ -8,7 +8,7 @@ mod common;
 
 use common::*;
 use proptest::prelude::*;
-use segvoronoi::{Diagram, EdgeEnd, Point};
+use segvoronoi::{Diagram, EdgeEnd, Point, Site};
 
 /// Positive-length Voronoi edges as pairs of site coordinates (sorted), the
 /// part of the topology that every valid answer on degenerate input shares.
@@ -24,7 +24,8 @@ fn positive_pairs(d: &Diagram) -> Vec<[(u64, u64); 2]> {
             _ => true,
         })
         .map(|e| {
-            let mut pair = [key(d.site(e.sites[0])), key(d.site(e.sites[1]))];
+            let point = |s| d.site(s).as_point().expect("point sites only");
+            let mut pair = [key(point(e.sites[0])), key(point(e.sites[1]))];
             pair.sort_unstable();
             pair
         })
@@ -84,7 +85,7 @@ proptest! {
         prop_assert_eq!(d.site_count(), distinct.len());
         prop_assert_eq!(d.stats().duplicate_points, points.len() - distinct.len());
         for (i, p) in points.iter().enumerate() {
-            prop_assert_eq!(d.site(d.site_of_input(i).unwrap()), Point::new(p[0] + 0.0, p[1] + 0.0));
+            prop_assert_eq!(d.site(d.site_of_input(i).unwrap()), Site::Point(Point::new(p[0] + 0.0, p[1] + 0.0)));
         }
     }
 

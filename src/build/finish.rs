@@ -5,23 +5,55 @@
 use super::points::{Parts, PointDiagram, INFINITE};
 use crate::diagram::{BuildStats, Diagram, HalfEdgeId, SiteId, VertexId, NONE};
 use crate::geometry::scale::Scale;
-use crate::geometry::Point;
+use crate::geometry::{Point, Site};
 
-pub(super) fn finish(built: PointDiagram, site_of_input: &[SiteId], input: &[Point], scale: Scale) -> Diagram {
-    let Parts { mut store, sites: internal_sites } = built.into_parts();
+/// A segment site for the renumbering: its input index, its internal id and
+/// its endpoints in input coordinates.
+pub(super) struct SegmentSite {
+    pub input: usize,
+    pub internal: SiteId,
+    pub ends: [Point; 2],
+}
 
-    // Public site ids: order of first appearance in the input.
+/// Renumbers `built` to public ids: point sites by first appearance in
+/// `input` (whose `i`-th point became internal site `site_of_input[i]`),
+/// then `segments` in the order given. The diagram's per-input maps are
+/// left for the caller (`input_site` holds all of `input`).
+pub(super) fn finish(
+    built: PointDiagram,
+    site_of_input: &[SiteId],
+    input: &[Point],
+    segments: &[SegmentSite],
+    scale: Scale,
+) -> Diagram {
+    let Parts { mut store, sites: internal_sites, segment_ends: internal_ends } = built.into_parts();
+    let first_internal_segment = internal_sites.len() - internal_ends.len();
+
+    // Public site ids: points in order of first appearance in the input,
+    // then the segments.
     let mut public_of = vec![NONE; internal_sites.len()];
-    let mut sites: Vec<Point> = Vec::with_capacity(internal_sites.len().saturating_sub(1));
+    let mut sites: Vec<Site> = Vec::with_capacity(internal_sites.len().saturating_sub(1));
     let mut input_site = Vec::with_capacity(input.len());
     for (i, s) in site_of_input.iter().enumerate() {
         let slot = &mut public_of[s.index()];
         if *slot == NONE {
             *slot = sites.len() as u32;
-            sites.push(input[i].canonical_zero());
+            sites.push(Site::Point(input[i].canonical_zero()));
         }
         input_site.push(SiteId(*slot));
     }
+    let point_sites = sites.len();
+    let mut segment_input = Vec::with_capacity(segments.len());
+    for seg in segments {
+        public_of[seg.internal.index()] = sites.len() as u32;
+        let [a, b] = seg.ends;
+        sites.push(Site::Segment { a: a.canonical_zero(), b: b.canonical_zero() });
+        segment_input.push(seg.input as u32);
+    }
+    let segment_ends: Vec<[SiteId; 2]> = segments
+        .iter()
+        .map(|seg| internal_ends[seg.internal.index() - first_internal_segment].map(|e| SiteId(public_of[e.index()])))
+        .collect();
     let infinite = SiteId(sites.len() as u32);
     public_of[INFINITE.index()] = infinite.0;
     for r in store.right.iter_mut() {
@@ -67,23 +99,39 @@ pub(super) fn finish(built: PointDiagram, site_of_input: &[SiteId], input: &[Poi
         }
     }
 
-    let extent = bounding_box_diagonal(&sites);
+    let extent = bounding_box_diagonal(&sites[..point_sites]);
     let stats = BuildStats {
         input_points: input.len(),
+        input_segments: 0,
         sites: sites.len(),
-        duplicate_points: input.len() - sites.len(),
+        duplicate_points: input.len() - point_sites,
+        duplicate_segments: 0,
+        zero_length_segments: 0,
         vertices: finite_vertices,
         edges: edges.len(),
     };
-    let diagram = Diagram { store, sites, finite_vertices, edges, edge_of_half_edge: Default::default(), input_site, stats, extent, scale };
-    debug_assert_eq!(diagram.validate(), Ok(()));
-    diagram
+    Diagram {
+        store,
+        sites,
+        point_sites,
+        segment_input,
+        segment_ends,
+        segment_site: Vec::new(),
+        finite_vertices,
+        edges,
+        edge_of_half_edge: Default::default(),
+        input_site,
+        stats,
+        extent,
+        scale,
+    }
 }
 
-fn bounding_box_diagonal(points: &[Point]) -> f64 {
+fn bounding_box_diagonal(point_sites: &[Site]) -> f64 {
+    let points: Vec<Point> = point_sites.iter().filter_map(|s| if let Site::Point(p) = *s { Some(p) } else { None }).collect();
     let Some(&first) = points.first() else { return 0.0 };
     let (mut lo, mut hi) = (first, first);
-    for p in points {
+    for &p in &points {
         lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
         hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
     }

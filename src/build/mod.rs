@@ -5,6 +5,7 @@ mod finish;
 mod order;
 mod points;
 mod segment_input;
+mod sites;
 
 use crate::diagram::{Diagram, SiteId, NONE};
 use crate::error::{Error, ErrorKind};
@@ -38,6 +39,7 @@ pub const MAX_POINTS: usize = 600_000_000;
 #[derive(Clone, Debug, Default)]
 pub struct Builder {
     points: Vec<Point>,
+    segments: Vec<[Point; 2]>,
 }
 
 impl Builder {
@@ -49,6 +51,70 @@ impl Builder {
     /// Number of points added so far (duplicates included).
     pub fn point_count(&self) -> usize {
         self.points.len()
+    }
+
+    /// Number of segments added so far (repeats and zero-length ones included).
+    pub fn segment_count(&self) -> usize {
+        self.segments.len()
+    }
+
+    /// Adds the line segment from `a` to `b` and returns its input index
+    /// (the number of segments added before it).
+    ///
+    /// Segments may share endpoints with any number of others; whether they
+    /// cross or overlap is checked by [`Builder::build`]. A zero-length
+    /// segment becomes a point. Fails with [`ErrorKind::InvalidCoordinate`]
+    /// when a coordinate is not finite; the builder is then unchanged.
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, Site};
+    /// let mut b = Builder::new();
+    /// b.add_segment([0.0, 0.0], [4.0, 0.0])?;
+    /// b.add_points([[1.0, 2.0], [3.0, -1.5]])?;
+    /// let d = b.build()?;
+    /// assert_eq!(d.site_count(), 5); // two points, two endpoints, the open segment
+    /// let s = d.site_of_segment(0).unwrap();
+    /// assert!(matches!(d.site(s), Site::Segment { .. }));
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn add_segment(&mut self, a: impl Into<Point>, b: impl Into<Point>) -> Result<usize, Error> {
+        let index = self.segments.len();
+        let segment = [a.into(), b.into()];
+        check_segment(index, segment)?;
+        self.reserve_segments(1)?;
+        self.segments.push(segment);
+        Ok(index)
+    }
+
+    /// Adds many segments, all or none: on error (the first non-finite
+    /// coordinate, named by the index the segment would have had) nothing is
+    /// added.
+    pub fn add_segments<P, I>(&mut self, segments: I) -> Result<(), Error>
+    where
+        P: Into<Point>,
+        I: IntoIterator<Item = [P; 2]>,
+    {
+        let start = self.segments.len();
+        let iter = segments.into_iter();
+        self.reserve_segments(iter.size_hint().0)?;
+        for (k, [a, b]) in iter.enumerate() {
+            let segment = [a.into(), b.into()];
+            if let Err(e) = check_segment(start + k, segment).and_then(|_| self.reserve_segments(1)) {
+                self.segments.truncate(start);
+                return Err(e);
+            }
+            self.segments.push(segment);
+        }
+        Ok(())
+    }
+
+    /// Makes room for `additional` more segments (each counts as two points
+    /// towards [`MAX_POINTS`]).
+    fn reserve_segments(&mut self, additional: usize) -> Result<(), Error> {
+        let points = self.points.len().saturating_add(self.segments.len().saturating_add(additional).saturating_mul(2));
+        check_capacity(points)?;
+        self.segments.reserve(additional);
+        Ok(())
     }
 
     /// Adds one point and returns its input index.
@@ -67,7 +133,7 @@ impl Builder {
     /// [`ErrorKind::TooLarge`] (the builder unchanged) when the total would
     /// exceed [`MAX_POINTS`].
     pub fn reserve(&mut self, additional: usize) -> Result<(), Error> {
-        check_capacity(self.points.len().saturating_add(additional))?;
+        check_capacity(self.points.len().saturating_add(additional).saturating_add(2 * self.segments.len()))?;
         self.points.reserve(additional);
         Ok(())
     }
@@ -98,8 +164,15 @@ impl Builder {
     ///
     /// For 100,000 points or more, part of the work (sorting the insertion
     /// order) runs on a second, short-lived thread; the result is the same.
+    ///
+    /// With segments, the input is checked first: segments that cross or
+    /// overlap, or a point inside a segment, give
+    /// [`ErrorKind::Intersecting`] naming both input indices.
     pub fn build(&self) -> Result<Diagram, Error> {
-        Ok(build_points(&self.points))
+        if self.segments.is_empty() {
+            return Ok(build_points(&self.points));
+        }
+        sites::build_sites(&self.points, &self.segments)
     }
 }
 
@@ -110,6 +183,17 @@ fn check_point(index: usize, p: Point) -> Result<(), Error> {
     Err(Error::new(
         ErrorKind::InvalidCoordinate,
         format!("point {index} has a non-finite coordinate ({}, {})", p.x, p.y),
+        vec![index],
+    ))
+}
+
+fn check_segment(index: usize, [a, b]: [Point; 2]) -> Result<(), Error> {
+    if a.is_finite() && b.is_finite() {
+        return Ok(());
+    }
+    Err(Error::new(
+        ErrorKind::InvalidCoordinate,
+        format!("segment {index} has a non-finite coordinate ({}, {}) - ({}, {})", a.x, a.y, b.x, b.y),
         vec![index],
     ))
 }
@@ -130,26 +214,30 @@ fn build_points(input: &[Point]) -> Diagram {
     let max_abs = input.iter().fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
     let scale = Scale::for_max_abs(max_abs);
     let points: Vec<Point> = input.iter().map(|p| p.scaled(scale.to_internal).canonical_zero()).collect();
-    let (diagram, site_of_input) = construct(&points);
-    finish::finish(diagram, &site_of_input, input, scale)
+    let (diagram, site_of_input, _) = construct(&points, &[]);
+    let diagram = finish::finish(diagram, &site_of_input, input, &[], scale);
+    debug_assert_eq!(diagram.validate(), Ok(()));
+    diagram
 }
 
-/// Runs the insertions. Returns the diagram in internal site ids and, per
-/// input point, the internal site it became.
-fn construct(points: &[Point]) -> (PointDiagram, Vec<SiteId>) {
+/// Runs the insertions: every point, then every segment (given by the
+/// indices of its two endpoints in `points`; distinct, non-crossing). Returns
+/// the diagram in internal site ids, per input point the internal site it
+/// became, and per segment its internal site.
+fn construct(points: &[Point], segments: &[[usize; 2]]) -> (PointDiagram, Vec<SiteId>, Vec<SiteId>) {
     let n = points.len();
     let mut site_of = vec![SiteId(NONE); n];
-    let mut diagram = PointDiagram::new(n);
+    let mut diagram = PointDiagram::new(n + segments.len());
     let order = points::insertion_order(points);
     let Some(&first) = order.first() else {
-        return (diagram, site_of);
+        return (diagram, site_of, Vec::new());
     };
     let pa = points[first as usize];
     let Some(b_pos) = order.iter().position(|&i| points[i as usize] != pa) else {
         // one distinct point
         let s = diagram.add_lone_site(pa);
         site_of.iter_mut().for_each(|x| *x = s);
-        return (diagram, site_of);
+        return (diagram, site_of, Vec::new());
     };
     let second = order[b_pos];
     let pb = points[second as usize];
@@ -158,8 +246,8 @@ fn construct(points: &[Point]) -> (PointDiagram, Vec<SiteId>) {
         .copied()
         .find(|&i| orientation(pa, pb, points[i as usize]) != Orientation::Collinear);
     let Some(third) = third else {
-        start_all_collinear(points, &mut diagram, &mut site_of);
-        return (diagram, site_of);
+        let segment_sites = start_all_collinear(points, segments, &mut diagram, &mut site_of);
+        return (diagram, site_of, segment_sites);
     };
 
     let ids = diagram.start_collinear(&[pa, pb]);
@@ -183,12 +271,21 @@ fn construct(points: &[Point]) -> (PointDiagram, Vec<SiteId>) {
             Inserted::Duplicate(s) => site_of[i as usize] = s,
         }
     }
-    (diagram, site_of)
+    let segment_sites = segments.iter().map(|&[i, j]| diagram.insert_segment(site_of[i], site_of[j])).collect();
+    (diagram, site_of, segment_sites)
 }
 
 /// All points on one line (at least two distinct): sort along the line,
-/// merge repeats, and lay out the ladder of parallel bisectors directly.
-fn start_all_collinear(points: &[Point], diagram: &mut PointDiagram, site_of: &mut [SiteId]) {
+/// merge repeats, and lay out the ladder of parallel bisectors directly, with
+/// each segment (which joins two consecutive points: nothing lies inside a
+/// segment) as one more rung between its endpoints. Returns the segments'
+/// sites.
+fn start_all_collinear(
+    points: &[Point],
+    segments: &[[usize; 2]],
+    diagram: &mut PointDiagram,
+    site_of: &mut [SiteId],
+) -> Vec<SiteId> {
     let mut by_position: Vec<u32> = (0..points.len() as u32).collect();
     // Lexicographic order is an order along any line.
     by_position.sort_unstable_by(|&i, &j| {
@@ -204,8 +301,10 @@ fn start_all_collinear(points: &[Point], diagram: &mut PointDiagram, site_of: &m
         }
         chain_index[i as usize] = chain.len() - 1;
     }
-    let ids = diagram.start_collinear(&chain);
+    let between: Vec<usize> = segments.iter().map(|&[i, j]| chain_index[i].min(chain_index[j])).collect();
+    let (ids, segment_sites) = diagram.start_collinear_with_segments(&chain, &between);
     for (i, s) in site_of.iter_mut().enumerate() {
         *s = ids[chain_index[i]];
     }
+    segment_sites
 }

@@ -46,6 +46,8 @@ pub(crate) enum Inserted {
 pub(crate) struct Parts {
     pub store: Store,
     pub sites: Vec<Point>,
+    /// Per segment site, in id order after the points: its endpoint sites.
+    pub segment_ends: Vec<[SiteId; 2]>,
 }
 
 /// The point diagram under construction, with the scratch space of insertion.
@@ -94,7 +96,7 @@ impl PointDiagram {
 
     /// The store and the site coordinates, scratch space dropped.
     pub fn into_parts(self) -> Parts {
-        Parts { store: self.store, sites: self.sites }
+        Parts { store: self.store, sites: self.sites, segment_ends: self.segment_ends }
     }
 
     /// The diagram of a single site: it has a cell but no boundary.
@@ -122,6 +124,13 @@ impl PointDiagram {
     pub fn start_collinear(&mut self, chain: &[Point]) -> Vec<SiteId> {
         debug_assert!(chain.len() >= 2 && self.sites.len() == 1);
         let ids: Vec<SiteId> = chain.iter().map(|&p| self.add_site(p)).collect();
+        self.build_ladder(&ids);
+        ids
+    }
+
+    /// The ladder of parallel bisectors between consecutive sites of `ids`
+    /// (added already, at least two), every vertex at infinity.
+    fn build_ladder(&mut self, ids: &[SiteId]) {
         let m = ids.len();
         // U_i = (q_i, q_(i+1), inf) on the left of the chain, D_i = (q_(i+1), q_i, inf) on the right.
         let ups: Vec<VertexId> = (0..m - 1).map(|_| self.push_vertex()).collect();
@@ -150,7 +159,6 @@ impl PointDiagram {
         for v in ups.into_iter().chain(downs) {
             self.place_vertex(v);
         }
-        ids
     }
 
     fn set_sites(&mut self, v: VertexId, sites: [SiteId; 3]) {

@@ -1,4 +1,3 @@
-#![allow(dead_code)] // wired into Builder by segment insertion (issue 3)
 //! The input checker for line-segment sites: normalisation and the
 //! intersection rules of DESIGN §1, decided before any diagram is built.
 //!

@@ -4,17 +4,26 @@
 
 use super::ids::{HalfEdgeId, SiteId};
 use super::store::Store;
-use crate::geometry::Point;
+use crate::geometry::Site;
 
 /// Counts from one build.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct BuildStats {
     /// Points given to the builder.
     pub input_points: usize,
-    /// Distinct sites in the diagram.
+    /// Segments given to the builder.
+    pub input_segments: usize,
+    /// Distinct sites in the diagram: points (isolated ones and segment
+    /// endpoints) and open segments.
     pub sites: usize,
-    /// Input points that repeated an earlier point and were merged into it.
+    /// Input points that repeated an earlier point (or, with segments, any
+    /// segment endpoint) and were merged into it.
     pub duplicate_points: usize,
+    /// Input segments that repeated an earlier one (either direction) and
+    /// were merged into it.
+    pub duplicate_segments: usize,
+    /// Input segments of zero length, which became points.
+    pub zero_length_segments: usize,
     /// Voronoi vertices (finite ones; vertices at infinity are not counted).
     pub vertices: usize,
     /// Voronoi edges between two sites, rays and lines included.
@@ -23,17 +32,29 @@ pub struct BuildStats {
 
 /// A Voronoi diagram. Immutable; reading it from many threads at once is safe.
 ///
-/// Site ids are public and dense: site `k` is the `k`-th distinct input point
-/// in order of first appearance. Vertex ids `0..vertex_count()` are the finite
-/// vertices. Edge ids `0..edge_count()` are the edges between two sites.
+/// Site ids are public and dense: site `k < point_site_count()` is the
+/// `k`-th distinct point in order of first appearance, reading the isolated
+/// points first and then each segment's first and second endpoint; the open
+/// segments follow, in input order. Vertex ids `0..vertex_count()` are the
+/// finite vertices. Edge ids `0..edge_count()` are the edges between two
+/// sites.
 #[derive(Clone, Debug)]
 pub struct Diagram {
     /// Sites `0..sites.len()` are the real ones; the point at infinity is
     /// `sites.len()`. Vertices `0..finite_vertices` are finite, the rest at
     /// infinity.
     pub(crate) store: Store,
-    /// Input coordinates of each site.
-    pub(crate) sites: Vec<Point>,
+    /// Each site in input coordinates: the points first, then the segments.
+    pub(crate) sites: Vec<Site>,
+    /// Number of point sites (`sites[..point_sites]`).
+    pub(crate) point_sites: usize,
+    /// Per segment site (id minus `point_sites`): its input index.
+    pub(crate) segment_input: Vec<u32>,
+    /// Per segment site: its two endpoint sites.
+    pub(crate) segment_ends: Vec<[SiteId; 2]>,
+    /// Per input segment: the site it became (a repeat: the first one; a
+    /// zero-length segment: its point).
+    pub(crate) segment_site: Vec<SiteId>,
     pub(crate) finite_vertices: usize,
     /// Per public edge: its canonical half-edge.
     pub(crate) edges: Vec<HalfEdgeId>,

@@ -97,6 +97,68 @@ pub unsafe extern "C" fn segvoronoi_builder_add_points(
     })
 }
 
+/// Adds the segment from `(x1, y1)` to `(x2, y2)`. Its input index is the
+/// number of segments added before it. Segments may share endpoints;
+/// crossings are reported by `segvoronoi_builder_build`.
+///
+/// Errors: `SEGVORONOI_STATUS_INVALID_COORDINATE` if a coordinate is NaN or
+/// infinite (the builder is then unchanged and the message names the
+/// segment's index), `SEGVORONOI_STATUS_TOO_LARGE`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_add_segment(
+    builder: *mut segvoronoi_builder,
+    x1: f64,
+    y1: f64,
+    x2: f64,
+    y2: f64,
+) -> segvoronoi_status {
+    require_non_null!(builder);
+    guard(|| {
+        // SAFETY: non-null, and the caller passes a live builder used by this thread only.
+        let b = unsafe { &mut *builder };
+        let r = b.inner.add_segment([x1, y1], [x2, y2]).map(|_| ());
+        b.record(r)
+    })
+}
+
+/// Adds `count` segments from `xy` = `{x1, y1, x2, y2, ...}` (`4 * count`
+/// doubles), all or none. `xy` may be NULL when `count` is 0.
+///
+/// Errors: as `segvoronoi_builder_add_segment`, for the first bad segment;
+/// nothing is added. `SEGVORONOI_STATUS_TOO_LARGE` is checked before `xy` is
+/// read.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_add_segments(
+    builder: *mut segvoronoi_builder,
+    xy: *const f64,
+    count: usize,
+) -> segvoronoi_status {
+    require_non_null!(builder);
+    if count > 0 {
+        require_non_null!(xy);
+    }
+    guard(|| {
+        // SAFETY: non-null; the caller keeps builder exclusive and xy valid for 4*count reads.
+        let b = unsafe { &mut *builder };
+        if let Err(e) = b.inner.reserve(count.saturating_mul(2)) {
+            return b.record(Err(e));
+        }
+        let coords: &[f64] = if count == 0 { &[] } else { unsafe { std::slice::from_raw_parts(xy, 4 * count) } };
+        let r = b.inner.add_segments(coords.chunks_exact(4).map(|c| [[c[0], c[1]], [c[2], c[3]]]));
+        b.record(r)
+    })
+}
+
+/// The number of segments added so far (repeats included); 0 for NULL.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_segment_count(builder: *const segvoronoi_builder) -> usize {
+    if builder.is_null() {
+        return 0;
+    }
+    // SAFETY: non-null live builder.
+    guard_or(0, || unsafe { &*builder }.inner.segment_count())
+}
+
 /// The number of points added so far (repeats included); 0 for NULL.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_builder_point_count(builder: *const segvoronoi_builder) -> usize {
@@ -109,6 +171,10 @@ pub unsafe extern "C" fn segvoronoi_builder_point_count(builder: *const segvoron
 
 /// Builds the diagram of everything added so far and stores it in `*out`.
 /// The builder is not consumed and stays as it was.
+///
+/// Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments cross or
+/// overlap or a point lies inside a segment (the message names both input
+/// indices).
 ///
 /// Ownership: on success the caller owns `*out` and frees it with
 /// `segvoronoi_diagram_free`. On error `*out` is set to NULL.

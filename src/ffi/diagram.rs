@@ -3,7 +3,7 @@
 use std::ffi::c_char;
 
 use super::plumbing::{guard, guard_or, into_c_string, require_non_null, segvoronoi_status};
-use crate::{Diagram, EdgeEnd, EdgeId, SiteId, TopologyOptions, VertexId};
+use crate::{Diagram, EdgeEnd, EdgeId, Site, SiteId, TopologyOptions, VertexId};
 
 /// Marks an edge end at infinity in `segvoronoi_edge_end::vertex`.
 pub const SEGVORONOI_NO_VERTEX: u32 = u32::MAX;
@@ -32,11 +32,23 @@ impl segvoronoi_diagram {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct segvoronoi_site {
-    /// Position, in input coordinates.
+    /// `SEGVORONOI_SITE_POINT` or `SEGVORONOI_SITE_SEGMENT`.
+    pub kind: u32,
+    /// The point, or the segment's first endpoint, in input coordinates.
     pub x: f64,
-    /// Position, in input coordinates.
+    /// The point, or the segment's first endpoint, in input coordinates.
     pub y: f64,
+    /// The segment's second endpoint (the point again for a point site).
+    pub x2: f64,
+    /// The segment's second endpoint (the point again for a point site).
+    pub y2: f64,
 }
+
+/// `segvoronoi_site.kind` of a point site.
+pub const SEGVORONOI_SITE_POINT: u32 = 0;
+/// `segvoronoi_site.kind` of an open-segment site (its endpoints are point
+/// sites of their own).
+pub const SEGVORONOI_SITE_SEGMENT: u32 = 1;
 
 /// A finite Voronoi vertex.
 #[repr(C)]
@@ -82,10 +94,16 @@ pub struct segvoronoi_edge {
 pub struct segvoronoi_stats {
     /// Points given to the builder.
     pub input_points: usize,
-    /// Distinct sites in the diagram.
+    /// Segments given to the builder.
+    pub input_segments: usize,
+    /// Distinct sites in the diagram (points, then open segments).
     pub sites: usize,
-    /// Input points merged into an equal earlier point.
+    /// Input points merged into an equal earlier point or segment endpoint.
     pub duplicate_points: usize,
+    /// Input segments merged into an equal earlier segment.
+    pub duplicate_segments: usize,
+    /// Input segments of zero length (they became points).
+    pub zero_length_segments: usize,
     /// Finite Voronoi vertices.
     pub vertices: usize,
     /// Voronoi edges between two sites.
@@ -134,10 +152,17 @@ pub unsafe extern "C" fn segvoronoi_diagram_validate(diagram: *const segvoronoi_
     })
 }
 
-/// Number of sites (distinct input points); 0 for NULL.
+/// Number of sites (distinct points, then open segments); 0 for NULL.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_site_count(diagram: *const segvoronoi_diagram) -> usize {
     count(diagram, Diagram::site_count)
+}
+
+/// Number of point sites; sites `0..point_site_count` are points, the rest
+/// open segments. 0 for NULL.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_point_site_count(diagram: *const segvoronoi_diagram) -> usize {
+    count(diagram, Diagram::point_site_count)
 }
 
 /// Number of finite Voronoi vertices; 0 for NULL.
@@ -165,8 +190,11 @@ pub unsafe extern "C" fn segvoronoi_diagram_site(
         if index >= d.site_count() {
             return segvoronoi_status::OutOfRange;
         }
-        let p = d.site(SiteId::from_index(index));
-        write_out(out, segvoronoi_site { x: p.x, y: p.y })
+        let site = match d.site(SiteId::from_index(index)) {
+            Site::Point(p) => segvoronoi_site { kind: SEGVORONOI_SITE_POINT, x: p.x, y: p.y, x2: p.x, y2: p.y },
+            Site::Segment { a, b } => segvoronoi_site { kind: SEGVORONOI_SITE_SEGMENT, x: a.x, y: a.y, x2: b.x, y2: b.y },
+        };
+        write_out(out, site)
     })
 }
 
@@ -180,6 +208,22 @@ pub unsafe extern "C" fn segvoronoi_diagram_site_of_input(
 ) -> segvoronoi_status {
     require_non_null!(out_site);
     with_diagram(diagram, |d| match d.site_of_input(input_index) {
+        Some(s) => write_out(out_site, s.index() as u32),
+        None => segvoronoi_status::OutOfRange,
+    })
+}
+
+/// The site that input segment `input_index` became: its open segment (a
+/// repeated segment shares the first one's), or for a zero-length segment
+/// the point site it is. Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_site_of_segment(
+    diagram: *const segvoronoi_diagram,
+    input_index: usize,
+    out_site: *mut u32,
+) -> segvoronoi_status {
+    require_non_null!(out_site);
+    with_diagram(diagram, |d| match d.site_of_segment(input_index) {
         Some(s) => write_out(out_site, s.index() as u32),
         None => segvoronoi_status::OutOfRange,
     })
@@ -317,8 +361,11 @@ pub unsafe extern "C" fn segvoronoi_diagram_stats(
             out,
             segvoronoi_stats {
                 input_points: s.input_points,
+                input_segments: s.input_segments,
                 sites: s.sites,
                 duplicate_points: s.duplicate_points,
+                duplicate_segments: s.duplicate_segments,
+                zero_length_segments: s.zero_length_segments,
                 vertices: s.vertices,
                 edges: s.edges,
             },

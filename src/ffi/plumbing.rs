@@ -16,7 +16,7 @@ pub enum segvoronoi_status {
     /// An input coordinate is NaN or infinite (the message names the input index).
     InvalidCoordinate = 2,
     /// Input segments cross or overlap, or a point lies inside a segment
-    /// (the message names both input indices). Reserved for segment input.
+    /// (the message names both input indices).
     Intersecting = 3,
     /// An index argument is out of range.
     OutOfRange = 4,
@@ -54,6 +54,7 @@ impl From<&Error> for segvoronoi_status {
         match e.kind() {
             ErrorKind::InvalidCoordinate => segvoronoi_status::InvalidCoordinate,
             ErrorKind::TooLarge => segvoronoi_status::TooLarge,
+            ErrorKind::Intersecting => segvoronoi_status::Intersecting,
         }
     }
 }

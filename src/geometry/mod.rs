@@ -12,7 +12,8 @@ pub mod point;
 pub mod predicates;
 pub(crate) mod scale;
 pub mod solvers;
-pub(crate) mod site;
+pub mod site;
 pub(crate) mod segment_solvers;
 
 pub use point::Point;
+pub use site::Site;

@@ -1,4 +1,3 @@
-#![allow(dead_code)] // used by segment insertion (issue 3), not wired yet
 //! The geometric view of a site of the separated diagram (DESIGN §1).
 //!
 //! Every input segment becomes three sites: its two endpoints (point sites)
@@ -21,7 +20,7 @@ use super::point::Point;
 /// A site as geometry: a point, or an open segment whose endpoints are
 /// separate point sites.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Site {
+pub enum Site {
     /// A point site.
     Point(Point),
     /// The open segment from `a` to `b` (`a != b`). The direction `a → b`
@@ -37,14 +36,23 @@ pub(crate) enum Site {
 impl Site {
     /// `true` for a point site.
     #[inline]
-    pub(crate) fn is_point(&self) -> bool {
+    pub fn is_point(&self) -> bool {
         matches!(self, Site::Point(_))
+    }
+
+    /// The point of a point site; `None` for a segment.
+    #[inline]
+    pub fn as_point(&self) -> Option<Point> {
+        match *self {
+            Site::Point(p) => Some(p),
+            Site::Segment { .. } => None,
+        }
     }
 
     /// Whether `p` is an endpoint of this segment site (exact coordinate
     /// equality; `-0.0 == 0.0`). Always `false` for a point site.
     #[inline]
-    pub(crate) fn has_endpoint(&self, p: Point) -> bool {
+    pub fn has_endpoint(&self, p: Point) -> bool {
         match *self {
             Site::Point(_) => false,
             Site::Segment { a, b } => a == p || b == p,
@@ -54,7 +62,7 @@ impl Site {
     /// The endpoint of this segment site that is not `p`, when `p` is one of
     /// its endpoints; `None` otherwise (and for point sites).
     #[inline]
-    pub(crate) fn other_endpoint(&self, p: Point) -> Option<Point> {
+    pub fn other_endpoint(&self, p: Point) -> Option<Point> {
         match *self {
             Site::Segment { a, b } if a == p => Some(b),
             Site::Segment { a, b } if b == p => Some(a),
@@ -68,7 +76,7 @@ impl Site {
     ///
     /// Precision: the foot is `a + τ (b - a)` with `τ` from
     /// [`segment_parameter`]; a few ulps of the segment's extent.
-    pub(crate) fn nearest_point(&self, p: Point) -> Point {
+    pub fn nearest_point(&self, p: Point) -> Point {
         match *self {
             Site::Point(q) => q,
             Site::Segment { a, b } => {
@@ -94,7 +102,7 @@ impl Site {
     /// computed relative to `a`; its error is a few ulps of `|p - a|`, so it
     /// is relatively accurate unless `p` is much closer to the line than to
     /// `a`. Not exact: decisions must not compare two of these values.
-    pub(crate) fn distance_squared(&self, p: Point) -> f64 {
+    pub fn distance_squared(&self, p: Point) -> f64 {
         let d = self.distance(p);
         d * d
     }
@@ -103,7 +111,7 @@ impl Site {
     ///
     /// Precision: as [`Site::distance_squared`], without the squaring's
     /// overflow or underflow.
-    pub(crate) fn distance(&self, p: Point) -> f64 {
+    pub fn distance(&self, p: Point) -> f64 {
         match *self {
             Site::Point(q) => p.distance(q),
             Site::Segment { a, b } => {

@@ -2,7 +2,7 @@
 
 use crate::geometry::predicates::strictly_closer_given;
 use crate::diagram::{BuildStats, Diagram, EdgeId, HalfEdgeId, SiteId, ValidationError, VertexId, NONE};
-use crate::geometry::Point;
+use crate::geometry::{Point, Site};
 
 /// A finite Voronoi vertex.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -63,8 +63,8 @@ impl<'a> Cell<'a> {
         self.site
     }
 
-    /// The site's position.
-    pub fn point(&self) -> Point {
+    /// The site.
+    pub fn geometry(&self) -> Site {
         self.diagram.sites[self.site.index()]
     }
 
@@ -96,14 +96,42 @@ impl<'a> Cell<'a> {
 }
 
 impl Diagram {
-    /// Number of sites (distinct input points).
+    /// Number of sites: distinct points (isolated ones and segment
+    /// endpoints), then open segments.
     pub fn site_count(&self) -> usize {
         self.sites.len()
     }
 
-    /// The position of a site. Panics if the id is out of range.
-    pub fn site(&self, site: SiteId) -> Point {
+    /// Number of point sites; ids `0..point_site_count()` are points, the
+    /// rest open segments.
+    pub fn point_site_count(&self) -> usize {
+        self.point_sites
+    }
+
+    /// A site, in input coordinates. Panics if the id is out of range.
+    pub fn site(&self, site: SiteId) -> Site {
         self.sites[site.index()]
+    }
+
+    /// The input index of a segment site (what the topology text calls
+    /// `S<j>`), or `None` for a point site or an id out of range.
+    pub fn segment_input_index(&self, site: SiteId) -> Option<usize> {
+        let k = site.index().checked_sub(self.point_sites)?;
+        self.segment_input.get(k).map(|&j| j as usize)
+    }
+
+    /// The endpoint sites of a segment site, or `None` for a point site or an
+    /// id out of range.
+    pub fn segment_endpoints(&self, site: SiteId) -> Option<[SiteId; 2]> {
+        let k = site.index().checked_sub(self.point_sites)?;
+        self.segment_ends.get(k).copied()
+    }
+
+    /// The site that the `index`-th input segment became: its open segment,
+    /// the first of its repeats, or for a zero-length segment the point it
+    /// is; `None` if there is no such input segment.
+    pub fn site_of_segment(&self, index: usize) -> Option<SiteId> {
+        self.segment_site.get(index).copied()
     }
 
     /// All site ids.
@@ -126,14 +154,16 @@ impl Diagram {
     /// boundary any of the tied sites), or `None` for an empty diagram.
     /// Walks the diagram from `hint`, or from site 0 without one: a hint near
     /// `p` (say the answer of the previous, nearby query) makes it fast.
+    /// With segment sites it compares `p` with every site for now (linear
+    /// time): a greedy walk is not guaranteed to end at the nearest one.
     ///
     /// ```
-    /// use segvoronoi::{Builder, Point};
+    /// use segvoronoi::{Builder, Point, Site};
     /// let mut b = Builder::new();
     /// b.add_points([[0.0, 0.0], [10.0, 0.0], [5.0, 8.0]])?;
     /// let d = b.build()?;
     /// let s = d.nearest_site(Point::new(9.0, 1.0), None).unwrap();
-    /// assert_eq!(d.site(s), Point::new(10.0, 0.0));
+    /// assert_eq!(d.site(s), Site::Point(Point::new(10.0, 0.0)));
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn nearest_site(&self, p: Point, hint: Option<SiteId>) -> Option<SiteId> {
@@ -145,12 +175,20 @@ impl Diagram {
         if n == 1 {
             return Some(start);
         }
+        if self.point_sites < n {
+            // With segments, a greedy walk can stop at a local minimum; until
+            // a walk with that guarantee exists, compare with every site.
+            return self.site_ids().min_by(|&x, &y| self.site(x).distance(p).total_cmp(&self.site(y).distance(p)));
+        }
         // Compare distances in the builder's scaled coordinates, where squares
         // of input-sized numbers cannot overflow (a query point far beyond
         // the input may still overflow there: then in input coordinates).
         let f = if p.scaled(self.scale.to_internal).is_finite() { self.scale.to_internal } else { 1.0 };
         let (sites, p) = (&self.sites, p.scaled(f));
-        let site = |s: SiteId| sites[s.index()].scaled(f);
+        let site = |s: SiteId| match sites[s.index()] {
+            Site::Point(q) => q.scaled(f),
+            Site::Segment { a, .. } => a.scaled(f), // not reached: points only here
+        };
         Some(self.store.descend(
             start,
             n,
@@ -226,6 +264,21 @@ impl Diagram {
         }
         if self.store.site_count() != self.sites.len() + 1 {
             return Err(ValidationError("site count disagrees with the store".into()));
+        }
+        self.validate_separators()
+    }
+
+    /// Every segment's cell shares exactly one edge with each endpoint's cell
+    /// (the separator, on the perpendicular there).
+    fn validate_separators(&self) -> Result<(), ValidationError> {
+        for k in 0..self.segment_ends.len() {
+            let s = SiteId::from_index(self.point_sites + k);
+            for end in self.segment_ends[k] {
+                let shared = self.store.cell_boundary(s).filter(|&h| self.store.right(h) == end).count();
+                if shared != 1 {
+                    return Err(ValidationError(format!("segment site {s} shares {shared} edges with its endpoint {end}")));
+                }
+            }
         }
         Ok(())
     }

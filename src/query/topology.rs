@@ -8,7 +8,8 @@
 //! VVERTICES k    (option) one line per vertex after merging zero-length edges:
 //!                every site whose cell touches it
 //! ```
-//! Site names: `P<k>` for site `k`. Names in a line are sorted (`P` before
+//! Site names: `P<k>` for point site `k`, `S<j>` for the open segment of
+//! input segment `j`. Names in a line are sorted (`P` before
 //! `S`, then by index), and lines are sorted by their sequence of names.
 //! Edges shorter than `1e-9` times the input's bounding-box diagonal count as
 //! zero-length.
@@ -28,12 +29,8 @@ pub struct TopologyOptions {
     pub voronoi_pairs: bool,
 }
 
-/// A site name: kind (0 = point, 1 = segment, for later) and index.
+/// A site name: kind (0 = point, 1 = segment) and index.
 type Name = (u8, u32);
-
-fn name(site: SiteId) -> Name {
-    (0, site.0)
-}
 
 fn write_section(out: &mut String, title: &str, mut lines: Vec<Vec<Name>>) {
     for l in lines.iter_mut() {
@@ -54,6 +51,13 @@ fn write_section(out: &mut String, title: &str, mut lines: Vec<Vec<Name>>) {
 }
 
 impl Diagram {
+    fn name(&self, site: SiteId) -> Name {
+        match self.segment_input_index(site) {
+            Some(j) => (1, j as u32),
+            None => (0, site.0),
+        }
+    }
+
     /// The canonical topology text (see the module documentation).
     ///
     /// ```
@@ -66,9 +70,9 @@ impl Diagram {
     /// ```
     pub fn topology(&self, options: TopologyOptions) -> String {
         let mut out = String::new();
-        let edges = self.edges().map(|e| vec![name(e.sites[0]), name(e.sites[1])]).collect();
+        let edges = self.edges().map(|e| vec![self.name(e.sites[0]), self.name(e.sites[1])]).collect();
         write_section(&mut out, "EDGES", edges);
-        let faces = self.vertices().map(|v| v.sites.iter().map(|&s| name(s)).collect()).collect();
+        let faces = self.vertices().map(|v| v.sites.iter().map(|&s| self.name(s)).collect()).collect();
         write_section(&mut out, "FACES", faces);
         if options.voronoi_pairs {
             self.write_voronoi_pairs(&mut out);
@@ -105,7 +109,7 @@ impl Diagram {
                     let (ra, rb) = (root(&mut parent, a.0), root(&mut parent, b.0));
                     parent[ra as usize] = rb;
                 }
-                _ => pairs.push(vec![name(e.sites[0]), name(e.sites[1])]),
+                _ => pairs.push(vec![self.name(e.sites[0]), self.name(e.sites[1])]),
             }
         }
         write_section(out, "VPAIRS", pairs);
@@ -114,8 +118,8 @@ impl Diagram {
             let r = root(&mut parent, v.id.0);
             let g = groups.entry(r).or_default();
             for s in v.sites {
-                if !g.contains(&name(s)) {
-                    g.push(name(s));
+                if !g.contains(&self.name(s)) {
+                    g.push(self.name(s));
                 }
             }
         }

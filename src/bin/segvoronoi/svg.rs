@@ -141,7 +141,7 @@ fn walking_direction(left: Point, right: Point) -> Point {
 /// The visible piece of an edge, normalised.
 fn visible_piece(diagram: &Diagram, frame: &Frame, edge: &Edge) -> Option<(Point, Point)> {
     let vertex = |v| frame.unit(diagram.vertex(v).expect("edge ends are vertices of the diagram").position);
-    let (left, right) = (frame.unit(diagram.site(edge.sites[0])), frame.unit(diagram.site(edge.sites[1])));
+    let (left, right) = (frame.unit(site_point(diagram, edge.sites[0])), frame.unit(site_point(diagram, edge.sites[1])));
     let dir = walking_direction(left, right);
     let back = Point::new(-dir.x, -dir.y);
     match edge.ends {
@@ -159,9 +159,17 @@ fn visible_piece(diagram: &Diagram, frame: &Frame, edge: &Edge) -> Option<(Point
     }
 }
 
+/// A point standing for a site: the point, or a segment's midpoint.
+fn site_point(diagram: &Diagram, s: segvoronoi::SiteId) -> Point {
+    match diagram.site(s) {
+        segvoronoi::Site::Point(p) => p,
+        segvoronoi::Site::Segment { a, b } => Point::new(a.x / 2.0 + b.x / 2.0, a.y / 2.0 + b.y / 2.0),
+    }
+}
+
 /// The SVG document for a diagram.
 pub fn render(diagram: &Diagram) -> String {
-    let sites: Vec<Point> = diagram.site_ids().map(|s| diagram.site(s)).collect();
+    let sites: Vec<Point> = diagram.site_ids().map(|s| site_point(diagram, s)).collect();
     let frame = Frame::new(&sites);
     let (width, height) = (frame.width(), frame.height());
     let mut out = String::new();
@@ -251,7 +259,7 @@ mod tests {
         let d = diagram(&[[0.0, 0.0], [4.0, 0.5], [1.0, 3.0], [3.0, 3.5], [2.0, 1.5], [-1.0, 2.0]]);
         let mut rays = 0;
         for e in d.edges() {
-            let dir = walking_direction(d.site(e.sites[0]), d.site(e.sites[1]));
+            let dir = walking_direction(site_point(&d, e.sites[0]), site_point(&d, e.sites[1]));
             for (k, end) in e.ends.iter().enumerate() {
                 if let EdgeEnd::Infinite { direction } = *end {
                     // ends[1] lies ahead along the walk, ends[0] behind it.

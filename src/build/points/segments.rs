@@ -27,10 +27,9 @@
 //! `{x, y} = {a, b}` (then `e` is a convex-hull edge): decided without
 //! numbers, so the symbolic point at infinity needs no far-away sites.
 //!
-//! Not handled yet (issue 3): inputs whose sites are all collinear (the
-//! ladder diagram has two hull sides), which still give a valid but wrong
-//! structure; shared endpoints are untested.
-#![allow(dead_code)] // reached from Builder once segment input is wired (issue 3)
+//! Inputs whose points are all collinear never come here: their diagram is
+//! a ladder of parallel lines with the segments as rungs
+//! (`start_collinear_with_segments`).
 
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashSet};
@@ -94,6 +93,36 @@ impl PointDiagram {
         self.grow_segment_tree(a, b);
         self.replace_tree(e);
         e
+    }
+
+    /// The diagram of points on one line, given in order along it (at least
+    /// two, distinct), and segments each joining chain points `k` and `k + 1`
+    /// for `k` in `between`: a ladder in which every segment is one more rung
+    /// between its endpoints (its separators are the perpendiculars there).
+    /// Returns the point sites in chain order and the segment sites in the
+    /// order of `between`.
+    pub(crate) fn start_collinear_with_segments(
+        &mut self,
+        chain: &[Point],
+        between: &[usize],
+    ) -> (Vec<SiteId>, Vec<SiteId>) {
+        let ids: Vec<SiteId> = chain.iter().map(|&p| self.add_site(p)).collect();
+        let mut after: Vec<Option<SiteId>> = vec![None; chain.len()];
+        let mut segment_sites = Vec::with_capacity(between.len());
+        for &k in between {
+            let e = self.add_segment_site(ids[k], ids[(k + 1).min(ids.len() - 1)]);
+            segment_sites.push(e);
+            if let Some(slot @ None) = after.get_mut(k) {
+                *slot = Some(e);
+            }
+        }
+        let mut sequence = Vec::with_capacity(ids.len() + between.len());
+        for (k, &id) in ids.iter().enumerate() {
+            sequence.push(id);
+            sequence.extend(after[k]);
+        }
+        self.build_ladder(&sequence);
+        (ids, segment_sites)
     }
 
     fn add_segment_site(&mut self, a: SiteId, b: SiteId) -> SiteId {
@@ -216,7 +245,7 @@ impl PointDiagram {
             } else {
                 self.segment_depth(v, a, b)
             };
-            if best.is_none_or(|(_, k)| key < k) {
+            if best.map_or(true, |(_, k)| key < k) {
                 best = Some((v, key));
             }
         }

@@ -1,0 +1,79 @@
+//! Building from points and segments: check the input, list every point in
+//! the naming order (isolated points, then each segment's first and second
+//! endpoint), insert the points and then the segments, renumber.
+
+use std::collections::HashMap;
+
+use super::finish::{self, SegmentSite};
+use super::segment_input::{check_segments, Conflict};
+use super::construct;
+use crate::diagram::{Diagram, SiteId};
+use crate::error::{Error, ErrorKind};
+use crate::geometry::scale::Scale;
+use crate::geometry::Point;
+
+pub(super) fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<Diagram, Error> {
+    let checked = check_segments(points, segments).map_err(|c| conflict_error(&c))?;
+
+    // P<k> numbers the distinct points of this list by first appearance.
+    let mut all: Vec<Point> = Vec::with_capacity(points.len() + 2 * segments.len());
+    all.extend_from_slice(points);
+    for s in segments {
+        all.extend_from_slice(s);
+    }
+    let max_abs = all.iter().fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+    let scale = Scale::for_max_abs(max_abs);
+    let scaled: Vec<Point> = all.iter().map(|p| p.scaled(scale.to_internal).canonical_zero()).collect();
+
+    let endpoint_index = |j: usize| [points.len() + 2 * j, points.len() + 2 * j + 1];
+    let kept: Vec<usize> = checked.segments.iter().map(|&(j, _)| j).collect();
+    let pairs: Vec<[usize; 2]> = kept.iter().map(|&j| endpoint_index(j)).collect();
+    let (built, site_of_input, segment_sites) = construct(&scaled, &pairs);
+    let described: Vec<SegmentSite> = kept
+        .iter()
+        .zip(segment_sites)
+        .map(|(&j, internal)| SegmentSite { input: j, internal, ends: segments[j] })
+        .collect();
+    let mut diagram = finish::finish(built, &site_of_input, &all, &described, scale);
+
+    // Per input segment, its site: a kept one its own, a repeat the first
+    // one with the same endpoints, a zero-length one the point it became.
+    let key = |[a, b]: [Point; 2]| {
+        let (a, b) = (a.canonical_zero(), b.canonical_zero());
+        let (ka, kb) = ((a.x.to_bits(), a.y.to_bits()), (b.x.to_bits(), b.y.to_bits()));
+        if ka <= kb {
+            (ka, kb)
+        } else {
+            (kb, ka)
+        }
+    };
+    let first_segment_site = diagram.point_sites;
+    let site_of_kept: HashMap<_, SiteId> =
+        kept.iter().enumerate().map(|(k, &j)| (key(segments[j]), SiteId::from_index(first_segment_site + k))).collect();
+    diagram.segment_site = segments
+        .iter()
+        .enumerate()
+        .map(|(j, &s)| match site_of_kept.get(&key(s)) {
+            Some(&site) => site,
+            None => diagram.input_site[endpoint_index(j)[0]],
+        })
+        .collect();
+    diagram.input_site.truncate(points.len());
+    diagram.stats.input_points = points.len();
+    diagram.stats.input_segments = segments.len();
+    diagram.stats.duplicate_points = checked.duplicate_points;
+    diagram.stats.duplicate_segments = checked.duplicate_segments;
+    diagram.stats.zero_length_segments = checked.degenerate_segments;
+    debug_assert_eq!(diagram.validate(), Ok(()));
+    Ok(diagram)
+}
+
+/// The builder's error for an input conflict, naming both input indices.
+fn conflict_error(conflict: &Conflict) -> Error {
+    let indices = match *conflict {
+        Conflict::SegmentsCross { first, second } | Conflict::SegmentsOverlap { first, second } => vec![first, second],
+        Conflict::EndpointOnSegment { segment, endpoint_of } => vec![segment, endpoint_of],
+        Conflict::PointOnSegment { point, segment } => vec![point, segment],
+    };
+    Error::new(ErrorKind::Intersecting, conflict.message(), indices)
+}
