@@ -16,6 +16,10 @@
 //!   wrap around a site's cell), and P3 keeps every cell from losing all of
 //!   its boundary.
 //!
+//! - Every existing segment keeps exactly one separator edge with each of
+//!   its endpoints: no separator is deleted whole (where segments share an
+//!   endpoint, the separators there may shrink to zero length instead).
+//!
 //! The numbers only choose: the walk's direction, and which neighbours the
 //! tree grows into (those whose circle the segment enters, seed criteria 1
 //! and 2.3, never beyond a vertex outside the strip between the
@@ -36,19 +40,23 @@ use std::collections::{BinaryHeap, HashSet};
 
 use super::{infinite_rotation, PointDiagram, INFINITE};
 use crate::diagram::{HalfEdgeId, SiteId, VertexId, NONE};
+use crate::geometry::predicates::{orientation, Orientation};
 use crate::geometry::segment_solvers;
 use crate::geometry::site::Site;
 use crate::geometry::solvers::left_normal;
 use crate::geometry::{fault, Point};
 
 /// The walk of P4 in progress: its vertices and the half-edges already tried.
-#[derive(Default)]
 struct PathWalk {
     vertices: Vec<VertexId>,
     /// The half-edge by which each vertex after the first was entered.
     entered_by: Vec<HalfEdgeId>,
     on_walk: HashSet<VertexId>,
     tried: HashSet<HalfEdgeId>,
+    /// The edge to leave the first vertex by.
+    first_move: HalfEdgeId,
+    /// Only vertices in conflict with the segment may join.
+    strict: bool,
     /// Alternatives not taken: (certainty, position on the path, vertex
     /// there, half-edge to take instead), least certain first.
     alternatives: BinaryHeap<Reverse<(u64, usize, VertexId, HalfEdgeId)>>,
@@ -178,17 +186,46 @@ impl PointDiagram {
 
     /// Seed 000's left-degree of site `g` seen from vertex `v` against the
     /// directed line `a → b`: positive when the projection of `v` on `g` is
-    /// left of it. Only its sign and size guide the walk.
-    fn left_degree(&self, v: VertexId, g: SiteId, a: Point, b: Point) -> f64 {
+    /// left of it. Only its sign and size guide the walk. A segment that
+    /// shares an endpoint with `ab` lies on the side of its other endpoint,
+    /// decided exactly (and reported as certain: infinite).
+    fn left_degree(&self, v: VertexId, g: SiteId, (a, b): (SiteId, SiteId), (pa, pb): (Point, Point)) -> f64 {
         if g == INFINITE {
             return 0.0;
+        }
+        if self.is_segment(g) {
+            let [x, y] = self.segment_ends[(g.0 - self.first_segment) as usize];
+            let other = if x == a || x == b {
+                Some(y)
+            } else if y == a || y == b {
+                Some(x)
+            } else {
+                None
+            };
+            if let Some(o) = other {
+                return match orientation(pa, pb, self.sites[o.index()]) {
+                    Orientation::CounterClockwise => f64::INFINITY,
+                    Orientation::Clockwise => f64::NEG_INFINITY,
+                    Orientation::Collinear => 0.0,
+                };
+            }
         }
         let q = if self.store.is_at_infinity(v) {
             self.representative(g)
         } else {
             self.site_geometry(g).nearest_point(self.store.position[v.index()])
         };
-        fault::perturb((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x))
+        fault::perturb((pb.x - pa.x) * (q.y - pa.y) - (pb.y - pa.y) * (q.x - pa.x))
+    }
+
+    /// Whether `h` runs between an existing segment and one of its
+    /// endpoints. Such an edge is never deleted whole (both of its vertices
+    /// in the tree): every segment keeps exactly one separator with each
+    /// endpoint, if only of zero length where many segments meet at a point.
+    fn is_separator(&self, h: HalfEdgeId) -> bool {
+        let (l, r) = (self.store.left(h), self.store.right(h));
+        let ends_of = |s: SiteId| self.segment_ends[(s.0 - self.first_segment) as usize];
+        (self.is_segment(l) && ends_of(l).contains(&r)) || (self.is_segment(r) && ends_of(r).contains(&l))
     }
 
     /// Whether `v` may join the walk: not at infinity unless it conflicts.
@@ -201,55 +238,80 @@ impl PointDiagram {
     /// path (only possible when the numbers lie badly); the tree is then the
     /// walk's first vertex alone.
     fn find_segment_path(&mut self, a: SiteId, b: SiteId) -> bool {
-        let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
-        let start = self.path_start(a, b);
-        let mut walk = PathWalk::default();
-        self.walk_push(&mut walk, start, None);
-        let found = loop {
-            let v = *walk.vertices.last().expect("the walk always holds its start");
-            if self.store.sites_of(v).contains(&b) {
-                break true;
-            }
-            let next = self.walk_step(&mut walk, v, a, b, pa, pb).or_else(|| self.walk_backtrack(&mut walk, a, b));
-            match next {
-                Some(h) => {
-                    walk.tried.insert(h);
-                    let w = self.store.target(h);
-                    self.walk_push(&mut walk, w, Some(h));
-                }
-                None => break false,
-            }
+        // First only through vertices the segment conflicts with (where the
+        // true path runs); if the numbers leave no such path, through any.
+        let (found, path) = match self.walk_to(a, b, true) {
+            (true, path) => (true, path),
+            _ => self.walk_to(a, b, false),
         };
-        if !found {
-            walk.vertices.truncate(1);
-        }
+        let path = if found { path } else { path[..1].to_vec() };
         let epoch = self.epoch;
         self.tree.clear();
-        for &v in &walk.vertices {
+        for &v in &path {
             self.vertex_mark[v.index()] = epoch;
             self.tree.push(v);
         }
         found
     }
 
-    /// The walk's first vertex: on `R(a)`'s boundary, one with `b` among its
-    /// sites if there is one, else the one the segment enters deepest.
-    fn path_start(&self, a: SiteId, b: SiteId) -> VertexId {
-        let mut best: Option<(VertexId, f64)> = None;
-        for h in self.store.cell_boundary(a) {
-            let v = h.origin();
-            let key = if self.store.sites_of(v).contains(&b) && self.walkable(v, a, b) {
-                f64::NEG_INFINITY
-            } else if self.store.is_at_infinity(v) {
-                f64::INFINITY
-            } else {
-                self.segment_depth(v, a, b)
-            };
-            if best.map_or(true, |(_, k)| key < k) {
-                best = Some((v, key));
+    /// The walk from `R(a)` to `R(b)`; `strict` admits only vertices in
+    /// conflict with the segment. Returns whether `R(b)` was reached and the
+    /// walk's vertices (at least the start).
+    fn walk_to(&self, a: SiteId, b: SiteId, strict: bool) -> (bool, Vec<VertexId>) {
+        let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
+        let (start, first_move) = self.path_start(a, b);
+        let mut walk = PathWalk {
+            vertices: Vec::new(),
+            entered_by: Vec::new(),
+            on_walk: HashSet::new(),
+            tried: HashSet::new(),
+            first_move,
+            strict,
+            alternatives: BinaryHeap::new(),
+        };
+        self.walk_push(&mut walk, start, None);
+        loop {
+            let v = *walk.vertices.last().expect("the walk always holds its start");
+            if self.store.sites_of(v).contains(&b) {
+                return (true, walk.vertices);
+            }
+            match self.walk_step(&mut walk, v, a, b, pa, pb).or_else(|| self.walk_backtrack(&mut walk, a, b)) {
+                Some(h) => {
+                    walk.tried.insert(h);
+                    let w = self.store.target(h);
+                    self.walk_push(&mut walk, w, Some(h));
+                }
+                None => return (false, walk.vertices),
             }
         }
-        best.map(|(v, _)| v).expect("a point site among others has a cell boundary")
+    }
+
+    /// The walk's first vertex, on `R(a)`'s boundary, and the edge to leave
+    /// it by: a vertex with `b` among its sites if there is one, else the
+    /// one whose edge away from `R(a)` has a site left of the segment on
+    /// its left and one right of it on its right (seed 000's characteristic
+    /// 3), most clearly so, the deepest conflict breaking ties.
+    fn path_start(&self, a: SiteId, b: SiteId) -> (VertexId, HalfEdgeId) {
+        let ends = (self.sites[a.index()], self.sites[b.index()]);
+        let mut best: Option<(VertexId, HalfEdgeId, (f64, f64))> = None;
+        for h in self.store.cell_boundary(a) {
+            let v = h.origin();
+            // h has R(a) on its left; the edge of v away from R(a):
+            let out = h.rotate(2);
+            let key = if self.store.sites_of(v).contains(&b) && self.walkable(v, a, b) {
+                (f64::INFINITY, f64::INFINITY)
+            } else {
+                let left = self.left_degree(v, self.store.left(out), (a, b), ends);
+                let right = self.left_degree(v, self.store.right(out), (a, b), ends);
+                let depth = if self.store.is_at_infinity(v) { f64::INFINITY } else { self.segment_depth(v, a, b) };
+                let separation = left.min(-right);
+                (if separation.is_nan() { f64::NEG_INFINITY } else { separation.min(f64::MAX) }, -depth)
+            };
+            if best.map_or(true, |(_, _, k)| key > k) {
+                best = Some((v, out, key));
+            }
+        }
+        best.map(|(v, out, _)| (v, out)).expect("a point site among others has a cell boundary")
     }
 
     fn walk_push(&self, walk: &mut PathWalk, v: VertexId, entered_by: Option<HalfEdgeId>) {
@@ -281,11 +343,13 @@ impl PointDiagram {
         let back = self.store.twin(h);
         let w = back.origin();
         let chord = |x: HalfEdgeId| walk.on_walk.contains(&self.store.target(x));
-        !walk.on_walk.contains(&w)
+        !self.is_separator(h)
+            && !walk.on_walk.contains(&w)
             && !chord(back.rotate(1))
             && !chord(back.rotate(2))
             && self.store.opposite(back) != a
             && self.walkable(w, a, b)
+            && (!walk.strict || self.segment_conflict(w, a, b))
     }
 
     /// The next half-edge to follow from `v`, by the left/right rule, with
@@ -306,7 +370,7 @@ impl PointDiagram {
                 // stay on the side of the walk it is on of the segment.
                 let t = self.store.twin(h);
                 let ahead = self.store.opposite(t);
-                let l = self.left_degree(v, ahead, pa, pb);
+                let l = self.left_degree(v, ahead, (a, b), (pa, pb));
                 let (keep_left, keep_right) = (t.rotate(1), t.rotate(2));
                 if l > 0.0 {
                     (keep_left, keep_right, l.abs())
@@ -315,23 +379,16 @@ impl PointDiagram {
                 }
             }
             None => {
-                // At the start every direction is open: deepest conflict first.
-                let mut options: Vec<(f64, HalfEdgeId)> = (0..3)
-                    .map(|k| v.half_edge(k))
-                    .map(|h| {
-                        let w = self.store.target(h);
-                        let depth =
-                            if self.store.is_at_infinity(w) { f64::INFINITY } else { self.segment_depth(w, a, b) };
-                        (depth, h)
-                    })
-                    .collect();
-                options.sort_by(|x, y| x.0.total_cmp(&y.0));
-                for &(depth, h) in &options[1..] {
+                // At the start: away from R(a) first, along its boundary
+                // only when that fails.
+                let out = walk.first_move;
+                let along = [out.rotate(1), out.rotate(2)];
+                for h in along {
                     if self.walk_allows(walk, h, a, b) {
-                        walk.alternatives.push(Reverse((certainty_key(depth), pos, v, h)));
+                        walk.alternatives.push(Reverse((certainty_key(f64::INFINITY), pos, v, h)));
                     }
                 }
-                return self.walk_allows(walk, options[0].1, a, b).then_some(options[0].1);
+                return self.walk_allows(walk, out, a, b).then_some(out);
             }
         };
         // Only vertices the segment conflicts with belong on the path; the
@@ -387,7 +444,7 @@ impl PointDiagram {
                     continue;
                 }
                 let in_tree = |h: HalfEdgeId| self.vertex_mark[self.store.target(h).index()] == epoch;
-                if in_tree(back.rotate(1)) || in_tree(back.rotate(2)) {
+                if in_tree(back.rotate(1)) || in_tree(back.rotate(2)) || self.is_separator(back) {
                     continue;
                 }
                 // P5: R(a) and R(b), touched by the path, must not be touched again.
