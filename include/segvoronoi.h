@@ -44,6 +44,15 @@
 // Patch version of the library this header belongs to.
 #define SEGVORONOI_VERSION_PATCH 0
 
+// `segvoronoi_edge_shape.kind` of a straight edge: between two points,
+// between two segments, or between a segment and one of its endpoints.
+#define SEGVORONOI_EDGE_LINE 0
+
+// `segvoronoi_edge_shape.kind` of a parabolic arc: between a point site (the
+// focus) and a segment site that does not end at it (its supporting line is
+// the directrix).
+#define SEGVORONOI_EDGE_PARABOLA 1
+
 // Result of every fallible call. The numbers are stable across versions.
 typedef enum segvoronoi_status {
   // Success.
@@ -140,6 +149,24 @@ typedef struct segvoronoi_stats {
   // Voronoi edges between two sites.
   size_t edges;
 } segvoronoi_stats;
+
+// The shape of an edge. For `SEGVORONOI_EDGE_LINE` all coordinates are 0.
+typedef struct segvoronoi_edge_shape {
+  // `SEGVORONOI_EDGE_LINE` or `SEGVORONOI_EDGE_PARABOLA`.
+  uint32_t kind;
+  // The focus (the point site), in input coordinates.
+  double focus_x;
+  // The focus (the point site), in input coordinates.
+  double focus_y;
+  // First point of the directrix (the segment site's first endpoint).
+  double directrix_x1;
+  // First point of the directrix (the segment site's first endpoint).
+  double directrix_y1;
+  // Second point of the directrix (the segment site's second endpoint).
+  double directrix_x2;
+  // Second point of the directrix (the segment site's second endpoint).
+  double directrix_y2;
+} segvoronoi_edge_shape;
 
 
 
@@ -340,6 +367,40 @@ const char *segvoronoi_version(void);
 //
 // Ownership: takes back the string; it must not be used afterwards.
 void segvoronoi_string_free(char *text);
+
+// The shape of edge `edge_index` (`0 <= edge_index < edge_count`) in
+// `*out`: straight, or a parabolic arc with its focus and directrix.
+//
+// Ownership: `*out` is caller-owned memory, written only on success.
+// Errors: `NULL_ARGUMENT` (`diagram` or `out`), `OUT_OF_RANGE`.
+// Thread safety: reads the diagram only; safe from many threads at once.
+enum segvoronoi_status segvoronoi_diagram_edge_shape(const struct segvoronoi_diagram *diagram,
+                                                     size_t edge_index,
+                                                     struct segvoronoi_edge_shape *out);
+
+// A polyline along the finite edge `edge_index`, from its first end to its
+// second (both vertex positions included exactly), within `tolerance`
+// (input units) of the true edge: 2 points for a straight edge, as few as
+// the curvature allows for a parabolic arc, never more than 1,000,000 (the
+// tolerance is then not met). Writes up to `capacity_points` points to `xy`
+// as `x0, y0, x1, y1, ...` (`2 * capacity_points` doubles) and the full
+// number of points to `*count`. Call with `xy = NULL, capacity_points = 0`
+// to learn the number.
+//
+// Ownership: `xy` and `*count` are caller-owned memory.
+// Errors: `NULL_ARGUMENT` (`diagram` or `count` NULL, or `xy` NULL with
+// `capacity_points > 0`), `INVALID_ARGUMENT` (`tolerance <= 0` or NaN, or
+// the edge is a ray or a line: it has no finite polyline, and its direction
+// is in `segvoronoi_diagram_edge`), `OUT_OF_RANGE` (`edge_index`); after
+// these nothing is written. `BUFFER_TOO_SMALL`: `*count` holds the number
+// needed and the first `capacity_points` points are written.
+// Thread safety: reads the diagram only; safe from many threads at once.
+enum segvoronoi_status segvoronoi_diagram_edge_polyline(const struct segvoronoi_diagram *diagram,
+                                                        size_t edge_index,
+                                                        double tolerance,
+                                                        double *xy,
+                                                        size_t capacity_points,
+                                                        size_t *count);
 
 #ifdef __cplusplus
 }  // extern "C"

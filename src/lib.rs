@@ -51,6 +51,7 @@ pub use diagram::{BuildStats, Diagram, EdgeId, SiteId, ValidationError, VertexId
 pub use error::{Error, ErrorKind};
 pub use geometry::{Point, Site};
 pub use query::{Cell, Edge, EdgeEnd, TopologyOptions, Vertex};
+pub use query::EdgeShape;
 
 /// Fault injection for tests: make the floating-point decisions lie and watch
 /// the topology survive. Only in builds with the `fault-injection` feature.

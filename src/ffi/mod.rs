@@ -23,9 +23,11 @@
 mod builder;
 mod diagram;
 mod plumbing;
+mod shape;
 
 pub use builder::*;
 pub use diagram::*;
+pub use shape::*;
 pub use plumbing::{
     segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version, SEGVORONOI_VERSION_MAJOR,
     SEGVORONOI_VERSION_MINOR, SEGVORONOI_VERSION_PATCH,

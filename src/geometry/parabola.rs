@@ -14,7 +14,6 @@
 //!
 //! Precision: not exact. Each point is a few ulps of `|s| + p + s^2 / p`
 //! from the true parabola.
-#![allow(dead_code)] // used by segment sites (issue 3): edge geometry and SVG
 
 use super::point::Point;
 

@@ -2,7 +2,9 @@
 //! canonical topology text.
 
 mod access;
+mod shape;
 mod topology;
 
 pub use access::{Cell, Edge, EdgeEnd, Vertex};
+pub use shape::EdgeShape;
 pub use topology::TopologyOptions;

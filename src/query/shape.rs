@@ -1,0 +1,206 @@
+//! The geometry of an edge: a straight piece or a parabolic arc, as a
+//! polyline within a tolerance or as the one quadratic Bézier curve that is
+//! the arc.
+//!
+//! Which shape an edge has follows from its two sites alone:
+//! - two points, two segments (a piece of an angle bisector or of the
+//!   mid-parallel), or a segment and one of its own endpoints (a separator,
+//!   on the perpendicular at that endpoint): a straight piece;
+//! - a point and a segment that does not end at it: an arc of the parabola
+//!   with the point as focus and the segment's supporting line as directrix.
+//!   A point exactly on that line (decided by an exact orientation test)
+//!   would make the parabola degenerate into the perpendicular through it;
+//!   such an edge is reported as straight.
+//!
+//! A parabolic edge lies inside the segment's strip (between the
+//! perpendiculars at its endpoints), so it is always finite in exact
+//! geometry; the drawing methods still refuse rays and lines rather than
+//! guess.
+//!
+//! Precision: not exact. The arc is computed in the diagram's internal,
+//! power-of-two scaled coordinates (so inputs near the ends of the `f64`
+//! range neither overflow nor underflow) from the parameters of the end
+//! vertices along the directrix; every returned point is a few ulps of the
+//! input's magnitude off the true parabola, except that the first and last
+//! points are the vertex positions themselves, so that drawings join up.
+
+use crate::diagram::{Diagram, EdgeId};
+use crate::geometry::parabola::Parabola;
+use crate::geometry::predicates::{orientation, Orientation};
+use crate::geometry::{Point, Site};
+use crate::query::EdgeEnd;
+
+/// Most points [`Diagram::edge_polyline`] returns for one edge.
+const MAX_POLYLINE_POINTS: usize = 1_000_000;
+
+/// The shape of a Voronoi edge (see [`Diagram::edge_shape`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum EdgeShape {
+    /// A straight piece: between two points, between two segments, or
+    /// between a segment and one of its endpoints.
+    Line,
+    /// An arc of the parabola of points equidistant from `focus` and the
+    /// line through `directrix[0]` and `directrix[1]`: the edge between a
+    /// point site (the focus) and a segment site (whose endpoints are the
+    /// directrix points) that does not end at that point.
+    Parabola {
+        /// The point site, in input coordinates.
+        focus: Point,
+        /// The segment site's endpoints, in input coordinates; the directrix
+        /// is their supporting line.
+        directrix: [Point; 2],
+    },
+}
+
+impl EdgeShape {
+    /// The shape of the edge between two sites (see the module doc);
+    /// `to_internal` is the diagram's power-of-two scale, under which the
+    /// exact orientation test cannot overflow.
+    fn between(first: Site, second: Site, to_internal: f64) -> EdgeShape {
+        let (focus, segment) = match (first, second) {
+            (Site::Point(p), s @ Site::Segment { .. }) | (s @ Site::Segment { .. }, Site::Point(p)) => (p, s),
+            _ => return EdgeShape::Line,
+        };
+        let Site::Segment { a, b } = segment else { return EdgeShape::Line };
+        let f = to_internal;
+        if segment.has_endpoint(focus) || orientation(a.scaled(f), b.scaled(f), focus.scaled(f)) == Orientation::Collinear {
+            return EdgeShape::Line;
+        }
+        EdgeShape::Parabola { focus, directrix: [a, b] }
+    }
+}
+
+impl Diagram {
+    /// The shape of an edge, or `None` if the id is out of range.
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, EdgeShape, Point};
+    /// let mut b = Builder::new();
+    /// b.add_segment([0.0, 0.0], [4.0, 0.0])?;
+    /// b.add_point(2.0, 2.0)?;
+    /// let d = b.build()?;
+    /// let arcs: Vec<EdgeShape> = d
+    ///     .edges()
+    ///     .filter_map(|e| d.edge_shape(e.id))
+    ///     .filter(|s| matches!(s, EdgeShape::Parabola { .. }))
+    ///     .collect();
+    /// // The point (2, 2) and the segment share one parabolic edge.
+    /// assert_eq!(
+    ///     arcs,
+    ///     [EdgeShape::Parabola {
+    ///         focus: Point::new(2.0, 2.0),
+    ///         directrix: [Point::new(0.0, 0.0), Point::new(4.0, 0.0)],
+    ///     }]
+    /// );
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn edge_shape(&self, id: EdgeId) -> Option<EdgeShape> {
+        let e = self.edge(id)?;
+        Some(EdgeShape::between(self.site(e.sites[0]), self.site(e.sites[1]), self.scale.to_internal))
+    }
+
+    /// A polyline along a finite edge, from the position of `ends[0]` to
+    /// that of `ends[1]` (both included, exactly), whose every point of
+    /// every piece is within `tolerance` (input units) of the true edge.
+    ///
+    /// A straight edge gives exactly its two end points; a parabolic arc as
+    /// few points as its curvature allows for `tolerance`, but never more
+    /// than 1,000,000 (the tolerance is then not met).
+    ///
+    /// `None` when the id is out of range, when `tolerance` is not positive
+    /// (or NaN), and for rays and lines: an edge reaching infinity has no
+    /// finite polyline (its unit direction is in [`EdgeEnd::Infinite`]).
+    /// See the module doc for the precision.
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, EdgeShape};
+    /// let mut b = Builder::new();
+    /// b.add_segment([0.0, 0.0], [4.0, 0.0])?;
+    /// b.add_point(2.0, 2.0)?;
+    /// let d = b.build()?;
+    /// for e in d.edges().filter(|e| !e.is_infinite()) {
+    ///     let poly = d.edge_polyline(e.id, 1e-3).unwrap();
+    ///     match d.edge_shape(e.id).unwrap() {
+    ///         EdgeShape::Line => assert_eq!(poly.len(), 2),
+    ///         EdgeShape::Parabola { .. } => {
+    ///             assert!(poly.len() > 2);
+    ///             // Every point is as far from the point as from the segment.
+    ///             let [p, s] = e.sites.map(|s| d.site(s));
+    ///             assert!(poly.iter().all(|&q| (p.distance(q) - s.distance(q)).abs() < 1e-9));
+    ///         }
+    ///     }
+    /// }
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn edge_polyline(&self, id: EdgeId, tolerance: f64) -> Option<Vec<Point>> {
+        if tolerance.is_nan() || tolerance <= 0.0 {
+            return None;
+        }
+        let (start, end) = self.finite_ends(id)?;
+        let Some((parabola, s0, s1)) = self.arc(id, start, end) else { return Some(vec![start, end]) };
+        // A tolerance beyond the scaled range becomes infinite: two points.
+        let mut points = parabola.sample(s0, s1, tolerance * self.scale.to_internal, MAX_POLYLINE_POINTS);
+        for p in points.iter_mut() {
+            *p = p.scaled(self.scale.to_input);
+        }
+        let last = points.len() - 1; // `sample` gives at least two points
+        (points[0], points[last]) = (start, end);
+        Some(points)
+    }
+
+    /// The quadratic Bézier curve `[start, control, end]` that is a finite
+    /// parabolic edge: `start` and `end` are the positions of `ends[0]` and
+    /// `ends[1]`, and `control` is where the parabola's tangents at them
+    /// meet, so `(1-u)² start + 2u(1-u) control + u² end` runs along the arc
+    /// (SVG's `M start Q control end`).
+    ///
+    /// `None` when the id is out of range, for a straight edge (see
+    /// [`Diagram::edge_shape`]), and for rays and lines. See the module doc
+    /// for the precision.
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, EdgeEnd};
+    /// let mut b = Builder::new();
+    /// b.add_segment([0.0, 0.0], [4.0, 0.0])?;
+    /// b.add_point(2.0, 2.0)?;
+    /// let d = b.build()?;
+    /// let (e, [start, control, end]) =
+    ///     d.edges().find_map(|e| Some((e, d.edge_bezier(e.id)?))).expect("one parabolic arc");
+    /// let EdgeEnd::Vertex(v) = e.ends[0] else { unreachable!() };
+    /// assert_eq!(start, d.vertex(v).unwrap().position);
+    /// // The arc of (2, 2) over the x axis is y = ((x - 2)² + 4) / 4, from
+    /// // x = 0 to x = 4: its end tangents meet right below the apex.
+    /// assert!((control.x - 2.0).abs() < 1e-12 && control.y.abs() < 1e-12);
+    /// assert!((start.y - 2.0).abs() < 1e-12 && (end.y - 2.0).abs() < 1e-12);
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn edge_bezier(&self, id: EdgeId) -> Option<[Point; 3]> {
+        let (start, end) = self.finite_ends(id)?;
+        let (parabola, s0, s1) = self.arc(id, start, end)?;
+        let [_, control, _] = parabola.bezier(s0, s1);
+        let control = control.scaled(self.scale.to_input);
+        control.is_finite().then_some([start, control, end])
+    }
+
+    /// The positions of both ends of a finite edge.
+    fn finite_ends(&self, id: EdgeId) -> Option<(Point, Point)> {
+        let e = self.edge(id)?;
+        match e.ends {
+            [EdgeEnd::Vertex(u), EdgeEnd::Vertex(v)] => Some((self.vertex(u)?.position, self.vertex(v)?.position)),
+            _ => None,
+        }
+    }
+
+    /// For a parabolic edge from `start` to `end`: its parabola in internal
+    /// coordinates and the parameters of the two ends. `None` for straight
+    /// edges, and when the parabola cannot be set up in floating point (the
+    /// focus so close to the directrix that their distance rounds to zero;
+    /// the arc is then a straight piece to within rounding).
+    fn arc(&self, id: EdgeId, start: Point, end: Point) -> Option<(Parabola, f64, f64)> {
+        let EdgeShape::Parabola { focus, directrix: [a, b] } = self.edge_shape(id)? else { return None };
+        let f = self.scale.to_internal;
+        let parabola = Parabola::new(focus.scaled(f), a.scaled(f), b.scaled(f))?;
+        let (s0, s1) = (parabola.parameter(start.scaled(f)), parabola.parameter(end.scaled(f)));
+        (s0.is_finite() && s1.is_finite()).then_some((parabola, s0, s1))
+    }
+}
