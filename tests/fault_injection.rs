@@ -101,3 +101,53 @@ mod small_inputs {
         }
     }
 }
+
+/// Short disjoint segments and points on a jittered grid (one item a cell).
+fn segment_grid(side: usize, seed: u64) -> (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>) {
+    let mut rng = Rng(seed);
+    let (mut pts, mut segs) = (Vec::new(), Vec::new());
+    for i in 0..side {
+        for j in 0..side {
+            let (x, y) = (i as f64, j as f64);
+            let a = [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()];
+            if rng.unit() < 0.7 {
+                segs.push([a, [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()]]);
+            } else {
+                pts.push(a);
+            }
+        }
+    }
+    (pts, segs)
+}
+
+fn build_segments_under(mode: FaultMode, seed: u64, points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) {
+    set_fault_mode(mode, seed);
+    let mut b = Builder::new();
+    b.add_points(points.iter().copied()).unwrap();
+    b.add_segments(segments.iter().copied()).unwrap();
+    let d = b.build();
+    set_fault_mode(FaultMode::Off, 0);
+    let d = d.unwrap();
+    d.validate().unwrap_or_else(|e| panic!("{mode:?} seed {seed}: {e}"));
+}
+
+#[test]
+fn segments_with_relative_noise() {
+    for seed in 0..4 {
+        let (pts, segs) = segment_grid(40, seed);
+        build_segments_under(FaultMode::Noise(1e-3), seed, &pts, &segs);
+    }
+}
+
+/// Known failure (issue 3): with random arithmetic the walk, its relaxed
+/// form and the breadth-first fallback can all miss a path from `R(a)` to
+/// `R(b)` that keeps P3, P5 and the separators; the segment then lacks its
+/// separator with `b` and `validate()` says so. Run with `--ignored`.
+#[test]
+#[ignore]
+fn segments_with_random_arithmetic() {
+    for seed in 0..4 {
+        let (pts, segs) = segment_grid(40, seed);
+        build_segments_under(FaultMode::Random, seed, &pts, &segs);
+    }
+}
