@@ -67,3 +67,59 @@ foreach(_seed 1 2 3 4 5)
   add_test(NAME cgal_snapped_150_seed${_seed} COMMAND segvoronoi_cgal_check snapped 150 ${_seed})
   set_tests_properties(cgal_snapped_150_seed${_seed} PROPERTIES TIMEOUT 60 LABELS cgal)
 endforeach()
+
+# Line segments (n = number of segments; none cross). Generic families,
+# where EDGES and FACES must agree: seed 000's three random generators in
+# the unit square, short random segments, a random polyline, a square with a
+# rotated off-centre square hole.
+# family, segment count, timeout in seconds
+set(_segvoronoi_cgal_segment_runs
+  "seg-random1 256 60" "seg-random1 1024 60" "seg-random1 4096 120"
+  "seg-random2 256 60" "seg-random2 1024 60" "seg-random2 4096 120"
+  "seg-random3 256 60" "seg-random3 1024 60" "seg-random3 4096 120"
+  "seg-short 1000 60" "seg-short 100000 300"
+  "polyline 1000 60"
+  "square-hole 8 60"
+  "star 64 60")
+foreach(_run IN LISTS _segvoronoi_cgal_segment_runs)
+  separate_arguments(_run)
+  list(GET _run 0 _family)
+  list(GET _run 1 _count)
+  list(GET _run 2 _timeout)
+  add_test(NAME cgal_${_family}_${_count} COMMAND segvoronoi_cgal_check ${_family} ${_count})
+  set_tests_properties(cgal_${_family}_${_count} PROPERTIES TIMEOUT ${_timeout} LABELS cgal)
+endforeach()
+unset(_segvoronoi_cgal_segment_runs)
+
+# Regular n-gons, n = 3..64: every side touches the inscribed circle, so the
+# centre is one degenerate vertex of n segments and only VPAIRS/VVERTICES
+# (zero length decided on CGAL's double constructions) are compared.
+foreach(_sides RANGE 3 64)
+  add_test(NAME cgal_polygon_${_sides} COMMAND segvoronoi_cgal_check polygon ${_sides})
+  set_tests_properties(cgal_polygon_${_sides} PROPERTIES TIMEOUT 60 LABELS cgal)
+endforeach()
+
+# DISABLED: the library's diagram differs from CGAL's, and its own vertices
+# fail the empty-circle test (a site closer than the clearance; the diagram
+# still validates). Found with 6f297b2; re-enable when fixed.
+# - Random disjoint segments (every generic family above except the square
+#   with a hole): from 5 segments on (`segvoronoi_cgal_check seg-random1 5`).
+#   Smallest input, two segments (Boost.Polygon text; `--file`):
+#     0
+#     2
+#     0.45493790747028962 0.53007899750158893 0.43596539982472504 0.16703498914055104
+#     0.06596019314557644 0.081414654003460818 0.49587995158920439 0.12310888693805211
+#   ours has the Delaunay edge P1 P3 and faces P1 P3 S0, P1 P3 S1; CGAL (and
+#   the empty-circle test) S0 S1, P1 S0 S1, P3 S0 S1.
+# - A star of 64 spokes of random lengths at one point: three spokes suffice,
+#   segments (0 0 1.2131843610140107 -0.64846055092333477),
+#   (0 0 0.54389617684586911 -0.16498910147290707),
+#   (0 0 1.0290871783262729 -0.10135624037021887): our vertex of P1, P3 and
+#   S2 has S0 inside its circle, and another vertex is not equidistant from
+#   its sites.
+set_tests_properties(
+  cgal_seg-random1_256 cgal_seg-random1_1024 cgal_seg-random1_4096
+  cgal_seg-random2_256 cgal_seg-random2_1024 cgal_seg-random2_4096
+  cgal_seg-random3_256 cgal_seg-random3_1024 cgal_seg-random3_4096
+  cgal_seg-short_1000 cgal_seg-short_100000 cgal_polyline_1000 cgal_star_64
+  PROPERTIES DISABLED TRUE)

@@ -1,24 +1,34 @@
-// segvoronoi_cgal_check: builds the Voronoi diagram of one point set with
-// segvoronoi (through its C API) and with CGAL's segment Delaunay graph
-// (exact predicates), writes both in the canonical topology of
+// segvoronoi_cgal_check: builds the Voronoi diagram of one set of points and
+// line segments with segvoronoi (through its C API) and with CGAL's segment
+// Delaunay graph (exact predicates), writes both in the canonical topology of
 // src/query/topology.rs and compares them as multisets of lines.
 //
 //   segvoronoi_cgal_check <family> <n> [seed]
 //   segvoronoi_cgal_check --file input.txt [--degenerate]
 //
-// Families: uniform, clustered, tiny, tiny-offset, huge (generic: EDGES and
-// FACES must agree exactly) and lattice, circle, collinear, tiny-lattice,
+// Point families: uniform, clustered, tiny, tiny-offset, huge (generic: EDGES
+// and FACES must agree exactly) and lattice, circle, collinear, tiny-lattice,
 // snapped (degenerate: only VPAIRS and VVERTICES are unique, so only they
-// must agree). The file is in
-// Boost.Polygon's text format: P, then P lines "x y", then S (must be 0), then
-// S segment lines. Exit status: 0 agreement and a valid diagram, 1 a
-// difference or an invalid diagram, 2 bad usage or input, 3 a library error.
+// must agree). Segment families (n = number of segments, all non-crossing):
+// seg-random1/2/3 (the three generators of seed 000 in [0,1]^2), seg-short
+// (random short segments), polyline (a random non-crossing walk),
+// square-hole (8 segments, n ignored) are generic; polygon (regular n-gon)
+// and star (n segments from one point) are degenerate (every segment touches
+// one circle, or one point). For faces with segments CGAL's Voronoi vertex is
+// a double construction, so VPAIRS/VVERTICES of segment inputs decide zero
+// length from rounded positions; they are checked for the degenerate
+// families and informational otherwise. The file is in Boost.Polygon's text
+// format: P, then P lines "x y", then S, then S lines "x1 y1 x2 y2". Exit
+// status: 0 agreement and a valid diagram, 1 a difference or an invalid
+// diagram, 2 bad usage or input, 3 a library error.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpq.h>
 #include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
 #include <CGAL/Segment_Delaunay_graph_hierarchy_2.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/property_map.h>
 #include <CGAL/spatial_sort.h>
 
 #include <algorithm>
@@ -52,9 +62,15 @@ struct Point {
     double y;
 };
 
+struct Segment {
+    Point a;
+    Point b;
+};
+
 struct Input {
     std::string family;
     std::vector<Point> points;
+    std::vector<Segment> segments;
     // Degenerate input has many valid Delaunay graphs: only the Voronoi
     // sections (positive-length edges, merged vertices) are unique.
     bool degenerate = false;
@@ -203,6 +219,283 @@ std::vector<Point> snapped(std::size_t n, Rng& rng) {
     return points;
 }
 
+// ---------------------------------------------------------------------------
+// Segment families. Every crossing test is exact (CGAL's filtered
+// orientation), so the generators never hand over two segments that the
+// library's exact input check would call intersecting.
+// ---------------------------------------------------------------------------
+
+using Ek = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+CGAL::Orientation orient(const Point& a, const Point& b, const Point& c) {
+    return CGAL::orientation(Ek::Point_2(a.x, a.y), Ek::Point_2(b.x, b.y), Ek::Point_2(c.x, c.y));
+}
+
+// c lies on the closed segment ab, given that a, b, c are collinear.
+bool on_collinear_segment(const Point& a, const Point& b, const Point& c) {
+    return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
+           c.y <= std::max(a.y, b.y);
+}
+
+// The closed segments share at least one point.
+bool closed_segments_meet(const Segment& s, const Segment& t) {
+    const CGAL::Orientation o1 = orient(s.a, s.b, t.a), o2 = orient(s.a, s.b, t.b);
+    const CGAL::Orientation o3 = orient(t.a, t.b, s.a), o4 = orient(t.a, t.b, s.b);
+    if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+    return (o1 == CGAL::COLLINEAR && on_collinear_segment(s.a, s.b, t.a)) ||
+           (o2 == CGAL::COLLINEAR && on_collinear_segment(s.a, s.b, t.b)) ||
+           (o3 == CGAL::COLLINEAR && on_collinear_segment(t.a, t.b, s.a)) ||
+           (o4 == CGAL::COLLINEAR && on_collinear_segment(t.a, t.b, s.b));
+}
+
+// Segments sharing exactly one endpoint meet legally unless they overlap.
+bool segments_conflict(const Segment& s, const Segment& t) {
+    auto same = [](const Point& p, const Point& q) { return p.x == q.x && p.y == q.y; };
+    const bool shared = same(s.a, t.a) || same(s.a, t.b) || same(s.b, t.a) || same(s.b, t.b);
+    if (!shared) return closed_segments_meet(s, t);
+    // Shared endpoint p: a conflict only if the other endpoint of one lies
+    // on the other segment (collinear overlap, or a repeat).
+    const Point& sp = same(s.a, t.a) || same(s.a, t.b) ? s.a : s.b;
+    const Point& so = same(sp, s.a) ? s.b : s.a;
+    const Point& to = same(sp, t.a) ? t.b : t.a;
+    if (orient(sp, so, to) != CGAL::COLLINEAR) return false;
+    return on_collinear_segment(sp, so, to) || on_collinear_segment(sp, to, so);
+}
+
+// Segments registered in every cell of their bounding box; a query walks
+// along the segment in steps of at most one cell and visits the 3x3 cells
+// around each step, which covers every cell the segment passes through.
+class SegmentGrid {
+  public:
+    SegmentGrid(Point lo, Point hi, std::size_t side)
+        : lo_(lo), side_(side), cells_(side * side),
+          h_(std::max(hi.x - lo.x, hi.y - lo.y) / static_cast<double>(side)) {}
+
+    void add(const Segment& s, std::size_t id) {
+        const std::size_t x0 = cell(std::min(s.a.x, s.b.x) - lo_.x), x1 = cell(std::max(s.a.x, s.b.x) - lo_.x);
+        const std::size_t y0 = cell(std::min(s.a.y, s.b.y) - lo_.y), y1 = cell(std::max(s.a.y, s.b.y) - lo_.y);
+        for (std::size_t x = x0; x <= x1; ++x)
+            for (std::size_t y = y0; y <= y1; ++y) cells_[x * side_ + y].push_back(id);
+    }
+
+    // Calls visit(id) once for every registered segment near s (a superset
+    // of those meeting s) until visit returns true; returns whether it did.
+    template <class Visit>
+    bool any_near(const Segment& s, Visit visit) {
+        ++stamp_;
+        const double length = std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
+        const std::size_t steps = 1 + static_cast<std::size_t>(length / h_);
+        std::size_t last_x = SIZE_MAX, last_y = SIZE_MAX;
+        for (std::size_t k = 0; k <= steps; ++k) {
+            const double t = static_cast<double>(k) / static_cast<double>(steps);
+            const std::size_t cx = cell(s.a.x + t * (s.b.x - s.a.x) - lo_.x);
+            const std::size_t cy = cell(s.a.y + t * (s.b.y - s.a.y) - lo_.y);
+            if (cx == last_x && cy == last_y) continue;
+            last_x = cx;
+            last_y = cy;
+            for (std::size_t x = cx == 0 ? 0 : cx - 1; x <= std::min(cx + 1, side_ - 1); ++x) {
+                for (std::size_t y = cy == 0 ? 0 : cy - 1; y <= std::min(cy + 1, side_ - 1); ++y) {
+                    for (std::size_t id : cells_[x * side_ + y]) {
+                        if (id >= seen_.size()) seen_.resize(id + 1, 0);
+                        if (seen_[id] == stamp_) continue;
+                        seen_[id] = stamp_;
+                        if (visit(id)) return true;
+                    }
+                }
+            }
+        }
+        return false;
+    }
+
+  private:
+    std::size_t cell(double offset) const {
+        if (!(offset > 0.0)) return 0;
+        const double c = std::floor(offset / h_);
+        return c >= static_cast<double>(side_ - 1) ? side_ - 1 : static_cast<std::size_t>(c);
+    }
+
+    Point lo_;
+    std::size_t side_;
+    std::vector<std::vector<std::size_t>> cells_;
+    double h_;
+    std::vector<std::uint64_t> seen_;
+    std::uint64_t stamp_ = 0;
+};
+
+std::size_t grid_side(std::size_t n) {
+    return std::max<std::size_t>(4, std::min<std::size_t>(2048, static_cast<std::size_t>(std::sqrt(static_cast<double>(n)))));
+}
+
+Segment random_unit_segment(Rng& rng) {
+    Segment s;
+    s.a = {rng.unit(), rng.unit()};
+    s.b = {rng.unit(), rng.unit()};
+    return s;
+}
+
+// Seed 000, method 1: draw a segment, redraw while it meets an earlier one.
+std::vector<Segment> seg_random1(std::size_t n, Rng& rng) {
+    std::vector<Segment> out;
+    SegmentGrid grid({0.0, 0.0}, {1.0, 1.0}, grid_side(n));
+    while (out.size() < n) {
+        const Segment s = random_unit_segment(rng);
+        if (grid.any_near(s, [&](std::size_t id) { return closed_segments_meet(s, out[id]); })) continue;
+        grid.add(s, out.size());
+        out.push_back(s);
+    }
+    return out;
+}
+
+// Seed 000, method 2: draw a segment; for each earlier segment in order that
+// it crosses, move its second endpoint to the 1:9 point between the crossing
+// and the first endpoint (90% of the way from the first endpoint).
+std::vector<Segment> seg_random2(std::size_t n, Rng& rng) {
+    std::vector<Segment> out;
+    SegmentGrid grid({0.0, 0.0}, {1.0, 1.0}, grid_side(n));
+    while (out.size() < n) {
+        Segment s = random_unit_segment(rng);
+        bool ok = false;
+        // The new segment only ever shrinks along itself, so one pass in
+        // index order suffices in exact arithmetic; the rounded new endpoint
+        // may leave the line by an ulp, hence the re-check.
+        for (int round = 0; round < 8 && !ok; ++round) {
+            std::vector<std::size_t> near;
+            grid.any_near(s, [&](std::size_t id) { near.push_back(id); return false; });
+            std::sort(near.begin(), near.end());
+            for (std::size_t id : near) {
+                const Segment& t = out[id];
+                if (!closed_segments_meet(s, t)) continue;
+                const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+                const double ex = t.b.x - t.a.x, ey = t.b.y - t.a.y;
+                const double den = dx * ey - dy * ex;
+                double u = den != 0.0 ? ((t.a.x - s.a.x) * ey - (t.a.y - s.a.y) * ex) / den : 0.0;
+                u = std::min(1.0, std::max(0.0, u));
+                s.b = {s.a.x + 0.9 * u * dx, s.a.y + 0.9 * u * dy};
+            }
+            ok = !grid.any_near(s, [&](std::size_t id) { return closed_segments_meet(s, out[id]); });
+        }
+        if (!ok || (s.a.x == s.b.x && s.a.y == s.b.y)) continue;  // degenerate leftovers: draw again
+        grid.add(s, out.size());
+        out.push_back(s);
+    }
+    return out;
+}
+
+// Seed 000, method 3: draw n segments; test the pairs (i, j), i < j, in
+// lexicographic order and swap the second endpoints of every crossing pair
+// (which shortens the total length, so it ends), until no pair crosses.
+std::vector<Segment> seg_random3(std::size_t n, Rng& rng) {
+    std::vector<Segment> s(n);
+    for (Segment& seg : s) seg = random_unit_segment(rng);
+    auto box_apart = [](const Segment& p, const Segment& q) {
+        return std::max(p.a.x, p.b.x) < std::min(q.a.x, q.b.x) || std::max(q.a.x, q.b.x) < std::min(p.a.x, p.b.x) ||
+               std::max(p.a.y, p.b.y) < std::min(q.a.y, q.b.y) || std::max(q.a.y, q.b.y) < std::min(p.a.y, p.b.y);
+    };
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t j = i + 1; j < n; ++j) {
+                if (box_apart(s[i], s[j]) || !closed_segments_meet(s[i], s[j])) continue;
+                std::swap(s[i].b, s[j].b);
+                changed = true;
+            }
+        }
+    }
+    return s;
+}
+
+// Short segments: random position and direction, length 1/sqrt(n) of the
+// unit square; a segment meeting an earlier one is dropped (and redrawn,
+// until there are n).
+std::vector<Segment> seg_short(std::size_t n, Rng& rng) {
+    std::vector<Segment> out;
+    const double length = 1.0 / std::sqrt(static_cast<double>(std::max<std::size_t>(n, 1)));
+    SegmentGrid grid({-length, -length}, {1.0 + length, 1.0 + length}, grid_side(n));
+    while (out.size() < n) {
+        Segment s;
+        s.a = {rng.unit(), rng.unit()};
+        const double angle = 6.283185307179586 * rng.unit();
+        s.b = {s.a.x + length * std::cos(angle), s.a.y + length * std::sin(angle)};
+        if (grid.any_near(s, [&](std::size_t id) { return closed_segments_meet(s, out[id]); })) continue;
+        grid.add(s, out.size());
+        out.push_back(s);
+    }
+    return out;
+}
+
+// A random walk of n short steps in the unit square that never meets itself
+// except where consecutive steps share their endpoint (a steps that would is
+// redrawn; a walk that gets stuck restarts from a new random point).
+std::vector<Segment> polyline(std::size_t n, Rng& rng) {
+    std::vector<Segment> out;
+    const double length = 0.5 / std::sqrt(static_cast<double>(std::max<std::size_t>(n, 1)));
+    SegmentGrid grid({-0.1, -0.1}, {1.1, 1.1}, grid_side(n));
+    Point at{rng.unit(), rng.unit()};
+    int stuck = 0;
+    while (out.size() < n) {
+        const double angle = 6.283185307179586 * rng.unit();
+        Segment s{at, {at.x + length * std::cos(angle), at.y + length * std::sin(angle)}};
+        const bool outside = s.b.x < 0.0 || s.b.x > 1.0 || s.b.y < 0.0 || s.b.y > 1.0;
+        // The previous step shares `at` with this one: only an overlap is a
+        // conflict there; with any other segment, any contact is.
+        auto conflict = [&](std::size_t id) {
+            const bool previous = id + 1 == out.size() && out[id].b.x == at.x && out[id].b.y == at.y;
+            return previous ? segments_conflict(s, out[id]) : closed_segments_meet(s, out[id]);
+        };
+        if (outside || grid.any_near(s, conflict)) {
+            if (++stuck > 200) {
+                at = {rng.unit(), rng.unit()};
+                stuck = 0;
+            }
+            continue;
+        }
+        stuck = 0;
+        grid.add(s, out.size());
+        out.push_back(s);
+        at = s.b;
+    }
+    return out;
+}
+
+// The regular n-gon on the unit circle (every side touches the inscribed
+// circle: one Voronoi vertex of degree n at the centre).
+std::vector<Segment> polygon(std::size_t n) {
+    std::vector<Point> corners(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const double angle = 6.283185307179586 * static_cast<double>(k) / static_cast<double>(n);
+        corners[k] = {std::cos(angle), std::sin(angle)};
+    }
+    std::vector<Segment> out;
+    for (std::size_t k = 0; k < n; ++k) out.push_back({corners[k], corners[(k + 1) % n]});
+    return out;
+}
+
+// n segments from the origin in evenly spaced directions, random lengths.
+std::vector<Segment> star(std::size_t n, Rng& rng) {
+    std::vector<Segment> out;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double angle = 6.283185307179586 * static_cast<double>(k) / static_cast<double>(n);
+        const double r = 0.5 + rng.unit();
+        out.push_back({{0.0, 0.0}, {r * std::cos(angle), r * std::sin(angle)}});
+    }
+    return out;
+}
+
+// A square with a smaller, rotated, off-centre square hole: two closed
+// polygons of four segments each.
+std::vector<Segment> square_hole() {
+    const Point outer[4] = {{0.0, 0.0}, {10.0, 0.0}, {10.0, 10.0}, {0.0, 10.0}};
+    Point inner[4];
+    for (int k = 0; k < 4; ++k) {
+        const double angle = 0.3 + 1.5707963267948966 * k;
+        inner[k] = {4.3 + 2.0 * std::cos(angle), 5.7 + 2.0 * std::sin(angle)};
+    }
+    std::vector<Segment> out;
+    for (int k = 0; k < 4; ++k) out.push_back({outer[k], outer[(k + 1) % 4]});
+    for (int k = 0; k < 4; ++k) out.push_back({inner[k], inner[(k + 1) % 4]});
+    return out;
+}
+
 bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, Input& input) {
     Rng rng(seed);
     input.family = family;
@@ -232,6 +525,25 @@ bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, I
     } else if (family == "snapped") {
         input.points = snapped(n, rng);
         input.degenerate = true;
+    } else if (family == "seg-random1") {
+        input.segments = seg_random1(n, rng);
+    } else if (family == "seg-random2") {
+        input.segments = seg_random2(n, rng);
+    } else if (family == "seg-random3") {
+        input.segments = seg_random3(n, rng);
+    } else if (family == "seg-short") {
+        input.segments = seg_short(n, rng);
+    } else if (family == "polyline") {
+        input.segments = polyline(n, rng);
+    } else if (family == "square-hole") {
+        input.segments = square_hole();
+    } else if (family == "polygon") {
+        if (n < 3) return false;
+        input.segments = polygon(n);
+        input.degenerate = true;
+    } else if (family == "star") {
+        input.segments = star(n, rng);
+        input.degenerate = true;
     } else {
         return false;
     }
@@ -246,7 +558,10 @@ bool write_file(const std::string& path, const Input& input) {
     if (out == nullptr) return false;
     std::fprintf(out, "%zu\n", input.points.size());
     for (const Point& p : input.points) std::fprintf(out, "%.17g %.17g\n", p.x, p.y);
-    std::fprintf(out, "0\n");
+    std::fprintf(out, "%zu\n", input.segments.size());
+    for (const Segment& s : input.segments) {
+        std::fprintf(out, "%.17g %.17g %.17g %.17g\n", s.a.x, s.a.y, s.b.x, s.b.y);
+    }
     return std::fclose(out) == 0;
 }
 
@@ -270,9 +585,15 @@ bool read_file(const std::string& path, Input& input, std::string& error) {
         }
     }
     std::size_t segment_count = 0;
-    if (in >> segment_count && segment_count != 0) {
-        error = "segments are not supported yet (S = " + std::to_string(segment_count) + ")";
-        return false;
+    if (!(in >> segment_count)) segment_count = 0;  // the segment count may be left out
+    input.segments.resize(segment_count);
+    for (std::size_t i = 0; i < segment_count; ++i) {
+        Segment& s = input.segments[i];
+        if (!(in >> s.a.x >> s.a.y >> s.b.x >> s.b.y) || !std::isfinite(s.a.x) || !std::isfinite(s.a.y) ||
+            !std::isfinite(s.b.x) || !std::isfinite(s.b.y)) {
+            error = "segment " + std::to_string(i) + " is missing, malformed or not finite";
+            return false;
+        }
     }
     input.family = "file";
     return true;
@@ -360,18 +681,48 @@ Topology parse_topology(const std::string& text) {
     return topology;
 }
 
-// Sites in order of first appearance; equal coordinates (and -0 == +0, which
-// the map's ordering already treats as equal) are one site.
+// Sites in the library's naming order: P<k> is the k-th distinct point of
+// the list "isolated points, then each segment's first and second endpoint"
+// (equal coordinates, and -0 == +0, which the map's ordering already treats
+// as equal, are one site); S<j> is input segment j as an open segment, a
+// repeated segment (either direction) named by its first occurrence, a
+// zero-length one being a point only.
 struct Sites {
+    using Key = std::pair<double, double>;
     std::vector<Point> distinct;
-    std::map<std::pair<double, double>, std::uint32_t> index_of;
+    std::map<Key, std::uint32_t> index_of;
+    // Unordered endpoint pair -> input index of the first such segment.
+    std::map<std::pair<Key, Key>, std::uint32_t> segment_of;
+    // Input indices of the distinct segments, in input order.
+    std::vector<std::uint32_t> distinct_segments;
 
-    explicit Sites(const std::vector<Point>& input) {
-        for (const Point& p : input) {
-            auto inserted = index_of.emplace(std::make_pair(p.x, p.y), static_cast<std::uint32_t>(distinct.size()));
-            if (inserted.second) distinct.push_back({p.x == 0.0 ? 0.0 : p.x, p.y == 0.0 ? 0.0 : p.y});
+    explicit Sites(const Input& input) {
+        for (const Point& p : input.points) add_point(p);
+        for (const Segment& s : input.segments) {
+            add_point(s.a);
+            add_point(s.b);
+        }
+        for (std::size_t j = 0; j < input.segments.size(); ++j) {
+            const Segment& s = input.segments[j];
+            if (s.a.x == s.b.x && s.a.y == s.b.y) continue;
+            if (segment_of.emplace(segment_key(s.a, s.b), static_cast<std::uint32_t>(j)).second) {
+                distinct_segments.push_back(static_cast<std::uint32_t>(j));
+            }
         }
     }
+
+    static std::pair<Key, Key> segment_key(const Point& a, const Point& b) {
+        Key ka{a.x, a.y}, kb{b.x, b.y};
+        if (kb < ka) std::swap(ka, kb);
+        return {ka, kb};
+    }
+
+    void add_point(const Point& p) {
+        auto inserted = index_of.emplace(std::make_pair(p.x, p.y), static_cast<std::uint32_t>(distinct.size()));
+        if (inserted.second) distinct.push_back({p.x == 0.0 ? 0.0 : p.x, p.y == 0.0 ? 0.0 : p.y});
+    }
+
+    std::size_t count() const { return distinct.size() + distinct_segments.size(); }
 
     std::uint32_t index(double x, double y) const {
         auto it = index_of.find(std::make_pair(x, y));
@@ -379,8 +730,15 @@ struct Sites {
         return it->second;
     }
 
-    // Bounding-box diagonal, computed as the library does (halved first so
-    // that huge inputs do not overflow): the scale of "zero length".
+    std::uint32_t segment(const Point& a, const Point& b) const {
+        auto it = segment_of.find(segment_key(a, b));
+        if (it == segment_of.end()) throw std::runtime_error("CGAL segment site that is not an input segment");
+        return it->second;
+    }
+
+    // Bounding-box diagonal of all points (endpoints included), computed as
+    // the library does (halved first so that huge inputs do not overflow):
+    // the scale of "zero length".
     double extent() const {
         if (distinct.empty()) return 0.0;
         Point lo = distinct[0], hi = distinct[0];
@@ -458,8 +816,12 @@ void check_ours_consistent(const segvoronoi_diagram* diagram, const Sites& sites
             ours.problems.push_back(std::string(title) + " differs between the two topology calls");
         }
     }
-    if (segvoronoi_diagram_site_count(diagram) != sites.distinct.size()) {
+    if (segvoronoi_diagram_site_count(diagram) != sites.count()) {
         ours.problems.push_back("site count " + std::to_string(segvoronoi_diagram_site_count(diagram)) +
+                                " != distinct points and segments " + std::to_string(sites.count()));
+    }
+    if (segvoronoi_diagram_point_site_count(diagram) != sites.distinct.size()) {
+        ours.problems.push_back("point site count " + std::to_string(segvoronoi_diagram_point_site_count(diagram)) +
                                 " != distinct points " + std::to_string(sites.distinct.size()));
     }
     if (segvoronoi_diagram_edge_count(diagram) != ours.plain.count("EDGES")) {
@@ -478,6 +840,11 @@ OursResult build_ours(const Input& input, const Sites& sites) {
         xy.push_back(p.x);
         xy.push_back(p.y);
     }
+    std::vector<double> segment_xy;
+    segment_xy.reserve(4 * input.segments.size());
+    for (const Segment& s : input.segments) {
+        segment_xy.insert(segment_xy.end(), {s.a.x, s.a.y, s.b.x, s.b.y});
+    }
     segvoronoi_builder* builder = segvoronoi_builder_new();
     if (builder == nullptr) throw LibraryError("segvoronoi_builder_new returned NULL");
     segvoronoi_diagram* diagram = nullptr;
@@ -485,6 +852,8 @@ OursResult build_ours(const Input& input, const Sites& sites) {
         const auto start = std::chrono::steady_clock::now();
         check_status(segvoronoi_builder_add_points(builder, xy.data(), input.points.size()),
                      "segvoronoi_builder_add_points", builder);
+        check_status(segvoronoi_builder_add_segments(builder, segment_xy.data(), input.segments.size()),
+                     "segvoronoi_builder_add_segments", builder);
         check_status(segvoronoi_builder_build(builder, &diagram), "segvoronoi_builder_build", builder);
         ours.build_ms = elapsed_ms(start);
         ours.plain = parse_topology(topology_text(diagram, 0));
@@ -505,8 +874,9 @@ OursResult build_ours(const Input& input, const Sites& sites) {
 // ---------------------------------------------------------------------------
 
 using K = CGAL::Simple_cartesian<double>;
-// Exact predicates (interval filter, then Gmpq) on double input; the input
-// has no segments, so the cheaper traits without intersections suffice.
+// Exact predicates (interval filter, then Gmpq) on double input; segments
+// meet at most at common endpoints, so the cheaper traits without
+// intersections suffice.
 using Gt = CGAL::Segment_Delaunay_graph_filtered_traits_without_intersections_2<K, CGAL::Field_with_sqrt_tag>;
 using Sdg = CGAL::Segment_Delaunay_graph_hierarchy_2<Gt>;
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -520,9 +890,15 @@ struct CgalResult {
     std::size_t cocircular_edges = 0;
 };
 
-std::uint32_t site_index(const Sdg::Vertex_handle& v, const Sites& sites) {
-    const K::Point_2 p = v->site().point();
-    return sites.index(p.x(), p.y());
+// The canonical name of a CGAL vertex: a point site by its coordinates, a
+// segment site by its two endpoints (unordered) -> input index.
+Name site_name(const Sdg::Vertex_handle& v, const Sites& sites) {
+    if (v->site().is_point()) {
+        const K::Point_2 p = v->site().point();
+        return {0, sites.index(p.x(), p.y())};
+    }
+    const K::Segment_2 seg = v->site().segment();
+    return {1, sites.segment({seg.source().x(), seg.source().y()}, {seg.target().x(), seg.target().y()})};
 }
 
 // The two sites of an edge (f, i): the vertices of f other than i. In
@@ -552,6 +928,21 @@ ExactPoint exact_circumcentre(const K::Point_2& a, const K::Point_2& b, const K:
     return {(cy * b2 - by * c2) / d + Q(a.x()), (bx * c2 - cx * b2) / d + Q(a.y())};
 }
 
+// The Voronoi vertex of a finite face: exact for three points; with a
+// segment among the sites, CGAL's construction (Construct_svd_vertex_2,
+// through sdg.primal) in doubles, so then only as good as its rounding.
+ExactPoint face_vertex(const Sdg& sdg, const Sdg::Face_handle& f) {
+    if (f->vertex(0)->site().is_point() && f->vertex(1)->site().is_point() && f->vertex(2)->site().is_point()) {
+        return exact_circumcentre(f->vertex(0)->site().point(), f->vertex(1)->site().point(),
+                                  f->vertex(2)->site().point());
+    }
+    const K::Point_2 p = sdg.primal(f);
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {
+        throw std::runtime_error("CGAL's Voronoi vertex of a face with a segment is not finite");
+    }
+    return {Rational(p.x()), Rational(p.y())};
+}
+
 // The library's rule, `!(length > threshold)`, decided exactly.
 bool is_zero_length(const ExactPoint& p, const ExactPoint& q, double threshold) {
     const Rational dx = p.x - q.x, dy = p.y - q.y;
@@ -564,18 +955,34 @@ Epick::Point_2 as_epick(const Sdg::Vertex_handle& v) {
     return {p.x(), p.y()};
 }
 
-void build_cgal_graph(const Sites& sites, Sdg& sdg, CgalResult& cgal) {
+// Every distinct point (endpoints included) along a Hilbert curve, then
+// every distinct open segment, ordered along the curve by its midpoint.
+void build_cgal_graph(const Sites& sites, const Input& input, Sdg& sdg, CgalResult& cgal) {
     std::vector<K::Point_2> points;
     points.reserve(sites.distinct.size());
     for (const Point& p : sites.distinct) points.emplace_back(p.x, p.y);
+    std::vector<K::Point_2> midpoints;
+    for (std::uint32_t j : sites.distinct_segments) {
+        const Segment& s = input.segments[j];
+        midpoints.emplace_back(s.a.x / 2.0 + s.b.x / 2.0, s.a.y / 2.0 + s.b.y / 2.0);
+    }
+    std::vector<std::size_t> segment_order(midpoints.size());
+    std::iota(segment_order.begin(), segment_order.end(), 0);
+    using Traits = CGAL::Spatial_sort_traits_adapter_2<K, CGAL::Pointer_property_map<K::Point_2>::const_type>;
+    CGAL::spatial_sort(segment_order.begin(), segment_order.end(), Traits(CGAL::make_property_map(static_cast<const std::vector<K::Point_2>&>(midpoints))));
+
     const auto start = std::chrono::steady_clock::now();
     CGAL::spatial_sort(points.begin(), points.end());
     for (const K::Point_2& p : points) sdg.insert(p);
+    for (std::size_t k : segment_order) {
+        const Segment& s = input.segments[sites.distinct_segments[k]];
+        sdg.insert(K::Point_2(s.a.x, s.a.y), K::Point_2(s.b.x, s.b.y));
+    }
     cgal.build_ms = elapsed_ms(start);
     cgal.dimension = sdg.dimension();
-    if (sdg.number_of_vertices() != sites.distinct.size()) {
+    if (sdg.number_of_vertices() != sites.count()) {
         throw std::runtime_error("CGAL kept " + std::to_string(sdg.number_of_vertices()) + " of " +
-                                 std::to_string(sites.distinct.size()) + " distinct points");
+                                 std::to_string(sites.count()) + " distinct points and segments");
     }
 }
 
@@ -586,23 +993,22 @@ void add_delaunay_sections(const Sdg& sdg, const Sites& sites, Topology& topolog
     if (sdg.dimension() >= 1) {
         for (auto e = sdg.finite_edges_begin(); e != sdg.finite_edges_end(); ++e) {
             const auto ends = edge_vertices(*e);
-            topology.add("EDGES", {{0, site_index(ends.first, sites)}, {0, site_index(ends.second, sites)}});
+            topology.add("EDGES", {site_name(ends.first, sites), site_name(ends.second, sites)});
         }
     }
     if (sdg.dimension() == 2) {
         for (auto f = sdg.finite_faces_begin(); f != sdg.finite_faces_end(); ++f) {
-            topology.add("FACES", {{0, site_index(f->vertex(0), sites)},
-                                   {0, site_index(f->vertex(1), sites)},
-                                   {0, site_index(f->vertex(2), sites)}});
+            topology.add("FACES", {site_name(f->vertex(0), sites), site_name(f->vertex(1), sites),
+                                   site_name(f->vertex(2), sites)});
         }
     }
 }
 
-// VPAIRS and VVERTICES. Zero length is decided by the exact distance of the
-// two Voronoi vertices against the library's threshold (not by CGAL's
-// is_degenerate_edge, which also says "degenerate" for two far-apart vertices
-// of the same three sites). An edge
-// next to an infinite face is a ray (or a line), always of positive length.
+// VPAIRS and VVERTICES. Zero length is decided by the distance of the two
+// Voronoi vertices against the library's threshold (exactly for faces of
+// points; not by CGAL's is_degenerate_edge, which also says "degenerate" for
+// two far-apart vertices of the same three sites). An edge next to an
+// infinite face is a ray (or a line), always of positive length.
 void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) {
     Topology& topology = cgal.topology;
     topology.sections["VPAIRS"];
@@ -616,8 +1022,7 @@ void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) 
         for (auto f = sdg.finite_faces_begin(); f != sdg.finite_faces_end(); ++f) {
             face_number.emplace(&*f, faces.size());
             faces.push_back(f);
-            centres.push_back(exact_circumcentre(f->vertex(0)->site().point(), f->vertex(1)->site().point(),
-                                                 f->vertex(2)->site().point()));
+            centres.push_back(face_vertex(sdg, f));
         }
     }
 
@@ -625,7 +1030,7 @@ void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) 
     UnionFind merged(faces.size());
     for (auto e = sdg.finite_edges_begin(); e != sdg.finite_edges_end(); ++e) {
         const auto ends = edge_vertices(*e);
-        const Line pair = {{0, site_index(ends.first, sites)}, {0, site_index(ends.second, sites)}};
+        const Line pair = {site_name(ends.first, sites), site_name(ends.second, sites)};
         const bool finite = sdg.dimension() == 2 && !sdg.is_infinite(e->first) &&
                             !sdg.is_infinite(e->first->neighbor(e->second));
         if (!finite) {
@@ -641,8 +1046,11 @@ void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) 
         }
         const Sdg::Vertex_handle apex_a = e->first->vertex(e->second);
         const Sdg::Vertex_handle apex_b = sdg.tds().mirror_vertex(e->first, e->second);
-        if (CGAL::side_of_oriented_circle(as_epick(ends.first), as_epick(ends.second), as_epick(apex_a),
-                                          as_epick(apex_b)) == CGAL::ON_ORIENTED_BOUNDARY) {
+        const bool all_points = ends.first->site().is_point() && ends.second->site().is_point() &&
+                                apex_a->site().is_point() && apex_b->site().is_point();
+        if (all_points && CGAL::side_of_oriented_circle(as_epick(ends.first), as_epick(ends.second),
+                                                        as_epick(apex_a), as_epick(apex_b)) ==
+                              CGAL::ON_ORIENTED_BOUNDARY) {
             ++cgal.cocircular_edges;
         }
     }
@@ -651,17 +1059,17 @@ void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) 
     for (std::size_t f = 0; f < faces.size(); ++f) {
         Line& group = groups[merged.root(f)];
         for (int i = 0; i < 3; ++i) {
-            const Name name{0, site_index(faces[f]->vertex(i), sites)};
+            const Name name = site_name(faces[f]->vertex(i), sites);
             if (std::find(group.begin(), group.end(), name) == group.end()) group.push_back(name);
         }
     }
     for (auto& entry : groups) topology.add("VVERTICES", entry.second);
 }
 
-CgalResult build_cgal(const Sites& sites) {
+CgalResult build_cgal(const Sites& sites, const Input& input) {
     CgalResult cgal;
     Sdg sdg;
-    build_cgal_graph(sites, sdg, cgal);
+    build_cgal_graph(sites, input, sdg, cgal);
     add_delaunay_sections(sdg, sites, cgal.topology);
     add_voronoi_sections(sdg, sites, cgal);
     return cgal;
@@ -732,10 +1140,11 @@ int report(const Input& input, const Sites& sites, const OursResult& ours, const
     }
     const bool agree = only_ours == 0 && only_cgal == 0;
     const bool valid = ours.problems.empty();
-    std::printf("family=%s n=%zu sites=%zu degenerate=%s ours_edges=%zu cgal_edges=%zu ours_faces=%zu cgal_faces=%zu "
+    std::printf("family=%s n=%zu segments=%zu sites=%zu degenerate=%s ours_edges=%zu cgal_edges=%zu ours_faces=%zu cgal_faces=%zu "
                 "matched=%zu only_ours=%zu only_cgal=%zu cgal_dimension=%d cocircular_edges=%zu "
                 "ours_build_ms=%.1f cgal_build_ms=%.1f valid=%s verdict=%s\n",
-                input.family.c_str(), input.points.size(), sites.distinct.size(), input.degenerate ? "yes" : "no",
+                input.family.c_str(), input.points.size() + input.segments.size(), input.segments.size(),
+                sites.count(), input.degenerate ? "yes" : "no",
                 ours.full.count("EDGES"), cgal.topology.count("EDGES"), ours.full.count("FACES"),
                 cgal.topology.count("FACES"), matched, only_ours, only_cgal, cgal.dimension, cgal.cocircular_edges,
                 ours.build_ms, cgal.build_ms, valid ? "yes" : "no", agree && valid ? "AGREE" : "DIFFER");
@@ -753,7 +1162,8 @@ int usage() {
                  "usage: segvoronoi_cgal_check <family> <n> [seed] [--write-input FILE]\n"
                  "       segvoronoi_cgal_check --file input.txt [--degenerate]\n"
                  "families: uniform clustered tiny tiny-offset huge (generic), lattice circle collinear "
-                 "tiny-lattice snapped (degenerate)\n");
+                 "tiny-lattice snapped (degenerate); segments: seg-random1 seg-random2 seg-random3 seg-short "
+                 "polyline square-hole (generic), polygon star (degenerate)\n");
     return 2;
 }
 
@@ -798,21 +1208,21 @@ bool parse_arguments(int argc, char** argv, Input& input) {
 int main(int argc, char** argv) {
     Input input;
     if (!parse_arguments(argc, argv, input)) return 2;
-    const Sites sites(input.points);
+    const Sites sites(input);
     OursResult ours;
     try {
         ours = build_ours(input, sites);
     } catch (const std::exception& error) {
-        std::printf("family=%s n=%zu verdict=ERROR segvoronoi: %s\n", input.family.c_str(), input.points.size(),
-                    error.what());
+        std::printf("family=%s n=%zu segments=%zu verdict=ERROR segvoronoi: %s\n", input.family.c_str(),
+                    input.points.size() + input.segments.size(), input.segments.size(), error.what());
         return 3;
     }
     CgalResult cgal;
     try {
-        cgal = build_cgal(sites);
+        cgal = build_cgal(sites, input);
     } catch (const std::exception& error) {
-        std::printf("family=%s n=%zu verdict=ERROR cgal: %s\n", input.family.c_str(), input.points.size(),
-                    error.what());
+        std::printf("family=%s n=%zu segments=%zu verdict=ERROR cgal: %s\n", input.family.c_str(),
+                    input.points.size() + input.segments.size(), input.segments.size(), error.what());
         return 3;
     }
     return report(input, sites, ours, cgal);

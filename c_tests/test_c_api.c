@@ -71,13 +71,39 @@ static double distance(double ax, double ay, double bx, double by) {
     return hypot(ax - bx, ay - by);
 }
 
-/* Checks everything the accessors promise about one diagram:
- * validate(), Euler's relation E = V + S - 1 (connected cells, one vertex at
- * infinity), vertices equidistant from their counter-clockwise sites with no
- * site closer, edges consistent with their end vertices, cells listing each
- * edge from both sides, and nearest_site against brute force. */
+/* The point of a site nearest to (x, y): the point itself, or for a segment
+ * site the nearest point of the closed segment (the distance to the open
+ * segment is the same number). */
+static void nearest_point_of_site(const segvoronoi_site *s, double x, double y, double *px, double *py) {
+    double dx = s->x2 - s->x, dy = s->y2 - s->y, len2 = dx * dx + dy * dy, t;
+    if (s->kind != SEGVORONOI_SITE_SEGMENT || len2 == 0.0) {
+        *px = s->x;
+        *py = s->y;
+        return;
+    }
+    t = ((x - s->x) * dx + (y - s->y) * dy) / len2;
+    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+    *px = s->x + t * dx;
+    *py = s->y + t * dy;
+}
+
+static double site_distance(const segvoronoi_site *s, double x, double y) {
+    double px, py;
+    nearest_point_of_site(s, x, y, &px, &py);
+    return distance(x, y, px, py);
+}
+
+/* Checks everything the accessors promise about one diagram of points and
+ * segments: validate(), Euler's relation E = V + S - 1 (connected cells, one
+ * vertex at infinity), point sites before segment sites, vertices
+ * equidistant from their sites, whose nearest points lie counter-clockwise
+ * around the vertex, with no site closer (empty circle; the distance to a
+ * segment site is the distance to the closed segment), edges consistent with
+ * their end vertices, cells listing each edge from both sides, and
+ * nearest_site against brute force. */
 static void check_diagram(const segvoronoi_diagram *diagram) {
     size_t sites = segvoronoi_diagram_site_count(diagram);
+    size_t point_sites = segvoronoi_diagram_point_site_count(diagram);
     size_t vertices = segvoronoi_diagram_vertex_count(diagram);
     size_t edges = segvoronoi_diagram_edge_count(diagram);
     size_t i, k;
@@ -89,6 +115,7 @@ static void check_diagram(const segvoronoi_diagram *diagram) {
 
     CHECK_STATUS(segvoronoi_diagram_validate(diagram), SEGVORONOI_STATUS_OK);
     if (sites > 0) CHECK(edges == vertices + sites - 1);
+    CHECK(point_sites <= sites);
 
     site_xy = (segvoronoi_site *)calloc(sites + 1, sizeof *site_xy);
     cell_sides = (size_t *)calloc(edges + 1, sizeof *cell_sides);
@@ -96,33 +123,44 @@ static void check_diagram(const segvoronoi_diagram *diagram) {
     if (site_xy == NULL || cell_sides == NULL) goto done;
 
     for (i = 0; i < sites; ++i) {
-        CHECK_STATUS(segvoronoi_diagram_site(diagram, i, &site_xy[i]), SEGVORONOI_STATUS_OK);
-        if (site_xy[i].x < min_x) min_x = site_xy[i].x;
-        if (site_xy[i].x > max_x) max_x = site_xy[i].x;
-        if (site_xy[i].y < min_y) min_y = site_xy[i].y;
-        if (site_xy[i].y > max_y) max_y = site_xy[i].y;
+        segvoronoi_site *s = &site_xy[i];
+        CHECK_STATUS(segvoronoi_diagram_site(diagram, i, s), SEGVORONOI_STATUS_OK);
+        /* Points first, then open segments (of positive length). */
+        CHECK(s->kind == (i < point_sites ? SEGVORONOI_SITE_POINT : SEGVORONOI_SITE_SEGMENT));
+        if (s->kind == SEGVORONOI_SITE_POINT) CHECK(s->x2 == s->x && s->y2 == s->y);
+        if (s->kind == SEGVORONOI_SITE_SEGMENT) CHECK(s->x2 != s->x || s->y2 != s->y);
+        min_x = fmin(min_x, fmin(s->x, s->x2));
+        max_x = fmax(max_x, fmax(s->x, s->x2));
+        min_y = fmin(min_y, fmin(s->y, s->y2));
+        max_y = fmax(max_y, fmax(s->y, s->y2));
     }
     scale = sites > 0 ? fmax(fmax(fabs(min_x), fabs(max_x)), fmax(fabs(min_y), fabs(max_y))) : 1.0;
     if (scale == 0.0) scale = 1.0;
 
     for (i = 0; i < vertices; ++i) {
         segvoronoi_vertex v;
-        const segvoronoi_site *a, *b, *c;
-        double orient;
+        double tx[3], ty[3], orient, apart;
         CHECK_STATUS(segvoronoi_diagram_vertex(diagram, i, &v), SEGVORONOI_STATUS_OK);
         CHECK(v.sites[0] < sites && v.sites[1] < sites && v.sites[2] < sites);
         if (!(v.sites[0] < sites && v.sites[1] < sites && v.sites[2] < sites)) continue;
-        a = &site_xy[v.sites[0]];
-        b = &site_xy[v.sites[1]];
-        c = &site_xy[v.sites[2]];
-        orient = (b->x - a->x) * (c->y - a->y) - (b->y - a->y) * (c->x - a->x);
-        CHECK(orient > 0.0);
+        CHECK(v.clearance >= 0.0);
         for (k = 0; k < 3; ++k) {
             const segvoronoi_site *s = &site_xy[v.sites[k]];
-            CHECK(fabs(distance(v.x, v.y, s->x, s->y) - v.clearance) <= 1e-9 * (v.clearance + scale));
+            nearest_point_of_site(s, v.x, v.y, &tx[k], &ty[k]);
+            CHECK(fabs(distance(v.x, v.y, tx[k], ty[k]) - v.clearance) <= 1e-9 * (v.clearance + scale));
+        }
+        /* The sites' nearest points lie on the circle in the order of the
+         * cells around the vertex, counter-clockwise. Two sites may touch
+         * the circle at one point (a segment and its endpoint; all three at
+         * a shared endpoint, clearance 0): then the order says nothing. */
+        apart = 1e-6 * v.clearance;
+        if (distance(tx[0], ty[0], tx[1], ty[1]) > apart && distance(tx[1], ty[1], tx[2], ty[2]) > apart &&
+            distance(tx[2], ty[2], tx[0], ty[0]) > apart) {
+            orient = (tx[1] - tx[0]) * (ty[2] - ty[0]) - (ty[1] - ty[0]) * (tx[2] - tx[0]);
+            CHECK(orient > 0.0);
         }
         for (k = 0; k < sites; ++k) { /* empty circle */
-            CHECK(distance(v.x, v.y, site_xy[k].x, site_xy[k].y) >= v.clearance * (1.0 - 1e-9) - 1e-12 * scale);
+            CHECK(site_distance(&site_xy[k], v.x, v.y) >= v.clearance * (1.0 - 1e-9) - 1e-12 * scale);
         }
     }
 
@@ -180,8 +218,8 @@ static void check_diagram(const segvoronoi_diagram *diagram) {
         CHECK_STATUS(segvoronoi_diagram_nearest_site(diagram, qx, qy, hint, &answer), SEGVORONOI_STATUS_OK);
         CHECK(answer < sites);
         if (answer >= sites) continue;
-        for (k = 0; k < sites; ++k) best = fmin(best, distance(qx, qy, site_xy[k].x, site_xy[k].y));
-        CHECK(distance(qx, qy, site_xy[answer].x, site_xy[answer].y) <= best * (1.0 + 1e-12));
+        for (k = 0; k < sites; ++k) best = fmin(best, site_distance(&site_xy[k], qx, qy));
+        CHECK(site_distance(&site_xy[answer], qx, qy) <= best * (1.0 + 1e-12));
         last_answer = answer;
     }
 
@@ -241,6 +279,7 @@ static void test_free_rules_and_nulls(void) {
     CHECK(segvoronoi_diagram_site_count(NULL) == 0);
     CHECK(segvoronoi_diagram_vertex_count(NULL) == 0);
     CHECK(segvoronoi_diagram_edge_count(NULL) == 0);
+    CHECK(segvoronoi_diagram_point_site_count(NULL) == 0);
     CHECK_STATUS(segvoronoi_diagram_validate(NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
     CHECK_STATUS(segvoronoi_diagram_site(NULL, 0, &site), SEGVORONOI_STATUS_NULL_ARGUMENT);
     CHECK_STATUS(segvoronoi_diagram_site_of_input(NULL, 0, &id), SEGVORONOI_STATUS_NULL_ARGUMENT);
@@ -499,6 +538,314 @@ static void test_random_inputs(void) {
     free(xy);
 }
 
+/* Whether `text` contains the number `k` as a whole word (not inside a
+ * longer number): error messages name input indices. */
+static int names_index(const char *text, size_t k) {
+    char digits[32];
+    const char *at = text;
+    size_t len;
+    snprintf(digits, sizeof digits, "%lu", (unsigned long)k);
+    len = strlen(digits);
+    while ((at = strstr(at, digits)) != NULL) {
+        int before = at > text && at[-1] >= '0' && at[-1] <= '9';
+        int after = at[len] >= '0' && at[len] <= '9';
+        if (!before && !after) return 1;
+        at += len;
+    }
+    return 0;
+}
+
+/* Builds the diagram of `np` points and `ns` segments ({x1, y1, x2, y2} each);
+ * NULL (and a failed check) on error. */
+static segvoronoi_diagram *build_with_segments(const double *xy, size_t np, const double *seg, size_t ns) {
+    segvoronoi_builder *builder = segvoronoi_builder_new();
+    segvoronoi_diagram *diagram = NULL;
+    segvoronoi_status st;
+    CHECK(builder != NULL);
+    if (builder == NULL) return NULL;
+    CHECK_STATUS(segvoronoi_builder_add_points(builder, xy, np), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_add_segments(builder, seg, ns), SEGVORONOI_STATUS_OK);
+    CHECK(segvoronoi_builder_segment_count(builder) == ns);
+    st = segvoronoi_builder_build(builder, &diagram);
+    CHECK_STATUS(st, SEGVORONOI_STATUS_OK);
+    if (st != SEGVORONOI_STATUS_OK) fprintf(stderr, "  build: %s\n", segvoronoi_builder_last_error(builder));
+    segvoronoi_builder_free(builder);
+    return diagram;
+}
+
+/* NULL rules, non-finite coordinates and the size limit for segments. */
+static void test_segment_input_rules(void) {
+    segvoronoi_builder *builder = segvoronoi_builder_new();
+    segvoronoi_diagram *diagram = (segvoronoi_diagram *)&diagram;
+    double good[8] = {0.0, 0.0, 1.0, 0.0, 2.0, 2.0, 3.0, 1.0};
+    double bad[12] = {5.0, 5.0, 6.0, 5.0, 7.0, 7.0, 8.0, 7.0, 9.0, 9.0, 9.5, 9.0};
+    uint32_t id = 7;
+    CHECK(builder != NULL);
+    if (builder == NULL) return;
+
+    /* NULL handles and buffers. */
+    CHECK_STATUS(segvoronoi_builder_add_segment(NULL, 0.0, 0.0, 1.0, 1.0), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_builder_add_segments(NULL, good, 1), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_builder_add_segments(builder, NULL, 1), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_builder_add_segments(builder, NULL, 0), SEGVORONOI_STATUS_OK);
+    CHECK(segvoronoi_builder_segment_count(NULL) == 0);
+    CHECK(segvoronoi_builder_segment_count(builder) == 0);
+    CHECK(segvoronoi_diagram_point_site_count(NULL) == 0);
+    CHECK_STATUS(segvoronoi_diagram_site_of_segment(NULL, 0, &id), SEGVORONOI_STATUS_NULL_ARGUMENT);
+
+    CHECK_STATUS(segvoronoi_builder_add_segments(builder, good, 2), SEGVORONOI_STATUS_OK);
+    CHECK(segvoronoi_builder_segment_count(builder) == 2);
+    CHECK(segvoronoi_builder_point_count(builder) == 0);
+
+    /* A NaN in the second of three: nothing added, the message names the
+     * index that segment would have had (3), not the point counter. */
+    bad[5] = NAN;
+    CHECK_STATUS(segvoronoi_builder_add_segments(builder, bad, 3), SEGVORONOI_STATUS_INVALID_COORDINATE);
+    CHECK(segvoronoi_builder_segment_count(builder) == 2);
+    CHECK(strstr(segvoronoi_builder_last_error(builder), "segment") != NULL);
+    CHECK(names_index(segvoronoi_builder_last_error(builder), 3));
+    CHECK(!names_index(segvoronoi_builder_last_error(builder), 2));
+    bad[5] = 7.0;
+    bad[10] = -INFINITY; /* the third */
+    CHECK_STATUS(segvoronoi_builder_add_segments(builder, bad, 3), SEGVORONOI_STATUS_INVALID_COORDINATE);
+    CHECK(names_index(segvoronoi_builder_last_error(builder), 4));
+    CHECK(segvoronoi_builder_segment_count(builder) == 2);
+    CHECK_STATUS(segvoronoi_builder_add_segment(builder, 0.0, INFINITY, 1.0, 1.0), SEGVORONOI_STATUS_INVALID_COORDINATE);
+    CHECK(strstr(segvoronoi_builder_last_error(builder), "segment") != NULL);
+    CHECK(names_index(segvoronoi_builder_last_error(builder), 2));
+    CHECK_STATUS(segvoronoi_builder_add_segment(builder, 0.0, 0.0, NAN, 1.0), SEGVORONOI_STATUS_INVALID_COORDINATE);
+    CHECK(segvoronoi_builder_segment_count(builder) == 2);
+
+    /* Too many: refused before `xy` is read (only two segments' worth of
+     * memory is behind the pointer). Each segment counts as two points
+     * towards the 600 million: 300,000,001 segments are one too many. */
+    CHECK_STATUS(segvoronoi_builder_add_segments(builder, good, SIZE_MAX / 8), SEGVORONOI_STATUS_TOO_LARGE);
+    CHECK(strstr(segvoronoi_builder_last_error(builder), "at most") != NULL);
+    CHECK_STATUS(segvoronoi_builder_add_segments(builder, good, (size_t)300000001), SEGVORONOI_STATUS_TOO_LARGE);
+    CHECK(segvoronoi_builder_segment_count(builder) == 2);
+
+    /* A successful call clears the message; the builder still builds. */
+    CHECK_STATUS(segvoronoi_builder_add_segment(builder, 4.0, 0.0, 4.0, 1.0), SEGVORONOI_STATUS_OK);
+    CHECK(strcmp(segvoronoi_builder_last_error(builder), "") == 0);
+    CHECK(segvoronoi_builder_segment_count(builder) == 3);
+    CHECK_STATUS(segvoronoi_builder_build(builder, &diagram), SEGVORONOI_STATUS_OK);
+    CHECK(diagram != NULL);
+    if (diagram != NULL) {
+        CHECK(segvoronoi_diagram_site_count(diagram) == 9); /* 6 endpoints, 3 open segments */
+        CHECK(segvoronoi_diagram_point_site_count(diagram) == 6);
+        CHECK_STATUS(segvoronoi_diagram_site_of_segment(diagram, 0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+        CHECK_STATUS(segvoronoi_diagram_site_of_segment(diagram, 3, &id), SEGVORONOI_STATUS_OUT_OF_RANGE);
+        CHECK(id == 7);
+        check_diagram(diagram);
+        segvoronoi_diagram_free(diagram);
+    }
+    segvoronoi_builder_free(builder);
+}
+
+/* Builds and expects INTERSECTING naming both indices; *out cleared, the
+ * builder unchanged (its counts, and a later successful build after it). */
+static void expect_intersecting(const double *xy, size_t np, const double *seg, size_t ns, size_t first,
+                                size_t second) {
+    segvoronoi_builder *builder = segvoronoi_builder_new();
+    segvoronoi_diagram *diagram = (segvoronoi_diagram *)&diagram;
+    const char *message;
+    CHECK(builder != NULL);
+    if (builder == NULL) return;
+    CHECK_STATUS(segvoronoi_builder_add_points(builder, xy, np), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_add_segments(builder, seg, ns), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_build(builder, &diagram), SEGVORONOI_STATUS_INTERSECTING);
+    CHECK(diagram == NULL);
+    message = segvoronoi_builder_last_error(builder);
+    CHECK(message[0] != '\0');
+    CHECK(names_index(message, first) && names_index(message, second));
+    if (!(names_index(message, first) && names_index(message, second))) {
+        fprintf(stderr, "  message '%s' should name %lu and %lu\n", message, (unsigned long)first,
+                (unsigned long)second);
+    }
+    CHECK(segvoronoi_builder_point_count(builder) == np && segvoronoi_builder_segment_count(builder) == ns);
+    /* Same again: the builder kept its input. */
+    CHECK_STATUS(segvoronoi_builder_build(builder, &diagram), SEGVORONOI_STATUS_INTERSECTING);
+    segvoronoi_builder_free(builder);
+}
+
+static void test_intersecting_segments(void) {
+    /* Segments 1 and 3 cross; 0 and 2 are far away. */
+    const double crossing[16] = {10, 10, 11, 10, 0, 0, 2, 2, 20, 0, 21, 1, 0, 2, 2, 0};
+    /* T-junction: an endpoint of segment 2 inside segment 0. */
+    const double tee[12] = {0, 0, 4, 0, -5, -5, -4, -5, 2, 0, 2, 3};
+    /* Collinear overlap of segments 0 and 1. */
+    const double overlap[8] = {0, 0, 2, 0, 1, 0, 3, 0};
+    /* Point 3 inside segment 1 (point 0 equals an endpoint: allowed). */
+    const double points[8] = {0, 0, 9, 9, 8, 9, 2, 0};
+    const double lines[8] = {5, 5, 6, 6, 0, 0, 4, 0};
+    expect_intersecting(NULL, 0, crossing, 4, 1, 3);
+    expect_intersecting(NULL, 0, tee, 3, 0, 2);
+    expect_intersecting(NULL, 0, overlap, 2, 0, 1);
+    expect_intersecting(points, 4, lines, 2, 3, 1);
+}
+
+/* One segment, points around it, a repeated segment (reversed), a
+ * zero-length segment and a repeated point: sites, kinds, site_of_segment,
+ * stats and the S<j> names. */
+static void test_segment_sites_and_stats(void) {
+    const double points[6] = {1.0, 2.0, 3.0, -1.5, 1.0, 2.0};
+    const double segs[12] = {0.0, 0.0, 4.0, 0.0, 4.0, 0.0, 0.0, 0.0, 7.0, 7.0, 7.0, 7.0};
+    segvoronoi_diagram *d = build_with_segments(points, 3, segs, 3);
+    segvoronoi_stats stats;
+    segvoronoi_site site;
+    uint32_t s0 = 99, s1 = 99, s2 = 99, p = 99;
+    char *text = NULL;
+    size_t length = 0;
+    CHECK(d != NULL);
+    if (d == NULL) return;
+    check_diagram(d);
+    /* Points (1,2), (3,-1.5), endpoints (0,0), (4,0), the point (7,7); S0. */
+    CHECK(segvoronoi_diagram_site_count(d) == 6);
+    CHECK(segvoronoi_diagram_point_site_count(d) == 5);
+    CHECK_STATUS(segvoronoi_diagram_site_of_segment(d, 0, &s0), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_diagram_site_of_segment(d, 1, &s1), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_diagram_site_of_segment(d, 2, &s2), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_diagram_site_of_segment(d, 3, &p), SEGVORONOI_STATUS_OUT_OF_RANGE);
+    CHECK(s0 == 5 && s1 == s0); /* the repeat shares the first one's site */
+    CHECK_STATUS(segvoronoi_diagram_site(d, s0, &site), SEGVORONOI_STATUS_OK);
+    CHECK(site.kind == SEGVORONOI_SITE_SEGMENT && site.x == 0.0 && site.y == 0.0 && site.x2 == 4.0 && site.y2 == 0.0);
+    CHECK(s2 < 5); /* zero length: a point site */
+    CHECK_STATUS(segvoronoi_diagram_site(d, s2, &site), SEGVORONOI_STATUS_OK);
+    CHECK(site.kind == SEGVORONOI_SITE_POINT && site.x == 7.0 && site.y == 7.0 && site.x2 == 7.0 && site.y2 == 7.0);
+    /* Points are named in the order isolated points, then endpoints. */
+    CHECK_STATUS(segvoronoi_diagram_site_of_input(d, 2, &p), SEGVORONOI_STATUS_OK);
+    CHECK(p == 0);
+    CHECK_STATUS(segvoronoi_diagram_site_of_input(d, 3, &p), SEGVORONOI_STATUS_OUT_OF_RANGE);
+    CHECK_STATUS(segvoronoi_diagram_site(d, 2, &site), SEGVORONOI_STATUS_OK);
+    CHECK(site.kind == SEGVORONOI_SITE_POINT && site.x == 0.0 && site.y == 0.0);
+    CHECK_STATUS(segvoronoi_diagram_site(d, 3, &site), SEGVORONOI_STATUS_OK);
+    CHECK(site.kind == SEGVORONOI_SITE_POINT && site.x == 4.0 && site.y == 0.0);
+
+    CHECK_STATUS(segvoronoi_diagram_stats(d, &stats), SEGVORONOI_STATUS_OK);
+    CHECK(stats.input_points == 3 && stats.input_segments == 3 && stats.sites == 6);
+    CHECK(stats.duplicate_points == 1 && stats.duplicate_segments == 1 && stats.zero_length_segments == 1);
+    CHECK(stats.vertices == segvoronoi_diagram_vertex_count(d) && stats.edges == segvoronoi_diagram_edge_count(d));
+
+    /* Nearest site: just above the middle of the segment, and at an end. */
+    CHECK_STATUS(segvoronoi_diagram_nearest_site(d, 2.0, 0.1, SEGVORONOI_NO_SITE, &p), SEGVORONOI_STATUS_OK);
+    CHECK(p == s0);
+    CHECK_STATUS(segvoronoi_diagram_nearest_site(d, 4.5, -0.1, 0, &p), SEGVORONOI_STATUS_OK);
+    CHECK(p == 3);
+
+    /* Topology: S0 borders its endpoints P2 and P3 (the separators); the
+     * repeat and the zero-length segment have no name of their own. */
+    CHECK_STATUS(segvoronoi_diagram_topology(d, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS, &text, &length),
+                 SEGVORONOI_STATUS_OK);
+    CHECK(text != NULL && strlen(text) == length);
+    CHECK(text != NULL && strstr(text, "\nP2 S0\n") != NULL && strstr(text, "\nP3 S0\n") != NULL);
+    CHECK(text != NULL && strstr(text, "S1") == NULL && strstr(text, "S2") == NULL);
+    segvoronoi_string_free(text);
+    segvoronoi_diagram_free(d);
+}
+
+/* Shapes with shared endpoints and a few disjoint segments: every diagram
+ * passes check_diagram (empty circles measured to closed segments). */
+static void test_segment_shapes(void) {
+    /* A square with its centre point. */
+    const double square[16] = {0, 0, 2, 0, 2, 0, 2, 2, 2, 2, 0, 2, 0, 2, 0, 0};
+    const double centre[2] = {1.0, 0.7};
+    /* A square with a rotated, off-centre square hole. */
+    double holed[32];
+    /* A regular 12-gon. */
+    double gon[48];
+    /* An open polyline (a zigzag) and two isolated points. */
+    const double zigzag[16] = {0, 0, 1, 1, 1, 1, 2, 0, 2, 0, 3, 1.5, 3, 1.5, 4, 0.2};
+    const double around[4] = {2.0, 1.5, 1.0, -1.0};
+    /* Four disjoint segments, all on one line, and a point off the line. */
+    const double ladder[16] = {0, 0, 1, 1, 2, 2, 3, 3, 5, 5, 4, 4, 7, 7, 8, 8};
+    const double off[2] = {0.0, 5.0};
+    /* Four disjoint segments in general position. */
+    const double loose[16] = {0.5665615751722809, 0.74578175726270113, 0.97100275358679622, 0.44435921705577208,
+                              0.28550868439696664, 0.79399660566230557, 0.40414216905022571, 0.60542036897532914,
+                              0.45493790747028962, 0.53007899750158893, 0.43596539982472504, 0.16703498914055104,
+                              0.64533464021950604, 0.81535058336809974, 0.68170497338058855, 0.88432456353978983};
+    segvoronoi_diagram *d;
+    size_t k;
+    char *text = NULL;
+
+    d = build_with_segments(centre, 1, square, 4);
+    if (d != NULL) {
+        check_diagram(d);
+        CHECK(segvoronoi_diagram_site_count(d) == 9 && segvoronoi_diagram_point_site_count(d) == 5);
+        segvoronoi_diagram_free(d);
+    }
+
+    for (k = 0; k < 4; ++k) {
+        const double outer[8] = {0, 0, 10, 0, 10, 10, 0, 10};
+        double angle = 0.3 + 1.5707963267948966 * (double)k, next = angle + 1.5707963267948966;
+        holed[4 * k] = outer[2 * k];
+        holed[4 * k + 1] = outer[2 * k + 1];
+        holed[4 * k + 2] = outer[(2 * k + 2) % 8];
+        holed[4 * k + 3] = outer[(2 * k + 3) % 8];
+        holed[16 + 4 * k] = 4.3 + 2.0 * cos(angle);
+        holed[16 + 4 * k + 1] = 5.7 + 2.0 * sin(angle);
+        holed[16 + 4 * k + 2] = 4.3 + 2.0 * cos(next);
+        holed[16 + 4 * k + 3] = 5.7 + 2.0 * sin(next);
+    }
+    /* Close the inner square exactly: the last side ends where the first begins. */
+    holed[30] = holed[16];
+    holed[31] = holed[17];
+    d = build_with_segments(NULL, 0, holed, 8);
+    if (d != NULL) {
+        check_diagram(d);
+        CHECK(segvoronoi_diagram_site_count(d) == 16);
+        segvoronoi_diagram_free(d);
+    }
+
+    for (k = 0; k < 12; ++k) {
+        double a = 6.283185307179586 * (double)k / 12.0;
+        gon[4 * k] = cos(a);
+        gon[4 * k + 1] = sin(a);
+    }
+    for (k = 0; k < 12; ++k) {
+        gon[4 * k + 2] = gon[4 * ((k + 1) % 12)];
+        gon[4 * k + 3] = gon[4 * ((k + 1) % 12) + 1];
+    }
+    d = build_with_segments(NULL, 0, gon, 12);
+    if (d != NULL) {
+        check_diagram(d);
+        CHECK(segvoronoi_diagram_site_count(d) == 24);
+        /* Every side touches the inscribed circle: one merged vertex of all
+         * twelve segments at the centre. */
+        CHECK_STATUS(segvoronoi_diagram_topology(d, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS, &text, NULL),
+                     SEGVORONOI_STATUS_OK);
+        CHECK(text != NULL && strstr(text, "\nS0 S1 S2 S3 S4 S5 S6 S7 S8 S9 S10 S11\n") != NULL);
+        segvoronoi_string_free(text);
+        segvoronoi_diagram_free(d);
+    }
+
+    d = build_with_segments(around, 2, zigzag, 4);
+    if (d != NULL) {
+        check_diagram(d);
+        CHECK(segvoronoi_diagram_site_count(d) == 11);
+        segvoronoi_diagram_free(d);
+    }
+
+    d = build_with_segments(NULL, 0, ladder, 4);
+    if (d != NULL) {
+        check_diagram(d);
+        CHECK(segvoronoi_diagram_vertex_count(d) == 0 && segvoronoi_diagram_site_count(d) == 12);
+        segvoronoi_diagram_free(d);
+    }
+    d = build_with_segments(off, 1, ladder, 4);
+    if (d != NULL) {
+        check_diagram(d);
+        segvoronoi_diagram_free(d);
+    }
+
+    d = build_with_segments(NULL, 0, loose, 4);
+    if (d != NULL) {
+        check_diagram(d);
+        CHECK(segvoronoi_diagram_site_count(d) == 12);
+        segvoronoi_diagram_free(d);
+    }
+}
+
 int segvoronoi_run_c_tests(void) {
     failures = 0;
     checks = 0;
@@ -509,6 +856,10 @@ int segvoronoi_run_c_tests(void) {
     test_square_with_centre();
     test_lattice();
     test_random_inputs();
+    test_segment_input_rules();
+    test_intersecting_segments();
+    test_segment_sites_and_stats();
+    test_segment_shapes();
     fprintf(stderr, "segvoronoi C API tests: %d checks, %d failed\n", checks, failures);
     return failures;
 }
