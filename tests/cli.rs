@@ -90,6 +90,8 @@ fn demo_svg_is_a_picture() {
     assert!(svg.matches("<circle").count() > 100, "too few dots");
     assert!(svg.matches("<line").count() > 100, "too few edges");
     assert!(!svg.contains("NaN") && !svg.contains("inf"));
+    // The demo's segments: parabolic arcs between them and points.
+    assert!(svg.matches(" Q ").count() >= 10, "too few parabolic arcs");
 }
 
 #[test]
@@ -180,15 +182,96 @@ fn stats_on_stderr() {
     assert!(build_s.is_finite() && build_s >= 0.0);
 }
 
+/// The topology text the library gives for points and segments.
+fn library_topology_with_segments(points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) -> String {
+    let mut b = Builder::new();
+    b.add_points(points.iter().copied()).unwrap();
+    b.add_segments(segments.iter().copied()).unwrap();
+    b.build().unwrap().topology(TopologyOptions::default())
+}
+
+/// A point over a segment (one parabolic edge), a point beside it, and a
+/// second segment sharing an endpoint with the first.
+const WITH_SEGMENTS: &str = "2\n2 2\n7 3\n2\n0 0 4 0\n4 0 5 -2\n";
+
 #[test]
-fn segments_are_refused_with_status_2() {
-    let path = input_file("segments.txt", "2\n0 0\n1 1\n2\n0 0 5 5\n1 0 1 3\n");
-    let o = run(&[path.to_str().unwrap()]);
+fn segment_input_topology_names_segments() {
+    let path = input_file("with-segments.txt", WITH_SEGMENTS);
+    let o = run(&[path.to_str().unwrap(), "--topology"]);
     std::fs::remove_file(&path).unwrap();
-    assert_eq!(o.status.code(), Some(2));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    let expected = library_topology_with_segments(
+        &[[2.0, 2.0], [7.0, 3.0]],
+        &[[[0.0, 0.0], [4.0, 0.0]], [[4.0, 0.0], [5.0, -2.0]]],
+    );
+    assert_eq!(out, expected);
+    // P0 (2,2) over S0: a parabolic edge; S0 and S1 meet at their shared endpoint.
+    assert!(out.contains("\nP0 S0\n") && out.contains("S0 S1"), "{out}");
+}
+
+#[test]
+fn segment_stats() {
+    // Segment 1 repeats segment 0 reversed; segment 2 has zero length.
+    let o = run_with_stdin(&["-", "--stats"], "1\n2 2\n3\n0 0 4 0\n4 0 0 0\n9 9 9 9\n");
+    assert!(o.status.success(), "{}", stderr(&o));
     let err = stderr(&o);
-    assert!(err.contains("line-segment sites are not supported yet (2 segments in"), "{err}");
-    assert!(err.contains("segments.txt"), "{err}");
+    for line in [
+        "input_points=1",
+        "input_segments=3",
+        "duplicate_segments=1",
+        "zero_length_segments=1",
+        "segment_sites=1",
+        "sites=5",
+        "parabolic_edges=1",
+    ] {
+        assert!(err.lines().any(|l| l == line), "no {line} in {err}");
+    }
+}
+
+#[test]
+fn crossing_segments_exit_1_naming_both_indices() {
+    let path = input_file("crossing.txt", "1\n9 9\n3\n0 0 2 2\n5 5 6 5\n0 2 2 0\n");
+    let o = run(&[path.to_str().unwrap(), "--topology"]);
+    std::fs::remove_file(&path).unwrap();
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).is_empty());
+    let err = stderr(&o);
+    assert!(err.contains("crossing.txt") && err.contains("segments 0 and 2 cross"), "{err}");
+    // A point inside a segment, and a non-finite segment coordinate.
+    let o = run_with_stdin(&["-"], "1\n1 1\n1\n0 0 2 2\n");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("point 0") && stderr(&o).contains("segment 0"), "{}", stderr(&o));
+    let o = run_with_stdin(&["-"], "0\n2\n0 0 1 0\n0 1 inf 1\n");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("segment 1"), "{}", stderr(&o));
+}
+
+#[test]
+fn svg_draws_parabolic_edges_as_quadratic_beziers() {
+    let path = temp_path("arcs.svg");
+    let o = run_with_stdin(&["-", "--svg", path.to_str().unwrap()], WITH_SEGMENTS);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(&path).unwrap();
+    std::fs::remove_file(&path).unwrap();
+    assert!(!svg.contains("NaN") && !svg.contains("inf"));
+    let mut b = Builder::new();
+    b.add_points([[2.0, 2.0], [7.0, 3.0]]).unwrap();
+    b.add_segments([[[0.0, 0.0], [4.0, 0.0]], [[4.0, 0.0], [5.0, -2.0]]]).unwrap();
+    let d = b.build().unwrap();
+    let arcs = d.edges().filter(|e| d.edge_bezier(e.id).is_some()).count();
+    assert!(arcs >= 2);
+    let paths: Vec<&str> = svg.lines().filter(|l| l.starts_with(r#"<path d="M "#)).collect();
+    // One arc (of (5,-2) under the first segment) lies below the picture.
+    assert!((1..=arcs).contains(&paths.len()), "{arcs} arcs: {svg}");
+    for p in paths {
+        let words: Vec<&str> = p.trim_start_matches(r#"<path d=""#).trim_end_matches(r#""/>"#).split(' ').collect();
+        assert_eq!((words.len(), words[0], words[3]), (8, "M", "Q"), "{p}");
+        assert!(words.iter().enumerate().all(|(k, w)| k % 3 == 0 || w.parse::<f64>().is_ok()), "{p}");
+    }
+    // The two segment sites are thick lines of their own.
+    let segments = &svg[svg.find(r#"<g id="segments""#).unwrap()..];
+    assert_eq!(segments[..segments.find("</g>").unwrap()].matches("<line").count(), 2);
 }
 
 #[test]

@@ -119,7 +119,10 @@ fn one_point_over_one_segment_by_hand() {
     let e = parabolic[0];
     assert_eq!(
         d.edge_shape(e.id),
-        Some(EdgeShape::Parabola { focus: Point::new(2.0, 2.0), directrix: [Point::new(0.0, 0.0), Point::new(4.0, 0.0)] })
+        Some(EdgeShape::Parabola {
+            focus: Point::new(2.0, 2.0),
+            directrix: [Point::new(0.0, 0.0), Point::new(4.0, 0.0)]
+        })
     );
     let [b0, b1, b2] = d.edge_bezier(e.id).unwrap();
     let mut xs = [b0.x, b2.x];
@@ -274,7 +277,13 @@ fn extreme_magnitudes_scale_exactly() {
             let (a, b) = (reference.edge_polyline(e.id, tol), d.edge_polyline(e.id, tol * factor));
             assert_eq!(a.is_some(), b.is_some());
             if let (Some(a), Some(b)) = (a, b) {
-                assert_eq!(a.len(), b.len(), "{e:?} factor {factor:e}: {:?} vs {:?}", reference.edge_shape(e.id), d.edge_shape(e.id));
+                assert_eq!(
+                    a.len(),
+                    b.len(),
+                    "{e:?} factor {factor:e}: {:?} vs {:?}",
+                    reference.edge_shape(e.id),
+                    d.edge_shape(e.id)
+                );
                 for (p, q) in a.iter().zip(&b) {
                     assert!(q.is_finite() && p.distance(Point::new(q.x / factor, q.y / factor)) < 1e-12, "{p:?} {q:?}");
                 }
@@ -348,7 +357,10 @@ fn c_edge_shape_agrees_with_rust() {
                     parabolas += 1;
                     assert_eq!(out.kind, SEGVORONOI_EDGE_PARABOLA);
                     assert_eq!((out.focus_x, out.focus_y), (focus.x, focus.y));
-                    assert_eq!([out.directrix_x1, out.directrix_y1, out.directrix_x2, out.directrix_y2], [a.x, a.y, b.x, b.y]);
+                    assert_eq!(
+                        [out.directrix_x1, out.directrix_y1, out.directrix_x2, out.directrix_y2],
+                        [a.x, a.y, b.x, b.y]
+                    );
                 }
             }
         }

@@ -63,7 +63,9 @@ impl EdgeShape {
         };
         let Site::Segment { a, b } = segment else { return EdgeShape::Line };
         let f = to_internal;
-        if segment.has_endpoint(focus) || orientation(a.scaled(f), b.scaled(f), focus.scaled(f)) == Orientation::Collinear {
+        if segment.has_endpoint(focus)
+            || orientation(a.scaled(f), b.scaled(f), focus.scaled(f)) == Orientation::Collinear
+        {
             return EdgeShape::Line;
         }
         EdgeShape::Parabola { focus, directrix: [a, b] }

@@ -7,28 +7,33 @@ use std::path::PathBuf;
 pub const USAGE: &str = "\
 Usage: segvoronoi [INPUT] [--svg OUT.svg] [--topology] [--voronoi-pairs] [--stats]
 
-Builds the Voronoi diagram of the points in INPUT.
+Builds the Voronoi diagram of the points and line segments in INPUT.
 
 INPUT is Boost.Polygon's voronoi text format: a count P, then P lines `x y`,
-then a count S and S lines `x1 y1 x2 y2` (line segments, not supported yet;
-a missing S means 0). Tokens are separated by any whitespace. `-` reads
-standard input. Without INPUT a built-in demo (a jittered ring, a cluster,
-collinear points, a grid of cocircular points and a repeated point) is used.
+then a count S and S lines `x1 y1 x2 y2` (line segments; a missing S means
+0). Tokens are separated by any whitespace. `-` reads standard input.
+Segments may share endpoints but must not cross, overlap or pass through a
+point. Without INPUT a built-in demo (a jittered ring, a cluster, collinear
+points, a grid of cocircular points, a repeated point, short segments and a
+polyline) is used.
 
 Options:
-  --svg OUT.svg      draw the diagram: edges, vertices (small dots), sites
+  --svg OUT.svg      draw the diagram: edges (parabolic arcs as exact
+                     quadratic Bezier curves), vertices (small dots), sites
+                     (dots; segments as thick lines)
   --topology         print the canonical topology text on standard output
   --voronoi-pairs    add the VPAIRS and VVERTICES sections (implies --topology)
   --stats            print key=value statistics on standard error
   -h, --help         print this help
   -V, --version      print the version
 
-Exit status: 0 on success, 1 when the library rejects the input (e.g. a
-non-finite coordinate) or an output cannot be written, 2 for usage errors,
-unreadable or malformed input, and line-segment sites.
+Exit status: 0 on success, 1 when the library rejects the input (a
+non-finite coordinate, segments that cross or overlap, a point inside a
+segment: the message names the input indices) or an output cannot be
+written, 2 for usage errors and unreadable or malformed input.
 ";
 
-/// Where the points come from.
+/// Where the input comes from.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Source {
     /// The built-in demo input.

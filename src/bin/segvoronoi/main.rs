@@ -1,6 +1,7 @@
-//! `segvoronoi`: builds the Voronoi diagram of the points in a Boost.Polygon
-//! voronoi text file (or of a built-in demo) and writes an SVG picture, the
-//! canonical topology text and statistics. `segvoronoi --help` for usage.
+//! `segvoronoi`: builds the Voronoi diagram of the points and line segments
+//! in a Boost.Polygon voronoi text file (or of a built-in demo) and writes an
+//! SVG picture, the canonical topology text and statistics. `segvoronoi
+//! --help` for usage.
 
 mod args;
 mod demo;
@@ -48,10 +49,14 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
         Ok(Command::Version) => return print(&format!("segvoronoi {}\n", segvoronoi::VERSION)),
         Err(message) => return Err(bad_input(format!("{message}\nTry 'segvoronoi --help'."))),
     };
-    let (name, points) = read_points(&options.source)?;
+    let (name, input) = read_input(&options.source)?;
 
+    // Library errors (a non-finite coordinate, crossing segments) name the
+    // input indices: exit status 1 with that message.
     let mut builder = Builder::new();
-    builder.add_points(points).map_err(|e| failed(format!("{name}: {e}")))?;
+    builder.add_points(input.points).map_err(|e| failed(format!("{name}: {e}")))?;
+    let segments = input.segments.into_iter().map(|[x1, y1, x2, y2]| [[x1, y1], [x2, y2]]);
+    builder.add_segments(segments).map_err(|e| failed(format!("{name}: {e}")))?;
     // Only the construction is timed: not reading, not writing.
     let start = Instant::now();
     let diagram = builder.build().map_err(|e| failed(format!("{name}: {e}")))?;
@@ -83,10 +88,10 @@ fn wants_output(options: &Options) -> bool {
     options.svg.is_some() || options.topology || options.stats
 }
 
-/// The points of the chosen input and a name for it in messages.
-fn read_points(source: &Source) -> Result<(String, Vec<[f64; 2]>), Failure> {
+/// The points and segments of the chosen input and a name for it in messages.
+fn read_input(source: &Source) -> Result<(String, input::Input), Failure> {
     let (name, bytes) = match source {
-        Source::Demo => return Ok(("demo input".into(), demo::points())),
+        Source::Demo => return Ok(("demo input".into(), demo::input())),
         Source::Stdin => {
             let mut bytes = Vec::new();
             std::io::stdin()
@@ -101,13 +106,7 @@ fn read_points(source: &Source) -> Result<(String, Vec<[f64; 2]>), Failure> {
     };
     // Invalid UTF-8 becomes U+FFFD and so a parse error on the right line.
     let input = input::parse(&String::from_utf8_lossy(&bytes)).map_err(|e| bad_input(format!("{name}: {e}")))?;
-    if !input.segments.is_empty() {
-        return Err(bad_input(format!(
-            "line-segment sites are not supported yet ({} segments in {name})",
-            input.segments.len()
-        )));
-    }
-    Ok((name, input.points))
+    Ok((name, input))
 }
 
 /// Writes to standard output; a closed pipe is an output error, not a panic.

@@ -3,29 +3,38 @@
 
 use std::fmt::Write;
 
-use segvoronoi::{Diagram, EdgeEnd};
+use segvoronoi::{Diagram, EdgeEnd, EdgeShape};
 
 /// The report for a diagram whose construction took `build_s` seconds.
 pub fn report(diagram: &Diagram, build_s: f64) -> String {
     let stats = diagram.stats();
-    let (mut segments, mut rays, mut lines) = (0usize, 0usize, 0usize);
+    let (mut segments, mut rays, mut lines, mut arcs) = (0usize, 0usize, 0usize, 0usize);
     for edge in diagram.edges() {
         match edge.ends {
             [EdgeEnd::Vertex(_), EdgeEnd::Vertex(_)] => segments += 1,
             [EdgeEnd::Infinite { .. }, EdgeEnd::Infinite { .. }] => lines += 1,
             _ => rays += 1,
         }
+        if matches!(diagram.edge_shape(edge.id), Some(EdgeShape::Parabola { .. })) {
+            arcs += 1;
+        }
     }
+    let segment_sites = diagram.site_count() - diagram.point_site_count();
     let mut out = String::new();
-    let figures: [(&str, &dyn std::fmt::Display); 9] = [
+    let figures: [(&str, &dyn std::fmt::Display); 14] = [
         ("input_points", &stats.input_points),
+        ("input_segments", &stats.input_segments),
         ("sites", &stats.sites),
+        ("segment_sites", &segment_sites),
         ("duplicates", &stats.duplicate_points),
+        ("duplicate_segments", &stats.duplicate_segments),
+        ("zero_length_segments", &stats.zero_length_segments),
         ("vertices", &stats.vertices),
         ("edges", &stats.edges),
         ("finite_edges", &segments),
         ("rays", &rays),
         ("lines", &lines),
+        ("parabolic_edges", &arcs),
         ("build_s", &format_args!("{build_s:.6}")),
     ];
     for (key, value) in figures {
@@ -61,6 +70,28 @@ mod tests {
         assert_eq!(value(&r, "rays"), "4");
         assert_eq!(value(&r, "lines"), "0");
         assert_eq!(value(&r, "build_s").parse::<f64>().unwrap(), 0.25);
+        for key in ["input_segments", "segment_sites", "duplicate_segments", "zero_length_segments", "parabolic_edges"]
+        {
+            assert_eq!(value(&r, key), "0", "{key}");
+        }
+    }
+
+    #[test]
+    fn segment_counts() {
+        // Two equal segments (one reversed), a zero-length one, and a point
+        // above the first: sites are the point, the two endpoints, the
+        // zero-length segment's point, and one open segment.
+        let mut b = segvoronoi::Builder::new();
+        b.add_segments([[[0.0, 0.0], [4.0, 0.0]], [[4.0, 0.0], [0.0, 0.0]], [[9.0, 9.0], [9.0, 9.0]]]).unwrap();
+        b.add_point(2.0, 2.0).unwrap();
+        let r = report(&b.build().unwrap(), 0.0);
+        assert_eq!(value(&r, "input_points"), "1");
+        assert_eq!(value(&r, "input_segments"), "3");
+        assert_eq!(value(&r, "duplicate_segments"), "1");
+        assert_eq!(value(&r, "zero_length_segments"), "1");
+        assert_eq!(value(&r, "segment_sites"), "1");
+        assert_eq!(value(&r, "sites"), "5");
+        assert_eq!(value(&r, "parabolic_edges"), "1");
     }
 
     #[test]

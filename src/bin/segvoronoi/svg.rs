@@ -1,6 +1,9 @@
 //! The SVG picture: the sites' bounding box plus a margin, fitted into about
-//! 800 pixels, y axis up; edges as thin lines, rays and lines clipped to the
-//! picture; vertices as small dots, sites as bigger dots of another colour.
+//! 800 pixels, y axis up; edges as thin lines, parabolic arcs as the exact
+//! quadratic Bézier curves the library gives (`<path d="M .. Q .. .."/>`),
+//! rays and lines clipped to the picture; vertices as small dots, point
+//! sites as bigger dots of another colour, segment sites as thick lines of
+//! that colour (their endpoints are point sites: dots).
 //!
 //! All geometry is done in "normalised" coordinates, the input multiplied by
 //! an exact power of two that brings the largest magnitude near 1, so that
@@ -10,7 +13,7 @@
 
 use std::fmt::Write;
 
-use segvoronoi::{Diagram, Edge, EdgeEnd, Point};
+use segvoronoi::{Diagram, Edge, EdgeEnd, Point, Site};
 
 /// The longer side of the picture, in pixels.
 const SIZE_PX: f64 = 800.0;
@@ -25,6 +28,8 @@ const VERTEX_COLOUR: &str = "#1d3f66";
 const SITE_COLOUR: &str = "#d9480f";
 const VERTEX_RADIUS: f64 = 2.0;
 const SITE_RADIUS: f64 = 3.5;
+/// Stroke width of segment sites, in pixels.
+const SEGMENT_WIDTH: f64 = 3.0;
 
 /// Maps input coordinates to normalised ones and those to pixels.
 struct Frame {
@@ -89,6 +94,16 @@ impl Frame {
         (self.low.x..=self.high.x).contains(&p.x) && (self.low.y..=self.high.y).contains(&p.y)
     }
 
+    /// Whether the bounding box of `points` meets the visible rectangle. A
+    /// Bézier curve lies in the hull of its control points, so one whose
+    /// box misses the picture is invisible.
+    fn touches_hull(&self, points: &[Point]) -> bool {
+        let fold = |f: fn(f64, f64) -> f64, start: f64, c: fn(&Point) -> f64| points.iter().map(c).fold(start, f);
+        let (lx, hx) = (fold(f64::min, f64::INFINITY, |p| p.x), fold(f64::max, f64::NEG_INFINITY, |p| p.x));
+        let (ly, hy) = (fold(f64::min, f64::INFINITY, |p| p.y), fold(f64::max, f64::NEG_INFINITY, |p| p.y));
+        lx <= self.high.x && hx >= self.low.x && ly <= self.high.y && hy >= self.low.y
+    }
+
     /// The part of `start + t·dir`, `t` in `[t0, t1]`, inside the visible
     /// rectangle (Liang–Barsky), or `None` if it misses it.
     fn clip(&self, start: Point, dir: Point, mut t0: f64, mut t1: f64) -> Option<(Point, Point)> {
@@ -131,46 +146,71 @@ fn power_of_two_near_inverse(max_abs: f64) -> f64 {
     2f64.powi(-exponent)
 }
 
-/// The direction of travel along the bisector of `left` and `right` that
-/// keeps `left` on the left: `left - right` turned a quarter clockwise. This
-/// is how an edge runs from `ends[0]` to `ends[1]` (see [`Edge::sites`]).
-fn walking_direction(left: Point, right: Point) -> Point {
-    Point::new(left.y - right.y, -(left.x - right.x))
-}
-
-/// The visible piece of an edge, normalised.
-fn visible_piece(diagram: &Diagram, frame: &Frame, edge: &Edge) -> Option<(Point, Point)> {
-    let vertex = |v| frame.unit(diagram.vertex(v).expect("edge ends are vertices of the diagram").position);
-    let (left, right) = (frame.unit(site_point(diagram, edge.sites[0])), frame.unit(site_point(diagram, edge.sites[1])));
-    let dir = walking_direction(left, right);
-    let back = Point::new(-dir.x, -dir.y);
-    match edge.ends {
-        [EdgeEnd::Vertex(a), EdgeEnd::Vertex(b)] => {
-            let (p, q) = (vertex(a), vertex(b));
-            frame.clip(p, Point::new(q.x - p.x, q.y - p.y), 0.0, 1.0)
-        }
-        [EdgeEnd::Vertex(a), EdgeEnd::Infinite { .. }] => frame.clip(vertex(a), dir, 0.0, f64::INFINITY),
-        [EdgeEnd::Infinite { .. }, EdgeEnd::Vertex(b)] => frame.clip(vertex(b), back, 0.0, f64::INFINITY),
-        [EdgeEnd::Infinite { .. }, EdgeEnd::Infinite { .. }] => {
-            // A whole line (all sites collinear): through the sites' midpoint.
-            let middle = Point::new((left.x + right.x) / 2.0, (left.y + right.y) / 2.0);
-            frame.clip(middle, dir, f64::NEG_INFINITY, f64::INFINITY)
-        }
+/// A point of the line that an edge with both ends at infinity lies on (all
+/// sites collinear): the midpoint of two point sites, or the point itself
+/// when the other site is a segment ending there (a separator).
+fn line_anchor(diagram: &Diagram, edge: &Edge) -> Point {
+    match edge.sites.map(|s| diagram.site(s)) {
+        [Site::Point(p), Site::Point(q)] => Point::new(p.x / 2.0 + q.x / 2.0, p.y / 2.0 + q.y / 2.0),
+        [Site::Point(p), s] | [s, Site::Point(p)] if s.has_endpoint(p) => p,
+        // Not expected on collinear input; a site's middle keeps it drawable.
+        [a, _] => site_middle(a),
     }
 }
 
-/// A point standing for a site: the point, or a segment's midpoint.
-fn site_point(diagram: &Diagram, s: segvoronoi::SiteId) -> Point {
-    match diagram.site(s) {
-        segvoronoi::Site::Point(p) => p,
-        segvoronoi::Site::Segment { a, b } => Point::new(a.x / 2.0 + b.x / 2.0, a.y / 2.0 + b.y / 2.0),
+/// How an edge is drawn, normalised: a straight piece or a quadratic Bézier
+/// curve `[start, control, end]`.
+enum Piece {
+    Line(Point, Point),
+    Curve([Point; 3]),
+}
+
+/// The visible piece of an edge, normalised, or `None` if it misses the
+/// picture. Finite parabolic arcs are the library's exact Bézier curves
+/// (left to the SVG viewport to clip); rays and lines start at their vertex
+/// (or a point of the line) and run in the library's direction at infinity.
+fn visible_piece(diagram: &Diagram, frame: &Frame, edge: &Edge) -> Option<Piece> {
+    let vertex = |v| frame.unit(diagram.vertex(v).expect("edge ends are vertices of the diagram").position);
+    match edge.ends {
+        [EdgeEnd::Vertex(a), EdgeEnd::Vertex(b)] => {
+            if let Some(curve) = diagram.edge_bezier(edge.id) {
+                let curve = curve.map(|p| frame.unit(p));
+                return frame.touches_hull(&curve).then_some(Piece::Curve(curve));
+            }
+            let (p, q) = (vertex(a), vertex(b));
+            frame.clip(p, Point::new(q.x - p.x, q.y - p.y), 0.0, 1.0).map(|(p, q)| Piece::Line(p, q))
+        }
+        // Both directions point away from the finite end, towards infinity.
+        [EdgeEnd::Vertex(a), EdgeEnd::Infinite { direction }]
+        | [EdgeEnd::Infinite { direction }, EdgeEnd::Vertex(a)] => {
+            frame.clip(vertex(a), direction, 0.0, f64::INFINITY).map(|(p, q)| Piece::Line(p, q))
+        }
+        [EdgeEnd::Infinite { .. }, EdgeEnd::Infinite { direction }] => frame
+            .clip(frame.unit(line_anchor(diagram, edge)), direction, f64::NEG_INFINITY, f64::INFINITY)
+            .map(|(p, q)| Piece::Line(p, q)),
+    }
+}
+
+/// The middle of a site: the point, or a segment's midpoint.
+fn site_middle(site: Site) -> Point {
+    match site {
+        Site::Point(p) => p,
+        Site::Segment { a, b } => Point::new(a.x / 2.0 + b.x / 2.0, a.y / 2.0 + b.y / 2.0),
     }
 }
 
 /// The SVG document for a diagram.
 pub fn render(diagram: &Diagram) -> String {
-    let sites: Vec<Point> = diagram.site_ids().map(|s| site_point(diagram, s)).collect();
-    let frame = Frame::new(&sites);
+    // The picture frames every point site; segment endpoints are point sites.
+    let points: Vec<Point> = diagram.site_ids().filter_map(|s| diagram.site(s).as_point()).collect();
+    let segments: Vec<(Point, Point)> = diagram
+        .site_ids()
+        .filter_map(|s| match diagram.site(s) {
+            Site::Segment { a, b } => Some((a, b)),
+            Site::Point(_) => None,
+        })
+        .collect();
+    let frame = Frame::new(&points);
     let (width, height) = (frame.width(), frame.height());
     let mut out = String::new();
     let _ = writeln!(
@@ -179,23 +219,36 @@ pub fn render(diagram: &Diagram) -> String {
     );
     let _ = writeln!(
         out,
-        "<!-- segvoronoi: {} sites, {} vertices, {} edges -->",
+        "<!-- segvoronoi: {} sites ({} segments), {} vertices, {} edges -->",
         diagram.site_count(),
+        segments.len(),
         diagram.vertex_count(),
         diagram.edge_count()
     );
     let _ = writeln!(out, r#"<rect width="100%" height="100%" fill="white"/>"#);
 
-    let _ = writeln!(out, r#"<g stroke="{EDGE_COLOUR}" stroke-width="1.2" stroke-linecap="round">"#);
+    let _ =
+        writeln!(out, r#"<g id="edges" stroke="{EDGE_COLOUR}" stroke-width="1.2" stroke-linecap="round" fill="none">"#);
     for edge in diagram.edges() {
-        let Some((p, q)) = visible_piece(diagram, &frame, &edge) else { continue };
-        if let (Some((x1, y1)), Some((x2, y2))) = (frame.pixel(p), frame.pixel(q)) {
-            let _ = writeln!(out, r#"<line x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}"/>"#);
+        match visible_piece(diagram, &frame, &edge) {
+            Some(Piece::Line(p, q)) => {
+                if let (Some((x1, y1)), Some((x2, y2))) = (frame.pixel(p), frame.pixel(q)) {
+                    let _ = writeln!(out, r#"<line x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}"/>"#);
+                }
+            }
+            Some(Piece::Curve([p, c, q])) => {
+                if let (Some((x0, y0)), Some((cx, cy)), Some((x1, y1))) =
+                    (frame.pixel(p), frame.pixel(c), frame.pixel(q))
+                {
+                    let _ = writeln!(out, r#"<path d="M {x0:.2} {y0:.2} Q {cx:.2} {cy:.2} {x1:.2} {y1:.2}"/>"#);
+                }
+            }
+            None => {}
         }
     }
     let _ = writeln!(out, "</g>");
 
-    let _ = writeln!(out, r#"<g fill="{VERTEX_COLOUR}">"#);
+    let _ = writeln!(out, r#"<g id="vertices" fill="{VERTEX_COLOUR}">"#);
     for v in diagram.vertices() {
         let p = frame.unit(v.position);
         if frame.contains(p) {
@@ -204,9 +257,20 @@ pub fn render(diagram: &Diagram) -> String {
     }
     let _ = writeln!(out, "</g>");
 
-    let _ = writeln!(out, r#"<g fill="{SITE_COLOUR}">"#);
-    for &s in &sites {
-        write_dot(&mut out, &frame, frame.unit(s), SITE_RADIUS);
+    let _ = writeln!(
+        out,
+        r#"<g id="segments" stroke="{SITE_COLOUR}" stroke-width="{SEGMENT_WIDTH}" stroke-linecap="round">"#
+    );
+    for &(a, b) in &segments {
+        if let (Some((x1, y1)), Some((x2, y2))) = (frame.pixel(frame.unit(a)), frame.pixel(frame.unit(b))) {
+            let _ = writeln!(out, r#"<line x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}"/>"#);
+        }
+    }
+    let _ = writeln!(out, "</g>");
+
+    let _ = writeln!(out, r#"<g id="sites" fill="{SITE_COLOUR}">"#);
+    for &p in &points {
+        write_dot(&mut out, &frame, frame.unit(p), SITE_RADIUS);
     }
     let _ = writeln!(out, "</g>");
     out.push_str("</svg>\n");
@@ -244,33 +308,94 @@ mod tests {
         values
     }
 
+    /// The text of the group with this id.
+    fn group<'a>(svg: &'a str, id: &str) -> &'a str {
+        let start = svg.find(&format!(r#"<g id="{id}""#)).unwrap_or_else(|| panic!("no group {id}"));
+        let len = svg[start..].find("</g>").unwrap();
+        &svg[start..start + len]
+    }
+
+    /// The straight edges: `<line>` elements of the edges group.
     fn lines(svg: &str) -> Vec<[f64; 4]> {
-        svg.lines()
-            .filter(|l| l.starts_with("<line"))
+        numbers_of(group(svg, "edges"), "<line")
+    }
+
+    /// The first four numbers in the quoted attributes of each element
+    /// starting with `tag`.
+    fn numbers_of(text: &str, tag: &str) -> Vec<[f64; 4]> {
+        text.lines()
+            .filter(|l| l.starts_with(tag))
             .map(|l| {
-                let v: Vec<f64> = l.split('"').skip(1).step_by(2).map(|a| a.parse().unwrap()).collect();
+                let v: Vec<f64> = l.split('"').skip(1).step_by(2).filter_map(|a| a.parse().ok()).collect();
                 [v[0], v[1], v[2], v[3]]
             })
             .collect()
     }
 
+    /// The parabolic arcs: `[x0, y0, cx, cy, x1, y1]` of each `<path>`.
+    fn curves(svg: &str) -> Vec<[f64; 6]> {
+        group(svg, "edges")
+            .lines()
+            .filter_map(|l| l.strip_prefix(r#"<path d=""#))
+            .map(|d| {
+                let d = d.trim_end_matches(r#""/>"#);
+                let words: Vec<&str> = d.split(' ').collect();
+                assert_eq!((words.len(), words[0], words[3]), (8, "M", "Q"), "{d}");
+                let v: Vec<f64> = words.iter().filter_map(|a| a.parse().ok()).collect();
+                [v[0], v[1], v[2], v[3], v[4], v[5]]
+            })
+            .collect()
+    }
+
+    fn with_segments(points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) -> Diagram {
+        let mut b = Builder::new();
+        b.add_points(points.iter().copied()).unwrap();
+        b.add_segments(segments.iter().copied()).unwrap();
+        b.build().unwrap()
+    }
+
     #[test]
-    fn our_ray_direction_agrees_with_the_library() {
-        let d = diagram(&[[0.0, 0.0], [4.0, 0.5], [1.0, 3.0], [3.0, 3.5], [2.0, 1.5], [-1.0, 2.0]]);
-        let mut rays = 0;
-        for e in d.edges() {
-            let dir = walking_direction(site_point(&d, e.sites[0]), site_point(&d, e.sites[1]));
-            for (k, end) in e.ends.iter().enumerate() {
-                if let EdgeEnd::Infinite { direction } = *end {
-                    // ends[1] lies ahead along the walk, ends[0] behind it.
-                    let sign = if k == 1 { 1.0 } else { -1.0 };
-                    let cos = sign * (dir.x * direction.x + dir.y * direction.y) / (dir.x.hypot(dir.y));
-                    assert!((cos - 1.0).abs() < 1e-9, "edge {:?}: {dir:?} vs {direction:?}", e);
-                    rays += 1;
-                }
+    fn rays_follow_the_library_direction() {
+        // The segment (0,0)-(4,0) under the point (2,2): below the segment
+        // its cell is the strip 0 < x < 4, bounded by the separators, two
+        // vertical rays down from (0,2) and (4,2). A direction made up from
+        // the sites' middles would tilt them.
+        let d = with_segments(&[[2.0, 2.0]], &[[[0.0, 0.0], [4.0, 0.0]]]);
+        let svg = render(&d);
+        check_numbers(&svg);
+        let height: f64 = svg.split('"').nth(5).unwrap().parse().unwrap();
+        let vertical: Vec<[f64; 4]> = lines(&svg).into_iter().filter(|l| (l[0] - l[2]).abs() < 1e-9).collect();
+        assert_eq!(vertical.len(), 2, "{svg}");
+        for l in &vertical {
+            // From the vertex down to the bottom border (rounded up to whole pixels).
+            assert!((l[1].max(l[3]) - height).abs() < 1.0, "{l:?} of {height}");
+        }
+        let frame = Frame::new(&[Point::new(2.0, 2.0), Point::new(0.0, 0.0), Point::new(4.0, 0.0)]);
+        let four_units = 4.0 * frame.to_unit * frame.px;
+        assert!(((vertical[0][0] - vertical[1][0]).abs() - four_units).abs() < 0.02, "{vertical:?}");
+    }
+
+    #[test]
+    fn parabolic_arcs_are_bezier_paths_from_vertex_to_vertex() {
+        let d = with_segments(&[[2.0, 2.0], [6.0, 3.0]], &[[[0.0, 0.0], [4.0, 0.0]], [[1.0, 4.0], [3.0, 5.5]]]);
+        let svg = render(&d);
+        check_numbers(&svg);
+        let arcs: Vec<[Point; 3]> = d.edges().filter_map(|e| d.edge_bezier(e.id)).collect();
+        assert!(arcs.len() >= 2);
+        let drawn = curves(&svg);
+        assert_eq!(drawn.len(), arcs.len(), "{svg}");
+        let points: Vec<Point> = d.site_ids().filter_map(|s| d.site(s).as_point()).collect();
+        let frame = Frame::new(&points);
+        for (c, arc) in drawn.iter().zip(arcs) {
+            for (k, p) in arc.into_iter().enumerate() {
+                let (x, y) = frame.pixel(frame.unit(p)).unwrap();
+                assert!((c[2 * k] - x).abs() <= 0.005 && (c[2 * k + 1] - y).abs() <= 0.005, "{c:?} vs {p:?}");
             }
         }
-        assert!(rays >= 4);
+        // Each segment site is one thick line; every point site a dot.
+        assert_eq!(numbers_of(group(&svg, "segments"), "<line").len(), 2);
+        assert_eq!(group(&svg, "sites").matches("<circle").count(), d.point_site_count());
+        assert_eq!(lines(&svg).len() + drawn.len(), d.edge_count(), "every edge of this small input is visible");
     }
 
     #[test]
