@@ -846,6 +846,70 @@ static void test_segment_shapes(void) {
     }
 }
 
+/* Edge geometry: a point above a segment's middle gives parabolic arcs; a
+ * polyline of one follows the buffer rules and stays equidistant from its
+ * two sites; straight edges have two points. */
+static void test_edge_geometry(void) {
+    const double seg[4] = {0.0, 0.0, 4.0, 0.0};
+    segvoronoi_builder *builder = segvoronoi_builder_new();
+    segvoronoi_diagram *d = NULL;
+    size_t e, parabolas = 0, lines = 0;
+    CHECK(builder != NULL);
+    if (builder == NULL) return;
+    CHECK_STATUS(segvoronoi_builder_add_segments(builder, seg, 1), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_add_point(builder, 2.0, 2.0), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_add_point(builder, 1.0, -3.0), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_build(builder, &d), SEGVORONOI_STATUS_OK);
+    segvoronoi_builder_free(builder);
+    if (d == NULL) return;
+    for (e = 0; e < segvoronoi_diagram_edge_count(d); ++e) {
+        segvoronoi_edge_shape shape;
+        segvoronoi_edge edge;
+        size_t needed = 0, got = 0, k;
+        double *xy;
+        CHECK_STATUS(segvoronoi_diagram_edge_shape(d, e, &shape), SEGVORONOI_STATUS_OK);
+        CHECK_STATUS(segvoronoi_diagram_edge(d, e, &edge), SEGVORONOI_STATUS_OK);
+        if (edge.ends[0].vertex == SEGVORONOI_NO_VERTEX || edge.ends[1].vertex == SEGVORONOI_NO_VERTEX) {
+            CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, e, 1e-3, NULL, 0, &needed),
+                         SEGVORONOI_STATUS_INVALID_ARGUMENT);
+            continue;
+        }
+        CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, e, 0.0, NULL, 0, &needed), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+        CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, e, 1e-3, NULL, 1, &needed), SEGVORONOI_STATUS_NULL_ARGUMENT);
+        CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, e, 1e-3, NULL, 0, &needed), SEGVORONOI_STATUS_BUFFER_TOO_SMALL);
+        xy = (double *)malloc(2 * (needed + 1) * sizeof *xy);
+        CHECK(xy != NULL);
+        if (xy == NULL) continue;
+        CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, e, 1e-3, xy, needed + 1, &got), SEGVORONOI_STATUS_OK);
+        CHECK(got == needed && got >= 2);
+        CHECK(xy[0] == edge.ends[0].x && xy[1] == edge.ends[0].y);
+        CHECK(xy[2 * (got - 1)] == edge.ends[1].x && xy[2 * got - 1] == edge.ends[1].y);
+        if (shape.kind == SEGVORONOI_EDGE_PARABOLA) {
+            ++parabolas;
+            for (k = 0; k < got; ++k) { /* focus and directrix (the x axis here) equidistant */
+                double to_focus = hypot(xy[2 * k] - shape.focus_x, xy[2 * k + 1] - shape.focus_y);
+                CHECK(fabs(to_focus - fabs(xy[2 * k + 1])) < 1e-9);
+            }
+        } else {
+            CHECK(shape.kind == SEGVORONOI_EDGE_LINE);
+            CHECK(got == 2);
+            ++lines;
+        }
+        free(xy);
+    }
+    CHECK(parabolas >= 2 && lines >= 1);
+    {
+        segvoronoi_edge_shape shape;
+        size_t n = 0;
+        CHECK_STATUS(segvoronoi_diagram_edge_shape(NULL, 0, &shape), SEGVORONOI_STATUS_NULL_ARGUMENT);
+        CHECK_STATUS(segvoronoi_diagram_edge_shape(d, 0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+        CHECK_STATUS(segvoronoi_diagram_edge_shape(d, 1000, &shape), SEGVORONOI_STATUS_OUT_OF_RANGE);
+        CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, 1000, 1e-3, NULL, 0, &n), SEGVORONOI_STATUS_OUT_OF_RANGE);
+        CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, 0, 1e-3, NULL, 0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    }
+    segvoronoi_diagram_free(d);
+}
+
 int segvoronoi_run_c_tests(void) {
     failures = 0;
     checks = 0;
@@ -860,6 +924,7 @@ int segvoronoi_run_c_tests(void) {
     test_intersecting_segments();
     test_segment_sites_and_stats();
     test_segment_shapes();
+    test_edge_geometry();
     fprintf(stderr, "segvoronoi C API tests: %d checks, %d failed\n", checks, failures);
     return failures;
 }

@@ -1,11 +1,12 @@
 //! # segvoronoi
 //!
-//! The Voronoi diagram of points in the plane (line segments follow), built by
+//! The Voronoi diagram of points and line segments in the plane, built by
 //! the topology-oriented method of Sugihara, Iri and Imai: the combinatorial
 //! structure is kept valid by integer bookkeeping alone, and floating point
 //! only chooses among valid structures. The build never fails on degenerate
-//! or near-degenerate input, and with the exact predicates used here the
-//! topology is the exact one.
+//! or near-degenerate input. For point sites, with the exact predicates used
+//! here, the topology is the exact one; segment sites are newer and still
+//! have known gaps (see `ARCHITECTURE.md`).
 //!
 //! ```
 //! use segvoronoi::{Builder, EdgeEnd};

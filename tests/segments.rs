@@ -253,3 +253,106 @@ fn small_star() {
     let d = build(&[[3.0, 0.5]], &segs);
     check_geometry(&d, 1e-9);
 }
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// Segments and points on a jittered grid with a random fraction of
+    /// cells holding a segment, some cells joined into polylines with the
+    /// next cell's point (shared endpoints), and some points snapped to a
+    /// coarse lattice (cocircular and collinear subsets).
+    fn scene() -> impl Strategy<Value = (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>)> {
+        (2usize..9, any::<u64>(), 0.0f64..1.0, any::<bool>()).prop_map(|(side, seed, share, snap)| {
+            let mut rng = Rng(seed);
+            let mut coord = |base: f64| {
+                let v = base + 0.1 + 0.8 * rng.unit();
+                if snap {
+                    (v * 4.0).round() / 4.0
+                } else {
+                    v
+                }
+            };
+            let (mut pts, mut segs) = (Vec::new(), Vec::new());
+            let mut prev: Option<[f64; 2]> = None;
+            for i in 0..side {
+                for j in 0..side {
+                    let (x, y) = (i as f64, j as f64);
+                    let a = [coord(x), coord(y)];
+                    let b = [coord(x), coord(y)];
+                    if a == b {
+                        pts.push(a);
+                        continue;
+                    }
+                    segs.push([a, b]);
+                    // join to the previous cell's segment end: both ends lie in
+                    // adjacent cells of one column, so nothing else is crossed
+                    if let Some(p) = prev {
+                        if j > 0 && share > 0.5 {
+                            segs.push([p, a]);
+                        }
+                    }
+                    prev = Some(b);
+                }
+                prev = None;
+            }
+            (pts, segs)
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+        #[test]
+        fn segment_diagrams_validate((pts, segs) in scene()) {
+            let mut b = Builder::new();
+            b.add_points(pts.iter().copied()).unwrap();
+            b.add_segments(segs.iter().copied()).unwrap();
+            match b.build() {
+                Ok(d) => d.validate().unwrap_or_else(|e| panic!("{e}")),
+                Err(e) => {
+                    prop_assert_eq!(e.kind(), ErrorKind::Intersecting);
+                    prop_assert_eq!(e.indices().len(), 2);
+                }
+            }
+        }
+
+        /// Known failure (issue 3): nearly degenerate configurations of
+        /// segments sharing endpoints (and two plain disjoint segments, see
+        /// the CGAL check) get a deletion set the segment insertion cannot
+        /// take (a conflicting vertex adjacent to two tree vertices), and a
+        /// vertex off its true position. Run with `--ignored`.
+        #[test]
+        #[ignore]
+        fn segment_diagrams_are_geometrically_right((pts, segs) in scene()) {
+            let mut b = Builder::new();
+            b.add_points(pts.iter().copied()).unwrap();
+            b.add_segments(segs.iter().copied()).unwrap();
+            match b.build() {
+                Ok(d) => check_geometry(&d, 1e-9),
+                // joined polylines may cross a neighbour's segment: then the
+                // input is refused, with both indices
+                Err(e) => {
+                    prop_assert_eq!(e.kind(), ErrorKind::Intersecting);
+                    prop_assert_eq!(e.indices().len(), 2);
+                }
+            }
+        }
+
+        #[test]
+        fn power_of_two_scaling_keeps_the_topology((pts, segs) in scene(), k in -40i32..40) {
+            let f = 2f64.powi(k);
+            let build_scaled = |f: f64| {
+                let mut b = Builder::new();
+                b.add_points(pts.iter().map(|p| [p[0] * f, p[1] * f])).unwrap();
+                b.add_segments(segs.iter().map(|s| s.map(|p| [p[0] * f, p[1] * f]))).unwrap();
+                b.build().map(|d| d.topology(TopologyOptions::default()))
+            };
+            match (build_scaled(1.0), build_scaled(f)) {
+                (Ok(a), Ok(b)) => prop_assert_eq!(a, b),
+                (Err(a), Err(b)) => prop_assert_eq!(a.indices(), b.indices()),
+                _ => prop_assert!(false, "scaling changed whether the input is valid"),
+            }
+        }
+    }
+}

@@ -111,7 +111,7 @@ pub struct segvoronoi_stats {
 }
 
 /// Runs `f` on the diagram behind a checked, non-null pointer.
-fn with_diagram(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> segvoronoi_status) -> segvoronoi_status {
+pub(super) fn with_diagram(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> segvoronoi_status) -> segvoronoi_status {
     require_non_null!(d);
     // SAFETY: non-null; the caller passes a live diagram (shared reads are fine).
     guard(|| f(&unsafe { &*d }.inner))
@@ -126,7 +126,7 @@ fn count(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> usize) -> usi
 }
 
 /// Writes `value` through `out` and reports success.
-fn write_out<T>(out: *mut T, value: T) -> segvoronoi_status {
+pub(super) fn write_out<T>(out: *mut T, value: T) -> segvoronoi_status {
     // SAFETY: callers check `out` for NULL first; it points to writable memory.
     unsafe { out.write(value) };
     segvoronoi_status::Ok

@@ -2,8 +2,8 @@
 //! polyline along it. Delegates to `Diagram::edge_shape` and
 //! `Diagram::edge_polyline`.
 
-use super::diagram::segvoronoi_diagram;
-use super::plumbing::{guard, require_non_null, segvoronoi_status};
+use super::diagram::{segvoronoi_diagram, with_diagram, write_out};
+use super::plumbing::{require_non_null, segvoronoi_status};
 use crate::{Diagram, EdgeId, EdgeShape};
 
 /// `segvoronoi_edge_shape.kind` of a straight edge: between two points,
@@ -32,33 +32,6 @@ pub struct segvoronoi_edge_shape {
     pub directrix_x2: f64,
     /// Second point of the directrix (the segment site's second endpoint).
     pub directrix_y2: f64,
-}
-
-// `segvoronoi_diagram` keeps its `Diagram` in a private field and the
-// helpers `with_diagram`/`write_out` are private to `diagram.rs`. Until they
-// are shared (`pub(super)`), this module reaches the diagram through the
-// layout fact below: a struct whose only field is as large as the struct
-// itself holds that field at offset 0, so a pointer to the one is a pointer
-// to the other.
-const _: () = assert!(
-    std::mem::size_of::<segvoronoi_diagram>() == std::mem::size_of::<Diagram>()
-        && std::mem::align_of::<segvoronoi_diagram>() == std::mem::align_of::<Diagram>()
-);
-
-/// Runs `f` on the diagram behind a checked, non-null pointer, turning a
-/// panic into `INTERNAL`.
-fn with_diagram(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> segvoronoi_status) -> segvoronoi_status {
-    require_non_null!(d);
-    // SAFETY: non-null; the caller passes a live diagram (shared reads are
-    // fine); its only field, the `Diagram`, is at offset 0 (asserted above).
-    guard(|| f(unsafe { &*(d as *const Diagram) }))
-}
-
-/// Writes `value` through `out` (checked non-null by the caller).
-fn write_out<T>(out: *mut T, value: T) -> segvoronoi_status {
-    // SAFETY: callers check `out` for NULL first; it points to writable memory.
-    unsafe { out.write(value) };
-    segvoronoi_status::Ok
 }
 
 /// The shape of edge `edge_index` (`0 <= edge_index < edge_count`) in
