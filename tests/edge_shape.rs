@@ -5,37 +5,9 @@
 
 mod common;
 
-use common::Rng;
+use common::{build_sites as build, segment_grid};
 use segvoronoi::ffi::*;
-use segvoronoi::{Builder, Diagram, EdgeEnd, EdgeId, EdgeShape, Point, Site};
-
-fn build(points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) -> Diagram {
-    let mut b = Builder::new();
-    b.add_points(points.iter().copied()).unwrap();
-    b.add_segments(segments.iter().copied()).unwrap();
-    let d = b.build().unwrap_or_else(|e| panic!("{e}"));
-    d.validate().unwrap_or_else(|e| panic!("{e}"));
-    d
-}
-
-/// Points and short segments on a jittered grid, one item per cell (as in
-/// tests/segments.rs): no two segments meet.
-fn jittered(side: usize, seed: u64) -> (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>) {
-    let mut rng = Rng(seed);
-    let (mut pts, mut segs) = (Vec::new(), Vec::new());
-    for i in 0..side {
-        for j in 0..side {
-            let (x, y) = (i as f64, j as f64);
-            let a = [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()];
-            if rng.unit() < 0.5 {
-                segs.push([a, [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()]]);
-            } else {
-                pts.push(a);
-            }
-        }
-    }
-    (pts, segs)
-}
+use segvoronoi::{Diagram, EdgeEnd, EdgeId, EdgeShape, Point, Site};
 
 /// How much farther `q` is from one site of the edge than from the other.
 fn imbalance(d: &Diagram, sites: [segvoronoi::SiteId; 2], q: Point) -> f64 {
@@ -160,7 +132,7 @@ fn the_chord_check_catches_a_missing_curve() {
 fn random_points_and_segments() {
     let mut arcs = 0;
     for seed in 0..12 {
-        let (pts, segs) = jittered(3 + seed as usize % 8, seed);
+        let (pts, segs) = segment_grid(3 + seed as usize % 8, seed, 0.5);
         let d = build(&pts, &segs);
         for tol in [1e-2, 1e-5] {
             arcs += check_edges(&d, tol, 1e-9);

@@ -102,24 +102,6 @@ mod small_inputs {
     }
 }
 
-/// Short disjoint segments and points on a jittered grid (one item a cell).
-fn segment_grid(side: usize, seed: u64) -> (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>) {
-    let mut rng = Rng(seed);
-    let (mut pts, mut segs) = (Vec::new(), Vec::new());
-    for i in 0..side {
-        for j in 0..side {
-            let (x, y) = (i as f64, j as f64);
-            let a = [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()];
-            if rng.unit() < 0.7 {
-                segs.push([a, [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()]]);
-            } else {
-                pts.push(a);
-            }
-        }
-    }
-    (pts, segs)
-}
-
 fn build_segments_under(mode: FaultMode, seed: u64, points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) {
     set_fault_mode(mode, seed);
     let mut b = Builder::new();
@@ -134,7 +116,7 @@ fn build_segments_under(mode: FaultMode, seed: u64, points: &[[f64; 2]], segment
 #[test]
 fn segments_with_relative_noise() {
     for seed in 0..4 {
-        let (pts, segs) = segment_grid(40, seed);
+        let (pts, segs) = segment_grid(40, seed, 0.7);
         build_segments_under(FaultMode::Noise(1e-3), seed, &pts, &segs);
     }
 }
@@ -147,7 +129,7 @@ fn segments_with_relative_noise() {
 #[ignore]
 fn segments_with_random_arithmetic() {
     for seed in 0..4 {
-        let (pts, segs) = segment_grid(40, seed);
+        let (pts, segs) = segment_grid(40, seed, 0.7);
         build_segments_under(FaultMode::Random, seed, &pts, &segs);
     }
 }

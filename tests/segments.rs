@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::Rng;
+use common::{build_sites as build, segment_grid, Rng};
 use segvoronoi::{Builder, Diagram, ErrorKind, Point, Site, TopologyOptions};
 
 /// Every vertex is equidistant from its three sites and no site is closer
@@ -22,38 +22,10 @@ fn check_geometry(d: &Diagram, tol: f64) {
     }
 }
 
-fn build(points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) -> Diagram {
-    let mut b = Builder::new();
-    b.add_points(points.iter().copied()).unwrap();
-    b.add_segments(segments.iter().copied()).unwrap();
-    let d = b.build().unwrap_or_else(|e| panic!("{e}"));
-    d.validate().unwrap_or_else(|e| panic!("{e}"));
-    d
-}
-
-/// Points and short segments on a jittered grid: one item per cell, so no
-/// two segments meet.
-fn jittered(side: usize, seed: u64) -> (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>) {
-    let mut rng = Rng(seed);
-    let (mut pts, mut segs) = (Vec::new(), Vec::new());
-    for i in 0..side {
-        for j in 0..side {
-            let (x, y) = (i as f64, j as f64);
-            let a = [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()];
-            if rng.unit() < 0.5 {
-                segs.push([a, [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()]]);
-            } else {
-                pts.push(a);
-            }
-        }
-    }
-    (pts, segs)
-}
-
 #[test]
 fn random_disjoint_segments_and_points() {
     for seed in 0..30 {
-        let (pts, segs) = jittered(4 + seed as usize % 12, seed);
+        let (pts, segs) = segment_grid(4 + seed as usize % 12, seed, 0.5);
         let d = build(&pts, &segs);
         assert_eq!(d.site_count(), pts.len() + 3 * segs.len());
         check_geometry(&d, 1e-9);

@@ -346,12 +346,7 @@ impl PointDiagram {
             for slot in 0..3 {
                 let back = self.store.twin(u.half_edge(slot));
                 let w = back.origin();
-                if self.vertex_mark[w.index()] == epoch {
-                    continue;
-                }
-                // P1: w's other two edges must not lead into T (no cycle).
-                let in_tree = |h: HalfEdgeId| self.vertex_mark[self.store.target(h).index()] == epoch;
-                if in_tree(back.rotate(1)) || in_tree(back.rotate(2)) {
+                if !self.would_stay_a_tree(back) {
                     continue;
                 }
                 // P2: w's third cell must not have lost a piece already.
@@ -367,6 +362,14 @@ impl PointDiagram {
                 self.tree.push(w);
             }
         }
+    }
+
+    /// P1: whether the vertex `back` leaves (towards the tree, by `back`)
+    /// can join the tree as a leaf: it is not in the tree, and neither of its
+    /// other two edges leads into it (which would close a cycle).
+    fn would_stay_a_tree(&self, back: HalfEdgeId) -> bool {
+        let in_tree = |h: HalfEdgeId| self.vertex_mark[self.store.target(h).index()] == self.epoch;
+        self.vertex_mark[back.origin().index()] != self.epoch && !in_tree(back.rotate(1)) && !in_tree(back.rotate(2))
     }
 
     /// The next edge leaving the tree after `h` (which leaves it too), going

@@ -74,3 +74,32 @@ pub fn check_nearest_sites(d: &Diagram, queries: &[Point], tol: f64) {
 pub fn ray_count(d: &Diagram) -> usize {
     d.edges().filter(|e| matches!(e.ends, [EdgeEnd::Vertex(_), EdgeEnd::Infinite { .. }] | [EdgeEnd::Infinite { .. }, EdgeEnd::Vertex(_)])).count()
 }
+
+/// Points and short segments on a jittered grid, one item per cell (a
+/// segment with probability `segment_share`): no two segments meet.
+pub fn segment_grid(side: usize, seed: u64, segment_share: f64) -> (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>) {
+    let mut rng = Rng(seed);
+    let (mut pts, mut segs) = (Vec::new(), Vec::new());
+    for i in 0..side {
+        for j in 0..side {
+            let (x, y) = (i as f64, j as f64);
+            let a = [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()];
+            if rng.unit() < segment_share {
+                segs.push([a, [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()]]);
+            } else {
+                pts.push(a);
+            }
+        }
+    }
+    (pts, segs)
+}
+
+/// The diagram of points and segments, validated.
+pub fn build_sites(points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) -> Diagram {
+    let mut b = Builder::new();
+    b.add_points(points.iter().copied()).unwrap();
+    b.add_segments(segments.iter().copied()).unwrap();
+    let d = b.build().unwrap_or_else(|e| panic!("{e}"));
+    d.validate().unwrap_or_else(|e| panic!("{e}"));
+    d
+}

@@ -505,11 +505,7 @@ impl PointDiagram {
             for slot in 0..3 {
                 let back = self.store.twin(u.half_edge(slot));
                 let w = back.origin();
-                if self.vertex_mark[w.index()] == epoch {
-                    continue;
-                }
-                let in_tree = |h: HalfEdgeId| self.vertex_mark[self.store.target(h).index()] == epoch;
-                if in_tree(back.rotate(1)) || in_tree(back.rotate(2)) || self.is_separator(back) {
+                if !self.would_stay_a_tree(back) || self.is_separator(back) {
                     continue;
                 }
                 // P5: R(a) and R(b), touched by the path, must not be touched again.
