@@ -121,12 +121,7 @@ fn segments_with_relative_noise() {
     }
 }
 
-/// Known failure (issue 3): with random arithmetic the walk, its relaxed
-/// form and the breadth-first fallback can all miss a path from `R(a)` to
-/// `R(b)` that keeps P3, P5 and the separators; the segment then lacks its
-/// separator with `b` and `validate()` says so. Run with `--ignored`.
 #[test]
-#[ignore]
 fn segments_with_random_arithmetic() {
     for seed in 0..4 {
         let (pts, segs) = segment_grid(40, seed, 0.7);

@@ -59,6 +59,7 @@ pub(crate) struct PointDiagram {
     cell_mark: Vec<u32>,
     epoch: u32,
     tree: Vec<VertexId>,
+    /// Per cut: the leaving half-edge and the cells on its right and left.
     cuts: Vec<(HalfEdgeId, SiteId, SiteId)>,
     new_vertices: Vec<VertexId>,
     /// Site ids from here on are open segments (`u32::MAX`: none yet).
@@ -366,10 +367,23 @@ impl PointDiagram {
 
     /// P1: whether the vertex `back` leaves (towards the tree, by `back`)
     /// can join the tree as a leaf: it is not in the tree, and neither of its
-    /// other two edges leads into it (which would close a cycle).
+    /// other two edges leads into it (which would close a cycle). A
+    /// separator between two tree vertices closes no cycle: it is cut at
+    /// both ends and its middle stays (see `leaves_tree`).
     fn would_stay_a_tree(&self, back: HalfEdgeId) -> bool {
-        let in_tree = |h: HalfEdgeId| self.vertex_mark[self.store.target(h).index()] == self.epoch;
+        let in_tree = |h: HalfEdgeId| {
+            self.vertex_mark[self.store.target(h).index()] == self.epoch && !self.is_separator(h)
+        };
         self.vertex_mark[back.origin().index()] != self.epoch && !in_tree(back.rotate(1)) && !in_tree(back.rotate(2))
+    }
+
+    /// Whether `h`, leaving a tree vertex, is cut by the new cell: it leads
+    /// out of the tree, or it is a separator between a segment and its
+    /// endpoint `p` with both ends in the tree. The circles centred on a
+    /// separator all touch `p`, shrinking to nothing there, so its middle
+    /// never conflicts: such an edge is cut twice and its middle stays.
+    fn leaves_tree(&self, h: HalfEdgeId) -> bool {
+        self.vertex_mark[self.store.target(h).index()] != self.epoch || self.is_separator(h)
     }
 
     /// The next edge leaving the tree after `h` (which leaves it too), going
@@ -379,11 +393,10 @@ impl PointDiagram {
         let mut current = h;
         loop {
             let candidate = current.rotate(1);
-            let back = self.store.twin(candidate);
-            if self.vertex_mark[back.origin().index()] != self.epoch {
+            if self.leaves_tree(candidate) {
                 return candidate;
             }
-            current = back;
+            current = self.store.twin(candidate);
         }
     }
 
@@ -394,19 +407,33 @@ impl PointDiagram {
             .tree
             .iter()
             .flat_map(|u| (0..3).map(move |k| u.half_edge(k)))
-            .find(|&h| self.vertex_mark[self.store.target(h).index()] != epoch)
+            .find(|&h| self.leaves_tree(h))
             .expect("a tree that is not the whole diagram has an edge leaving it");
 
         // Walk around the tree; each edge leaving it gets one new vertex.
         self.cuts.clear();
         let mut h = start;
         loop {
-            self.cuts.push((self.store.twin(h), self.store.right(h), self.store.left(h)));
+            self.cuts.push((h, self.store.right(h), self.store.left(h)));
             h = self.next_cut(h);
             if h == start {
                 break;
             }
         }
+        // What each new vertex's outward edge joins: the kept part of its
+        // edge, or for a separator cut at both ends the other new vertex.
+        let outside: Vec<Result<HalfEdgeId, usize>> = self
+            .cuts
+            .iter()
+            .map(|&(h, _, _)| {
+                let t = self.store.twin(h);
+                if self.vertex_mark[t.origin().index()] != epoch {
+                    Ok(t)
+                } else {
+                    Err(self.cuts.iter().position(|&(g, _, _)| g == t).unwrap_or(usize::MAX))
+                }
+            })
+            .collect();
 
         // New vertices reuse the tree's slots (a tree of m degree-3 vertices
         // has m + 2 leaving edges).
@@ -417,12 +444,19 @@ impl PointDiagram {
         }
         let k = self.cuts.len();
         debug_assert_eq!(k, self.tree.len() + 2, "P1 keeps the deleted set a tree");
-        for j in 0..k {
-            let (outside, right, left) = self.cuts[j];
+        for (j, &link) in outside.iter().enumerate() {
+            let (_, right, left) = self.cuts[j];
             let v = self.new_vertices[j];
             let v_next = self.new_vertices[(j + 1) % k];
             self.set_sites(v, [right, left, s]);
-            self.store.link(v.half_edge(0), outside);
+            match link {
+                Ok(t) => self.store.link(v.half_edge(0), t),
+                Err(partner) => {
+                    if let Some(&w) = self.new_vertices.get(partner) {
+                        self.store.link(v.half_edge(0), w.half_edge(0));
+                    }
+                }
+            }
             self.store.link(v.half_edge(1), v_next.half_edge(2));
             self.store.cell_edge[left.index()] = v.half_edge(0).0;
             self.vertex_mark[v.index()] = 0;
