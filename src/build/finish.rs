@@ -128,13 +128,11 @@ pub(super) fn finish(
 }
 
 fn bounding_box_diagonal(point_sites: &[Site]) -> f64 {
-    let points: Vec<Point> = point_sites.iter().filter_map(|s| if let Site::Point(p) = *s { Some(p) } else { None }).collect();
-    let Some(&first) = points.first() else { return 0.0 };
-    let (mut lo, mut hi) = (first, first);
-    for &p in &points {
-        lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
-        hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
-    }
+    let mut points = point_sites.iter().filter_map(Site::as_point);
+    let Some(first) = points.next() else { return 0.0 };
+    let (lo, hi) = points.fold((first, first), |(lo, hi), p| {
+        (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y)))
+    });
     // halve first so that the extent of huge inputs does not overflow
     let (dx, dy) = (hi.x / 2.0 - lo.x / 2.0, hi.y / 2.0 - lo.y / 2.0);
     2.0 * dx.hypot(dy)

@@ -211,13 +211,19 @@ fn check_capacity(count: usize) -> Result<(), Error> {
 
 /// The Voronoi diagram of finite points.
 fn build_points(input: &[Point]) -> Diagram {
-    let max_abs = input.iter().fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-    let scale = Scale::for_max_abs(max_abs);
-    let points: Vec<Point> = input.iter().map(|p| p.scaled(scale.to_internal).canonical_zero()).collect();
+    let (scale, points) = to_internal(input);
     let (diagram, site_of_input, _) = construct(&points, &[]);
     let diagram = finish::finish(diagram, &site_of_input, input, &[], scale);
     debug_assert_eq!(diagram.validate(), Ok(()));
     diagram
+}
+
+/// The power-of-two scale for `input` and the input in the construction's
+/// coordinates (scaled, with `-0` made `+0`).
+fn to_internal(input: &[Point]) -> (Scale, Vec<Point>) {
+    let max_abs = input.iter().fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+    let scale = Scale::for_max_abs(max_abs);
+    (scale, input.iter().map(|p| p.scaled(scale.to_internal).canonical_zero()).collect())
 }
 
 /// Runs the insertions: every point, then every segment (given by the

@@ -51,7 +51,7 @@
 //! sweep position and special handling of the shared endpoints that are the
 //! normal case here; the grid needs only the orientation predicate.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use crate::geometry::predicates::{orientation, strictly_between, Orientation};
 use crate::geometry::scale::Scale;
@@ -83,6 +83,9 @@ pub(crate) struct CheckedInput {
     pub duplicate_segments: usize,
     /// Zero-length segments (each became a point, or merged with one).
     pub degenerate_segments: usize,
+    /// Per input segment: the index in `segments` of the kept segment it is
+    /// or repeats; `None` for a zero-length segment.
+    pub kept_of_input: Vec<Option<usize>>,
 }
 
 /// Why the input cannot be built: the kind of intersection and the two input
@@ -159,6 +162,7 @@ pub(crate) fn check_segments(points: &[Point], segments: &[[Point; 2]]) -> Resul
         duplicate_points: norm.duplicate_points,
         duplicate_segments: norm.duplicate_segments,
         degenerate_segments: norm.degenerate_segments,
+        kept_of_input: norm.kept_of_input,
     })
 }
 
@@ -187,6 +191,7 @@ struct Normalised {
     duplicate_points: usize,
     duplicate_segments: usize,
     degenerate_segments: usize,
+    kept_of_input: Vec<Option<usize>>,
 }
 
 /// Bit pattern of a point with canonical zeros: equal points, equal keys.
@@ -207,19 +212,25 @@ fn segment_key(a: Point, b: Point) -> [u64; 4] {
 fn normalise(points: &[Point], segments: &[[Point; 2]], internal: impl Fn(Point) -> Point) -> Normalised {
     let mut out = Normalised::default();
     let mut degenerate = Vec::new();
-    let mut seen_segments = HashSet::with_capacity(segments.len());
+    let mut kept_by_key: HashMap<[u64; 4], usize> = HashMap::with_capacity(segments.len());
     for (i, s) in segments.iter().enumerate() {
         let (a, b) = (internal(s[0]), internal(s[1]));
         if a == b {
             out.degenerate_segments += 1;
             degenerate.push((PointSource::Segment(i), a));
-        } else if seen_segments.insert(segment_key(a, b)) {
+            out.kept_of_input.push(None);
+            continue;
+        }
+        let kept = *kept_by_key.entry(segment_key(a, b)).or_insert_with(|| {
             out.segments.push((i, [a, b]));
-        } else {
+            out.segments.len() - 1
+        });
+        if out.segments[kept].0 != i {
             out.duplicate_segments += 1;
         }
+        out.kept_of_input.push(Some(kept));
     }
-    drop(seen_segments);
+    drop(kept_by_key);
     let mut seen_points: HashSet<[u64; 2]> = out.segments.iter().flat_map(|(_, s)| s.map(point_key)).collect();
     let isolated = points
         .iter()
@@ -621,6 +632,7 @@ mod tests {
         .unwrap();
         assert_eq!(out.segments, vec![(0, s(0., 0., 1., 0.))]);
         assert_eq!(out.duplicate_segments, 3);
+        assert_eq!(out.kept_of_input, vec![Some(0); 4]);
     }
 
     #[test]

@@ -2,14 +2,11 @@
 //! the naming order (isolated points, then each segment's first and second
 //! endpoint), insert the points and then the segments, renumber.
 
-use std::collections::HashMap;
-
 use super::finish::{self, SegmentSite};
 use super::segment_input::{check_segments, Conflict};
-use super::construct;
+use super::{construct, to_internal};
 use crate::diagram::{Diagram, SiteId};
 use crate::error::{Error, ErrorKind};
-use crate::geometry::scale::Scale;
 use crate::geometry::Point;
 
 pub(super) fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<Diagram, Error> {
@@ -21,9 +18,7 @@ pub(super) fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<D
     for s in segments {
         all.extend_from_slice(s);
     }
-    let max_abs = all.iter().fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-    let scale = Scale::for_max_abs(max_abs);
-    let scaled: Vec<Point> = all.iter().map(|p| p.scaled(scale.to_internal).canonical_zero()).collect();
+    let (scale, scaled) = to_internal(&all);
 
     let endpoint_index = |j: usize| [points.len() + 2 * j, points.len() + 2 * j + 1];
     let kept: Vec<usize> = checked.segments.iter().map(|&(j, _)| j).collect();
@@ -37,24 +32,14 @@ pub(super) fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<D
     let mut diagram = finish::finish(built, &site_of_input, &all, &described, scale);
 
     // Per input segment, its site: a kept one its own, a repeat the first
-    // one with the same endpoints, a zero-length one the point it became.
-    let key = |[a, b]: [Point; 2]| {
-        let (a, b) = (a.canonical_zero(), b.canonical_zero());
-        let (ka, kb) = ((a.x.to_bits(), a.y.to_bits()), (b.x.to_bits(), b.y.to_bits()));
-        if ka <= kb {
-            (ka, kb)
-        } else {
-            (kb, ka)
-        }
-    };
+    // one's, a zero-length one the point it became.
     let first_segment_site = diagram.point_sites;
-    let site_of_kept: HashMap<_, SiteId> =
-        kept.iter().enumerate().map(|(k, &j)| (key(segments[j]), SiteId::from_index(first_segment_site + k))).collect();
-    diagram.segment_site = segments
+    diagram.segment_site = checked
+        .kept_of_input
         .iter()
         .enumerate()
-        .map(|(j, &s)| match site_of_kept.get(&key(s)) {
-            Some(&site) => site,
+        .map(|(j, kept)| match *kept {
+            Some(k) => SiteId::from_index(first_segment_site + k),
             None => diagram.input_site[endpoint_index(j)[0]],
         })
         .collect();
