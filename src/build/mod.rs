@@ -108,9 +108,10 @@ impl Builder {
         Ok(())
     }
 
-    /// Makes room for `additional` more segments (each counts as two points
-    /// towards [`MAX_POINTS`]).
-    fn reserve_segments(&mut self, additional: usize) -> Result<(), Error> {
+    /// Makes room for `additional` more segments, or fails with
+    /// [`ErrorKind::TooLarge`] (the builder unchanged) when the points and
+    /// segment endpoints together would exceed [`MAX_POINTS`].
+    pub fn reserve_segments(&mut self, additional: usize) -> Result<(), Error> {
         let points = self.points.len().saturating_add(self.segments.len().saturating_add(additional).saturating_mul(2));
         check_capacity(points)?;
         self.segments.reserve(additional);

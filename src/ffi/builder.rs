@@ -79,22 +79,12 @@ pub unsafe extern "C" fn segvoronoi_builder_add_points(
     xy: *const f64,
     count: usize,
 ) -> segvoronoi_status {
-    require_non_null!(builder);
-    if count > 0 {
-        require_non_null!(xy);
+    // SAFETY: passed on from the caller (see `add_flat`).
+    unsafe {
+        add_flat::<2>(builder, xy, count, Builder::reserve, |b, c| {
+            b.add_points(c.chunks_exact(2).map(|c| [c[0], c[1]]))
+        })
     }
-    guard(|| {
-        // SAFETY: non-null; the caller keeps builder exclusive and xy valid for 2*count reads.
-        let b = unsafe { &mut *builder };
-        // Checked before `xy` is turned into a slice: a count this large
-        // cannot describe a real buffer.
-        if let Err(e) = b.inner.reserve(count) {
-            return b.record(Err(e));
-        }
-        let coords: &[f64] = if count == 0 { &[] } else { unsafe { std::slice::from_raw_parts(xy, 2 * count) } };
-        let r = b.inner.add_points(coords.chunks_exact(2).map(|c| [c[0], c[1]]));
-        b.record(r)
-    })
 }
 
 /// Adds the segment from `(x1, y1)` to `(x2, y2)`. Its input index is the
@@ -133,18 +123,41 @@ pub unsafe extern "C" fn segvoronoi_builder_add_segments(
     xy: *const f64,
     count: usize,
 ) -> segvoronoi_status {
+    // SAFETY: passed on from the caller (see `add_flat`).
+    unsafe {
+        add_flat::<4>(builder, xy, count, Builder::reserve_segments, |b, c| {
+            b.add_segments(c.chunks_exact(4).map(|c| [[c[0], c[1]], [c[2], c[3]]]))
+        })
+    }
+}
+
+/// Bulk input shared by the `add_points` / `add_segments` calls: `count`
+/// items of `STRIDE` doubles at `xy`, all or none. The room is checked with
+/// `reserve` before `xy` is turned into a slice (a count that large cannot
+/// describe a real buffer).
+///
+/// Safety: `builder` is NULL or a live builder used by this thread only;
+/// `xy` is valid for `STRIDE * count` reads when `count > 0`.
+unsafe fn add_flat<const STRIDE: usize>(
+    builder: *mut segvoronoi_builder,
+    xy: *const f64,
+    count: usize,
+    reserve: impl FnOnce(&mut Builder, usize) -> Result<(), Error>,
+    add: impl FnOnce(&mut Builder, &[f64]) -> Result<(), Error>,
+) -> segvoronoi_status {
     require_non_null!(builder);
     if count > 0 {
         require_non_null!(xy);
     }
     guard(|| {
-        // SAFETY: non-null; the caller keeps builder exclusive and xy valid for 4*count reads.
+        // SAFETY: non-null; the caller keeps the builder exclusive.
         let b = unsafe { &mut *builder };
-        if let Err(e) = b.inner.reserve(count.saturating_mul(2)) {
+        if let Err(e) = reserve(&mut b.inner, count) {
             return b.record(Err(e));
         }
-        let coords: &[f64] = if count == 0 { &[] } else { unsafe { std::slice::from_raw_parts(xy, 4 * count) } };
-        let r = b.inner.add_segments(coords.chunks_exact(4).map(|c| [[c[0], c[1]], [c[2], c[3]]]));
+        // SAFETY: non-null, valid for STRIDE * count reads (the caller's promise).
+        let coords: &[f64] = if count == 0 { &[] } else { unsafe { std::slice::from_raw_parts(xy, STRIDE * count) } };
+        let r = add(&mut b.inner, coords);
         b.record(r)
     })
 }
