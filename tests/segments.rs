@@ -3,24 +3,8 @@
 
 mod common;
 
-use common::{build_sites as build, segment_grid, Rng};
+use common::{build_sites as build, check_empty_circles as check_geometry, segment_grid, Rng};
 use segvoronoi::{Builder, Diagram, ErrorKind, Point, Site, TopologyOptions};
-
-/// Every vertex is equidistant from its three sites and no site is closer
-/// (within `tol` times the input scale), with distances to segments.
-fn check_geometry(d: &Diagram, tol: f64) {
-    let scale = d.extent().max(f64::MIN_POSITIVE);
-    for v in d.vertices() {
-        for s in v.sites {
-            let dist = d.site(s).distance(v.position);
-            assert!((dist - v.clearance).abs() <= tol * scale, "vertex {} sites {:?}: site {s} at {dist}, clearance {}", v.id, v.sites, v.clearance);
-        }
-        for s in d.site_ids() {
-            let dist = d.site(s).distance(v.position);
-            assert!(dist >= v.clearance - tol * scale, "vertex {} sites {:?}: site {s} {:?} inside ({dist} < {})", v.id, v.sites, d.site(s), v.clearance);
-        }
-    }
-}
 
 #[test]
 fn random_disjoint_segments_and_points() {

@@ -35,7 +35,8 @@ pub fn build(points: &[[f64; 2]]) -> Diagram {
 }
 
 /// Every vertex is equidistant from its three sites (within `tol` of the
-/// input scale) and no site is closer than those (empty circle).
+/// input scale) and no site is closer than those (empty circle), with
+/// distances to segment sites measured to the closed segment.
 pub fn check_empty_circles(d: &Diagram, tol: f64) {
     let scale = d.extent().max(f64::MIN_POSITIVE);
     for v in d.vertices() {
