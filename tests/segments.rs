@@ -4,7 +4,7 @@
 mod common;
 
 use common::{build_sites as build, check_empty_circles as check_geometry, segment_grid, Rng};
-use segvoronoi::{Builder, Diagram, ErrorKind, Point, Site, TopologyOptions};
+use segvoronoi::{Builder, ErrorKind, Point, Site, TopologyOptions};
 
 #[test]
 fn random_disjoint_segments_and_points() {
