@@ -33,6 +33,18 @@ endif()
 target_link_libraries(segvoronoi_cgal_check PRIVATE
   segvoronoi::segvoronoi ${SEGVORONOI_MPFR_LIBRARY} ${SEGVORONOI_GMP_LIBRARY})
 
+# One test per "family count timeout" entry, named cgal_<family>_<count>.
+function(segvoronoi_cgal_family_tests)
+  foreach(_run IN LISTS ARGN)
+    separate_arguments(_run)
+    list(GET _run 0 _family)
+    list(GET _run 1 _count)
+    list(GET _run 2 _timeout)
+    add_test(NAME cgal_${_family}_${_count} COMMAND segvoronoi_cgal_check ${_family} ${_count})
+    set_tests_properties(cgal_${_family}_${_count} PROPERTIES TIMEOUT ${_timeout} LABELS cgal)
+  endforeach()
+endfunction()
+
 # family, point count, timeout in seconds
 set(_segvoronoi_cgal_runs
   "uniform 1000 60"
@@ -44,14 +56,7 @@ set(_segvoronoi_cgal_runs
   "lattice 10000 120"
   "circle 2916 300"
   "collinear 1000 60")
-foreach(_run IN LISTS _segvoronoi_cgal_runs)
-  separate_arguments(_run)
-  list(GET _run 0 _family)
-  list(GET _run 1 _count)
-  list(GET _run 2 _timeout)
-  add_test(NAME cgal_${_family}_${_count} COMMAND segvoronoi_cgal_check ${_family} ${_count})
-  set_tests_properties(cgal_${_family}_${_count} PROPERTIES TIMEOUT ${_timeout} LABELS cgal)
-endforeach()
+segvoronoi_cgal_family_tests(${_segvoronoi_cgal_runs})
 unset(_segvoronoi_cgal_runs)
 
 # Regression inputs from library bugs this cross-check found: edge lengths
@@ -81,14 +86,7 @@ set(_segvoronoi_cgal_segment_runs
   "polyline 1000 60"
   "square-hole 8 60"
   "star 64 60")
-foreach(_run IN LISTS _segvoronoi_cgal_segment_runs)
-  separate_arguments(_run)
-  list(GET _run 0 _family)
-  list(GET _run 1 _count)
-  list(GET _run 2 _timeout)
-  add_test(NAME cgal_${_family}_${_count} COMMAND segvoronoi_cgal_check ${_family} ${_count})
-  set_tests_properties(cgal_${_family}_${_count} PROPERTIES TIMEOUT ${_timeout} LABELS cgal)
-endforeach()
+segvoronoi_cgal_family_tests(${_segvoronoi_cgal_segment_runs})
 unset(_segvoronoi_cgal_segment_runs)
 
 # Regular n-gons, n = 3..64: every side touches the inscribed circle, so the
