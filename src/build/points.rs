@@ -62,6 +62,10 @@ pub(crate) struct PointDiagram {
     /// Per cut: the leaving half-edge and the cells on its right and left.
     cuts: Vec<(HalfEdgeId, SiteId, SiteId)>,
     new_vertices: Vec<VertexId>,
+    /// Edges between two tree vertices that are cut at both ends, their
+    /// middle kept (one half-edge of each): where a segment's cell wraps
+    /// around part of a cell (see `segments`).
+    twice_cut: Vec<HalfEdgeId>,
     /// Site ids from here on are open segments (`u32::MAX`: none yet).
     first_segment: u32,
     /// Per segment site (id minus `first_segment`): its two endpoint sites.
@@ -84,6 +88,7 @@ impl PointDiagram {
             tree: Vec::new(),
             cuts: Vec::new(),
             new_vertices: Vec::new(),
+            twice_cut: Vec::new(),
             first_segment: u32::MAX,
             segment_ends: Vec::new(),
         }
@@ -219,6 +224,7 @@ impl PointDiagram {
     /// Starts a new marking round: no vertex or cell is marked afterwards.
     fn fresh_epoch(&mut self) {
         self.epoch = self.epoch.wrapping_add(1);
+        self.twice_cut.clear();
         if self.epoch == 0 {
             self.vertex_mark.iter_mut().for_each(|m| *m = 0);
             self.cell_mark.iter_mut().for_each(|m| *m = 0);
@@ -367,23 +373,36 @@ impl PointDiagram {
 
     /// P1: whether the vertex `back` leaves (towards the tree, by `back`)
     /// can join the tree as a leaf: it is not in the tree, and neither of its
-    /// other two edges leads into it (which would close a cycle). A
-    /// separator between two tree vertices closes no cycle: it is cut at
-    /// both ends and its middle stays (see `leaves_tree`).
+    /// other two edges leads into it (which would close a cycle), unless that
+    /// edge is cut at both ends (see `leaves_tree`).
     fn would_stay_a_tree(&self, back: HalfEdgeId) -> bool {
-        let in_tree = |h: HalfEdgeId| {
-            self.vertex_mark[self.store.target(h).index()] == self.epoch && !self.is_separator(h)
-        };
-        self.vertex_mark[back.origin().index()] != self.epoch && !in_tree(back.rotate(1)) && !in_tree(back.rotate(2))
+        self.vertex_mark[back.origin().index()] != self.epoch
+            && !self.leads_into_tree(back.rotate(1))
+            && !self.leads_into_tree(back.rotate(2))
+    }
+
+    /// Whether `h` is an edge of the tree itself: it ends in the tree and is
+    /// not cut at both ends.
+    fn leads_into_tree(&self, h: HalfEdgeId) -> bool {
+        self.vertex_mark[self.store.target(h).index()] == self.epoch && !self.is_separator(h) && !self.is_twice_cut(h)
     }
 
     /// Whether `h`, leaving a tree vertex, is cut by the new cell: it leads
-    /// out of the tree, or it is a separator between a segment and its
-    /// endpoint `p` with both ends in the tree. The circles centred on a
-    /// separator all touch `p`, shrinking to nothing there, so its middle
-    /// never conflicts: such an edge is cut twice and its middle stays.
+    /// out of the tree, or both its ends are in the tree but its middle
+    /// stays. That is so for every separator between a segment and its
+    /// endpoint `p` (the circles centred on it all touch `p`, shrinking to
+    /// nothing there, so its middle never conflicts), and for the edges a
+    /// segment insertion chose to cut twice (`twice_cut`).
     fn leaves_tree(&self, h: HalfEdgeId) -> bool {
-        self.vertex_mark[self.store.target(h).index()] != self.epoch || self.is_separator(h)
+        !self.leads_into_tree(h)
+    }
+
+    /// Whether the edge of `h` is one of `twice_cut`.
+    fn is_twice_cut(&self, h: HalfEdgeId) -> bool {
+        !self.twice_cut.is_empty() && {
+            let t = self.store.twin(h);
+            self.twice_cut.iter().any(|&c| c == h || c == t)
+        }
     }
 
     /// The next edge leaving the tree after `h` (which leaves it too), going

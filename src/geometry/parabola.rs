@@ -16,6 +16,7 @@
 //! from the true parabola.
 
 use super::point::Point;
+use super::site::Site;
 
 /// The parabola of points equidistant from `focus` and the line through
 /// `directrix[0]` and `directrix[1]`, in the coordinates of the module doc.
@@ -52,6 +53,21 @@ impl Parabola {
         let normal = if across > 0.0 { Point::new(-tangent.y, tangent.x) } else { Point::new(tangent.y, -tangent.x) };
         let origin = Point::new(a.x + along * tangent.x, a.y + along * tangent.y);
         Some(Parabola { origin, tangent, normal, focal_distance: across.abs() })
+    }
+
+    /// The parabola of the bisector of two sites, when it is one: a point
+    /// and a segment that does not end at it (in either order). `None` for
+    /// every straight bisector (two points, two segments, a segment and its
+    /// own endpoint) and where [`Parabola::new`] gives none.
+    pub(crate) fn of_sites(first: &Site, second: &Site) -> Option<Parabola> {
+        match (*first, *second) {
+            (Site::Point(f), s @ Site::Segment { a, b }) | (s @ Site::Segment { a, b }, Site::Point(f))
+                if !s.has_endpoint(f) =>
+            {
+                Parabola::new(f, a, b)
+            }
+            _ => None,
+        }
     }
 
     /// The parameter of the point of the parabola nearest to `q` along the

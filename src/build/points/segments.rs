@@ -41,10 +41,18 @@ use std::collections::{BinaryHeap, HashSet};
 use super::{infinite_rotation, PointDiagram, INFINITE};
 use crate::diagram::{HalfEdgeId, SiteId, VertexId, NONE};
 use crate::geometry::predicates::{orientation, Orientation};
+use crate::geometry::parabola::Parabola;
 use crate::geometry::segment_solvers;
 use crate::geometry::site::Site;
 use crate::geometry::solvers::left_normal;
 use crate::geometry::{fault, Point};
+
+/// A path of P4: its vertices, and the half-edge by which each vertex after
+/// the first was entered.
+struct Path {
+    vertices: Vec<VertexId>,
+    entered_by: Vec<HalfEdgeId>,
+}
 
 /// The walk of P4 in progress: its vertices and the half-edges already tried.
 struct PathWalk {
@@ -234,8 +242,9 @@ impl PointDiagram {
     }
 
     /// Finds the path of P4 and makes it the start of the tree (marked with
-    /// the current epoch). Returns `false` when the walk found no
-    /// path (only possible when the numbers lie badly); the tree is then the
+    /// the current epoch); the edges between path vertices other than the
+    /// path's own are cut twice. Returns `false` when no path was found
+    /// (only possible when the numbers lie badly); the tree is then the
     /// walk's first vertex alone.
     fn find_segment_path(&mut self, a: SiteId, b: SiteId) -> bool {
         // First only through vertices the segment conflicts with (where the
@@ -247,12 +256,22 @@ impl PointDiagram {
                 (false, start_only) => self.shortest_path(a, b).map_or((false, start_only), |path| (true, path)),
             },
         };
-        let path = if found { path } else { path[..1].to_vec() };
+        let Path { vertices, entered_by } = if found { path } else { Path { vertices: path.vertices[..1].to_vec(), entered_by: Vec::new() } };
         let epoch = self.epoch;
         self.tree.clear();
-        for &v in &path {
+        for &v in &vertices {
             self.vertex_mark[v.index()] = epoch;
             self.tree.push(v);
+        }
+        for &v in &vertices {
+            for k in 0..3 {
+                let h = v.half_edge(k);
+                let on_path = self.vertex_mark[self.store.target(h).index()] == epoch;
+                let path_edge = entered_by.iter().any(|&g| g == h || self.store.twin(g) == h);
+                if on_path && !path_edge && !self.is_separator(h) && !self.is_twice_cut(h) {
+                    self.twice_cut.push(h);
+                }
+            }
         }
         found
     }
@@ -260,12 +279,14 @@ impl PointDiagram {
     /// The last resort when the numbers misled both walks: the path with
     /// fewest edges from `R(a)`'s boundary to `R(b)`'s, by breadth-first
     /// search without separators, vertices at infinity or vertices whose
-    /// third cell is `R(a)`. A shortest path has no chord but separators
-    /// (which are cut at both ends, not deleted), touches `R(a)` and `R(b)`
-    /// only at its ends, and so keeps P3 and P5 whatever the numbers say (a
-    /// path with another chord is refused). `None` if there is no such path.
-    fn shortest_path(&self, a: SiteId, b: SiteId) -> Option<Vec<VertexId>> {
-        let mut parent: std::collections::HashMap<VertexId, Option<VertexId>> = Default::default();
+    /// third cell is `R(a)`. A shortest path has no chord but edges parallel
+    /// to its own (a cell with two edges between consecutive path vertices),
+    /// touches `R(a)` and `R(b)` only at its ends, and so keeps P3 and P5
+    /// whatever the numbers say, its parallel edges cut twice (a path with
+    /// an edge that may not be cut twice is refused). `None` if there is no
+    /// such path.
+    fn shortest_path(&self, a: SiteId, b: SiteId) -> Option<Path> {
+        let mut parent: std::collections::HashMap<VertexId, Option<HalfEdgeId>> = Default::default();
         let mut queue = std::collections::VecDeque::new();
         for h in self.store.cell_boundary(a) {
             let v = h.origin();
@@ -286,30 +307,33 @@ impl PointDiagram {
                 if parent.contains_key(&w) || self.is_separator(h) || third == a || !self.walkable(w, a, b) {
                     continue;
                 }
-                parent.insert(w, Some(v));
+                parent.insert(w, Some(h));
                 queue.push_back(w);
             }
         }
-        let mut path = vec![end?];
-        while let Some(&Some(p)) = parent.get(path.last().expect("non-empty")) {
-            path.push(p);
+        let mut vertices = vec![end?];
+        let mut entered_by = Vec::new();
+        while let Some(&Some(h)) = parent.get(vertices.last().expect("non-empty")) {
+            entered_by.push(h);
+            vertices.push(h.origin());
         }
-        path.reverse();
-        // No chord (an edge between two path vertices that are not neighbours on it).
-        let on_path: std::collections::HashMap<VertexId, usize> = path.iter().enumerate().map(|(i, &v)| (v, i)).collect();
-        let chord = path.iter().enumerate().any(|(i, &v)| {
-            (0..3).any(|k| {
+        vertices.reverse();
+        entered_by.reverse();
+        let on_path: HashSet<VertexId> = vertices.iter().copied().collect();
+        let cuttable = vertices.iter().all(|&v| {
+            (0..3).all(|k| {
                 let h = v.half_edge(k);
-                !self.is_separator(h) && on_path.get(&self.store.target(h)).is_some_and(|&j| j + 1 < i || j > i + 1)
+                let path_edge = entered_by.iter().any(|&g| g == h || self.store.twin(g) == h);
+                path_edge || self.is_separator(h) || !on_path.contains(&self.store.target(h)) || self.may_cut_twice(h, a, b)
             })
         });
-        (!chord).then_some(path)
+        cuttable.then_some(Path { vertices, entered_by })
     }
 
     /// The walk from `R(a)` to `R(b)`; `strict` admits only vertices in
     /// conflict with the segment. Returns whether `R(b)` was reached and the
     /// walk's vertices (at least the start).
-    fn walk_to(&self, a: SiteId, b: SiteId, strict: bool) -> (bool, Vec<VertexId>) {
+    fn walk_to(&self, a: SiteId, b: SiteId, strict: bool) -> (bool, Path) {
         let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
         let (start, first_move) = self.path_start(a, b);
         let mut walk = PathWalk {
@@ -325,7 +349,7 @@ impl PointDiagram {
         loop {
             let v = *walk.vertices.last().expect("the walk always holds its start");
             if self.store.sites_of(v).contains(&b) {
-                return (true, walk.vertices);
+                return (true, Path { vertices: walk.vertices, entered_by: walk.entered_by });
             }
             match self.walk_step(&mut walk, v, a, b, pa, pb).or_else(|| self.walk_backtrack(&mut walk, a, b)) {
                 Some(h) => {
@@ -333,7 +357,7 @@ impl PointDiagram {
                     let w = self.store.target(h);
                     self.walk_push(&mut walk, w, Some(h));
                 }
-                None => return (false, walk.vertices),
+                None => return (false, Path { vertices: walk.vertices, entered_by: walk.entered_by }),
             }
         }
     }
@@ -388,24 +412,29 @@ impl PointDiagram {
     }
 
     /// Whether leaving the walk's last vertex by `h` keeps the walk a path
-    /// with no chord (P3) and `R(a)` touched in one piece (P5): the vertex
-    /// reached is new, none of its other edges leads back to the walk, its
-    /// third cell is not `R(a)`, and it is not at infinity unless it
-    /// conflicts.
+    /// (P3) and `R(a)` touched in one piece (P5): the vertex reached is new,
+    /// each of its other edges that leads back to the walk (a chord) may be
+    /// cut twice (in the strict walk: the numbers also say its middle stays
+    /// out of the new cell), its third cell is not `R(a)`, and it is not at
+    /// infinity unless it conflicts.
     fn walk_allows(&self, walk: &PathWalk, h: HalfEdgeId, a: SiteId, b: SiteId) -> bool {
         if walk.tried.contains(&h) {
             return false;
         }
         let back = self.store.twin(h);
         let w = back.origin();
-        let chord = |x: HalfEdgeId| !self.is_separator(x) && walk.on_walk.contains(&self.store.target(x));
+        let chord_ok = |x: HalfEdgeId| {
+            self.is_separator(x)
+                || !walk.on_walk.contains(&self.store.target(x))
+                || (self.may_cut_twice(x, a, b) && (!walk.strict || self.middle_margin(x, a, b) > 0.0))
+        };
         !self.is_separator(h)
             && !walk.on_walk.contains(&w)
-            && !chord(back.rotate(1))
-            && !chord(back.rotate(2))
             && self.store.opposite(back) != a
             && self.walkable(w, a, b)
             && (!walk.strict || self.segment_conflict(w, a, b))
+            && chord_ok(back.rotate(1))
+            && chord_ok(back.rotate(2))
     }
 
     /// The next half-edge to follow from `v`, by the left/right rule, with
@@ -480,9 +509,11 @@ impl PointDiagram {
         None
     }
 
-    /// Grows the tree from the path: P3 as for points, P5, the segment
-    /// entering the circle (criteria 1, 2.3), never beyond a deleted vertex
-    /// outside the strip (criterion 2.2).
+    /// Grows the tree from the path: P3, P5, the segment entering the
+    /// circle (criteria 1, 2.3), never beyond a deleted vertex outside the
+    /// strip (criterion 2.2). A vertex whose other edges lead into the tree
+    /// too joins only if each cycle it closes has an edge whose middle the
+    /// numbers keep (see `join_closing_cycles`).
     fn grow_segment_tree(&mut self, a: SiteId, b: SiteId) {
         let epoch = self.epoch;
         let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
@@ -496,7 +527,7 @@ impl PointDiagram {
             for slot in 0..3 {
                 let back = self.store.twin(u.half_edge(slot));
                 let w = back.origin();
-                if !self.would_stay_a_tree(back) || self.is_separator(back) {
+                if self.vertex_mark[w.index()] == epoch || self.is_separator(back) {
                     continue;
                 }
                 // P5: R(a) and R(b), touched by the path, must not be touched again.
@@ -508,9 +539,165 @@ impl PointDiagram {
                     continue;
                 }
                 self.vertex_mark[w.index()] = epoch;
-                self.tree.push(w);
+                if self.join_closing_cycles(back, a, b) {
+                    self.tree.push(w);
+                } else {
+                    self.vertex_mark[w.index()] = 0;
+                }
             }
         }
+    }
+
+    /// With `w = back.origin()` just marked as joining the tree by `back`:
+    /// for each other edge of `w` into the tree, the cycle it closes must
+    /// lose one edge, which is cut twice instead of deleted. The edge chosen
+    /// is the one of the cycle whose middle most clearly stays out of the new
+    /// cell (`middle_margin`), which with exact numbers is the true one: the
+    /// edges deleted are then those whose middle is in the new cell, and they
+    /// form a tree (an online minimum spanning tree by margin). Returns
+    /// `false`, with nothing changed, when some cycle has no edge whose middle
+    /// the numbers keep: then `w` stays.
+    fn join_closing_cycles(&mut self, back: HalfEdgeId, a: SiteId, b: SiteId) -> bool {
+        let saved = self.twice_cut.len();
+        // Each closing edge in turn rejoins the tree, whose other closing
+        // edges are meanwhile taken as cut, so the tree stays a tree.
+        let closing: Vec<HalfEdgeId> =
+            [back.rotate(1), back.rotate(2)].into_iter().filter(|&h| self.leads_into_tree(h)).collect();
+        self.twice_cut.extend(&closing);
+        for (k, &edge) in closing.iter().enumerate() {
+            let slot = saved + k;
+            let cycle = self.tree_path(self.store.target(edge), edge.origin());
+            let mut candidates: Vec<(f64, HalfEdgeId)> = std::iter::once(edge)
+                .chain(cycle)
+                .filter(|&h| self.is_finite_edge(h))
+                .map(|h| (self.middle_margin(h, a, b), h))
+                .filter(|&(margin, _)| margin > 0.0)
+                .collect();
+            candidates.sort_by(|x, y| y.0.total_cmp(&x.0));
+            // An edge of R(a) or R(b) may keep its middle only where the rest
+            // of that cell's boundary is deleted: P5, one piece lost.
+            let w = back.origin();
+            let chosen = candidates.into_iter().map(|(_, h)| h).find(|&h| {
+                self.twice_cut[slot] = h;
+                let sides = [self.store.left(h), self.store.right(h)];
+                !(sides.contains(&a) || sides.contains(&b))
+                    || (self.cell_visits(a, w) == 1 && self.cell_visits(b, w) == 1)
+            });
+            if chosen.is_none() {
+                self.twice_cut.truncate(saved);
+                return false;
+            }
+        }
+        true
+    }
+
+    /// How many separate pieces of the boundary of `cell` the tree (with
+    /// `joining`, marked but not yet listed) deletes: the edges leaving it
+    /// with `cell` on their left.
+    fn cell_visits(&self, cell: SiteId, joining: VertexId) -> usize {
+        self.tree
+            .iter()
+            .chain(std::iter::once(&joining))
+            .flat_map(|&u| (0..3).map(move |k| u.half_edge(k)))
+            .filter(|&h| self.store.left(h) == cell && self.leaves_tree(h))
+            .count()
+    }
+
+    /// The half-edges of the tree's path from `from` to `to` (both in the
+    /// tree), by breadth-first search over tree edges.
+    fn tree_path(&self, from: VertexId, to: VertexId) -> Vec<HalfEdgeId> {
+        let mut parent: std::collections::HashMap<VertexId, HalfEdgeId> = Default::default();
+        let mut queue = std::collections::VecDeque::from([from]);
+        while let Some(v) = queue.pop_front() {
+            if v == to {
+                break;
+            }
+            for k in 0..3 {
+                let h = v.half_edge(k);
+                let w = self.store.target(h);
+                if w != from && self.leads_into_tree(h) && !parent.contains_key(&w) {
+                    parent.insert(w, h);
+                    queue.push_back(w);
+                }
+            }
+        }
+        let mut path = Vec::new();
+        let mut v = to;
+        while let Some(&h) = parent.get(&v) {
+            path.push(h);
+            v = h.origin();
+        }
+        path
+    }
+
+    /// Whether the edge of `h` may be cut at both ends, its middle kept, by
+    /// the path: not an edge of `R(a)` or `R(b)` (P5: they lose one piece
+    /// each), and finite.
+    fn may_cut_twice(&self, h: HalfEdgeId, a: SiteId, b: SiteId) -> bool {
+        let sides = [self.store.left(h), self.store.right(h)];
+        !sides.contains(&a) && !sides.contains(&b) && self.is_finite_edge(h)
+    }
+
+    /// Whether neither end of `h` is at infinity.
+    fn is_finite_edge(&self, h: HalfEdgeId) -> bool {
+        !self.store.is_at_infinity(h.origin()) && !self.store.is_at_infinity(self.store.target(h))
+    }
+
+    /// How clearly the middle of the (finite) edge of `h` stays out of the
+    /// cell of the segment `ab`: the largest excess, over points of the edge,
+    /// of their distance to `ab` over their distance to the edge's own sites
+    /// (perturbed in fault injection). Positive: the edge keeps a middle
+    /// piece. Found by sampling the edge and refining the best sample by
+    /// golden-section search (the points of an edge in conflict are an
+    /// interval or two intervals at its ends).
+    fn middle_margin(&self, h: HalfEdgeId, a: SiteId, b: SiteId) -> f64 {
+        const SAMPLES: usize = 8;
+        const REFINEMENTS: usize = 40;
+        let (left, right) = (self.site_geometry(self.store.left(h)), self.site_geometry(self.store.right(h)));
+        let segment = Site::Segment { a: self.sites[a.index()], b: self.sites[b.index()] };
+        let (from, to) = (self.store.position[h.origin().index()], self.store.position[self.store.target(h).index()]);
+        let arc = Parabola::of_sites(&left, &right).map(|p| (p, p.parameter(from), p.parameter(to)));
+        let excess = |t: f64| {
+            let q = match arc {
+                Some((p, s0, s1)) => p.point(s0 + (s1 - s0) * t),
+                None => Point::new(from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t),
+            };
+            let own = 0.5 * (left.distance(q) + right.distance(q));
+            let e = segment.distance(q) - own;
+            if e.is_nan() {
+                f64::NEG_INFINITY
+            } else {
+                e
+            }
+        };
+        let step = 1.0 / (SAMPLES + 1) as f64;
+        let (mut best_t, mut best) = (0.5, f64::NEG_INFINITY);
+        for k in 1..=SAMPLES {
+            let t = k as f64 * step;
+            let e = excess(t);
+            if e > best {
+                (best_t, best) = (t, e);
+            }
+        }
+        // Golden-section search for the maximum around the best sample.
+        let ratio = 0.5 * (5f64.sqrt() - 1.0);
+        let (mut lo, mut hi) = ((best_t - step).max(0.0), (best_t + step).min(1.0));
+        let (mut x1, mut x2) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
+        let (mut e1, mut e2) = (excess(x1), excess(x2));
+        for _ in 0..REFINEMENTS {
+            if e1 < e2 {
+                lo = x1;
+                (x1, e1) = (x2, e2);
+                x2 = lo + ratio * (hi - lo);
+                e2 = excess(x2);
+            } else {
+                hi = x2;
+                (x2, e2) = (x1, e1);
+                x1 = hi - ratio * (hi - lo);
+                e1 = excess(x1);
+            }
+        }
+        fault::perturb(best.max(e1).max(e2))
     }
 
     /// Position and clearance of a vertex with a segment among its sites.
@@ -610,6 +797,10 @@ mod tests {
                 assert!(dist >= r - tol, "vertex {vi} {sites:?}: site {s:?} inside ({dist} < {r})");
             }
         }
+    }
+
+    pub(super) fn check_geometry_pub(d: &PointDiagram, tol: f64) {
+        check_geometry(d, tol)
     }
 
     fn validate(d: &PointDiagram) {
@@ -713,5 +904,80 @@ mod tests {
             }
             crate::geometry::fault::set_fault_mode(crate::geometry::fault::FaultMode::Off, 0);
         }
+    }
+}
+
+#[cfg(test)]
+mod debug_file {
+    use super::*;
+
+    /// Debug aid: `SEGFILE=path cargo test debug_file -- --ignored --nocapture`.
+    #[test]
+    #[ignore]
+    fn replay_file() {
+        let Ok(path) = std::env::var("SEGFILE") else { return };
+        let text = std::fs::read_to_string(path).unwrap();
+        let nums: Vec<f64> = text.split_whitespace().map(|t| t.parse().unwrap()).collect();
+        let np = nums[0] as usize;
+        let mut pts = Vec::new();
+        let mut k = 1;
+        for _ in 0..np {
+            pts.push(Point::new(nums[k], nums[k + 1]));
+            k += 2;
+        }
+        let ns = nums[k] as usize;
+        k += 1;
+        let mut segs = Vec::new();
+        for _ in 0..ns {
+            pts.push(Point::new(nums[k], nums[k + 1]));
+            pts.push(Point::new(nums[k + 2], nums[k + 3]));
+            segs.push([pts.len() - 2, pts.len() - 1]);
+            k += 4;
+        }
+        let mut d = PointDiagram::new(pts.len() + segs.len());
+        let ids = d.start_collinear(&pts[..2]);
+        let mut all = ids.clone();
+        let mut last = ids[1];
+        for &p in &pts[2..] {
+            if let super::super::Inserted::New(s) = d.insert(p, last) {
+                all.push(s);
+                last = s;
+            }
+        }
+        for (n, &[i, j]) in segs.iter().enumerate() {
+            let (a, b) = (all[i], all[j]);
+            d.fresh_epoch();
+            let e = d.add_segment_site(a, b);
+            let found = d.find_segment_path(a, b);
+            let path = d.tree.clone();
+            let chords = d.twice_cut.clone();
+            d.grow_segment_tree(a, b);
+            let tree = d.tree.clone();
+            let cut = d.twice_cut.clone();
+            let mut info = Vec::new();
+            for vi in 0..d.store.vertex_count() {
+                let v = VertexId::from_index(vi);
+                if d.store.sites_of(v)[0].0 == NONE { continue; }
+                if d.segment_conflict(v, a, b) || tree.contains(&v) {
+                    let nb: Vec<(VertexId, f64)> = (0..3).map(|k| { let h = v.half_edge(k); (d.store.target(h), if d.is_finite_edge(h) { d.middle_margin(h, a, b) } else { f64::NAN }) }).collect();
+                    info.push(format!("   {v:?} conflict {} in_tree {} sites {:?} strip {} nbrs {:?}", d.segment_conflict(v, a, b), tree.contains(&v), d.store.sites_of(v), d.store.is_at_infinity(v) || in_strip(d.store.position[vi], d.sites[a.index()], d.sites[b.index()]), nb));
+                }
+            }
+            d.replace_tree(e);
+            let bad = d.store.validate().err().map(|e| e.to_string()).or_else(|| {
+                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| tests::check_geometry_pub(&d, 1e-9)))
+                    .err()
+                    .map(|p| p.downcast_ref::<String>().cloned().unwrap_or_default())
+            });
+            println!("segment {n} {e:?} ({a:?},{b:?}): found {found} path {path:?} chords {chords:?} tree {tree:?} twice {cut:?}");
+            for l in &info {
+                println!("{l}");
+            }
+            if let Some(msg) = bad {
+                println!("FIRST BAD at segment {n}: {msg}");
+                return;
+            }
+        }
+        println!("all good");
     }
 }
