@@ -169,9 +169,17 @@ impl PointDiagram {
             -((c.x - from.x) * dx + (c.y - from.y) * dy) / dx.hypot(dy)
         };
         let depth = if sites.contains(&a) {
-            entering(pa, pb)
+            if self.continues_beyond(a, b, sites) {
+                0.0
+            } else {
+                entering(pa, pb)
+            }
         } else if sites.contains(&b) {
-            entering(pb, pa)
+            if self.continues_beyond(b, a, sites) {
+                0.0
+            } else {
+                entering(pb, pa)
+            }
         } else {
             Site::Segment { a: pa, b: pb }.distance(c) - self.store.clearance[v.index()]
         };
@@ -181,6 +189,27 @@ impl PointDiagram {
         } else {
             depth
         }
+    }
+
+    /// Whether one of `sites` (those of a vertex with the endpoint `end`
+    /// among them) is a segment that continues the new segment `other → end`
+    /// straight on beyond `end`. The vertex then lies on that segment's
+    /// separator at `end`, which is exactly the new segment's perpendicular
+    /// there: it is on the new segment's circle, not inside, whatever its
+    /// rounded position says (a collinear chain leaves `end` a cell of no
+    /// width between two coinciding separators).
+    fn continues_beyond(&self, end: SiteId, other: SiteId, sites: [SiteId; 3]) -> bool {
+        let (pe, po) = (self.sites[end.index()], self.sites[other.index()]);
+        sites.iter().any(|&s| {
+            if !self.is_segment(s) {
+                return false;
+            }
+            let [x, y] = self.segment_ends[(s.0 - self.first_segment) as usize];
+            let far = if x == end { y } else if y == end { x } else { return false };
+            let pf = self.sites[far.index()];
+            orientation(po, pe, pf) == Orientation::Collinear
+                && (pf.x - pe.x) * (pe.x - po.x) + (pf.y - pe.y) * (pe.y - po.y) > 0.0
+        })
     }
 
     /// Whether the segment `ab` conflicts with `v` (see the module doc for
@@ -939,9 +968,12 @@ mod debug_file {
         let mut all = ids.clone();
         let mut last = ids[1];
         for &p in &pts[2..] {
-            if let super::super::Inserted::New(s) = d.insert(p, last) {
-                all.push(s);
-                last = s;
+            match d.insert(p, last) {
+                super::super::Inserted::New(s) => {
+                    all.push(s);
+                    last = s;
+                }
+                super::super::Inserted::Duplicate(s) => all.push(s),
             }
         }
         for (n, &[i, j]) in segs.iter().enumerate() {
