@@ -559,18 +559,27 @@ impl PointDiagram {
                 if self.vertex_mark[w.index()] == epoch || self.is_separator(back) {
                     continue;
                 }
-                // P5: R(a) and R(b), touched by the path, must not be touched again.
+                // P5: R(a) and R(b), touched by the path, must not lose a
+                // second piece. A vertex whose third cell is one of them
+                // touches it apart from the tree unless it closes a cycle
+                // (the cell then keeps a middle piece somewhere instead);
+                // that is checked by counting once the cycle is resolved.
                 let third = self.store.opposite(back);
-                if third == a || third == b {
+                let touches_end = third == a || third == b;
+                if touches_end && !self.leads_into_tree(back.rotate(1)) && !self.leads_into_tree(back.rotate(2)) {
                     continue;
                 }
                 if !self.segment_conflict(w, a, b) {
                     continue;
                 }
                 self.vertex_mark[w.index()] = epoch;
-                if self.join_closing_cycles(back, a, b) {
+                let saved = self.twice_cut.len();
+                if self.join_closing_cycles(back, a, b)
+                    && (!touches_end || (self.cell_visits(a, w) == 1 && self.cell_visits(b, w) == 1))
+                {
                     self.tree.push(w);
                 } else {
+                    self.twice_cut.truncate(saved);
                     self.vertex_mark[w.index()] = 0;
                 }
             }
@@ -682,8 +691,16 @@ impl PointDiagram {
     fn middle_margin(&self, h: HalfEdgeId, a: SiteId, b: SiteId) -> f64 {
         const SAMPLES: usize = 8;
         const REFINEMENTS: usize = 40;
-        let (left, right) = (self.site_geometry(self.store.left(h)), self.site_geometry(self.store.right(h)));
-        let segment = Site::Segment { a: self.sites[a.index()], b: self.sites[b.index()] };
+        let sides = [self.store.left(h), self.store.right(h)];
+        if sides.contains(&a) && sides.contains(&b) {
+            // Every point of the bisector of a and b is closer to the open
+            // segment between them (the midpoint is nearer than either end).
+            return f64::NEG_INFINITY;
+        }
+        let touches_end = sides.contains(&a) || sides.contains(&b);
+        let [left, right] = sides.map(|s| self.site_geometry(s));
+        let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
+        let segment = Site::Segment { a: pa, b: pb };
         let (from, to) = (self.store.position[h.origin().index()], self.store.position[self.store.target(h).index()]);
         let arc = Parabola::of_sites(&left, &right).map(|p| (p, p.parameter(from), p.parameter(to)));
         let excess = |t: f64| {
@@ -691,8 +708,17 @@ impl PointDiagram {
                 Some((p, s0, s1)) => p.point(s0 + (s1 - s0) * t),
                 None => Point::new(from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t),
             };
-            let own = 0.5 * (left.distance(q) + right.distance(q));
-            let e = segment.distance(q) - own;
+            // On an edge of R(a) or R(b) the distances to the segment and to
+            // its endpoint agree outside the strip, so the signed distance
+            // beyond the perpendiculars decides, without cancellation.
+            let e = if touches_end {
+                let (dx, dy) = (pb.x - pa.x, pb.y - pa.y);
+                let beyond_b = (q.x - pb.x) * dx + (q.y - pb.y) * dy;
+                let beyond_a = (pa.x - q.x) * dx + (pa.y - q.y) * dy;
+                beyond_a.max(beyond_b) / dx.hypot(dy)
+            } else {
+                segment.distance(q) - 0.5 * (left.distance(q) + right.distance(q))
+            };
             if e.is_nan() {
                 f64::NEG_INFINITY
             } else {
@@ -991,8 +1017,8 @@ mod debug_file {
                 let v = VertexId::from_index(vi);
                 if d.store.sites_of(v)[0].0 == NONE { continue; }
                 if d.segment_conflict(v, a, b) || tree.contains(&v) {
-                    let nb: Vec<(VertexId, f64)> = (0..3).map(|k| { let h = v.half_edge(k); (d.store.target(h), if d.is_finite_edge(h) { d.middle_margin(h, a, b) } else { f64::NAN }) }).collect();
-                    info.push(format!("   {v:?} conflict {} in_tree {} sites {:?} strip {} nbrs {:?}", d.segment_conflict(v, a, b), tree.contains(&v), d.store.sites_of(v), d.store.is_at_infinity(v) || in_strip(d.store.position[vi], d.sites[a.index()], d.sites[b.index()]), nb));
+                    let nb: Vec<(VertexId, u32, u32, f64)> = (0..3).map(|k| { let h = v.half_edge(k); (d.store.target(h), d.store.left(h).0, d.store.right(h).0, if d.is_finite_edge(h) { d.middle_margin(h, a, b) } else { f64::NAN }) }).collect();
+                    info.push(format!("   {v:?} depth {:e} pos {:?} conflict {} in_tree {} sites {:?} strip {} nbrs {:?}", if d.store.is_at_infinity(v) { 0.0 } else { d.segment_depth(v, a, b) }, d.store.position[vi], d.segment_conflict(v, a, b), tree.contains(&v), d.store.sites_of(v), d.store.is_at_infinity(v) || in_strip(d.store.position[vi], d.sites[a.index()], d.sites[b.index()]), nb));
                 }
             }
             d.replace_tree(e);
