@@ -11,7 +11,7 @@
 // snapped (degenerate: only VPAIRS and VVERTICES are unique, so only they
 // must agree). Segment families (n = number of segments, all non-crossing):
 // seg-random1/2/3 (the three generators of seed 000 in [0,1]^2), seg-short
-// (random short segments), polyline (a random non-crossing walk),
+// (random short segments), polyline (a random non-crossing walk of random-length steps),
 // square-hole (8 segments, n ignored) are generic; polygon (regular n-gon)
 // and star (n segments from one point) are degenerate (every segment touches
 // one circle, or one point). For faces with segments CGAL's Voronoi vertex is
@@ -428,12 +428,16 @@ std::vector<Segment> seg_short(std::size_t n, Rng& rng) {
 // redrawn; a walk that gets stuck restarts from a new random point).
 std::vector<Segment> polyline(std::size_t n, Rng& rng) {
     std::vector<Segment> out;
-    const double length = 0.5 / std::sqrt(static_cast<double>(std::max<std::size_t>(n, 1)));
+    // Steps of random length: equal steps would make every sharp turn a
+    // degenerate spike (the perpendiculars at both far ends meet the angle
+    // bisector in one point), which the family is not meant to test.
+    const double unit_length = 0.5 / std::sqrt(static_cast<double>(std::max<std::size_t>(n, 1)));
     SegmentGrid grid({-0.1, -0.1}, {1.1, 1.1}, grid_side(n));
     Point at{rng.unit(), rng.unit()};
     int stuck = 0;
     while (out.size() < n) {
         const double angle = 6.283185307179586 * rng.unit();
+        const double length = unit_length * (0.5 + rng.unit());
         Segment s{at, {at.x + length * std::cos(angle), at.y + length * std::sin(angle)}};
         const bool outside = s.b.x < 0.0 || s.b.x > 1.0 || s.b.y < 0.0 || s.b.y > 1.0;
         // The previous step shares `at` with this one: only an overlap is a

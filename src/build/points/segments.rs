@@ -1037,5 +1037,11 @@ mod debug_file {
             }
         }
         println!("all good");
+        if std::env::var("DUMP").is_ok() {
+            for vi in 0..d.store.vertex_count() {
+                let v = VertexId::from_index(vi);
+                println!("V{vi} {:?} {:?} r={:e}", d.store.sites_of(v), d.store.position[vi], d.store.clearance[vi]);
+            }
+        }
     }
 }
