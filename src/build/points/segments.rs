@@ -682,32 +682,51 @@ impl PointDiagram {
     }
 
     /// How clearly the middle of the (finite) edge of `h` stays out of the
-    /// cell of the segment `ab`: the largest excess, over points of the edge,
-    /// of their distance to `ab` over their distance to the edge's own sites
-    /// (perturbed in fault injection). Positive: the edge keeps a middle
-    /// piece. Found by sampling the edge and refining the best sample by
-    /// golden-section search (the points of an edge in conflict are an
-    /// interval or two intervals at its ends).
+    /// cell of the segment `ab` when both its ends are in it (perturbed in
+    /// fault injection). Positive: the edge keeps a middle piece.
+    ///
+    /// The new cell's boundary would cross the edge at the two vertices a
+    /// cut at both ends creates: `[right, left, e]` near `h`'s origin and
+    /// `[left, right, e]` near its target, each computed from the three sites
+    /// by its solver. The middle stays when both exist, lie on the edge, and
+    /// come in that order; the margin is then how much closer the point
+    /// halfway between them is to its own sites than to `ab`. (Sampling the
+    /// edge instead misses a middle piece that is short against the edge.)
+    /// When a solver finds nothing, the edge is sampled instead.
     fn middle_margin(&self, h: HalfEdgeId, a: SiteId, b: SiteId) -> f64 {
-        const SAMPLES: usize = 8;
-        const REFINEMENTS: usize = 40;
         let sides = [self.store.left(h), self.store.right(h)];
         if sides.contains(&a) && sides.contains(&b) {
             // Every point of the bisector of a and b is closer to the open
             // segment between them (the midpoint is nearer than either end).
             return f64::NEG_INFINITY;
         }
+        let excess = self.edge_excess(h, a, b);
+        let [left, right] = sides.map(|s| self.site_geometry(s));
+        let segment = Site::Segment { a: self.sites[a.index()], b: self.sites[b.index()] };
+        let arc = self.edge_arc(h);
+        let crossings = segment_solvers::vertex(&right, &left, &segment)
+            .zip(segment_solvers::vertex(&left, &right, &segment))
+            .map(|((near_origin, _), (near_target, _))| (arc.parameter(near_origin), arc.parameter(near_target)));
+        let margin = match crossings {
+            Some((t1, t2)) if 0.0 <= t1 && t1 < t2 && t2 <= 1.0 => excess(0.5 * (t1 + t2)),
+            Some((t1, t2)) => -(t1 - t2).abs().max(f64::MIN_POSITIVE),
+            None => sampled_maximum(&excess),
+        };
+        fault::perturb(margin)
+    }
+
+    /// The excess of the distance to the segment `ab` over the distance to
+    /// the edge's own sites, at the point of the edge of `h` at parameter
+    /// `t` (0 at its origin, 1 at its target); NaN gives `-∞`.
+    fn edge_excess(&self, h: HalfEdgeId, a: SiteId, b: SiteId) -> impl Fn(f64) -> f64 {
+        let sides = [self.store.left(h), self.store.right(h)];
         let touches_end = sides.contains(&a) || sides.contains(&b);
         let [left, right] = sides.map(|s| self.site_geometry(s));
         let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
         let segment = Site::Segment { a: pa, b: pb };
-        let (from, to) = (self.store.position[h.origin().index()], self.store.position[self.store.target(h).index()]);
-        let arc = Parabola::of_sites(&left, &right).map(|p| (p, p.parameter(from), p.parameter(to)));
-        let excess = |t: f64| {
-            let q = match arc {
-                Some((p, s0, s1)) => p.point(s0 + (s1 - s0) * t),
-                None => Point::new(from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t),
-            };
+        let arc = self.edge_arc(h);
+        move |t: f64| {
+            let q = arc.point(t);
             // On an edge of R(a) or R(b) the distances to the segment and to
             // its endpoint agree outside the strip, so the signed distance
             // beyond the perpendiculars decides, without cancellation.
@@ -724,35 +743,17 @@ impl PointDiagram {
             } else {
                 e
             }
-        };
-        let step = 1.0 / (SAMPLES + 1) as f64;
-        let (mut best_t, mut best) = (0.5, f64::NEG_INFINITY);
-        for k in 1..=SAMPLES {
-            let t = k as f64 * step;
-            let e = excess(t);
-            if e > best {
-                (best_t, best) = (t, e);
-            }
         }
-        // Golden-section search for the maximum around the best sample.
-        let ratio = 0.5 * (5f64.sqrt() - 1.0);
-        let (mut lo, mut hi) = ((best_t - step).max(0.0), (best_t + step).min(1.0));
-        let (mut x1, mut x2) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
-        let (mut e1, mut e2) = (excess(x1), excess(x2));
-        for _ in 0..REFINEMENTS {
-            if e1 < e2 {
-                lo = x1;
-                (x1, e1) = (x2, e2);
-                x2 = lo + ratio * (hi - lo);
-                e2 = excess(x2);
-            } else {
-                hi = x2;
-                (x2, e2) = (x1, e1);
-                x1 = hi - ratio * (hi - lo);
-                e1 = excess(x1);
-            }
+    }
+
+    /// The finite edge of `h` as a curve from its origin (0) to its target (1).
+    fn edge_arc(&self, h: HalfEdgeId) -> EdgeArc {
+        let (left, right) = (self.site_geometry(self.store.left(h)), self.site_geometry(self.store.right(h)));
+        let (from, to) = (self.store.position[h.origin().index()], self.store.position[self.store.target(h).index()]);
+        match Parabola::of_sites(&left, &right) {
+            Some(p) => EdgeArc::Parabola(p, p.parameter(from), p.parameter(to)),
+            None => EdgeArc::Line(from, to),
         }
-        fault::perturb(best.max(e1).max(e2))
     }
 
     /// Position and clearance of a vertex with a segment among its sites.
@@ -784,6 +785,68 @@ impl PointDiagram {
             _ => (self.representative(x), self.representative(y)),
         }
     }
+}
+
+/// A finite edge as a curve over `[0, 1]`: a straight piece, or an arc of
+/// a parabola between two of its parameters.
+enum EdgeArc {
+    Line(Point, Point),
+    Parabola(Parabola, f64, f64),
+}
+
+impl EdgeArc {
+    fn point(&self, t: f64) -> Point {
+        match *self {
+            EdgeArc::Line(p, q) => Point::new(p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t),
+            EdgeArc::Parabola(ref par, s0, s1) => par.point(s0 + (s1 - s0) * t),
+        }
+    }
+
+    /// The parameter of the point of the curve nearest to `q` (exact for
+    /// points on it, up to rounding); NaN for a curve of no length.
+    fn parameter(&self, q: Point) -> f64 {
+        match *self {
+            EdgeArc::Line(p, r) => {
+                let (dx, dy) = (r.x - p.x, r.y - p.y);
+                ((q.x - p.x) * dx + (q.y - p.y) * dy) / (dx * dx + dy * dy)
+            }
+            EdgeArc::Parabola(ref par, s0, s1) => (par.parameter(q) - s0) / (s1 - s0),
+        }
+    }
+}
+
+/// The largest value of `f` over `[0, 1]` as far as sampling finds it:
+/// evenly spaced samples, the best refined by golden-section search.
+fn sampled_maximum(f: &impl Fn(f64) -> f64) -> f64 {
+    const SAMPLES: usize = 16;
+    const REFINEMENTS: usize = 40;
+    let step = 1.0 / (SAMPLES + 1) as f64;
+    let (mut best_t, mut best) = (0.5, f64::NEG_INFINITY);
+    for k in 1..=SAMPLES {
+        let t = k as f64 * step;
+        let e = f(t);
+        if e > best {
+            (best_t, best) = (t, e);
+        }
+    }
+    let ratio = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut lo, mut hi) = ((best_t - step).max(0.0), (best_t + step).min(1.0));
+    let (mut x1, mut x2) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
+    let (mut e1, mut e2) = (f(x1), f(x2));
+    for _ in 0..REFINEMENTS {
+        if e1 < e2 {
+            lo = x1;
+            (x1, e1) = (x2, e2);
+            x2 = lo + ratio * (hi - lo);
+            e2 = f(x2);
+        } else {
+            hi = x2;
+            (x2, e2) = (x1, e1);
+            x1 = hi - ratio * (hi - lo);
+            e1 = f(x1);
+        }
+    }
+    best.max(e1).max(e2)
 }
 
 /// Whether `p` lies in the closed strip between the perpendiculars to `ab`
@@ -852,10 +915,6 @@ mod tests {
                 assert!(dist >= r - tol, "vertex {vi} {sites:?}: site {s:?} inside ({dist} < {r})");
             }
         }
-    }
-
-    pub(super) fn check_geometry_pub(d: &PointDiagram, tol: f64) {
-        check_geometry(d, tol)
     }
 
     fn validate(d: &PointDiagram) {
@@ -1002,6 +1061,7 @@ mod debug_file {
                 super::super::Inserted::Duplicate(s) => all.push(s),
             }
         }
+        let quiet = std::env::var("QUIET").is_ok();
         for (n, &[i, j]) in segs.iter().enumerate() {
             let (a, b) = (all[i], all[j]);
             d.fresh_epoch();
@@ -1023,15 +1083,42 @@ mod debug_file {
             }
             d.replace_tree(e);
             let bad = d.store.validate().err().map(|e| e.to_string()).or_else(|| {
-                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| tests::check_geometry_pub(&d, 1e-9)))
-                    .err()
-                    .map(|p| p.downcast_ref::<String>().cloned().unwrap_or_default())
+                // Cheap check: the new cell's vertices against every site,
+                // every vertex against the new segment.
+                let seg = d.site_geometry(e);
+                let real: Vec<SiteId> = (1..d.sites.len()).map(SiteId::from_index).collect();
+                for vi in 0..d.store.vertex_count() {
+                    let v = VertexId::from_index(vi);
+                    let sites = d.store.sites_of(v);
+                    if sites.contains(&INFINITE) || sites[0].0 == NONE {
+                        continue;
+                    }
+                    let (pos, r) = (d.store.position[vi], d.store.clearance[vi]);
+                    if seg.distance(pos) < r - 1e-9 {
+                        return Some(format!("vertex {vi} {sites:?} at {pos:?} r {r}: new segment inside at {}", seg.distance(pos)));
+                    }
+                    if sites.contains(&e) {
+                        for &s in &real {
+                            let dist = d.site_geometry(s).distance(pos);
+                            if dist < r - 1e-9 || (sites.contains(&s) && (dist - r).abs() > 1e-9) {
+                                return Some(format!("new vertex {vi} {sites:?} at {pos:?} r {r}: site {s:?} at {dist}"));
+                            }
+                        }
+                    }
+                }
+                None
             });
-            println!("segment {n} {e:?} ({a:?},{b:?}): found {found} path {path:?} chords {chords:?} tree {tree:?} twice {cut:?}");
+            if !quiet { println!("segment {n} {e:?} ({a:?},{b:?}): found {found} path {path:?} chords {chords:?} tree {tree:?} twice {cut:?}"); }
             for l in &info {
-                println!("{l}");
+                if !quiet { println!("{l}"); }
             }
             if let Some(msg) = bad {
+                if quiet {
+                    println!("segment {n} {e:?} ({a:?},{b:?}): found {found} path {path:?} chords {chords:?} tree {tree:?} twice {cut:?}");
+                    for l in &info {
+                        println!("{l}");
+                    }
+                }
                 println!("FIRST BAD at segment {n}: {msg}");
                 return;
             }
