@@ -83,9 +83,9 @@ set(_segvoronoi_cgal_segment_runs
   "seg-random2 256 60" "seg-random2 1024 60" "seg-random2 4096 120"
   "seg-random3 256 60" "seg-random3 1024 60" "seg-random3 4096 120"
   "seg-short 1000 60" "seg-short 100000 300"
-  "polyline 1000 60"
+  "polyline 1000 60" "polyline 4096 60"
   "square-hole 8 60"
-  "star 64 60")
+  "star 64 60" "star 256 60")
 segvoronoi_cgal_family_tests(${_segvoronoi_cgal_segment_runs})
 unset(_segvoronoi_cgal_segment_runs)
 
@@ -104,17 +104,12 @@ add_test(NAME cgal_two_segments_near_endpoint
          COMMAND segvoronoi_cgal_check --file ${CMAKE_CURRENT_LIST_DIR}/fixtures/two_segments_near_endpoint.txt)
 set_tests_properties(cgal_two_segments_near_endpoint PROPERTIES TIMEOUT 60 LABELS cgal)
 
-# DISABLED until issue 3's remaining bug is fixed: the diagram validates but
-# differs from CGAL's, and some of its vertices fail the empty-circle test.
-# Smallest case: `segvoronoi_cgal_check seg-random1 8` (edges P11 P15,
-# P12 S4, P15 S2 where CGAL has P15 S0, S0 S7, S2 S6). Cause, as far as
-# known: a point cell bounded by parabolic arcs can have every old vertex in
-# conflict with a new segment while its arcs' middles are not; the deletion
-# set then needs a cycle with one arc cut at both ends (as is already done
-# for separators), which the growth does not allow yet.
-set_tests_properties(
-  cgal_seg-random1_256 cgal_seg-random1_1024 cgal_seg-random1_4096
-  cgal_seg-random2_256 cgal_seg-random2_1024 cgal_seg-random2_4096
-  cgal_seg-random3_256 cgal_seg-random3_1024 cgal_seg-random3_4096
-  cgal_seg-short_1000 cgal_seg-short_100000 cgal_polyline_1000 cgal_star_64
-  PROPERTIES DISABLED TRUE)
+# Regressions found while making the random families agree: a point cell
+# whose every vertex conflicts with a new segment keeps the middle of one
+# edge (seg-random1 8); a segment that continues another straight on leaves
+# the shared endpoint a cell of no width (collinear_continuation, from the
+# proptest of tests/segments.rs).
+add_test(NAME cgal_seg-random1_8 COMMAND segvoronoi_cgal_check seg-random1 8)
+add_test(NAME cgal_collinear_continuation
+         COMMAND segvoronoi_cgal_check --file ${CMAKE_CURRENT_LIST_DIR}/fixtures/collinear_continuation.txt)
+set_tests_properties(cgal_seg-random1_8 cgal_collinear_continuation PROPERTIES TIMEOUT 60 LABELS cgal)
