@@ -15,10 +15,10 @@ pub const SEED: u64 = 0x5EED_0F_B0_0575;
 
 /// SplitMix64 (Steele, Lea, Flood 2014): tiny, fast, and good enough to
 /// spread points uniformly; not for anything cryptographic.
-struct SplitMix64(u64);
+pub struct SplitMix64(pub u64);
 
 impl SplitMix64 {
-    fn next_u64(&mut self) -> u64 {
+    pub fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -27,7 +27,7 @@ impl SplitMix64 {
     }
 
     /// Uniform in [0, 1) with 53 random bits, the most an `f64` holds.
-    fn next_unit(&mut self) -> f64 {
+    pub fn next_unit(&mut self) -> f64 {
         (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
     }
 }

@@ -278,7 +278,21 @@ fn construct(points: &[Point], segments: &[[usize; 2]]) -> (PointDiagram, Vec<Si
             Inserted::Duplicate(s) => site_of[i as usize] = s,
         }
     }
-    let segment_sites = segments.iter().map(|&[i, j]| diagram.insert_segment(site_of[i], site_of[j])).collect();
+    // Segments go in the same spatially coherent order as points, by their
+    // midpoints: each insertion then works where the last one did, in
+    // memory the cache still holds (the result does not depend on it).
+    let midpoints: Vec<Point> = segments
+        .iter()
+        .map(|&[i, j]| {
+            let (p, q) = (points[i], points[j]);
+            Point::new(0.5 * p.x + 0.5 * q.x, 0.5 * p.y + 0.5 * q.y)
+        })
+        .collect();
+    let mut segment_sites = vec![SiteId(NONE); segments.len()];
+    for k in points::insertion_order(&midpoints) {
+        let [i, j] = segments[k as usize];
+        segment_sites[k as usize] = diagram.insert_segment(site_of[i], site_of[j]);
+    }
     (diagram, site_of, segment_sites)
 }
 

@@ -35,7 +35,7 @@ impl Point {
     /// distance of 1e-200 stays 1e-200, where squaring would give 0).
     #[inline]
     pub fn distance(self, other: Point) -> f64 {
-        (self.x - other.x).hypot(self.y - other.y)
+        norm(self.x - other.x, self.y - other.y)
     }
 
     /// `true` when both coordinates are finite.
@@ -65,5 +65,21 @@ impl From<(f64, f64)> for Point {
 impl From<Point> for [f64; 2] {
     fn from(p: Point) -> Self {
         [p.x, p.y]
+    }
+}
+
+/// `sqrt(dx² + dy²)` without overflow or underflow in between: the plain
+/// formula (within an ulp or two of `hypot`, and several times faster) while
+/// the sum of squares is finite and far from the subnormal range, so that a
+/// square lost to underflow would not matter; `hypot` otherwise.
+#[inline]
+pub(crate) fn norm(dx: f64, dy: f64) -> f64 {
+    /// Below this a lost square could matter; about 2^-897.
+    const SMALLEST_SAFE: f64 = 1e-270;
+    let sum = dx * dx + dy * dy;
+    if sum >= SMALLEST_SAFE && sum <= f64::MAX {
+        sum.sqrt()
+    } else {
+        dx.hypot(dy)
     }
 }

@@ -162,7 +162,7 @@ fn cross(a: Point, b: Point) -> f64 {
 }
 
 fn norm(v: Point) -> f64 {
-    v.x.hypot(v.y)
+    super::point::norm(v.x, v.y)
 }
 
 /// `v` turned a quarter counter-clockwise.

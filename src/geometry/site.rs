@@ -15,7 +15,7 @@
 //! each endpoint once and hands the same coordinates to the point site and to
 //! the segment site, so no tolerance is wanted (or safe) here.
 
-use super::point::Point;
+use super::point::{norm, Point};
 
 /// A site as geometry: a point, or an open segment whose endpoints are
 /// separate point sites.
@@ -119,7 +119,7 @@ impl Site {
                 if t > 0.0 && t < 1.0 {
                     let (ux, uy) = (b.x - a.x, b.y - a.y);
                     let cross = ux * (p.y - a.y) - uy * (p.x - a.x);
-                    cross.abs() / ux.hypot(uy)
+                    cross.abs() / norm(ux, uy)
                 } else {
                     p.distance(a).min(p.distance(b))
                 }

@@ -43,6 +43,7 @@ use crate::diagram::{HalfEdgeId, SiteId, VertexId, NONE};
 use crate::geometry::predicates::{orientation, Orientation};
 use crate::geometry::parabola::Parabola;
 use crate::geometry::segment_solvers;
+use crate::geometry::point::norm;
 use crate::geometry::site::Site;
 use crate::geometry::solvers::left_normal;
 use crate::geometry::{fault, Point};
@@ -166,7 +167,7 @@ impl PointDiagram {
         let c = self.store.position[v.index()];
         let entering = |from: Point, to: Point| {
             let (dx, dy) = (to.x - from.x, to.y - from.y);
-            -((c.x - from.x) * dx + (c.y - from.y) * dy) / dx.hypot(dy)
+            -((c.x - from.x) * dx + (c.y - from.y) * dy) / norm(dx, dy)
         };
         let depth = if sites.contains(&a) {
             if self.continues_beyond(a, b, sites) {
@@ -406,13 +407,18 @@ impl PointDiagram {
             let out = h.rotate(2);
             // The start is deleted: it must conflict with the segment if any
             // vertex of R(a) does (one always does, exactly).
-            let conflict = if self.segment_conflict(v, a, b) { 1.0 } else { 0.0 };
+            let (conflict, depth) = if self.store.is_at_infinity(v) {
+                (self.segment_conflict(v, a, b), f64::INFINITY)
+            } else {
+                let depth = self.segment_depth(v, a, b);
+                (depth < 0.0, depth)
+            };
+            let conflict = if conflict { 1.0 } else { 0.0 };
             let key = if self.store.sites_of(v).contains(&b) && self.walkable(v, a, b) {
                 (conflict, f64::INFINITY, f64::INFINITY)
             } else {
                 let left = self.left_degree(v, self.store.left(out), (a, b), ends);
                 let right = self.left_degree(v, self.store.right(out), (a, b), ends);
-                let depth = if self.store.is_at_infinity(v) { f64::INFINITY } else { self.segment_depth(v, a, b) };
                 let separation = left.min(-right);
                 (conflict, if separation.is_nan() { f64::NEG_INFINITY } else { separation.min(f64::MAX) }, -depth)
             };
@@ -734,7 +740,7 @@ impl PointDiagram {
                 let (dx, dy) = (pb.x - pa.x, pb.y - pa.y);
                 let beyond_b = (q.x - pb.x) * dx + (q.y - pb.y) * dy;
                 let beyond_a = (pa.x - q.x) * dx + (pa.y - q.y) * dy;
-                beyond_a.max(beyond_b) / dx.hypot(dy)
+                beyond_a.max(beyond_b) / norm(dx, dy)
             } else {
                 segment.distance(q) - 0.5 * (left.distance(q) + right.distance(q))
             };
