@@ -128,3 +128,45 @@ fn segments_with_random_arithmetic() {
         build_segments_under(FaultMode::Random, seed, &pts, &segs);
     }
 }
+
+#[test]
+fn ten_thousand_segments_with_relative_noise() {
+    let (pts, segs) = segment_grid(120, 5, 0.7);
+    assert!(segs.len() >= 10_000, "{} segments", segs.len());
+    build_segments_under(FaultMode::Noise(1e-3), 5, &pts, &segs);
+}
+
+#[test]
+fn ten_thousand_segments_with_random_arithmetic() {
+    let (pts, segs) = segment_grid(120, 6, 0.7);
+    assert!(segs.len() >= 10_000, "{} segments", segs.len());
+    build_segments_under(FaultMode::Random, 6, &pts, &segs);
+}
+
+/// Shared endpoints everywhere: a long polyline, nested regular polygons, a
+/// star with points among its spokes, the unit-segment lattice.
+#[test]
+fn shared_endpoints_with_lying_arithmetic() {
+    let mut nested = Vec::new();
+    for (k, n) in [3usize, 4, 6, 7, 16, 64].into_iter().enumerate() {
+        nested.extend(polygon(n, 1.0 + k as f64, 0.0, 0.0));
+    }
+    let star: Vec<[[f64; 2]; 2]> = (0..256)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / 256.0;
+            let r = 1.0 + (k % 3) as f64;
+            [[0.0, 0.0], [r * t.cos(), r * t.sin()]]
+        })
+        .collect();
+    let inputs: [(&[[f64; 2]], Vec<[[f64; 2]; 2]>); 4] = [
+        (&[], snake(40, 1)),
+        (&[[0.1, 0.05], [3.5, 0.2]], nested),
+        (&[[0.3, 0.2], [5.0, 5.0]], star),
+        (&[], unit_segment_lattice(12)),
+    ];
+    for mode in [FaultMode::Noise(1e-3), FaultMode::Noise(1e-9), FaultMode::Random] {
+        for (seed, (pts, segs)) in inputs.iter().enumerate() {
+            build_segments_under(mode, seed as u64, pts, segs);
+        }
+    }
+}

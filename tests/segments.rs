@@ -3,8 +3,11 @@
 
 mod common;
 
-use common::{build_sites as build, check_empty_circles as check_geometry, segment_grid, Rng};
-use segvoronoi::{Builder, ErrorKind, Point, Site, TopologyOptions};
+use common::{
+    build_sites as build, check_empty_circles as check_geometry, check_nearest_sites, polygon, segment_grid, snake,
+    unit_segment_lattice, Rng,
+};
+use segvoronoi::{Builder, EdgeEnd, ErrorKind, Point, Site, TopologyOptions};
 
 #[test]
 fn random_disjoint_segments_and_points() {
@@ -83,14 +86,6 @@ fn non_finite_segment_is_refused() {
     assert_eq!(b.segment_count(), 1);
 }
 
-fn polygon(n: usize, r: f64, cx: f64, cy: f64) -> Vec<[[f64; 2]; 2]> {
-    let corner = |k: usize| {
-        let t = std::f64::consts::TAU * (k % n) as f64 / n as f64;
-        [cx + r * t.cos(), cy + r * t.sin()]
-    };
-    (0..n).map(|k| [corner(k), corner(k + 1)]).collect()
-}
-
 #[test]
 fn shared_endpoints_polyline() {
     let segs = [[[0.0, 0.0], [2.0, 0.3]], [[2.0, 0.3], [3.0, 2.0]], [[3.0, 2.0], [1.0, 3.0]]];
@@ -125,12 +120,8 @@ fn star_of_segments() {
     check_geometry(&d, 1e-9);
 }
 
-/// Known failure (issue 3): with spokes of mixed lengths at one point the
-/// diagram validates but some vertices fail the empty-circle check (the
-/// same cause as the random-segment CGAL differences, see
-/// `c_tests/cgal.cmake`). Run with `--ignored`.
+/// Spokes of three lengths at one point, with points among them.
 #[test]
-#[ignore]
 fn star_of_256_segments_with_points() {
     let segs: Vec<[[f64; 2]; 2]> = (0..256)
         .map(|k| {
@@ -155,15 +146,7 @@ fn lattice_of_unit_segments() {
     // Every grid line split into unit segments: degree-4 shared endpoints,
     // collinear neighbours, cocircular everything.
     let n = 6;
-    let mut segs = Vec::new();
-    for i in 0..=n {
-        for j in 0..n {
-            let (x, y) = (i as f64, j as f64);
-            segs.push([[x, y], [x, y + 1.0]]);
-            segs.push([[y, x], [y + 1.0, x]]);
-        }
-    }
-    let d = build(&[], &segs);
+    let d = build(&[], &unit_segment_lattice(n));
     assert_eq!(d.site_count(), (n + 1) * (n + 1) + 2 * n * (n + 1));
     check_geometry(&d, 1e-9);
 }
@@ -173,20 +156,6 @@ fn collinear_consecutive_segments_among_points() {
     let segs = [[[0.0, 0.0], [1.0, 0.0]], [[1.0, 0.0], [2.5, 0.0]], [[2.5, 0.0], [3.0, 0.0]]];
     let d = build(&[[1.2, 1.0], [2.0, -0.7]], &segs);
     check_geometry(&d, 1e-9);
-}
-
-/// A boustrophedon polyline through one jittered point per grid cell:
-/// consecutive segments share endpoints, none cross.
-fn snake(side: usize, seed: u64) -> Vec<[[f64; 2]; 2]> {
-    let mut rng = Rng(seed);
-    let mut path = Vec::new();
-    for i in 0..side {
-        for k in 0..side {
-            let j = if i % 2 == 0 { k } else { side - 1 - k };
-            path.push([i as f64 + 0.1 + 0.8 * rng.unit(), j as f64 + 0.1 + 0.8 * rng.unit()]);
-        }
-    }
-    path.windows(2).map(|w| [w[0], w[1]]).collect()
 }
 
 #[test]
@@ -210,6 +179,49 @@ fn small_star() {
     check_geometry(&d, 1e-9);
 }
 
+/// The build, or its error.
+fn try_build(points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) -> Result<segvoronoi::Diagram, segvoronoi::Error> {
+    let mut b = Builder::new();
+    b.add_points(points.iter().copied())?;
+    b.add_segments(segments.iter().copied())?;
+    b.build()
+}
+
+/// A site named by its coordinates: a point, or a segment's endpoints in
+/// sorted order.
+type SiteKey = Vec<[f64; 2]>;
+
+/// The positive-length edges (longer than 1e-9 of the extent; rays always)
+/// as sorted pairs of site keys, sorted: what every valid answer on
+/// degenerate input shares, independent of the input's numbering.
+fn positive_edges(d: &segvoronoi::Diagram) -> Vec<[SiteKey; 2]> {
+    let key = |s| -> SiteKey {
+        let mut k = match d.site(s) {
+            Site::Point(p) => vec![[p.x, p.y]],
+            Site::Segment { a, b } => vec![[a.x, a.y], [b.x, b.y]],
+        };
+        k.sort_by(|p, q| p.partial_cmp(q).unwrap());
+        k
+    };
+    let threshold = 1e-9 * d.extent();
+    let mut out: Vec<[SiteKey; 2]> = d
+        .edges()
+        .filter(|e| match e.ends {
+            [EdgeEnd::Vertex(a), EdgeEnd::Vertex(b)] => {
+                d.vertex(a).unwrap().position.distance(d.vertex(b).unwrap().position) > threshold
+            }
+            _ => true,
+        })
+        .map(|e| {
+            let mut pair = e.sites.map(key);
+            pair.sort_by(|p, q| p.partial_cmp(q).unwrap());
+            pair
+        })
+        .collect();
+    out.sort_by(|p, q| p.partial_cmp(q).unwrap());
+    out
+}
+
 mod properties {
     use super::*;
     use proptest::prelude::*;
@@ -219,7 +231,12 @@ mod properties {
     /// next cell's point (shared endpoints), and some points snapped to a
     /// coarse lattice (cocircular and collinear subsets).
     fn scene() -> impl Strategy<Value = (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>)> {
-        (2usize..9, any::<u64>(), 0.0f64..1.0, any::<bool>()).prop_map(|(side, seed, share, snap)| {
+        scene_snapped(any::<bool>())
+    }
+
+    /// [`scene`], snapped to the quarter lattice or not as `snap` says.
+    fn scene_snapped(snap: impl Strategy<Value = bool>) -> impl Strategy<Value = (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>)> {
+        (2usize..9, any::<u64>(), 0.0f64..1.0, snap).prop_map(|(side, seed, share, snap)| {
             let mut rng = Rng(seed);
             let mut coord = |base: f64| {
                 let v = base + 0.1 + 0.8 * rng.unit();
@@ -273,25 +290,87 @@ mod properties {
             }
         }
 
-        /// Known failure (issue 3): nearly degenerate configurations of
-        /// segments sharing endpoints (and two plain disjoint segments, see
-        /// the CGAL check) get a deletion set the segment insertion cannot
-        /// take (a conflicting vertex adjacent to two tree vertices), and a
-        /// vertex off its true position. Run with `--ignored`.
+        /// Every vertex equidistant from its sites and no site closer
+        /// (1e-9 of the extent); random query points lie in the cell of a
+        /// nearest site, and `nearest_site` finds one.
         #[test]
-        #[ignore]
-        fn segment_diagrams_are_geometrically_right((pts, segs) in scene()) {
+        fn segment_diagrams_are_geometrically_right((pts, segs) in scene(), seed in any::<u64>()) {
             let mut b = Builder::new();
             b.add_points(pts.iter().copied()).unwrap();
             b.add_segments(segs.iter().copied()).unwrap();
             match b.build() {
-                Ok(d) => check_geometry(&d, 1e-9),
+                Ok(d) => {
+                    check_geometry(&d, 1e-9);
+                    let mut rng = Rng(seed);
+                    let queries: Vec<Point> =
+                        (0..40).map(|_| Point::new(rng.unit() * 12.0 - 1.5, rng.unit() * 12.0 - 1.5)).collect();
+                    check_nearest_sites(&d, &queries, 1e-9);
+                    let mut hint = None;
+                    for q in queries {
+                        let found = d.nearest_site(q, hint).unwrap();
+                        let best = d.site_ids().map(|s| d.site(s).distance(q)).fold(f64::INFINITY, f64::min);
+                        prop_assert!(d.site(found).distance(q) <= best + 1e-9 * d.extent());
+                        hint = Some(found);
+                    }
+                }
                 // joined polylines may cross a neighbour's segment: then the
                 // input is refused, with both indices
                 Err(e) => {
                     prop_assert_eq!(e.kind(), ErrorKind::Intersecting);
                     prop_assert_eq!(e.indices().len(), 2);
                 }
+            }
+        }
+
+        /// Shuffling the points and the segments and reversing some
+        /// segments changes no positive-length edge (sites named by their
+        /// coordinates).
+        #[test]
+        fn topology_is_independent_of_input_order((pts, segs) in scene(), seed in any::<u64>()) {
+            let mut rng = Rng(seed);
+            let (mut pts2, mut segs2) = (pts.clone(), segs.clone());
+            for i in (1..pts2.len()).rev() {
+                pts2.swap(i, (rng.next_u64() % (i as u64 + 1)) as usize);
+            }
+            for i in (1..segs2.len()).rev() {
+                segs2.swap(i, (rng.next_u64() % (i as u64 + 1)) as usize);
+            }
+            for s in segs2.iter_mut() {
+                if rng.unit() < 0.5 {
+                    s.reverse();
+                }
+            }
+            match (try_build(&pts, &segs), try_build(&pts2, &segs2)) {
+                (Ok(a), Ok(b)) => prop_assert_eq!(positive_edges(&a), positive_edges(&b)),
+                (Err(_), Err(_)) => {}
+                _ => prop_assert!(false, "the order changed whether the input is valid"),
+            }
+        }
+
+        /// Translating a quarter-lattice scene by whole units (exact) changes
+        /// no positive-length edge.
+        #[test]
+        fn topology_is_invariant_under_translation((pts, segs) in scene_snapped(Just(true)), dx in -64i32..64, dy in -64i32..64) {
+            let (dx, dy) = (dx as f64, dy as f64);
+            let pts2: Vec<[f64; 2]> = pts.iter().map(|p| [p[0] + dx, p[1] + dy]).collect();
+            let segs2: Vec<[[f64; 2]; 2]> = segs.iter().map(|s| s.map(|p| [p[0] + dx, p[1] + dy])).collect();
+            match (try_build(&pts, &segs), try_build(&pts2, &segs2)) {
+                (Ok(a), Ok(b)) => {
+                    let back: Vec<_> = positive_edges(&b)
+                        .into_iter()
+                        .map(|pair| {
+                            let mut pair = pair.map(|key| key.into_iter().map(|[x, y]| [x - dx, y - dy]).collect::<Vec<_>>());
+                            pair.iter_mut().for_each(|k| k.sort_by(|p, q| p.partial_cmp(q).unwrap()));
+                            pair.sort_by(|p, q| p.partial_cmp(q).unwrap());
+                            pair
+                        })
+                        .collect::<Vec<_>>();
+                    let mut back = back;
+                    back.sort_by(|p, q| p.partial_cmp(q).unwrap());
+                    prop_assert_eq!(positive_edges(&a), back);
+                }
+                (Err(_), Err(_)) => {}
+                _ => prop_assert!(false, "translation changed whether the input is valid"),
             }
         }
 

@@ -104,3 +104,41 @@ pub fn build_sites(points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) -> Diagram {
     d.validate().unwrap_or_else(|e| panic!("{e}"));
     d
 }
+
+/// The sides of the regular `n`-gon of circumradius `r` centred at
+/// `(cx, cy)`, each sharing its endpoints with its neighbours.
+pub fn polygon(n: usize, r: f64, cx: f64, cy: f64) -> Vec<[[f64; 2]; 2]> {
+    let corner = |k: usize| {
+        let t = std::f64::consts::TAU * (k % n) as f64 / n as f64;
+        [cx + r * t.cos(), cy + r * t.sin()]
+    };
+    (0..n).map(|k| [corner(k), corner(k + 1)]).collect()
+}
+
+/// A boustrophedon polyline through one jittered point per grid cell:
+/// consecutive segments share endpoints, none cross.
+pub fn snake(side: usize, seed: u64) -> Vec<[[f64; 2]; 2]> {
+    let mut rng = Rng(seed);
+    let mut path = Vec::new();
+    for i in 0..side {
+        for k in 0..side {
+            let j = if i % 2 == 0 { k } else { side - 1 - k };
+            path.push([i as f64 + 0.1 + 0.8 * rng.unit(), j as f64 + 0.1 + 0.8 * rng.unit()]);
+        }
+    }
+    path.windows(2).map(|w| [w[0], w[1]]).collect()
+}
+
+/// Every line of the `n` by `n` unit grid split into unit segments:
+/// degree-4 shared endpoints, collinear neighbours, cocircular everything.
+pub fn unit_segment_lattice(n: usize) -> Vec<[[f64; 2]; 2]> {
+    let mut segs = Vec::new();
+    for i in 0..=n {
+        for j in 0..n {
+            let (x, y) = (i as f64, j as f64);
+            segs.push([[x, y], [x, y + 1.0]]);
+            segs.push([[y, x], [y + 1.0, x]]);
+        }
+    }
+    segs
+}
