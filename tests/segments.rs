@@ -406,3 +406,23 @@ fn segment_passing_near_another_segments_endpoint() {
     let text = d.topology(TopologyOptions::default());
     assert!(text.contains("\nS0 S1\n"), "{text}");
 }
+
+/// The nearest-site walk against brute force on a thousand segments among
+/// points, with and without hints, including queries far outside.
+#[test]
+fn nearest_site_walk_with_segments() {
+    let (pts, segs) = segment_grid(40, 11, 0.6);
+    let d = build(&pts, &segs);
+    let mut rng = Rng(12);
+    let mut hint = None;
+    for k in 0..2000 {
+        let spread = if k % 10 == 0 { 400.0 } else { 44.0 };
+        let q = Point::new(rng.unit() * spread - spread / 2.0 + 20.0, rng.unit() * spread - spread / 2.0 + 20.0);
+        let best = d.site_ids().map(|s| d.site(s).distance(q)).fold(f64::INFINITY, f64::min);
+        for h in [None, hint] {
+            let found = d.nearest_site(q, h).unwrap();
+            assert!(d.site(found).distance(q) <= best * (1.0 + 1e-12), "query {q:?}: {found:?} is not nearest");
+        }
+        hint = d.nearest_site(q, hint);
+    }
+}

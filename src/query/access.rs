@@ -154,8 +154,15 @@ impl Diagram {
     /// boundary any of the tied sites), or `None` for an empty diagram.
     /// Walks the diagram from `hint`, or from site 0 without one: a hint near
     /// `p` (say the answer of the previous, nearby query) makes it fast.
-    /// With segment sites it compares `p` with every site for now (linear
-    /// time): a greedy walk is not guaranteed to end at the nearest one.
+    ///
+    /// The walk moves to a closer neighbouring site while there is one. That
+    /// ends at a nearest site with segments too: if `p` lay outside the cell
+    /// of `s`, the straight path from the point of `s` nearest to `p` would
+    /// leave that cell into a neighbour's at some `q`, and that neighbour is
+    /// then at most `|q - x| + |p - q| = d(p, s)` from `p`. Where distances
+    /// tie, the walk looks across the tied neighbours before stopping. With
+    /// segment sites the distances are rounded (within an ulp or so of the
+    /// nearest distance); among points only, the comparisons are exact.
     ///
     /// ```
     /// use segvoronoi::{Builder, Point, Site};
@@ -176,9 +183,7 @@ impl Diagram {
             return Some(start);
         }
         if self.point_sites < n {
-            // With segments, a greedy walk can stop at a local minimum; until
-            // a walk with that guarantee exists, compare with every site.
-            return self.site_ids().min_by(|&x, &y| self.site(x).distance(p).total_cmp(&self.site(y).distance(p)));
+            return Some(self.nearest_among_segments(p, start));
         }
         // Compare distances in the builder's scaled coordinates, where squares
         // of input-sized numbers cannot overflow (a query point far beyond
@@ -195,6 +200,49 @@ impl Diagram {
             |q| site(q).distance_squared(p),
             |(q, dq), (best, d_best)| strictly_closer_given(p, site(q), dq, site(best), d_best),
         ))
+    }
+
+    /// [`Diagram::nearest_site`] when there are segment sites: greedy
+    /// descent by rounded distance, then a search across neighbours at the
+    /// same distance for a way further down (each round strictly lowers the
+    /// distance, so it ends).
+    fn nearest_among_segments(&self, p: Point, start: SiteId) -> SiteId {
+        let n = self.sites.len();
+        let distance = |s: SiteId| {
+            let d = self.site(s).distance(p);
+            if d.is_nan() {
+                f64::INFINITY
+            } else {
+                d
+            }
+        };
+        let mut best = self.store.descend(start, n, distance, |(_, dq), (_, d_best)| dq < d_best);
+        loop {
+            let d_best = distance(best);
+            let mut tied = vec![best];
+            let mut seen = std::collections::HashSet::from([best]);
+            let mut lower = None;
+            'search: while let Some(s) = tied.pop() {
+                for h in self.store.cell_boundary(s) {
+                    let t = self.store.right(h);
+                    if t == self.store.infinite_site {
+                        continue;
+                    }
+                    let dt = distance(t);
+                    if dt < d_best {
+                        lower = Some(t);
+                        break 'search;
+                    }
+                    if dt == d_best && seen.insert(t) {
+                        tied.push(t);
+                    }
+                }
+            }
+            match lower {
+                Some(t) => best = self.store.descend(t, n, distance, |(_, dq), (_, d_best)| dq < d_best),
+                None => return best,
+            }
+        }
     }
 
     /// A finite vertex, or `None` if the id is out of range.
