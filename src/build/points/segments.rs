@@ -1028,113 +1028,126 @@ mod tests {
 }
 
 #[cfg(test)]
-mod debug_file {
+mod replay {
+    //! Inserts the segments of an input one at a time and checks the
+    //! diagram after every insertion: valid, every surviving vertex's circle
+    //! free of the new segment, every new vertex equidistant from its sites
+    //! with no site closer. Names the first insertion that goes wrong.
     use super::*;
+    use crate::build::order::SplitMix;
+    use crate::build::Inserted;
 
-    /// Debug aid: `SEGFILE=path cargo test debug_file -- --ignored --nocapture`.
+    const TOLERANCE: f64 = 1e-9;
+
+    /// Reads Boost.Polygon's text format (points, then segments).
+    fn parse(text: &str) -> (Vec<Point>, Vec<[Point; 2]>) {
+        let mut nums = text.split_whitespace().map(|t| t.parse::<f64>().expect("a number"));
+        let mut next = || nums.next().expect("more numbers");
+        let points = (0..next() as usize).map(|_| Point::new(next(), next())).collect();
+        let segments = (0..next() as usize).map(|_| [Point::new(next(), next()), Point::new(next(), next())]).collect();
+        (points, segments)
+    }
+
+    /// The first wrong insertion, if any (inputs whose points are not all
+    /// collinear, coordinates of order 1).
+    fn replay(points: &[Point], segments: &[[Point; 2]]) -> Result<(), String> {
+        let all: Vec<Point> = points.iter().copied().chain(segments.iter().flatten().copied()).collect();
+        let mut d = PointDiagram::new(all.len() + segments.len());
+        let mut ids = d.start_collinear(&all[..2]);
+        let mut last = ids[1];
+        for &p in &all[2..] {
+            let id = match d.insert(p, last) {
+                Inserted::New(s) => s,
+                Inserted::Duplicate(s) => s,
+            };
+            ids.push(id);
+            last = id;
+        }
+        for (n, k) in (0..segments.len()).enumerate() {
+            let base = points.len() + 2 * k;
+            let e = d.insert_segment(ids[base], ids[base + 1]);
+            d.store.validate().map_err(|err| format!("segment {n}: {err}"))?;
+            check_after(&d, e).map_err(|err| format!("segment {n}: {err}"))?;
+        }
+        Ok(())
+    }
+
+    fn check_after(d: &PointDiagram, e: SiteId) -> Result<(), String> {
+        let segment = d.site_geometry(e);
+        let real: Vec<SiteId> = (1..d.sites.len()).map(SiteId::from_index).collect();
+        for vi in 0..d.store.vertex_count() {
+            let v = VertexId::from_index(vi);
+            let sites = d.store.sites_of(v);
+            if sites.contains(&INFINITE) || sites[0].0 == NONE {
+                continue;
+            }
+            let (pos, r) = (d.store.position[vi], d.store.clearance[vi]);
+            if segment.distance(pos) < r - TOLERANCE {
+                return Err(format!("vertex {vi} {sites:?} kept with the new segment inside its circle"));
+            }
+            if sites.contains(&e) {
+                for &s in &real {
+                    let dist = d.site_geometry(s).distance(pos);
+                    if dist < r - TOLERANCE || (sites.contains(&s) && (dist - r).abs() > TOLERANCE) {
+                        return Err(format!("new vertex {vi} {sites:?} at {pos:?}: site {s:?} at {dist}, clearance {r}"));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Whether the closed segments `p` and `q` meet (exact orientations).
+    fn meet(p: [Point; 2], q: [Point; 2]) -> bool {
+        let side = |a: Point, b: Point, c: Point| orientation(a, b, c) as i32;
+        let (d1, d2) = (side(p[0], p[1], q[0]), side(p[0], p[1], q[1]));
+        let (d3, d4) = (side(q[0], q[1], p[0]), side(q[0], q[1], p[1]));
+        d1 != d2 && d3 != d4 || [d1, d2, d3, d4].contains(&(Orientation::Collinear as i32))
+    }
+
+    /// Seed 000's first method: random endpoints in the unit square, a
+    /// segment that meets an earlier one redrawn.
+    fn random_segments(n: usize, seed: u64) -> Vec<[Point; 2]> {
+        let mut rng = SplitMix(seed);
+        let mut unit = move || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
+        let mut out: Vec<[Point; 2]> = Vec::new();
+        while out.len() < n {
+            let s = [Point::new(unit(), unit()), Point::new(unit(), unit())];
+            if !out.iter().any(|&t| meet(s, t)) {
+                out.push(s);
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn fixtures_are_right_after_every_insertion() {
+        for (name, text) in [
+            ("collinear_continuation", include_str!("../../../c_tests/fixtures/collinear_continuation.txt")),
+            ("two_segments_near_endpoint", include_str!("../../../c_tests/fixtures/two_segments_near_endpoint.txt")),
+        ] {
+            let (points, segments) = parse(text);
+            replay(&points, &segments).unwrap_or_else(|err| panic!("{name}: {err}"));
+        }
+    }
+
+    /// Long random segments: cells wrapped around points and arcs cut twice
+    /// (what first showed the need for edges cut at both ends).
+    #[test]
+    fn random_long_segments_are_right_after_every_insertion() {
+        for seed in 0..12 {
+            let segments = random_segments(60, seed);
+            replay(&[], &segments).unwrap_or_else(|err| panic!("seed {seed}: {err}"));
+        }
+    }
+
+    /// Debug aid: `SEGFILE=input.txt cargo test --lib replay_file -- --ignored`
+    /// replays any input in Boost.Polygon's text format.
     #[test]
     #[ignore]
     fn replay_file() {
-        let Ok(path) = std::env::var("SEGFILE") else { return };
-        let text = std::fs::read_to_string(path).unwrap();
-        let nums: Vec<f64> = text.split_whitespace().map(|t| t.parse().unwrap()).collect();
-        let np = nums[0] as usize;
-        let mut pts = Vec::new();
-        let mut k = 1;
-        for _ in 0..np {
-            pts.push(Point::new(nums[k], nums[k + 1]));
-            k += 2;
-        }
-        let ns = nums[k] as usize;
-        k += 1;
-        let mut segs = Vec::new();
-        for _ in 0..ns {
-            pts.push(Point::new(nums[k], nums[k + 1]));
-            pts.push(Point::new(nums[k + 2], nums[k + 3]));
-            segs.push([pts.len() - 2, pts.len() - 1]);
-            k += 4;
-        }
-        let mut d = PointDiagram::new(pts.len() + segs.len());
-        let ids = d.start_collinear(&pts[..2]);
-        let mut all = ids.clone();
-        let mut last = ids[1];
-        for &p in &pts[2..] {
-            match d.insert(p, last) {
-                super::super::Inserted::New(s) => {
-                    all.push(s);
-                    last = s;
-                }
-                super::super::Inserted::Duplicate(s) => all.push(s),
-            }
-        }
-        let quiet = std::env::var("QUIET").is_ok();
-        for (n, &[i, j]) in segs.iter().enumerate() {
-            let (a, b) = (all[i], all[j]);
-            d.fresh_epoch();
-            let e = d.add_segment_site(a, b);
-            let found = d.find_segment_path(a, b);
-            let path = d.tree.clone();
-            let chords = d.twice_cut.clone();
-            d.grow_segment_tree(a, b);
-            let tree = d.tree.clone();
-            let cut = d.twice_cut.clone();
-            let mut info = Vec::new();
-            for vi in 0..d.store.vertex_count() {
-                let v = VertexId::from_index(vi);
-                if d.store.sites_of(v)[0].0 == NONE { continue; }
-                if d.segment_conflict(v, a, b) || tree.contains(&v) {
-                    let nb: Vec<(VertexId, u32, u32, f64)> = (0..3).map(|k| { let h = v.half_edge(k); (d.store.target(h), d.store.left(h).0, d.store.right(h).0, if d.is_finite_edge(h) { d.middle_margin(h, a, b) } else { f64::NAN }) }).collect();
-                    info.push(format!("   {v:?} depth {:e} pos {:?} conflict {} in_tree {} sites {:?} strip {} nbrs {:?}", if d.store.is_at_infinity(v) { 0.0 } else { d.segment_depth(v, a, b) }, d.store.position[vi], d.segment_conflict(v, a, b), tree.contains(&v), d.store.sites_of(v), d.store.is_at_infinity(v) || in_strip(d.store.position[vi], d.sites[a.index()], d.sites[b.index()]), nb));
-                }
-            }
-            d.replace_tree(e);
-            let bad = d.store.validate().err().map(|e| e.to_string()).or_else(|| {
-                // Cheap check: the new cell's vertices against every site,
-                // every vertex against the new segment.
-                let seg = d.site_geometry(e);
-                let real: Vec<SiteId> = (1..d.sites.len()).map(SiteId::from_index).collect();
-                for vi in 0..d.store.vertex_count() {
-                    let v = VertexId::from_index(vi);
-                    let sites = d.store.sites_of(v);
-                    if sites.contains(&INFINITE) || sites[0].0 == NONE {
-                        continue;
-                    }
-                    let (pos, r) = (d.store.position[vi], d.store.clearance[vi]);
-                    if seg.distance(pos) < r - 1e-9 {
-                        return Some(format!("vertex {vi} {sites:?} at {pos:?} r {r}: new segment inside at {}", seg.distance(pos)));
-                    }
-                    if sites.contains(&e) {
-                        for &s in &real {
-                            let dist = d.site_geometry(s).distance(pos);
-                            if dist < r - 1e-9 || (sites.contains(&s) && (dist - r).abs() > 1e-9) {
-                                return Some(format!("new vertex {vi} {sites:?} at {pos:?} r {r}: site {s:?} at {dist}"));
-                            }
-                        }
-                    }
-                }
-                None
-            });
-            if !quiet { println!("segment {n} {e:?} ({a:?},{b:?}): found {found} path {path:?} chords {chords:?} tree {tree:?} twice {cut:?}"); }
-            for l in &info {
-                if !quiet { println!("{l}"); }
-            }
-            if let Some(msg) = bad {
-                if quiet {
-                    println!("segment {n} {e:?} ({a:?},{b:?}): found {found} path {path:?} chords {chords:?} tree {tree:?} twice {cut:?}");
-                    for l in &info {
-                        println!("{l}");
-                    }
-                }
-                println!("FIRST BAD at segment {n}: {msg}");
-                return;
-            }
-        }
-        println!("all good");
-        if std::env::var("DUMP").is_ok() {
-            for vi in 0..d.store.vertex_count() {
-                let v = VertexId::from_index(vi);
-                println!("V{vi} {:?} {:?} r={:e}", d.store.sites_of(v), d.store.position[vi], d.store.clearance[vi]);
-            }
-        }
+        let path = std::env::var("SEGFILE").expect("SEGFILE names the input to replay");
+        let (points, segments) = parse(&std::fs::read_to_string(path).expect("a readable input"));
+        replay(&points, &segments).unwrap_or_else(|err| panic!("{err}"));
     }
 }
