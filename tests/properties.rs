@@ -8,21 +8,15 @@ mod common;
 
 use common::*;
 use proptest::prelude::*;
-use segvoronoi::{Diagram, EdgeEnd, Point, Site};
+use segvoronoi::{Diagram, Point, Site};
 
 /// Positive-length Voronoi edges as pairs of site coordinates (sorted), the
 /// part of the topology that every valid answer on degenerate input shares.
 fn positive_pairs(d: &Diagram) -> Vec<[(u64, u64); 2]> {
     let key = |p: Point| (p.x.to_bits(), p.y.to_bits());
-    let threshold = 1e-9 * d.extent();
     let mut out: Vec<[(u64, u64); 2]> = d
         .edges()
-        .filter(|e| match e.ends {
-            [EdgeEnd::Vertex(a), EdgeEnd::Vertex(b)] => {
-                d.vertex(a).unwrap().position.distance(d.vertex(b).unwrap().position) > threshold
-            }
-            _ => true,
-        })
+        .filter(|e| has_positive_length(d, e))
         .map(|e| {
             let point = |s| d.site(s).as_point().expect("point sites only");
             let mut pair = [key(point(e.sites[0])), key(point(e.sites[1]))];

@@ -4,10 +4,10 @@
 mod common;
 
 use common::{
-    build_sites as build, check_empty_circles as check_geometry, check_nearest_sites, polygon, segment_grid, snake,
+    build_sites as build, check_empty_circles as check_geometry, check_nearest_sites, has_positive_length, polygon, segment_grid, snake,
     unit_segment_lattice, Rng,
 };
-use segvoronoi::{Builder, EdgeEnd, ErrorKind, Point, Site, TopologyOptions};
+use segvoronoi::{Builder, ErrorKind, Point, Site, TopologyOptions};
 
 #[test]
 fn random_disjoint_segments_and_points() {
@@ -203,15 +203,9 @@ fn positive_edges(d: &segvoronoi::Diagram) -> Vec<[SiteKey; 2]> {
         k.sort_by(|p, q| p.partial_cmp(q).unwrap());
         k
     };
-    let threshold = 1e-9 * d.extent();
     let mut out: Vec<[SiteKey; 2]> = d
         .edges()
-        .filter(|e| match e.ends {
-            [EdgeEnd::Vertex(a), EdgeEnd::Vertex(b)] => {
-                d.vertex(a).unwrap().position.distance(d.vertex(b).unwrap().position) > threshold
-            }
-            _ => true,
-        })
+        .filter(|e| has_positive_length(d, e))
         .map(|e| {
             let mut pair = e.sites.map(key);
             pair.sort_by(|p, q| p.partial_cmp(q).unwrap());

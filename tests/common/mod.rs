@@ -142,3 +142,15 @@ pub fn unit_segment_lattice(n: usize) -> Vec<[[f64; 2]; 2]> {
     }
     segs
 }
+
+/// Whether an edge is longer than 1e-9 of the diagram's extent (rays and
+/// lines always are): the edges every valid answer on degenerate input
+/// shares.
+pub fn has_positive_length(d: &Diagram, e: &segvoronoi::Edge) -> bool {
+    match e.ends {
+        [EdgeEnd::Vertex(a), EdgeEnd::Vertex(b)] => {
+            d.vertex(a).unwrap().position.distance(d.vertex(b).unwrap().position) > 1e-9 * d.extent()
+        }
+        _ => true,
+    }
+}

@@ -900,26 +900,31 @@ mod tests {
         d
     }
 
-    /// Every finite vertex is equidistant from its three sites and no site
+    /// The finite vertices in use: id, sites, position, clearance.
+    pub(super) fn finite_vertices(d: &PointDiagram) -> impl Iterator<Item = (usize, [SiteId; 3], Point, f64)> + '_ {
+        (0..d.store.vertex_count()).filter_map(|vi| {
+            let sites = d.store.sites_of(VertexId::from_index(vi));
+            let unused_or_infinite = sites.contains(&INFINITE) || sites[0].0 == NONE;
+            (!unused_or_infinite).then(|| (vi, sites, d.store.position[vi], d.store.clearance[vi]))
+        })
+    }
+
+    /// Whether the vertex is equidistant from its three sites and no site
     /// is closer (brute force), within `tol`.
+    pub(super) fn check_vertex(d: &PointDiagram, (vi, sites, pos, r): (usize, [SiteId; 3], Point, f64), tol: f64) -> Result<(), String> {
+        for s in (1..d.sites.len()).map(SiteId::from_index) {
+            let dist = d.site_geometry(s).distance(pos);
+            if dist < r - tol || (sites.contains(&s) && (dist - r).abs() > tol) {
+                return Err(format!("vertex {vi} {sites:?} at {pos:?}: site {s:?} at {dist}, clearance {r}"));
+            }
+        }
+        Ok(())
+    }
+
+    /// Every finite vertex passes `check_vertex`.
     fn check_geometry(d: &PointDiagram, tol: f64) {
-        let real: Vec<SiteId> = (1..d.sites.len()).map(SiteId::from_index).collect();
-        for vi in 0..d.store.vertex_count() {
-            let v = VertexId::from_index(vi);
-            let sites = d.store.sites_of(v);
-            if sites.contains(&INFINITE) || sites[0].0 == NONE {
-                continue;
-            }
-            let pos = d.store.position[vi];
-            let r = d.store.clearance[vi];
-            for s in sites {
-                let dist = d.site_geometry(s).distance(pos);
-                assert!((dist - r).abs() <= tol, "vertex {vi} {sites:?} at {pos:?}: site {s:?} at {dist}, clearance {r}");
-            }
-            for &s in &real {
-                let dist = d.site_geometry(s).distance(pos);
-                assert!(dist >= r - tol, "vertex {vi} {sites:?}: site {s:?} inside ({dist} < {r})");
-            }
+        for v in finite_vertices(d) {
+            check_vertex(d, v, tol).unwrap_or_else(|e| panic!("{e}"));
         }
     }
 
@@ -1074,24 +1079,12 @@ mod replay {
 
     fn check_after(d: &PointDiagram, e: SiteId) -> Result<(), String> {
         let segment = d.site_geometry(e);
-        let real: Vec<SiteId> = (1..d.sites.len()).map(SiteId::from_index).collect();
-        for vi in 0..d.store.vertex_count() {
-            let v = VertexId::from_index(vi);
-            let sites = d.store.sites_of(v);
-            if sites.contains(&INFINITE) || sites[0].0 == NONE {
-                continue;
-            }
-            let (pos, r) = (d.store.position[vi], d.store.clearance[vi]);
+        for v @ (vi, sites, pos, r) in super::tests::finite_vertices(d) {
             if segment.distance(pos) < r - TOLERANCE {
                 return Err(format!("vertex {vi} {sites:?} kept with the new segment inside its circle"));
             }
             if sites.contains(&e) {
-                for &s in &real {
-                    let dist = d.site_geometry(s).distance(pos);
-                    if dist < r - TOLERANCE || (sites.contains(&s) && (dist - r).abs() > TOLERANCE) {
-                        return Err(format!("new vertex {vi} {sites:?} at {pos:?}: site {s:?} at {dist}, clearance {r}"));
-                    }
-                }
+                super::tests::check_vertex(d, v, TOLERANCE).map_err(|err| format!("new {err}"))?;
             }
         }
         Ok(())
