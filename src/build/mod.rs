@@ -278,9 +278,11 @@ fn construct(points: &[Point], segments: &[[usize; 2]]) -> (PointDiagram, Vec<Si
             Inserted::Duplicate(s) => site_of[i as usize] = s,
         }
     }
-    // Segments go in the same spatially coherent order as points, by their
-    // midpoints: each insertion then works where the last one did, in
-    // memory the cache still holds (the result does not depend on it).
+    // Segments go along a Hilbert curve through their midpoints: each
+    // insertion then works where the last one did, in memory the cache
+    // still holds (the result does not depend on it). No BRIO rounds: with
+    // every point in, a segment's conflict region stays near it whichever
+    // segments came before.
     let midpoints: Vec<Point> = segments
         .iter()
         .map(|&[i, j]| {
@@ -289,7 +291,7 @@ fn construct(points: &[Point], segments: &[[usize; 2]]) -> (PointDiagram, Vec<Si
         })
         .collect();
     let mut segment_sites = vec![SiteId(NONE); segments.len()];
-    for k in points::insertion_order(&midpoints) {
+    for k in points::hilbert_order(&midpoints) {
         let [i, j] = segments[k as usize];
         segment_sites[k as usize] = diagram.insert_segment(site_of[i], site_of[j]);
     }

@@ -605,10 +605,13 @@ impl PointDiagram {
         let saved = self.twice_cut.len();
         // Each closing edge in turn rejoins the tree, whose other closing
         // edges are meanwhile taken as cut, so the tree stays a tree.
-        let closing: Vec<HalfEdgeId> =
-            [back.rotate(1), back.rotate(2)].into_iter().filter(|&h| self.leads_into_tree(h)).collect();
-        self.twice_cut.extend(&closing);
-        for (k, &edge) in closing.iter().enumerate() {
+        let closing = [back.rotate(1), back.rotate(2)].map(|h| self.leads_into_tree(h).then_some(h));
+        let closing = closing.iter().flatten().copied();
+        if closing.clone().next().is_none() {
+            return true;
+        }
+        self.twice_cut.extend(closing.clone());
+        for (k, edge) in closing.enumerate() {
             let slot = saved + k;
             let cycle = self.tree_path(self.store.target(edge), edge.origin());
             let mut candidates: Vec<(f64, HalfEdgeId)> = std::iter::once(edge)
