@@ -113,3 +113,61 @@ add_test(NAME cgal_seg-random1_8 COMMAND segvoronoi_cgal_check seg-random1 8)
 add_test(NAME cgal_collinear_continuation
          COMMAND segvoronoi_cgal_check --file ${CMAKE_CURRENT_LIST_DIR}/fixtures/collinear_continuation.txt)
 set_tests_properties(cgal_seg-random1_8 cgal_collinear_continuation PROPERTIES TIMEOUT 60 LABELS cgal)
+
+# Issue 3's further segment families. Generic (EDGES and FACES must agree):
+# a random polygon with random polygonal holes (n corners in all), the
+# outline of a capital R with every segment pulled apart at both ends by its
+# own amounts (seed 000 figure 8 (5), 22 segments), and almost vertical
+# segments (x changes by 1e-9 of the length, half of them chained with a
+# tiny kink; Boost.Polygon had bugs with those). Degenerate (VPAIRS and
+# VVERTICES): the unit segments of an integer grid (up to four at a point,
+# every cell cocircular), n segments tangent to the unit circle (figure 8
+# (3)), n equal parallel segments at unit spacing (figure 8 (4), 39 as in
+# the seed) and the R with shared endpoints (its hand coordinates align the
+# corners (20, 40) and (20, 58)).
+# family, segment count, timeout in seconds
+set(_segvoronoi_cgal_issue3_runs
+  "polygon-holes 64 60" "polygon-holes 1024 60" "polygon-holes 4096 60"
+  "letter-gap 22 60"
+  "near-vertical 64 60" "near-vertical 1000 60" "near-vertical 4096 60"
+  "seg-lattice 180 60" "seg-lattice 1984 60" "seg-lattice 7812 60"
+  "tangent 4 60" "tangent 16 60" "tangent 64 60" "tangent 256 60" "tangent 1024 60"
+  "parallel 39 60" "parallel 200 60" "parallel 1000 60"
+  "letter 22 60")
+segvoronoi_cgal_family_tests(${_segvoronoi_cgal_issue3_runs})
+unset(_segvoronoi_cgal_issue3_runs)
+
+# Regression inputs rebuilt from other Voronoi libraries' bug reports (one
+# file each in fixtures/, Boost.Polygon text format); name, degenerate flag,
+# and the report. Where the report's own input is not public, the file holds
+# what the thread quotes.
+function(segvoronoi_cgal_fixture_test name)
+  add_test(NAME cgal_fixture_${name}
+           COMMAND segvoronoi_cgal_check --file ${CMAKE_CURRENT_LIST_DIR}/fixtures/${name}.txt ${ARGN})
+  set_tests_properties(cgal_fixture_${name} PROPERTIES TIMEOUT 60 LABELS cgal)
+endfunction()
+# Boost.Polygon missing edges, the issue's 6-corner polygon: https://github.com/boostorg/polygon/issues/43
+segvoronoi_cgal_fixture_test(boost43_polygon)
+# Boost.Polygon wrong edges with collinear polygon vertices, the thread's quad (a = 0): https://github.com/boostorg/polygon/issues/43
+segvoronoi_cgal_fixture_test(boost43_collinear_quad --degenerate)
+# Boost.Polygon near-vertical segments: vertical leg continued 1 unit off vertical over 6.1e6 (eadf/boostvoronoi.rs example/input_data/polygon/issue_43_3.txt; https://github.com/eadf/boostvoronoi.rs/issues/3)
+segvoronoi_cgal_fixture_test(boost_near_vertical_pair)
+# Boost.Polygon infinite loop on a real-world 1912-segment input: the 12 crossing segments the thread quotes, split at their crossings: https://github.com/boostorg/polygon/issues/49#issuecomment-803636796
+segvoronoi_cgal_fixture_test(boost49_crossings_split --degenerate)
+# The same, reduced to one junction: a near-vertical segment split where a horizontal one ends on it (3 segments at a point)
+segvoronoi_cgal_fixture_test(boost49_t_junction --degenerate)
+# OpenVoronoi failure on regular n-gons with even n, the issue's generator (r = 0.9, n = 100): https://github.com/aewallin/openvoronoi/issues/27
+segvoronoi_cgal_fixture_test(ovd27_ngon100 --degenerate)
+# OpenVoronoi failure with three segments at one point, the issue's first case: https://github.com/aewallin/openvoronoi/issues/25
+segvoronoi_cgal_fixture_test(ovd25_three_at_vertex --degenerate)
+# OpenVoronoi failure with three segments at one point, the issue's second case: https://github.com/aewallin/openvoronoi/issues/25
+segvoronoi_cgal_fixture_test(ovd25_three_at_vertex_b --degenerate)
+# OpenVoronoi failure on a hexagon with a collinear vertex: https://github.com/aewallin/openvoronoi/issues/48
+segvoronoi_cgal_fixture_test(ovd48_hexagon_collinear --degenerate)
+# OpenVoronoi failure when one segment's direction is reversed (L-shaped hexagon, last side p0 -> p5): https://github.com/aewallin/openvoronoi/issues/56
+segvoronoi_cgal_fixture_test(ovd56_reversed_segment --degenerate)
+
+# Found by the near-vertical family (seed 1, n = 64), reduced: a chain of
+# three almost vertical segments (kinks of about 1e-10 rad); the library
+# makes P3-S0 adjacent where CGAL has P0-S2.
+segvoronoi_cgal_fixture_test(near_vertical_chain3)

@@ -11,22 +11,23 @@
 // snapped (degenerate: only VPAIRS and VVERTICES are unique, so only they
 // must agree). Segment families (n = number of segments, all non-crossing):
 // seg-random1/2/3 (the three generators of seed 000 in [0,1]^2), seg-short
-// (random short segments), polyline (a random non-crossing walk of random-length steps),
-// square-hole (8 segments, n ignored), polygon-holes (a random polygon with
-// random polygonal holes, n corners in all), letter-gap (the outline of a
-// capital R with every segment shortened by different amounts at its two
-// ends, n ignored) and
-// near-vertical (segments whose x changes by 1e-9 of their length, some
-// chained) are generic; polygon (regular n-gon), star (n segments from one
-// point), tangent (n segments tangent to the unit circle), seg-lattice (the
-// unit segments of an integer grid), parallel (n equal, equally spaced
-// parallel segments) and letter (the capital R with shared endpoints, hand
-// coordinates) are degenerate (every segment touches one circle, or one
-// point, or the input is exactly symmetric). For faces with segments CGAL's Voronoi vertex is
-// a double construction, so VPAIRS/VVERTICES of segment inputs decide zero
-// length from rounded positions; they are checked for the degenerate
-// families and informational otherwise. The file is in Boost.Polygon's text
-// format: P, then P lines "x y", then S, then S lines "x1 y1 x2 y2". Exit
+// (random short segments), polyline (a random non-crossing walk of
+// random-length steps), square-hole (8 segments, n ignored), polygon-holes
+// (a random polygon with random polygonal holes, n corners in all),
+// letter-gap (the outline of a capital R, every segment shortened at both
+// ends by its own amounts, n ignored) and near-vertical (segments whose x
+// changes by 1e-9 of their length, half of them chained) are generic;
+// polygon (regular n-gon), star (n segments from one point), tangent (n
+// segments tangent to the unit circle), seg-lattice (the unit segments of an
+// integer grid), parallel (n equal, equally spaced parallel segments) and
+// letter (the R with shared endpoints and a font's aligned corners) are
+// degenerate (several sites on one empty circle by construction). For faces
+// with segments CGAL's Voronoi vertex is a double construction, so
+// VPAIRS/VVERTICES of segment inputs decide zero length from rounded
+// positions; they are checked for the degenerate families and informational
+// otherwise (and left out of a generic run when CGAL's construction is not
+// finite, as for nearly collinear segments). The file is in Boost.Polygon's
+// text format: P, then P lines "x y", then S, then S lines "x1 y1 x2 y2". Exit
 // status: 0 agreement and a valid diagram, 1 a difference or an invalid
 // diagram, 2 bad usage or input, 3 a library error.
 
@@ -610,23 +611,30 @@ std::vector<Segment> parallel(std::size_t n) {
 // Seed 000, figure 8 (5): the outline of a capital R on a 100 x 100 box,
 // its bowl approximated by straight pieces: an outer polygon of 15
 // segments and the counter (a hole) of 7, sharing endpoints at every
-// corner. Hand-picked integer coordinates (horizontal and vertical runs on
-// the same lines, a bowl symmetric about y = 70), so not generic. With
-// gaps, every segment is shortened by start_gap at its first end and by
-// end_gap at its second, so no two segments touch (the seed's form of
-// input). The gaps must differ: equal gaps put the two pulled-apart
-// endpoints of a corner symmetric about its angle bisector, where both
-// perpendiculars meet, and that point is equidistant from all four sites.
-std::vector<Segment> letter_r(double start_gap, double end_gap) {
-    const std::vector<Point> outer = {{0, 0},   {20, 0},  {20, 40}, {40, 40}, {65, 0},
-                                      {90, 0},  {62, 44}, {72, 48}, {80, 55}, {84, 65},
-                                      {84, 75}, {80, 85}, {72, 93}, {60, 100}, {0, 100}};
-    const std::vector<Point> counter = {{20, 58}, {58, 58}, {64, 62}, {66, 70}, {64, 78}, {58, 82}, {20, 82}};
+// corner. Hand-picked integer coordinates with a font's alignments (the
+// stem's inner edge and the counter's left side on x = 20, the corners
+// (20, 40) and (20, 58) aligned, parallel horizontal runs), so not
+// generic. With `gaps`, segment k is shortened by its own amounts, between
+// 0.2 and 0.7, at each end, so that no two segments touch (the seed's form
+// of input) and no two pulled-apart endpoints line up again: equal gaps
+// would put the two endpoints of a corner symmetric about its angle
+// bisector, where both perpendiculars meet, a point equidistant from all
+// four sites.
+std::vector<Segment> letter_r(bool gaps) {
+    const std::vector<Point> outer = {{0, 0},   {20, 0},  {20, 40}, {38, 40}, {63, 0},
+                                      {88, 0},  {61, 44}, {71, 48}, {79, 55}, {84, 65},
+                                      {85, 74}, {81, 84}, {73, 92}, {60, 100}, {0, 100}};
+    const std::vector<Point> counter = {{20, 58}, {57, 58}, {63, 61}, {66, 69}, {65, 76}, {59, 82}, {20, 82}};
     std::vector<Segment> out;
     add_closed_polygon(outer, out);
     add_closed_polygon(counter, out);
-    if (start_gap > 0.0 || end_gap > 0.0) {
-        for (Segment& s : out) {
+    if (gaps) {
+        for (std::size_t k = 0; k < out.size(); ++k) {
+            Segment& s = out[k];
+            const double golden = 0.6180339887498949 * static_cast<double>(k);
+            const double silver = 0.41421356237309503 * static_cast<double>(k) + 0.3;
+            const double start_gap = 0.2 + 0.5 * (golden - std::floor(golden));
+            const double end_gap = 0.2 + 0.5 * (silver - std::floor(silver));
             const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
             const double length = std::hypot(dx, dy);
             const double t0 = start_gap / length, t1 = end_gap / length;
@@ -729,10 +737,10 @@ bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, I
         input.segments = parallel(n);
         input.degenerate = true;
     } else if (family == "letter") {
-        input.segments = letter_r(0.0, 0.0);
+        input.segments = letter_r(false);
         input.degenerate = true;
     } else if (family == "letter-gap") {
-        input.segments = letter_r(0.3, 0.7);
+        input.segments = letter_r(true);
     } else if (family == "near-vertical") {
         input.segments = near_vertical(n, rng);
     } else {

@@ -1,7 +1,10 @@
-//! The three builds being compared, each timed from a borrowed slice of the
-//! input in the form its library takes to the finished diagram (or
-//! triangulation). So every timed region includes the library copying the
-//! input in, and none includes generating it or freeing the result.
+//! The builds being compared, each timed from a borrowed slice of the input
+//! in the form its library takes to the finished diagram (or triangulation).
+//! So every timed region includes the library copying the input in, and none
+//! includes generating it or freeing the result.
+//!
+//! Points: all four contenders. Segments: segvoronoi, boost-cpp and
+//! boostvoronoi (spade triangulates points only).
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -9,6 +12,7 @@ use std::time::Instant;
 use spade::{DelaunayTriangulation, Point2, Triangulation};
 
 use crate::input::{float_points, grid_points, SEED};
+use crate::segments::Seg;
 
 /// A library under test.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -42,6 +46,11 @@ impl Contender {
     pub fn parse(name: &str) -> Option<Contender> {
         Contender::ALL.into_iter().find(|c| c.name() == name)
     }
+
+    /// Whether it takes line segments.
+    pub fn takes_segments(self) -> bool {
+        self != Contender::Spade
+    }
 }
 
 /// What one (contender, size) child measured.
@@ -54,6 +63,36 @@ pub struct Measured {
     /// Finite Voronoi vertices (Delaunay triangles for spade: one per
     /// Voronoi vertex when no four points are cocircular).
     pub vertices: usize,
+    /// Voronoi edges, each counted once (not per half-edge), infinite ones
+    /// included (Delaunay edges for spade).
+    pub edges: usize,
+    /// Sum of the finite vertices' x and of their y (compensated, so the
+    /// order of the vertices does not matter): two diagrams with the same
+    /// vertices give the same sums up to the rounding of the vertices
+    /// themselves. NaN for spade, which has no Voronoi vertices.
+    pub vertex_sum: [f64; 2],
+}
+
+/// The output sizes of one build.
+pub struct Counts {
+    pub sites: usize,
+    pub vertices: usize,
+    pub edges: usize,
+    pub vertex_sum: [f64; 2],
+}
+
+/// Neumaier's compensated sum of `(x, y)` pairs.
+fn coordinate_sum(points: impl Iterator<Item = [f64; 2]>) -> [f64; 2] {
+    let mut sum = [0.0f64; 2];
+    let mut carry = [0.0f64; 2];
+    for p in points {
+        for k in 0..2 {
+            let t = sum[k] + p[k];
+            carry[k] += if sum[k].abs() >= p[k].abs() { (sum[k] - t) + p[k] } else { (p[k] - t) + sum[k] };
+            sum[k] = t;
+        }
+    }
+    [sum[0] + carry[0], sum[1] + carry[1]]
 }
 
 /// Builds `runs` times on the `n`-point input and reports the times and the
@@ -62,21 +101,96 @@ pub fn measure(contender: Contender, n: usize, runs: usize) -> Measured {
     match contender {
         Contender::Segvoronoi => {
             let points = float_points(n, SEED);
-            time_runs(runs, || segvoronoi_build(&points), |d| (d.site_count(), d.vertex_count()))
+            time_runs(runs, || segvoronoi_build(&points), segvoronoi_counts)
         }
         Contender::Boostvoronoi => {
             let points = grid_points(n, SEED);
-            time_runs(runs, || boostvoronoi_build(&points), |d| (d.cells().len(), d.vertices().len()))
+            time_runs(runs, || boostvoronoi_build(&points), boostvoronoi_counts)
         }
         Contender::BoostCpp => {
             let points = grid_points(n, SEED);
-            time_runs(runs, || boost_cpp::Diagram::build(&points), |d| (d.cells(), d.vertices()))
+            time_runs(runs, || boost_cpp::Diagram::build(&points), boost_cpp::Diagram::counts)
         }
         Contender::Spade => {
             let points = float_points(n, SEED);
-            time_runs(runs, || spade_build(&points), |t| (t.num_vertices(), t.num_inner_faces()))
+            time_runs(runs, || spade_build(&points), |t| Counts {
+                sites: t.num_vertices(),
+                vertices: t.num_inner_faces(),
+                edges: t.num_undirected_edges(),
+                vertex_sum: [f64::NAN; 2],
+            })
         }
     }
+}
+
+/// Builds `runs` times on the segments in `file` (see `segments.rs`), read
+/// into the form the contender takes. A segvoronoi input error ends the
+/// child with the error's text.
+pub fn measure_segments(contender: Contender, file: &std::path::Path, runs: usize) -> Measured {
+    let read_error = |e: std::io::Error| -> ! { fail(format!("cannot read {}: {e}", file.display())) };
+    match contender {
+        Contender::Segvoronoi => {
+            let segments = crate::segments::read_file(file, crate::segments::to_float).unwrap_or_else(|e| read_error(e));
+            time_runs(runs, || segvoronoi_segments(&segments), segvoronoi_counts)
+        }
+        Contender::Boostvoronoi => {
+            let segments = crate::segments::read_file(file, |s| s).unwrap_or_else(|e| read_error(e));
+            time_runs(runs, || boostvoronoi_segments(&segments), boostvoronoi_counts)
+        }
+        Contender::BoostCpp => {
+            let segments = crate::segments::read_file(file, |s| s).unwrap_or_else(|e| read_error(e));
+            time_runs(runs, || boost_cpp::Diagram::build_segments(&segments), boost_cpp::Diagram::counts)
+        }
+        Contender::Spade => fail("spade takes no line segments".into()),
+    }
+}
+
+/// Ends a child with a message for the parent's report.
+pub fn fail(message: String) -> ! {
+    eprintln!("{message}");
+    std::process::exit(1)
+}
+
+fn segvoronoi_counts(d: &segvoronoi::Diagram) -> Counts {
+    Counts {
+        sites: d.site_count(),
+        vertices: d.vertex_count(),
+        edges: d.edge_count(),
+        vertex_sum: coordinate_sum(d.vertices().map(|v| [v.position.x, v.position.y])),
+    }
+}
+
+fn boostvoronoi_counts(d: &boostvoronoi::prelude::Diagram) -> Counts {
+    Counts {
+        sites: d.cells().len(),
+        vertices: d.vertices().len(),
+        edges: d.edges().len() / 2,
+        vertex_sum: coordinate_sum(d.vertices().iter().map(|v| [v.x(), v.y()])),
+    }
+}
+
+fn segvoronoi_segments(segments: &[[[f64; 2]; 2]]) -> segvoronoi::Diagram {
+    let mut builder = segvoronoi::Builder::new();
+    builder.add_segments(segments.iter().copied()).expect("finite input");
+    builder.build().unwrap_or_else(|e| {
+        fail(format!(
+            "segvoronoi build failed on {} segments: {:?}: {} (input indices {:?})",
+            segments.len(),
+            e.kind(),
+            e.message(),
+            e.indices()
+        ))
+    })
+}
+
+/// boostvoronoi takes `Line<i32>`, made from each `[x1, y1, x2, y2]` as it
+/// reads them.
+fn boostvoronoi_segments(segments: &[Seg]) -> boostvoronoi::prelude::Diagram {
+    boostvoronoi::prelude::Builder::<i32>::default()
+        .with_segments(segments.iter())
+        .expect("segments")
+        .build()
+        .unwrap_or_else(|e| fail(format!("boostvoronoi build failed on {} segments: {e:?}", segments.len())))
 }
 
 fn segvoronoi_build(points: &[[f64; 2]]) -> segvoronoi::Diagram {
@@ -110,8 +224,11 @@ mod boost_cpp {
     #[cfg(has_boost_cpp)]
     extern "C" {
         fn boost_polygon_voronoi_build(xy: *const i32, n: usize) -> *mut c_void;
+        fn boost_polygon_voronoi_build_segments(xyxy: *const i32, n: usize) -> *mut c_void;
         fn boost_polygon_voronoi_cells(diagram: *const c_void) -> usize;
         fn boost_polygon_voronoi_vertices(diagram: *const c_void) -> usize;
+        fn boost_polygon_voronoi_half_edges(diagram: *const c_void) -> usize;
+        fn boost_polygon_voronoi_vertex(diagram: *const c_void, i: usize, xy: *mut f64);
         fn boost_polygon_voronoi_free(diagram: *mut c_void);
     }
 
@@ -127,14 +244,32 @@ mod boost_cpp {
             Diagram(raw)
         }
 
-        pub fn cells(&self) -> usize {
-            // SAFETY: a live diagram from `build`.
-            unsafe { boost_polygon_voronoi_cells(self.0) }
+        pub fn build_segments(segments: &[[i32; 4]]) -> Diagram {
+            // SAFETY: `segments` is `4 * len` contiguous i32, read during the call only.
+            let raw = unsafe { boost_polygon_voronoi_build_segments(segments.as_ptr().cast(), segments.len()) };
+            if raw.is_null() {
+                super::fail(format!("Boost.Polygon build failed (exception) on {} segments", segments.len()));
+            }
+            Diagram(raw)
         }
 
-        pub fn vertices(&self) -> usize {
-            // SAFETY: a live diagram from `build`.
-            unsafe { boost_polygon_voronoi_vertices(self.0) }
+        /// Cells, vertices, edges (half-edges / 2), vertex sums.
+        pub fn counts(&self) -> super::Counts {
+            // SAFETY: a live diagram from `build`; vertex indices below its count.
+            unsafe {
+                let vertices = boost_polygon_voronoi_vertices(self.0);
+                let vertex = |i: usize| {
+                    let mut xy = [0.0f64; 2];
+                    boost_polygon_voronoi_vertex(self.0, i, xy.as_mut_ptr());
+                    xy
+                };
+                super::Counts {
+                    sites: boost_polygon_voronoi_cells(self.0),
+                    vertices,
+                    edges: boost_polygon_voronoi_half_edges(self.0) / 2,
+                    vertex_sum: super::coordinate_sum((0..vertices).map(vertex)),
+                }
+            }
         }
     }
 
@@ -151,18 +286,18 @@ mod boost_cpp {
         pub fn build(_: &[[i32; 2]]) -> Diagram {
             panic!("boost-cpp was not compiled in (Boost headers missing at build time)")
         }
-        pub fn cells(&self) -> usize {
-            0
+        pub fn build_segments(_: &[[i32; 4]]) -> Diagram {
+            panic!("boost-cpp was not compiled in (Boost headers missing at build time)")
         }
-        pub fn vertices(&self) -> usize {
-            0
+        pub fn counts(&self) -> super::Counts {
+            super::Counts { sites: 0, vertices: 0, edges: 0, vertex_sum: [f64::NAN; 2] }
         }
     }
 }
 
-fn time_runs<T>(runs: usize, mut build: impl FnMut() -> T, counts: impl Fn(&T) -> (usize, usize)) -> Measured {
+fn time_runs<T>(runs: usize, mut build: impl FnMut() -> T, counts: impl Fn(&T) -> Counts) -> Measured {
     let mut seconds = Vec::with_capacity(runs);
-    let mut last = (0, 0);
+    let mut last = Counts { sites: 0, vertices: 0, edges: 0, vertex_sum: [f64::NAN; 2] };
     for _ in 0..runs {
         let start = Instant::now();
         let output = black_box(build());
@@ -172,5 +307,5 @@ fn time_runs<T>(runs: usize, mut build: impl FnMut() -> T, counts: impl Fn(&T) -
         // so at most one output is alive at a time.
         drop(output);
     }
-    Measured { seconds, sites: last.0, vertices: last.1 }
+    Measured { seconds, sites: last.sites, vertices: last.vertices, edges: last.edges, vertex_sum: last.vertex_sum }
 }

@@ -1,22 +1,36 @@
 //! Wall time and peak memory of segvoronoi, Boost.Polygon's voronoi (the C++
-//! original and the boostvoronoi port) and spade on uniform random points.
+//! original and the boostvoronoi port) and spade on uniform random points,
+//! and of the first three on disjoint line segments.
 //!
-//! `cargo run --release -- [--sizes 10000,100000,1000000] [--runs 5]
-//! [--contenders segvoronoi,boost-cpp,boostvoronoi,spade]`
+//! `cargo run --release -- [--input points|segments|seed] [--sizes N,N,..]
+//! [--runs 5] [--contenders segvoronoi,boost-cpp,boostvoronoi,spade]
+//! [--methods 1,2,3] [--timeout SECONDS]`
+//!
+//! - `points` (the default): uniform random points, 10k, 100k, 1M.
+//! - `segments`: short random disjoint segments (Boost.Polygon's benchmark
+//!   style), 10k, 100k, 1M.
+//! - `seed`: the seed paper's experiment, its three ways of drawing random
+//!   disjoint segments (`--methods`), 256 to 4096 segments.
 //!
 //! Each (contender, size) runs in a child process (this binary again, in the
 //! hidden `--child` mode), so the peak resident set size it reports (VmHWM) is
 //! that contender's alone and not the high-water mark of whatever ran before.
-//! One more child per size only generates the input: its peak is the
-//! baseline that readers can subtract.
+//! One more child per size only holds the input: its peak is the baseline
+//! that readers can subtract. Segment inputs are generated and checked once
+//! per size by this parent and handed to the children as a file.
 
 mod contenders;
 mod input;
 mod report;
+mod segments;
 
-use std::process::{exit, Command};
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::process::{exit, Command, Stdio};
+use std::time::{Duration, Instant};
 
-use contenders::{measure, Contender, Measured};
+use contenders::{measure, measure_segments, Contender, Measured};
+use segments::Method;
 
 /// Who a child measured: a contender, or nobody (input-only baseline).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -41,6 +55,39 @@ impl Who {
     }
 }
 
+/// What is being built: uniform points, or segments drawn by a method.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Workload {
+    Points,
+    Segments(Method),
+}
+
+impl Workload {
+    pub fn name(self) -> String {
+        match self {
+            Workload::Points => "points".into(),
+            Workload::Segments(Method::Short) => "segments".into(),
+            Workload::Segments(m) => format!("seed{}", m.number()),
+        }
+    }
+
+    fn parse(name: &str) -> Option<Workload> {
+        match name {
+            "points" => Some(Workload::Points),
+            "segments" => Some(Workload::Segments(Method::Short)),
+            _ => name.strip_prefix("seed")?.parse().ok().and_then(Method::from_number).map(Workload::Segments),
+        }
+    }
+
+    /// What `n` counts.
+    pub fn unit(self) -> &'static str {
+        match self {
+            Workload::Points => "points",
+            Workload::Segments(_) => "segments",
+        }
+    }
+}
+
 /// What one child reported.
 #[derive(Clone, Debug)]
 pub struct ChildReport {
@@ -52,16 +99,44 @@ pub struct ChildReport {
 /// One line of the results: a child's report, or why it failed.
 #[derive(Clone, Debug)]
 pub struct Row {
+    pub workload: Workload,
     pub n: usize,
     pub who: Who,
     pub result: Result<ChildReport, String>,
 }
 
+/// How a segment input came about (generated once, in the parent).
+#[derive(Clone, Debug)]
+pub struct InputInfo {
+    pub workload: Workload,
+    pub n: usize,
+    pub seconds: f64,
+    pub draws: u64,
+    pub repairs: u64,
+    pub restarts: u64,
+    pub mean_length: f64,
+    /// Least distance between two segments near each other.
+    pub least_gap: Option<f64>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Suite {
+    Points,
+    Segments,
+    Seed,
+}
+
 struct Options {
+    suite: Suite,
     sizes: Vec<usize>,
     runs: usize,
     contenders: Vec<Contender>,
+    methods: Vec<Method>,
+    timeout: Duration,
 }
+
+const USAGE: &str = "usage: segvoronoi-bench [--input points|segments|seed] [--sizes N,N,..] [--runs R] \
+[--contenders NAME,NAME,..] [--methods 1,2,3] [--timeout SECONDS]";
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -69,27 +144,97 @@ fn main() {
         child(&args[1..]);
         return;
     }
+    if args.iter().any(|a| a == "--help" || a == "-h") {
+        println!("{USAGE}");
+        return;
+    }
     let options = parse_options(&args).unwrap_or_else(|message| {
         eprintln!("error: {message}");
-        eprintln!("usage: segvoronoi-bench [--sizes N,N,..] [--runs R] [--contenders NAME,NAME,..]");
+        eprintln!("{USAGE}");
         exit(2);
     });
     let load_before = load_average();
-    let mut rows = Vec::new();
-    for &n in &options.sizes {
-        let everyone = std::iter::once(Who::Input).chain(options.contenders.iter().copied().map(Who::Lib));
-        for who in everyone {
-            eprintln!("running {} on {n} points ...", who.name());
-            let result = run_child(who, n, options.runs);
-            if let Err(message) = &result {
-                eprintln!("  failed: {message}");
+    match options.suite {
+        Suite::Points => {
+            let mut rows = Vec::new();
+            for &n in &options.sizes {
+                for who in everyone(&options) {
+                    eprintln!("running {} on {n} points ...", who.name());
+                    rows.push(run_logged(Workload::Points, who, n, &options, None));
+                }
             }
-            rows.push(Row { n, who, result });
+            report::print_all(&rows, options.runs);
+        }
+        Suite::Segments | Suite::Seed => {
+            let workloads: Vec<Workload> = match options.suite {
+                Suite::Segments => vec![Workload::Segments(Method::Short)],
+                _ => options.methods.iter().map(|&m| Workload::Segments(m)).collect(),
+            };
+            let (rows, inputs) = run_segments(&workloads, &options);
+            if options.suite == Suite::Segments {
+                report::print_segments(&rows, &inputs, options.runs);
+            } else {
+                report::print_seed(&rows, &inputs, options.runs);
+            }
         }
     }
-    report::print_all(&rows, options.runs);
     // Other work on a 2-core machine skews the times; this says how busy it was.
     println!("\nload average (1, 5, 15 min): before {load_before}, after {}", load_average());
+}
+
+fn everyone(options: &Options) -> impl Iterator<Item = Who> + '_ {
+    std::iter::once(Who::Input).chain(options.contenders.iter().copied().map(Who::Lib))
+}
+
+fn run_logged(workload: Workload, who: Who, n: usize, options: &Options, file: Option<&Path>) -> Row {
+    let start = Instant::now();
+    let result = run_child(workload, who, n, options, file);
+    match &result {
+        Err(message) => eprintln!("  failed: {message}"),
+        Ok(_) if who != Who::Input => eprintln!("  done in {:.1} s", start.elapsed().as_secs_f64()),
+        Ok(_) => {}
+    }
+    Row { workload, n, who, result }
+}
+
+/// Generates, checks and writes each segment input, then runs the children
+/// on it.
+fn run_segments(workloads: &[Workload], options: &Options) -> (Vec<Row>, Vec<InputInfo>) {
+    let dir = std::env::temp_dir().join(format!("segvoronoi-bench-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("cannot create {}: {e}", dir.display()));
+    let (mut rows, mut inputs) = (Vec::new(), Vec::new());
+    for &workload in workloads {
+        let Workload::Segments(method) = workload else { unreachable!("segment workloads only") };
+        for &n in &options.sizes {
+            eprintln!("generating {} segments ({}) ...", n, workload.name());
+            let start = Instant::now();
+            let generated = segments::generate(method, n, input::SEED);
+            let seconds = start.elapsed().as_secs_f64();
+            let least_gap = segments::verify(&generated.segments)
+                .unwrap_or_else(|e| panic!("generator bug, {} n = {n}: {e}", workload.name()));
+            let file = dir.join(format!("{}-{n}.bin", workload.name()));
+            segments::write_file(&file, &generated.segments)
+                .unwrap_or_else(|e| panic!("cannot write {}: {e}", file.display()));
+            inputs.push(InputInfo {
+                workload,
+                n,
+                seconds,
+                draws: generated.draws,
+                repairs: generated.repairs,
+                restarts: generated.restarts,
+                mean_length: generated.mean_length(),
+                least_gap,
+            });
+            drop(generated);
+            for who in everyone(options) {
+                eprintln!("running {} on {n} segments ({}) ...", who.name(), workload.name());
+                rows.push(run_logged(workload, who, n, options, Some(&file)));
+            }
+            let _ = std::fs::remove_file(&file);
+        }
+    }
+    let _ = std::fs::remove_dir(&dir);
+    (rows, inputs)
 }
 
 fn load_average() -> String {
@@ -98,53 +243,121 @@ fn load_average() -> String {
         .unwrap_or_else(|_| "unknown".into())
 }
 
+fn parse_list<T>(value: &str, parse: impl Fn(&str) -> Result<T, String>) -> Result<Vec<T>, String> {
+    value.split(',').map(|s| parse(s.trim())).collect()
+}
+
 fn parse_options(args: &[String]) -> Result<Options, String> {
-    let mut options = Options {
-        sizes: vec![10_000, 100_000, 1_000_000],
-        runs: 5,
-        contenders: Contender::available(),
-    };
+    let mut suite = Suite::Points;
+    let mut sizes = None;
+    let mut runs = 5;
+    let mut contenders = None;
+    let mut methods = vec![Method::Redraw, Method::Shorten, Method::Swap];
+    let mut timeout = Duration::from_secs(1800);
     let mut args = args.iter();
     while let Some(flag) = args.next() {
         let value = args.next().ok_or_else(|| format!("{flag} needs a value"))?;
         match flag.as_str() {
+            "--input" | "--suite" => {
+                suite = match value.as_str() {
+                    "points" => Suite::Points,
+                    "segments" => Suite::Segments,
+                    "seed" => Suite::Seed,
+                    _ => return Err(format!("unknown input {value:?} (points, segments or seed)")),
+                }
+            }
             "--sizes" => {
-                options.sizes = value
-                    .split(',')
-                    .map(|s| s.trim().replace('_', "").parse::<usize>().map_err(|_| format!("bad size {s:?}")))
-                    .collect::<Result<_, _>>()?;
+                sizes = Some(parse_list(value, |s| {
+                    s.replace('_', "").parse::<usize>().ok().filter(|&n| n > 0).ok_or_else(|| format!("bad size {s:?}"))
+                })?);
             }
             "--runs" => {
-                options.runs = value.parse().map_err(|_| format!("bad run count {value:?}"))?;
-                if options.runs == 0 {
+                runs = value.parse().map_err(|_| format!("bad run count {value:?}"))?;
+                if runs == 0 {
                     return Err("--runs must be at least 1".into());
                 }
             }
             "--contenders" => {
-                options.contenders = value
-                    .split(',')
-                    .map(|s| Contender::parse(s.trim()).ok_or_else(|| format!("unknown contender {s:?}")))
-                    .collect::<Result<_, _>>()?;
+                contenders =
+                    Some(parse_list(value, |s| Contender::parse(s).ok_or_else(|| format!("unknown contender {s:?}")))?);
+            }
+            "--methods" => {
+                methods = parse_list(value, |s| {
+                    s.parse().ok().and_then(Method::from_number).ok_or_else(|| format!("unknown method {s:?} (1, 2 or 3)"))
+                })?;
+            }
+            "--timeout" => {
+                let seconds: f64 = value.parse().ok().filter(|&s: &f64| s > 0.0).ok_or_else(|| format!("bad timeout {value:?}"))?;
+                timeout = Duration::from_secs_f64(seconds);
             }
             _ => return Err(format!("unknown option {flag}")),
         }
     }
-    Ok(options)
+    let sizes = sizes.unwrap_or_else(|| match suite {
+        Suite::Points | Suite::Segments => vec![10_000, 100_000, 1_000_000],
+        Suite::Seed => vec![256, 512, 1024, 2048, 4096],
+    });
+    let contenders = match (contenders, suite) {
+        (Some(list), Suite::Points) => list,
+        (Some(list), _) => {
+            if let Some(c) = list.iter().find(|c| !c.takes_segments()) {
+                return Err(format!("{} takes no line segments", c.name()));
+            }
+            list
+        }
+        (None, Suite::Points) => Contender::available(),
+        (None, _) => Contender::available().into_iter().filter(|c| c.takes_segments()).collect(),
+    };
+    Ok(Options { suite, sizes, runs, contenders, methods, timeout })
 }
 
 /// Runs one measurement in a fresh process and parses its one-line report:
-/// `RESULT <peak KiB> [<sites> <vertices> <seconds>...]`.
-fn run_child(who: Who, n: usize, runs: usize) -> Result<ChildReport, String> {
+/// `RESULT <peak KiB> [<sites> <vertices> <edges> <Σx> <Σy> <seconds>...]`
+/// (the sums as `f64` bit patterns, exact). A child
+/// still running after the timeout is killed.
+fn run_child(workload: Workload, who: Who, n: usize, options: &Options, file: Option<&Path>) -> Result<ChildReport, String> {
     let exe = std::env::current_exe().map_err(|e| format!("cannot find own executable: {e}"))?;
-    let output = Command::new(exe)
-        .args(["--child", who.name(), &n.to_string(), &runs.to_string()])
-        .output()
-        .map_err(|e| format!("cannot start child: {e}"))?;
-    if !output.status.success() {
-        let stderr = String::from_utf8_lossy(&output.stderr);
-        return Err(format!("child exited with {}: {}", output.status, stderr.trim()));
+    let mut command = Command::new(exe);
+    command.args(["--child", &workload.name(), who.name(), &n.to_string(), &options.runs.to_string()]);
+    if let Some(file) = file {
+        command.arg(file);
     }
-    let stdout = String::from_utf8_lossy(&output.stdout);
+    let mut child = command
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| format!("cannot start child: {e}"))?;
+    // Drained on threads so a chatty child never blocks on a full pipe.
+    let drain = |pipe: Option<Box<dyn Read + Send>>| {
+        std::thread::spawn(move || {
+            let mut text = String::new();
+            if let Some(mut pipe) = pipe {
+                let _ = pipe.read_to_string(&mut text);
+            }
+            text
+        })
+    };
+    let stdout = drain(child.stdout.take().map(|p| Box::new(p) as Box<dyn Read + Send>));
+    let stderr = drain(child.stderr.take().map(|p| Box::new(p) as Box<dyn Read + Send>));
+    let start = Instant::now();
+    let status = loop {
+        match child.try_wait().map_err(|e| format!("cannot wait for child: {e}"))? {
+            Some(status) => break Some(status),
+            None if start.elapsed() > options.timeout => {
+                let _ = child.kill();
+                let _ = child.wait();
+                break None;
+            }
+            None => std::thread::sleep(Duration::from_millis(20)),
+        }
+    };
+    let (stdout, stderr) = (stdout.join().unwrap_or_default(), stderr.join().unwrap_or_default());
+    let Some(status) = status else {
+        return Err(format!("timed out after {:?} (killed)", options.timeout));
+    };
+    if !status.success() {
+        return Err(format!("child exited with {status}: {}", stderr.trim()));
+    }
     let line = stdout
         .lines()
         .find_map(|l| l.strip_prefix("RESULT "))
@@ -156,41 +369,56 @@ fn run_child(who: Who, n: usize, runs: usize) -> Result<ChildReport, String> {
         Who::Input => None,
         Who::Lib(_) => {
             let int = |i: usize| numbers.get(i).and_then(|s| s.parse::<usize>().ok()).ok_or_else(bad);
-            let seconds = numbers[3.min(numbers.len())..]
+            let sum = |i: usize| numbers.get(i).and_then(|s| u64::from_str_radix(s, 16).ok()).map(f64::from_bits).ok_or_else(bad);
+            let seconds = numbers[6.min(numbers.len())..]
                 .iter()
                 .map(|s| s.parse::<f64>().map_err(|_| bad()))
                 .collect::<Result<Vec<_>, _>>()?;
             if seconds.is_empty() {
                 return Err(bad());
             }
-            Some(Measured { sites: int(1)?, vertices: int(2)?, seconds })
+            Some(Measured { sites: int(1)?, vertices: int(2)?, edges: int(3)?, vertex_sum: [sum(4)?, sum(5)?], seconds })
         }
     };
     Ok(ChildReport { peak_kib, measured })
 }
 
-/// The hidden child mode: `--child <who> <size> <runs>`.
+/// The hidden child mode: `--child <workload> <who> <size> <runs> [<file>]`.
 fn child(args: &[String]) {
-    let (who, n, runs) = match args {
-        [who, n, runs] => (
+    let (workload, who, n, runs, file) = match args {
+        [workload, who, n, runs, rest @ ..] if rest.len() <= 1 => (
+            Workload::parse(workload).unwrap_or_else(|| panic!("unknown workload {workload:?}")),
             Who::parse(who).unwrap_or_else(|| panic!("unknown contender {who:?}")),
             n.parse::<usize>().expect("size"),
             runs.parse::<usize>().expect("runs"),
+            rest.first().map(PathBuf::from),
         ),
-        _ => panic!("usage: --child <who> <size> <runs>"),
+        _ => panic!("usage: --child <workload> <who> <size> <runs> [<file>]"),
     };
-    match who {
-        Who::Input => {
+    let file = || file.clone().unwrap_or_else(|| panic!("{} needs the input file", workload.name()));
+    match (workload, who) {
+        (Workload::Points, Who::Input) => {
             // The largest input form any contender holds (16 bytes a point);
             // kept alive until the peak is read.
             let points = std::hint::black_box(input::float_points(n, input::SEED));
             println!("RESULT {}", peak_rss_kib());
             drop(points);
         }
-        Who::Lib(contender) => {
-            let m = measure(contender, n, runs);
+        (Workload::Segments(_), Who::Input) => {
+            // segvoronoi's `f64` form, the largest (32 bytes a segment).
+            let segments = segments::read_file(&file(), segments::to_float).expect("input file");
+            let segments = std::hint::black_box(segments);
+            println!("RESULT {}", peak_rss_kib());
+            drop(segments);
+        }
+        (_, Who::Lib(contender)) => {
+            let m = match workload {
+                Workload::Points => measure(contender, n, runs),
+                Workload::Segments(_) => measure_segments(contender, &file(), runs),
+            };
             let seconds: Vec<String> = m.seconds.iter().map(|s| format!("{s:.9}")).collect();
-            println!("RESULT {} {} {} {}", peak_rss_kib(), m.sites, m.vertices, seconds.join(" "));
+            let [sx, sy] = m.vertex_sum.map(|s| format!("{:x}", s.to_bits()));
+            println!("RESULT {} {} {} {} {sx} {sy} {}", peak_rss_kib(), m.sites, m.vertices, m.edges, seconds.join(" "));
         }
     }
 }

@@ -366,6 +366,9 @@ impl PointDiagram {
     fn walk_to(&self, a: SiteId, b: SiteId, strict: bool) -> (bool, Path) {
         let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
         let (start, first_move) = self.path_start(a, b);
+        if self.store.sites_of(start).contains(&b) {
+            return (true, Path { vertices: vec![start], entered_by: Vec::new() });
+        }
         let mut walk = PathWalk {
             vertices: Vec::new(),
             entered_by: Vec::new(),
@@ -399,6 +402,14 @@ impl PointDiagram {
     /// on its right (seed 000's characteristic 3), most clearly so, the
     /// deepest conflict breaking ties.
     fn path_start(&self, a: SiteId, b: SiteId) -> (VertexId, HalfEdgeId) {
+        // R(a) and R(b) already meet (the usual case for a short segment): a
+        // vertex of both is the whole path, and no other scores as high.
+        for h in self.store.cell_boundary(a) {
+            let v = h.origin();
+            if self.store.sites_of(v).contains(&b) && self.walkable(v, a, b) && self.segment_conflict(v, a, b) {
+                return (v, h.rotate(2));
+            }
+        }
         let ends = (self.sites[a.index()], self.sites[b.index()]);
         let mut best: Option<(VertexId, HalfEdgeId, (f64, f64, f64))> = None;
         for h in self.store.cell_boundary(a) {
