@@ -144,7 +144,11 @@ fn ten_thousand_segments_with_random_arithmetic() {
 }
 
 /// Shared endpoints everywhere: a long polyline, nested regular polygons, a
-/// star with points among its spokes, the unit-segment lattice.
+/// star with points among its spokes, the unit-segment lattice. Closed
+/// chains wall off their inside, and lying numbers can misplace a site
+/// against them; the construction then starts over with the stuck segment
+/// first (`build::construct`), which these inputs need for about one seed
+/// in three.
 #[test]
 fn shared_endpoints_with_lying_arithmetic() {
     let mut nested = Vec::new();
@@ -165,8 +169,10 @@ fn shared_endpoints_with_lying_arithmetic() {
         (&[], unit_segment_lattice(12)),
     ];
     for mode in [FaultMode::Noise(1e-3), FaultMode::Noise(1e-9), FaultMode::Random] {
-        for (seed, (pts, segs)) in inputs.iter().enumerate() {
-            build_segments_under(mode, seed as u64, pts, segs);
+        for seed in 0..8 {
+            for (k, (pts, segs)) in inputs.iter().enumerate() {
+                build_segments_under(mode, 8 * seed + k as u64, pts, segs);
+            }
         }
     }
 }

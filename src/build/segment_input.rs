@@ -18,7 +18,7 @@
 //!
 //! # Exactness
 //! Every decision is an exact orientation sign
-//! ([`orientation`]) or a coordinate comparison ([`strictly_between`]); no
+//! ([`orientation`](crate::geometry::predicates::orientation), never perturbed by fault injection) or a coordinate comparison ([`strictly_between`]); no
 //! epsilon anywhere. Like the point builder, the checker first multiplies the
 //! input by a power of two ([`Scale`]) so that 1e300 does not overflow and
 //! 1e-300 does not underflow inside the predicates; the answers are those for
@@ -53,7 +53,7 @@
 
 use std::collections::{HashMap, HashSet};
 
-use crate::geometry::predicates::{orientation, strictly_between, Orientation};
+use crate::geometry::predicates::{exact_orientation as orientation, strictly_between, Orientation};
 use crate::geometry::scale::Scale;
 use crate::geometry::Point;
 

@@ -48,14 +48,22 @@ fn coord(p: Point) -> robust::Coord<f64> {
 /// The orientation of the triple `(a, b, c)`: exact.
 #[inline]
 pub fn orientation(a: Point, b: Point, c: Point) -> Orientation {
-    let det = if fault::active() {
-        fault::perturb_difference(
-            (b.x - a.x) * (c.y - a.y),
-            (b.y - a.y) * (c.x - a.x),
-        )
-    } else {
-        robust::orient2d(coord(a), coord(b), coord(c))
-    };
+    if !fault::active() {
+        return exact_orientation(a, b, c);
+    }
+    let det = fault::perturb_difference((b.x - a.x) * (c.y - a.y), (b.y - a.y) * (c.x - a.x));
+    sign_of(det)
+}
+
+/// [`orientation`], exact even in fault injection: for checking the input,
+/// which is not the construction's to get wrong.
+#[inline]
+pub(crate) fn exact_orientation(a: Point, b: Point, c: Point) -> Orientation {
+    sign_of(robust::orient2d(coord(a), coord(b), coord(c)))
+}
+
+#[inline]
+fn sign_of(det: f64) -> Orientation {
     if det > 0.0 {
         Orientation::CounterClockwise
     } else if det < 0.0 {

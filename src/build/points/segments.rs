@@ -102,14 +102,21 @@ impl PointDiagram {
     }
 
     /// Adds the open segment between the point sites `a` and `b`; every
-    /// point must be in already.
-    pub(crate) fn insert_segment(&mut self, a: SiteId, b: SiteId) -> SiteId {
+    /// point must be in already. `Err` with the segment's site when no path
+    /// of P4 exists: the diagram then holds the segment but is not valid
+    /// (the numbers have put `a` and `b` on different sides of a closed
+    /// chain of segments; see `build::construct`).
+    pub(crate) fn insert_segment(&mut self, a: SiteId, b: SiteId) -> Result<SiteId, SiteId> {
         let e = self.add_segment_site(a, b);
         self.fresh_epoch();
-        self.find_segment_path(a, b);
+        let found = self.find_segment_path(a, b);
         self.grow_segment_tree(a, b);
         self.replace_tree(e);
-        e
+        if found {
+            Ok(e)
+        } else {
+            Err(e)
+        }
     }
 
     /// The diagram of points on one line, given in order along it (at least
@@ -160,7 +167,8 @@ impl PointDiagram {
     /// When `a` is one of `v`'s sites, `a` lies on the circle and the
     /// distance test would compare two equal numbers; the segment enters the
     /// circle exactly when it leaves `a` towards the centre, so the sign of
-    /// `(b - a) · (c - a)` decides, with no cancellation (likewise for `b`).
+    /// `(b - a) · (c - a)` decides, with no cancellation (likewise for `b`);
+    /// exactly, where `v` lies on a separator at `a` (`side_at_endpoint`).
     fn segment_depth(&self, v: VertexId, a: SiteId, b: SiteId) -> f64 {
         let sites = self.store.sites_of(v);
         let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
@@ -169,20 +177,13 @@ impl PointDiagram {
             let (dx, dy) = (to.x - from.x, to.y - from.y);
             -((c.x - from.x) * dx + (c.y - from.y) * dy) / norm(dx, dy)
         };
-        let depth = if sites.contains(&a) {
-            if self.continues_beyond(a, b, sites) {
-                0.0
-            } else {
-                entering(pa, pb)
-            }
-        } else if sites.contains(&b) {
-            if self.continues_beyond(b, a, sites) {
-                0.0
-            } else {
-                entering(pb, pa)
-            }
-        } else {
-            Site::Segment { a: pa, b: pb }.distance(c) - self.store.clearance[v.index()]
+        let depth = match (sites.contains(&a), sites.contains(&b)) {
+            // on the bisector of a and b: every point of it is nearer the
+            // segment between them
+            (true, true) => entering(pa, pb),
+            (true, false) => self.side_at_endpoint(a, b, sites).apply(entering(pa, pb)),
+            (false, true) => self.side_at_endpoint(b, a, sites).apply(entering(pb, pa)),
+            (false, false) => Site::Segment { a: pa, b: pb }.distance(c) - self.store.clearance[v.index()],
         };
         let depth = fault::perturb(depth);
         if depth.is_nan() {
@@ -192,25 +193,39 @@ impl PointDiagram {
         }
     }
 
-    /// Whether one of `sites` (those of a vertex with the endpoint `end`
-    /// among them) is a segment that continues the new segment `other → end`
-    /// straight on beyond `end`. The vertex then lies on that segment's
-    /// separator at `end`, which is exactly the new segment's perpendicular
-    /// there: it is on the new segment's circle, not inside, whatever its
-    /// rounded position says (a collinear chain leaves `end` a cell of no
-    /// width between two coinciding separators).
-    fn continues_beyond(&self, end: SiteId, other: SiteId, sites: [SiteId; 3]) -> bool {
-        let (pe, po) = (self.sites[end.index()], self.sites[other.index()]);
-        sites.iter().any(|&s| {
+    /// For a vertex with sites `sites` (counter-clockwise) among which is
+    /// the endpoint `end` of the new segment `end → other`: where the vertex
+    /// also has a segment `s` ending at `end`, it lies on `s`'s separator at
+    /// `end`, on the side of `s` given by the order of the sites (`s` just
+    /// after `end`: left of `end → far`; just before: right), so whether the
+    /// new segment leaves `end` towards it is the exact orientation of
+    /// `other` against `end → far` (collinear: along the tangent, as where a
+    /// chain goes straight on). Two such segments put the vertex at `end`
+    /// itself (radius 0). `Numeric` where there is none.
+    fn side_at_endpoint(&self, end: SiteId, other: SiteId, sites: [SiteId; 3]) -> EndpointSide {
+        let k = sites.iter().position(|&s| s == end).unwrap_or(0);
+        let (next, prev) = (sites[(k + 1) % 3], sites[(k + 2) % 3]);
+        let far_end = |s: SiteId| {
             if !self.is_segment(s) {
-                return false;
+                return None;
             }
             let [x, y] = self.segment_ends[(s.0 - self.first_segment) as usize];
-            let far = if x == end { y } else if y == end { x } else { return false };
-            let pf = self.sites[far.index()];
-            orientation(po, pe, pf) == Orientation::Collinear
-                && (pf.x - pe.x) * (pe.x - po.x) + (pf.y - pe.y) * (pe.y - po.y) > 0.0
-        })
+            if x == end {
+                Some(y)
+            } else if y == end {
+                Some(x)
+            } else {
+                None
+            }
+        };
+        let (pe, po) = (self.sites[end.index()], self.sites[other.index()]);
+        let turn = |far: SiteId| orientation(pe, self.sites[far.index()], po);
+        match (far_end(next), far_end(prev)) {
+            (Some(_), Some(_)) => EndpointSide::OnCircle,
+            (Some(far), None) => EndpointSide::from_turn(turn(far), Orientation::CounterClockwise),
+            (None, Some(far)) => EndpointSide::from_turn(turn(far), Orientation::Clockwise),
+            (None, None) => EndpointSide::Numeric,
+        }
     }
 
     /// Whether the segment `ab` conflicts with `v` (see the module doc for
@@ -807,6 +822,47 @@ impl PointDiagram {
     }
 }
 
+/// Whether the new segment enters the circle of a vertex through one of
+/// its endpoints, decided exactly where the vertex is on a separator there
+/// (`side_at_endpoint`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum EndpointSide {
+    /// It enters.
+    Enters,
+    /// It leaves the endpoint away from the circle.
+    Misses,
+    /// It runs along the circle's tangent, or the circle has radius 0.
+    OnCircle,
+    /// No exact answer: the rounded position decides.
+    Numeric,
+}
+
+impl EndpointSide {
+    /// From the turn of the new segment against the separator's segment:
+    /// `entering` is the turn that points into the circle.
+    fn from_turn(turn: Orientation, entering: Orientation) -> EndpointSide {
+        if turn == Orientation::Collinear {
+            EndpointSide::OnCircle
+        } else if turn == entering {
+            EndpointSide::Enters
+        } else {
+            EndpointSide::Misses
+        }
+    }
+
+    /// The depth with this sign: the numeric one's size (at least the
+    /// smallest positive number, so the sign survives), or 0 on the circle.
+    fn apply(self, numeric: f64) -> f64 {
+        let size = numeric.abs().max(f64::MIN_POSITIVE);
+        match self {
+            EndpointSide::Enters => -size,
+            EndpointSide::Misses => size,
+            EndpointSide::OnCircle => 0.0,
+            EndpointSide::Numeric => numeric,
+        }
+    }
+}
+
 /// A finite edge as a curve over `[0, 1]`: a straight piece, or an arc of
 /// a parabola between two of its parameters.
 enum EdgeArc {
@@ -909,7 +965,7 @@ mod tests {
             }
         }
         for &[i, j] in segments {
-            d.insert_segment(all[i], all[j]);
+            d.insert_segment(all[i], all[j]).expect("a path");
         }
         d
     }
@@ -924,8 +980,10 @@ mod tests {
     }
 
     /// Whether the vertex is equidistant from its three sites and no site
-    /// is closer (brute force), within `tol`.
+    /// is closer (brute force), within `tol` (or 1e-12 of its clearance,
+    /// for far vertices: their distances are rounded at that size).
     pub(super) fn check_vertex(d: &PointDiagram, (vi, sites, pos, r): (usize, [SiteId; 3], Point, f64), tol: f64) -> Result<(), String> {
+        let tol = tol.max(1e-12 * r);
         for s in (1..d.sites.len()).map(SiteId::from_index) {
             let dist = d.site_geometry(s).distance(pos);
             if dist < r - tol || (sites.contains(&s) && (dist - r).abs() > tol) {
@@ -1056,6 +1114,7 @@ mod replay {
     use crate::build::order::SplitMix;
     use crate::build::Inserted;
 
+    /// Tolerance relative to the largest coordinate.
     const TOLERANCE: f64 = 1e-9;
 
     /// Reads Boost.Polygon's text format (points, then segments).
@@ -1068,9 +1127,10 @@ mod replay {
     }
 
     /// The first wrong insertion, if any (inputs whose points are not all
-    /// collinear, coordinates of order 1).
+    /// collinear).
     fn replay(points: &[Point], segments: &[[Point; 2]]) -> Result<(), String> {
         let all: Vec<Point> = points.iter().copied().chain(segments.iter().flatten().copied()).collect();
+        let tol = TOLERANCE * all.iter().fold(f64::MIN_POSITIVE, |m, p| m.max(p.x.abs()).max(p.y.abs()));
         let mut d = PointDiagram::new(all.len() + segments.len());
         let mut ids = d.start_collinear(&all[..2]);
         let mut last = ids[1];
@@ -1084,21 +1144,21 @@ mod replay {
         }
         for (n, k) in (0..segments.len()).enumerate() {
             let base = points.len() + 2 * k;
-            let e = d.insert_segment(ids[base], ids[base + 1]);
+            let e = d.insert_segment(ids[base], ids[base + 1]).map_err(|_| format!("segment {n}: no path"))?;
             d.store.validate().map_err(|err| format!("segment {n}: {err}"))?;
-            check_after(&d, e).map_err(|err| format!("segment {n}: {err}"))?;
+            check_after(&d, e, tol).map_err(|err| format!("segment {n}: {err}"))?;
         }
         Ok(())
     }
 
-    fn check_after(d: &PointDiagram, e: SiteId) -> Result<(), String> {
+    fn check_after(d: &PointDiagram, e: SiteId, tol: f64) -> Result<(), String> {
         let segment = d.site_geometry(e);
         for v @ (vi, sites, pos, r) in super::tests::finite_vertices(d) {
-            if segment.distance(pos) < r - TOLERANCE {
-                return Err(format!("vertex {vi} {sites:?} kept with the new segment inside its circle"));
+            if segment.distance(pos) < r - tol.max(1e-12 * r) {
+                return Err(format!("vertex {vi} {sites:?} at {pos:?} kept with the new segment inside its circle (at {}, clearance {r})", segment.distance(pos)));
             }
             if sites.contains(&e) {
-                super::tests::check_vertex(d, v, TOLERANCE).map_err(|err| format!("new {err}"))?;
+                super::tests::check_vertex(d, v, tol).map_err(|err| format!("new {err}"))?;
             }
         }
         Ok(())
