@@ -420,3 +420,29 @@ fn nearest_site_walk_with_segments() {
         hint = d.nearest_site(q, hint);
     }
 }
+
+/// On a large input the crossing check runs beside the point insertions:
+/// its error still comes back, naming both segments, and the builder keeps
+/// its input.
+#[test]
+fn crossing_found_in_a_large_input() {
+    let (pts, mut segs) = segment_grid(160, 3, 0.9);
+    assert!(segs.len() > 20_000);
+    let n = segs.len();
+    // from the middle of cell (0, 0) into cell (1, 1), crossing nothing
+    // but the segment added after it, which runs the other way
+    segs.push([[0.95, 0.95], [1.05, 1.05]]);
+    segs.push([[0.95, 1.05], [1.05, 0.95]]);
+    let mut b = Builder::new();
+    b.add_points(pts.iter().copied()).unwrap();
+    b.add_segments(segs.iter().copied()).unwrap();
+    let e = b.build().unwrap_err();
+    assert_eq!(e.kind(), ErrorKind::Intersecting);
+    assert_eq!(e.indices(), [n, n + 1]);
+    assert_eq!(b.segment_count(), n + 2);
+    segs.pop();
+    let mut b = Builder::new();
+    b.add_points(pts.iter().copied()).unwrap();
+    b.add_segments(segs.iter().copied()).unwrap();
+    b.build().unwrap().validate().unwrap();
+}

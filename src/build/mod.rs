@@ -235,6 +235,21 @@ const MAX_RESTARTS: usize = 16;
 /// indices of its two endpoints in `points`; distinct, non-crossing). Returns
 /// the diagram in internal site ids, per input point the internal site it
 /// became, and per segment its internal site.
+fn construct(points: &[Point], segments: &[[usize; 2]]) -> (PointDiagram, Vec<SiteId>, Vec<SiteId>) {
+    construct_from(insert_points(points, segments.len()), points, segments)
+}
+
+/// The diagram of the points alone, ready for segments.
+enum PointStage {
+    /// Every point inserted: the diagram, and the site each point became.
+    Inserted(PointDiagram, Vec<SiteId>),
+    /// At most one distinct point: no segment is possible; done.
+    Trivial(PointDiagram, Vec<SiteId>),
+    /// All points on one line: built with the segments as a ladder.
+    Collinear,
+}
+
+/// [`construct`] after its first stage, [`insert_points`].
 ///
 /// Segments that share endpoints can form closed chains, and a closed chain
 /// walls off its inside: no path of P4 crosses it. With numbers that lie
@@ -245,37 +260,37 @@ const MAX_RESTARTS: usize = 16;
 /// closed), at most `MAX_RESTARTS` times. With sound numbers it never
 /// happens; if it keeps happening, the last attempt is returned and does not
 /// validate (none of the test suites, fault injection included, gets there).
-fn construct(points: &[Point], segments: &[[usize; 2]]) -> (PointDiagram, Vec<SiteId>, Vec<SiteId>) {
+fn construct_from(
+    mut stage: PointStage,
+    points: &[Point],
+    segments: &[[usize; 2]],
+) -> (PointDiagram, Vec<SiteId>, Vec<SiteId>) {
     let mut first = Vec::new();
     loop {
-        let (diagram, site_of, segment_sites, stuck) = construct_with(points, segments, &first);
+        let (diagram, site_of, segment_sites, stuck) = insert_segments(stage, points, segments, &first);
         match stuck {
             Some(k) if first.len() < MAX_RESTARTS && !first.contains(&k) => first.push(k),
             _ => return (diagram, site_of, segment_sites),
         }
+        stage = insert_points(points, segments.len());
     }
 }
 
-/// One attempt of [`construct`]: the segments listed in `first` go first,
-/// in that order. Also returns the first segment that found no path.
-fn construct_with(
-    points: &[Point],
-    segments: &[[usize; 2]],
-    first_segments: &[usize],
-) -> (PointDiagram, Vec<SiteId>, Vec<SiteId>, Option<usize>) {
+/// Inserts every point (with room for `segment_count` segments after them).
+fn insert_points(points: &[Point], segment_count: usize) -> PointStage {
     let n = points.len();
     let mut site_of = vec![SiteId(NONE); n];
-    let mut diagram = PointDiagram::new(n + segments.len());
+    let mut diagram = PointDiagram::new(n + segment_count);
     let order = points::insertion_order(points);
     let Some(&first) = order.first() else {
-        return (diagram, site_of, Vec::new(), None);
+        return PointStage::Trivial(diagram, site_of);
     };
     let pa = points[first as usize];
     let Some(b_pos) = order.iter().position(|&i| points[i as usize] != pa) else {
         // one distinct point
         let s = diagram.add_lone_site(pa);
         site_of.iter_mut().for_each(|x| *x = s);
-        return (diagram, site_of, Vec::new(), None);
+        return PointStage::Trivial(diagram, site_of);
     };
     let second = order[b_pos];
     let pb = points[second as usize];
@@ -284,8 +299,7 @@ fn construct_with(
         .copied()
         .find(|&i| orientation(pa, pb, points[i as usize]) != Orientation::Collinear);
     let Some(third) = third else {
-        let segment_sites = start_all_collinear(points, segments, &mut diagram, &mut site_of);
-        return (diagram, site_of, segment_sites, None);
+        return PointStage::Collinear;
     };
 
     let ids = diagram.start_collinear(&[pa, pb]);
@@ -309,6 +323,28 @@ fn construct_with(
             Inserted::Duplicate(s) => site_of[i as usize] = s,
         }
     }
+    PointStage::Inserted(diagram, site_of)
+}
+
+/// Inserts the segments into the diagram of the points; those listed in
+/// `first_segments` go first, in that order. Also returns the first segment
+/// that found no path.
+fn insert_segments(
+    stage: PointStage,
+    points: &[Point],
+    segments: &[[usize; 2]],
+    first_segments: &[usize],
+) -> (PointDiagram, Vec<SiteId>, Vec<SiteId>, Option<usize>) {
+    let (mut diagram, site_of) = match stage {
+        PointStage::Inserted(diagram, site_of) => (diagram, site_of),
+        PointStage::Trivial(diagram, site_of) => return (diagram, site_of, Vec::new(), None),
+        PointStage::Collinear => {
+            let mut diagram = PointDiagram::new(points.len() + segments.len());
+            let mut site_of = vec![SiteId(NONE); points.len()];
+            let segment_sites = start_all_collinear(points, segments, &mut diagram, &mut site_of);
+            return (diagram, site_of, segment_sites, None);
+        }
+    };
     // Segments go along a Hilbert curve through their midpoints: each
     // insertion then works where the last one did, in memory the cache
     // still holds (the result does not depend on it). No BRIO rounds: with

@@ -1,17 +1,16 @@
-//! Building from points and segments: check the input, list every point in
-//! the naming order (isolated points, then each segment's first and second
-//! endpoint), insert the points and then the segments, renumber.
+//! Building from points and segments: check the input (beside the point
+//! insertions, on large inputs), list every point in the naming order
+//! (isolated points, then each segment's first and second endpoint), insert
+//! the points and then the segments, renumber.
 
 use super::finish::{self, SegmentSite};
 use super::segment_input::{check_segments, Conflict};
-use super::{construct, to_internal};
+use super::{construct_from, insert_points, to_internal};
 use crate::diagram::{Diagram, SiteId};
 use crate::error::{Error, ErrorKind};
 use crate::geometry::Point;
 
 pub(super) fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<Diagram, Error> {
-    let checked = check_segments(points, segments).map_err(|c| conflict_error(&c))?;
-
     // P<k> numbers the distinct points of this list by first appearance.
     let mut all: Vec<Point> = Vec::with_capacity(points.len() + 2 * segments.len());
     all.extend_from_slice(points);
@@ -20,10 +19,27 @@ pub(super) fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<D
     }
     let (scale, scaled) = to_internal(&all);
 
+    // The points go in whatever the input check finds (a repeated or
+    // zero-length segment only repeats points), so on large inputs the
+    // check runs on a second thread meanwhile; an error discards the points.
+    let (checked, stage) = std::thread::scope(|scope| {
+        let checker = (segments.len() >= PARALLEL_CHECK_FROM)
+            .then(|| std::thread::Builder::new().spawn_scoped(scope, || check_segments(points, segments)).ok())
+            .flatten();
+        let stage = insert_points(&scaled, segments.len());
+        let checked = match checker {
+            // A panic in the checker is a bug; pass it on.
+            Some(handle) => handle.join().unwrap_or_else(|e| std::panic::resume_unwind(e)),
+            None => check_segments(points, segments),
+        };
+        (checked, stage)
+    });
+    let checked = checked.map_err(|c| conflict_error(&c))?;
+
     let endpoint_index = |j: usize| [points.len() + 2 * j, points.len() + 2 * j + 1];
     let kept: Vec<usize> = checked.segments.iter().map(|&(j, _)| j).collect();
     let pairs: Vec<[usize; 2]> = kept.iter().map(|&j| endpoint_index(j)).collect();
-    let (built, site_of_input, segment_sites) = construct(&scaled, &pairs);
+    let (built, site_of_input, segment_sites) = construct_from(stage, &scaled, &pairs);
     let described: Vec<SegmentSite> = kept
         .iter()
         .zip(segment_sites)
@@ -52,6 +68,10 @@ pub(super) fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<D
     debug_assert_eq!(diagram.validate(), Ok(()));
     Ok(diagram)
 }
+
+/// From this many segments on, the input check runs beside the point
+/// insertions (below, a thread costs more than it saves).
+const PARALLEL_CHECK_FROM: usize = 20_000;
 
 /// The builder's error for an input conflict, naming both input indices.
 fn conflict_error(conflict: &Conflict) -> Error {
