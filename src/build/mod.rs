@@ -345,11 +345,15 @@ fn insert_segments(
             return (diagram, site_of, segment_sites, None);
         }
     };
-    // Segments go along a Hilbert curve through their midpoints: each
-    // insertion then works where the last one did, in memory the cache
-    // still holds (the result does not depend on it). No BRIO rounds: with
-    // every point in, a segment's conflict region stays near it whichever
-    // segments came before.
+    // Segments go in the same order as points, by their midpoints: BRIO
+    // rounds along a Hilbert curve (the result does not depend on it). The
+    // curve keeps each insertion where the last one worked, in memory the
+    // cache still holds; the random rounds keep the work near-linear where
+    // segments are long against the gaps between them: inserted in sweep
+    // order, each of n parallel segments would first take the cell of the
+    // one before, which reaches across all the points (n parallel segments
+    // of length n at unit spacing cost O(n^2) that way, O(n log n) in
+    // random rounds).
     let midpoints: Vec<Point> = segments
         .iter()
         .map(|&[i, j]| {
@@ -359,7 +363,7 @@ fn insert_segments(
         .collect();
     let mut segment_sites = vec![SiteId(NONE); segments.len()];
     let mut stuck = None;
-    let rest = points::hilbert_order(&midpoints).into_iter().map(|k| k as usize).filter(|k| !first_segments.contains(k));
+    let rest = points::insertion_order(&midpoints).into_iter().map(|k| k as usize).filter(|k| !first_segments.contains(k));
     for k in first_segments.iter().copied().chain(rest) {
         let [i, j] = segments[k];
         segment_sites[k] = diagram.insert_segment(site_of[i], site_of[j]).unwrap_or_else(|e| {

@@ -21,20 +21,12 @@ const MAX_LEVEL: u64 = 30;
 
 /// The order in which to insert `points` (indices into it). Deterministic.
 pub(crate) fn insertion_order(points: &[Point]) -> Vec<u32> {
-    insertion_order_threaded(points, PARALLEL_FROM, true)
+    insertion_order_threaded(points, PARALLEL_FROM)
 }
 
-/// The order of `points` along one Hilbert curve, without BRIO rounds: for
-/// sites whose insertion cost does not depend on what came before (segments,
-/// once every point is in), only the locality matters.
-pub(crate) fn hilbert_order(points: &[Point]) -> Vec<u32> {
-    insertion_order_threaded(points, PARALLEL_FROM, false)
-}
-
-/// [`insertion_order`] (or with `brio` false [`hilbert_order`]), on two
-/// threads when there are `parallel_from` points or more; the answer does
-/// not depend on it.
-fn insertion_order_threaded(points: &[Point], parallel_from: usize, brio: bool) -> Vec<u32> {
+/// [`insertion_order`], on two threads when there are `parallel_from`
+/// points or more; the answer does not depend on it.
+fn insertion_order_threaded(points: &[Point], parallel_from: usize) -> Vec<u32> {
     let n = points.len();
     if n == 0 {
         return Vec::new();
@@ -65,7 +57,7 @@ fn insertion_order_threaded(points: &[Point], parallel_from: usize, brio: bool) 
         // the same order.
         let level = (SplitMix(seed ^ (i as u64).wrapping_mul(0xD1B5_4A32_D192_ED03)).next() | (1 << MAX_LEVEL))
             .trailing_zeros() as u64;
-        let round = if brio { MAX_LEVEL - level } else { 0 };
+        let round = MAX_LEVEL - level;
         let mut h = hilbert_index(grid(p.x, lo.x), grid(p.y, lo.y));
         if round % 2 == 1 {
             // run the curve backwards so consecutive rounds meet end to start
@@ -184,23 +176,12 @@ mod tests {
     fn two_threads_give_the_single_thread_order() {
         let n = 5001;
         let pts: Vec<Point> = (0..n).map(|i| Point::new((i * 7919 % 10007) as f64, (i * 104729 % 9973) as f64)).collect();
-        let one = insertion_order_threaded(&pts, usize::MAX, true);
-        assert_eq!(insertion_order_threaded(&pts, 2, true), one);
-        assert_eq!(insertion_order_threaded(&pts[..4], 2, true), insertion_order_threaded(&pts[..4], usize::MAX, true));
+        let one = insertion_order_threaded(&pts, usize::MAX);
+        assert_eq!(insertion_order_threaded(&pts, 2), one);
+        assert_eq!(insertion_order_threaded(&pts[..4], 2), insertion_order_threaded(&pts[..4], usize::MAX));
         let mut sorted = one;
         sorted.sort_unstable();
         assert_eq!(sorted, (0..n as u32).collect::<Vec<u32>>());
-        // the plain Hilbert order likewise, and it is one sweep: consecutive
-        // points are close (no jumps back between rounds)
-        let hilbert = insertion_order_threaded(&pts, usize::MAX, false);
-        assert_eq!(insertion_order_threaded(&pts, 2, false), hilbert);
-        let mut sorted = hilbert.clone();
-        sorted.sort_unstable();
-        assert_eq!(sorted, (0..n as u32).collect::<Vec<u32>>());
-        let total_step = |order: &[u32]| -> f64 {
-            order.windows(2).map(|w| pts[w[0] as usize].distance(pts[w[1] as usize])).sum()
-        };
-        assert!(total_step(&hilbert) < 0.5 * total_step(&insertion_order_threaded(&pts, usize::MAX, true)));
     }
 
     #[test]

@@ -23,7 +23,7 @@ use crate::geometry::predicates::{in_circle, strictly_closer_given, in_half_plan
 use crate::geometry::solvers::{circumcircle, left_normal};
 use crate::geometry::{fault, Point};
 
-pub(crate) use super::order::{hilbert_order, insertion_order};
+pub(crate) use super::order::insertion_order;
 
 mod segments;
 
