@@ -162,7 +162,8 @@ fn shared_endpoints_with_lying_arithmetic() {
             [[0.0, 0.0], [r * t.cos(), r * t.sin()]]
         })
         .collect();
-    let inputs: [(&[[f64; 2]], Vec<[[f64; 2]; 2]>); 4] = [
+    type PointsAndSegments = (&'static [[f64; 2]], Vec<[[f64; 2]; 2]>);
+    let inputs: [PointsAndSegments; 4] = [
         (&[], snake(40, 1)),
         (&[[0.1, 0.05], [3.5, 0.2]], nested),
         (&[[0.3, 0.2], [5.0, 5.0]], star),

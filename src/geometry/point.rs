@@ -77,7 +77,7 @@ pub(crate) fn norm(dx: f64, dy: f64) -> f64 {
     /// Below this a lost square could matter; about 2^-897.
     const SMALLEST_SAFE: f64 = 1e-270;
     let sum = dx * dx + dy * dy;
-    if sum >= SMALLEST_SAFE && sum <= f64::MAX {
+    if (SMALLEST_SAFE..=f64::MAX).contains(&sum) {
         sum.sqrt()
     } else {
         dx.hypot(dy)

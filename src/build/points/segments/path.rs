@@ -1,0 +1,331 @@
+//! P4: the path from `R(a)`'s boundary to `R(b)`'s that starts the
+//! deletion tree of a segment `ab` — the walk that keeps sites left of the
+//! segment on its left (seed 000's left-degree), backtracking to its least
+//! certain decision; the same walk through any vertices; a breadth-first
+//! shortest path as the last resort.
+
+use std::cmp::Reverse;
+use std::collections::{BinaryHeap, HashSet};
+
+use super::super::PointDiagram;
+use crate::diagram::{HalfEdgeId, SiteId, VertexId};
+use crate::geometry::Point;
+
+/// A path of P4: its vertices, and the half-edge by which each vertex after
+/// the first was entered.
+struct Path {
+    vertices: Vec<VertexId>,
+    entered_by: Vec<HalfEdgeId>,
+}
+
+/// The walk of P4 in progress: its vertices and the half-edges already tried.
+struct PathWalk {
+    vertices: Vec<VertexId>,
+    /// The half-edge by which each vertex after the first was entered.
+    entered_by: Vec<HalfEdgeId>,
+    on_walk: HashSet<VertexId>,
+    tried: HashSet<HalfEdgeId>,
+    /// The edge to leave the first vertex by.
+    first_move: HalfEdgeId,
+    /// Only vertices in conflict with the segment may join.
+    strict: bool,
+    /// Alternatives not taken: (certainty, position on the path, vertex
+    /// there, half-edge to take instead), least certain first.
+    alternatives: BinaryHeap<Reverse<(u64, usize, VertexId, HalfEdgeId)>>,
+}
+
+impl PointDiagram {
+    /// Finds the path of P4 and makes it the start of the tree (marked with
+    /// the current epoch); the edges between path vertices other than the
+    /// path's own are cut twice. Returns `false` when no path was found
+    /// (only possible when the numbers lie badly); the tree is then the
+    /// walk's first vertex alone.
+    pub(super) fn find_segment_path(&mut self, a: SiteId, b: SiteId) -> bool {
+        // First only through vertices the segment conflicts with (where the
+        // true path runs); if the numbers leave no such path, through any.
+        let (found, path) = match self.walk_to(a, b, true) {
+            (true, path) => (true, path),
+            _ => match self.walk_to(a, b, false) {
+                (true, path) => (true, path),
+                (false, start_only) => self.shortest_path(a, b).map_or((false, start_only), |path| (true, path)),
+            },
+        };
+        let Path { vertices, entered_by } = if found { path } else { Path { vertices: path.vertices[..1].to_vec(), entered_by: Vec::new() } };
+        let epoch = self.epoch;
+        self.tree.clear();
+        for &v in &vertices {
+            self.vertex_mark[v.index()] = epoch;
+            self.tree.push(v);
+        }
+        for &v in &vertices {
+            for k in 0..3 {
+                let h = v.half_edge(k);
+                let on_path = self.vertex_mark[self.store.target(h).index()] == epoch;
+                let path_edge = entered_by.iter().any(|&g| g == h || self.store.twin(g) == h);
+                if on_path && !path_edge && !self.is_separator(h) && !self.is_twice_cut(h) {
+                    self.twice_cut.push(h);
+                }
+            }
+        }
+        found
+    }
+
+    /// The last resort when the numbers misled both walks: the path with
+    /// fewest edges from `R(a)`'s boundary to `R(b)`'s, by breadth-first
+    /// search without separators, vertices at infinity or vertices whose
+    /// third cell is `R(a)`. A shortest path has no chord but edges parallel
+    /// to its own (a cell with two edges between consecutive path vertices),
+    /// touches `R(a)` and `R(b)` only at its ends, and so keeps P3 and P5
+    /// whatever the numbers say, its parallel edges cut twice (a path with
+    /// an edge that may not be cut twice is refused). `None` if there is no
+    /// such path.
+    fn shortest_path(&self, a: SiteId, b: SiteId) -> Option<Path> {
+        let mut parent: std::collections::HashMap<VertexId, Option<HalfEdgeId>> = Default::default();
+        let mut queue = std::collections::VecDeque::new();
+        for h in self.store.cell_boundary(a) {
+            let v = h.origin();
+            if self.walkable(v, a, b) && parent.insert(v, None).is_none() {
+                queue.push_back(v);
+            }
+        }
+        let mut end = None;
+        while let Some(v) = queue.pop_front() {
+            if self.store.sites_of(v).contains(&b) {
+                end = Some(v);
+                break;
+            }
+            for k in 0..3 {
+                let h = v.half_edge(k);
+                let w = self.store.target(h);
+                let third = self.store.opposite(self.store.twin(h));
+                if parent.contains_key(&w) || self.is_separator(h) || third == a || !self.walkable(w, a, b) {
+                    continue;
+                }
+                parent.insert(w, Some(h));
+                queue.push_back(w);
+            }
+        }
+        let mut vertices = vec![end?];
+        let mut entered_by = Vec::new();
+        while let Some(&Some(h)) = parent.get(vertices.last().expect("non-empty")) {
+            entered_by.push(h);
+            vertices.push(h.origin());
+        }
+        vertices.reverse();
+        entered_by.reverse();
+        let on_path: HashSet<VertexId> = vertices.iter().copied().collect();
+        let cuttable = vertices.iter().all(|&v| {
+            (0..3).all(|k| {
+                let h = v.half_edge(k);
+                let path_edge = entered_by.iter().any(|&g| g == h || self.store.twin(g) == h);
+                path_edge || self.is_separator(h) || !on_path.contains(&self.store.target(h)) || self.may_cut_twice(h, a, b)
+            })
+        });
+        cuttable.then_some(Path { vertices, entered_by })
+    }
+
+    /// The walk from `R(a)` to `R(b)`; `strict` admits only vertices in
+    /// conflict with the segment. Returns whether `R(b)` was reached and the
+    /// walk's vertices (at least the start).
+    fn walk_to(&self, a: SiteId, b: SiteId, strict: bool) -> (bool, Path) {
+        let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
+        let (start, first_move) = self.path_start(a, b);
+        if self.store.sites_of(start).contains(&b) {
+            return (true, Path { vertices: vec![start], entered_by: Vec::new() });
+        }
+        let mut walk = PathWalk {
+            vertices: Vec::new(),
+            entered_by: Vec::new(),
+            on_walk: HashSet::new(),
+            tried: HashSet::new(),
+            first_move,
+            strict,
+            alternatives: BinaryHeap::new(),
+        };
+        self.walk_push(&mut walk, start, None);
+        loop {
+            let v = *walk.vertices.last().expect("the walk always holds its start");
+            if self.store.sites_of(v).contains(&b) {
+                return (true, Path { vertices: walk.vertices, entered_by: walk.entered_by });
+            }
+            match self.walk_step(&mut walk, v, a, b, pa, pb).or_else(|| self.walk_backtrack(&mut walk, a, b)) {
+                Some(h) => {
+                    walk.tried.insert(h);
+                    let w = self.store.target(h);
+                    self.walk_push(&mut walk, w, Some(h));
+                }
+                None => return (false, Path { vertices: walk.vertices, entered_by: walk.entered_by }),
+            }
+        }
+    }
+
+    /// The walk's first vertex, on `R(a)`'s boundary, and the edge to leave
+    /// it by: among the vertices in conflict with the segment, one with `b`
+    /// among its sites if there is one, else the one whose edge away from
+    /// `R(a)` has a site left of the segment on its left and one right of it
+    /// on its right (seed 000's characteristic 3), most clearly so, the
+    /// deepest conflict breaking ties.
+    fn path_start(&self, a: SiteId, b: SiteId) -> (VertexId, HalfEdgeId) {
+        // R(a) and R(b) already meet (the usual case for a short segment): a
+        // vertex of both is the whole path, and no other scores as high.
+        for h in self.store.cell_boundary(a) {
+            let v = h.origin();
+            if self.store.sites_of(v).contains(&b) && self.walkable(v, a, b) && self.segment_conflict(v, a, b) {
+                return (v, h.rotate(2));
+            }
+        }
+        let ends = (self.sites[a.index()], self.sites[b.index()]);
+        let mut best: Option<(VertexId, HalfEdgeId, (f64, f64, f64))> = None;
+        for h in self.store.cell_boundary(a) {
+            let v = h.origin();
+            // h has R(a) on its left; the edge of v away from R(a):
+            let out = h.rotate(2);
+            // The start is deleted: it must conflict with the segment if any
+            // vertex of R(a) does (one always does, exactly).
+            let (conflict, depth) = if self.store.is_at_infinity(v) {
+                (self.segment_conflict(v, a, b), f64::INFINITY)
+            } else {
+                let depth = self.segment_depth(v, a, b);
+                (depth < 0.0, depth)
+            };
+            let conflict = if conflict { 1.0 } else { 0.0 };
+            let key = if self.store.sites_of(v).contains(&b) && self.walkable(v, a, b) {
+                (conflict, f64::INFINITY, f64::INFINITY)
+            } else {
+                let left = self.left_degree(v, self.store.left(out), (a, b), ends);
+                let right = self.left_degree(v, self.store.right(out), (a, b), ends);
+                let separation = left.min(-right);
+                (conflict, if separation.is_nan() { f64::NEG_INFINITY } else { separation.min(f64::MAX) }, -depth)
+            };
+            if best.map_or(true, |(_, _, k)| key > k) {
+                best = Some((v, out, key));
+            }
+        }
+        best.map(|(v, out, _)| (v, out)).expect("a point site among others has a cell boundary")
+    }
+
+    fn walk_push(&self, walk: &mut PathWalk, v: VertexId, entered_by: Option<HalfEdgeId>) {
+        walk.vertices.push(v);
+        if let Some(h) = entered_by {
+            walk.entered_by.push(h);
+        }
+        walk.on_walk.insert(v);
+    }
+
+    /// Shortens the walk to its first `len` vertices.
+    fn walk_truncate(&self, walk: &mut PathWalk, len: usize) {
+        while walk.vertices.len() > len {
+            let v = walk.vertices.pop().expect("longer than len");
+            walk.entered_by.pop();
+            walk.on_walk.remove(&v);
+        }
+    }
+
+    /// Whether leaving the walk's last vertex by `h` keeps the walk a path
+    /// (P3) and `R(a)` touched in one piece (P5): the vertex reached is new,
+    /// each of its other edges that leads back to the walk (a chord) may be
+    /// cut twice (in the strict walk: the numbers also say its middle stays
+    /// out of the new cell), its third cell is not `R(a)`, and it is not at
+    /// infinity unless it conflicts.
+    fn walk_allows(&self, walk: &PathWalk, h: HalfEdgeId, a: SiteId, b: SiteId) -> bool {
+        if walk.tried.contains(&h) {
+            return false;
+        }
+        let back = self.store.twin(h);
+        let w = back.origin();
+        let chord_ok = |x: HalfEdgeId| {
+            self.is_separator(x)
+                || !walk.on_walk.contains(&self.store.target(x))
+                || (self.may_cut_twice(x, a, b) && (!walk.strict || self.middle_margin(x, a, b) > 0.0))
+        };
+        !self.is_separator(h)
+            && !walk.on_walk.contains(&w)
+            && self.store.opposite(back) != a
+            && self.walkable(w, a, b)
+            && (!walk.strict || self.segment_conflict(w, a, b))
+            && chord_ok(back.rotate(1))
+            && chord_ok(back.rotate(2))
+    }
+
+    /// The next half-edge to follow from `v`, by the left/right rule, with
+    /// the other choice kept for backtracking; `None` when neither is open.
+    fn walk_step(
+        &self,
+        walk: &mut PathWalk,
+        v: VertexId,
+        a: SiteId,
+        b: SiteId,
+        pa: Point,
+        pb: Point,
+    ) -> Option<HalfEdgeId> {
+        let pos = walk.vertices.len() - 1;
+        let (preferred, other, certainty) = match walk.entered_by.last() {
+            Some(&h) => {
+                // Arrived by h; t leaves v back. The cell ahead, N, should
+                // stay on the side of the walk it is on of the segment.
+                let t = self.store.twin(h);
+                let ahead = self.store.opposite(t);
+                let l = self.left_degree(v, ahead, (a, b), (pa, pb));
+                let (keep_left, keep_right) = (t.rotate(1), t.rotate(2));
+                if l > 0.0 {
+                    (keep_left, keep_right, l.abs())
+                } else {
+                    (keep_right, keep_left, l.abs())
+                }
+            }
+            None => {
+                // At the start: away from R(a) first, along its boundary
+                // only when that fails.
+                let out = walk.first_move;
+                let along = [out.rotate(1), out.rotate(2)];
+                for h in along {
+                    if self.walk_allows(walk, h, a, b) {
+                        walk.alternatives.push(Reverse((certainty_key(f64::INFINITY), pos, v, h)));
+                    }
+                }
+                return self.walk_allows(walk, out, a, b).then_some(out);
+            }
+        };
+        // Only vertices the segment conflicts with belong on the path; the
+        // left/right rule decides between two of them, and a vertex out of
+        // conflict is taken only when nothing else is left (backtracking).
+        let conflicts = |h: HalfEdgeId| self.segment_conflict(self.store.target(h), a, b);
+        let mut options: Vec<(bool, HalfEdgeId)> = [preferred, other]
+            .into_iter()
+            .filter(|&h| self.walk_allows(walk, h, a, b))
+            .map(|h| (!conflicts(h), h))
+            .collect();
+        options.sort_by_key(|&(out_of_conflict, _)| out_of_conflict); // stable: rule order among equals
+        let (_, chosen) = *options.first()?;
+        for &(out_of_conflict, h) in &options[1..] {
+            let c = if out_of_conflict { f64::INFINITY } else { certainty };
+            walk.alternatives.push(Reverse((certainty_key(c), pos, v, h)));
+        }
+        Some(chosen)
+    }
+
+    /// Goes back to the least certain open alternative; `None` when none is
+    /// left.
+    fn walk_backtrack(&self, walk: &mut PathWalk, a: SiteId, b: SiteId) -> Option<HalfEdgeId> {
+        while let Some(Reverse((_, pos, v, h))) = walk.alternatives.pop() {
+            if pos >= walk.vertices.len() || walk.vertices[pos] != v {
+                continue;
+            }
+            self.walk_truncate(walk, pos + 1);
+            if self.walk_allows(walk, h, a, b) {
+                return Some(h);
+            }
+        }
+        None
+    }
+}
+
+/// A heap key for a non-negative certainty (NaN last): the bits of a
+/// non-negative double order like the double.
+fn certainty_key(c: f64) -> u64 {
+    if c.is_nan() {
+        u64::MAX
+    } else {
+        c.abs().to_bits()
+    }
+}
