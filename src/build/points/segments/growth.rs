@@ -120,28 +120,41 @@ impl PointDiagram {
     }
 
     /// The half-edges of the tree's path from `from` to `to` (both in the
-    /// tree), by breadth-first search over tree edges.
+    /// tree), from `to` back to `from`, by a search over tree edges that
+    /// never turns back: the tree edges form a tree, so nothing is reached
+    /// twice and no visited set is needed (the search still stops after
+    /// as many steps as the tree has vertices).
     fn tree_path(&self, from: VertexId, to: VertexId) -> Vec<HalfEdgeId> {
-        let mut parent: std::collections::HashMap<VertexId, HalfEdgeId> = Default::default();
-        let mut queue = std::collections::VecDeque::from([from]);
-        while let Some(v) = queue.pop_front() {
+        // (vertex, index of the entry it was reached from, half-edge used)
+        let mut reached: Vec<(VertexId, usize, Option<HalfEdgeId>)> = vec![(from, 0, None)];
+        let mut next = 0;
+        let mut found = None;
+        while next < reached.len() && reached.len() <= self.tree.len() + 2 {
+            let (v, _, came_by) = reached[next];
             if v == to {
+                found = Some(next);
                 break;
             }
+            let back = came_by.map(|h| self.store.twin(h));
             for k in 0..3 {
                 let h = v.half_edge(k);
-                let w = self.store.target(h);
-                if w != from && self.leads_into_tree(h) && !parent.contains_key(&w) {
-                    parent.insert(w, h);
-                    queue.push_back(w);
+                if Some(h) != back && self.leads_into_tree(h) {
+                    reached.push((self.store.target(h), next, Some(h)));
                 }
             }
+            next += 1;
         }
         let mut path = Vec::new();
-        let mut v = to;
-        while let Some(&h) = parent.get(&v) {
-            path.push(h);
-            v = h.origin();
+        let mut at = found;
+        while let Some(k) = at {
+            let (_, parent, came_by) = reached[k];
+            match came_by {
+                Some(h) => {
+                    path.push(h);
+                    at = Some(parent);
+                }
+                None => at = None,
+            }
         }
         path
     }
