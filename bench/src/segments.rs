@@ -467,24 +467,24 @@ impl Grid {
         false
     }
 
-    fn insert(&mut self, id: u32, s: Seg) {
+    /// The cells a segment is registered in.
+    fn cells_of(&self, s: Seg) -> Vec<usize> {
         let mut touched = Vec::new();
         self.visit(s, GAP + 1.0, |c| {
             touched.push(c);
             false
         });
-        for c in touched {
+        touched
+    }
+
+    fn insert(&mut self, id: u32, s: Seg) {
+        for c in self.cells_of(s) {
             self.cells[c].push(id);
         }
     }
 
     fn remove(&mut self, id: u32, s: Seg) {
-        let mut touched = Vec::new();
-        self.visit(s, GAP + 1.0, |c| {
-            touched.push(c);
-            false
-        });
-        for c in touched {
+        for c in self.cells_of(s) {
             let cell = &mut self.cells[c];
             let k = cell.iter().position(|&x| x == id).expect("segment registered in its cells");
             cell.swap_remove(k);
