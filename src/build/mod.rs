@@ -363,10 +363,24 @@ fn insert_segments(
         .collect();
     let mut segment_sites = vec![SiteId(NONE); segments.len()];
     let mut stuck = None;
-    let rest = points::insertion_order(&midpoints).into_iter().map(|k| k as usize).filter(|k| !first_segments.contains(k));
-    for k in first_segments.iter().copied().chain(rest) {
-        let [i, j] = segments[k];
-        segment_sites[k] = diagram.insert_segment(site_of[i], site_of[j]).unwrap_or_else(|e| {
+    let by_midpoint = points::insertion_order(&midpoints);
+    drop(midpoints);
+    let rest = by_midpoint.into_iter().filter(|&k| !first_segments.contains(&(k as usize)));
+    // Gather each segment's endpoint sites into insertion order first: the
+    // loads are independent here and overlap, where inside the loop each
+    // would be a cache miss waiting behind a whole insertion.
+    let order: Vec<(u32, SiteId, SiteId)> = first_segments
+        .iter()
+        .map(|&k| k as u32)
+        .chain(rest)
+        .map(|k| {
+            let [i, j] = segments[k as usize];
+            (k, site_of[i], site_of[j])
+        })
+        .collect();
+    for (k, a, b) in order {
+        let k = k as usize;
+        segment_sites[k] = diagram.insert_segment(a, b).unwrap_or_else(|e| {
             stuck = stuck.or(Some(k));
             e
         });

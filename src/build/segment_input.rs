@@ -231,6 +231,12 @@ fn normalise(points: &[Point], segments: &[[Point; 2]], internal: impl Fn(Point)
         out.kept_of_input.push(Some(kept));
     }
     drop(kept_by_key);
+    if points.is_empty() && degenerate.is_empty() {
+        // Nothing to compare with the endpoints: no set of them needed.
+        // (The keys are the caller's coordinates: the default hasher's
+        // random keys keep crafted input from colliding them.)
+        return out;
+    }
     let mut seen_points: HashSet<[u64; 2]> = out.segments.iter().flat_map(|(_, s)| s.map(point_key)).collect();
     let isolated = points
         .iter()

@@ -6,6 +6,7 @@
 
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashSet};
+use std::hash::{BuildHasherDefault, Hash, Hasher};
 
 use super::super::PointDiagram;
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
@@ -23,8 +24,8 @@ struct PathWalk {
     vertices: Vec<VertexId>,
     /// The half-edge by which each vertex after the first was entered.
     entered_by: Vec<HalfEdgeId>,
-    on_walk: HashSet<VertexId>,
-    tried: HashSet<HalfEdgeId>,
+    on_walk: SmallSet<VertexId>,
+    tried: SmallSet<HalfEdgeId>,
     /// The edge to leave the first vertex by.
     first_move: HalfEdgeId,
     /// Only vertices in conflict with the segment may join.
@@ -136,8 +137,8 @@ impl PointDiagram {
         let mut walk = PathWalk {
             vertices: Vec::new(),
             entered_by: Vec::new(),
-            on_walk: HashSet::new(),
-            tried: HashSet::new(),
+            on_walk: SmallSet::default(),
+            tried: SmallSet::default(),
             first_move,
             strict,
             alternatives: BinaryHeap::new(),
@@ -290,18 +291,19 @@ impl PointDiagram {
         // left/right rule decides between two of them, and a vertex out of
         // conflict is taken only when nothing else is left (backtracking).
         let conflicts = |h: HalfEdgeId| self.segment_conflict(self.store.target(h), a, b);
-        let mut options: Vec<(bool, HalfEdgeId)> = [preferred, other]
-            .into_iter()
-            .filter(|&h| self.walk_allows(walk, h, a, b))
-            .map(|h| (!conflicts(h), h))
-            .collect();
-        options.sort_by_key(|&(out_of_conflict, _)| out_of_conflict); // stable: rule order among equals
-        let (_, chosen) = *options.first()?;
-        for &(out_of_conflict, h) in &options[1..] {
+        let option = |h: HalfEdgeId| self.walk_allows(walk, h, a, b).then(|| (!conflicts(h), h));
+        let (chosen, alternative) = match (option(preferred), option(other)) {
+            (None, None) => return None,
+            (Some(x), None) | (None, Some(x)) => (x, None),
+            // stable: rule order among equals
+            (Some(x), Some(y)) if x.0 && !y.0 => (y, Some(x)),
+            (Some(x), Some(y)) => (x, Some(y)),
+        };
+        if let Some((out_of_conflict, h)) = alternative {
             let c = if out_of_conflict { f64::INFINITY } else { certainty };
             walk.alternatives.push(Reverse((certainty_key(c), pos, v, h)));
         }
-        Some(chosen)
+        Some(chosen.1)
     }
 
     /// Goes back to the least certain open alternative; `None` when none is
@@ -317,6 +319,79 @@ impl PointDiagram {
             }
         }
         None
+    }
+}
+
+/// A set of ids that is usually small: a list searched linearly, with a
+/// hash set beside it once it grows beyond `SMALL_SET_LIMIT` (long walks).
+struct SmallSet<T> {
+    items: Vec<T>,
+    large: Option<HashSet<T, BuildHasherDefault<IdHasher>>>,
+}
+
+/// Beyond this many items a [`SmallSet`] also keeps a hash set.
+const SMALL_SET_LIMIT: usize = 32;
+
+impl<T> Default for SmallSet<T> {
+    fn default() -> Self {
+        SmallSet { items: Vec::new(), large: None }
+    }
+}
+
+impl<T: Copy + Eq + Hash> SmallSet<T> {
+    fn contains(&self, x: &T) -> bool {
+        match &self.large {
+            Some(set) => set.contains(x),
+            None => self.items.contains(x),
+        }
+    }
+
+    fn insert(&mut self, x: T) {
+        if self.contains(&x) {
+            return;
+        }
+        self.items.push(x);
+        match &mut self.large {
+            Some(set) => {
+                set.insert(x);
+            }
+            None if self.items.len() > SMALL_SET_LIMIT => self.large = Some(self.items.iter().copied().collect()),
+            None => {}
+        }
+    }
+
+    fn remove(&mut self, x: &T) {
+        if let Some(k) = self.items.iter().rposition(|y| y == x) {
+            self.items.swap_remove(k);
+        }
+        if let Some(set) = &mut self.large {
+            set.remove(x);
+        }
+    }
+}
+
+/// A hasher for the 32-bit ids of the walk's sets (Fibonacci hashing; the
+/// keys are not chosen by an adversary, only by the input's geometry).
+#[derive(Default)]
+struct IdHasher(u64);
+
+impl Hasher for IdHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(u64::from(b));
+        }
+    }
+
+    fn write_u32(&mut self, x: u32) {
+        self.write_u64(u64::from(x));
+    }
+
+    fn write_u64(&mut self, x: u64) {
+        self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x9E37_79B9_7F4A_7C15);
     }
 }
 
