@@ -19,6 +19,28 @@ struct Path {
     entered_by: Vec<HalfEdgeId>,
 }
 
+impl Path {
+    /// The half-edges from a path vertex to another (`on_path`) that are
+    /// not the path's own edges: chords, and edges parallel to the path's
+    /// (each from both of its ends).
+    fn chords<'a>(
+        &'a self,
+        d: &'a PointDiagram,
+        on_path: impl Fn(VertexId) -> bool + 'a,
+    ) -> impl Iterator<Item = HalfEdgeId> + 'a {
+        self.vertices
+            .iter()
+            .enumerate()
+            .flat_map(|(i, &v)| (0..3).map(move |k| (i, v.half_edge(k))))
+            .filter(move |&(i, h)| {
+                let to_predecessor = i > 0 && h == d.store.twin(self.entered_by[i - 1]);
+                let to_successor = self.entered_by.get(i) == Some(&h);
+                !to_predecessor && !to_successor && on_path(d.store.target(h))
+            })
+            .map(|(_, h)| h)
+    }
+}
+
 /// The walk of P4 in progress: its vertices and the half-edges already tried.
 struct PathWalk {
     vertices: Vec<VertexId>,
@@ -58,14 +80,11 @@ impl PointDiagram {
             self.vertex_mark[v.index()] = epoch;
             self.tree.push(v);
         }
-        for &v in &vertices {
-            for k in 0..3 {
-                let h = v.half_edge(k);
-                let on_path = self.vertex_mark[self.store.target(h).index()] == epoch;
-                let path_edge = entered_by.iter().any(|&g| g == h || self.store.twin(g) == h);
-                if on_path && !path_edge && !self.is_separator(h) && !self.is_twice_cut(h) {
-                    self.twice_cut.push(h);
-                }
+        let path = Path { vertices, entered_by };
+        let chords: Vec<HalfEdgeId> = path.chords(self, |v| self.vertex_mark[v.index()] == epoch).collect();
+        for h in chords {
+            if !self.is_separator(h) && !self.is_twice_cut(h) {
+                self.twice_cut.push(h);
             }
         }
         found
@@ -115,14 +134,9 @@ impl PointDiagram {
         vertices.reverse();
         entered_by.reverse();
         let on_path: HashSet<VertexId> = vertices.iter().copied().collect();
-        let cuttable = vertices.iter().all(|&v| {
-            (0..3).all(|k| {
-                let h = v.half_edge(k);
-                let path_edge = entered_by.iter().any(|&g| g == h || self.store.twin(g) == h);
-                path_edge || self.is_separator(h) || !on_path.contains(&self.store.target(h)) || self.may_cut_twice(h, a, b)
-            })
-        });
-        cuttable.then_some(Path { vertices, entered_by })
+        let path = Path { vertices, entered_by };
+        let cuttable = path.chords(self, |v| on_path.contains(&v)).all(|h| self.is_separator(h) || self.may_cut_twice(h, a, b));
+        cuttable.then_some(path)
     }
 
     /// The walk from `R(a)` to `R(b)`; `strict` admits only vertices in
