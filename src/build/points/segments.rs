@@ -61,13 +61,26 @@ impl PointDiagram {
         s.0 >= self.first_segment
     }
 
+    /// The endpoint sites of `s`, if it is a segment.
+    #[inline]
+    fn ends_of(&self, s: SiteId) -> Option<[SiteId; 2]> {
+        self.is_segment(s).then(|| self.segment_ends[(s.0 - self.first_segment) as usize])
+    }
+
+    /// The other endpoint of `s`, if it is a segment ending at `end`.
+    fn far_end(&self, s: SiteId, end: SiteId) -> Option<SiteId> {
+        match self.ends_of(s)? {
+            [x, y] if x == end => Some(y),
+            [x, y] if y == end => Some(x),
+            _ => None,
+        }
+    }
+
     /// The geometry of a real site (not the point at infinity).
     fn site_geometry(&self, s: SiteId) -> Site {
-        if self.is_segment(s) {
-            let [a, b] = self.segment_ends[(s.0 - self.first_segment) as usize];
-            Site::Segment { a: self.sites[a.index()], b: self.sites[b.index()] }
-        } else {
-            Site::Point(self.sites[s.index()])
+        match self.ends_of(s) {
+            Some([a, b]) => Site::Segment { a: self.sites[a.index()], b: self.sites[b.index()] },
+            None => Site::Point(self.sites[s.index()]),
         }
     }
 
@@ -183,19 +196,7 @@ impl PointDiagram {
     fn side_at_endpoint(&self, end: SiteId, other: SiteId, sites: [SiteId; 3]) -> EndpointSide {
         let k = sites.iter().position(|&s| s == end).unwrap_or(0);
         let (next, prev) = (sites[(k + 1) % 3], sites[(k + 2) % 3]);
-        let far_end = |s: SiteId| {
-            if !self.is_segment(s) {
-                return None;
-            }
-            let [x, y] = self.segment_ends[(s.0 - self.first_segment) as usize];
-            if x == end {
-                Some(y)
-            } else if y == end {
-                Some(x)
-            } else {
-                None
-            }
-        };
+        let far_end = |s: SiteId| self.far_end(s, end);
         let (pe, po) = (self.sites[end.index()], self.sites[other.index()]);
         let turn = |far: SiteId| orientation(pe, self.sites[far.index()], po);
         match (far_end(next), far_end(prev)) {
@@ -224,22 +225,12 @@ impl PointDiagram {
         if g == INFINITE {
             return 0.0;
         }
-        if self.is_segment(g) {
-            let [x, y] = self.segment_ends[(g.0 - self.first_segment) as usize];
-            let other = if x == a || x == b {
-                Some(y)
-            } else if y == a || y == b {
-                Some(x)
-            } else {
-                None
+        if let Some(o) = self.far_end(g, a).or_else(|| self.far_end(g, b)) {
+            return match orientation(pa, pb, self.sites[o.index()]) {
+                Orientation::CounterClockwise => f64::INFINITY,
+                Orientation::Clockwise => f64::NEG_INFINITY,
+                Orientation::Collinear => 0.0,
             };
-            if let Some(o) = other {
-                return match orientation(pa, pb, self.sites[o.index()]) {
-                    Orientation::CounterClockwise => f64::INFINITY,
-                    Orientation::Clockwise => f64::NEG_INFINITY,
-                    Orientation::Collinear => 0.0,
-                };
-            }
         }
         let q = if self.store.is_at_infinity(v) {
             self.representative(g)
@@ -255,8 +246,7 @@ impl PointDiagram {
     /// endpoint, if only of zero length where many segments meet at a point.
     pub(super) fn is_separator(&self, h: HalfEdgeId) -> bool {
         let (l, r) = (self.store.left(h), self.store.right(h));
-        let ends_of = |s: SiteId| self.segment_ends[(s.0 - self.first_segment) as usize];
-        (self.is_segment(l) && ends_of(l).contains(&r)) || (self.is_segment(r) && ends_of(r).contains(&l))
+        self.ends_of(l).is_some_and(|e| e.contains(&r)) || self.ends_of(r).is_some_and(|e| e.contains(&l))
     }
 
     /// Whether `v` may join the walk: not at infinity unless it conflicts.
