@@ -191,59 +191,71 @@ impl PointDiagram {
             // segment between them (the midpoint is nearer than either end).
             return f64::NEG_INFINITY;
         }
-        let excess = self.edge_excess(h, a, b);
-        let [left, right] = sides.map(|s| self.site_geometry(s));
-        let segment = Site::Segment { a: self.sites[a.index()], b: self.sites[b.index()] };
-        let arc = self.edge_arc(h);
-        let crossings = segment_solvers::vertex(&right, &left, &segment)
-            .zip(segment_solvers::vertex(&left, &right, &segment))
-            .map(|((near_origin, _), (near_target, _))| (arc.parameter(near_origin), arc.parameter(near_target)));
+        let edge = self.edge_under(h, a, b);
+        let crossings = segment_solvers::vertex(&edge.right, &edge.left, &edge.segment)
+            .zip(segment_solvers::vertex(&edge.left, &edge.right, &edge.segment))
+            .map(|((near_origin, _), (near_target, _))| (edge.arc.parameter(near_origin), edge.arc.parameter(near_target)));
         let margin = match crossings {
-            Some((t1, t2)) if 0.0 <= t1 && t1 < t2 && t2 <= 1.0 => excess(0.5 * (t1 + t2)),
+            Some((t1, t2)) if 0.0 <= t1 && t1 < t2 && t2 <= 1.0 => edge.excess(0.5 * (t1 + t2)),
             Some((t1, t2)) => -(t1 - t2).abs().max(f64::MIN_POSITIVE),
-            None => sampled_maximum(&excess),
+            None => sampled_maximum(&|t| edge.excess(t)),
         };
         fault::perturb(margin)
     }
 
-    /// The excess of the distance to the segment `ab` over the distance to
-    /// the edge's own sites, at the point of the edge of `h` at parameter
-    /// `t` (0 at its origin, 1 at its target); NaN gives `-∞`.
-    fn edge_excess(&self, h: HalfEdgeId, a: SiteId, b: SiteId) -> impl Fn(f64) -> f64 {
+    /// The edge of `h` with its two sites, its curve, and the new segment
+    /// `ab`, for `middle_margin`.
+    fn edge_under(&self, h: HalfEdgeId, a: SiteId, b: SiteId) -> EdgeUnderSegment {
         let sides = [self.store.left(h), self.store.right(h)];
-        let touches_end = sides.contains(&a) || sides.contains(&b);
         let [left, right] = sides.map(|s| self.site_geometry(s));
         let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
-        let segment = Site::Segment { a: pa, b: pb };
-        let arc = self.edge_arc(h);
-        move |t: f64| {
-            let q = arc.point(t);
+        let (from, to) = (self.store.position[h.origin().index()], self.store.position[self.store.target(h).index()]);
+        let arc = match Parabola::of_sites(&left, &right) {
+            Some(p) => EdgeArc::Parabola(p, p.parameter(from), p.parameter(to)),
+            None => EdgeArc::Line(from, to),
+        };
+        EdgeUnderSegment {
+            left,
+            right,
+            arc,
+            segment: Site::Segment { a: pa, b: pb },
+            touches_end: sides.contains(&a) || sides.contains(&b),
+        }
+    }
+}
+
+/// An edge seen from a new segment (`PointDiagram::edge_under`).
+struct EdgeUnderSegment {
+    left: Site,
+    right: Site,
+    arc: EdgeArc,
+    segment: Site,
+    /// One of the edge's sites is an endpoint of the segment.
+    touches_end: bool,
+}
+
+impl EdgeUnderSegment {
+    /// The excess of the distance to the segment over the distance to the
+    /// edge's own sites, at the point of the edge at parameter `t` (0 at its
+    /// origin, 1 at its target); NaN gives `-∞`.
+    fn excess(&self, t: f64) -> f64 {
+        let q = self.arc.point(t);
+        let e = match self.segment {
             // On an edge of R(a) or R(b) the distances to the segment and to
             // its endpoint agree outside the strip, so the signed distance
             // beyond the perpendiculars decides, without cancellation.
-            let e = if touches_end {
+            Site::Segment { a: pa, b: pb } if self.touches_end => {
                 let (dx, dy) = (pb.x - pa.x, pb.y - pa.y);
                 let beyond_b = (q.x - pb.x) * dx + (q.y - pb.y) * dy;
                 let beyond_a = (pa.x - q.x) * dx + (pa.y - q.y) * dy;
                 beyond_a.max(beyond_b) / norm(dx, dy)
-            } else {
-                segment.distance(q) - 0.5 * (left.distance(q) + right.distance(q))
-            };
-            if e.is_nan() {
-                f64::NEG_INFINITY
-            } else {
-                e
             }
-        }
-    }
-
-    /// The finite edge of `h` as a curve from its origin (0) to its target (1).
-    fn edge_arc(&self, h: HalfEdgeId) -> EdgeArc {
-        let (left, right) = (self.site_geometry(self.store.left(h)), self.site_geometry(self.store.right(h)));
-        let (from, to) = (self.store.position[h.origin().index()], self.store.position[self.store.target(h).index()]);
-        match Parabola::of_sites(&left, &right) {
-            Some(p) => EdgeArc::Parabola(p, p.parameter(from), p.parameter(to)),
-            None => EdgeArc::Line(from, to),
+            _ => self.segment.distance(q) - 0.5 * (self.left.distance(q) + self.right.distance(q)),
+        };
+        if e.is_nan() {
+            f64::NEG_INFINITY
+        } else {
+            e
         }
     }
 }
