@@ -216,32 +216,36 @@ impl Diagram {
                 d
             }
         };
-        let mut best = self.store.descend(start, n, distance, |(_, dq), (_, d_best)| dq < d_best);
+        let closer = |(_, dq): (SiteId, f64), (_, d_best): (SiteId, f64)| dq < d_best;
+        let mut best = self.store.descend(start, n, distance, closer);
+        // Usually no neighbour ties: then nothing is allocated.
+        while let Some(t) = self.lower_across_ties(best, distance(best), distance) {
+            best = self.store.descend(t, n, distance, closer);
+        }
+        best
+    }
+
+    /// A site nearer than `d_best` next to `best` or to a site reachable
+    /// from it through neighbours exactly `d_best` away, if there is one.
+    fn lower_across_ties(&self, best: SiteId, d_best: f64, distance: impl Fn(SiteId) -> f64) -> Option<SiteId> {
+        let mut tied: Vec<SiteId> = Vec::new();
+        let (mut at, mut next) = (best, 0);
         loop {
-            let d_best = distance(best);
-            let mut tied = vec![best];
-            let mut seen = std::collections::HashSet::from([best]);
-            let mut lower = None;
-            'search: while let Some(s) = tied.pop() {
-                for h in self.store.cell_boundary(s) {
-                    let t = self.store.right(h);
-                    if t == self.store.infinite_site {
-                        continue;
-                    }
-                    let dt = distance(t);
-                    if dt < d_best {
-                        lower = Some(t);
-                        break 'search;
-                    }
-                    if dt == d_best && seen.insert(t) {
-                        tied.push(t);
-                    }
+            for h in self.store.cell_boundary(at) {
+                let t = self.store.right(h);
+                if t == self.store.infinite_site {
+                    continue;
+                }
+                let dt = distance(t);
+                if dt < d_best {
+                    return Some(t);
+                }
+                if dt == d_best && t != best && !tied.contains(&t) {
+                    tied.push(t);
                 }
             }
-            match lower {
-                Some(t) => best = self.store.descend(t, n, distance, |(_, dq), (_, d_best)| dq < d_best),
-                None => return best,
-            }
+            at = *tied.get(next)?;
+            next += 1;
         }
     }
 
