@@ -60,14 +60,8 @@ impl Parabola {
     /// every straight bisector (two points, two segments, a segment and its
     /// own endpoint) and where [`Parabola::new`] gives none.
     pub(crate) fn of_sites(first: &Site, second: &Site) -> Option<Parabola> {
-        match (*first, *second) {
-            (Site::Point(f), s @ Site::Segment { a, b }) | (s @ Site::Segment { a, b }, Site::Point(f))
-                if !s.has_endpoint(f) =>
-            {
-                Parabola::new(f, a, b)
-            }
-            _ => None,
-        }
+        let (focus, a, b) = focus_and_directrix(first, second)?;
+        Parabola::new(focus, a, b)
     }
 
     /// The parameter of the point of the parabola nearest to `q` along the
@@ -115,6 +109,21 @@ impl Parabola {
         let pieces = if wanted.is_finite() { (wanted as usize).max(1) } else { max_points - 1 };
         let pieces = pieces.min(max_points - 1);
         (0..=pieces).map(|k| self.point(s0 + (s1 - s0) * (k as f64 / pieces as f64))).collect()
+    }
+}
+
+/// For a point and a segment that does not end at it (in either order):
+/// the point and the segment's endpoints, whose bisector is a parabola
+/// unless the point lies on the segment's line. `None` for every other
+/// pair of sites.
+pub(crate) fn focus_and_directrix(first: &Site, second: &Site) -> Option<(Point, Point, Point)> {
+    match (*first, *second) {
+        (Site::Point(f), s @ Site::Segment { a, b }) | (s @ Site::Segment { a, b }, Site::Point(f))
+            if !s.has_endpoint(f) =>
+        {
+            Some((f, a, b))
+        }
+        _ => None,
     }
 }
 

@@ -25,7 +25,7 @@
 //! points are the vertex positions themselves, so that drawings join up.
 
 use crate::diagram::{Diagram, EdgeId};
-use crate::geometry::parabola::Parabola;
+use crate::geometry::parabola::{focus_and_directrix, Parabola};
 use crate::geometry::predicates::{orientation, Orientation};
 use crate::geometry::{Point, Site};
 use crate::query::EdgeEnd;
@@ -57,15 +57,9 @@ impl EdgeShape {
     /// `to_internal` is the diagram's power-of-two scale, under which the
     /// exact orientation test cannot overflow.
     fn between(first: Site, second: Site, to_internal: f64) -> EdgeShape {
-        let (focus, segment) = match (first, second) {
-            (Site::Point(p), s @ Site::Segment { .. }) | (s @ Site::Segment { .. }, Site::Point(p)) => (p, s),
-            _ => return EdgeShape::Line,
-        };
-        let Site::Segment { a, b } = segment else { return EdgeShape::Line };
+        let Some((focus, a, b)) = focus_and_directrix(&first, &second) else { return EdgeShape::Line };
         let f = to_internal;
-        if segment.has_endpoint(focus)
-            || orientation(a.scaled(f), b.scaled(f), focus.scaled(f)) == Orientation::Collinear
-        {
+        if orientation(a.scaled(f), b.scaled(f), focus.scaled(f)) == Orientation::Collinear {
             return EdgeShape::Line;
         }
         EdgeShape::Parabola { focus, directrix: [a, b] }
