@@ -219,6 +219,22 @@ fn build_points(input: &[Point]) -> Diagram {
     diagram
 }
 
+/// Runs `beside` on a second thread while `here` runs on this one, and
+/// returns both results. When no thread can be had (resource limits) both
+/// run here, one after the other. A panic in `beside` is passed on.
+pub(crate) fn run_beside<A: Send, B>(beside: impl FnOnce() -> A + Send, here: impl FnOnce() -> B) -> (A, B) {
+    // Whichever side gets to it runs the task: the thread, or this one if
+    // the thread could not start.
+    let task = std::sync::Mutex::new(Some(beside));
+    let take_and_run = || task.lock().ok().and_then(|mut t| t.take()).map(|f| f());
+    std::thread::scope(|scope| {
+        let handle = std::thread::Builder::new().spawn_scoped(scope, take_and_run).ok();
+        let b = here();
+        let a = handle.and_then(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).or_else(take_and_run);
+        (a.expect("the task ran on one of the two threads"), b)
+    })
+}
+
 /// The power-of-two scale for `input` and the input in the construction's
 /// coordinates (scaled, with `-0` made `+0`).
 fn to_internal(input: &[Point]) -> (Scale, Vec<Point>) {

@@ -76,16 +76,9 @@ fn insertion_order_threaded(points: &[Point], parallel_from: usize) -> Vec<u32> 
         return keyed_sorted(0, points).into_iter().map(|(_, i)| i).collect();
     }
     let half = n / 2;
-    std::thread::scope(|scope| {
-        // No thread to be had (resource limits): one thread does it all.
-        let Ok(second) = std::thread::Builder::new().spawn_scoped(scope, || keyed_sorted(half, &points[half..])) else {
-            return keyed_sorted(0, points).into_iter().map(|(_, i)| i).collect();
-        };
-        let first = keyed_sorted(0, &points[..half]);
-        // A panic in the helper thread is a bug; pass it on.
-        let second = second.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
-        merge_indices(&first, &second)
-    })
+    let (second, first) =
+        super::run_beside(|| keyed_sorted(half, &points[half..]), || keyed_sorted(0, &points[..half]));
+    merge_indices(&first, &second)
 }
 
 /// Below this many points one thread orders faster than two.

@@ -5,7 +5,7 @@
 
 use super::finish::{self, SegmentSite};
 use super::segment_input::{check_segments, Conflict};
-use super::{construct_from, insert_points, to_internal};
+use super::{construct_from, insert_points, run_beside, to_internal};
 use crate::diagram::{Diagram, SiteId};
 use crate::error::{Error, ErrorKind};
 use crate::geometry::Point;
@@ -22,19 +22,15 @@ pub(super) fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<D
     // The points go in whatever the input check finds (a repeated or
     // zero-length segment only repeats points), so on large inputs the
     // check runs on a second thread meanwhile; an error discards the points.
-    let (checked, stage) = std::thread::scope(|scope| {
-        let checker = (segments.len() >= PARALLEL_CHECK_FROM)
-            .then(|| std::thread::Builder::new().spawn_scoped(scope, || check_segments(points, segments)).ok())
-            .flatten();
-        let stage = insert_points(&scaled, segments.len());
-        let checked = match checker {
-            // A panic in the checker is a bug; pass it on.
-            Some(handle) => handle.join().unwrap_or_else(|e| std::panic::resume_unwind(e)),
-            None => check_segments(points, segments),
-        };
-        (checked, stage)
-    });
+    let (checked, stage) = if segments.len() >= PARALLEL_CHECK_FROM {
+        let (checked, stage) =
+            run_beside(|| check_segments(points, segments), || insert_points(&scaled, segments.len()));
+        (checked, Some(stage))
+    } else {
+        (check_segments(points, segments), None)
+    };
     let checked = checked.map_err(|c| conflict_error(&c))?;
+    let stage = stage.unwrap_or_else(|| insert_points(&scaled, segments.len()));
 
     let endpoint_index = |j: usize| [points.len() + 2 * j, points.len() + 2 * j + 1];
     let kept: Vec<usize> = checked.segments.iter().map(|&(j, _)| j).collect();
