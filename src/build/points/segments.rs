@@ -192,7 +192,8 @@ impl PointDiagram {
     /// new segment leaves `end` towards it is the exact orientation of
     /// `other` against `end → far` (collinear: along the tangent, as where a
     /// chain goes straight on). Two such segments put the vertex at `end`
-    /// itself (radius 0). `Numeric` where there is none.
+    /// itself (radius 0): then the sector it stands for decides
+    /// (`sector_side`). `Numeric` where there is none.
     fn side_at_endpoint(&self, end: SiteId, other: SiteId, sites: [SiteId; 3]) -> EndpointSide {
         let k = sites.iter().position(|&s| s == end).unwrap_or(0);
         let (next, prev) = (sites[(k + 1) % 3], sites[(k + 2) % 3]);
@@ -200,10 +201,33 @@ impl PointDiagram {
         let (pe, po) = (self.sites[end.index()], self.sites[other.index()]);
         let turn = |far: SiteId| orientation(pe, self.sites[far.index()], po);
         match (far_end(next), far_end(prev)) {
-            (Some(_), Some(_)) => EndpointSide::OnCircle,
+            (Some(from), Some(to)) => self.sector_side(pe, po, from, to),
             (Some(far), None) => EndpointSide::from_turn(turn(far), Orientation::CounterClockwise),
             (None, Some(far)) => EndpointSide::from_turn(turn(far), Orientation::Clockwise),
             (None, None) => EndpointSide::Numeric,
+        }
+    }
+
+    /// For a vertex of radius 0 at the endpoint `pe`, between two segments
+    /// ending there (`pe → from`, then `pe → to` counter-clockwise around
+    /// `pe`): the vertex stands for the sector swept counter-clockwise from
+    /// the first to the second, where their bisector leaves `pe`. The new
+    /// segment `pe → po` splits that vertex exactly when it leaves `pe`
+    /// strictly inside the sector (exact orientations; a sector of 180° or
+    /// more only arises from lying numbers, and is decided the same way).
+    fn sector_side(&self, pe: Point, po: Point, from: SiteId, to: SiteId) -> EndpointSide {
+        let (pf, pt) = (self.sites[from.index()], self.sites[to.index()]);
+        let after_from = orientation(pe, pf, po) == Orientation::CounterClockwise;
+        let before_to = orientation(pe, po, pt) == Orientation::CounterClockwise;
+        let inside = match orientation(pe, pf, pt) {
+            Orientation::CounterClockwise => after_from && before_to,
+            Orientation::Clockwise => after_from || before_to,
+            Orientation::Collinear => after_from,
+        };
+        if inside {
+            EndpointSide::Enters
+        } else {
+            EndpointSide::Misses
         }
     }
 
