@@ -179,3 +179,44 @@ segvoronoi_cgal_fixture_test(near_vertical_chain3)
 # rounded far field and differs from CGAL's exact one. Needs the solvers
 # re-run in higher precision when they are this ill-conditioned.
 set_tests_properties(cgal_near-vertical_64 cgal_fixture_near_vertical_chain3 PROPERTIES DISABLED TRUE)
+
+# Inputs on which segvoronoi was found wrong (collected in
+# /work/shared/regressions, README there): a valid diagram that differed
+# from CGAL's, or an invalid one. Generic comparison (EDGES and FACES).
+# 5 small-integer segments, Boost.Polygon's random-test recipe; three meet at (6,2)
+segvoronoi_cgal_fixture_test(boost_random1_5seg)
+# three spokes at one endpoint, mixed directions, and a point
+segvoronoi_cgal_fixture_test(star3_plus_point)
+# four spokes at one endpoint, two pointing in (all-outward was right)
+segvoronoi_cgal_fixture_test(star4_mixed_orientation)
+# a polyline and one more segment meeting at a degree-3 point
+segvoronoi_cgal_fixture_test(junction3_generic_4seg)
+# a 40-segment cut of Boost.Polygon's benchmark data: all restarts used, invalid result
+segvoronoi_cgal_fixture_test(boost_bench_invalid_40seg)
+# two spokes from one endpoint whose lengths tie to 1e-17
+segvoronoi_cgal_fixture_test(fan_equal_length_2seg)
+# an endpoint 6e-15 from another segment
+segvoronoi_cgal_fixture_test(neartouch_2seg)
+# two disjoint pieces of one line
+segvoronoi_cgal_fixture_test(two_collinear_pieces)
+# a point about 1e-9 (relative) from a segment
+segvoronoi_cgal_fixture_test(point_near_segment_int)
+# segments nearly tangent to one circle
+segvoronoi_cgal_fixture_test(tangent4_near_cocircular)
+# 8 sides of a 32-gon circle from a desktop icon outline
+segvoronoi_cgal_fixture_test(circle32_icon)
+# two consecutive segments of a real coastline ring (GSHHG): a face of ours has a site inside its circle by 8.6e-28
+segvoronoi_cgal_fixture_test(coastline_2seg)
+
+# KNOWN DIFFERENCE until the exact segment predicates land: near-degenerate
+# inputs where the double-precision segment predicates decide a sign wrongly
+# (valid diagrams, but not CGAL's exact one). Re-enable by deleting a name.
+set_tests_properties(
+  cgal_fixture_fan_equal_length_2seg
+  cgal_fixture_neartouch_2seg
+  cgal_fixture_two_collinear_pieces
+  cgal_fixture_point_near_segment_int
+  cgal_fixture_tangent4_near_cocircular
+  cgal_fixture_circle32_icon
+  cgal_fixture_coastline_2seg
+  PROPERTIES DISABLED TRUE)
