@@ -154,3 +154,32 @@ pub fn has_positive_length(d: &Diagram, e: &segvoronoi::Edge) -> bool {
         _ => true,
     }
 }
+
+/// `check_empty_circles` with a tolerance per vertex of `tol` times the
+/// larger of the input extent and the vertex's clearance: far-away vertices
+/// (nearly parallel or collinear segments put them 1e15 times the extent
+/// out) carry the rounding of their own magnitude, and vertices of three
+/// segments come from double-precision solvers whose error grows with the
+/// conditioning. Still fails on a site inside a circle by more than that,
+/// i.e. on a wrong topology, and on a vertex far from its sites.
+pub fn check_empty_circles_relative(d: &Diagram, tol: f64) {
+    let extent = d.extent().max(f64::MIN_POSITIVE);
+    for v in d.vertices() {
+        let slack = tol * extent.max(v.clearance);
+        let r: Vec<f64> = v.sites.iter().map(|&s| d.site(s).distance(v.position)).collect();
+        for &ri in &r {
+            assert!((ri - v.clearance).abs() <= slack, "vertex {} not equidistant: {r:?} vs {}", v.id, v.clearance);
+        }
+        for s in d.site_ids() {
+            let dist = d.site(s).distance(v.position);
+            assert!(
+                dist >= v.clearance - slack,
+                "site {s} inside the circle of vertex {} (sites {:?}) by {:e} (clearance {:e})",
+                v.id,
+                v.sites,
+                v.clearance - dist,
+                v.clearance
+            );
+        }
+    }
+}
