@@ -321,10 +321,17 @@ impl Diagram {
     }
 
     /// Every segment's cell shares exactly one edge with each endpoint's cell
-    /// (the separator, on the perpendicular there).
+    /// (the separator, on the perpendicular there), and the two endpoints'
+    /// cells share none: they lie beyond the two perpendiculars, on either
+    /// side of the segment's strip, and can never touch (no circle through
+    /// both endpoints misses the open segment between them).
     fn validate_separators(&self) -> Result<(), ValidationError> {
         for k in 0..self.segment_ends.len() {
             let s = SiteId::from_index(self.point_sites + k);
+            let [a, b] = self.segment_ends[k];
+            if self.store.cell_boundary(a).any(|h| self.store.right(h) == b) {
+                return Err(ValidationError(format!("the endpoints {a} and {b} of segment site {s} are neighbours")));
+            }
             for end in self.segment_ends[k] {
                 let shared = self.store.cell_boundary(s).filter(|&h| self.store.right(h) == end).count();
                 if shared != 1 {

@@ -170,8 +170,9 @@ impl PointDiagram {
         };
         let depth = match (sites.contains(&a), sites.contains(&b)) {
             // on the bisector of a and b: every point of it is nearer the
-            // segment between them
-            (true, true) => entering(pa, pb),
+            // segment between them, exactly (the rounded position of a far
+            // vertex of nearly collinear sites may say otherwise)
+            (true, true) => EndpointSide::Enters.apply(entering(pa, pb)),
             (true, false) => self.side_at_endpoint(a, b, sites).apply(entering(pa, pb)),
             (false, true) => self.side_at_endpoint(b, a, sites).apply(entering(pb, pa)),
             (false, false) => Site::Segment { a: pa, b: pb }.distance(c) - self.store.clearance[v.index()],

@@ -25,7 +25,7 @@ impl PointDiagram {
         while i < self.tree.len() {
             let u = self.tree[i];
             i += 1;
-            if !self.store.is_at_infinity(u) && !in_strip(self.store.position[u.index()], pa, pb) {
+            if !self.vertex_in_strip(u, a, b, pa, pb) {
                 continue;
             }
             for slot in 0..3 {
@@ -59,6 +59,18 @@ impl PointDiagram {
                 }
             }
         }
+    }
+
+    /// Whether the tree may grow beyond `u` (criterion 2.2): `u` is at
+    /// infinity, or lies in the strip between the perpendiculars at `a` and
+    /// `b`. A vertex of both `R(a)` and `R(b)` is on their bisector, in the
+    /// strip exactly, whatever its rounded position says.
+    fn vertex_in_strip(&self, u: VertexId, a: SiteId, b: SiteId, pa: Point, pb: Point) -> bool {
+        if self.store.is_at_infinity(u) {
+            return true;
+        }
+        let sites = self.store.sites_of(u);
+        (sites.contains(&a) && sites.contains(&b)) || in_strip(self.store.position[u.index()], pa, pb)
     }
 
     /// With `w = back.origin()` just marked as joining the tree by `back`:

@@ -64,9 +64,11 @@ impl PointDiagram {
     /// (only possible when the numbers lie badly); the tree is then the
     /// walk's first vertex alone.
     pub(super) fn find_segment_path(&mut self, a: SiteId, b: SiteId) -> bool {
-        // First only through vertices the segment conflicts with (where the
-        // true path runs); if the numbers leave no such path, through any.
-        let (found, path) = match self.walk_to(a, b, true) {
+        // Where R(a) and R(b) meet, their whole common boundary is the
+        // path. Otherwise first only through vertices the segment conflicts
+        // with (where the true path runs); if the numbers leave no such path,
+        // through any.
+        let (found, path) = match self.shared_boundary(a, b).map(|path| (true, path)).unwrap_or_else(|| self.walk_to(a, b, true)) {
             (true, path) => (true, path),
             _ => match self.walk_to(a, b, false) {
                 (true, path) => (true, path),
@@ -88,6 +90,35 @@ impl PointDiagram {
             }
         }
         found
+    }
+
+    /// The common boundary of `R(a)` and `R(b)` as a path, if they meet.
+    /// Every point of it is nearer the open segment between them than `a`
+    /// and `b` (no circle through both endpoints misses the segment), so all
+    /// of it is deleted, exactly, whatever the numbers say: the two
+    /// endpoints of a segment are never neighbours. With sound numbers the
+    /// common boundary is one piece (the disks through `a` and `b` centred
+    /// between two empty ones are empty too); if lying numbers made several,
+    /// the longest is taken.
+    fn shared_boundary(&self, a: SiteId, b: SiteId) -> Option<Path> {
+        let boundary: Vec<HalfEdgeId> = self.store.cell_boundary(a).collect();
+        let n = boundary.len();
+        let shared = |i: usize| self.store.right(boundary[i % n]) == b;
+        // The longest run of consecutive shared half-edges, cyclically.
+        let mut best: Option<(usize, usize)> = None;
+        for start in (0..n).filter(|&i| shared(i) && !shared(i + n - 1)) {
+            let len = (start..start + n).take_while(|&i| shared(i)).count();
+            if best.map_or(true, |(_, l)| len > l) {
+                best = Some((start, len));
+            }
+        }
+        let (start, len) = best?;
+        let entered_by: Vec<HalfEdgeId> = (start..start + len).map(|i| boundary[i % n]).collect();
+        let mut vertices: Vec<VertexId> = entered_by.iter().map(|h| h.origin()).collect();
+        vertices.push(self.store.target(*entered_by.last()?));
+        let distinct = vertices.iter().collect::<HashSet<_>>().len() == vertices.len();
+        let usable = distinct && vertices.iter().all(|&v| self.walkable(v, a, b));
+        usable.then_some(Path { vertices, entered_by })
     }
 
     /// The last resort when the numbers misled both walks: the path with
