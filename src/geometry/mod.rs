@@ -5,7 +5,9 @@
 //! makes goes through [`predicates`], which returns enums, so no other module
 //! compares a raw determinant with zero.
 
+mod bigfloat;
 mod expansion;
+pub(crate) mod oracle;
 pub(crate) mod parabola;
 pub(crate) mod fault;
 pub mod point;

@@ -42,7 +42,8 @@ mod tests;
 
 use super::{infinite_rotation, PointDiagram, INFINITE};
 use crate::diagram::{HalfEdgeId, SiteId, VertexId, NONE};
-use crate::geometry::predicates::{orientation, Orientation};
+use crate::geometry::oracle::{self, Reach};
+use crate::geometry::predicates::{orientation, CirclePosition, Orientation};
 use crate::geometry::segment_solvers;
 use crate::geometry::point::norm;
 use crate::geometry::site::Site;
@@ -168,14 +169,31 @@ impl PointDiagram {
             let (dx, dy) = (to.x - from.x, to.y - from.y);
             -((c.x - from.x) * dx + (c.y - from.y) * dy) / norm(dx, dy)
         };
+        let r = self.store.clearance[v.index()];
+        // The rounded depth, its sign certified from the sites (`oracle`).
+        let certified = |question: Reach, depth: f64| {
+            if fault::active() {
+                return depth;
+            }
+            match oracle::reach(|| sites.map(|s| self.site_geometry(s)), c, r, question, depth) {
+                Some(CirclePosition::Inside) => -depth.abs().max(f64::MIN_POSITIVE),
+                Some(CirclePosition::Outside) => depth.abs().max(f64::MIN_POSITIVE),
+                Some(CirclePosition::On) => 0.0,
+                None => depth,
+            }
+        };
+        let from_end = |end: SiteId, other: SiteId, from: Point, to: Point| match self.side_at_endpoint(end, other, sites) {
+            EndpointSide::Numeric => certified(Reach::Entering { from, to }, entering(from, to)),
+            side => side.apply(entering(from, to)),
+        };
         let depth = match (sites.contains(&a), sites.contains(&b)) {
             // on the bisector of a and b: every point of it is nearer the
             // segment between them, exactly (the rounded position of a far
             // vertex of nearly collinear sites may say otherwise)
             (true, true) => EndpointSide::Enters.apply(entering(pa, pb)),
-            (true, false) => self.side_at_endpoint(a, b, sites).apply(entering(pa, pb)),
-            (false, true) => self.side_at_endpoint(b, a, sites).apply(entering(pb, pa)),
-            (false, false) => Site::Segment { a: pa, b: pb }.distance(c) - self.store.clearance[v.index()],
+            (true, false) => from_end(a, b, pa, pb),
+            (false, true) => from_end(b, a, pb, pa),
+            (false, false) => certified(Reach::Distance { a: pa, b: pb }, Site::Segment { a: pa, b: pb }.distance(c) - r),
         };
         let depth = fault::perturb(depth);
         if depth.is_nan() {

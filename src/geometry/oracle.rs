@@ -1,0 +1,440 @@
+//! The segment predicates' certified stage: how far a new segment reaches
+//! into the circle of a Voronoi vertex, decided from the vertex's three
+//! sites, filtered then refined.
+//!
+//! A vertex of point and segment sites is the centre `c` and radius `r` of
+//! the circle touching its three sites. The construction computes `(c, r)`
+//! in `f64` (`segment_solvers`, which picks the right one of up to four
+//! roots) and asks a signed question about it: does the closed segment `ab`
+//! come nearer to `c` than `r` (`Reach::Distance`), or does `ab`, leaving
+//! one of the vertex's point sites, head into the circle
+//! (`Reach::Entering`). Near degeneracy (a site 1e-20 off the circle) the
+//! rounded `(c, r)` gives the wrong sign. Here:
+//!
+//! 1. **Filter.** The `f64` answer stands when it exceeds a bound on its
+//!    error: `1e-3` of the configuration's size outright; below that, the
+//!    error of `(c, r)` is estimated as `‖J⁻¹‖ (|F| + 8 ε s)`, from the
+//!    residual `F` of the tangency equations at `(c, r)` and their Jacobian
+//!    `J` (one Newton step's worth, in `f64`), plus the rounding of the
+//!    question itself.
+//! 2. **Refine.** Otherwise the tangency equations are solved again by
+//!    Newton's method from the `f64` root in binary floating point of 160,
+//!    then 400, then 1200 bits (`bigfloat`), the sites' coordinates taken
+//!    exactly, and the question evaluated there. The answer stands when it
+//!    exceeds the last Newton step plus the rounding at that precision.
+//! 3. **Zero.** A value that stays below that bound at 1200 bits (about
+//!    `2^-1150` of the configuration's size) is taken as exactly zero: the
+//!    segment touches the circle (cocircular sites), and the caller's
+//!    topology rules decide. Inputs are doubles, so a nonzero value of these
+//!    algebraic expressions of bounded degree is bounded away from zero; the
+//!    bound used is an engineering choice, not a proven separation bound.
+//!
+//! The equations per site (a segment's supporting line is used, as by the
+//! solvers): a point `p`, `|c − p| = r`; a segment not incident to a point
+//! of the triple, `σ n·(c − a) = r` on the side `σ` where the `f64` centre
+//! lies; a segment with an endpoint `p` among the triple's points,
+//! `(c − p)·(b − a) = 0` (the centre is on its separator at `p`).
+//!
+//! Fault injection bypasses this module (the caller asks it only when the
+//! numbers are honest): its purpose is to show that the topology survives
+//! lying numbers, and a refinement would make them honest again.
+
+use super::bigfloat::BigFloat;
+use super::point::Point;
+use super::predicates::CirclePosition;
+use super::site::Site;
+
+/// The question asked about a vertex and a new segment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Reach {
+    /// Does the closed segment `a b` come nearer to the centre than the
+    /// radius: `dist(c, ab) − r`, negative inside.
+    Distance { a: Point, b: Point },
+    /// Does the segment leave `from` (a point on the circle) towards the
+    /// inside: `−(c − from)·(to − from)`, negative inside.
+    Entering { from: Point, to: Point },
+}
+
+/// Precisions of the refinement, in bits.
+const PRECISIONS: [u64; 3] = [160, 400, 1200];
+
+/// Newton steps allowed per precision.
+const MAX_STEPS: usize = 60;
+
+/// Where the question's answer lies: `Inside` (it reaches into the open
+/// disk), `On` (exactly on the circle) or `Outside`; `None` when the
+/// vertex's equations could not be refined (a degenerate triple, or no
+/// convergence) and the `f64` value should stand. `depth` is the `f64`
+/// value of the question at the rounded `(centre, radius)`.
+/// The sites are asked for only when the filter's first test is not enough.
+pub(crate) fn reach(
+    sites: impl FnOnce() -> [Site; 3],
+    centre: Point,
+    radius: f64,
+    question: Reach,
+    depth: f64,
+) -> Option<CirclePosition> {
+    let size = question.size(centre, radius);
+    if !(size.is_finite() && depth.is_finite()) {
+        return None;
+    }
+    if depth.abs() > 1e-3 * size {
+        return Some(sign_position(depth));
+    }
+    let system = System::of(&sites(), centre)?;
+    if let Some(error) = system.f64_error(centre, radius, size) {
+        if depth.abs() > 4.0 * error + 16.0 * f64::EPSILON * size {
+            return Some(sign_position(depth));
+        }
+    }
+    for bits in PRECISIONS {
+        let lift = |x: f64| BigFloat::from_f64(x, bits);
+        let start = [lift(centre.x), lift(centre.y), lift(radius)];
+        let (solution, last_step) = system.newton(start, &lift, size, bits)?;
+        let value = question.value(&solution, &lift);
+        // The question is 1-Lipschitz in c and r; the last step bounds the
+        // solution's error (Newton converges quadratically), and rounding
+        // adds a few units of 2^-bits of the size.
+        let slack = 2f64.powi(-(bits as i32) + 24) * size;
+        let bound = 4.0 * last_step + slack;
+        let v = value.to_f64();
+        if v.abs() > bound {
+            return Some(sign_position(v));
+        }
+    }
+    Some(CirclePosition::On)
+}
+
+fn sign_position(depth: f64) -> CirclePosition {
+    if depth < 0.0 {
+        CirclePosition::Inside
+    } else if depth > 0.0 {
+        CirclePosition::Outside
+    } else {
+        CirclePosition::On
+    }
+}
+
+impl Reach {
+    /// The size of the configuration: the scale of every error bound.
+    fn size(&self, c: Point, r: f64) -> f64 {
+        let (p, q) = match *self {
+            Reach::Distance { a, b } => (a, b),
+            Reach::Entering { from, to } => (from, to),
+        };
+        r.abs() + c.distance(p) + p.distance(q)
+    }
+
+    /// The question's value at `(x, y, r)`.
+    fn value<T: Real>(&self, [x, y, r]: &[T; 3], lift: &impl Fn(f64) -> T) -> T {
+        match *self {
+            Reach::Distance { a, b } => {
+                let (ax, ay, bx, by) = (lift(a.x), lift(a.y), lift(b.x), lift(b.y));
+                let (ux, uy) = (bx.sub(&ax), by.sub(&ay));
+                let (vx, vy) = (x.sub(&ax), y.sub(&ay));
+                let along = ux.mul(&vx).add(&uy.mul(&vy));
+                let length2 = ux.mul(&ux).add(&uy.mul(&uy));
+                let distance = if along.signum() <= 0 {
+                    vx.mul(&vx).add(&vy.mul(&vy)).sqrt()
+                } else if along.sub(&length2).signum() >= 0 {
+                    let (wx, wy) = (x.sub(&bx), y.sub(&by));
+                    wx.mul(&wx).add(&wy.mul(&wy)).sqrt()
+                } else {
+                    ux.mul(&vy).sub(&uy.mul(&vx)).abs().div(&length2.sqrt())
+                };
+                distance.sub(r)
+            }
+            Reach::Entering { from, to } => {
+                let (fx, fy) = (lift(from.x), lift(from.y));
+                let (ux, uy) = (lift(to.x).sub(&fx), lift(to.y).sub(&fy));
+                let along = ux.mul(&x.sub(&fx)).add(&uy.mul(&y.sub(&fy)));
+                along.div(&ux.mul(&ux).add(&uy.mul(&uy)).sqrt()).neg()
+            }
+        }
+    }
+}
+
+/// One tangency equation of a vertex, `F(x, y, r) = 0`.
+#[derive(Clone, Copy, Debug)]
+enum Equation {
+    /// `|c − p| − r`.
+    Circle(Point),
+    /// `σ n·(c − a) − r`, `n` the left unit normal of `a → b`.
+    Line { a: Point, b: Point, side: f64 },
+    /// `û·(c − p)`, `û` the unit direction of the segment: the centre lies
+    /// on the segment's perpendicular at its endpoint `p`.
+    Perpendicular { p: Point, direction: Point },
+}
+
+/// The three tangency equations of a vertex.
+struct System([Equation; 3]);
+
+impl System {
+    /// The equations of the vertex of `sites` whose rounded centre is
+    /// `centre`; `None` when they do not determine it (a segment's both
+    /// ends among the points, two separators at one point: radius 0, which
+    /// the callers decide exactly) or the centre is on a supporting line.
+    fn of(sites: &[Site; 3], centre: Point) -> Option<System> {
+        let points: Vec<Point> = sites.iter().filter_map(Site::as_point).collect();
+        let mut perpendicular_at: Vec<Point> = Vec::new();
+        let mut equations = [Equation::Circle(Point::new(0.0, 0.0)); 3];
+        for (k, site) in sites.iter().enumerate() {
+            equations[k] = match *site {
+                Site::Point(p) => Equation::Circle(p),
+                Site::Segment { a, b } => {
+                    let ends: Vec<Point> = points.iter().copied().filter(|&p| p == a || p == b).collect();
+                    match ends.as_slice() {
+                        [] => {
+                            let cross = (b.x - a.x) * (centre.y - a.y) - (b.y - a.y) * (centre.x - a.x);
+                            if cross == 0.0 || !cross.is_finite() {
+                                return None;
+                            }
+                            Equation::Line { a, b, side: cross.signum() }
+                        }
+                        [p] => {
+                            if perpendicular_at.contains(p) {
+                                return None;
+                            }
+                            perpendicular_at.push(*p);
+                            let other = if *p == a { b } else { a };
+                            Equation::Perpendicular { p: *p, direction: Point::new(other.x - p.x, other.y - p.y) }
+                        }
+                        _ => return None,
+                    }
+                }
+            };
+        }
+        Some(System(equations))
+    }
+
+    /// The residuals and the Jacobian at `(x, y, r)`; `None` where a
+    /// derivative does not exist (the centre on a point site).
+    fn linearise<T: Real>(&self, v: &[T; 3], lift: &impl Fn(f64) -> T) -> Option<([T; 3], [[T; 3]; 3])> {
+        let [x, y, r] = v;
+        let zero = lift(0.0);
+        let mut f: [T; 3] = [zero.clone(), zero.clone(), zero.clone()];
+        let mut j: [[T; 3]; 3] = std::array::from_fn(|_| [zero.clone(), zero.clone(), zero.clone()]);
+        for (k, equation) in self.0.iter().enumerate() {
+            match *equation {
+                Equation::Circle(p) => {
+                    let (dx, dy) = (x.sub(&lift(p.x)), y.sub(&lift(p.y)));
+                    let rho = dx.mul(&dx).add(&dy.mul(&dy)).sqrt();
+                    if rho.signum() == 0 {
+                        return None;
+                    }
+                    f[k] = rho.sub(r);
+                    j[k] = [dx.div(&rho), dy.div(&rho), lift(-1.0)];
+                }
+                Equation::Line { a, b, side } => {
+                    let (ux, uy) = (lift(b.x).sub(&lift(a.x)), lift(b.y).sub(&lift(a.y)));
+                    let length = ux.mul(&ux).add(&uy.mul(&uy)).sqrt();
+                    let s = lift(side);
+                    let (nx, ny) = (uy.neg().mul(&s).div(&length), ux.mul(&s).div(&length));
+                    let (vx, vy) = (x.sub(&lift(a.x)), y.sub(&lift(a.y)));
+                    f[k] = nx.mul(&vx).add(&ny.mul(&vy)).sub(r);
+                    j[k] = [nx, ny, lift(-1.0)];
+                }
+                Equation::Perpendicular { p, direction } => {
+                    let (ux, uy) = (lift(direction.x), lift(direction.y));
+                    let length = ux.mul(&ux).add(&uy.mul(&uy)).sqrt();
+                    let (ux, uy) = (ux.div(&length), uy.div(&length));
+                    let (vx, vy) = (x.sub(&lift(p.x)), y.sub(&lift(p.y)));
+                    f[k] = ux.mul(&vx).add(&uy.mul(&vy));
+                    j[k] = [ux, uy, zero.clone()];
+                }
+            }
+        }
+        Some((f, j))
+    }
+
+    /// A bound on the error of the rounded solution `(centre, radius)`:
+    /// `‖J⁻¹‖∞ (‖F‖∞ + 8 ε size)`, in `f64`. `None` for a singular `J`.
+    fn f64_error(&self, centre: Point, radius: f64, size: f64) -> Option<f64> {
+        let (f, j) = self.linearise(&[centre.x, centre.y, radius], &|x| x)?;
+        let inverse_norm = inverse_norm(&j)?;
+        let residual = f.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let error = inverse_norm * (residual + 8.0 * f64::EPSILON * size);
+        error.is_finite().then_some(error)
+    }
+
+    /// Newton's method from `start` at `bits` of precision: the solution
+    /// and the size of the last step. `None` without convergence.
+    fn newton(&self, start: [BigFloat; 3], lift: &impl Fn(f64) -> BigFloat, size: f64, bits: u64) -> Option<([BigFloat; 3], f64)> {
+        let tolerance = 2f64.powi(-(bits as i32) + 32) * size;
+        let mut v = start;
+        for _ in 0..MAX_STEPS {
+            let (f, j) = self.linearise(&v, lift)?;
+            let step = solve3(&j, &f)?;
+            let step_size = step.iter().fold(0.0f64, |m, s| m.max(s.to_f64().abs()));
+            v = [v[0].sub(&step[0]), v[1].sub(&step[1]), v[2].sub(&step[2])];
+            if !step_size.is_finite() {
+                return None;
+            }
+            if step_size <= tolerance {
+                return Some((v, step_size));
+            }
+        }
+        None
+    }
+}
+
+/// `‖J⁻¹‖∞` of a 3×3 matrix in `f64`; `None` when singular.
+fn inverse_norm(j: &[[f64; 3]; 3]) -> Option<f64> {
+    let det = determinant(j);
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    let mut norm_rows = 0.0f64;
+    for row in 0..3 {
+        let mut sum = 0.0;
+        for col in 0..3 {
+            // the cofactor of (col, row), over det
+            let (r1, r2) = ((col + 1) % 3, (col + 2) % 3);
+            let (c1, c2) = ((row + 1) % 3, (row + 2) % 3);
+            let cofactor = j[r1][c1] * j[r2][c2] - j[r1][c2] * j[r2][c1];
+            sum += (cofactor / det).abs();
+        }
+        norm_rows = norm_rows.max(sum);
+    }
+    Some(norm_rows)
+}
+
+fn determinant<T: Real>(j: &[[T; 3]; 3]) -> T {
+    let minor = |r1: usize, r2: usize, c1: usize, c2: usize| j[r1][c1].mul(&j[r2][c2]).sub(&j[r1][c2].mul(&j[r2][c1]));
+    j[0][0].mul(&minor(1, 2, 1, 2)).sub(&j[0][1].mul(&minor(1, 2, 0, 2))).add(&j[0][2].mul(&minor(1, 2, 0, 1)))
+}
+
+/// The solution of `j s = f` by Cramer's rule; `None` when singular.
+fn solve3<T: Real>(j: &[[T; 3]; 3], f: &[T; 3]) -> Option<[T; 3]> {
+    let det = determinant(j);
+    if det.signum() == 0 {
+        return None;
+    }
+    let column = |c: usize| {
+        let mut m = j.clone();
+        for (row, value) in m.iter_mut().zip(f.iter()) {
+            row[c] = value.clone();
+        }
+        determinant(&m).div(&det)
+    };
+    Some([column(0), column(1), column(2)])
+}
+
+/// The arithmetic the equations are written in: `f64` for the filter,
+/// [`BigFloat`] for the refinement.
+trait Real: Clone {
+    fn add(&self, o: &Self) -> Self;
+    fn sub(&self, o: &Self) -> Self;
+    fn mul(&self, o: &Self) -> Self;
+    fn div(&self, o: &Self) -> Self;
+    fn sqrt(&self) -> Self;
+    fn neg(&self) -> Self;
+    fn abs(&self) -> Self;
+    fn signum(&self) -> i32;
+}
+
+impl Real for f64 {
+    fn add(&self, o: &f64) -> f64 {
+        self + o
+    }
+    fn sub(&self, o: &f64) -> f64 {
+        self - o
+    }
+    fn mul(&self, o: &f64) -> f64 {
+        self * o
+    }
+    fn div(&self, o: &f64) -> f64 {
+        self / o
+    }
+    fn sqrt(&self) -> f64 {
+        f64::sqrt(*self)
+    }
+    fn neg(&self) -> f64 {
+        -self
+    }
+    fn abs(&self) -> f64 {
+        f64::abs(*self)
+    }
+    fn signum(&self) -> i32 {
+        if *self > 0.0 {
+            1
+        } else if *self < 0.0 {
+            -1
+        } else {
+            0
+        }
+    }
+}
+
+impl Real for BigFloat {
+    fn add(&self, o: &BigFloat) -> BigFloat {
+        self + o
+    }
+    fn sub(&self, o: &BigFloat) -> BigFloat {
+        self - o
+    }
+    fn mul(&self, o: &BigFloat) -> BigFloat {
+        self * o
+    }
+    fn div(&self, o: &BigFloat) -> BigFloat {
+        BigFloat::div(self, o)
+    }
+    fn sqrt(&self) -> BigFloat {
+        BigFloat::sqrt(self)
+    }
+    fn neg(&self) -> BigFloat {
+        -self
+    }
+    fn abs(&self) -> BigFloat {
+        BigFloat::abs(self)
+    }
+    fn signum(&self) -> i32 {
+        BigFloat::signum(self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::segment_solvers;
+
+    fn point(x: f64, y: f64) -> Site {
+        Site::Point(Point::new(x, y))
+    }
+
+    #[test]
+    fn a_segment_grazing_a_circle_by_one_ulp_is_decided() {
+        // the circle through (-1,0), (1,0), (0,1): centre 0, radius 1; a
+        // segment under it whose line passes 2^-53 below or 2^-54 above its
+        // lowest point, or touches it there
+        let sites = [point(-1.0, 0.0), point(1.0, 0.0), point(0.0, 1.0)];
+        let (c, r) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]).unwrap();
+        let ask = |b_y: f64| reach(|| sites, c, r, Reach::Distance { a: Point::new(-3.0, -1.0), b: Point::new(3.0, b_y) }, 0.0);
+        assert_eq!(ask(-1.0 - 2f64.powi(-52)), Some(CirclePosition::Outside));
+        assert_eq!(ask(-1.0 + 2f64.powi(-53)), Some(CirclePosition::Inside));
+        assert_eq!(ask(-1.0), Some(CirclePosition::On));
+    }
+
+    #[test]
+    fn a_segment_vertex_is_refined() {
+        // a point and two segments: the circle through (0, 2) tangent to
+        // y = 0 and x = 0 (-ish: the second line tilted by one ulp), and a
+        // new segment through its computed bottom-right
+        let sites = [point(0.5, 2.0), Site::Segment { a: Point::new(-5.0, 0.0), b: Point::new(5.0, 0.0) }, Site::Segment { a: Point::new(-1.0, 5.0), b: Point::new(-1.0 + 2f64.powi(-50), -5.0) }];
+        let (c, r) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]).unwrap();
+        // the exact answers at f64 distance from the rounded circle
+        for (offset, expected) in [(1e-9, CirclePosition::Outside), (-1e-9, CirclePosition::Inside)] {
+            let y = c.y - r - offset;
+            let question = Reach::Distance { a: Point::new(c.x - 1.0, y), b: Point::new(c.x + 1.0, y) };
+            assert_eq!(reach(|| sites, c, r, question, 0.0), Some(expected));
+        }
+    }
+
+    #[test]
+    fn a_clear_answer_is_taken_from_the_filter() {
+        let sites = [point(-1.0, 0.0), point(1.0, 0.0), point(0.0, 1.0)];
+        let (a, b) = (Point::new(-3.0, 0.5), Point::new(3.0, 0.5));
+        let depth = -0.5;
+        assert_eq!(reach(|| sites, Point::new(0.0, 0.0), 1.0, Reach::Distance { a, b }, depth), Some(CirclePosition::Inside));
+    }
+}
