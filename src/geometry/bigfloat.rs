@@ -36,6 +36,11 @@ impl BigFloat {
         BigFloat { mantissa: if x < 0.0 { -m } else { m }, exponent: e, bits }
     }
 
+    /// The same value, kept to `bits` from now on (truncated if longer).
+    pub fn with_precision(self, bits: u64) -> BigFloat {
+        BigFloat { bits, ..self }.rounded()
+    }
+
     /// The sign: -1, 0 or 1.
     pub fn signum(&self) -> i32 {
         match self.mantissa.sign() {

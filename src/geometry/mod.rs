@@ -6,6 +6,7 @@
 //! compares a raw determinant with zero.
 
 mod bigfloat;
+mod double_double;
 mod expansion;
 pub(crate) mod oracle;
 pub(crate) mod parabola;

@@ -17,17 +17,27 @@
 //!    residual `F` of the tangency equations at `(c, r)` and their Jacobian
 //!    `J` (one Newton step's worth, in `f64`), plus the rounding of the
 //!    question itself.
-//! 2. **Refine.** Otherwise the tangency equations are solved again by
-//!    Newton's method from the `f64` root in binary floating point of 160,
-//!    then 400, then 1200 bits (`bigfloat`), the sites' coordinates taken
-//!    exactly, and the question evaluated there. The answer stands when it
-//!    exceeds the last Newton step plus the rounding at that precision.
-//! 3. **Zero.** A value that stays below that bound at 1200 bits (about
-//!    `2^-1150` of the configuration's size) is taken as exactly zero: the
-//!    segment touches the circle (cocircular sites), and the caller's
-//!    topology rules decide. Inputs are doubles, so a nonzero value of these
-//!    algebraic expressions of bounded degree is bounded away from zero; the
-//!    bound used is an engineering choice, not a proven separation bound.
+//! 2. **Exact check.** When the rounded `(c, r)` solves the equations
+//!    exactly (grids and other inputs with few bits, where cocircular
+//!    answers are common), the question is a polynomial in doubles and is
+//!    evaluated without rounding: an exact sign, zero included.
+//! 3. **Refine.** Otherwise the tangency equations are solved again by
+//!    Newton's method from the `f64` root, the sites' coordinates taken
+//!    exactly: in double-double arithmetic (about 106 bits, no allocation),
+//!    then in binary floating point of 160, 400 and 1200 bits (`bigfloat`),
+//!    each precision starting from the last one's solution. The answer
+//!    stands when the question's value exceeds four times the last Newton
+//!    step plus the rounding at that precision times the equations'
+//!    condition `‖J⁻¹‖`.
+//! 4. **Zero.** A value that stays below that bound at 1200 bits (about
+//!    `2^-1150` of the configuration's size, for well-conditioned
+//!    equations) is taken as exactly zero: the segment touches the circle
+//!    (cocircular sites), and the caller's topology rules decide. Inputs
+//!    are doubles, so a nonzero value of these algebraic expressions of
+//!    bounded degree is bounded away from zero; the bound used is an
+//!    engineering choice, not a proven separation bound. Where Newton's
+//!    method converges at no precision (a double root: the vertex about to
+//!    vanish) the `f64` value stands.
 //!
 //! The equations per site (a segment's supporting line is used, as by the
 //! solvers): a point `p`, `|c − p| = r`; a segment not incident to a point
@@ -40,6 +50,7 @@
 //! lying numbers, and a refinement would make them honest again.
 
 use super::bigfloat::BigFloat;
+use super::double_double::DoubleDouble;
 use super::point::Point;
 use super::predicates::CirclePosition;
 use super::site::Site;
@@ -55,8 +66,15 @@ pub(crate) enum Reach {
     Entering { from: Point, to: Point },
 }
 
-/// Precisions of the refinement, in bits.
+/// The precision of double-double arithmetic, in bits (a little under).
+const DOUBLE_DOUBLE_BITS: u64 = 100;
+
+/// Precisions of the big-float refinement, in bits.
 const PRECISIONS: [u64; 3] = [160, 400, 1200];
+
+/// A precision no sum or product of a few doubles reaches: arithmetic
+/// without rounding (the exponent range of doubles spans 2,100 bits).
+const EXACT: u64 = 1 << 20;
 
 /// Newton steps allowed per precision.
 const MAX_STEPS: usize = 60;
@@ -87,22 +105,94 @@ pub(crate) fn reach(
             return Some(sign_position(depth));
         }
     }
+    if let Some(exact) = system.exact_answer(centre, radius, &question) {
+        return Some(exact);
+    }
+    let start = [centre.x, centre.y, radius];
+    // double-double first (cheap, no allocation), then big floats
+    let dd = DoubleDouble::from_f64;
+    if let Some(answer) = refine(&system, &question, start.map(dd), &dd, size, DOUBLE_DOUBLE_BITS) {
+        return Some(answer);
+    }
+    let mut start = start.map(|x| BigFloat::from_f64(x, PRECISIONS[0]));
+    let mut converged = false;
     for bits in PRECISIONS {
         let lift = |x: f64| BigFloat::from_f64(x, bits);
-        let start = [lift(centre.x), lift(centre.y), lift(radius)];
-        let (solution, last_step) = system.newton(start, &lift, size, bits)?;
-        let value = question.value(&solution, &lift);
-        // The question is 1-Lipschitz in c and r; the last step bounds the
-        // solution's error (Newton converges quadratically), and rounding
-        // adds a few units of 2^-bits of the size.
-        let slack = 2f64.powi(-(bits as i32) + 24) * size;
-        let bound = 4.0 * last_step + slack;
-        let v = value.to_f64();
-        if v.abs() > bound {
-            return Some(sign_position(v));
+        let begin = start.clone().map(|x| x.with_precision(bits));
+        match refine_big(&system, &question, begin, &lift, size, bits) {
+            Refined::Decided(answer) => return Some(answer),
+            // the next precision starts from this one's solution
+            Refined::Undecided(solution) => {
+                start = solution;
+                converged = true;
+            }
+            Refined::Failed => {}
         }
     }
-    Some(CirclePosition::On)
+    // Zero within 2^-1150 or so of the size: on the circle. Without
+    // convergence at any precision the rounded value stands.
+    converged.then_some(CirclePosition::On)
+}
+
+/// What one precision of the refinement found.
+enum Refined<T> {
+    Decided(CirclePosition),
+    /// Converged, but the question's value is within its error bound.
+    Undecided([T; 3]),
+    /// No convergence at this precision.
+    Failed,
+}
+
+/// The double-double stage: `Some` when decided.
+fn refine(
+    system: &System,
+    question: &Reach,
+    start: [DoubleDouble; 3],
+    lift: &impl Fn(f64) -> DoubleDouble,
+    size: f64,
+    bits: u64,
+) -> Option<CirclePosition> {
+    match refine_at(system, question, start, lift, size, bits) {
+        Refined::Decided(answer) => Some(answer),
+        _ => None,
+    }
+}
+
+fn refine_big(
+    system: &System,
+    question: &Reach,
+    start: [BigFloat; 3],
+    lift: &impl Fn(f64) -> BigFloat,
+    size: f64,
+    bits: u64,
+) -> Refined<BigFloat> {
+    refine_at(system, question, start, lift, size, bits)
+}
+
+/// Newton's method at `bits` of precision, then the question at the
+/// solution, decided when its value exceeds the error bound: four times
+/// the last step (Newton converges quadratically, so the error left is far
+/// smaller) plus the rounding, `2^(8 - bits)` of the size amplified by the
+/// equations' condition `‖J⁻¹‖` (the question is 1-Lipschitz in the centre
+/// and the radius).
+fn refine_at<T: Real>(
+    system: &System,
+    question: &Reach,
+    start: [T; 3],
+    lift: &impl Fn(f64) -> T,
+    size: f64,
+    bits: u64,
+) -> Refined<T> {
+    let Some((solution, last_step, condition)) = system.newton(start, lift, size, bits) else {
+        return Refined::Failed;
+    };
+    let value = question.value(&solution, lift).to_f64();
+    let rounding = 2f64.powi(8 - bits as i32) * size * (1.0 + condition);
+    if value.abs() > 4.0 * last_step + rounding {
+        Refined::Decided(sign_position(value))
+    } else {
+        Refined::Undecided(solution)
+    }
 }
 
 fn sign_position(depth: f64) -> CirclePosition {
@@ -207,6 +297,61 @@ impl System {
         Some(System(equations))
     }
 
+    /// The exact answer when the rounded `(centre, radius)` solves the
+    /// tangency equations exactly (as on grids and other inputs with few
+    /// bits, where degenerate, cocircular answers are common): the
+    /// equations and the question are then polynomial in doubles, and are
+    /// evaluated without rounding. `None` otherwise.
+    fn exact_answer(&self, centre: Point, radius: f64, question: &Reach) -> Option<CirclePosition> {
+        let lift = |x: f64| BigFloat::from_f64(x, EXACT);
+        let (x, y, r) = (lift(centre.x), lift(centre.y), lift(radius));
+        let squared_distance = |p: Point| {
+            let (dx, dy) = (x.sub(&lift(p.x)), y.sub(&lift(p.y)));
+            dx.mul(&dx).add(&dy.mul(&dy))
+        };
+        let r2 = r.mul(&r);
+        // cross(b - a, c - a) and |b - a|^2
+        let line = |a: Point, b: Point| {
+            let (ux, uy) = (lift(b.x).sub(&lift(a.x)), lift(b.y).sub(&lift(a.y)));
+            let (vx, vy) = (x.sub(&lift(a.x)), y.sub(&lift(a.y)));
+            (ux.mul(&vy).sub(&uy.mul(&vx)), ux.mul(&ux).add(&uy.mul(&uy)), ux.mul(&vx).add(&uy.mul(&vy)))
+        };
+        for equation in &self.0 {
+            let holds = match *equation {
+                Equation::Circle(p) => squared_distance(p).sub(&r2).signum() == 0,
+                Equation::Line { a, b, side } => {
+                    let (cross, length2, _) = line(a, b);
+                    cross.signum() as f64 == side && cross.mul(&cross).sub(&r2.mul(&length2)).signum() == 0
+                }
+                Equation::Perpendicular { p, direction } => {
+                    let (dx, dy) = (x.sub(&lift(p.x)), y.sub(&lift(p.y)));
+                    lift(direction.x).mul(&dx).add(&lift(direction.y).mul(&dy)).signum() == 0
+                }
+            };
+            if !holds {
+                return None;
+            }
+        }
+        let sign = match *question {
+            Reach::Distance { a, b } => {
+                let (cross, length2, along) = line(a, b);
+                if along.signum() <= 0 {
+                    squared_distance(a).sub(&r2).signum()
+                } else if along.sub(&length2).signum() >= 0 {
+                    squared_distance(b).sub(&r2).signum()
+                } else {
+                    cross.mul(&cross).sub(&r2.mul(&length2)).signum()
+                }
+            }
+            Reach::Entering { from, to } => -line(from, to).2.signum(),
+        };
+        Some(match sign {
+            -1 => CirclePosition::Inside,
+            1 => CirclePosition::Outside,
+            _ => CirclePosition::On,
+        })
+    }
+
     /// The residuals and the Jacobian at `(x, y, r)`; `None` where a
     /// derivative does not exist (the centre on a point site).
     fn linearise<T: Real>(&self, v: &[T; 3], lift: &impl Fn(f64) -> T) -> Option<([T; 3], [[T; 3]; 3])> {
@@ -257,22 +402,27 @@ impl System {
         error.is_finite().then_some(error)
     }
 
-    /// Newton's method from `start` at `bits` of precision: the solution
-    /// and the size of the last step. `None` without convergence.
-    fn newton(&self, start: [BigFloat; 3], lift: &impl Fn(f64) -> BigFloat, size: f64, bits: u64) -> Option<([BigFloat; 3], f64)> {
-        let tolerance = 2f64.powi(-(bits as i32) + 32) * size;
+    /// Newton's method from `start` at `bits` of precision: the solution,
+    /// the size of the last step and `‖J⁻¹‖∞` there. `None` without
+    /// convergence (the step no longer shrinks before it is below the
+    /// precision, or a singular Jacobian).
+    fn newton<T: Real>(&self, start: [T; 3], lift: &impl Fn(f64) -> T, size: f64, bits: u64) -> Option<([T; 3], f64, f64)> {
+        let tolerance = 2f64.powi(24 - bits as i32) * size;
         let mut v = start;
+        let mut previous = f64::INFINITY;
         for _ in 0..MAX_STEPS {
             let (f, j) = self.linearise(&v, lift)?;
             let step = solve3(&j, &f)?;
             let step_size = step.iter().fold(0.0f64, |m, s| m.max(s.to_f64().abs()));
-            v = [v[0].sub(&step[0]), v[1].sub(&step[1]), v[2].sub(&step[2])];
-            if !step_size.is_finite() {
+            if !step_size.is_finite() || step_size > 2.0 * previous.max(tolerance) {
                 return None;
             }
+            v = [v[0].sub(&step[0]), v[1].sub(&step[1]), v[2].sub(&step[2])];
             if step_size <= tolerance {
-                return Some((v, step_size));
+                let condition = inverse_norm(&j.map(|row| row.map(|x| x.to_f64())))?;
+                return Some((v, step_size, condition));
             }
+            previous = step_size;
         }
         None
     }
@@ -331,6 +481,7 @@ trait Real: Clone {
     fn neg(&self) -> Self;
     fn abs(&self) -> Self;
     fn signum(&self) -> i32;
+    fn to_f64(&self) -> f64;
 }
 
 impl Real for f64 {
@@ -364,6 +515,9 @@ impl Real for f64 {
             0
         }
     }
+    fn to_f64(&self) -> f64 {
+        *self
+    }
 }
 
 impl Real for BigFloat {
@@ -390,6 +544,39 @@ impl Real for BigFloat {
     }
     fn signum(&self) -> i32 {
         BigFloat::signum(self)
+    }
+    fn to_f64(&self) -> f64 {
+        BigFloat::to_f64(self)
+    }
+}
+
+impl Real for DoubleDouble {
+    fn add(&self, o: &DoubleDouble) -> DoubleDouble {
+        DoubleDouble::add(*self, *o)
+    }
+    fn sub(&self, o: &DoubleDouble) -> DoubleDouble {
+        DoubleDouble::sub(*self, *o)
+    }
+    fn mul(&self, o: &DoubleDouble) -> DoubleDouble {
+        DoubleDouble::mul(*self, *o)
+    }
+    fn div(&self, o: &DoubleDouble) -> DoubleDouble {
+        DoubleDouble::div(*self, *o)
+    }
+    fn sqrt(&self) -> DoubleDouble {
+        DoubleDouble::sqrt(*self)
+    }
+    fn neg(&self) -> DoubleDouble {
+        DoubleDouble::neg(*self)
+    }
+    fn abs(&self) -> DoubleDouble {
+        DoubleDouble::abs(*self)
+    }
+    fn signum(&self) -> i32 {
+        DoubleDouble::signum(*self)
+    }
+    fn to_f64(&self) -> f64 {
+        DoubleDouble::to_f64(*self)
     }
 }
 
