@@ -248,6 +248,10 @@ static void test_version_and_status_strings(void) {
         CHECK(strcmp(text, "unknown status") != 0);
         for (t = 0; t < s; ++t) CHECK(strcmp(text, segvoronoi_status_str(t)) != 0);
     }
+    /* A build that cannot complete a valid diagram returns INTERNAL (with
+       *out NULL and the message in segvoronoi_builder_last_error), never an
+       invalid diagram; tests/fault_injection.rs gets there on purpose. */
+    CHECK(strstr(segvoronoi_status_str(SEGVORONOI_STATUS_INTERNAL), "internal") != NULL);
     CHECK(strcmp(segvoronoi_status_str(SEGVORONOI_STATUS_INTERNAL + 1), "unknown status") == 0);
     CHECK(strcmp(segvoronoi_status_str(-1), "unknown status") == 0);
 }

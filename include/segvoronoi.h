@@ -72,7 +72,10 @@ typedef enum segvoronoi_status {
   SEGVORONOI_STATUS_TOO_LARGE = 6,
   // An argument has an invalid value (for example unknown flag bits).
   SEGVORONOI_STATUS_INVALID_ARGUMENT = 7,
-  // A bug in segvoronoi (a caught panic or a failed invariant). Please report it.
+  // A bug in segvoronoi, not in the input: a caught panic, or a build that
+  // could not complete a valid diagram (no diagram is returned; the
+  // builder is unchanged and `segvoronoi_builder_last_error` says what
+  // failed). Please report it with the input.
   SEGVORONOI_STATUS_INTERNAL = 8,
 } segvoronoi_status;
 
@@ -237,10 +240,13 @@ size_t segvoronoi_builder_point_count(const struct segvoronoi_builder *builder);
 //
 // Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments cross or
 // overlap or a point lies inside a segment (the message names both input
-// indices).
+// indices). `SEGVORONOI_STATUS_INTERNAL` when the construction could not
+// complete a valid diagram, or panicked: a bug in segvoronoi (none is
+// known), never an invalid diagram; `segvoronoi_builder_last_error` says
+// what failed. Please report the input.
 //
 // Ownership: on success the caller owns `*out` and frees it with
-// `segvoronoi_diagram_free`. On error `*out` is set to NULL.
+// `segvoronoi_diagram_free`. On any error `*out` is set to NULL.
 //
 // Thread safety: one builder must not be used from two threads at once.
 // For 100,000 points or more the call sorts its insertion order on a second,

@@ -1,6 +1,7 @@
 //! The error type of the builder.
 
-/// What kind of input problem stopped a build or an insertion.
+/// What stopped a build or an insertion: a problem with the input, or
+/// ([`ErrorKind::Internal`]) a bug in segvoronoi.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum ErrorKind {
@@ -12,10 +13,17 @@ pub enum ErrorKind {
     /// [`Error::indices`] holds both input indices (segment indices, or the
     /// point's index and then the segment's).
     Intersecting,
+    /// The construction could not complete a valid diagram: a bug in
+    /// segvoronoi, not in the input (none is known; with sound arithmetic it
+    /// does not happen). The message says what failed; please report the
+    /// input. [`Error::indices`] holds the input index of the segment that
+    /// failed, when one did. No diagram is returned and the builder is
+    /// unchanged.
+    Internal,
 }
 
-/// An input error: its kind, a message that names the offending input
-/// indices, and those indices.
+/// A build or insertion error: its kind, a message that names the
+/// offending input indices, and those indices.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Error {
     kind: ErrorKind,

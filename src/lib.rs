@@ -55,9 +55,12 @@ pub use query::{Cell, Edge, EdgeEnd, TopologyOptions, Vertex};
 pub use query::EdgeShape;
 
 /// Fault injection for tests: make the floating-point decisions lie and watch
-/// the topology survive. Only in builds with the `fault-injection` feature.
+/// the topology survive (or the build give up with [`ErrorKind::Internal`],
+/// never with an invalid diagram). Only in builds with the `fault-injection`
+/// feature.
 #[cfg(feature = "fault-injection")]
 pub mod fault_injection {
+    pub use crate::build::set_restart_budget;
     pub use crate::geometry::fault::{set_fault_mode, FaultMode};
 }
 

@@ -187,10 +187,13 @@ pub unsafe extern "C" fn segvoronoi_builder_point_count(builder: *const segvoron
 ///
 /// Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments cross or
 /// overlap or a point lies inside a segment (the message names both input
-/// indices).
+/// indices). `SEGVORONOI_STATUS_INTERNAL` when the construction could not
+/// complete a valid diagram, or panicked: a bug in segvoronoi (none is
+/// known), never an invalid diagram; `segvoronoi_builder_last_error` says
+/// what failed. Please report the input.
 ///
 /// Ownership: on success the caller owns `*out` and frees it with
-/// `segvoronoi_diagram_free`. On error `*out` is set to NULL.
+/// `segvoronoi_diagram_free`. On any error `*out` is set to NULL.
 ///
 /// Thread safety: one builder must not be used from two threads at once.
 /// For 100,000 points or more the call sorts its insertion order on a second,
@@ -208,14 +211,19 @@ pub unsafe extern "C" fn segvoronoi_builder_build(
     guard(|| {
         // SAFETY: non-null live builder, exclusive to this thread.
         let b = unsafe { &mut *builder };
-        match b.inner.build() {
-            Ok(d) => {
+        // `build` takes the builder by shared reference: a panic leaves it as it was.
+        match guard_or(None, || Some(b.inner.build())) {
+            Some(Ok(d)) => {
                 b.last_error = CString::default();
                 // SAFETY: out is non-null and writable.
                 unsafe { *out = segvoronoi_diagram::into_raw(d) };
                 segvoronoi_status::Ok
             }
-            Err(e) => b.record(Err(e)),
+            Some(Err(e)) => b.record(Err(e)),
+            None => {
+                b.last_error = c"internal error: the build panicked; please report this input".into();
+                segvoronoi_status::Internal
+            }
         }
     })
 }

@@ -26,7 +26,10 @@ pub enum segvoronoi_status {
     TooLarge = 6,
     /// An argument has an invalid value (for example unknown flag bits).
     InvalidArgument = 7,
-    /// A bug in segvoronoi (a caught panic or a failed invariant). Please report it.
+    /// A bug in segvoronoi, not in the input: a caught panic, or a build that
+    /// could not complete a valid diagram (no diagram is returned; the
+    /// builder is unchanged and `segvoronoi_builder_last_error` says what
+    /// failed). Please report it with the input.
     Internal = 8,
 }
 
@@ -55,6 +58,7 @@ impl From<&Error> for segvoronoi_status {
             ErrorKind::InvalidCoordinate => segvoronoi_status::InvalidCoordinate,
             ErrorKind::TooLarge => segvoronoi_status::TooLarge,
             ErrorKind::Intersecting => segvoronoi_status::Intersecting,
+            ErrorKind::Internal => segvoronoi_status::Internal,
         }
     }
 }
