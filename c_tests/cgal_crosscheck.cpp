@@ -5,6 +5,8 @@
 //
 //   segvoronoi_cgal_check <family> <n> [seed]
 //   segvoronoi_cgal_check --file input.txt [--degenerate]
+//   segvoronoi_cgal_check --search SECONDS [seed] [--generic] [--out DIR]
+//   segvoronoi_cgal_check --minimise input.txt [--degenerate]
 //
 // Point families: uniform, clustered, tiny, tiny-offset, huge (generic: EDGES
 // and FACES must agree exactly) and lattice, circle, collinear, tiny-lattice,
@@ -21,7 +23,10 @@
 // segments tangent to the unit circle), seg-lattice (the unit segments of an
 // integer grid), parallel (n equal, equally spaced parallel segments) and
 // letter (the R with shared endpoints and a font's aligned corners) are
-// degenerate (several sites on one empty circle by construction). For faces
+// degenerate (several sites on one empty circle by construction).
+// boost-split (n random segments on the integer grid of side 1e6, every
+// crossing split at the crossing point rounded to the grid, as
+// Boost.Polygon's benchmark data; about 2.4 n pieces) is generic. For faces
 // with segments CGAL's Voronoi vertex is a double construction, so
 // VPAIRS/VVERTICES of segment inputs decide zero length from rounded
 // positions; they are checked for the degenerate families and informational
@@ -30,6 +35,26 @@
 // text format: P, then P lines "x y", then S, then S lines "x1 y1 x2 y2". Exit
 // status: 0 agreement and a valid diagram, 1 a difference or an invalid
 // diagram, 2 bad usage or input, 3 a library error.
+//
+// --search runs small random inputs until SECONDS are up (seed: a new one
+// each run unless given; printed first). Kinds, one drawn per input:
+// integer junctions (2..40 segments in [0, 20|1000|1e6]^2, 30% of endpoints
+// reused so that up to ten segments meet), stars (3..10 spokes pointing in
+// or out, a few points), polylines (2..40 steps, sometimes closed), snapped
+// floats (multiples of 2^-2..2^-6 with endpoint reuse) and small
+// boost-split inputs. Junctions in [0, 20]^2 and snapped floats are
+// compared as degenerate, the rest as generic (--generic: only those); a
+// generic input that CGAL finds exactly degenerate (a Voronoi edge of
+// length zero) is compared as degenerate when the generic comparison
+// differs. Each input is checked as
+// generated, with every segment reversed and shuffled. A difference, an
+// invalid diagram or a library error (an INTERSECTING status included: the
+// generators only make legal inputs, checked exactly) is a failure: it is
+// minimised (drop segments and points one at a time while it still fails,
+// then turn reversed segments back) and printed in the input format (and
+// written to DIR with --out). Ends with "search: inputs=N per_minute=M
+// failures=K"; exit status 1 when K > 0. --minimise applies the same
+// minimisation to a failing file.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpq.h>
@@ -673,6 +698,141 @@ std::vector<Segment> near_vertical(std::size_t n, Rng& rng) {
     return out;
 }
 
+// ---------------------------------------------------------------------------
+// Boost.Polygon's benchmark style: random segments on the integer grid, every
+// crossing split at the crossing point rounded to the grid (what
+// boost::polygon::intersect_segments does to the benchmark data).
+// ---------------------------------------------------------------------------
+
+bool same_point(const Point& p, const Point& q) { return p.x == q.x && p.y == q.y; }
+
+// The pairs (i, j), i < j, of segments that the library would reject
+// (crossing, overlapping, touching away from a shared endpoint), found
+// through a grid over the bounding box (all pairs below 64 segments).
+std::vector<std::pair<std::size_t, std::size_t>> conflicting_pairs(const std::vector<Segment>& segs) {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    if (segs.size() < 64) {
+        for (std::size_t i = 0; i < segs.size(); ++i)
+            for (std::size_t j = i + 1; j < segs.size(); ++j)
+                if (segments_conflict(segs[i], segs[j])) pairs.emplace_back(i, j);
+        return pairs;
+    }
+    Point lo = segs[0].a, hi = segs[0].a;
+    for (const Segment& s : segs) {
+        for (const Point& p : {s.a, s.b}) {
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+        }
+    }
+    SegmentGrid grid(lo, {hi.x + 1.0, hi.y + 1.0}, grid_side(segs.size()));
+    for (std::size_t j = 0; j < segs.size(); ++j) {
+        grid.any_near(segs[j], [&](std::size_t i) {
+            if (segments_conflict(segs[i], segs[j])) pairs.emplace_back(i, j);
+            return false;
+        });
+        grid.add(segs[j], j);
+    }
+    return pairs;
+}
+
+// The crossing point of two properly crossing segments, rounded to the
+// integer grid.
+Point rounded_crossing(const Segment& s, const Segment& t) {
+    const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+    const double ex = t.b.x - t.a.x, ey = t.b.y - t.a.y;
+    const double den = dx * ey - dy * ex;
+    const double u = ((t.a.x - s.a.x) * ey - (t.a.y - s.a.y) * ex) / den;
+    return {std::round(s.a.x + u * dx), std::round(s.a.y + u * dy)};
+}
+
+bool in_open_segment(const Segment& s, const Point& p) {
+    return !same_point(p, s.a) && !same_point(p, s.b) && orient(s.a, s.b, p) == CGAL::COLLINEAR &&
+           on_collinear_segment(s.a, s.b, p);
+}
+
+// Splits crossing segments at their rounded crossing points and segments
+// touched inside by another's endpoint at that endpoint, round after round
+// (rounding moves a crossing point off both lines, so the pieces can cross
+// again); after `rounds` rounds, or for overlaps, the later segment of each
+// remaining conflicting pair is dropped. Pieces keep their parent's
+// direction; zero-length and repeated pieces are left out.
+std::vector<Segment> split_at_rounded_crossings(std::vector<Segment> segs, int rounds = 12) {
+    for (int round = 0; round < rounds; ++round) {
+        const auto pairs = conflicting_pairs(segs);
+        if (pairs.empty()) return segs;
+        std::vector<std::vector<Point>> cuts(segs.size());
+        std::vector<bool> drop(segs.size(), false);
+        for (const auto& pair : pairs) {
+            const Segment& s = segs[pair.first];
+            const Segment& t = segs[pair.second];
+            const CGAL::Orientation o1 = orient(s.a, s.b, t.a), o2 = orient(s.a, s.b, t.b);
+            const CGAL::Orientation o3 = orient(t.a, t.b, s.a), o4 = orient(t.a, t.b, s.b);
+            if (o1 * o2 < 0 && o3 * o4 < 0) {
+                const Point q = rounded_crossing(s, t);
+                cuts[pair.first].push_back(q);
+                cuts[pair.second].push_back(q);
+                continue;
+            }
+            bool touched = false;
+            for (const Point& p : {t.a, t.b})
+                if (in_open_segment(s, p)) cuts[pair.first].push_back(p), touched = true;
+            for (const Point& p : {s.a, s.b})
+                if (in_open_segment(t, p)) cuts[pair.second].push_back(p), touched = true;
+            // Collinear overlap: no cut separates the two.
+            if (o1 == CGAL::COLLINEAR && o2 == CGAL::COLLINEAR) drop[pair.second] = true;
+            else if (!touched) drop[pair.second] = true;
+        }
+        std::vector<Segment> next;
+        std::map<std::pair<std::pair<double, double>, std::pair<double, double>>, bool> seen;
+        for (std::size_t i = 0; i < segs.size(); ++i) {
+            if (drop[i]) continue;
+            const Segment& s = segs[i];
+            std::vector<Point>& c = cuts[i];
+            const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
+            auto along = [&](const Point& p) { return (p.x - s.a.x) * dx + (p.y - s.a.y) * dy; };
+            std::sort(c.begin(), c.end(), [&](const Point& p, const Point& q) { return along(p) < along(q); });
+            Point from = s.a;
+            c.push_back(s.b);
+            for (const Point& to : c) {
+                if (same_point(from, to)) continue;
+                std::pair<double, double> ka{from.x, from.y}, kb{to.x, to.y};
+                if (kb < ka) std::swap(ka, kb);
+                if (seen.emplace(std::make_pair(ka, kb), true).second) next.push_back({from, to});
+                from = to;
+            }
+        }
+        segs.swap(next);
+    }
+    const auto pairs = conflicting_pairs(segs);
+    std::vector<bool> drop(segs.size(), false);
+    for (const auto& pair : pairs) {
+        if (!drop[pair.first]) drop[pair.second] = true;
+    }
+    std::vector<Segment> kept;
+    for (std::size_t i = 0; i < segs.size(); ++i)
+        if (!drop[i]) kept.push_back(segs[i]);
+    return kept;
+}
+
+// n random segments with integer endpoints in [0, side]^2, lengths uniform
+// in [0, 3 side / sqrt(n)] (about 1.4 crossings per segment), then split
+// at the rounded crossings: many segments meeting at shared points, kinks
+// of near-zero angle where a crossing point was rounded.
+std::vector<Segment> boost_split(std::size_t n, Rng& rng, double side = 1e6) {
+    const double max_length = 3.0 * side / std::sqrt(static_cast<double>(std::max<std::size_t>(n, 1)));
+    std::vector<Segment> segs;
+    segs.reserve(n);
+    const double two_pi = 6.283185307179586;
+    while (segs.size() < n) {
+        const Point a{std::floor(rng.unit() * (side + 1.0)), std::floor(rng.unit() * (side + 1.0))};
+        const double angle = two_pi * rng.unit(), length = max_length * rng.unit();
+        const Point b{std::round(a.x + length * std::cos(angle)), std::round(a.y + length * std::sin(angle))};
+        if (same_point(a, b) || b.x < 0.0 || b.y < 0.0 || b.x > side || b.y > side) continue;
+        segs.push_back({a, b});
+    }
+    return split_at_rounded_crossings(std::move(segs));
+}
+
 bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, Input& input) {
     Rng rng(seed);
     input.family = family;
@@ -743,6 +903,8 @@ bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, I
         input.segments = letter_r(true);
     } else if (family == "near-vertical") {
         input.segments = near_vertical(n, rng);
+    } else if (family == "boost-split") {
+        input.segments = boost_split(n, rng);
     } else {
         return false;
     }
@@ -752,15 +914,19 @@ bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, I
 // Boost.Polygon text format: P, P lines "x y", S, S lines "x0 y0 x1 y1".
 // Writes the input in the format read_file reads, with every digit needed to
 // read back the same doubles: a generated case becomes a file to debug with.
-bool write_file(const std::string& path, const Input& input) {
-    std::FILE* out = std::fopen(path.c_str(), "w");
-    if (out == nullptr) return false;
+void write_text(std::FILE* out, const Input& input) {
     std::fprintf(out, "%zu\n", input.points.size());
     for (const Point& p : input.points) std::fprintf(out, "%.17g %.17g\n", p.x, p.y);
     std::fprintf(out, "%zu\n", input.segments.size());
     for (const Segment& s : input.segments) {
         std::fprintf(out, "%.17g %.17g %.17g %.17g\n", s.a.x, s.a.y, s.b.x, s.b.y);
     }
+}
+
+bool write_file(const std::string& path, const Input& input) {
+    std::FILE* out = std::fopen(path.c_str(), "w");
+    if (out == nullptr) return false;
+    write_text(out, input);
     return std::fclose(out) == 0;
 }
 
@@ -987,14 +1153,17 @@ struct OursResult {
 
 class LibraryError : public std::runtime_error {
   public:
-    using std::runtime_error::runtime_error;
+    explicit LibraryError(const std::string& message, segvoronoi_status status = SEGVORONOI_STATUS_OK)
+        : std::runtime_error(message), status(status) {}
+    // The status of the failing call (OK when the error is not a status).
+    segvoronoi_status status;
 };
 
 void check_status(segvoronoi_status status, const char* call, const segvoronoi_builder* builder = nullptr) {
     if (status == SEGVORONOI_STATUS_OK) return;
     std::string message = std::string(call) + ": " + segvoronoi_status_str(status);
     if (builder != nullptr) message += std::string(" (") + segvoronoi_builder_last_error(builder) + ")";
-    throw LibraryError(message);
+    throw LibraryError(message, status);
 }
 
 std::string topology_text(const segvoronoi_diagram* diagram, std::uint32_t flags) {
@@ -1087,6 +1256,10 @@ struct CgalResult {
     // Finite edges whose four points are exactly cocircular: where the
     // Delaunay graph is not unique (diagnostic for "generic" inputs).
     std::size_t cocircular_edges = 0;
+    // Finite edges whose Voronoi edge has length zero exactly (CGAL's exact
+    // is_degenerate_edge; four distinct sites on one empty circle), with
+    // segments too: the input is not generic, its EDGES and FACES not unique.
+    std::size_t degenerate_edges = 0;
     // Why VPAIRS and VVERTICES were left out (empty if they were not): on a
     // generic input they are informational, so a Voronoi vertex that CGAL's
     // double construction cannot place (not finite, for nearly collinear
@@ -1270,11 +1443,30 @@ void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) 
     for (auto& entry : groups) topology.add("VVERTICES", entry.second);
 }
 
+// Only edges between two finite faces with different apexes: for two faces
+// of the same three sites (far apart, with segments) the predicate is
+// trivially true.
+void count_degenerate_edges(const Sdg& sdg, CgalResult& cgal) {
+    if (sdg.dimension() < 2) return;
+    for (auto e = sdg.finite_edges_begin(); e != sdg.finite_edges_end(); ++e) {
+        const Sdg::Face_handle f = e->first, g = f->neighbor(e->second);
+        if (sdg.is_infinite(f) || sdg.is_infinite(g)) continue;
+        const Sdg::Vertex_handle apex = f->vertex(e->second), mirror = sdg.tds().mirror_vertex(f, e->second);
+        if (apex == mirror) continue;
+        const auto ends = edge_vertices(*e);
+        if (sdg.geom_traits().is_degenerate_edge_2_object()(ends.first->site(), ends.second->site(), apex->site(),
+                                                            mirror->site())) {
+            ++cgal.degenerate_edges;
+        }
+    }
+}
+
 CgalResult build_cgal(const Sites& sites, const Input& input) {
     CgalResult cgal;
     Sdg sdg;
     build_cgal_graph(sites, input, sdg, cgal);
     add_delaunay_sections(sdg, sites, cgal.topology);
+    count_degenerate_edges(sdg, cgal);
     try {
         add_voronoi_sections(sdg, sites, cgal);
     } catch (const std::runtime_error& error) {
@@ -1331,7 +1523,14 @@ bool is_checked(const std::string& title, bool degenerate) {
     return title == "EDGES" || title == "FACES";
 }
 
-int report(const Input& input, const Sites& sites, const OursResult& ours, const CgalResult& cgal) {
+struct Verdict {
+    bool agree = false;
+    bool valid = false;
+    std::string text;  // the summary line and the details, as printed
+    bool ok() const { return agree && valid; }
+};
+
+Verdict compare(const Input& input, const Sites& sites, const OursResult& ours, const CgalResult& cgal) {
     std::size_t matched = 0, only_ours = 0, only_cgal = 0;
     std::ostringstream details;
     for (const char* title : kSectionTitles) {
@@ -1354,33 +1553,454 @@ int report(const Input& input, const Sites& sites, const OursResult& ours, const
             details << "    " << example.first << " " << title << ": " << format_line(example.second) << "\n";
         }
     }
-    const bool agree = only_ours == 0 && only_cgal == 0;
-    const bool valid = ours.problems.empty();
-    std::printf("family=%s n=%zu segments=%zu sites=%zu degenerate=%s ours_edges=%zu cgal_edges=%zu ours_faces=%zu cgal_faces=%zu "
-                "matched=%zu only_ours=%zu only_cgal=%zu cgal_dimension=%d cocircular_edges=%zu "
-                "ours_build_ms=%.1f cgal_build_ms=%.1f valid=%s verdict=%s\n",
-                input.family.c_str(), input.points.size() + input.segments.size(), input.segments.size(),
-                sites.count(), input.degenerate ? "yes" : "no",
-                ours.full.count("EDGES"), cgal.topology.count("EDGES"), ours.full.count("FACES"),
-                cgal.topology.count("FACES"), matched, only_ours, only_cgal, cgal.dimension, cgal.cocircular_edges,
-                ours.build_ms, cgal.build_ms, valid ? "yes" : "no", agree && valid ? "AGREE" : "DIFFER");
-    std::fputs(details.str().c_str(), stdout);
-    for (const std::string& problem : ours.problems) std::printf("  invalid: %s\n", problem.c_str());
-    if (!input.degenerate && !agree && cgal.cocircular_edges > 0) {
-        std::printf("  note: the input has %zu exactly cocircular Delaunay edges, so it is not generic\n",
-                    cgal.cocircular_edges);
+    Verdict verdict;
+    verdict.agree = only_ours == 0 && only_cgal == 0;
+    verdict.valid = ours.problems.empty();
+    char line[1024];
+    std::snprintf(line, sizeof line,
+                  "family=%s n=%zu segments=%zu sites=%zu degenerate=%s ours_edges=%zu cgal_edges=%zu ours_faces=%zu "
+                  "cgal_faces=%zu matched=%zu only_ours=%zu only_cgal=%zu cgal_dimension=%d cocircular_edges=%zu "
+                  "ours_build_ms=%.1f cgal_build_ms=%.1f valid=%s verdict=%s\n",
+                  input.family.c_str(), input.points.size() + input.segments.size(), input.segments.size(),
+                  sites.count(), input.degenerate ? "yes" : "no", ours.full.count("EDGES"),
+                  cgal.topology.count("EDGES"), ours.full.count("FACES"), cgal.topology.count("FACES"), matched,
+                  only_ours, only_cgal, cgal.dimension, cgal.cocircular_edges, ours.build_ms, cgal.build_ms,
+                  verdict.valid ? "yes" : "no", verdict.ok() ? "AGREE" : "DIFFER");
+    verdict.text = line + details.str();
+    for (const std::string& problem : ours.problems) verdict.text += "  invalid: " + problem + "\n";
+    if (!input.degenerate && !verdict.agree && cgal.cocircular_edges > 0) {
+        verdict.text += "  note: the input has " + std::to_string(cgal.cocircular_edges) +
+                        " exactly cocircular Delaunay edges, so it is not generic\n";
     }
-    return agree && valid ? 0 : 1;
+    if (!input.degenerate && !verdict.agree && cgal.degenerate_edges > 0) {
+        verdict.text += "  note: CGAL has " + std::to_string(cgal.degenerate_edges) +
+                        " Voronoi edges of length exactly zero (four sites on one circle), so the input is not "
+                        "generic: compare with --degenerate\n";
+    }
+    return verdict;
+}
+
+int report(const Input& input, const Sites& sites, const OursResult& ours, const CgalResult& cgal) {
+    const Verdict verdict = compare(input, sites, ours, cgal);
+    std::fputs(verdict.text.c_str(), stdout);
+    return verdict.ok() ? 0 : 1;
+}
+
+// ---------------------------------------------------------------------------
+// Randomised search (--search SECONDS [seed]): small random inputs until the
+// time is up, each cross-checked as generated, with every segment reversed
+// and shuffled; every difference, invalid diagram or library error is
+// minimised and printed in the input format.
+// ---------------------------------------------------------------------------
+
+enum class Outcome { Agree, Fail, CgalError };
+
+struct RunResult {
+    Outcome outcome = Outcome::Agree;
+    std::string text;
+    // Generic comparison differed on an exactly degenerate input, and the
+    // degenerate comparison agreed.
+    bool degenerate_fallback = false;
+};
+
+// Inputs are legal by construction (the generators filter exactly), so a
+// library that rejects one as intersecting is a failure too.
+RunResult run_one(const Input& input) {
+    RunResult result;
+    const Sites sites(input);
+    OursResult ours;
+    try {
+        ours = build_ours(input, sites);
+    } catch (const std::exception& error) {
+        result.outcome = Outcome::Fail;
+        result.text = std::string("segvoronoi error: ") + error.what() + "\n";
+        return result;
+    }
+    CgalResult cgal;
+    try {
+        cgal = build_cgal(sites, input);
+    } catch (const std::exception& error) {
+        result.outcome = Outcome::CgalError;
+        result.text = std::string("cgal: ") + error.what() + "\n";
+        return result;
+    }
+    const Verdict verdict = compare(input, sites, ours, cgal);
+    result.outcome = verdict.ok() ? Outcome::Agree : Outcome::Fail;
+    result.text = verdict.text;
+    // A generic kind can still make an exactly degenerate input (an L of
+    // two equal perpendicular arms on the integer grid): there EDGES and
+    // FACES are not unique, and only the degenerate comparison holds.
+    if (!verdict.ok() && verdict.valid && !input.degenerate && cgal.degenerate_edges > 0) {
+        Input as_degenerate = input;
+        as_degenerate.degenerate = true;
+        CgalResult again;
+        try {
+            again = build_cgal(sites, as_degenerate);
+        } catch (const std::exception&) {
+            return result;  // no Voronoi sections to compare: stays a failure
+        }
+        const Verdict second = compare(as_degenerate, sites, ours, again);
+        if (second.ok()) {
+            result.outcome = Outcome::Agree;
+            result.degenerate_fallback = true;
+        } else {
+            result.text += "as degenerate:\n" + second.text;
+        }
+    }
+    return result;
+}
+
+// A legal input: no segment crosses, overlaps or touches another except at
+// a shared endpoint, no isolated point lies inside a segment, no segment
+// has length zero.
+bool legal_addition(const std::vector<Segment>& segs, const Segment& s) {
+    if (same_point(s.a, s.b)) return false;
+    for (const Segment& t : segs)
+        if (segments_conflict(s, t)) return false;
+    return true;
+}
+
+bool legal_point(const std::vector<Segment>& segs, const Point& p) {
+    for (const Segment& s : segs)
+        if (in_open_segment(s, p)) return false;
+    return true;
+}
+
+struct SearchCase {
+    Input input;
+    std::string kind;
+};
+
+double random_int(Rng& rng, double range) { return std::floor(rng.unit() * (range + 1.0)); }
+
+// A point that is an earlier endpoint with probability `reuse` (half of
+// those from the first three distinct endpoints, the hubs, so that up to
+// ten segments meet at a point), else a fresh one from `fresh`.
+template <class Fresh>
+Point pick_endpoint(const std::vector<Point>& ends, double reuse, Rng& rng, Fresh fresh) {
+    if (!ends.empty() && rng.unit() < reuse) {
+        const std::size_t hubs = std::min<std::size_t>(3, ends.size());
+        return rng.below(2) == 0 ? ends[rng.below(hubs)] : ends[rng.below(ends.size())];
+    }
+    return fresh();
+}
+
+// Segments drawn one at a time (up to 40 tries each) and kept when legal.
+template <class Draw>
+std::vector<Segment> draw_segments(std::size_t n, Rng& rng, Draw draw) {
+    std::vector<Segment> segs;
+    for (std::size_t k = 0; k < n; ++k) {
+        for (int attempt = 0; attempt < 40; ++attempt) {
+            Segment s = draw(segs);
+            if (rng.below(2) == 1) std::swap(s.a, s.b);
+            if (legal_addition(segs, s)) {
+                segs.push_back(s);
+                break;
+            }
+        }
+    }
+    return segs;
+}
+
+std::vector<Point> endpoints_of(const std::vector<Segment>& segs) {
+    std::vector<Point> ends;
+    for (const Segment& s : segs) {
+        for (const Point& p : {s.a, s.b}) {
+            if (std::none_of(ends.begin(), ends.end(), [&](const Point& q) { return same_point(p, q); }))
+                ends.push_back(p);
+        }
+    }
+    return ends;
+}
+
+// 0..max isolated points, legal ones only (an endpoint repeated is legal).
+template <class Fresh>
+void add_points(Input& input, std::size_t max, Rng& rng, Fresh fresh) {
+    const std::size_t count = rng.below(max + 1);
+    for (std::size_t k = 0; k < count; ++k) {
+        const Point p = fresh();
+        if (legal_point(input.segments, p)) input.points.push_back(p);
+    }
+}
+
+// With `generic_only`, only the kinds compared as generic.
+SearchCase random_case(Rng& rng, bool generic_only) {
+    SearchCase c;
+    Input& input = c.input;
+    std::size_t kind = rng.below(5);
+    if (generic_only && kind == 3) kind = rng.below(2) == 0 ? 0 : 4;
+    const double two_pi = 6.283185307179586;
+    if (kind == 0) {
+        // Integer junctions: endpoints in [0, range]^2, 30% of them earlier
+        // endpoints; short or long segments.
+        const double ranges[] = {20.0, 1000.0, 1e6};
+        const std::size_t r = generic_only ? 1 + rng.below(2) : rng.below(3);
+        const double range = ranges[r];
+        const std::size_t n = 2 + rng.below(39);
+        const bool short_ones = rng.below(2) == 0;
+        auto fresh = [&] { return Point{random_int(rng, range), random_int(rng, range)}; };
+        input.segments = draw_segments(n, rng, [&](const std::vector<Segment>& segs) {
+            const std::vector<Point> ends = endpoints_of(segs);
+            const Point a = pick_endpoint(ends, 0.3, rng, fresh);
+            const Point b = pick_endpoint(ends, 0.3, rng, [&] {
+                if (!short_ones) return fresh();
+                const double reach = std::max(2.0, range / 4.0);
+                return Point{std::round(a.x + reach * (2.0 * rng.unit() - 1.0)),
+                             std::round(a.y + reach * (2.0 * rng.unit() - 1.0))};
+            });
+            return Segment{a, b};
+        });
+        add_points(input, 3, rng, fresh);
+        input.degenerate = range < 100.0;
+        c.kind = "junctions-" + std::to_string(static_cast<long long>(range));
+    } else if (kind == 1) {
+        // A star: 3..10 spokes from one hub at random angles and lengths,
+        // each pointing in or out at random, and a few random points.
+        const bool integer = rng.below(2) == 0;
+        const double range = integer ? 1e6 : 1.0;
+        auto coordinate = [&](double v) { return integer ? std::round(v) : v; };
+        const Point hub{coordinate(range * (0.25 + 0.5 * rng.unit())), coordinate(range * (0.25 + 0.5 * rng.unit()))};
+        const std::size_t n = 3 + rng.below(8);
+        input.segments = draw_segments(n, rng, [&](const std::vector<Segment>&) {
+            const double angle = two_pi * rng.unit(), length = range * (0.05 + 0.25 * rng.unit());
+            return Segment{hub, {coordinate(hub.x + length * std::cos(angle)), coordinate(hub.y + length * std::sin(angle))}};
+        });
+        add_points(input, 4, rng, [&] { return Point{coordinate(range * rng.unit()), coordinate(range * rng.unit())}; });
+        c.kind = integer ? "star-int" : "star-double";
+    } else if (kind == 2) {
+        // A random polyline (sometimes closed) of 2..40 steps, each segment
+        // in a random direction.
+        const bool integer = rng.below(2) == 0;
+        const double range = integer ? 1e6 : 1.0;
+        auto coordinate = [&](double v) { return integer ? std::round(v) : v; };
+        const std::size_t n = 2 + rng.below(39);
+        const double step = range * 0.5 / std::sqrt(static_cast<double>(n));
+        std::vector<Segment> segs;
+        Point at{coordinate(range * rng.unit()), coordinate(range * rng.unit())};
+        const Point first = at;
+        for (std::size_t k = 0, tries = 0; k < n && tries < 40 * n; ++tries) {
+            const double angle = two_pi * rng.unit(), length = step * (0.3 + rng.unit());
+            const Point to{coordinate(at.x + length * std::cos(angle)), coordinate(at.y + length * std::sin(angle))};
+            if (!legal_addition(segs, {at, to})) continue;
+            segs.push_back({at, to});
+            at = to;
+            ++k;
+        }
+        if (segs.size() >= 2 && rng.below(3) == 0 && legal_addition(segs, {at, first})) segs.push_back({at, first});
+        for (Segment& s : segs)
+            if (rng.below(2) == 1) std::swap(s.a, s.b);
+        input.segments = segs;
+        add_points(input, 2, rng, [&] { return Point{coordinate(range * rng.unit()), coordinate(range * rng.unit())}; });
+        c.kind = integer ? "polyline-int" : "polyline-double";
+    } else if (kind == 3) {
+        // Snapped floats: random doubles rounded to 2..6 bits after the
+        // binary point in [0, 4)^2 (exact repeats, collinear and cocircular
+        // sites), with endpoint reuse: degenerate.
+        const int bits = 2 + static_cast<int>(rng.below(5));
+        const double scale = std::ldexp(1.0, bits);
+        auto snap = [&](double v) { return std::round(v * scale) / scale; };
+        auto fresh = [&] { return Point{snap(4.0 * rng.unit()), snap(4.0 * rng.unit())}; };
+        const std::size_t n = 2 + rng.below(24);
+        input.segments = draw_segments(n, rng, [&](const std::vector<Segment>& segs) {
+            const std::vector<Point> ends = endpoints_of(segs);
+            const Point a = pick_endpoint(ends, 0.3, rng, fresh);
+            const Point b = pick_endpoint(ends, 0.3, rng, [&] {
+                return Point{snap(a.x + 2.0 * rng.unit() - 1.0), snap(a.y + 2.0 * rng.unit() - 1.0)};
+            });
+            return Segment{a, b};
+        });
+        add_points(input, 3, rng, fresh);
+        input.degenerate = true;
+        c.kind = "snapped-" + std::to_string(bits);
+    } else {
+        // Boost.Polygon's benchmark style, small: 2..30 random segments split
+        // at their crossings rounded to the integer grid.
+        const double side = rng.below(2) == 0 ? 1000.0 : 1e6;
+        input.segments = boost_split(2 + rng.below(29), rng, side);
+        for (Segment& s : input.segments)
+            if (rng.below(2) == 1) std::swap(s.a, s.b);
+        c.kind = "split-" + std::to_string(static_cast<long long>(side));
+    }
+    input.family = c.kind;
+    return c;
+}
+
+// Greedy minimisation of a failing input: drop one segment, then one
+// point, at a time while it still fails (until nothing can go); then turn
+// each segment that `flipped` marks as reversed back while it still fails.
+// The library's insertion order depends on the whole input, so a smaller
+// input may fail only in another order: each candidate is also tried in
+// `kOrders` random orders, and the first failing order is kept.
+constexpr int kOrders = 6;
+
+struct Candidate {
+    Input input;
+    std::vector<bool> flipped;  // per segment: reversed against the generated input
+};
+
+// Past `deadline` every candidate counts as passing, so that it returns
+// the smallest input so far.
+Input minimise(Input input, std::vector<bool> flipped, std::uint64_t seed, std::size_t& runs,
+               std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max()) {
+    Rng rng(seed);
+    auto fails = [&](const Input& candidate) {
+        if (std::chrono::steady_clock::now() > deadline) return false;
+        ++runs;
+        return run_one(candidate).outcome == Outcome::Fail;
+    };
+    // The candidate, or one of its reorderings, that fails; false if none.
+    auto fails_in_some_order = [&](Candidate& c) {
+        if (fails(c.input)) return true;
+        for (int k = 0; k < kOrders; ++k) {
+            Candidate other = c;
+            std::vector<std::size_t> order(c.input.segments.size());
+            std::iota(order.begin(), order.end(), 0);
+            shuffle(order, rng);
+            for (std::size_t j = 0; j < order.size(); ++j) {
+                other.input.segments[j] = c.input.segments[order[j]];
+                other.flipped[j] = c.flipped[order[j]];
+            }
+            shuffle(other.input.points, rng);
+            if (fails(other.input)) {
+                c = other;
+                return true;
+            }
+        }
+        return false;
+    };
+    Candidate best{std::move(input), std::move(flipped)};
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t k = best.input.segments.size(); k-- > 0;) {
+            if (k >= best.input.segments.size()) continue;
+            Candidate smaller = best;
+            smaller.input.segments.erase(smaller.input.segments.begin() + static_cast<std::ptrdiff_t>(k));
+            smaller.flipped.erase(smaller.flipped.begin() + static_cast<std::ptrdiff_t>(k));
+            if (smaller.input.segments.empty() && smaller.input.points.empty()) continue;
+            if (fails_in_some_order(smaller)) {
+                best = std::move(smaller);
+                changed = true;
+            }
+        }
+        for (std::size_t k = best.input.points.size(); k-- > 0;) {
+            if (k >= best.input.points.size()) continue;
+            Candidate smaller = best;
+            smaller.input.points.erase(smaller.input.points.begin() + static_cast<std::ptrdiff_t>(k));
+            if (smaller.input.segments.empty() && smaller.input.points.empty()) continue;
+            if (fails_in_some_order(smaller)) {
+                best = std::move(smaller);
+                changed = true;
+            }
+        }
+    }
+    for (std::size_t k = 0; k < best.input.segments.size(); ++k) {
+        if (!best.flipped[k]) continue;
+        Input turned = best.input;
+        std::swap(turned.segments[k].a, turned.segments[k].b);
+        if (fails(turned)) {
+            best.input = turned;
+            best.flipped[k] = false;
+        }
+    }
+    return best.input;
+}
+
+std::uint64_t mix_seed(std::uint64_t seed, std::uint64_t k) {
+    Rng rng(seed ^ (0xD1B54A32D192ED03ULL * (k + 1)));
+    return rng.next();
+}
+
+int search(double seconds, std::uint64_t seed, bool generic_only, const std::string& out_dir) {
+    std::printf("search: seconds=%g seed=%llu%s\n", seconds, static_cast<unsigned long long>(seed),
+                generic_only ? " generic" : "");
+    std::fflush(stdout);
+    const auto start = std::chrono::steady_clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    std::size_t inputs = 0, runs = 0, failures = 0, cgal_errors = 0, empty = 0, fallbacks = 0;
+    std::map<std::string, std::size_t> kinds;
+    for (std::uint64_t k = 0; elapsed() < seconds; ++k) {
+        const std::uint64_t case_seed = mix_seed(seed, k);
+        Rng rng(case_seed);
+        SearchCase c = random_case(rng, generic_only);
+        if (c.input.segments.empty()) {
+            ++empty;
+            continue;
+        }
+        ++inputs;
+        ++kinds[c.kind];
+        // The variants: as generated, every segment reversed, and points
+        // and segments shuffled (with the reversal marks moved along).
+        const std::size_t n = c.input.segments.size();
+        Input reversed = c.input;
+        for (Segment& s : reversed.segments) std::swap(s.a, s.b);
+        Input shuffled = c.input;
+        std::vector<std::size_t> order(n);
+        std::iota(order.begin(), order.end(), 0);
+        shuffle(order, rng);
+        for (std::size_t j = 0; j < n; ++j) shuffled.segments[j] = c.input.segments[order[j]];
+        shuffle(shuffled.points, rng);
+        const struct {
+            const char* name;
+            const Input* input;
+            std::vector<bool> flipped;
+        } variants[] = {{"as generated", &c.input, std::vector<bool>(n, false)},
+                        {"every segment reversed", &reversed, std::vector<bool>(n, true)},
+                        {"shuffled", &shuffled, std::vector<bool>(n, false)}};
+        for (const auto& variant : variants) {
+            ++runs;
+            const RunResult result = run_one(*variant.input);
+            if (result.degenerate_fallback) ++fallbacks;
+            if (result.outcome == Outcome::CgalError) {
+                ++cgal_errors;
+                break;
+            }
+            if (result.outcome != Outcome::Fail) continue;
+            ++failures;
+            // Minimising takes at most a second or two; all of it together
+            // at most half the search time past its end.
+            const auto deadline = start + std::chrono::milliseconds(static_cast<long long>(1500.0 * seconds));
+            const Input smallest = minimise(*variant.input, variant.flipped, case_seed, runs, deadline);
+            const RunResult again = run_one(smallest);
+            std::printf("FAILURE %zu: kind=%s case_seed=%llu (search seed %llu, input %llu) variant=%s degenerate=%s "
+                        "segments %zu -> %zu, points %zu -> %zu\n",
+                        failures, c.kind.c_str(), static_cast<unsigned long long>(case_seed),
+                        static_cast<unsigned long long>(seed), static_cast<unsigned long long>(k), variant.name,
+                        smallest.degenerate ? "yes" : "no", variant.input->segments.size(), smallest.segments.size(),
+                        variant.input->points.size(), smallest.points.size());
+            std::printf("--- minimised input (Boost.Polygon text; compare with%s) ---\n",
+                        smallest.degenerate ? " --degenerate" : "");
+            write_text(stdout, smallest);
+            std::printf("--- its comparison ---\n%s", again.text.c_str());
+            std::printf("--- first result of the unminimised input ---\n%s---\n", result.text.c_str());
+            if (!out_dir.empty()) {
+                const std::string path = out_dir + "/search_" + std::to_string(case_seed) + "_" +
+                                         std::to_string(failures) + (smallest.degenerate ? "_deg" : "") + ".txt";
+                if (!write_file(path, smallest)) std::fprintf(stderr, "cannot write %s\n", path.c_str());
+            }
+            std::fflush(stdout);
+            break;  // one failure per input is enough
+        }
+    }
+    const double minutes = elapsed() / 60.0;
+    std::string kind_counts;
+    for (const auto& entry : kinds) kind_counts += " " + entry.first + "=" + std::to_string(entry.second);
+    std::printf("search: kinds:%s; runs=%zu cgal_errors=%zu empty=%zu degenerate_fallbacks=%zu\n",
+                kind_counts.c_str(), runs, cgal_errors, empty, fallbacks);
+    std::printf("search: inputs=%zu per_minute=%.0f failures=%zu\n", inputs,
+                minutes > 0.0 ? static_cast<double>(inputs) / minutes : 0.0, failures);
+    return failures > 0 ? 1 : 0;
 }
 
 int usage() {
     std::fprintf(stderr,
                  "usage: segvoronoi_cgal_check <family> <n> [seed] [--write-input FILE]\n"
                  "       segvoronoi_cgal_check --file input.txt [--degenerate]\n"
+                 "       segvoronoi_cgal_check --search SECONDS [seed] [--generic] [--out DIR]\n"
+                 "       segvoronoi_cgal_check --minimise input.txt [--degenerate]\n"
                  "families: uniform clustered tiny tiny-offset huge (generic), lattice circle collinear "
                  "tiny-lattice snapped (degenerate); segments: seg-random1 seg-random2 seg-random3 seg-short "
                  "polyline square-hole polygon-holes letter-gap near-vertical (generic), polygon star tangent "
-                 "seg-lattice parallel letter (degenerate)\n");
+                 "seg-lattice parallel letter (degenerate), boost-split (generic)\n");
     return 2;
 }
 
@@ -1422,7 +2042,65 @@ bool parse_arguments(int argc, char** argv, Input& input) {
 
 }  // namespace
 
+// --minimise input.txt [--degenerate]: the search's minimisation of a
+// failing file, printed in the input format.
+int minimise_file(int argc, char** argv) {
+    if (argc < 3 || argc > 4 || (argc == 4 && std::string(argv[3]) != "--degenerate")) return usage();
+    Input input;
+    std::string error;
+    if (!read_file(argv[2], input, error)) {
+        std::fprintf(stderr, "segvoronoi_cgal_check: %s: %s\n", argv[2], error.c_str());
+        return 2;
+    }
+    input.degenerate = argc == 4;
+    if (run_one(input).outcome != Outcome::Fail) {
+        std::printf("minimise: the input does not fail\n");
+        return 0;
+    }
+    std::size_t runs = 0;
+    const std::vector<bool> flipped(input.segments.size(), false);
+    const Input smallest = minimise(input, flipped, 1, runs);
+    std::printf("minimise: segments %zu -> %zu, points %zu -> %zu, runs=%zu\n", input.segments.size(),
+                smallest.segments.size(), input.points.size(), smallest.points.size(), runs);
+    write_text(stdout, smallest);
+    std::printf("%s", run_one(smallest).text.c_str());
+    return 1;
+}
+
+// --search SECONDS [seed] [--generic] [--out DIR] and --minimise; returns
+// -1 when argv is neither.
+int search_main(int argc, char** argv) {
+    if (argc >= 2 && std::string(argv[1]) == "--minimise") return minimise_file(argc, argv);
+    if (argc < 2 || std::string(argv[1]) != "--search") return -1;
+    std::string out_dir;
+    bool generic_only = false;
+    std::vector<std::string> numbers;
+    for (int k = 2; k < argc; ++k) {
+        const std::string arg = argv[k];
+        if (arg == "--out" && k + 1 < argc) {
+            out_dir = argv[++k];
+        } else if (arg == "--generic") {
+            generic_only = true;
+        } else {
+            numbers.push_back(arg);
+        }
+    }
+    std::uint64_t seconds = 0, seed = 0;
+    if (numbers.empty() || numbers.size() > 2 || !parse_count(numbers[0].c_str(), seconds) ||
+        (numbers.size() == 2 && !parse_count(numbers[1].c_str(), seed))) {
+        return usage();
+    }
+    if (numbers.size() == 1) {
+        // A new seed each run (printed first, so that any run can be repeated).
+        seed = static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
+        seed = Rng(seed).next();
+    }
+    return search(static_cast<double>(seconds), seed, generic_only, out_dir);
+}
+
 int main(int argc, char** argv) {
+    const int searched = search_main(argc, argv);
+    if (searched >= 0) return searched;
     Input input;
     if (!parse_arguments(argc, argv, input)) return 2;
     const Sites sites(input);

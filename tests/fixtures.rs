@@ -41,6 +41,14 @@ const KNOWN: &[(&str, &str)] = &[
     ("point_near_segment_int.txt", "a point 1e-9 (relative) from a segment: a site inside a circle"),
     ("two_collinear_pieces.txt", "two pieces of one line: a vertex far from one of its sites"),
     ("neartouch_2seg.txt", "an endpoint 6e-15 from another segment: a site deep inside a circle"),
+    // Found by the harness's --search (small integer and snapped inputs
+    // with exact coincidences); wrong with the library at 1506d9a.
+    ("search_cocircular_tangent_at_endpoint.txt", "three cocircular points, the circle tangent to a segment at its endpoint"),
+    ("search_cocircular_tangent_inside.txt", "three cocircular endpoints, the circle tangent to a third segment inside"),
+    ("search_endpoint_on_separator_3seg.txt", "an endpoint exactly on another segment's perpendicular at its endpoint"),
+    ("search_point_on_segment_line_4seg.txt", "an endpoint on another segment's line, two mirror-image segments"),
+    ("search_parallel_snapped_4seg.txt", "two parallel segments on a grid of 1/16"),
+    ("search_star3_right_angle.txt", "three spokes at a point, two of them perpendicular and of equal length"),
     // KNOWN DIFFERENCE (issue 3 note, cgal.cmake): kinks of 1e-10 rad.
     ("near_vertical_chain3.txt", "a radius-0 vertex at a chain's joint with a site 0.12 away"),
 ];
