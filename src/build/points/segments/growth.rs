@@ -12,6 +12,10 @@ use crate::geometry::segment_solvers;
 use crate::geometry::site::Site;
 use crate::geometry::{fault, Point};
 
+/// How far, as a fraction of an edge, a computed crossing of the edge may
+/// lie beyond one of its ends and still be taken as at that end.
+const END_TOLERANCE: f64 = 1e-6;
+
 impl PointDiagram {
     /// Grows the tree from the path: P3, P5, the segment entering the
     /// circle (criteria 1, 2.3), never beyond a deleted vertex outside the
@@ -207,6 +211,13 @@ impl PointDiagram {
         let crossings = segment_solvers::vertex(&edge.right, &edge.left, &edge.segment)
             .zip(segment_solvers::vertex(&edge.left, &edge.right, &edge.segment))
             .map(|((near_origin, _), (near_target, _))| (edge.arc.parameter(near_origin), edge.arc.parameter(near_target)));
+        // Both ends of the edge are in conflict (certified), so a crossing
+        // is inside the edge: one a rounding error beyond an end (the end
+        // vertex almost on the new cell's boundary) is at that end.
+        let crossings = crossings.map(|(t1, t2)| {
+            let at_end = |t: f64, end: f64| if (t - end).abs() <= END_TOLERANCE { end } else { t };
+            (at_end(t1, 0.0), at_end(t2, 1.0))
+        });
         let margin = match crossings {
             Some((t1, t2)) if 0.0 <= t1 && t1 < t2 && t2 <= 1.0 => edge.excess(0.5 * (t1 + t2)),
             Some((t1, t2)) => -(t1 - t2).abs().max(f64::MIN_POSITIVE),
