@@ -211,14 +211,11 @@ segvoronoi_cgal_fixture_test(coastline_2seg)
 # KNOWN DIFFERENCE until the exact segment predicates land: near-degenerate
 # inputs where the double-precision segment predicates decide a sign wrongly
 # (valid diagrams, but not CGAL's exact one). Re-enable by deleting a name.
+# (fan_equal_length_2seg, neartouch_2seg, two_collinear_pieces,
+# tangent4_near_cocircular, circle32_icon and coastline_2seg differed too
+# until the certified segment conflict, c36f015..0ecd87d.)
 set_tests_properties(
-  cgal_fixture_fan_equal_length_2seg
-  cgal_fixture_neartouch_2seg
-  cgal_fixture_two_collinear_pieces
   cgal_fixture_point_near_segment_int
-  cgal_fixture_tangent4_near_cocircular
-  cgal_fixture_circle32_icon
-  cgal_fixture_coastline_2seg
   PROPERTIES DISABLED TRUE)
 
 # Boost.Polygon's benchmark style (boost-split): n random segments on the
@@ -242,7 +239,11 @@ set_tests_properties(cgal_search cgal_search_generic PROPERTIES TIMEOUT 300 LABE
 
 # Found by the randomised search (cgal_search) at 1506d9a and minimised
 # (segvoronoi_cgal_check --minimise). Exactly degenerate inputs, compared
-# with --degenerate where CGAL has a Voronoi edge of length zero.
+# with --degenerate where CGAL has a Voronoi edge of length zero. All but
+# the first were valid but wrong diagrams there (vertices off by a large
+# part of their radius, tests/fixtures.rs's empty-circle check failed
+# too), ties in the segment predicates where exact coincidences meet; they
+# agree since the certified segment conflict (c36f015..0ecd87d).
 # an L of two perpendicular segments of equal length (split-1000): EDGES and FACES are not unique there; agrees as degenerate
 segvoronoi_cgal_fixture_test(search_perpendicular_equal_arms_2seg --degenerate)
 # a point and two segments: three points on one circle that touches a segment at its endpoint (junctions-20)
@@ -259,17 +260,3 @@ segvoronoi_cgal_fixture_test(search_endpoint_on_separator_3seg)
 segvoronoi_cgal_fixture_test(search_point_on_segment_line_4seg)
 # two parallel segments with coordinates on a grid of 1/16 (snapped-4)
 segvoronoi_cgal_fixture_test(search_parallel_snapped_4seg)
-
-# KNOWN DIFFERENCE found by the search: valid diagrams that are wrong (the
-# brute-force empty-circle check of tests/fixtures.rs fails on them too,
-# vertices off by a large fraction of their radius) where exact
-# coincidences (a tie in a segment predicate) meet. Re-enable by deleting a
-# name once the exact segment predicates land.
-set_tests_properties(
-  cgal_fixture_search_cocircular_tangent_at_endpoint
-  cgal_fixture_search_cocircular_tangent_inside
-  cgal_fixture_search_star3_right_angle
-  cgal_fixture_search_endpoint_on_separator_3seg
-  cgal_fixture_search_point_on_segment_line_4seg
-  cgal_fixture_search_parallel_snapped_4seg
-  PROPERTIES DISABLED TRUE)
