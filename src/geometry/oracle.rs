@@ -352,23 +352,29 @@ impl System {
         })
     }
 
-    /// The residuals and the Jacobian at `(x, y, r)`; `None` where a
-    /// derivative does not exist (the centre on a point site).
+    /// The residuals and the Jacobian at `(x, y, r)` of the system Newton
+    /// solves; `None` where a derivative does not exist (the centre on a
+    /// point site).
+    ///
+    /// Equivalent to the tangency equations but conditioned like the
+    /// problem, not worse: one equation (the first point's, else the first
+    /// line's) fixes `r`, and the other two are taken relative to it, free
+    /// of `r` — for two points their bisector `n·(c − m) = 0` in unit-normal
+    /// form. (With the tangency equations themselves, a circle much larger
+    /// than its sites moves `c` and `r` together and the Jacobian is
+    /// singular in `f64`.)
     fn linearise<T: Real>(&self, v: &[T; 3], lift: &impl Fn(f64) -> T) -> Option<([T; 3], [[T; 3]; 3])> {
         let [x, y, r] = v;
         let zero = lift(0.0);
-        let mut f: [T; 3] = [zero.clone(), zero.clone(), zero.clone()];
-        let mut j: [[T; 3]; 3] = std::array::from_fn(|_| [zero.clone(), zero.clone(), zero.clone()]);
-        for (k, equation) in self.0.iter().enumerate() {
-            match *equation {
+        let one = lift(1.0);
+        let rows: Vec<(T, [T; 3])> = self
+            .0
+            .iter()
+            .map(|equation| match *equation {
                 Equation::Circle(p) => {
                     let (dx, dy) = (x.sub(&lift(p.x)), y.sub(&lift(p.y)));
                     let rho = dx.mul(&dx).add(&dy.mul(&dy)).sqrt();
-                    if rho.signum() == 0 {
-                        return None;
-                    }
-                    f[k] = rho.sub(r);
-                    j[k] = [dx.div(&rho), dy.div(&rho), lift(-1.0)];
+                    (rho.signum() != 0).then(|| (rho.sub(r), [dx.div(&rho), dy.div(&rho), one.neg()]))
                 }
                 Equation::Line { a, b, side } => {
                     let (ux, uy) = (lift(b.x).sub(&lift(a.x)), lift(b.y).sub(&lift(a.y)));
@@ -376,18 +382,44 @@ impl System {
                     let s = lift(side);
                     let (nx, ny) = (uy.neg().mul(&s).div(&length), ux.mul(&s).div(&length));
                     let (vx, vy) = (x.sub(&lift(a.x)), y.sub(&lift(a.y)));
-                    f[k] = nx.mul(&vx).add(&ny.mul(&vy)).sub(r);
-                    j[k] = [nx, ny, lift(-1.0)];
+                    Some((nx.mul(&vx).add(&ny.mul(&vy)).sub(r), [nx, ny, one.neg()]))
                 }
                 Equation::Perpendicular { p, direction } => {
                     let (ux, uy) = (lift(direction.x), lift(direction.y));
                     let length = ux.mul(&ux).add(&uy.mul(&uy)).sqrt();
                     let (ux, uy) = (ux.div(&length), uy.div(&length));
                     let (vx, vy) = (x.sub(&lift(p.x)), y.sub(&lift(p.y)));
-                    f[k] = ux.mul(&vx).add(&uy.mul(&vy));
-                    j[k] = [ux, uy, zero.clone()];
+                    Some((ux.mul(&vx).add(&uy.mul(&vy)), [ux, uy, zero.clone()]))
                 }
-            }
+            })
+            .collect::<Option<_>>()?;
+        let anchor = self
+            .0
+            .iter()
+            .position(|e| matches!(e, Equation::Circle(_)))
+            .or_else(|| self.0.iter().position(|e| matches!(e, Equation::Line { .. })))?;
+        let mut f: [T; 3] = [zero.clone(), zero.clone(), zero.clone()];
+        let mut j: [[T; 3]; 3] = std::array::from_fn(|_| [zero.clone(), zero.clone(), zero.clone()]);
+        for (k, (value, gradient)) in rows.iter().enumerate() {
+            (f[k], j[k]) = match (self.0[anchor], self.0[k]) {
+                _ if k == anchor => (value.clone(), gradient.clone()),
+                (_, Equation::Perpendicular { .. }) => (value.clone(), gradient.clone()),
+                (Equation::Circle(p), Equation::Circle(q)) => {
+                    // |c - q| - |c - p| = 0 as the bisector of p and q
+                    let (nx, ny) = (lift(p.x).sub(&lift(q.x)), lift(p.y).sub(&lift(q.y)));
+                    let length = nx.mul(&nx).add(&ny.mul(&ny)).sqrt();
+                    let (nx, ny) = (nx.div(&length), ny.div(&length));
+                    let half = lift(0.5);
+                    let (mx, my) = (lift(p.x).add(&lift(q.x)).mul(&half), lift(p.y).add(&lift(q.y)).mul(&half));
+                    let value = nx.mul(&x.sub(&mx)).add(&ny.mul(&y.sub(&my)));
+                    (value, [nx, ny, zero.clone()])
+                }
+                _ => {
+                    let (base, base_gradient) = &rows[anchor];
+                    let g = [gradient[0].sub(&base_gradient[0]), gradient[1].sub(&base_gradient[1]), zero.clone()];
+                    (value.sub(base), g)
+                }
+            };
         }
         Some((f, j))
     }
@@ -407,11 +439,15 @@ impl System {
     /// convergence (the step no longer shrinks before it is below the
     /// precision, or a singular Jacobian).
     fn newton<T: Real>(&self, start: [T; 3], lift: &impl Fn(f64) -> T, size: f64, bits: u64) -> Option<([T; 3], f64, f64)> {
-        let tolerance = 2f64.powi(24 - bits as i32) * size;
+        let unit = 2f64.powi(-(bits as i32)) * size;
         let mut v = start;
         let mut previous = f64::INFINITY;
         for _ in 0..MAX_STEPS {
             let (f, j) = self.linearise(&v, lift)?;
+            // Rounding leaves steps of about ‖J⁻¹‖ units in the last place:
+            // below that, the iteration has converged.
+            let condition = inverse_norm(&j.clone().map(|row| row.map(|x| x.to_f64())))?;
+            let tolerance = unit * 2f64.powi(24).max(256.0 * condition);
             let step = solve3(&j, &f)?;
             let step_size = step.iter().fold(0.0f64, |m, s| m.max(s.to_f64().abs()));
             if !step_size.is_finite() || step_size > 2.0 * previous.max(tolerance) {
@@ -419,7 +455,6 @@ impl System {
             }
             v = [v[0].sub(&step[0]), v[1].sub(&step[1]), v[2].sub(&step[2])];
             if step_size <= tolerance {
-                let condition = inverse_norm(&j.map(|row| row.map(|x| x.to_f64())))?;
                 return Some((v, step_size, condition));
             }
             previous = step_size;
