@@ -64,6 +64,14 @@ pub mod fault_injection {
     pub use crate::geometry::fault::{set_fault_mode, FaultMode};
 }
 
+/// Diagnostics for benchmarks and tests: how the segment predicates of
+/// the builds on this thread were decided (the `f64` filter, or one of the
+/// refinement stages of `geometry::oracle`). Rust only; not part of the C
+/// API.
+pub mod diagnostics {
+    pub use crate::geometry::oracle::{take_predicate_counts, PredicateCounts};
+}
+
 /// The README's Rust quick start, run as a doctest so it cannot rot.
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]

@@ -92,27 +92,87 @@ pub(crate) fn reach(
     question: Reach,
     depth: f64,
 ) -> Option<CirclePosition> {
+    let (stage, answer) = decide(sites, centre, radius, question, depth);
+    COUNTS.with(|c| {
+        let mut counts = c.get();
+        counts.by_stage[stage as usize] += 1;
+        c.set(counts);
+    });
+    answer
+}
+
+/// Which stage decided a question (see the module documentation).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Stage {
+    Filter,
+    Exact,
+    DoubleDouble,
+    BigFloat,
+    Zero,
+    Unrefined,
+}
+
+/// How the questions asked on one thread were decided, by stage.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct PredicateCounts {
+    /// Per stage: the `f64` filter, the exact check of a rounded vertex,
+    /// double-double, big floats, taken as zero, and left to the `f64` value
+    /// (no convergence or a degenerate triple).
+    pub by_stage: [u64; 6],
+}
+
+impl PredicateCounts {
+    /// Questions the `f64` filter decided.
+    pub fn filtered(&self) -> u64 {
+        self.by_stage[Stage::Filter as usize]
+    }
+
+    /// Questions asked in all.
+    pub fn total(&self) -> u64 {
+        self.by_stage.iter().sum()
+    }
+}
+
+thread_local! {
+    static COUNTS: std::cell::Cell<PredicateCounts> = const { std::cell::Cell::new(PredicateCounts { by_stage: [0; 6] }) };
+}
+
+/// The counts of this thread since the last [`take_predicate_counts`], and
+/// zero from now on.
+pub fn take_predicate_counts() -> PredicateCounts {
+    COUNTS.with(|c| c.replace(PredicateCounts::default()))
+}
+
+fn decide(
+    sites: impl FnOnce() -> [Site; 3],
+    centre: Point,
+    radius: f64,
+    question: Reach,
+    depth: f64,
+) -> (Stage, Option<CirclePosition>) {
     let size = question.size(centre, radius);
     if !(size.is_finite() && depth.is_finite()) {
-        return None;
+        return (Stage::Unrefined, None);
     }
     if depth.abs() > 1e-3 * size {
-        return Some(sign_position(depth));
+        return (Stage::Filter, Some(sign_position(depth)));
     }
-    let system = System::of(&sites(), centre)?;
+    let Some(system) = System::of(&sites(), centre) else {
+        return (Stage::Unrefined, None);
+    };
     if let Some(error) = system.f64_error(centre, radius, size) {
         if depth.abs() > 4.0 * error + 16.0 * f64::EPSILON * size {
-            return Some(sign_position(depth));
+            return (Stage::Filter, Some(sign_position(depth)));
         }
     }
     if let Some(exact) = system.exact_answer(centre, radius, &question) {
-        return Some(exact);
+        return (Stage::Exact, Some(exact));
     }
     let start = [centre.x, centre.y, radius];
     // double-double first (cheap, no allocation), then big floats
     let dd = DoubleDouble::from_f64;
     if let Some(answer) = refine(&system, &question, start.map(dd), &dd, size, DOUBLE_DOUBLE_BITS) {
-        return Some(answer);
+        return (Stage::DoubleDouble, Some(answer));
     }
     let mut start = start.map(|x| BigFloat::from_f64(x, PRECISIONS[0]));
     let mut converged = false;
@@ -120,7 +180,7 @@ pub(crate) fn reach(
         let lift = |x: f64| BigFloat::from_f64(x, bits);
         let begin = start.clone().map(|x| x.with_precision(bits));
         match refine_big(&system, &question, begin, &lift, size, bits) {
-            Refined::Decided(answer) => return Some(answer),
+            Refined::Decided(answer) => return (Stage::BigFloat, Some(answer)),
             // the next precision starts from this one's solution
             Refined::Undecided(solution) => {
                 start = solution;
@@ -131,7 +191,11 @@ pub(crate) fn reach(
     }
     // Zero within 2^-1150 or so of the size: on the circle. Without
     // convergence at any precision the rounded value stands.
-    converged.then_some(CirclePosition::On)
+    if converged {
+        (Stage::Zero, Some(CirclePosition::On))
+    } else {
+        (Stage::Unrefined, None)
+    }
 }
 
 /// What one precision of the refinement found.
