@@ -101,6 +101,43 @@ pub(crate) fn reach(
     answer
 }
 
+/// The vertex of `sites` nearer the truth than the solver's `(centre,
+/// radius)` when that misses the tangency equations by more than rounding
+/// (an ill-conditioned solve: nearly parallel lines, a circle far larger
+/// than its sites): Newton's method in double-double from it, the result
+/// rounded to `f64`. `None` when the solve was fine or the polish does not
+/// converge.
+pub(crate) fn polish_vertex(sites: &[Site; 3], centre: Point, radius: f64) -> Option<(Point, f64)> {
+    // Cheap first: how far each site is from the circle.
+    let size = radius.abs() + sites.iter().map(|s| representative(s).distance(centre)).fold(0.0, f64::max);
+    let residual = sites.iter().map(|s| (s.distance(centre) - radius).abs()).fold(0.0, f64::max);
+    if !(residual > POLISH_TOLERANCE * size) {
+        return None;
+    }
+    POLISHED.with(|p| p.set(p.get() + 1));
+    let system = System::of(sites, centre)?;
+    let dd = DoubleDouble::from_f64;
+    let (solution, _, _) = system.newton([centre.x, centre.y, radius].map(dd), &dd, size, DOUBLE_DOUBLE_BITS)?;
+    let [x, y, r] = solution.map(|v| v.to_f64());
+    (x.is_finite() && y.is_finite() && r.is_finite() && r >= 0.0).then_some((Point::new(x, y), r))
+}
+
+/// A solver's result is polished when a site is farther than this, times
+/// the configuration's size, from its circle.
+const POLISH_TOLERANCE: f64 = 1e-12;
+
+thread_local! {
+    static POLISHED: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+}
+
+/// One point of a site, for sizes: the point, or a segment's first end.
+fn representative(site: &Site) -> Point {
+    match *site {
+        Site::Point(p) => p,
+        Site::Segment { a, .. } => a,
+    }
+}
+
 /// Which stage decided a question (see the module documentation).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Stage {
@@ -119,6 +156,9 @@ pub struct PredicateCounts {
     /// double-double, big floats, taken as zero, and left to the `f64` value
     /// (no convergence or a degenerate triple).
     pub by_stage: [u64; 6],
+    /// Vertices whose solver result missed its sites by more than rounding
+    /// and was polished by Newton's method (`polish_vertex`).
+    pub polished_vertices: u64,
 }
 
 impl PredicateCounts {
@@ -134,13 +174,15 @@ impl PredicateCounts {
 }
 
 thread_local! {
-    static COUNTS: std::cell::Cell<PredicateCounts> = const { std::cell::Cell::new(PredicateCounts { by_stage: [0; 6] }) };
+    static COUNTS: std::cell::Cell<PredicateCounts> = const { std::cell::Cell::new(PredicateCounts { by_stage: [0; 6], polished_vertices: 0 }) };
 }
 
 /// The counts of this thread since the last [`take_predicate_counts`], and
 /// zero from now on.
 pub fn take_predicate_counts() -> PredicateCounts {
-    COUNTS.with(|c| c.replace(PredicateCounts::default()))
+    let mut counts = COUNTS.with(|c| c.replace(PredicateCounts::default()));
+    counts.polished_vertices = POLISHED.with(|p| p.replace(0));
+    counts
 }
 
 fn decide(
@@ -171,8 +213,18 @@ fn decide(
     let start = [centre.x, centre.y, radius];
     // double-double first (cheap, no allocation), then big floats
     let dd = DoubleDouble::from_f64;
-    if let Some(answer) = refine(&system, &question, start.map(dd), &dd, size, DOUBLE_DOUBLE_BITS) {
-        return (Stage::DoubleDouble, Some(answer));
+    match refine_at(&system, &question, start.map(dd), &dd, size, DOUBLE_DOUBLE_BITS) {
+        Refined::Decided(answer) => return (Stage::DoubleDouble, Some(answer)),
+        Refined::Undecided(solution) => {
+            // Near zero: the vertex may be one with a short binary expansion
+            // that the solver's rounding missed (a degenerate input with few
+            // bits); rounded from the refined solution it is checked exactly.
+            let [x, y, r] = solution.map(|v| v.to_f64());
+            if let Some(exact) = system.exact_answer(Point::new(x, y), r, &question) {
+                return (Stage::Exact, Some(exact));
+            }
+        }
+        Refined::Failed => {}
     }
     let mut start = start.map(|x| BigFloat::from_f64(x, PRECISIONS[0]));
     let mut converged = false;
@@ -205,21 +257,6 @@ enum Refined<T> {
     Undecided([T; 3]),
     /// No convergence at this precision.
     Failed,
-}
-
-/// The double-double stage: `Some` when decided.
-fn refine(
-    system: &System,
-    question: &Reach,
-    start: [DoubleDouble; 3],
-    lift: &impl Fn(f64) -> DoubleDouble,
-    size: f64,
-    bits: u64,
-) -> Option<CirclePosition> {
-    match refine_at(system, question, start, lift, size, bits) {
-        Refined::Decided(answer) => Some(answer),
-        _ => None,
-    }
 }
 
 fn refine_big(

@@ -306,7 +306,14 @@ impl PointDiagram {
             return;
         }
         let [ga, gb, gc] = sites.map(|s| self.site_geometry(s));
-        let (pos, clearance) = segment_solvers::vertex(&ga, &gb, &gc).unwrap_or_else(|| {
+        let solved = segment_solvers::vertex(&ga, &gb, &gc);
+        // An ill-conditioned solve (nearly parallel lines, a circle far
+        // larger than its sites) is polished against the sites themselves.
+        let solved = match solved {
+            Some((c, r)) if !fault::active() => Some(oracle::polish_vertex(&[ga, gb, gc], c, r).unwrap_or((c, r))),
+            other => other,
+        };
+        let (pos, clearance) = solved.unwrap_or_else(|| {
             // No circle: keep the topology, place the vertex among its sites.
             let r = sites.map(|s| self.representative(s));
             let g = Point::new((r[0].x + r[1].x + r[2].x) / 3.0, (r[0].y + r[1].y + r[2].y) / 3.0);
