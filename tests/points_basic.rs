@@ -38,7 +38,7 @@ fn square_lattice_is_degenerate_but_valid() {
     }
     let d = build(&pts);
     check_empty_circles(&d, 1e-9);
-    let t = d.topology(TopologyOptions { voronoi_pairs: true });
+    let t = d.topology(TopologyOptions { voronoi_pairs: true, ..Default::default() });
     // each interior lattice point has 4 Voronoi neighbours through positive-length edges
     let vpairs: usize = t.lines().find(|l| l.starts_with("VPAIRS")).unwrap()[7..].parse().unwrap();
     assert_eq!(vpairs, 2 * 30 * 29);

@@ -3,6 +3,7 @@
 use std::ffi::c_char;
 
 use super::plumbing::{guard, guard_or, into_c_string, require_non_null, segvoronoi_status};
+use crate::query::ZERO_LENGTH;
 use crate::{Diagram, EdgeEnd, EdgeId, Site, SiteId, TopologyOptions, VertexId};
 
 /// Marks an edge end at infinity in `segvoronoi_edge_end::vertex`.
@@ -15,6 +16,11 @@ pub const SEGVORONOI_NO_SITE: u32 = u32::MAX;
 /// Flag for `segvoronoi_diagram_topology`: add the `VPAIRS` and `VVERTICES`
 /// sections (positive-length edges; vertices merged across zero-length edges).
 pub const SEGVORONOI_TOPOLOGY_VORONOI_PAIRS: u32 = 1;
+
+/// Flag for `segvoronoi_diagram_topology`: in `VPAIRS` and `VVERTICES`, also
+/// take edges shorter than 1e-9 of the input's bounding-box diagonal as
+/// zero-length (by default only edges whose sites are exactly cocircular).
+pub const SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE: u32 = 2;
 
 /// A built Voronoi diagram. Opaque and immutable: any number of threads may
 /// read it at once. Free with `segvoronoi_diagram_free`.
@@ -375,7 +381,8 @@ pub unsafe extern "C" fn segvoronoi_diagram_stats(
 
 /// The canonical topology text (`EDGES`, `FACES`, and with
 /// `SEGVORONOI_TOPOLOGY_VORONOI_PAIRS` in `flags` also `VPAIRS`,
-/// `VVERTICES`): NUL-terminated in `*text`, its length without the NUL in
+/// `VVERTICES`, with zero length decided exactly unless
+/// `SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE` is set too): NUL-terminated in `*text`, its length without the NUL in
 /// `*length` (`length` may be NULL).
 ///
 /// Ownership: the caller owns `*text` and frees it with
@@ -391,11 +398,14 @@ pub unsafe extern "C" fn segvoronoi_diagram_topology(
     require_non_null!(text);
     // SAFETY: text is non-null and writable.
     unsafe { *text = std::ptr::null_mut() };
-    if flags & !SEGVORONOI_TOPOLOGY_VORONOI_PAIRS != 0 {
+    if flags & !(SEGVORONOI_TOPOLOGY_VORONOI_PAIRS | SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE) != 0 {
         return segvoronoi_status::InvalidArgument;
     }
     with_diagram(diagram, |d| {
-        let options = TopologyOptions { voronoi_pairs: flags & SEGVORONOI_TOPOLOGY_VORONOI_PAIRS != 0 };
+        let options = TopologyOptions {
+            voronoi_pairs: flags & SEGVORONOI_TOPOLOGY_VORONOI_PAIRS != 0,
+            zero_length_tolerance: (flags & SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE != 0).then_some(ZERO_LENGTH),
+        };
         let (ptr, len) = into_c_string(d.topology(options));
         if !length.is_null() {
             write_out(length, len);

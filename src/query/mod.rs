@@ -7,4 +7,4 @@ mod topology;
 
 pub use access::{Cell, Edge, EdgeEnd, Vertex};
 pub use shape::EdgeShape;
-pub use topology::TopologyOptions;
+pub use topology::{TopologyOptions, ZERO_LENGTH};

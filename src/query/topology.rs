@@ -11,22 +11,36 @@
 //! Site names: `P<k>` for point site `k`, `S<j>` for the open segment of
 //! input segment `j`. Names in a line are sorted (`P` before
 //! `S`, then by index), and lines are sorted by their sequence of names.
-//! Edges shorter than `1e-9` times the input's bounding-box diagonal count as
-//! zero-length.
+//! An edge has zero length when its two vertices are one point: when the
+//! fourth site (the one of the second vertex that the first lacks) lies
+//! exactly on the first vertex's circle — cocircular sites. That is decided
+//! from the sites, not from the rounded positions (true edges of 1e-15 of
+//! the extent are common in real data): exactly for points
+//! (`predicates::in_circle`), by the certified segment predicate
+//! (`geometry::oracle`) otherwise. [`ZERO_LENGTH`] is a tolerance a user may
+//! ask for instead ([`TopologyOptions::zero_length_tolerance`]).
 
 use std::fmt::Write;
 
 use crate::diagram::{Diagram, SiteId, VertexId};
+use crate::geometry::oracle::{self, Reach};
+use crate::geometry::predicates::{in_circle, CirclePosition};
+use crate::geometry::Site;
 
-/// Relative length below which an edge counts as zero-length.
+/// A relative length below which an edge may be taken as zero-length, for
+/// users who want a tolerance ([`TopologyOptions::zero_length_tolerance`]).
 pub const ZERO_LENGTH: f64 = 1e-9;
 
 /// What the topology text contains beyond `EDGES` and `FACES`.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct TopologyOptions {
     /// Add the `VPAIRS` and `VVERTICES` sections, which are the same for
     /// every valid answer on degenerate input.
     pub voronoi_pairs: bool,
+    /// Take edges shorter than this times the input's bounding-box
+    /// diagonal as zero-length too (`None`, the default: only edges whose
+    /// sites are exactly cocircular).
+    pub zero_length_tolerance: Option<f64>,
 }
 
 /// A site name: kind (0 = point, 1 = segment) and index.
@@ -75,25 +89,67 @@ impl Diagram {
         let faces = self.vertices().map(|v| v.sites.iter().map(|&s| self.name(s)).collect()).collect();
         write_section(&mut out, "FACES", faces);
         if options.voronoi_pairs {
-            self.write_voronoi_pairs(&mut out);
+            self.write_voronoi_pairs(&mut out, options.zero_length_tolerance);
         }
         out
     }
 
-    /// Length of an edge with two finite ends, or `None` for rays and lines.
-    fn finite_length(&self, e: &crate::query::Edge) -> Option<(VertexId, VertexId, f64)> {
+    /// The two ends of an edge with two finite ends, or `None` for rays and
+    /// lines.
+    fn finite_vertices_of(&self, e: &crate::query::Edge) -> Option<(VertexId, VertexId)> {
         use crate::query::EdgeEnd::Vertex;
         match e.ends {
-            [Vertex(a), Vertex(b)] => {
-                let (pa, pb) = (self.store.position[a.index()], self.store.position[b.index()]);
-                Some((a, b, pa.distance(pb)))
-            }
+            [Vertex(a), Vertex(b)] => Some((a, b)),
             _ => None,
         }
     }
 
-    fn write_voronoi_pairs(&self, out: &mut String) {
-        let threshold = ZERO_LENGTH * self.extent;
+    /// Whether the finite vertices `a` and `b`, joined by an edge, are one
+    /// point: the site of `b` that `a` lacks is exactly on `a`'s circle.
+    pub(crate) fn is_zero_length_edge(&self, a: VertexId, b: VertexId) -> bool {
+        let (Some(va), Some(vb)) = (self.vertex(a), self.vertex(b)) else { return false };
+        if va.position == vb.position {
+            return true;
+        }
+        let Some(&fourth) = vb.sites.iter().find(|s| !va.sites.contains(s)) else {
+            // the same three sites: two different circles touching them
+            return false;
+        };
+        let sites = va.sites.map(|s| self.site(s));
+        let (c, r) = (va.position, va.clearance);
+        let on = |position: Option<CirclePosition>| position == Some(CirclePosition::On);
+        match self.site(fourth) {
+            Site::Point(q) => match sites {
+                [Site::Point(p0), Site::Point(p1), Site::Point(p2)] => in_circle(p0, p1, p2, q) == CirclePosition::On,
+                _ => on(oracle::reach(|| sites, c, r, Reach::Distance { a: q, b: q }, q.distance(c) - r)),
+            },
+            Site::Segment { a: s, b: t } => {
+                // An endpoint of the segment on the circle: the vertices are
+                // one point when the circle is tangent there, i.e. the centre
+                // is on the segment's perpendicular at that endpoint.
+                let end = sites.iter().find_map(|g| g.as_point().filter(|&p| p == s || p == t));
+                match end {
+                    Some(e) => {
+                        let other = if e == s { t } else { s };
+                        let depth = -((c.x - e.x) * (other.x - e.x) + (c.y - e.y) * (other.y - e.y));
+                        on(oracle::reach(|| sites, c, r, Reach::Entering { from: e, to: other }, depth))
+                    }
+                    None => {
+                        let depth = Site::Segment { a: s, b: t }.distance(c) - r;
+                        on(oracle::reach(|| sites, c, r, Reach::Distance { a: s, b: t }, depth))
+                    }
+                }
+            }
+        }
+    }
+
+    fn write_voronoi_pairs(&self, out: &mut String, tolerance: Option<f64>) {
+        let threshold = tolerance.map_or(-1.0, |t| t * self.extent);
+        let short = |a: VertexId, b: VertexId| {
+            let (pa, pb) = (self.store.position[a.index()], self.store.position[b.index()]);
+            let length = pa.distance(pb);
+            length <= threshold || self.is_zero_length_edge(a, b)
+        };
         let mut pairs = Vec::new();
         let mut parent: Vec<u32> = (0..self.vertex_count() as u32).collect();
         fn root(parent: &mut [u32], mut v: u32) -> u32 {
@@ -104,8 +160,8 @@ impl Diagram {
             v
         }
         for e in self.edges() {
-            match self.finite_length(&e) {
-                Some((a, b, len)) if len <= threshold || len.is_nan() => {
+            match self.finite_vertices_of(&e) {
+                Some((a, b)) if short(a, b) => {
                     let (ra, rb) = (root(&mut parent, a.0), root(&mut parent, b.0));
                     parent[ra as usize] = rb;
                 }
