@@ -28,6 +28,11 @@
 // sections (positive-length edges; vertices merged across zero-length edges).
 #define SEGVORONOI_TOPOLOGY_VORONOI_PAIRS 1
 
+// Flag for `segvoronoi_diagram_topology`: in `VPAIRS` and `VVERTICES`, also
+// take edges shorter than 1e-9 of the input's bounding-box diagonal as
+// zero-length (by default only edges whose sites are exactly cocircular).
+#define SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE 2
+
 // `segvoronoi_site.kind` of a point site.
 #define SEGVORONOI_SITE_POINT 0
 
@@ -345,7 +350,8 @@ enum segvoronoi_status segvoronoi_diagram_stats(const struct segvoronoi_diagram 
 
 // The canonical topology text (`EDGES`, `FACES`, and with
 // `SEGVORONOI_TOPOLOGY_VORONOI_PAIRS` in `flags` also `VPAIRS`,
-// `VVERTICES`): NUL-terminated in `*text`, its length without the NUL in
+// `VVERTICES`, with zero length decided exactly unless
+// `SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE` is set too): NUL-terminated in `*text`, its length without the NUL in
 // `*length` (`length` may be NULL).
 //
 // Ownership: the caller owns `*text` and frees it with
