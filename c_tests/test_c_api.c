@@ -520,6 +520,24 @@ static void test_lattice(void) {
     segvoronoi_diagram_free(d);
 }
 
+/* Zero length is exact by default: four points 1e-12 from cocircular have
+ * two Voronoi vertices 1e-12 apart, merged only with the tolerance flag. */
+static void test_zero_length_is_exact(void) {
+    const double xy[8] = {0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 1.0 + 1e-12};
+    segvoronoi_diagram *d = build_diagram(xy, 4);
+    char *text = NULL;
+    check_diagram(d);
+    CHECK_STATUS(segvoronoi_diagram_topology(d, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS, &text, NULL), SEGVORONOI_STATUS_OK);
+    CHECK(text != NULL && strstr(text, "\nVPAIRS 5\n") != NULL && strstr(text, "\nVVERTICES 2\n") != NULL);
+    segvoronoi_string_free(text);
+    CHECK_STATUS(segvoronoi_diagram_topology(d, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS | SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE,
+                                             &text, NULL),
+                 SEGVORONOI_STATUS_OK);
+    CHECK(text != NULL && strstr(text, "\nVPAIRS 4\n") != NULL && strstr(text, "\nVVERTICES 1\n") != NULL);
+    segvoronoi_string_free(text);
+    segvoronoi_diagram_free(d);
+}
+
 /* Random points at several magnitudes, including a huge offset (1e150, not
  * more: the checks here square coordinates in plain doubles). */
 static void test_random_inputs(void) {
@@ -814,9 +832,12 @@ static void test_segment_shapes(void) {
     if (d != NULL) {
         check_diagram(d);
         CHECK(segvoronoi_diagram_site_count(d) == 24);
-        /* Every side touches the inscribed circle: one merged vertex of all
-         * twelve segments at the centre. */
-        CHECK_STATUS(segvoronoi_diagram_topology(d, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS, &text, NULL),
+        /* Every side touches the inscribed circle up to rounding (cos and
+         * sin are rounded, so exactly the centre is several vertices a few
+         * ulps apart): with the tolerance, one merged vertex of all twelve
+         * segments at the centre. */
+        CHECK_STATUS(segvoronoi_diagram_topology(
+                         d, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS | SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE, &text, NULL),
                      SEGVORONOI_STATUS_OK);
         CHECK(text != NULL && strstr(text, "\nS0 S1 S2 S3 S4 S5 S6 S7 S8 S9 S10 S11\n") != NULL);
         segvoronoi_string_free(text);
@@ -923,6 +944,7 @@ int segvoronoi_run_c_tests(void) {
     test_small_and_degenerate_diagrams();
     test_square_with_centre();
     test_lattice();
+    test_zero_length_is_exact();
     test_random_inputs();
     test_segment_input_rules();
     test_intersecting_segments();
