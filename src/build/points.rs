@@ -19,9 +19,10 @@
 
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
 use crate::diagram::Store;
+use crate::geometry::point_predicates::{self, VertexCircle};
 use crate::geometry::predicates::{in_circle, strictly_closer_given, in_half_plane_circle, CirclePosition};
-use crate::geometry::solvers::{circumcircle, left_normal};
-use crate::geometry::{fault, Point};
+use crate::geometry::vertex_placement;
+use crate::geometry::Point;
 
 pub(crate) use super::order::insertion_order;
 
@@ -172,38 +173,23 @@ impl PointDiagram {
         self.store.right[b..b + 3].copy_from_slice(&sites);
     }
 
-    /// Computes the position and clearance of `v` from its three sites.
+    /// Computes the position and clearance of `v` from its three sites
+    /// (`geometry::vertex_placement`): a vertex at infinity stores the
+    /// direction of its edge and an infinite clearance.
     fn place_vertex(&mut self, v: VertexId) {
-        let [a, b, c] = self.store.sites_of(v);
-        if self.has_segment([a, b, c]) {
-            self.place_segment_vertex(v);
-            return;
-        }
-        let (pos, clearance) = match infinite_rotation([a, b, c]) {
+        let sites = self.store.sites_of(v);
+        let (pos, clearance) = match infinite_rotation(sites) {
             Some((x, y)) => {
-                let dir = left_normal(self.sites[x.index()], self.sites[y.index()]);
-                (dir.unwrap_or_default(), f64::INFINITY)
+                let direction = vertex_placement::direction_at_infinity(self.site_geometry(x), self.site_geometry(y));
+                (direction, f64::INFINITY)
             }
+            None if self.has_segment(sites) => vertex_placement::circle_of_sites(&sites.map(|s| self.site_geometry(s))),
             None => {
-                let (pa, pb, pc) = (self.sites[a.index()], self.sites[b.index()], self.sites[c.index()]);
-                // No circle (only when the predicates were made to lie): keep
-                // the topology, put the vertex at the centroid.
-                circumcircle(pa, pb, pc).unwrap_or_else(|| {
-                    let g = Point::new((pa.x + pb.x + pc.x) / 3.0, (pa.y + pb.y + pc.y) / 3.0);
-                    (g, g.distance(pa))
-                })
+                let [a, b, c] = sites.map(|s| self.sites[s.index()]);
+                vertex_placement::circle_of_points(a, b, c)
             }
         };
-        self.set_position(v, pos, clearance);
-    }
-
-    /// Stores a computed position (perturbed in the fault-injection build).
-    fn set_position(&mut self, v: VertexId, pos: Point, clearance: f64) {
-        self.store.position[v.index()] = if fault::active() {
-            Point::new(fault::perturb(pos.x), fault::perturb(pos.y))
-        } else {
-            pos
-        };
+        self.store.position[v.index()] = vertex_placement::as_stored(pos);
         self.store.clearance[v.index()] = clearance;
     }
 
@@ -257,29 +243,16 @@ impl PointDiagram {
         }
     }
 
-    /// How deep `p` lies inside the circle of `v` (negative inside): the
-    /// power `|p - c|^2 - r^2` of `p` for a finite vertex, minus the squared
-    /// distance beyond the hull edge for a vertex at infinity. Only used to
-    /// choose among candidates.
+    /// How deep `p` lies inside the circle of `v` (negative inside; see
+    /// `point_predicates::conflict_depth`). Only used to choose among
+    /// candidates.
     fn conflict_depth(&self, v: VertexId, p: Point) -> f64 {
-        let c = self.store.position[v.index()];
-        let depth = match infinite_rotation(self.store.sites_of(v)) {
-            Some((x, _)) => {
-                let x = self.sites[x.index()];
-                let beyond = (p.x - x.x) * c.x + (p.y - x.y) * c.y;
-                -beyond * beyond.abs()
-            }
-            None => {
-                let r = self.store.clearance[v.index()];
-                p.distance_squared(c) - r * r
-            }
+        let position = self.store.position[v.index()];
+        let circle = match infinite_rotation(self.store.sites_of(v)) {
+            Some((x, _)) => VertexCircle::AtInfinity { x: self.sites[x.index()], direction: position },
+            None => VertexCircle::Finite { centre: position, radius: self.store.clearance[v.index()] },
         };
-        let depth = fault::perturb(depth);
-        if depth.is_nan() {
-            f64::INFINITY
-        } else {
-            depth
-        }
+        point_predicates::conflict_depth(circle, p)
     }
 
     /// The vertex of `g`'s cell whose circle most clearly contains `p`,

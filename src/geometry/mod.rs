@@ -1,22 +1,30 @@
 //! Geometry: coordinates, exact sign predicates, vertex solvers, and the
 //! power-of-two normalisation of the input.
 //!
-//! Nothing here knows about the diagram. Every sign decision the construction
-//! makes goes through [`predicates`], which returns enums, so no other module
-//! compares a raw determinant with zero.
+//! Nothing here knows about the diagram. Every numerical question the
+//! construction asks is answered here, from sites, vertex positions and
+//! radii: signs as enums — [`predicates`] for points (exact),
+//! `segment_predicates` for a new segment (certified by `oracle`) — with
+//! magnitudes only for ranking (`point_predicates` ranks the conflicts of a
+//! new point), and vertex positions from `vertex_placement`. So no other
+//! module compares a raw determinant with zero, and the fault-injection
+//! build perturbs numbers only here (`fault`).
 
 mod bigfloat;
 mod double_double;
 mod expansion;
 pub(crate) mod oracle;
 pub(crate) mod parabola;
+pub(crate) mod point_predicates;
 pub(crate) mod fault;
 pub mod point;
 pub mod predicates;
 pub(crate) mod scale;
 pub mod solvers;
 pub mod site;
+pub(crate) mod segment_predicates;
 pub(crate) mod segment_solvers;
+pub(crate) mod vertex_placement;
 
 pub use point::Point;
 pub use site::Site;

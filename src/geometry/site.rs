@@ -49,6 +49,17 @@ impl Site {
         }
     }
 
+    /// One point that stands for the site: the point itself, or a
+    /// segment's midpoint (what a vertex at infinity sees of it, and where
+    /// a vertex no solver can place goes).
+    #[inline]
+    pub(crate) fn midpoint(&self) -> Point {
+        match *self {
+            Site::Point(p) => p,
+            Site::Segment { a, b } => Point::new(0.5 * a.x + 0.5 * b.x, 0.5 * a.y + 0.5 * b.y),
+        }
+    }
+
     /// Whether `p` is an endpoint of this segment site (exact coordinate
     /// equality; `-0.0 == 0.0`). Always `false` for a point site.
     #[inline]

@@ -42,13 +42,10 @@ mod tests;
 
 use super::{infinite_rotation, PointDiagram, INFINITE};
 use crate::diagram::{HalfEdgeId, SiteId, VertexId, NONE};
-use crate::geometry::oracle::{self, Reach};
-use crate::geometry::predicates::{orientation, CirclePosition, Orientation};
-use crate::geometry::segment_solvers;
-use crate::geometry::point::norm;
+use crate::geometry::predicates::CirclePosition;
+use crate::geometry::segment_predicates::{self, AtEndpoint, Contact, LeftDegree, SegmentDepth, SiteSeen};
 use crate::geometry::site::Site;
-use crate::geometry::solvers::left_normal;
-use crate::geometry::{fault, Point};
+use crate::geometry::Point;
 
 impl PointDiagram {
     /// Whether any of the sites is an open segment.
@@ -78,19 +75,16 @@ impl PointDiagram {
     }
 
     /// The geometry of a real site (not the point at infinity).
-    fn site_geometry(&self, s: SiteId) -> Site {
+    pub(super) fn site_geometry(&self, s: SiteId) -> Site {
         match self.ends_of(s) {
             Some([a, b]) => Site::Segment { a: self.sites[a.index()], b: self.sites[b.index()] },
             None => Site::Point(self.sites[s.index()]),
         }
     }
 
-    /// One point of a real site: the point, or a segment's midpoint.
-    fn representative(&self, s: SiteId) -> Point {
-        match self.site_geometry(s) {
-            Site::Point(p) => p,
-            Site::Segment { a, b } => Point::new(0.5 * a.x + 0.5 * b.x, 0.5 * a.y + 0.5 * b.y),
-        }
+    /// The coordinates of the endpoint sites `a` and `b` of a new segment.
+    fn segment_between(&self, a: SiteId, b: SiteId) -> (Point, Point) {
+        (self.sites[a.index()], self.sites[b.index()])
     }
 
     /// Adds the open segment between the point sites `a` and `b`; every
@@ -154,99 +148,35 @@ impl PointDiagram {
     }
 
     /// How far inside the circle of the finite vertex `v` the open segment
-    /// `ab` reaches (negative: it enters), perturbed in fault injection.
-    ///
-    /// When `a` is one of `v`'s sites, `a` lies on the circle and the
-    /// distance test would compare two equal numbers; the segment enters the
-    /// circle exactly when it leaves `a` towards the centre, so the sign of
-    /// `(b - a) · (c - a)` decides, with no cancellation (likewise for `b`);
-    /// exactly, where `v` lies on a separator at `a` (`side_at_endpoint`).
-    fn segment_depth(&self, v: VertexId, a: SiteId, b: SiteId) -> f64 {
+    /// `ab` reaches (`segment_predicates::segment_depth`), from which of
+    /// `a` and `b` are among its sites.
+    fn segment_depth(&self, v: VertexId, a: SiteId, b: SiteId) -> SegmentDepth {
         let sites = self.store.sites_of(v);
-        let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
-        let c = self.store.position[v.index()];
-        let entering = |from: Point, to: Point| {
-            let (dx, dy) = (to.x - from.x, to.y - from.y);
-            -((c.x - from.x) * dx + (c.y - from.y) * dy) / norm(dx, dy)
+        let contact = match (sites.contains(&a), sites.contains(&b)) {
+            (true, true) => Contact::BothEnds,
+            (true, false) => Contact::OneEnd(self.at_endpoint(a, b, sites)),
+            (false, true) => Contact::OneEnd(self.at_endpoint(b, a, sites)),
+            (false, false) => Contact::NoEnd,
         };
-        let r = self.store.clearance[v.index()];
-        // The rounded depth, its sign certified from the sites (`oracle`).
-        let certified = |question: Reach, depth: f64| {
-            if fault::active() {
-                return depth;
-            }
-            match oracle::reach(|| sites.map(|s| self.site_geometry(s)), c, r, question, depth) {
-                Some(CirclePosition::Inside) => -depth.abs().max(f64::MIN_POSITIVE),
-                Some(CirclePosition::Outside) => depth.abs().max(f64::MIN_POSITIVE),
-                Some(CirclePosition::On) => 0.0,
-                None => depth,
-            }
-        };
-        let from_end = |end: SiteId, other: SiteId, from: Point, to: Point| match self.side_at_endpoint(end, other, sites) {
-            EndpointSide::Numeric => certified(Reach::Entering { from, to }, entering(from, to)),
-            side => side.apply(entering(from, to)),
-        };
-        let depth = match (sites.contains(&a), sites.contains(&b)) {
-            // on the bisector of a and b: every point of it is nearer the
-            // segment between them, exactly (the rounded position of a far
-            // vertex of nearly collinear sites may say otherwise)
-            (true, true) => EndpointSide::Enters.apply(entering(pa, pb)),
-            (true, false) => from_end(a, b, pa, pb),
-            (false, true) => from_end(b, a, pb, pa),
-            (false, false) => certified(Reach::Distance { a: pa, b: pb }, Site::Segment { a: pa, b: pb }.distance(c) - r),
-        };
-        let depth = fault::perturb(depth);
-        if depth.is_nan() {
-            f64::INFINITY
-        } else {
-            depth
-        }
+        let (centre, radius) = (self.store.position[v.index()], self.store.clearance[v.index()]);
+        segment_predicates::segment_depth(self.segment_between(a, b), contact, centre, radius, || {
+            sites.map(|s| self.site_geometry(s))
+        })
     }
 
-    /// For a vertex with sites `sites` (counter-clockwise) among which is
-    /// the endpoint `end` of the new segment `end → other`: where the vertex
-    /// also has a segment `s` ending at `end`, it lies on `s`'s separator at
-    /// `end`, on the side of `s` given by the order of the sites (`s` just
-    /// after `end`: left of `end → far`; just before: right), so whether the
-    /// new segment leaves `end` towards it is the exact orientation of
-    /// `other` against `end → far` (collinear: along the tangent, as where a
-    /// chain goes straight on). Two such segments put the vertex at `end`
-    /// itself (radius 0): then the sector it stands for decides
-    /// (`sector_side`). `Numeric` where there is none.
-    fn side_at_endpoint(&self, end: SiteId, other: SiteId, sites: [SiteId; 3]) -> EndpointSide {
+    /// A vertex with sites `sites` (counter-clockwise) among which is the
+    /// endpoint `end` of the new segment `end → other`, with the segments
+    /// among its sites just after and just before `end` that end there, by
+    /// their far endpoints: the vertex then lies on their separator at
+    /// `end`, and the order of its sites says on which side.
+    fn at_endpoint(&self, end: SiteId, other: SiteId, sites: [SiteId; 3]) -> AtEndpoint {
         let k = sites.iter().position(|&s| s == end).unwrap_or(0);
-        let (next, prev) = (sites[(k + 1) % 3], sites[(k + 2) % 3]);
-        let far_end = |s: SiteId| self.far_end(s, end);
-        let (pe, po) = (self.sites[end.index()], self.sites[other.index()]);
-        let turn = |far: SiteId| orientation(pe, self.sites[far.index()], po);
-        match (far_end(next), far_end(prev)) {
-            (Some(from), Some(to)) => self.sector_side(pe, po, from, to),
-            (Some(far), None) => EndpointSide::from_turn(turn(far), Orientation::CounterClockwise),
-            (None, Some(far)) => EndpointSide::from_turn(turn(far), Orientation::Clockwise),
-            (None, None) => EndpointSide::Numeric,
-        }
-    }
-
-    /// For a vertex of radius 0 at the endpoint `pe`, between two segments
-    /// ending there (`pe → from`, then `pe → to` counter-clockwise around
-    /// `pe`): the vertex stands for the sector swept counter-clockwise from
-    /// the first to the second, where their bisector leaves `pe`. The new
-    /// segment `pe → po` splits that vertex exactly when it leaves `pe`
-    /// strictly inside the sector (exact orientations; a sector of 180° or
-    /// more only arises from lying numbers, and is decided the same way).
-    fn sector_side(&self, pe: Point, po: Point, from: SiteId, to: SiteId) -> EndpointSide {
-        let (pf, pt) = (self.sites[from.index()], self.sites[to.index()]);
-        let after_from = orientation(pe, pf, po) == Orientation::CounterClockwise;
-        let before_to = orientation(pe, po, pt) == Orientation::CounterClockwise;
-        let inside = match orientation(pe, pf, pt) {
-            Orientation::CounterClockwise => after_from && before_to,
-            Orientation::Clockwise => after_from || before_to,
-            Orientation::Collinear => after_from,
-        };
-        if inside {
-            EndpointSide::Enters
-        } else {
-            EndpointSide::Misses
+        let far = |s: SiteId| self.far_end(s, end).map(|f| self.sites[f.index()]);
+        AtEndpoint {
+            end: self.sites[end.index()],
+            other: self.sites[other.index()],
+            after: far(sites[(k + 1) % 3]),
+            before: far(sites[(k + 2) % 3]),
         }
     }
 
@@ -255,32 +185,25 @@ impl PointDiagram {
     fn segment_conflict(&self, v: VertexId, a: SiteId, b: SiteId) -> bool {
         match infinite_rotation(self.store.sites_of(v)) {
             Some((x, y)) => (x == a && y == b) || (x == b && y == a),
-            None => self.segment_depth(v, a, b) < 0.0,
+            None => self.segment_depth(v, a, b).position == CirclePosition::Inside,
         }
     }
 
     /// Seed 000's left-degree of site `g` seen from vertex `v` against the
-    /// directed line `a → b`: positive when the projection of `v` on `g` is
-    /// left of it. Only its sign and size guide the walk. A segment that
-    /// shares an endpoint with `ab` lies on the side of its other endpoint,
-    /// decided exactly (and reported as certain: infinite).
-    fn left_degree(&self, v: VertexId, g: SiteId, (a, b): (SiteId, SiteId), (pa, pb): (Point, Point)) -> f64 {
-        if g == INFINITE {
-            return 0.0;
-        }
-        if let Some(o) = self.far_end(g, a).or_else(|| self.far_end(g, b)) {
-            return match orientation(pa, pb, self.sites[o.index()]) {
-                Orientation::CounterClockwise => f64::INFINITY,
-                Orientation::Clockwise => f64::NEG_INFINITY,
-                Orientation::Collinear => 0.0,
-            };
-        }
-        let q = if self.store.is_at_infinity(v) {
-            self.representative(g)
+    /// directed segment `a → b` (`segment_predicates::left_degree`): a
+    /// segment sharing an endpoint with `ab` is seen by its other endpoint,
+    /// any other site from `v`'s position, or as a whole from a vertex at
+    /// infinity.
+    fn left_degree(&self, v: VertexId, g: SiteId, (a, b): (SiteId, SiteId), segment: (Point, Point)) -> LeftDegree {
+        let seen = if g == INFINITE {
+            SiteSeen::Infinity
+        } else if let Some(o) = self.far_end(g, a).or_else(|| self.far_end(g, b)) {
+            SiteSeen::SharingEndpoint { far: self.sites[o.index()] }
         } else {
-            self.site_geometry(g).nearest_point(self.store.position[v.index()])
+            let from = (!self.store.is_at_infinity(v)).then(|| self.store.position[v.index()]);
+            SiteSeen::Other { site: self.site_geometry(g), from }
         };
-        fault::perturb((pb.x - pa.x) * (q.y - pa.y) - (pb.y - pa.y) * (q.x - pa.x))
+        segment_predicates::left_degree(segment, seen)
     }
 
     /// Whether `h` runs between an existing segment and one of its
@@ -296,83 +219,4 @@ impl PointDiagram {
     fn walkable(&self, v: VertexId, a: SiteId, b: SiteId) -> bool {
         !self.store.is_at_infinity(v) || self.segment_conflict(v, a, b)
     }
-
-    /// Position and clearance of a vertex with a segment among its sites.
-    pub(super) fn place_segment_vertex(&mut self, v: VertexId) {
-        let sites = self.store.sites_of(v);
-        if let Some((x, y)) = infinite_rotation(sites) {
-            let (p, q) = self.hull_pair(x, y);
-            self.set_position(v, left_normal(p, q).unwrap_or_default(), f64::INFINITY);
-            return;
-        }
-        let [ga, gb, gc] = sites.map(|s| self.site_geometry(s));
-        let solved = segment_solvers::vertex(&ga, &gb, &gc);
-        // An ill-conditioned solve (nearly parallel lines, a circle far
-        // larger than its sites) is polished against the sites themselves.
-        let solved = match solved {
-            Some((c, r)) if !fault::active() => Some(oracle::polish_vertex(&[ga, gb, gc], c, r).unwrap_or((c, r))),
-            other => other,
-        };
-        let (pos, clearance) = solved.unwrap_or_else(|| {
-            // No circle: keep the topology, place the vertex among its sites.
-            let r = sites.map(|s| self.representative(s));
-            let g = Point::new((r[0].x + r[1].x + r[2].x) / 3.0, (r[0].y + r[1].y + r[2].y) / 3.0);
-            (g, ga.distance(g))
-        });
-        self.set_position(v, pos, clearance);
-    }
-
-    /// For consecutive hull sites `x → y` (the outside on the left), two
-    /// points whose left normal is the direction of the edge between them at
-    /// infinity: a segment stands for itself by its endpoints.
-    fn hull_pair(&self, x: SiteId, y: SiteId) -> (Point, Point) {
-        let (gx, gy) = (self.site_geometry(x), self.site_geometry(y));
-        match (gx, gy) {
-            (Site::Segment { .. }, Site::Point(q)) => (gx.other_endpoint(q).unwrap_or(self.representative(x)), q),
-            (Site::Point(p), Site::Segment { .. }) => (p, gy.other_endpoint(p).unwrap_or(self.representative(y))),
-            _ => (self.representative(x), self.representative(y)),
-        }
-    }
 }
-
-/// Whether the new segment enters the circle of a vertex through one of
-/// its endpoints, decided exactly where the vertex is on a separator there
-/// (`side_at_endpoint`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum EndpointSide {
-    /// It enters.
-    Enters,
-    /// It leaves the endpoint away from the circle.
-    Misses,
-    /// It runs along the circle's tangent, or the circle has radius 0.
-    OnCircle,
-    /// No exact answer: the rounded position decides.
-    Numeric,
-}
-
-impl EndpointSide {
-    /// From the turn of the new segment against the separator's segment:
-    /// `entering` is the turn that points into the circle.
-    fn from_turn(turn: Orientation, entering: Orientation) -> EndpointSide {
-        if turn == Orientation::Collinear {
-            EndpointSide::OnCircle
-        } else if turn == entering {
-            EndpointSide::Enters
-        } else {
-            EndpointSide::Misses
-        }
-    }
-
-    /// The depth with this sign: the numeric one's size (at least the
-    /// smallest positive number, so the sign survives), or 0 on the circle.
-    fn apply(self, numeric: f64) -> f64 {
-        let size = numeric.abs().max(f64::MIN_POSITIVE);
-        match self {
-            EndpointSide::Enters => -size,
-            EndpointSide::Misses => size,
-            EndpointSide::OnCircle => 0.0,
-            EndpointSide::Numeric => numeric,
-        }
-    }
-}
-

@@ -8,6 +8,7 @@ use super::super::PointDiagram;
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
 use crate::geometry::parabola::Parabola;
 use crate::geometry::point::norm;
+use crate::geometry::segment_predicates::in_strip;
 use crate::geometry::segment_solvers;
 use crate::geometry::site::Site;
 use crate::geometry::{fault, Point};
@@ -24,7 +25,7 @@ impl PointDiagram {
     /// numbers keep (see `join_closing_cycles`).
     pub(super) fn grow_segment_tree(&mut self, a: SiteId, b: SiteId) {
         let epoch = self.epoch;
-        let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
+        let (pa, pb) = self.segment_between(a, b);
         let mut i = 0;
         while i < self.tree.len() {
             let u = self.tree[i];
@@ -343,13 +344,4 @@ fn sampled_maximum(f: &impl Fn(f64) -> f64) -> f64 {
         }
     }
     best.max(e1).max(e2)
-}
-
-/// Whether `p` lies in the closed strip between the perpendiculars to `ab`
-/// at `a` and at `b`.
-fn in_strip(p: Point, a: Point, b: Point) -> bool {
-    let (dx, dy) = (b.x - a.x, b.y - a.y);
-    let t = (p.x - a.x) * dx + (p.y - a.y) * dy;
-    let t = fault::perturb(t);
-    (0.0..=dx * dx + dy * dy).contains(&t)
 }

@@ -10,6 +10,8 @@ use std::hash::{BuildHasherDefault, Hash, Hasher};
 
 use super::super::PointDiagram;
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
+use crate::geometry::predicates::{CirclePosition, Orientation};
+use crate::geometry::segment_predicates::LeftDegree;
 use crate::geometry::Point;
 
 /// A path of P4: its vertices, and the half-edge by which each vertex after
@@ -174,7 +176,7 @@ impl PointDiagram {
     /// conflict with the segment. Returns whether `R(b)` was reached and the
     /// walk's vertices (at least the start).
     fn walk_to(&self, a: SiteId, b: SiteId, strict: bool) -> (bool, Path) {
-        let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
+        let (pa, pb) = self.segment_between(a, b);
         let (start, first_move) = self.path_start(a, b);
         if self.store.sites_of(start).contains(&b) {
             return (true, Path { vertices: vec![start], entered_by: Vec::new() });
@@ -220,7 +222,7 @@ impl PointDiagram {
                 return (v, h.rotate(2));
             }
         }
-        let ends = (self.sites[a.index()], self.sites[b.index()]);
+        let ends = self.segment_between(a, b);
         let mut best: Option<(VertexId, HalfEdgeId, (f64, f64, f64))> = None;
         for h in self.store.cell_boundary(a) {
             let v = h.origin();
@@ -232,7 +234,7 @@ impl PointDiagram {
                 (self.segment_conflict(v, a, b), f64::INFINITY)
             } else {
                 let depth = self.segment_depth(v, a, b);
-                (depth < 0.0, depth)
+                (depth.position == CirclePosition::Inside, depth.depth)
             };
             let conflict = if conflict { 1.0 } else { 0.0 };
             let key = if self.store.sites_of(v).contains(&b) && self.walkable(v, a, b) {
@@ -240,8 +242,7 @@ impl PointDiagram {
             } else {
                 let left = self.left_degree(v, self.store.left(out), (a, b), ends);
                 let right = self.left_degree(v, self.store.right(out), (a, b), ends);
-                let separation = left.min(-right);
-                (conflict, if separation.is_nan() { f64::NEG_INFINITY } else { separation.min(f64::MAX) }, -depth)
+                (conflict, LeftDegree::separation(left, right), -depth)
             };
             if best.map_or(true, |(_, _, k)| key > k) {
                 best = Some((v, out, key));
@@ -313,10 +314,10 @@ impl PointDiagram {
                 let ahead = self.store.opposite(t);
                 let l = self.left_degree(v, ahead, (a, b), (pa, pb));
                 let (keep_left, keep_right) = (t.rotate(1), t.rotate(2));
-                if l > 0.0 {
-                    (keep_left, keep_right, l.abs())
+                if l.side == Orientation::CounterClockwise {
+                    (keep_left, keep_right, l.certainty())
                 } else {
-                    (keep_right, keep_left, l.abs())
+                    (keep_right, keep_left, l.certainty())
                 }
             }
             None => {

@@ -165,6 +165,7 @@ mod replay {
     use super::*;
     use crate::build::order::SplitMix;
     use crate::build::Inserted;
+    use crate::geometry::predicates::{orientation, Orientation};
 
     /// Tolerance relative to the largest coordinate.
     const TOLERANCE: f64 = 1e-9;

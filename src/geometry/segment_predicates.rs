@@ -1,0 +1,295 @@
+//! The questions the insertion of an open segment `ab` asks of the current
+//! diagram, in terms of sites, vertex positions and radii: how far `ab`
+//! reaches into the circle of a vertex (with the exact rules where the
+//! vertex has an endpoint of `ab` among its sites), which side of `ab` a
+//! site lies on seen from a vertex (the left-degree of the path search),
+//! and whether a vertex lies in the strip of `ab`.
+//!
+//! Each answer is a sign, an enum, and separately a magnitude used only to
+//! rank candidates. The construction (`build::points::segments`) decides
+//! which vertex, edge or site to ask about and what its sites are; nothing
+//! here knows about the diagram. In the fault-injection build the numbers
+//! are perturbed here (`fault`), one draw per quantity, in the order the
+//! questions are asked.
+
+use super::fault;
+use super::oracle::{self, Reach};
+use super::point::{norm, Point};
+use super::predicates::{orientation, CirclePosition, Orientation};
+use super::site::Site;
+
+/// How far a new segment reaches into the circle of a finite vertex.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct SegmentDepth {
+    /// Whether the segment enters the open disk (`Inside`: the vertex is in
+    /// conflict with it), touches the circle, or stays outside.
+    pub position: CirclePosition,
+    /// The signed depth, negative inside, never NaN: only for ranking.
+    pub depth: f64,
+}
+
+impl SegmentDepth {
+    fn new(depth: f64) -> SegmentDepth {
+        let position = if depth < 0.0 {
+            CirclePosition::Inside
+        } else if depth > 0.0 {
+            CirclePosition::Outside
+        } else {
+            CirclePosition::On
+        };
+        SegmentDepth { position, depth }
+    }
+}
+
+/// Which endpoints of the new segment `ab` are sites of the vertex asked
+/// about (decided by the construction from site ids).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Contact {
+    /// Both: the vertex is on the bisector of `a` and `b`.
+    BothEnds,
+    /// One of them.
+    OneEnd(AtEndpoint),
+    /// Neither.
+    NoEnd,
+}
+
+/// A vertex with the endpoint `end` of the new segment `end → other` among
+/// its sites, and the segments ending at `end` beside it: of the vertex's
+/// sites just after and just before `end` (counter-clockwise), the far
+/// endpoint of each that is a segment ending at `end`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct AtEndpoint {
+    pub end: Point,
+    pub other: Point,
+    pub after: Option<Point>,
+    pub before: Option<Point>,
+}
+
+/// How far inside the circle of a finite vertex (centre `centre`, radius
+/// `radius`, its three sites given by `sites` when the certified stage
+/// needs them) the open segment `ab` reaches (negative: it enters),
+/// perturbed in fault injection.
+///
+/// When `a` is one of the vertex's sites, `a` lies on the circle and the
+/// distance test would compare two equal numbers; the segment enters the
+/// circle exactly when it leaves `a` towards the centre, so the sign of
+/// `(b - a) · (c - a)` decides, with no cancellation (likewise for `b`);
+/// exactly, where the vertex lies on a separator at `a`
+/// (`side_at_endpoint`). With both `a` and `b` among its sites the vertex
+/// is on their bisector: every point of it is nearer the segment between
+/// them, exactly (the rounded position of a far vertex of nearly collinear
+/// sites may say otherwise).
+pub(crate) fn segment_depth(
+    (a, b): (Point, Point),
+    contact: Contact,
+    centre: Point,
+    radius: f64,
+    sites: impl FnOnce() -> [Site; 3],
+) -> SegmentDepth {
+    let c = centre;
+    let entering = |from: Point, to: Point| {
+        let (dx, dy) = (to.x - from.x, to.y - from.y);
+        -((c.x - from.x) * dx + (c.y - from.y) * dy) / norm(dx, dy)
+    };
+    let depth = match contact {
+        Contact::BothEnds => EndpointSide::Enters.apply(entering(a, b)),
+        Contact::OneEnd(at) => match side_at_endpoint(&at) {
+            EndpointSide::Numeric => {
+                certified(Reach::Entering { from: at.end, to: at.other }, entering(at.end, at.other), c, radius, sites)
+            }
+            side => side.apply(entering(at.end, at.other)),
+        },
+        Contact::NoEnd => certified(Reach::Distance { a, b }, Site::Segment { a, b }.distance(c) - radius, c, radius, sites),
+    };
+    let depth = fault::perturb(depth);
+    SegmentDepth::new(if depth.is_nan() { f64::INFINITY } else { depth })
+}
+
+/// The rounded depth, its sign certified from the vertex's sites
+/// (`oracle`). Not in fault injection: a refinement would make the lying
+/// numbers honest again.
+fn certified(question: Reach, depth: f64, centre: Point, radius: f64, sites: impl FnOnce() -> [Site; 3]) -> f64 {
+    if fault::active() {
+        return depth;
+    }
+    match oracle::reach(sites, centre, radius, question, depth) {
+        Some(CirclePosition::Inside) => -depth.abs().max(f64::MIN_POSITIVE),
+        Some(CirclePosition::Outside) => depth.abs().max(f64::MIN_POSITIVE),
+        Some(CirclePosition::On) => 0.0,
+        None => depth,
+    }
+}
+
+/// For a vertex with the endpoint `end` of the new segment `end → other`
+/// among its sites: where the vertex also has a segment `s` ending at
+/// `end`, it lies on `s`'s separator at `end`, on the side of `s` given by
+/// the order of the sites (`s` just after `end`: left of `end → far`; just
+/// before: right), so whether the new segment leaves `end` towards it is
+/// the exact orientation of `other` against `end → far` (collinear: along
+/// the tangent, as where a chain goes straight on). Two such segments put
+/// the vertex at `end` itself (radius 0): then the sector it stands for
+/// decides (`sector_side`). `Numeric` where there is none.
+fn side_at_endpoint(at: &AtEndpoint) -> EndpointSide {
+    let (pe, po) = (at.end, at.other);
+    let turn = |far: Point| orientation(pe, far, po);
+    match (at.after, at.before) {
+        (Some(from), Some(to)) => sector_side(pe, po, from, to),
+        (Some(far), None) => EndpointSide::from_turn(turn(far), Orientation::CounterClockwise),
+        (None, Some(far)) => EndpointSide::from_turn(turn(far), Orientation::Clockwise),
+        (None, None) => EndpointSide::Numeric,
+    }
+}
+
+/// For a vertex of radius 0 at the endpoint `pe`, between two segments
+/// ending there (`pe → pf`, then `pe → pt` counter-clockwise around `pe`):
+/// the vertex stands for the sector swept counter-clockwise from the first
+/// to the second, where their bisector leaves `pe`. The new segment
+/// `pe → po` splits that vertex exactly when it leaves `pe` strictly
+/// inside the sector (exact orientations; a sector of 180° or more only
+/// arises from lying numbers, and is decided the same way).
+fn sector_side(pe: Point, po: Point, pf: Point, pt: Point) -> EndpointSide {
+    let after_from = orientation(pe, pf, po) == Orientation::CounterClockwise;
+    let before_to = orientation(pe, po, pt) == Orientation::CounterClockwise;
+    let inside = match orientation(pe, pf, pt) {
+        Orientation::CounterClockwise => after_from && before_to,
+        Orientation::Clockwise => after_from || before_to,
+        Orientation::Collinear => after_from,
+    };
+    if inside {
+        EndpointSide::Enters
+    } else {
+        EndpointSide::Misses
+    }
+}
+
+/// Whether the new segment enters the circle of a vertex through one of
+/// its endpoints, decided exactly where the vertex is on a separator there
+/// (`side_at_endpoint`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum EndpointSide {
+    /// It enters.
+    Enters,
+    /// It leaves the endpoint away from the circle.
+    Misses,
+    /// It runs along the circle's tangent, or the circle has radius 0.
+    OnCircle,
+    /// No exact answer: the rounded position decides.
+    Numeric,
+}
+
+impl EndpointSide {
+    /// From the turn of the new segment against the separator's segment:
+    /// `entering` is the turn that points into the circle.
+    fn from_turn(turn: Orientation, entering: Orientation) -> EndpointSide {
+        if turn == Orientation::Collinear {
+            EndpointSide::OnCircle
+        } else if turn == entering {
+            EndpointSide::Enters
+        } else {
+            EndpointSide::Misses
+        }
+    }
+
+    /// The depth with this sign: the numeric one's size (at least the
+    /// smallest positive number, so the sign survives), or 0 on the circle.
+    fn apply(self, numeric: f64) -> f64 {
+        let size = numeric.abs().max(f64::MIN_POSITIVE);
+        match self {
+            EndpointSide::Enters => -size,
+            EndpointSide::Misses => size,
+            EndpointSide::OnCircle => 0.0,
+            EndpointSide::Numeric => numeric,
+        }
+    }
+}
+
+/// A site as the left-degree sees it from a vertex.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum SiteSeen {
+    /// The point at infinity: on neither side.
+    Infinity,
+    /// A segment sharing an endpoint with the new segment, by its other
+    /// endpoint: it lies on that endpoint's side.
+    SharingEndpoint { far: Point },
+    /// Any other site, seen from a finite vertex at `from` (the site's
+    /// point nearest to it), or from a vertex at infinity (`None`: the
+    /// site's midpoint).
+    Other { site: Site, from: Option<Point> },
+}
+
+/// Seed 000's left-degree of a site seen from a vertex against the
+/// directed segment `a → b`: which side of it the site lies on
+/// (`CounterClockwise`: left), and how clearly.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct LeftDegree {
+    /// The side: `CounterClockwise` (left) when the degree is positive,
+    /// `Clockwise` when negative, `Collinear` otherwise (zero, or NaN).
+    pub side: Orientation,
+    /// Positive when the site is left of `a → b`; infinite when decided
+    /// exactly.
+    degree: f64,
+}
+
+impl LeftDegree {
+    fn new(degree: f64) -> LeftDegree {
+        let side = if degree > 0.0 {
+            Orientation::CounterClockwise
+        } else if degree < 0.0 {
+            Orientation::Clockwise
+        } else {
+            Orientation::Collinear
+        };
+        LeftDegree { side, degree }
+    }
+
+    /// How certain the side is, for ranking: the degree's size (infinite
+    /// when exact, NaN when the numbers failed).
+    pub fn certainty(self) -> f64 {
+        self.degree.abs()
+    }
+
+    /// How clearly an edge has the site `left` on its left of the segment
+    /// and the site `right` on its right (seed 000's characteristic 3), for
+    /// ranking: the smaller of the two degrees in those directions, `-∞`
+    /// when the numbers failed, and at most `f64::MAX` (below a start that
+    /// is a vertex of `R(b)`, ranked `+∞`).
+    pub fn separation(left: LeftDegree, right: LeftDegree) -> f64 {
+        let separation = left.degree.min(-right.degree);
+        if separation.is_nan() {
+            f64::NEG_INFINITY
+        } else {
+            separation.min(f64::MAX)
+        }
+    }
+}
+
+/// Seed 000's left-degree of a site seen from a vertex against the
+/// directed segment `a → b`: positive when the projection of the vertex on
+/// the site is left of it (perturbed in fault injection). Only its sign and
+/// size guide the walk. A segment that shares an endpoint with `ab` lies on
+/// the side of its other endpoint, decided exactly (and reported as
+/// certain: infinite).
+pub(crate) fn left_degree((a, b): (Point, Point), seen: SiteSeen) -> LeftDegree {
+    let q = match seen {
+        SiteSeen::Infinity => return LeftDegree::new(0.0),
+        SiteSeen::SharingEndpoint { far } => {
+            return LeftDegree::new(match orientation(a, b, far) {
+                Orientation::CounterClockwise => f64::INFINITY,
+                Orientation::Clockwise => f64::NEG_INFINITY,
+                Orientation::Collinear => 0.0,
+            })
+        }
+        SiteSeen::Other { site, from: Some(v) } => site.nearest_point(v),
+        SiteSeen::Other { site, from: None } => site.midpoint(),
+    };
+    LeftDegree::new(fault::perturb((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x)))
+}
+
+/// Whether `p` lies in the closed strip between the perpendiculars to `ab`
+/// at `a` and at `b` (criterion 2.2; perturbed in fault injection).
+pub(crate) fn in_strip(p: Point, a: Point, b: Point) -> bool {
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    let t = (p.x - a.x) * dx + (p.y - a.y) * dy;
+    let t = fault::perturb(t);
+    (0.0..=dx * dx + dy * dy).contains(&t)
+}
