@@ -3,7 +3,9 @@
 //! reaches into the circle of a vertex (with the exact rules where the
 //! vertex has an endpoint of `ab` among its sites), which side of `ab` a
 //! site lies on seen from a vertex (the left-degree of the path search),
-//! and whether a vertex lies in the strip of `ab`.
+//! whether a vertex lies in the strip of `ab`, and how clearly the middle
+//! of an edge whose two ends are deleted stays out of the new cell (the
+//! margin of an edge cut twice).
 //!
 //! Each answer is a sign, an enum, and separately a magnitude used only to
 //! rank candidates. The construction (`build::points::segments`) decides
@@ -14,8 +16,10 @@
 
 use super::fault;
 use super::oracle::{self, Reach};
+use super::parabola::Parabola;
 use super::point::{norm, Point};
 use super::predicates::{orientation, CirclePosition, Orientation};
+use super::segment_solvers;
 use super::site::Site;
 
 /// How far a new segment reaches into the circle of a finite vertex.
@@ -292,4 +296,201 @@ pub(crate) fn in_strip(p: Point, a: Point, b: Point) -> bool {
     let t = (p.x - a.x) * dx + (p.y - a.y) * dy;
     let t = fault::perturb(t);
     (0.0..=dx * dx + dy * dy).contains(&t)
+}
+
+/// How far, as a fraction of an edge, a computed crossing of the edge may
+/// lie beyond one of its ends and still be taken as at that end.
+const END_TOLERANCE: f64 = 1e-6;
+
+/// A finite edge of the diagram: the sites on the left and the right of
+/// one of its half-edges, and that half-edge's origin and target.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct FiniteEdge {
+    pub left: Site,
+    pub right: Site,
+    pub from: Point,
+    pub to: Point,
+}
+
+/// Which endpoints of the new segment are sites of an edge (decided by the
+/// construction from site ids).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum EdgeContact {
+    /// Both: the edge is on the bisector of the segment's endpoints.
+    BothEnds,
+    /// One of them.
+    OneEnd,
+    /// Neither.
+    NoEnd,
+}
+
+/// Whether the middle of an edge whose two ends the new cell takes stays
+/// out of it, and how clearly.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct MiddleMargin {
+    /// `Stays` when the margin is positive.
+    pub middle: EdgeMiddle,
+    /// Positive: how clearly the middle stays; only for ranking.
+    pub margin: f64,
+}
+
+/// What becomes of the middle of an edge whose two ends are deleted.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum EdgeMiddle {
+    /// It stays out of the new cell: the edge may be cut at both ends.
+    Stays,
+    /// It is in the new cell, or the numbers cannot tell.
+    Covered,
+}
+
+impl MiddleMargin {
+    fn new(margin: f64) -> MiddleMargin {
+        let middle = if margin > 0.0 { EdgeMiddle::Stays } else { EdgeMiddle::Covered };
+        MiddleMargin { middle, margin }
+    }
+}
+
+/// How clearly the middle of a finite edge stays out of the cell of the
+/// segment `ab` when both its ends are in it (perturbed in fault
+/// injection). Positive: the edge keeps a middle piece.
+///
+/// The new cell's boundary would cross the edge at the two vertices a
+/// cut at both ends creates: `[right, left, e]` near the edge's origin and
+/// `[left, right, e]` near its target, each computed from the three sites
+/// by its solver. The middle stays when both exist, lie on the edge, and
+/// come in that order; the margin is then how much closer the point
+/// halfway between them is to its own sites than to `ab`. (Sampling the
+/// edge instead misses a middle piece that is short against the edge.)
+/// When a solver finds nothing, the edge is sampled instead.
+pub(crate) fn middle_margin(edge: FiniteEdge, contact: EdgeContact, segment: (Point, Point)) -> MiddleMargin {
+    if contact == EdgeContact::BothEnds {
+        // Every point of the bisector of a and b is closer to the open
+        // segment between them (the midpoint is nearer than either end).
+        return MiddleMargin::new(f64::NEG_INFINITY);
+    }
+    let edge = EdgeUnderSegment::new(edge, segment, contact == EdgeContact::OneEnd);
+    let crossings = segment_solvers::vertex(&edge.right, &edge.left, &edge.segment)
+        .zip(segment_solvers::vertex(&edge.left, &edge.right, &edge.segment))
+        .map(|((near_origin, _), (near_target, _))| (edge.arc.parameter(near_origin), edge.arc.parameter(near_target)));
+    // Both ends of the edge are in conflict (certified), so a crossing
+    // is inside the edge: one a rounding error beyond an end (the end
+    // vertex almost on the new cell's boundary) is at that end.
+    let crossings = crossings.map(|(t1, t2)| {
+        let at_end = |t: f64, end: f64| if (t - end).abs() <= END_TOLERANCE { end } else { t };
+        (at_end(t1, 0.0), at_end(t2, 1.0))
+    });
+    let margin = match crossings {
+        Some((t1, t2)) if 0.0 <= t1 && t1 < t2 && t2 <= 1.0 => edge.excess(0.5 * (t1 + t2)),
+        Some((t1, t2)) => -(t1 - t2).abs().max(f64::MIN_POSITIVE),
+        None => sampled_maximum(&|t| edge.excess(t)),
+    };
+    MiddleMargin::new(fault::perturb(margin))
+}
+
+/// An edge seen from a new segment (`EdgeUnderSegment::new`).
+struct EdgeUnderSegment {
+    left: Site,
+    right: Site,
+    arc: EdgeArc,
+    segment: Site,
+    /// One of the edge's sites is an endpoint of the segment.
+    touches_end: bool,
+}
+
+impl EdgeUnderSegment {
+    /// The edge with its two sites, its curve, and the new segment `ab`.
+    fn new(edge: FiniteEdge, (a, b): (Point, Point), touches_end: bool) -> EdgeUnderSegment {
+        let FiniteEdge { left, right, from, to } = edge;
+        let arc = match Parabola::of_sites(&left, &right) {
+            Some(p) => EdgeArc::Parabola(p, p.parameter(from), p.parameter(to)),
+            None => EdgeArc::Line(from, to),
+        };
+        EdgeUnderSegment { left, right, arc, segment: Site::Segment { a, b }, touches_end }
+    }
+
+    /// The excess of the distance to the segment over the distance to the
+    /// edge's own sites, at the point of the edge at parameter `t` (0 at its
+    /// origin, 1 at its target); NaN gives `-∞`.
+    fn excess(&self, t: f64) -> f64 {
+        let q = self.arc.point(t);
+        let e = match self.segment {
+            // On an edge of R(a) or R(b) the distances to the segment and to
+            // its endpoint agree outside the strip, so the signed distance
+            // beyond the perpendiculars decides, without cancellation.
+            Site::Segment { a: pa, b: pb } if self.touches_end => {
+                let (dx, dy) = (pb.x - pa.x, pb.y - pa.y);
+                let beyond_b = (q.x - pb.x) * dx + (q.y - pb.y) * dy;
+                let beyond_a = (pa.x - q.x) * dx + (pa.y - q.y) * dy;
+                beyond_a.max(beyond_b) / norm(dx, dy)
+            }
+            _ => self.segment.distance(q) - 0.5 * (self.left.distance(q) + self.right.distance(q)),
+        };
+        if e.is_nan() {
+            f64::NEG_INFINITY
+        } else {
+            e
+        }
+    }
+}
+
+/// A finite edge as a curve over `[0, 1]`: a straight piece, or an arc of
+/// a parabola between two of its parameters.
+enum EdgeArc {
+    Line(Point, Point),
+    Parabola(Parabola, f64, f64),
+}
+
+impl EdgeArc {
+    fn point(&self, t: f64) -> Point {
+        match *self {
+            EdgeArc::Line(p, q) => Point::new(p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t),
+            EdgeArc::Parabola(ref par, s0, s1) => par.point(s0 + (s1 - s0) * t),
+        }
+    }
+
+    /// The parameter of the point of the curve nearest to `q` (exact for
+    /// points on it, up to rounding); NaN for a curve of no length.
+    fn parameter(&self, q: Point) -> f64 {
+        match *self {
+            EdgeArc::Line(p, r) => {
+                let (dx, dy) = (r.x - p.x, r.y - p.y);
+                ((q.x - p.x) * dx + (q.y - p.y) * dy) / (dx * dx + dy * dy)
+            }
+            EdgeArc::Parabola(ref par, s0, s1) => (par.parameter(q) - s0) / (s1 - s0),
+        }
+    }
+}
+
+/// The largest value of `f` over `[0, 1]` as far as sampling finds it:
+/// evenly spaced samples, the best refined by golden-section search.
+fn sampled_maximum(f: &impl Fn(f64) -> f64) -> f64 {
+    const SAMPLES: usize = 16;
+    const REFINEMENTS: usize = 40;
+    let step = 1.0 / (SAMPLES + 1) as f64;
+    let (mut best_t, mut best) = (0.5, f64::NEG_INFINITY);
+    for k in 1..=SAMPLES {
+        let t = k as f64 * step;
+        let e = f(t);
+        if e > best {
+            (best_t, best) = (t, e);
+        }
+    }
+    let ratio = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut lo, mut hi) = ((best_t - step).max(0.0), (best_t + step).min(1.0));
+    let (mut x1, mut x2) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
+    let (mut e1, mut e2) = (f(x1), f(x2));
+    for _ in 0..REFINEMENTS {
+        if e1 < e2 {
+            lo = x1;
+            (x1, e1) = (x2, e2);
+            x2 = lo + ratio * (hi - lo);
+            e2 = f(x2);
+        } else {
+            hi = x2;
+            (x2, e2) = (x1, e1);
+            x1 = hi - ratio * (hi - lo);
+            e1 = f(x1);
+        }
+    }
+    best.max(e1).max(e2)
 }

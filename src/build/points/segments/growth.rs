@@ -1,21 +1,13 @@
 //! Growing the deletion tree of a segment `ab` from its path (P3, P5, the
 //! conflict and strip criteria), with the edges whose two ends are deleted
 //! but whose middle stays out of the new cell cut twice: which edge of each
-//! closed cycle that is, and its margin from the vertices the cuts would
-//! create.
+//! closed cycle that is, by its margin (from the vertices the cuts would
+//! create: `geometry::segment_predicates::middle_margin`).
 
 use super::super::PointDiagram;
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
-use crate::geometry::parabola::Parabola;
-use crate::geometry::point::norm;
-use crate::geometry::segment_predicates::in_strip;
-use crate::geometry::segment_solvers;
-use crate::geometry::site::Site;
-use crate::geometry::{fault, Point};
-
-/// How far, as a fraction of an edge, a computed crossing of the edge may
-/// lie beyond one of its ends and still be taken as at that end.
-const END_TOLERANCE: f64 = 1e-6;
+use crate::geometry::segment_predicates::{self, in_strip, EdgeContact, EdgeMiddle, FiniteEdge, MiddleMargin};
+use crate::geometry::Point;
 
 impl PointDiagram {
     /// Grows the tree from the path: P3, P5, the segment entering the
@@ -104,7 +96,8 @@ impl PointDiagram {
                 .chain(cycle)
                 .filter(|&h| self.is_finite_edge(h))
                 .map(|h| (self.middle_margin(h, a, b), h))
-                .filter(|&(margin, _)| margin > 0.0)
+                .filter(|(margin, _)| margin.middle == EdgeMiddle::Stays)
+                .map(|(margin, h)| (margin.margin, h))
                 .collect();
             candidates.sort_by(|x, y| y.0.total_cmp(&x.0));
             // An edge of R(a) or R(b) may keep its middle only where the rest
@@ -190,158 +183,18 @@ impl PointDiagram {
     }
 
     /// How clearly the middle of the (finite) edge of `h` stays out of the
-    /// cell of the segment `ab` when both its ends are in it (perturbed in
-    /// fault injection). Positive: the edge keeps a middle piece.
-    ///
-    /// The new cell's boundary would cross the edge at the two vertices a
-    /// cut at both ends creates: `[right, left, e]` near `h`'s origin and
-    /// `[left, right, e]` near its target, each computed from the three sites
-    /// by its solver. The middle stays when both exist, lie on the edge, and
-    /// come in that order; the margin is then how much closer the point
-    /// halfway between them is to its own sites than to `ab`. (Sampling the
-    /// edge instead misses a middle piece that is short against the edge.)
-    /// When a solver finds nothing, the edge is sampled instead.
-    pub(super) fn middle_margin(&self, h: HalfEdgeId, a: SiteId, b: SiteId) -> f64 {
+    /// cell of the segment `ab` when both its ends are in it
+    /// (`segment_predicates::middle_margin`), from the edge's sites and
+    /// ends and which of `a` and `b` are among its sites.
+    pub(super) fn middle_margin(&self, h: HalfEdgeId, a: SiteId, b: SiteId) -> MiddleMargin {
         let sides = [self.store.left(h), self.store.right(h)];
-        if sides.contains(&a) && sides.contains(&b) {
-            // Every point of the bisector of a and b is closer to the open
-            // segment between them (the midpoint is nearer than either end).
-            return f64::NEG_INFINITY;
-        }
-        let edge = self.edge_under(h, a, b);
-        let crossings = segment_solvers::vertex(&edge.right, &edge.left, &edge.segment)
-            .zip(segment_solvers::vertex(&edge.left, &edge.right, &edge.segment))
-            .map(|((near_origin, _), (near_target, _))| (edge.arc.parameter(near_origin), edge.arc.parameter(near_target)));
-        // Both ends of the edge are in conflict (certified), so a crossing
-        // is inside the edge: one a rounding error beyond an end (the end
-        // vertex almost on the new cell's boundary) is at that end.
-        let crossings = crossings.map(|(t1, t2)| {
-            let at_end = |t: f64, end: f64| if (t - end).abs() <= END_TOLERANCE { end } else { t };
-            (at_end(t1, 0.0), at_end(t2, 1.0))
-        });
-        let margin = match crossings {
-            Some((t1, t2)) if 0.0 <= t1 && t1 < t2 && t2 <= 1.0 => edge.excess(0.5 * (t1 + t2)),
-            Some((t1, t2)) => -(t1 - t2).abs().max(f64::MIN_POSITIVE),
-            None => sampled_maximum(&|t| edge.excess(t)),
+        let contact = match (sides.contains(&a), sides.contains(&b)) {
+            (true, true) => EdgeContact::BothEnds,
+            (false, false) => EdgeContact::NoEnd,
+            _ => EdgeContact::OneEnd,
         };
-        fault::perturb(margin)
-    }
-
-    /// The edge of `h` with its two sites, its curve, and the new segment
-    /// `ab`, for `middle_margin`.
-    fn edge_under(&self, h: HalfEdgeId, a: SiteId, b: SiteId) -> EdgeUnderSegment {
-        let sides = [self.store.left(h), self.store.right(h)];
         let [left, right] = sides.map(|s| self.site_geometry(s));
-        let (pa, pb) = (self.sites[a.index()], self.sites[b.index()]);
         let (from, to) = (self.store.position[h.origin().index()], self.store.position[self.store.target(h).index()]);
-        let arc = match Parabola::of_sites(&left, &right) {
-            Some(p) => EdgeArc::Parabola(p, p.parameter(from), p.parameter(to)),
-            None => EdgeArc::Line(from, to),
-        };
-        EdgeUnderSegment {
-            left,
-            right,
-            arc,
-            segment: Site::Segment { a: pa, b: pb },
-            touches_end: sides.contains(&a) || sides.contains(&b),
-        }
+        segment_predicates::middle_margin(FiniteEdge { left, right, from, to }, contact, self.segment_between(a, b))
     }
-}
-
-/// An edge seen from a new segment (`PointDiagram::edge_under`).
-struct EdgeUnderSegment {
-    left: Site,
-    right: Site,
-    arc: EdgeArc,
-    segment: Site,
-    /// One of the edge's sites is an endpoint of the segment.
-    touches_end: bool,
-}
-
-impl EdgeUnderSegment {
-    /// The excess of the distance to the segment over the distance to the
-    /// edge's own sites, at the point of the edge at parameter `t` (0 at its
-    /// origin, 1 at its target); NaN gives `-∞`.
-    fn excess(&self, t: f64) -> f64 {
-        let q = self.arc.point(t);
-        let e = match self.segment {
-            // On an edge of R(a) or R(b) the distances to the segment and to
-            // its endpoint agree outside the strip, so the signed distance
-            // beyond the perpendiculars decides, without cancellation.
-            Site::Segment { a: pa, b: pb } if self.touches_end => {
-                let (dx, dy) = (pb.x - pa.x, pb.y - pa.y);
-                let beyond_b = (q.x - pb.x) * dx + (q.y - pb.y) * dy;
-                let beyond_a = (pa.x - q.x) * dx + (pa.y - q.y) * dy;
-                beyond_a.max(beyond_b) / norm(dx, dy)
-            }
-            _ => self.segment.distance(q) - 0.5 * (self.left.distance(q) + self.right.distance(q)),
-        };
-        if e.is_nan() {
-            f64::NEG_INFINITY
-        } else {
-            e
-        }
-    }
-}
-
-/// A finite edge as a curve over `[0, 1]`: a straight piece, or an arc of
-/// a parabola between two of its parameters.
-enum EdgeArc {
-    Line(Point, Point),
-    Parabola(Parabola, f64, f64),
-}
-
-impl EdgeArc {
-    fn point(&self, t: f64) -> Point {
-        match *self {
-            EdgeArc::Line(p, q) => Point::new(p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t),
-            EdgeArc::Parabola(ref par, s0, s1) => par.point(s0 + (s1 - s0) * t),
-        }
-    }
-
-    /// The parameter of the point of the curve nearest to `q` (exact for
-    /// points on it, up to rounding); NaN for a curve of no length.
-    fn parameter(&self, q: Point) -> f64 {
-        match *self {
-            EdgeArc::Line(p, r) => {
-                let (dx, dy) = (r.x - p.x, r.y - p.y);
-                ((q.x - p.x) * dx + (q.y - p.y) * dy) / (dx * dx + dy * dy)
-            }
-            EdgeArc::Parabola(ref par, s0, s1) => (par.parameter(q) - s0) / (s1 - s0),
-        }
-    }
-}
-
-/// The largest value of `f` over `[0, 1]` as far as sampling finds it:
-/// evenly spaced samples, the best refined by golden-section search.
-fn sampled_maximum(f: &impl Fn(f64) -> f64) -> f64 {
-    const SAMPLES: usize = 16;
-    const REFINEMENTS: usize = 40;
-    let step = 1.0 / (SAMPLES + 1) as f64;
-    let (mut best_t, mut best) = (0.5, f64::NEG_INFINITY);
-    for k in 1..=SAMPLES {
-        let t = k as f64 * step;
-        let e = f(t);
-        if e > best {
-            (best_t, best) = (t, e);
-        }
-    }
-    let ratio = 0.5 * (5f64.sqrt() - 1.0);
-    let (mut lo, mut hi) = ((best_t - step).max(0.0), (best_t + step).min(1.0));
-    let (mut x1, mut x2) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
-    let (mut e1, mut e2) = (f(x1), f(x2));
-    for _ in 0..REFINEMENTS {
-        if e1 < e2 {
-            lo = x1;
-            (x1, e1) = (x2, e2);
-            x2 = lo + ratio * (hi - lo);
-            e2 = f(x2);
-        } else {
-            hi = x2;
-            (x2, e2) = (x1, e1);
-            x1 = hi - ratio * (hi - lo);
-            e1 = f(x1);
-        }
-    }
-    best.max(e1).max(e2)
 }

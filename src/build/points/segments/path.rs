@@ -11,7 +11,7 @@ use std::hash::{BuildHasherDefault, Hash, Hasher};
 use super::super::PointDiagram;
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
 use crate::geometry::predicates::{CirclePosition, Orientation};
-use crate::geometry::segment_predicates::LeftDegree;
+use crate::geometry::segment_predicates::{EdgeMiddle, LeftDegree};
 use crate::geometry::Point;
 
 /// A path of P4: its vertices, and the half-edge by which each vertex after
@@ -283,7 +283,7 @@ impl PointDiagram {
         let chord_ok = |x: HalfEdgeId| {
             self.is_separator(x)
                 || !walk.on_walk.contains(&self.store.target(x))
-                || (self.may_cut_twice(x, a, b) && (!walk.strict || self.middle_margin(x, a, b) > 0.0))
+                || (self.may_cut_twice(x, a, b) && (!walk.strict || self.middle_margin(x, a, b).middle == EdgeMiddle::Stays))
         };
         !self.is_separator(h)
             && !walk.on_walk.contains(&w)
