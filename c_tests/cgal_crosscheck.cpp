@@ -41,16 +41,18 @@
 // integer junctions (2..40 segments in [0, 20|1000|1e6]^2, 30% of endpoints
 // reused so that up to ten segments meet), stars (3..10 spokes pointing in
 // or out, a few points), polylines (2..40 steps, sometimes closed), snapped
-// floats (multiples of 2^-2..2^-6 with endpoint reuse) and small
-// boost-split inputs. Junctions in [0, 20]^2 and snapped floats are
-// compared as degenerate, the rest as generic (--generic: only those); a
-// generic input that CGAL finds exactly degenerate (a Voronoi edge of
-// length zero) is compared as degenerate when the generic comparison
-// differs. Each input is checked as
-// generated, with every segment reversed and shuffled. A difference, an
-// invalid diagram or a library error (an INTERSECTING status included: the
-// generators only make legal inputs, checked exactly) is a failure: it is
-// minimised (drop segments and points one at a time while it still fails,
+// floats (multiples of 2^-2..2^-6 with endpoint reuse), small boost-split
+// inputs, and near-degenerate ones (small-grid junctions or snapped floats
+// with points moved by a few ulps, zeros to subnormals, or by 1e-12 or
+// 1e-9). Junctions in [0, 20]^2 and snapped floats are compared as
+// degenerate, the rest as generic (--generic: only those, without the
+// near-degenerate ones); a generic input that CGAL finds exactly
+// degenerate (a Voronoi edge of length zero) is compared as degenerate when
+// the generic comparison differs. Each input is checked as generated, with
+// every segment reversed and shuffled. A difference, an invalid diagram or
+// a library error (an INTERSECTING status included: the generators only
+// make legal inputs, checked exactly) is a failure: it is minimised (drop
+// segments and points one at a time while it still fails, in a few orders,
 // then turn reversed segments back) and printed in the input format (and
 // written to DIR with --out). Ends with "search: inputs=N per_minute=M
 // failures=K"; exit status 1 when K > 0. --minimise applies the same
@@ -67,6 +69,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -1146,7 +1149,7 @@ double elapsed_ms(std::chrono::steady_clock::time_point start) {
 
 struct OursResult {
     Topology plain;  // flags 0: EDGES, FACES
-    Topology full;   // SEGVORONOI_TOPOLOGY_VORONOI_PAIRS: all four sections
+    Topology full;   // SEGVORONOI_TOPOLOGY_VORONOI_PAIRS (with the tolerance): all four sections
     double build_ms = 0.0;
     std::vector<std::string> problems;  // validity and consistency failures
 };
@@ -1225,7 +1228,10 @@ OursResult build_ours(const Input& input, const Sites& sites) {
         check_status(segvoronoi_builder_build(builder, &diagram), "segvoronoi_builder_build", builder);
         ours.build_ms = elapsed_ms(start);
         ours.plain = parse_topology(topology_text(diagram, 0));
-        ours.full = parse_topology(topology_text(diagram, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS));
+        // Zero length by the same rule as CGAL's side below (at most 1e-9 of
+        // the diagonal), not the library's exact default.
+        ours.full = parse_topology(
+            topology_text(diagram, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS | SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE));
         check_ours_consistent(diagram, sites, ours);
     } catch (...) {
         segvoronoi_diagram_free(diagram);
@@ -1461,12 +1467,19 @@ void count_degenerate_edges(const Sdg& sdg, CgalResult& cgal) {
     }
 }
 
-CgalResult build_cgal(const Sites& sites, const Input& input) {
+// Without `voronoi`, a generic input gets no VPAIRS and VVERTICES (they are
+// informational there, and CGAL's exact vertex construction can divide by
+// zero on a nearly degenerate face: GMP then raises SIGFPE).
+CgalResult build_cgal(const Sites& sites, const Input& input, bool voronoi = true) {
     CgalResult cgal;
     Sdg sdg;
     build_cgal_graph(sites, input, sdg, cgal);
     add_delaunay_sections(sdg, sites, cgal.topology);
     count_degenerate_edges(sdg, cgal);
+    if (!voronoi && !input.degenerate) {
+        cgal.voronoi_skipped = "not computed";
+        return cgal;
+    }
     try {
         add_voronoi_sections(sdg, sites, cgal);
     } catch (const std::runtime_error& error) {
@@ -1605,7 +1618,20 @@ struct RunResult {
 
 // Inputs are legal by construction (the generators filter exactly), so a
 // library that rejects one as intersecting is a failure too.
+// The input being checked, for the SIGFPE report.
+const Input* g_current_input = nullptr;
+
+extern "C" void report_sigfpe(int) {
+    // Raised synchronously (GMP's division by zero calls raise()), so stdio
+    // is usable here in practice.
+    std::printf("CRASH: SIGFPE (GMP division by zero in a CGAL construction?) on this input:\n");
+    if (g_current_input != nullptr) write_text(stdout, *g_current_input);
+    std::fflush(stdout);
+    std::_Exit(3);
+}
+
 RunResult run_one(const Input& input) {
+    g_current_input = &input;
     RunResult result;
     const Sites sites(input);
     OursResult ours;
@@ -1618,7 +1644,7 @@ RunResult run_one(const Input& input) {
     }
     CgalResult cgal;
     try {
-        cgal = build_cgal(sites, input);
+        cgal = build_cgal(sites, input, false);
     } catch (const std::exception& error) {
         result.outcome = Outcome::CgalError;
         result.text = std::string("cgal: ") + error.what() + "\n";
@@ -1723,18 +1749,17 @@ void add_points(Input& input, std::size_t max, Rng& rng, Fresh fresh) {
     }
 }
 
-// With `generic_only`, only the kinds compared as generic.
-SearchCase random_case(Rng& rng, bool generic_only) {
+// Kind 0..4 (below); with `generic_only`, junctions never on the small grid,
+// with `small_grid` always.
+SearchCase random_case_of(std::size_t kind, Rng& rng, bool generic_only, bool small_grid) {
     SearchCase c;
     Input& input = c.input;
-    std::size_t kind = rng.below(5);
-    if (generic_only && kind == 3) kind = rng.below(2) == 0 ? 0 : 4;
     const double two_pi = 6.283185307179586;
     if (kind == 0) {
         // Integer junctions: endpoints in [0, range]^2, 30% of them earlier
         // endpoints; short or long segments.
         const double ranges[] = {20.0, 1000.0, 1e6};
-        const std::size_t r = generic_only ? 1 + rng.below(2) : rng.below(3);
+        const std::size_t r = small_grid ? 0 : generic_only ? 1 + rng.below(2) : rng.below(3);
         const double range = ranges[r];
         const std::size_t n = 2 + rng.below(39);
         const bool short_ones = rng.below(2) == 0;
@@ -1825,6 +1850,64 @@ SearchCase random_case(Rng& rng, bool generic_only) {
     return c;
 }
 
+// Near-degenerate: a small-grid junction or snapped input (exact
+// coincidences everywhere) with every distinct point moved, with
+// probability one half, in x, y or both (shared endpoints move together);
+// segments and points that become illegal are left out. Compared as
+// generic.
+SearchCase nudged_case(Rng& rng) {
+    SearchCase base = random_case_of(rng.below(2) == 0 ? 0 : 3, rng, false, true);
+    // ulps: nonzero coordinates by 1..4 ulps (zero stays); denormal: zero
+    // coordinates by 1..4 times the least subnormal (the rest stays);
+    // 1e-12, 1e-9: any coordinate by up to that much of the extent.
+    const std::size_t level = rng.below(4);
+    const char* const level_names[] = {"ulps", "denormal", "1e-12", "1e-9"};
+    const double extent = base.kind.rfind("junctions", 0) == 0 ? 20.0 : 4.0;
+    std::map<std::pair<double, double>, Point> moved;
+    auto shift = [&](double v) {
+        if (level <= 1) {
+            if ((v == 0.0) != (level == 1)) return v;
+            const double toward = rng.below(2) == 0 ? HUGE_VAL : -HUGE_VAL;
+            for (std::size_t k = 1 + rng.below(4); k > 0; --k) v = std::nextafter(v, toward);
+            return v;
+        }
+        return v + (2.0 * rng.unit() - 1.0) * extent * (level == 2 ? 1e-12 : 1e-9);
+    };
+    auto nudge = [&](const Point& p) {
+        auto it = moved.find({p.x, p.y});
+        if (it != moved.end()) return it->second;
+        Point q = p;
+        if (rng.below(2) == 0) {
+            const std::size_t axes = rng.below(3);
+            if (axes != 1) q.x = shift(q.x);
+            if (axes != 0) q.y = shift(q.y);
+        }
+        moved.emplace(std::make_pair(p.x, p.y), q);
+        return q;
+    };
+    SearchCase c;
+    for (const Segment& s : base.input.segments) {
+        const Segment t{nudge(s.a), nudge(s.b)};
+        if (legal_addition(c.input.segments, t)) c.input.segments.push_back(t);
+    }
+    for (const Point& p : base.input.points) {
+        const Point q = nudge(p);
+        if (legal_point(c.input.segments, q)) c.input.points.push_back(q);
+    }
+    c.kind = "nudged-" + base.kind.substr(0, base.kind.find('-')) + "-" + level_names[level];
+    c.input.family = c.kind;
+    return c;
+}
+
+// One input of a random kind; with `generic_only`, only the kinds compared
+// as generic, and not the near-degenerate ones.
+SearchCase random_case(Rng& rng, bool generic_only) {
+    std::size_t kind = rng.below(6);
+    if (generic_only && (kind == 3 || kind == 5)) kind = rng.below(2) == 0 ? 0 : 4;
+    if (kind == 5) return nudged_case(rng);
+    return random_case_of(kind, rng, generic_only, false);
+}
+
 // Greedy minimisation of a failing input: drop one segment, then one
 // point, at a time while it still fails (until nothing can go); then turn
 // each segment that `flipped` marks as reversed back while it still fails.
@@ -1911,6 +1994,7 @@ std::uint64_t mix_seed(std::uint64_t seed, std::uint64_t k) {
 }
 
 int search(double seconds, std::uint64_t seed, bool generic_only, const std::string& out_dir) {
+    std::signal(SIGFPE, report_sigfpe);
     std::printf("search: seconds=%g seed=%llu%s\n", seconds, static_cast<unsigned long long>(seed),
                 generic_only ? " generic" : "");
     std::fflush(stdout);
@@ -2053,6 +2137,7 @@ int minimise_file(int argc, char** argv) {
         return 2;
     }
     input.degenerate = argc == 4;
+    std::signal(SIGFPE, report_sigfpe);
     if (run_one(input).outcome != Outcome::Fail) {
         std::printf("minimise: the input does not fail\n");
         return 0;

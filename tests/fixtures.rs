@@ -44,6 +44,9 @@ const KNOWN: &[(&str, &str)] = &[
     // piece, that piece and the near endpoint of the other has no circle
     // (both points on the segment's line) and is placed 14..102 from its sites.
     ("two_collinear_pieces.txt", "two pieces of one line: a vertex far from one of its sites"),
+    // Found by the harness's --search (near-degenerate kinds), 2c4f111.
+    ("search_denormal_2seg.txt", "an endpoint's y the least subnormal: vertices placed 4.6 off"),
+    ("search_ulps_3seg.txt", "a chain with a kink of 1e-16 rad: a vertex 0.6 from one of its sites"),
     // KNOWN DIFFERENCE (issue 3 note, cgal.cmake): kinks of 1e-10 rad.
     ("near_vertical_chain3.txt", "a radius-0 vertex at a chain's joint with a site 0.12 away"),
 ];
