@@ -22,26 +22,29 @@ use super::predicates::{orientation, CirclePosition, Orientation};
 use super::segment_solvers;
 use super::site::Site;
 
-/// How far a new segment reaches into the circle of a finite vertex.
+/// How far a new segment reaches into the circle of a finite vertex: the
+/// signed depth, negative inside, never NaN.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct SegmentDepth {
-    /// Whether the segment enters the open disk (`Inside`: the vertex is in
-    /// conflict with it), touches the circle, or stays outside.
-    pub position: CirclePosition,
-    /// The signed depth, negative inside, never NaN: only for ranking.
-    pub depth: f64,
-}
+pub(crate) struct SegmentDepth(f64);
 
 impl SegmentDepth {
-    fn new(depth: f64) -> SegmentDepth {
-        let position = if depth < 0.0 {
+    /// Whether the segment enters the open disk (`Inside`: the vertex is in
+    /// conflict with it), touches the circle, or stays outside.
+    #[inline]
+    pub fn position(self) -> CirclePosition {
+        if self.0 < 0.0 {
             CirclePosition::Inside
-        } else if depth > 0.0 {
+        } else if self.0 > 0.0 {
             CirclePosition::Outside
         } else {
             CirclePosition::On
-        };
-        SegmentDepth { position, depth }
+        }
+    }
+
+    /// The signed depth, only for ranking.
+    #[inline]
+    pub fn depth(self) -> f64 {
+        self.0
     }
 }
 
@@ -83,6 +86,7 @@ pub(crate) struct AtEndpoint {
 /// is on their bisector: every point of it is nearer the segment between
 /// them, exactly (the rounded position of a far vertex of nearly collinear
 /// sites may say otherwise).
+#[inline]
 pub(crate) fn segment_depth(
     (a, b): (Point, Point),
     contact: Contact,
@@ -106,12 +110,13 @@ pub(crate) fn segment_depth(
         Contact::NoEnd => certified(Reach::Distance { a, b }, Site::Segment { a, b }.distance(c) - radius, c, radius, sites),
     };
     let depth = fault::perturb(depth);
-    SegmentDepth::new(if depth.is_nan() { f64::INFINITY } else { depth })
+    SegmentDepth(if depth.is_nan() { f64::INFINITY } else { depth })
 }
 
 /// The rounded depth, its sign certified from the vertex's sites
 /// (`oracle`). Not in fault injection: a refinement would make the lying
 /// numbers honest again.
+#[inline]
 fn certified(question: Reach, depth: f64, centre: Point, radius: f64, sites: impl FnOnce() -> [Site; 3]) -> f64 {
     if fault::active() {
         return depth;
@@ -133,6 +138,7 @@ fn certified(question: Reach, depth: f64, centre: Point, radius: f64, sites: imp
 /// the tangent, as where a chain goes straight on). Two such segments put
 /// the vertex at `end` itself (radius 0): then the sector it stands for
 /// decides (`sector_side`). `Numeric` where there is none.
+#[inline]
 fn side_at_endpoint(at: &AtEndpoint) -> EndpointSide {
     let (pe, po) = (at.end, at.other);
     let turn = |far: Point| orientation(pe, far, po);
@@ -151,6 +157,7 @@ fn side_at_endpoint(at: &AtEndpoint) -> EndpointSide {
 /// `pe → po` splits that vertex exactly when it leaves `pe` strictly
 /// inside the sector (exact orientations; a sector of 180° or more only
 /// arises from lying numbers, and is decided the same way).
+#[inline]
 fn sector_side(pe: Point, po: Point, pf: Point, pt: Point) -> EndpointSide {
     let after_from = orientation(pe, pf, po) == Orientation::CounterClockwise;
     let before_to = orientation(pe, po, pt) == Orientation::CounterClockwise;
@@ -184,6 +191,7 @@ enum EndpointSide {
 impl EndpointSide {
     /// From the turn of the new segment against the separator's segment:
     /// `entering` is the turn that points into the circle.
+    #[inline]
     fn from_turn(turn: Orientation, entering: Orientation) -> EndpointSide {
         if turn == Orientation::Collinear {
             EndpointSide::OnCircle
@@ -196,6 +204,7 @@ impl EndpointSide {
 
     /// The depth with this sign: the numeric one's size (at least the
     /// smallest positive number, so the sign survives), or 0 on the circle.
+    #[inline]
     fn apply(self, numeric: f64) -> f64 {
         let size = numeric.abs().max(f64::MIN_POSITIVE);
         match self {
@@ -222,34 +231,31 @@ pub(crate) enum SiteSeen {
 }
 
 /// Seed 000's left-degree of a site seen from a vertex against the
-/// directed segment `a → b`: which side of it the site lies on
-/// (`CounterClockwise`: left), and how clearly.
+/// directed segment `a → b`: positive when the site is left of `a → b`,
+/// infinite when decided exactly.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct LeftDegree {
-    /// The side: `CounterClockwise` (left) when the degree is positive,
-    /// `Clockwise` when negative, `Collinear` otherwise (zero, or NaN).
-    pub side: Orientation,
-    /// Positive when the site is left of `a → b`; infinite when decided
-    /// exactly.
-    degree: f64,
-}
+pub(crate) struct LeftDegree(f64);
 
 impl LeftDegree {
-    fn new(degree: f64) -> LeftDegree {
-        let side = if degree > 0.0 {
+    /// The side of `a → b` the site lies on: `CounterClockwise` (left) when
+    /// the degree is positive, `Clockwise` when negative, `Collinear`
+    /// otherwise (zero, or NaN).
+    #[inline]
+    pub fn side(self) -> Orientation {
+        if self.0 > 0.0 {
             Orientation::CounterClockwise
-        } else if degree < 0.0 {
+        } else if self.0 < 0.0 {
             Orientation::Clockwise
         } else {
             Orientation::Collinear
-        };
-        LeftDegree { side, degree }
+        }
     }
 
     /// How certain the side is, for ranking: the degree's size (infinite
     /// when exact, NaN when the numbers failed).
+    #[inline]
     pub fn certainty(self) -> f64 {
-        self.degree.abs()
+        self.0.abs()
     }
 
     /// How clearly an edge has the site `left` on its left of the segment
@@ -257,8 +263,9 @@ impl LeftDegree {
     /// ranking: the smaller of the two degrees in those directions, `-∞`
     /// when the numbers failed, and at most `f64::MAX` (below a start that
     /// is a vertex of `R(b)`, ranked `+∞`).
+    #[inline]
     pub fn separation(left: LeftDegree, right: LeftDegree) -> f64 {
-        let separation = left.degree.min(-right.degree);
+        let separation = left.0.min(-right.0);
         if separation.is_nan() {
             f64::NEG_INFINITY
         } else {
@@ -273,11 +280,12 @@ impl LeftDegree {
 /// size guide the walk. A segment that shares an endpoint with `ab` lies on
 /// the side of its other endpoint, decided exactly (and reported as
 /// certain: infinite).
+#[inline]
 pub(crate) fn left_degree((a, b): (Point, Point), seen: SiteSeen) -> LeftDegree {
     let q = match seen {
-        SiteSeen::Infinity => return LeftDegree::new(0.0),
+        SiteSeen::Infinity => return LeftDegree(0.0),
         SiteSeen::SharingEndpoint { far } => {
-            return LeftDegree::new(match orientation(a, b, far) {
+            return LeftDegree(match orientation(a, b, far) {
                 Orientation::CounterClockwise => f64::INFINITY,
                 Orientation::Clockwise => f64::NEG_INFINITY,
                 Orientation::Collinear => 0.0,
@@ -286,11 +294,12 @@ pub(crate) fn left_degree((a, b): (Point, Point), seen: SiteSeen) -> LeftDegree 
         SiteSeen::Other { site, from: Some(v) } => site.nearest_point(v),
         SiteSeen::Other { site, from: None } => site.midpoint(),
     };
-    LeftDegree::new(fault::perturb((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x)))
+    LeftDegree(fault::perturb((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x)))
 }
 
 /// Whether `p` lies in the closed strip between the perpendiculars to `ab`
 /// at `a` and at `b` (criterion 2.2; perturbed in fault injection).
+#[inline]
 pub(crate) fn in_strip(p: Point, a: Point, b: Point) -> bool {
     let (dx, dy) = (b.x - a.x, b.y - a.y);
     let t = (p.x - a.x) * dx + (p.y - a.y) * dy;
@@ -324,15 +333,10 @@ pub(crate) enum EdgeContact {
     NoEnd,
 }
 
-/// Whether the middle of an edge whose two ends the new cell takes stays
-/// out of it, and how clearly.
+/// How clearly the middle of an edge whose two ends the new cell takes
+/// stays out of it: positive when it does.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct MiddleMargin {
-    /// `Stays` when the margin is positive.
-    pub middle: EdgeMiddle,
-    /// Positive: how clearly the middle stays; only for ranking.
-    pub margin: f64,
-}
+pub(crate) struct MiddleMargin(f64);
 
 /// What becomes of the middle of an edge whose two ends are deleted.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -344,9 +348,20 @@ pub(crate) enum EdgeMiddle {
 }
 
 impl MiddleMargin {
-    fn new(margin: f64) -> MiddleMargin {
-        let middle = if margin > 0.0 { EdgeMiddle::Stays } else { EdgeMiddle::Covered };
-        MiddleMargin { middle, margin }
+    /// `Stays` when the margin is positive.
+    #[inline]
+    pub fn middle(self) -> EdgeMiddle {
+        if self.0 > 0.0 {
+            EdgeMiddle::Stays
+        } else {
+            EdgeMiddle::Covered
+        }
+    }
+
+    /// The margin, only for ranking.
+    #[inline]
+    pub fn margin(self) -> f64 {
+        self.0
     }
 }
 
@@ -366,7 +381,7 @@ pub(crate) fn middle_margin(edge: FiniteEdge, contact: EdgeContact, segment: (Po
     if contact == EdgeContact::BothEnds {
         // Every point of the bisector of a and b is closer to the open
         // segment between them (the midpoint is nearer than either end).
-        return MiddleMargin::new(f64::NEG_INFINITY);
+        return MiddleMargin(f64::NEG_INFINITY);
     }
     let edge = EdgeUnderSegment::new(edge, segment, contact == EdgeContact::OneEnd);
     let crossings = segment_solvers::vertex(&edge.right, &edge.left, &edge.segment)
@@ -384,7 +399,7 @@ pub(crate) fn middle_margin(edge: FiniteEdge, contact: EdgeContact, segment: (Po
         Some((t1, t2)) => -(t1 - t2).abs().max(f64::MIN_POSITIVE),
         None => sampled_maximum(&|t| edge.excess(t)),
     };
-    MiddleMargin::new(fault::perturb(margin))
+    MiddleMargin(fault::perturb(margin))
 }
 
 /// An edge seen from a new segment (`EdgeUnderSegment::new`).

@@ -21,6 +21,7 @@ pub(crate) fn circle_of_points(a: Point, b: Point, c: Point) -> (Point, f64) {
 
 /// The centre and radius of the vertex of three sites, some of them
 /// segments.
+#[inline]
 pub(crate) fn circle_of_sites(sites: &[Site; 3]) -> (Point, f64) {
     let [ga, gb, gc] = sites;
     let solved = segment_solvers::vertex(ga, gb, gc);

@@ -83,6 +83,7 @@ impl PointDiagram {
     }
 
     /// The coordinates of the endpoint sites `a` and `b` of a new segment.
+    #[inline]
     fn segment_between(&self, a: SiteId, b: SiteId) -> (Point, Point) {
         (self.sites[a.index()], self.sites[b.index()])
     }
@@ -169,6 +170,7 @@ impl PointDiagram {
     /// among its sites just after and just before `end` that end there, by
     /// their far endpoints: the vertex then lies on their separator at
     /// `end`, and the order of its sites says on which side.
+    #[inline]
     fn at_endpoint(&self, end: SiteId, other: SiteId, sites: [SiteId; 3]) -> AtEndpoint {
         let k = sites.iter().position(|&s| s == end).unwrap_or(0);
         let far = |s: SiteId| self.far_end(s, end).map(|f| self.sites[f.index()]);
@@ -185,7 +187,7 @@ impl PointDiagram {
     fn segment_conflict(&self, v: VertexId, a: SiteId, b: SiteId) -> bool {
         match infinite_rotation(self.store.sites_of(v)) {
             Some((x, y)) => (x == a && y == b) || (x == b && y == a),
-            None => self.segment_depth(v, a, b).position == CirclePosition::Inside,
+            None => self.segment_depth(v, a, b).position() == CirclePosition::Inside,
         }
     }
 

@@ -96,8 +96,8 @@ impl PointDiagram {
                 .chain(cycle)
                 .filter(|&h| self.is_finite_edge(h))
                 .map(|h| (self.middle_margin(h, a, b), h))
-                .filter(|(margin, _)| margin.middle == EdgeMiddle::Stays)
-                .map(|(margin, h)| (margin.margin, h))
+                .filter(|(margin, _)| margin.middle() == EdgeMiddle::Stays)
+                .map(|(margin, h)| (margin.margin(), h))
                 .collect();
             candidates.sort_by(|x, y| y.0.total_cmp(&x.0));
             // An edge of R(a) or R(b) may keep its middle only where the rest

@@ -234,7 +234,7 @@ impl PointDiagram {
                 (self.segment_conflict(v, a, b), f64::INFINITY)
             } else {
                 let depth = self.segment_depth(v, a, b);
-                (depth.position == CirclePosition::Inside, depth.depth)
+                (depth.position() == CirclePosition::Inside, depth.depth())
             };
             let conflict = if conflict { 1.0 } else { 0.0 };
             let key = if self.store.sites_of(v).contains(&b) && self.walkable(v, a, b) {
@@ -283,7 +283,7 @@ impl PointDiagram {
         let chord_ok = |x: HalfEdgeId| {
             self.is_separator(x)
                 || !walk.on_walk.contains(&self.store.target(x))
-                || (self.may_cut_twice(x, a, b) && (!walk.strict || self.middle_margin(x, a, b).middle == EdgeMiddle::Stays))
+                || (self.may_cut_twice(x, a, b) && (!walk.strict || self.middle_margin(x, a, b).middle() == EdgeMiddle::Stays))
         };
         !self.is_separator(h)
             && !walk.on_walk.contains(&w)
@@ -314,7 +314,7 @@ impl PointDiagram {
                 let ahead = self.store.opposite(t);
                 let l = self.left_degree(v, ahead, (a, b), (pa, pb));
                 let (keep_left, keep_right) = (t.rotate(1), t.rotate(2));
-                if l.side == Orientation::CounterClockwise {
+                if l.side() == Orientation::CounterClockwise {
                     (keep_left, keep_right, l.certainty())
                 } else {
                     (keep_right, keep_left, l.certainty())
