@@ -16,6 +16,9 @@
 //! diagram whatever the predicates answer. With exact predicates the set
 //! grown is exactly the set of vertices whose circles strictly contain `p`,
 //! so the result is the exact diagram.
+//!
+//! Every number comes from `geometry` (`predicates`, `point_predicates`,
+//! `vertex_placement`); this module only decides what to ask.
 
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
 use crate::diagram::Store;

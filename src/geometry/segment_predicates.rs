@@ -7,8 +7,9 @@
 //! of an edge whose two ends are deleted stays out of the new cell (the
 //! margin of an edge cut twice).
 //!
-//! Each answer is a sign, an enum, and separately a magnitude used only to
-//! rank candidates. The construction (`build::points::segments`) decides
+//! Each answer holds one number and gives its sign as an enum and,
+//! separately, its magnitude, used only to rank candidates (the strip test
+//! is a plain yes or no). The construction (`build::points::segments`) decides
 //! which vertex, edge or site to ask about and what its sites are; nothing
 //! here knows about the diagram. In the fault-injection build the numbers
 //! are perturbed here (`fault`), one draw per quantity, in the order the

@@ -27,6 +27,11 @@
 //! edge leaving `T` gets a new vertex and the new vertices bound `e`'s cell;
 //! the new edges shared with `R(a)` and `R(b)` are the separators.
 //!
+//! This module and its children do no arithmetic: they decide which vertex,
+//! edge or site to ask about, fetch its sites and positions from the store,
+//! and ask `geometry::segment_predicates` (conflict depth, left-degree,
+//! strip, the margin of an edge cut twice) and `geometry::vertex_placement`.
+//!
 //! A vertex at infinity `(x, y, ∞)` conflicts with `e` exactly when
 //! `{x, y} = {a, b}` (then `e` is a convex-hull edge): decided without
 //! numbers, so the symbolic point at infinity needs no far-away sites.

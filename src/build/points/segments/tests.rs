@@ -125,7 +125,7 @@ fn separators_ok(d: &PointDiagram) -> Result<(), String> {
 fn separators_under_random_arithmetic() {
     for seed in 0..3 {
         let (pts, segs) = jittered(20, seed);
-        crate::geometry::fault::set_fault_mode(crate::geometry::fault::FaultMode::Random, seed);
+        crate::fault_injection::set_fault_mode(crate::fault_injection::FaultMode::Random, seed);
         let mut d = PointDiagram::new(pts.len() + segs.len());
         let ids = d.start_collinear(&pts[..2]);
         let mut all = ids.clone();
@@ -147,13 +147,13 @@ fn separators_under_random_arithmetic() {
             d.replace_tree(e);
             let ok = separators_ok(&d);
             if ok.is_err() {
-                crate::geometry::fault::set_fault_mode(crate::geometry::fault::FaultMode::Off, 0);
+                crate::fault_injection::set_fault_mode(crate::fault_injection::FaultMode::Off, 0);
             }
             if let Err(msg) = ok {
                 panic!("seed {seed} segment {k} ({e:?}): path found {found}, path {}: {msg}", path.len());
             }
         }
-        crate::geometry::fault::set_fault_mode(crate::geometry::fault::FaultMode::Off, 0);
+        crate::fault_injection::set_fault_mode(crate::fault_injection::FaultMode::Off, 0);
     }
 }
 
