@@ -208,15 +208,9 @@ segvoronoi_cgal_fixture_test(circle32_icon)
 # two consecutive segments of a real coastline ring (GSHHG): a face of ours has a site inside its circle by 8.6e-28
 segvoronoi_cgal_fixture_test(coastline_2seg)
 
-# KNOWN DIFFERENCE until the exact segment predicates land: near-degenerate
-# inputs where the double-precision segment predicates decide a sign wrongly
-# (valid diagrams, but not CGAL's exact one). Re-enable by deleting a name.
-# (fan_equal_length_2seg, neartouch_2seg, two_collinear_pieces,
-# tangent4_near_cocircular, circle32_icon and coastline_2seg differed too
-# until the certified segment conflict, c36f015..0ecd87d.)
-set_tests_properties(
-  cgal_fixture_point_near_segment_int
-  PROPERTIES DISABLED TRUE)
+# The seven near-degenerate ones (fan_equal_length_2seg .. coastline_2seg)
+# differed until the exact segment predicates (certified segment conflict,
+# c36f015..0ecd87d; point_near_segment_int until the oracle of 2e52cd8).
 
 # Boost.Polygon's benchmark style (boost-split): n random segments on the
 # integer grid of side 1e6, every crossing split at the crossing point
@@ -277,19 +271,28 @@ segvoronoi_cgal_fixture_test(search_nudged_1e-9_4seg)
 # two perpendicular segments (junctions-20): agrees at afbc170; since the exact zero length of 406d1cb
 # VPAIRS/VVERTICES merge a positive-length edge (P0 S0 S1 is its own vertex in CGAL)
 segvoronoi_cgal_fixture_test(search_perpendicular_2seg_zero_length --degenerate)
+# found by cgal_search_generic at 2e52cd8 (split-1000000, differs at afbc170 too): three segments meeting at a
+# rounded crossing point and a fourth; CGAL has one exactly zero-length edge, ours an edge flipped and vertices up to 2e4 off
+segvoronoi_cgal_fixture_test(search_split_junction3_4seg --degenerate)
 
-# KNOWN DIFFERENCE at 2c4f111, found by the search. The first four
-# near-degenerate fixtures differ at afbc170 too (signs decided wrongly:
-# subnormal products underflow, kinks of 1e-16 rad, 1e-9 from cocircular).
+# KNOWN DIFFERENCE at 2c4f111 (and still at 2e52cd8), found by the search.
+# The first four near-degenerate fixtures and search_split_junction3_4seg
+# differ at afbc170 too (signs decided wrongly: subnormal products
+# underflow, kinks of 1e-16 rad, 1e-9 from cocircular, an exact coincidence
+# at a rounded crossing).
 # search_perpendicular_2seg_zero_length and
 # search_cocircular_tangent_at_endpoint (its 5.7 long P0-P3 edge merged)
 # are a regression of the exact zero-length rule of 406d1cb (a segment whose
 # endpoint lies on a vertex's circle counts as on the circle, so an edge of
 # positive length is merged). The full search fails within seconds on the
 # same kinds; it passed at afbc170 before the near-degenerate kinds were
-# added (44,822 inputs in 6 minutes, none failing). Re-enable by deleting a
-# name.
+# added (44,822 inputs in 6 minutes, none failing). The generic search
+# passed for 6.5 minutes at 2c4f111 and then found
+# search_split_junction3_4seg in one 120 s run at 2e52cd8 (about one
+# failure per 10,000 inputs). Re-enable by deleting a name.
 set_tests_properties(
+  cgal_fixture_search_split_junction3_4seg
+  cgal_search_generic
   cgal_fixture_search_denormal_point_off_line
   cgal_fixture_search_denormal_2seg
   cgal_fixture_search_ulps_3seg
