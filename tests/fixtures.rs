@@ -51,6 +51,9 @@ const KNOWN: &[(&str, &str)] = &[
 
 type Segment = [[f64; 2]; 2];
 
+/// A name and the points and segments it builds from.
+type Variant<'a> = (&'a str, &'a [[f64; 2]], &'a [Segment]);
+
 struct Fixture {
     points: Vec<[f64; 2]>,
     segments: Vec<Segment>,
@@ -163,7 +166,7 @@ fn every_fixture_builds_valid_in_every_direction_and_order() {
         let reversed_segments: Vec<Segment> = fixture.segments.iter().map(|&[a, b]| [b, a]).collect();
         let points_backwards: Vec<[f64; 2]> = fixture.points.iter().rev().copied().collect();
         let segments_backwards: Vec<Segment> = fixture.segments.iter().rev().copied().collect();
-        let variants: [(&str, &[[f64; 2]], &[Segment]); 3] = [
+        let variants: [Variant; 3] = [
             ("as given", &fixture.points, &fixture.segments),
             ("every segment reversed", &fixture.points, &reversed_segments),
             ("points and segments in reversed order", &points_backwards, &segments_backwards),
