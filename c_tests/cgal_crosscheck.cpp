@@ -1118,9 +1118,6 @@ struct Sites {
     }
 };
 
-// Same constant as segvoronoi::query::topology::ZERO_LENGTH.
-constexpr double kZeroLength = 1e-9;
-
 class UnionFind {
   public:
     explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
@@ -1228,10 +1225,8 @@ OursResult build_ours(const Input& input, const Sites& sites) {
         check_status(segvoronoi_builder_build(builder, &diagram), "segvoronoi_builder_build", builder);
         ours.build_ms = elapsed_ms(start);
         ours.plain = parse_topology(topology_text(diagram, 0));
-        // Zero length by the same rule as CGAL's side below (at most 1e-9 of
-        // the diagonal), not the library's exact default.
-        ours.full = parse_topology(
-            topology_text(diagram, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS | SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE));
+        // Zero length exactly (four sites on one circle), as CGAL's side below.
+        ours.full = parse_topology(topology_text(diagram, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS));
         check_ours_consistent(diagram, sites, ours);
     } catch (...) {
         segvoronoi_diagram_free(diagram);
@@ -1291,48 +1286,6 @@ std::pair<Sdg::Vertex_handle, Sdg::Vertex_handle> edge_vertices(const Sdg::Edge&
     return {e.first->vertex(Sdg::ccw(e.second)), e.first->vertex(Sdg::cw(e.second))};
 }
 
-using Rational = CGAL::Gmpq;
-
-struct ExactPoint {
-    Rational x;
-    Rational y;
-};
-
-// Circumcentre of three points in exact rationals: the Voronoi vertex of a
-// Delaunay face of points, free of rounding, so that the zero-length test
-// below depends on the threshold alone.
-ExactPoint exact_circumcentre(const K::Point_2& a, const K::Point_2& b, const K::Point_2& c) {
-    using Q = Rational;
-    const Q bx = Q(b.x()) - Q(a.x()), by = Q(b.y()) - Q(a.y());
-    const Q cx = Q(c.x()) - Q(a.x()), cy = Q(c.y()) - Q(a.y());
-    const Q b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-    const Q d = Q(2) * (bx * cy - by * cx);
-    if (CGAL::is_zero(d)) throw std::runtime_error("CGAL has a finite face with three collinear points");
-    return {(cy * b2 - by * c2) / d + Q(a.x()), (bx * c2 - cx * b2) / d + Q(a.y())};
-}
-
-// The Voronoi vertex of a finite face: exact for three points; with a
-// segment among the sites, CGAL's construction (Construct_svd_vertex_2,
-// through sdg.primal) in doubles, so then only as good as its rounding.
-ExactPoint face_vertex(const Sdg& sdg, const Sdg::Face_handle& f) {
-    if (f->vertex(0)->site().is_point() && f->vertex(1)->site().is_point() && f->vertex(2)->site().is_point()) {
-        return exact_circumcentre(f->vertex(0)->site().point(), f->vertex(1)->site().point(),
-                                  f->vertex(2)->site().point());
-    }
-    const K::Point_2 p = sdg.primal(f);
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {
-        throw std::runtime_error("CGAL's Voronoi vertex of a face with a segment is not finite");
-    }
-    return {Rational(p.x()), Rational(p.y())};
-}
-
-// The library's rule, `!(length > threshold)`, decided exactly.
-bool is_zero_length(const ExactPoint& p, const ExactPoint& q, double threshold) {
-    const Rational dx = p.x - q.x, dy = p.y - q.y;
-    const Rational limit(threshold);
-    return dx * dx + dy * dy <= limit * limit;
-}
-
 Epick::Point_2 as_epick(const Sdg::Vertex_handle& v) {
     const K::Point_2 p = v->site().point();
     return {p.x(), p.y()};
@@ -1387,11 +1340,23 @@ void add_delaunay_sections(const Sdg& sdg, const Sites& sites, Topology& topolog
     }
 }
 
-// VPAIRS and VVERTICES. Zero length is decided by the distance of the two
-// Voronoi vertices against the library's threshold (exactly for faces of
-// points; not by CGAL's is_degenerate_edge, which also says "degenerate" for
-// two far-apart vertices of the same three sites). An edge next to an
-// infinite face is a ray (or a line), always of positive length.
+// Whether the Voronoi edge of a finite Delaunay edge between two finite
+// faces has length zero, exactly: the apex of the second face lies on the
+// circle of the first (CGAL's exact is_degenerate_edge). Two faces of the
+// same three sites (far apart, with segments) are two different circles, for
+// which the predicate is trivially true, so they are excluded.
+bool is_zero_length_edge(const Sdg& sdg, const Sdg::Edge& e) {
+    const Sdg::Vertex_handle apex = e.first->vertex(e.second);
+    const Sdg::Vertex_handle mirror = sdg.tds().mirror_vertex(e.first, e.second);
+    if (apex == mirror) return false;
+    const auto ends = edge_vertices(e);
+    return sdg.geom_traits().is_degenerate_edge_2_object()(ends.first->site(), ends.second->site(), apex->site(),
+                                                           mirror->site());
+}
+
+// VPAIRS and VVERTICES, zero length decided exactly (is_zero_length_edge),
+// as the library does by default. An edge next to an infinite face is a ray
+// (or a line), always of positive length.
 void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) {
     Topology& topology = cgal.topology;
     topology.sections["VPAIRS"];
@@ -1400,16 +1365,13 @@ void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) 
 
     std::unordered_map<const void*, std::size_t> face_number;
     std::vector<Sdg::Face_handle> faces;
-    std::vector<ExactPoint> centres;
     if (sdg.dimension() == 2) {
         for (auto f = sdg.finite_faces_begin(); f != sdg.finite_faces_end(); ++f) {
             face_number.emplace(&*f, faces.size());
             faces.push_back(f);
-            centres.push_back(face_vertex(sdg, f));
         }
     }
 
-    const double threshold = kZeroLength * sites.extent();
     UnionFind merged(faces.size());
     for (auto e = sdg.finite_edges_begin(); e != sdg.finite_edges_end(); ++e) {
         const auto ends = edge_vertices(*e);
@@ -1422,7 +1384,7 @@ void add_voronoi_sections(const Sdg& sdg, const Sites& sites, CgalResult& cgal) 
         }
         const std::size_t a = face_number.at(&*e->first);
         const std::size_t b = face_number.at(&*e->first->neighbor(e->second));
-        if (is_zero_length(centres[a], centres[b], threshold)) {
+        if (is_zero_length_edge(sdg, *e)) {
             merged.join(a, b);
         } else {
             topology.add("VPAIRS", pair);

@@ -52,7 +52,9 @@
 use super::bigfloat::BigFloat;
 use super::double_double::DoubleDouble;
 use super::point::Point;
-use super::predicates::CirclePosition;
+use super::predicates::{in_circle, CirclePosition};
+use super::scale::Scale;
+use super::site::segment_parameter;
 use super::site::Site;
 
 /// The question asked about a vertex and a new segment.
@@ -99,6 +101,68 @@ pub(crate) fn reach(
         c.set(counts);
     });
     answer
+}
+
+/// Whether `fourth` lies exactly on the circle of the vertex of `sites`
+/// (rounded as `centre`, `radius`): the test for a zero-length edge, whose
+/// two vertices are one point exactly when their four sites are
+/// cocircular. A point: exact in-circle among points, else the certified
+/// distance. A segment touches the circle only as an open segment: tangent
+/// at a point strictly inside it, or, where one of its endpoints is a point
+/// of `sites`, tangent at that endpoint (the centre on its perpendicular
+/// there). Decided after an exact power-of-two scaling of everything into
+/// the safe range, so that products of tiny or huge coordinates neither
+/// underflow nor overflow.
+pub(crate) fn on_circle(sites: &[Site; 3], centre: Point, radius: f64, fourth: &Site) -> bool {
+    if radius == 0.0 {
+        // a vertex of radius 0 is a shared endpoint itself (exactly, see
+        // `segment_solvers`): on it are the segments ending there
+        return match *fourth {
+            Site::Point(p) => p == centre,
+            Site::Segment { a, b } => a == centre || b == centre,
+        };
+    }
+    let max_abs = sites
+        .iter()
+        .chain(std::iter::once(fourth))
+        .flat_map(|s| match *s {
+            Site::Point(p) => [p, p],
+            Site::Segment { a, b } => [a, b],
+        })
+        .chain([centre])
+        .fold(radius.abs(), |m, p| m.max(p.x.abs()).max(p.y.abs()));
+    let k = Scale::for_max_abs(max_abs).to_internal;
+    let scaled = |p: Point| Point::new(p.x * k, p.y * k);
+    let scale_site = |s: &Site| match *s {
+        Site::Point(p) => Site::Point(scaled(p)),
+        Site::Segment { a, b } => Site::Segment { a: scaled(a), b: scaled(b) },
+    };
+    let sites = sites.map(|s| scale_site(&s));
+    let (c, r) = (scaled(centre), radius * k);
+    let on = |position: Option<CirclePosition>| position == Some(CirclePosition::On);
+    match scale_site(fourth) {
+        Site::Point(q) => match sites {
+            [Site::Point(p0), Site::Point(p1), Site::Point(p2)] => in_circle(p0, p1, p2, q) == CirclePosition::On,
+            _ => on(reach(|| sites, c, r, Reach::Distance { a: q, b: q }, q.distance(c) - r)),
+        },
+        Site::Segment { a, b } => {
+            let end = sites.iter().find_map(|g| g.as_point().filter(|&p| p == a || p == b));
+            match end {
+                Some(e) => {
+                    let other = if e == a { b } else { a };
+                    let depth = -((c.x - e.x) * (other.x - e.x) + (c.y - e.y) * (other.y - e.y));
+                    on(reach(|| sites, c, r, Reach::Entering { from: e, to: other }, depth))
+                }
+                None => {
+                    // the foot must be inside the open segment (else only an
+                    // endpoint, another site, could touch the circle)
+                    let t = segment_parameter(a, b, c);
+                    let depth = Site::Segment { a, b }.distance(c) - r;
+                    t > 0.0 && t < 1.0 && on(reach(|| sites, c, r, Reach::Distance { a, b }, depth))
+                }
+            }
+        }
+    }
 }
 
 /// The vertex of `sites` nearer the truth than the solver's `(centre,

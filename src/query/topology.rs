@@ -23,9 +23,7 @@
 use std::fmt::Write;
 
 use crate::diagram::{Diagram, SiteId, VertexId};
-use crate::geometry::oracle::{self, Reach};
-use crate::geometry::predicates::{in_circle, CirclePosition};
-use crate::geometry::Site;
+use crate::geometry::oracle;
 
 /// A relative length below which an edge may be taken as zero-length, for
 /// users who want a tolerance ([`TopologyOptions::zero_length_tolerance`]).
@@ -108,39 +106,16 @@ impl Diagram {
     /// point: the site of `b` that `a` lacks is exactly on `a`'s circle.
     pub(crate) fn is_zero_length_edge(&self, a: VertexId, b: VertexId) -> bool {
         let (Some(va), Some(vb)) = (self.vertex(a), self.vertex(b)) else { return false };
-        if va.position == vb.position {
-            return true;
-        }
         let Some(&fourth) = vb.sites.iter().find(|s| !va.sites.contains(s)) else {
             // the same three sites: two different circles touching them
             return false;
         };
+        // Four sites on one circle can have two such circles (a segment
+        // tangent at its endpoint, on either side): the vertices must also be
+        // one point as far as rounding can tell.
+        let near = va.position.distance(vb.position) <= 1e-6 * va.clearance.max(vb.clearance);
         let sites = va.sites.map(|s| self.site(s));
-        let (c, r) = (va.position, va.clearance);
-        let on = |position: Option<CirclePosition>| position == Some(CirclePosition::On);
-        match self.site(fourth) {
-            Site::Point(q) => match sites {
-                [Site::Point(p0), Site::Point(p1), Site::Point(p2)] => in_circle(p0, p1, p2, q) == CirclePosition::On,
-                _ => on(oracle::reach(|| sites, c, r, Reach::Distance { a: q, b: q }, q.distance(c) - r)),
-            },
-            Site::Segment { a: s, b: t } => {
-                // An endpoint of the segment on the circle: the vertices are
-                // one point when the circle is tangent there, i.e. the centre
-                // is on the segment's perpendicular at that endpoint.
-                let end = sites.iter().find_map(|g| g.as_point().filter(|&p| p == s || p == t));
-                match end {
-                    Some(e) => {
-                        let other = if e == s { t } else { s };
-                        let depth = -((c.x - e.x) * (other.x - e.x) + (c.y - e.y) * (other.y - e.y));
-                        on(oracle::reach(|| sites, c, r, Reach::Entering { from: e, to: other }, depth))
-                    }
-                    None => {
-                        let depth = Site::Segment { a: s, b: t }.distance(c) - r;
-                        on(oracle::reach(|| sites, c, r, Reach::Distance { a: s, b: t }, depth))
-                    }
-                }
-            }
-        }
+        near && oracle::on_circle(&sites, va.position, va.clearance, &self.site(fourth))
     }
 
     fn write_voronoi_pairs(&self, out: &mut String, tolerance: Option<f64>) {
