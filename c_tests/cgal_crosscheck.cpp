@@ -23,7 +23,10 @@
 // segments tangent to the unit circle), seg-lattice (the unit segments of an
 // integer grid), parallel (n equal, equally spaced parallel segments) and
 // letter (the R with shared endpoints and a font's aligned corners) are
-// degenerate (several sites on one empty circle by construction).
+// degenerate; inscribed, inscribed-jitter (n-gons inscribed in a circle of
+// radius 1e-6 .. 1e6 by seed), fan (n equal spokes in random directions)
+// and kinked-chain (joints turning by 1e-8 .. 1e-15 rad by seed) are near-
+// degenerate, compared as generic (several sites on one empty circle by construction).
 // boost-split (n random segments on the integer grid of side 1e6, every
 // crossing split at the crossing point rounded to the grid, as
 // Boost.Polygon's benchmark data; about 2.4 n pieces) is generic. For faces
@@ -511,6 +514,66 @@ std::vector<Segment> polygon(std::size_t n) {
     return out;
 }
 
+// The scale of a near-degenerate family's seed-th run: 1e-6, 1e-3, 1, 1e3,
+// 1e6 in turn, so that every magnitude meets the same shapes.
+double seed_scale(std::uint64_t seed) {
+    const double scales[] = {1e-6, 1e-3, 1.0, 1e3, 1e6};
+    return scales[seed % 5];
+}
+
+// A polygon inscribed in a circle: n corners on the circle of radius
+// seed_scale(seed) (rounded, so cocircular only to the last bit), at
+// regular angles or, jittered, each moved along the circle by up to a third
+// of the spacing. Issue 7's circles flattened into chords.
+std::vector<Segment> inscribed(std::size_t n, std::uint64_t seed, Rng& rng, bool jitter) {
+    const double radius = seed_scale(seed), spacing = 6.283185307179586 / static_cast<double>(n);
+    std::vector<Point> corners(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const double angle = spacing * (static_cast<double>(k) + (jitter ? (rng.unit() - 0.5) * 0.66 : 0.0));
+        corners[k] = {radius * std::cos(angle), radius * std::sin(angle)};
+    }
+    std::vector<Segment> out;
+    for (std::size_t k = 0; k < n; ++k) out.push_back({corners[k], corners[(k + 1) % n]});
+    return out;
+}
+
+// n spokes of equal length from one point in random directions (at least
+// 1e-3 rad apart): their far ends lie on one circle up to rounding.
+std::vector<Segment> fan(std::size_t n, std::uint64_t seed, Rng& rng) {
+    const double length = seed_scale(seed);
+    std::vector<double> angles;
+    while (angles.size() < n) {
+        const double a = 6.283185307179586 * rng.unit();
+        bool apart = true;
+        for (double b : angles) {
+            const double d = std::fabs(a - b);
+            if (std::min(d, 6.283185307179586 - d) < 1e-3) apart = false;
+        }
+        if (apart) angles.push_back(a);
+    }
+    std::vector<Segment> out;
+    for (double a : angles) out.push_back({{0.0, 0.0}, {length * std::cos(a), length * std::sin(a)}});
+    return out;
+}
+
+// A chain of n segments of unit-ish length along a gentle curve whose
+// every joint turns by 10^-(8 + seed % 8) rad, left or right at random:
+// chains with kinks of 1e-8 .. 1e-15 rad.
+std::vector<Segment> kinked_chain(std::size_t n, std::uint64_t seed, Rng& rng) {
+    const double kink = std::pow(10.0, -8.0 - static_cast<double>(seed % 8));
+    double heading = 6.283185307179586 * rng.unit();
+    Point at = {0.0, 0.0};
+    std::vector<Segment> out;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double length = 0.5 + rng.unit();
+        const Point next = {at.x + length * std::cos(heading), at.y + length * std::sin(heading)};
+        out.push_back({at, next});
+        at = next;
+        heading += rng.unit() < 0.5 ? kink : -kink;
+    }
+    return out;
+}
+
 // n segments from the origin in evenly spaced directions, random lengths.
 std::vector<Segment> star(std::size_t n, Rng& rng) {
     std::vector<Segment> out;
@@ -908,6 +971,15 @@ bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, I
         input.segments = near_vertical(n, rng);
     } else if (family == "boost-split") {
         input.segments = boost_split(n, rng);
+    } else if (family == "inscribed" || family == "inscribed-jitter") {
+        if (n < 3) return false;
+        input.segments = inscribed(n, seed, rng, family == "inscribed-jitter");
+    } else if (family == "fan") {
+        if (n < 2) return false;
+        input.segments = fan(n, seed, rng);
+    } else if (family == "kinked-chain") {
+        if (n < 2) return false;
+        input.segments = kinked_chain(n, seed, rng);
     } else {
         return false;
     }
