@@ -175,14 +175,12 @@ impl Builder {
     /// sound arithmetic it does not happen), with a message saying what
     /// failed. The builder stays as it was.
     pub fn build(&self) -> Result<Diagram, Error> {
-        OUTCOME.with(|o| o.set(Outcome::default()));
-        let built = if self.segments.is_empty() {
-            Ok(build_points(&self.points))
+        let (diagram, outcome) = if self.segments.is_empty() {
+            build_points(&self.points)
         } else {
-            sites::build_sites(&self.points, &self.segments)
+            sites::build_sites(&self.points, &self.segments)?
         };
-        let outcome = OUTCOME.with(|o| o.take());
-        self.accept(built?, outcome)
+        self.accept(diagram, outcome)
     }
 
     /// The diagram, or [`ErrorKind::Internal`] when the construction did not
@@ -280,12 +278,12 @@ fn check_capacity(count: usize) -> Result<(), Error> {
     ))
 }
 
-/// The Voronoi diagram of finite points.
-fn build_points(input: &[Point]) -> Diagram {
+/// The Voronoi diagram of finite points, and how its construction ended
+/// (checked by `Builder::accept`).
+fn build_points(input: &[Point]) -> (Diagram, Outcome) {
     let (scale, points) = to_internal(input);
-    let (diagram, site_of_input, _) = construct(&points, &[]);
-    // validated by `Builder::accept`
-    finish::finish(diagram, &site_of_input, input, &[], scale)
+    let (diagram, site_of_input, _, outcome) = construct(&points, &[]);
+    (finish::finish(diagram, &site_of_input, input, &[], scale), outcome)
 }
 
 /// Runs `beside` on a second thread while `here` runs on this one, and
@@ -327,18 +325,11 @@ struct Stuck {
 
 /// How the construction ended.
 #[derive(Clone, Copy, Debug, Default)]
-struct Outcome {
+pub(crate) struct Outcome {
     /// Times it started over.
     restarts: usize,
     /// It gave up: this segment found no path in the last attempt.
     stuck: Option<Stuck>,
-}
-
-thread_local! {
-    /// The outcome of the last construction on this thread, for
-    /// [`Builder::build`]: the construction runs on the calling thread, and
-    /// `sites.rs` hands back only the diagram.
-    static OUTCOME: std::cell::Cell<Outcome> = const { std::cell::Cell::new(Outcome { restarts: 0, stuck: None }) };
 }
 
 #[cfg(feature = "fault-injection")]
@@ -365,7 +356,7 @@ fn restart_budget() -> usize {
 /// indices of its two endpoints in `points`; distinct, non-crossing). Returns
 /// the diagram in internal site ids, per input point the internal site it
 /// became, and per segment its internal site.
-fn construct(points: &[Point], segments: &[[usize; 2]]) -> (PointDiagram, Vec<SiteId>, Vec<SiteId>) {
+fn construct(points: &[Point], segments: &[[usize; 2]]) -> (PointDiagram, Vec<SiteId>, Vec<SiteId>, Outcome) {
     construct_from(insert_points(points, segments.len()), points, segments)
 }
 
@@ -389,15 +380,15 @@ enum PointStage {
 /// inserted before the others (it cannot be walled off before the chain is
 /// closed), at most `MAX_RESTARTS` times. With sound numbers it never
 /// happens; if it keeps happening (or the stuck segment already went
-/// first), the construction gives up: the last attempt is returned, and
-/// [`OUTCOME`] tells [`Builder::build`] to discard it for an
+/// first), the construction gives up: the last attempt is returned with an
+/// [`Outcome`] that tells [`Builder::build`] to discard it for an
 /// [`ErrorKind::Internal`] error (none of the test suites, fault injection
 /// included, gets there with the full budget).
 fn construct_from(
     mut stage: PointStage,
     points: &[Point],
     segments: &[[usize; 2]],
-) -> (PointDiagram, Vec<SiteId>, Vec<SiteId>) {
+) -> (PointDiagram, Vec<SiteId>, Vec<SiteId>, Outcome) {
     let budget = restart_budget();
     let mut first = Vec::new();
     loop {
@@ -414,8 +405,7 @@ fn construct_from(
                 stuck: Some(Stuck { endpoint: segments[k][0], inserted_first: first.contains(&k) }),
             },
         };
-        OUTCOME.with(|o| o.set(outcome));
-        return (diagram, site_of, segment_sites);
+        return (diagram, site_of, segment_sites, outcome);
     }
 }
 

@@ -5,12 +5,14 @@
 
 use super::finish::{self, SegmentSite};
 use super::segment_input::{check_segments, Conflict};
-use super::{construct_from, insert_points, run_beside, to_internal};
+use super::{construct_from, insert_points, run_beside, to_internal, Outcome};
 use crate::diagram::{Diagram, SiteId};
 use crate::error::{Error, ErrorKind};
 use crate::geometry::Point;
 
-pub(super) fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<Diagram, Error> {
+/// The diagram of points and segments, and how its construction ended
+/// (checked by `Builder::accept`); `Err` for input that crosses itself.
+pub(super) fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<(Diagram, Outcome), Error> {
     // P<k> numbers the distinct points of this list by first appearance.
     let mut all: Vec<Point> = Vec::with_capacity(points.len() + 2 * segments.len());
     all.extend_from_slice(points);
@@ -35,7 +37,7 @@ pub(super) fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<D
     let endpoint_index = |j: usize| [points.len() + 2 * j, points.len() + 2 * j + 1];
     let kept: Vec<usize> = checked.segments.iter().map(|&(j, _)| j).collect();
     let pairs: Vec<[usize; 2]> = kept.iter().map(|&j| endpoint_index(j)).collect();
-    let (built, site_of_input, segment_sites) = construct_from(stage, &scaled, &pairs);
+    let (built, site_of_input, segment_sites, outcome) = construct_from(stage, &scaled, &pairs);
     let described: Vec<SegmentSite> = kept
         .iter()
         .zip(segment_sites)
@@ -61,8 +63,7 @@ pub(super) fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<D
     diagram.stats.duplicate_points = checked.duplicate_points;
     diagram.stats.duplicate_segments = checked.duplicate_segments;
     diagram.stats.zero_length_segments = checked.degenerate_segments;
-    debug_assert_eq!(diagram.validate(), Ok(()));
-    Ok(diagram)
+    Ok((diagram, outcome))
 }
 
 /// From this many segments on, the input check runs beside the point
