@@ -95,11 +95,7 @@ pub(crate) fn reach(
     depth: f64,
 ) -> Option<CirclePosition> {
     let (stage, answer) = decide(sites, centre, radius, question, depth);
-    COUNTS.with(|c| {
-        let mut counts = c.get();
-        counts.by_stage[stage as usize] += 1;
-        c.set(counts);
-    });
+    COUNTS.with(|c| c[stage as usize].set(c[stage as usize].get() + 1));
     answer
 }
 
@@ -178,7 +174,7 @@ pub(crate) fn polish_vertex(sites: &[Site; 3], centre: Point, radius: f64) -> Op
     if !(residual > POLISH_TOLERANCE * size) {
         return None;
     }
-    POLISHED.with(|p| p.set(p.get() + 1));
+    COUNTS.with(|c| c[POLISHED].set(c[POLISHED].get() + 1));
     let system = System::of(sites, centre)?;
     let dd = DoubleDouble::from_f64;
     let (solution, _, _) = system.newton([centre.x, centre.y, radius].map(dd), &dd, size, DOUBLE_DOUBLE_BITS)?;
@@ -190,9 +186,9 @@ pub(crate) fn polish_vertex(sites: &[Site; 3], centre: Point, radius: f64) -> Op
 /// the configuration's size, from its circle.
 const POLISH_TOLERANCE: f64 = 1e-12;
 
-thread_local! {
-    static POLISHED: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
-}
+
+/// The counter of polished vertices, after the stages'.
+const POLISHED: usize = 6;
 
 /// One point of a site, for sizes: the point, or a segment's first end.
 fn representative(site: &Site) -> Point {
@@ -238,15 +234,18 @@ impl PredicateCounts {
 }
 
 thread_local! {
-    static COUNTS: std::cell::Cell<PredicateCounts> = const { std::cell::Cell::new(PredicateCounts { by_stage: [0; 6], polished_vertices: 0 }) };
+    /// Per stage (by `Stage as usize`), then the polished vertices: one
+    /// counter bumped per question, on the hot path.
+    static COUNTS: [std::cell::Cell<u64>; 7] = const { [const { std::cell::Cell::new(0) }; 7] };
 }
 
 /// The counts of this thread since the last [`take_predicate_counts`], and
 /// zero from now on.
 pub fn take_predicate_counts() -> PredicateCounts {
-    let mut counts = COUNTS.with(|c| c.replace(PredicateCounts::default()));
-    counts.polished_vertices = POLISHED.with(|p| p.replace(0));
-    counts
+    let taken: [u64; 7] = COUNTS.with(|c| std::array::from_fn(|k| c[k].replace(0)));
+    let mut by_stage = [0; 6];
+    by_stage.copy_from_slice(&taken[..6]);
+    PredicateCounts { by_stage, polished_vertices: taken[POLISHED] }
 }
 
 fn decide(
@@ -295,7 +294,7 @@ fn decide(
     for bits in PRECISIONS {
         let lift = |x: f64| BigFloat::from_f64(x, bits);
         let begin = start.clone().map(|x| x.with_precision(bits));
-        match refine_big(&system, &question, begin, &lift, size, bits) {
+        match refine_at(&system, &question, begin, &lift, size, bits) {
             Refined::Decided(answer) => return (Stage::BigFloat, Some(answer)),
             // the next precision starts from this one's solution
             Refined::Undecided(solution) => {
@@ -321,17 +320,6 @@ enum Refined<T> {
     Undecided([T; 3]),
     /// No convergence at this precision.
     Failed,
-}
-
-fn refine_big(
-    system: &System,
-    question: &Reach,
-    start: [BigFloat; 3],
-    lift: &impl Fn(f64) -> BigFloat,
-    size: f64,
-    bits: u64,
-) -> Refined<BigFloat> {
-    refine_at(system, question, start, lift, size, bits)
 }
 
 /// Newton's method at `bits` of precision, then the question at the
