@@ -135,29 +135,24 @@ pub(crate) fn on_circle(sites: &[Site; 3], centre: Point, radius: f64, fourth: &
     };
     let sites = sites.map(|s| scale_site(&s));
     let (c, r) = (scaled(centre), radius * k);
-    let on = |position: Option<CirclePosition>| position == Some(CirclePosition::On);
+    let on = |question: Reach| {
+        let depth = question.value(&[c.x, c.y, r], &|x| x);
+        reach(|| sites, c, r, question, depth) == Some(CirclePosition::On)
+    };
     match scale_site(fourth) {
         Site::Point(q) => match sites {
             [Site::Point(p0), Site::Point(p1), Site::Point(p2)] => in_circle(p0, p1, p2, q) == CirclePosition::On,
-            _ => on(reach(|| sites, c, r, Reach::Distance { a: q, b: q }, q.distance(c) - r)),
+            _ => on(Reach::Distance { a: q, b: q }),
         },
-        Site::Segment { a, b } => {
-            let end = sites.iter().find_map(|g| g.as_point().filter(|&p| p == a || p == b));
-            match end {
-                Some(e) => {
-                    let other = if e == a { b } else { a };
-                    let depth = -((c.x - e.x) * (other.x - e.x) + (c.y - e.y) * (other.y - e.y));
-                    on(reach(|| sites, c, r, Reach::Entering { from: e, to: other }, depth))
-                }
-                None => {
-                    // the foot must be inside the open segment (else only an
-                    // endpoint, another site, could touch the circle)
-                    let t = segment_parameter(a, b, c);
-                    let depth = Site::Segment { a, b }.distance(c) - r;
-                    t > 0.0 && t < 1.0 && on(reach(|| sites, c, r, Reach::Distance { a, b }, depth))
-                }
+        Site::Segment { a, b } => match sites.iter().find_map(|g| g.as_point().filter(|&p| p == a || p == b)) {
+            Some(e) => on(Reach::Entering { from: e, to: if e == a { b } else { a } }),
+            // the foot must be inside the open segment (else only an
+            // endpoint, another site, could touch the circle)
+            None => {
+                let t = segment_parameter(a, b, c);
+                t > 0.0 && t < 1.0 && on(Reach::Distance { a, b })
             }
-        }
+        },
     }
 }
 
