@@ -37,16 +37,8 @@ const TOLERANCE: f64 = 1e-7;
 /// Fixtures on which the library is known to be wrong, with the reason.
 /// Delete an entry once the fixture passes (the test says when).
 const KNOWN: &[(&str, &str)] = &[
-    // Agrees with CGAL's topology; the vertex of the far endpoint of one
-    // piece, that piece and the near endpoint of the other has no circle
-    // (both points on the segment's line) and is placed 14..102 from its sites.
-    ("two_collinear_pieces.txt", "two pieces of one line: a vertex far from one of its sites"),
     // Found by the harness's --search, 2c4f111 and 2e52cd8.
     ("search_denormal_2seg.txt", "an endpoint's y the least subnormal: vertices placed 4.6 off"),
-    ("search_ulps_3seg.txt", "a chain with a kink of 1e-16 rad: a vertex 0.6 from one of its sites"),
-    ("search_split_junction3_4seg.txt", "three segments at a rounded crossing and a fourth: vertices up to 2e4 off"),
-    // KNOWN DIFFERENCE (issue 3 note, cgal.cmake): kinks of 1e-10 rad.
-    ("near_vertical_chain3.txt", "a radius-0 vertex at a chain's joint with a site 0.12 away"),
 ];
 
 type Segment = [[f64; 2]; 2];

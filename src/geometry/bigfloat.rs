@@ -41,6 +41,11 @@ impl BigFloat {
         BigFloat { bits, ..self }.rounded()
     }
 
+    /// The significant bits kept by rounding operations.
+    pub fn precision(&self) -> u64 {
+        self.bits
+    }
+
     /// The sign: -1, 0 or 1.
     pub fn signum(&self) -> i32 {
         match self.mantissa.sign() {

@@ -1,5 +1,6 @@
-//! Exact sums of products of doubles, for the one predicate the `robust`
-//! crate does not cover (comparing two distances). Shewchuk's expansion
+//! Exact sums of products of doubles, for the predicates the `robust`
+//! crate does not cover (comparing two distances, the turn between two
+//! directions). Shewchuk's expansion
 //! arithmetic: a number is kept as a sum of non-overlapping doubles, in
 //! increasing magnitude, whose sign is the sign of its largest component.
 //! Exact as long as no product underflows (the same condition as `robust`).
@@ -57,6 +58,16 @@ impl Expansion {
         self.add_product(h, h);
         self.add_product(2.0 * h, l);
         self.add_product(l, l);
+    }
+
+    /// Adds `(x.0 - x.1) * (y.0 - y.1)` exactly.
+    pub(crate) fn add_product_of_differences(&mut self, x: (f64, f64), y: (f64, f64)) {
+        let (xh, xl) = two_sum(x.0, -x.1);
+        let (yh, yl) = two_sum(y.0, -y.1);
+        self.add_product(xh, yh);
+        self.add_product(xh, yl);
+        self.add_product(xl, yh);
+        self.add_product(xl, yl);
     }
 
     /// -1, 0 or 1.

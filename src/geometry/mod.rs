@@ -19,6 +19,7 @@ pub(crate) mod point_predicates;
 pub(crate) mod fault;
 pub mod point;
 pub mod predicates;
+pub(crate) mod real;
 pub(crate) mod scale;
 pub mod solvers;
 pub mod site;

@@ -53,7 +53,9 @@ use super::bigfloat::BigFloat;
 use super::double_double::DoubleDouble;
 use super::point::Point;
 use super::predicates::{in_circle, CirclePosition};
+use super::real::Real;
 use super::scale::Scale;
+use super::segment_solvers;
 use super::site::segment_parameter;
 use super::site::Site;
 
@@ -159,22 +161,37 @@ pub(crate) fn on_circle(sites: &[Site; 3], centre: Point, radius: f64, fourth: &
 /// The vertex of `sites` nearer the truth than the solver's `(centre,
 /// radius)` when that misses the tangency equations by more than rounding
 /// (an ill-conditioned solve: nearly parallel lines, a circle far larger
-/// than its sites): Newton's method in double-double from it, the result
-/// rounded to `f64`. `None` when the solve was fine or the polish does not
-/// converge.
-pub(crate) fn polish_vertex(sites: &[Site; 3], centre: Point, radius: f64) -> Option<(Point, f64)> {
-    // Cheap first: how far each site is from the circle.
-    let size = radius.abs() + sites.iter().map(|s| representative(s).distance(centre)).fold(0.0, f64::max);
-    let residual = sites.iter().map(|s| (s.distance(centre) - radius).abs()).fold(0.0, f64::max);
-    if !(residual > POLISH_TOLERANCE * size) {
-        return None;
+/// than its sites): the solver run again in double-double
+/// (`segment_solvers::vertex_in`: the same case and root, finer
+/// arithmetic), then Newton's method in double-double from there, the
+/// result rounded to `f64`. The `f64` answer of a badly conditioned solve
+/// can be far from the circle (a kink of 1e-10 rad between two lines puts
+/// it in the wrong place altogether), so it is no start for Newton's
+/// method. The same when `f64` found no circle at all (`solved` is
+/// `None`), which for such configurations is rounding too. `None` when the
+/// solve was fine or neither step succeeds.
+pub(crate) fn polish_vertex(sites: &[Site; 3], solved: Option<(Point, f64)>) -> Option<(Point, f64)> {
+    if let Some((centre, radius)) = solved {
+        // Cheap first: how far each site is from the circle.
+        let size = radius.abs() + sites.iter().map(|s| representative(s).distance(centre)).fold(0.0, f64::max);
+        let residual = sites.iter().map(|s| (s.distance(centre) - radius).abs()).fold(0.0, f64::max);
+        if !(residual > POLISH_TOLERANCE * size) {
+            return None;
+        }
     }
     COUNTS.with(|c| c[POLISHED].set(c[POLISHED].get() + 1));
-    let system = System::of(sites, centre)?;
     let dd = DoubleDouble::from_f64;
-    let (solution, _, _) = system.newton([centre.x, centre.y, radius].map(dd), &dd, size, DOUBLE_DOUBLE_BITS)?;
-    let [x, y, r] = solution.map(|v| v.to_f64());
-    (x.is_finite() && y.is_finite() && r.is_finite() && r >= 0.0).then_some((Point::new(x, y), r))
+    let start = segment_solvers::vertex_in(sites, &dd).or_else(|| solved.map(|(c, r)| [c.x, c.y, r].map(dd)))?;
+    let rounded = |v: &[DoubleDouble; 3]| {
+        let [x, y, r] = v.clone().map(|v| v.to_f64());
+        (x.is_finite() && y.is_finite() && r.is_finite() && r >= 0.0).then_some((Point::new(x, y), r))
+    };
+    let (start_centre, start_radius) = rounded(&start)?;
+    let size = start_radius + sites.iter().map(|s| representative(s).distance(start_centre)).fold(0.0, f64::max);
+    let polished = System::of(sites, start_centre)
+        .and_then(|system| system.newton(start.clone(), &dd, size, DOUBLE_DOUBLE_BITS))
+        .and_then(|(solution, _, _)| rounded(&solution));
+    polished.or(Some((start_centre, start_radius)))
 }
 
 /// A solver's result is polished when a site is farther than this, times
@@ -653,114 +670,26 @@ fn solve3<T: Real>(j: &[[T; 3]; 3], f: &[T; 3]) -> Option<[T; 3]> {
     Some([column(0), column(1), column(2)])
 }
 
-/// The arithmetic the equations are written in: `f64` for the filter,
-/// [`BigFloat`] for the refinement.
-trait Real: Clone {
-    fn add(&self, o: &Self) -> Self;
-    fn sub(&self, o: &Self) -> Self;
-    fn mul(&self, o: &Self) -> Self;
-    fn div(&self, o: &Self) -> Self;
-    fn sqrt(&self) -> Self;
-    fn neg(&self) -> Self;
-    fn abs(&self) -> Self;
-    fn signum(&self) -> i32;
-    fn to_f64(&self) -> f64;
-}
-
-impl Real for f64 {
-    fn add(&self, o: &f64) -> f64 {
-        self + o
-    }
-    fn sub(&self, o: &f64) -> f64 {
-        self - o
-    }
-    fn mul(&self, o: &f64) -> f64 {
-        self * o
-    }
-    fn div(&self, o: &f64) -> f64 {
-        self / o
-    }
-    fn sqrt(&self) -> f64 {
-        f64::sqrt(*self)
-    }
-    fn neg(&self) -> f64 {
-        -self
-    }
-    fn abs(&self) -> f64 {
-        f64::abs(*self)
-    }
-    fn signum(&self) -> i32 {
-        if *self > 0.0 {
-            1
-        } else if *self < 0.0 {
-            -1
-        } else {
-            0
-        }
-    }
-    fn to_f64(&self) -> f64 {
-        *self
-    }
-}
-
-impl Real for BigFloat {
-    fn add(&self, o: &BigFloat) -> BigFloat {
-        self + o
-    }
-    fn sub(&self, o: &BigFloat) -> BigFloat {
-        self - o
-    }
-    fn mul(&self, o: &BigFloat) -> BigFloat {
-        self * o
-    }
-    fn div(&self, o: &BigFloat) -> BigFloat {
-        BigFloat::div(self, o)
-    }
-    fn sqrt(&self) -> BigFloat {
-        BigFloat::sqrt(self)
-    }
-    fn neg(&self) -> BigFloat {
-        -self
-    }
-    fn abs(&self) -> BigFloat {
-        BigFloat::abs(self)
-    }
-    fn signum(&self) -> i32 {
-        BigFloat::signum(self)
-    }
-    fn to_f64(&self) -> f64 {
-        BigFloat::to_f64(self)
-    }
-}
-
-impl Real for DoubleDouble {
-    fn add(&self, o: &DoubleDouble) -> DoubleDouble {
-        DoubleDouble::add(*self, *o)
-    }
-    fn sub(&self, o: &DoubleDouble) -> DoubleDouble {
-        DoubleDouble::sub(*self, *o)
-    }
-    fn mul(&self, o: &DoubleDouble) -> DoubleDouble {
-        DoubleDouble::mul(*self, *o)
-    }
-    fn div(&self, o: &DoubleDouble) -> DoubleDouble {
-        DoubleDouble::div(*self, *o)
-    }
-    fn sqrt(&self) -> DoubleDouble {
-        DoubleDouble::sqrt(*self)
-    }
-    fn neg(&self) -> DoubleDouble {
-        DoubleDouble::neg(*self)
-    }
-    fn abs(&self) -> DoubleDouble {
-        DoubleDouble::abs(*self)
-    }
-    fn signum(&self) -> i32 {
-        DoubleDouble::signum(*self)
-    }
-    fn to_f64(&self) -> f64 {
-        DoubleDouble::to_f64(*self)
-    }
+/// Debug aid for tests: the vertex of `sites` solved in 400-bit floats
+/// (the solver, then Newton's method), and the signed distance of `other`
+/// from its circle (negative inside), rounded. `None` when it cannot be
+/// solved.
+#[cfg(test)]
+pub(crate) fn audit_depth(sites: &[Site; 3], other: &Site) -> Option<(Point, f64, f64)> {
+    let lift = |x: f64| BigFloat::from_f64(x, 400);
+    let start = segment_solvers::vertex_in(sites, &lift)?;
+    let [x, y, r] = start.clone().map(|v| v.to_f64());
+    let size = r.abs() + sites.iter().map(|s| representative(s).distance(Point::new(x, y))).fold(0.0, f64::max);
+    let solution = System::of(sites, Point::new(x, y))
+        .and_then(|system| system.newton(start.clone(), &lift, size, 400))
+        .map_or(start, |(v, _, _)| v);
+    let question = match *other {
+        Site::Point(p) => Reach::Distance { a: p, b: p },
+        Site::Segment { a, b } => Reach::Distance { a, b },
+    };
+    let depth = question.value(&solution, &lift).to_f64();
+    let [x, y, r] = solution.map(|v| v.to_f64());
+    Some((Point::new(x, y), r, depth))
 }
 
 #[cfg(test)]

@@ -62,6 +62,35 @@ pub(crate) fn exact_orientation(a: Point, b: Point, c: Point) -> Orientation {
     sign_of(robust::orient2d(coord(a), coord(b), coord(c)))
 }
 
+/// The turn from the direction `a → b` to the direction `c → d`: the sign
+/// of `cross(b − a, d − c)`, exact (counter-clockwise: `d − c` points left
+/// of `b − a`; collinear: the directions are parallel or opposite). For
+/// directions that differ by an angle near the rounding of a unit vector,
+/// where the orientation of rounded normals says nothing.
+pub(crate) fn turn(a: Point, b: Point, c: Point, d: Point) -> Orientation {
+    let (ux, uy, vx, vy) = (b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
+    let (left, right) = (ux * vy, uy * vx);
+    if fault::active() {
+        return sign_of(fault::perturb_difference(left, right));
+    }
+    // Each difference and product is off by at most half an ulp; the
+    // bound covers both, with room (Shewchuk-style, products of rounded
+    // differences).
+    let det = left - right;
+    let bound = 8.0 * f64::EPSILON * (left.abs() + right.abs());
+    if det.abs() > bound && det.is_finite() {
+        return sign_of(det);
+    }
+    let mut exact = Expansion::default();
+    exact.add_product_of_differences((b.x, a.x), (d.y, c.y));
+    exact.add_product_of_differences((b.y, a.y), (c.x, d.x));
+    match exact.sign() {
+        1 => Orientation::CounterClockwise,
+        -1 => Orientation::Clockwise,
+        _ => Orientation::Collinear,
+    }
+}
+
 #[inline]
 fn sign_of(det: f64) -> Orientation {
     if det > 0.0 {
@@ -234,5 +263,17 @@ mod tests {
         assert!(strictly_between(p(1., 0.), p(1., 4.), p(1., 2.)));
         assert!(!strictly_between(p(1., 0.), p(1., 4.), p(1., 4.)));
         assert!(!strictly_between(p(1., 0.), p(1., 4.), p(1., -2.)));
+    }
+
+    #[test]
+    fn turn_between_directions_one_ulp_apart_is_exact() {
+        // (1, 1) against (1 + 6ε, 1) and (1, 1 + 8ε), from other origins:
+        // within the filter's bound, so decided by the exact stage
+        let e = f64::EPSILON;
+        let (a, b) = (p(0.0, 0.0), p(1.0, 1.0));
+        assert_eq!(turn(a, b, p(5.0, 7.0), p(6.0 + 6.0 * e, 8.0)), Orientation::Clockwise);
+        assert_eq!(turn(a, b, p(5.0, 7.0), p(6.0, 8.0 + 8.0 * e)), Orientation::CounterClockwise);
+        assert_eq!(turn(p(0.0, 0.0), p(3.0, 1.0), p(2.0, 2.0), p(-4.0, 0.0)), Orientation::Collinear);
+        assert_eq!(turn(p(0.0, 0.0), p(1.0, 0.0), p(0.0, 0.0), p(0.0, 1.0)), Orientation::CounterClockwise);
     }
 }

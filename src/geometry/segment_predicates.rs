@@ -298,14 +298,34 @@ pub(crate) fn left_degree((a, b): (Point, Point), seen: SiteSeen) -> LeftDegree 
     LeftDegree(fault::perturb((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x)))
 }
 
-/// Whether `p` lies in the closed strip between the perpendiculars to `ab`
-/// at `a` and at `b` (criterion 2.2; perturbed in fault injection).
+/// Whether the vertex of `sites` (rounded as `centre`, `radius`) lies in
+/// the closed strip between the perpendiculars to `ab` at `a` and at `b`
+/// (criterion 2.2), certified from its sites like a conflict (`oracle`):
+/// beyond the perpendicular at `a` is the segment leaving `a` away from
+/// the centre, `Reach::Entering` of `a → b` with the opposite sign. A far
+/// vertex of nearly parallel sites is rounded by more than the strip is
+/// wide. Perturbed, uncertified, in fault injection.
 #[inline]
-pub(crate) fn in_strip(p: Point, a: Point, b: Point) -> bool {
+pub(crate) fn in_strip(centre: Point, radius: f64, (a, b): (Point, Point), sites: impl Fn() -> [Site; 3]) -> bool {
     let (dx, dy) = (b.x - a.x, b.y - a.y);
-    let t = (p.x - a.x) * dx + (p.y - a.y) * dy;
+    let t = (centre.x - a.x) * dx + (centre.y - a.y) * dy;
     let t = fault::perturb(t);
-    (0.0..=dx * dx + dy * dy).contains(&t)
+    let length2 = dx * dx + dy * dy;
+    if fault::active() {
+        return (0.0..=length2).contains(&t);
+    }
+    // Clear answers first (the rounded position is a few ulps of the
+    // configuration's size off where well-conditioned; `certified` checks
+    // the rest).
+    let length = length2.sqrt();
+    let from_a = t / length;
+    let from_b = length - from_a;
+    // beyond the perpendicular at `from`: the segment from there leaves
+    // the centre behind, a positive `Entering` depth
+    let beyond = |from: Point, to: Point, along: f64| {
+        certified(Reach::Entering { from, to }, -along, centre, radius, &sites) > 0.0
+    };
+    !(beyond(a, b, from_a) || beyond(b, a, from_b))
 }
 
 /// How far, as a fraction of an edge, a computed crossing of the edge may

@@ -51,7 +51,8 @@
 //! formula avoids. Non-finite intermediate results give `None`, never a panic.
 
 use super::point::Point;
-use super::predicates::{orientation, Orientation};
+use super::predicates::{orientation, turn, Orientation};
+use super::real::Real;
 use super::site::{segment_parameter, Site};
 use super::solvers::circumcircle;
 
@@ -62,25 +63,49 @@ use super::solvers::circumcircle;
 /// asks for the other orientation.
 pub(crate) fn vertex(a: &Site, b: &Site, c: &Site) -> Option<(Point, f64)> {
     let sites = [*a, *b, *c];
-    let points = sites.iter().filter(|s| s.is_point()).count();
-    let result = match points {
-        3 => ppp(rotate_smallest_first(sites)),
+    let result = if sites.iter().all(Site::is_point) {
+        ppp(rotate_smallest_first(sites))
+    } else {
+        with_segments(sites, &|x| x).map(|(c, r)| (Point::new(c.x, c.y), r))
+    };
+    result.filter(|(centre, r)| centre.is_finite() && r.is_finite() && *r >= 0.0)
+}
+
+/// The same circle as [`vertex`], for three sites of which at least one is a
+/// segment, computed in the arithmetic `T` (`lift` brings a coordinate into
+/// it exactly) as `[x, y, r]`: every case decided as in `f64` (the same
+/// exact orientations, the same root), only the arithmetic finer. For
+/// ill-conditioned configurations, where `f64` loses the circle (nearly
+/// parallel lines whose unit normals differ in the tenth digit), and
+/// whose `f64` answer is then no start for Newton's method.
+pub(crate) fn vertex_in<T: Real>(sites: &[Site; 3], lift: &impl Fn(f64) -> T) -> Option<[T; 3]> {
+    if sites.iter().all(Site::is_point) {
+        return None;
+    }
+    let (c, r) = with_segments(*sites, lift)?;
+    let finite = c.x.to_f64().is_finite() && c.y.to_f64().is_finite() && r.to_f64().is_finite();
+    (finite && r.signum() >= 0).then_some([c.x, c.y, r])
+}
+
+/// The dispatch of [`vertex`] when a segment is among the sites.
+fn with_segments<T: Real>(sites: [Site; 3], lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
+    match sites.iter().filter(|s| s.is_point()).count() {
         2 => {
             // The rotation that puts the segment last: (p, q, S).
             let [p, q, s] = rotate_until(sites, |r| !r[2].is_point());
-            pps_dispatch(point_of(p)?, point_of(q)?, segment_of(s)?)
+            pps_dispatch(point_of(p)?, point_of(q)?, segment_of(s)?, lift)
         }
         1 => {
             // The rotation that puts the point first: (p, S1, S2).
             let [p, s1, s2] = rotate_until(sites, |r| r[0].is_point());
-            pss_dispatch(point_of(p)?, segment_of(s1)?, segment_of(s2)?)
+            pss_dispatch(point_of(p)?, segment_of(s1)?, segment_of(s2)?, lift)
         }
-        _ => {
+        0 => {
             let [s1, s2, s3] = rotate_smallest_first(sites);
-            sss(segment_of(s1)?, segment_of(s2)?, segment_of(s3)?)
+            sss(segment_of(s1)?, segment_of(s2)?, segment_of(s3)?, lift)
         }
-    };
-    result.filter(|(centre, r)| centre.is_finite() && r.is_finite() && *r >= 0.0)
+        _ => None,
+    }
 }
 
 // ---------------------------------------------------------------------------
@@ -139,41 +164,63 @@ fn segment_of(s: Site) -> Option<(Point, Point)> {
 }
 
 // ---------------------------------------------------------------------------
-// Small vector helpers (points used as vectors).
+// Vectors in the arithmetic `T`.
 
-fn sub(a: Point, b: Point) -> Point {
-    Point::new(a.x - b.x, a.y - b.y)
+/// A point or vector whose coordinates are in the arithmetic `T`.
+#[derive(Clone, Debug)]
+struct Vector<T> {
+    x: T,
+    y: T,
 }
 
-fn add(a: Point, b: Point) -> Point {
-    Point::new(a.x + b.x, a.y + b.y)
-}
+impl<T: Real> Vector<T> {
+    fn of(p: Point, lift: &impl Fn(f64) -> T) -> Vector<T> {
+        Vector { x: lift(p.x), y: lift(p.y) }
+    }
 
-fn scale(s: f64, v: Point) -> Point {
-    Point::new(s * v.x, s * v.y)
-}
+    /// `q - p` for input points, exact in every arithmetic but `f64`.
+    fn between(p: Point, q: Point, lift: &impl Fn(f64) -> T) -> Vector<T> {
+        Vector::of(q, lift).sub(&Vector::of(p, lift))
+    }
 
-fn dot(a: Point, b: Point) -> f64 {
-    a.x * b.x + a.y * b.y
-}
+    fn sub(&self, o: &Vector<T>) -> Vector<T> {
+        Vector { x: self.x.sub(&o.x), y: self.y.sub(&o.y) }
+    }
 
-fn cross(a: Point, b: Point) -> f64 {
-    a.x * b.y - a.y * b.x
-}
+    fn add(&self, o: &Vector<T>) -> Vector<T> {
+        Vector { x: self.x.add(&o.x), y: self.y.add(&o.y) }
+    }
 
-fn norm(v: Point) -> f64 {
-    super::point::norm(v.x, v.y)
-}
+    fn scale(&self, s: &T) -> Vector<T> {
+        Vector { x: s.mul(&self.x), y: s.mul(&self.y) }
+    }
 
-/// `v` turned a quarter counter-clockwise.
-fn rot_ccw(v: Point) -> Point {
-    Point::new(-v.y, v.x)
-}
+    fn neg(&self) -> Vector<T> {
+        Vector { x: self.x.neg(), y: self.y.neg() }
+    }
 
-/// `v / |v|`, or `None` for a zero or non-finite vector.
-fn unit(v: Point) -> Option<Point> {
-    let len = norm(v);
-    (len > 0.0 && len.is_finite()).then(|| scale(1.0 / len, v))
+    fn dot(&self, o: &Vector<T>) -> T {
+        self.x.mul(&o.x).add(&self.y.mul(&o.y))
+    }
+
+    fn cross(&self, o: &Vector<T>) -> T {
+        self.x.mul(&o.y).sub(&self.y.mul(&o.x))
+    }
+
+    fn norm(&self) -> T {
+        T::hypot(&self.x, &self.y)
+    }
+
+    /// The vector turned a quarter counter-clockwise.
+    fn rot_ccw(&self) -> Vector<T> {
+        Vector { x: self.y.neg(), y: self.x.clone() }
+    }
+
+    /// `v / |v|`, or `None` for a zero or non-finite vector.
+    fn unit(&self) -> Option<Vector<T>> {
+        let len = self.norm();
+        (len.signum() > 0 && len.to_f64().is_finite()).then(|| self.scale(&len.recip()))
+    }
 }
 
 /// The unit normal of the line `a → b` that points to the side of `p`, and
@@ -182,15 +229,16 @@ fn unit(v: Point) -> Option<Point> {
 ///
 /// Precision: the side is exact; the distance is computed from the endpoint
 /// nearer to `p`, a few ulps of that distance.
-fn normal_toward(a: Point, b: Point, p: Point) -> Option<(Point, f64)> {
-    let n = rot_ccw(unit(sub(b, a))?);
+fn normal_toward<T: Real>(a: Point, b: Point, p: Point, lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
+    let n = Vector::between(a, b, lift).unit()?.rot_ccw();
     let n = match orientation(a, b, p) {
         Orientation::CounterClockwise => n,
-        Orientation::Clockwise => scale(-1.0, n),
+        Orientation::Clockwise => n.neg(),
         Orientation::Collinear => return None,
     };
     let near = if p.distance_squared(a) <= p.distance_squared(b) { a } else { b };
-    Some((n, dot(n, sub(p, near)).abs()))
+    let h = n.dot(&Vector::between(near, p, lift)).abs();
+    Some((n, h))
 }
 
 /// Whether the two segments lie on one line (exact).
@@ -221,14 +269,14 @@ fn ppp(sites: [Site; 3]) -> Option<(Point, f64)> {
 // Point, point, segment.
 
 /// `(p, q, S)`: chooses the endpoint case or the general one.
-fn pps_dispatch(p: Point, q: Point, s: (Point, Point)) -> Option<(Point, f64)> {
+fn pps_dispatch<T: Real>(p: Point, q: Point, s: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
     let seg = Site::Segment { a: s.0, b: s.1 };
     match (seg.other_endpoint(p), seg.other_endpoint(q)) {
         // S = pq: the perpendiculars at p and q are parallel.
         (Some(_), Some(_)) => None,
-        (Some(e), None) => pps_endpoint(p, q, p, e),
-        (None, Some(e)) => pps_endpoint(p, q, q, e),
-        (None, None) => pps(p, q, s.0, s.1),
+        (Some(e), None) => pps_endpoint(p, q, p, e, lift),
+        (None, Some(e)) => pps_endpoint(p, q, q, e, lift),
+        (None, None) => pps(p, q, s.0, s.1, lift),
     }
 }
 
@@ -249,15 +297,19 @@ fn pps_dispatch(p: Point, q: Point, s: (Point, Point)) -> Option<(Point, f64)> {
 /// Precision: relative to `shared`; a few ulps of `|λ|`, except that `λ` is
 /// ill-conditioned when `other` is nearly on the line of `S` (the vertex runs
 /// off to infinity).
-fn pps_endpoint(p: Point, q: Point, shared: Point, far: Point) -> Option<(Point, f64)> {
+fn pps_endpoint<T: Real>(p: Point, q: Point, shared: Point, far: Point, lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
     if orientation(p, q, far) != Orientation::CounterClockwise {
         return None;
     }
     let other = if shared == p { q } else { p };
-    let n = rot_ccw(unit(sub(far, shared))?);
-    let v = sub(other, shared);
-    let lambda = dot(v, v) / (2.0 * dot(n, v));
-    Some((add(shared, scale(lambda, n)), lambda.abs()))
+    let n = Vector::between(shared, far, lift).unit()?.rot_ccw();
+    let v = Vector::between(shared, other, lift);
+    let denominator = lift(2.0).mul(&n.dot(&v));
+    if denominator.signum() == 0 {
+        return None;
+    }
+    let lambda = v.dot(&v).div(&denominator);
+    Some((Vector::of(shared, lift).add(&n.scale(&lambda)), lambda.abs()))
 }
 
 /// `(p, q, S)`, neither point an endpoint of `S`: the circle through `p` and
@@ -285,30 +337,34 @@ fn pps_endpoint(p: Point, q: Point, shared: Point, far: Point) -> Option<(Point,
 /// (the smaller relative error of the division). A few ulps of the
 /// configuration's extent, worse when `p` or `q` is very close to `L`
 /// relative to `|pq|` (the circle is then nearly determined by one point).
-fn pps(p: Point, q: Point, a: Point, b: Point) -> Option<(Point, f64)> {
-    let (n, hp) = normal_toward(a, b, p)?;
+fn pps<T: Real>(p: Point, q: Point, a: Point, b: Point, lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
+    let (n, hp) = normal_toward(a, b, p, lift)?;
     // The side of q, exactly: both points must be strictly on p's side.
     if orientation(a, b, q) != orientation(a, b, p) {
         return None;
     }
-    let d = Point::new(n.y, -n.x); // n = rot_ccw(d): the frame is right-handed
-    let v = sub(q, p);
-    let (along, dy) = (dot(d, v), dot(n, v));
-    let hq = hp + dy;
-    let disc_root = hp.sqrt() * hq.sqrt() * norm(v);
-    let xi = if along >= 0.0 {
-        -(hp * along + disc_root) / dy
+    let d = Vector { x: n.y.clone(), y: n.x.neg() }; // n = rot_ccw(d): the frame is right-handed
+    let v = Vector::between(p, q, lift);
+    let (along, dy) = (d.dot(&v), n.dot(&v));
+    let hq = hp.add(&dy);
+    let disc_root = hp.sqrt().mul(&hq.sqrt()).mul(&v.norm());
+    let xi = if along.signum() >= 0 {
+        if dy.signum() == 0 {
+            return None;
+        }
+        hp.mul(&along).add(&disc_root).neg().div(&dy)
     } else {
-        hp * (along * along + hq * dy) / (hp * along - disc_root)
+        hp.mul(&along.mul(&along).add(&hq.mul(&dy))).div(&hp.mul(&along).sub(&disc_root))
     };
-    let r = if hq > hp {
-        let ax = along - xi;
-        (ax * ax + hq * hq) / (2.0 * hq)
+    let two = lift(2.0);
+    let r = if hq.sub(&hp).signum() > 0 {
+        let ax = along.sub(&xi);
+        ax.mul(&ax).add(&hq.mul(&hq)).div(&two.mul(&hq))
     } else {
-        (xi * xi + hp * hp) / (2.0 * hp)
+        xi.mul(&xi).add(&hp.mul(&hp)).div(&two.mul(&hp))
     };
     // Centre = foot of p + ξ d + r n = p + ξ d + (r - hp) n.
-    let centre = add(p, add(scale(xi, d), scale(r - hp, n)));
+    let centre = Vector::of(p, lift).add(&d.scale(&xi).add(&n.scale(&r.sub(&hp))));
     Some((centre, r))
 }
 
@@ -316,14 +372,14 @@ fn pps(p: Point, q: Point, a: Point, b: Point) -> Option<(Point, f64)> {
 // Point, segment, segment.
 
 /// `(p, S1, S2)`: chooses the endpoint cases or the general one.
-fn pss_dispatch(p: Point, s1: (Point, Point), s2: (Point, Point)) -> Option<(Point, f64)> {
+fn pss_dispatch<T: Real>(p: Point, s1: (Point, Point), s2: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
     let e1 = Site::Segment { a: s1.0, b: s1.1 }.other_endpoint(p);
     let e2 = Site::Segment { a: s2.0, b: s2.1 }.other_endpoint(p);
     match (e1, e2) {
-        (Some(f1), Some(f2)) => pss_common_endpoint(p, f1, f2),
-        (Some(f1), None) => pss_endpoint(p, f1, true, s2),
-        (None, Some(f2)) => pss_endpoint(p, f2, false, s1),
-        (None, None) => pss(p, s1, s2),
+        (Some(f1), Some(f2)) => pss_common_endpoint(p, f1, f2).then(|| (Vector::of(p, lift), lift(0.0))),
+        (Some(f1), None) => pss_endpoint(p, f1, true, s2, lift),
+        (None, Some(f2)) => pss_endpoint(p, f2, false, s1, lift),
+        (None, None) => pss(p, s1, s2, lift),
     }
 }
 
@@ -337,18 +393,18 @@ fn pss_dispatch(p: Point, s1: (Point, Point), s2: (Point, Point)) -> Option<(Poi
 /// strip of `S1`, the wedge between the segments where `S1` and `S2` share
 /// the angle bisector, the strip of `S2`, and the region of `p` behind both
 /// perpendiculars. (E.g. `S1` along +x and `S2` along +y: `S1` owns angles
-/// -90°..45°, `S2` 45°..180°, `p` 180°..270°.) Otherwise `None`: at a reflex
-/// angle the order is `(p, S2, S1)`.
+/// -90°..45°, `S2` 45°..180°, `p` 180°..270°.) Otherwise no vertex: at a
+/// reflex angle the order is `(p, S2, S1)`.
 ///
 /// Collinear consecutive segments (a straight angle): the two perpendiculars
 /// coincide and the region of `p` shrinks to that line, so a vertex of these
-/// three sites is anywhere on it — undetermined: `None`, and the topology
+/// three sites is anywhere on it — undetermined: no vertex, and the topology
 /// decides. The same for `f1`, `f2` on one side (overlapping segments, which
 /// the input rules exclude).
 ///
 /// Precision: exact (the answer is an input point).
-fn pss_common_endpoint(p: Point, f1: Point, f2: Point) -> Option<(Point, f64)> {
-    (orientation(p, f1, f2) == Orientation::CounterClockwise).then_some((p, 0.0))
+fn pss_common_endpoint(p: Point, f1: Point, f2: Point) -> bool {
+    orientation(p, f1, f2) == Orientation::CounterClockwise
 }
 
 /// `(p, S1, S2)` where `p` is an endpoint of exactly one of the segments: the
@@ -373,19 +429,23 @@ fn pss_common_endpoint(p: Point, f1: Point, f2: Point) -> Option<(Point, f64)> {
 /// would touch at `p` itself, outside the open segment `other`.
 ///
 /// Precision: relative to `p`; a few ulps of `λ`.
-fn pss_endpoint(
+fn pss_endpoint<T: Real>(
     p: Point,
     far: Point,
     incident_first: bool,
     other: (Point, Point),
-) -> Option<(Point, f64)> {
-    let d = unit(sub(far, p))?;
-    let m = if incident_first { rot_ccw(d) } else { scale(-1.0, rot_ccw(d)) };
-    let (n, h) = normal_toward(other.0, other.1, p)?;
-    let gap = sub(m, n);
-    let one_minus_c = 0.5 * dot(gap, gap);
-    let lambda = h / one_minus_c;
-    Some((add(p, scale(lambda, m)), lambda))
+    lift: &impl Fn(f64) -> T,
+) -> Option<(Vector<T>, T)> {
+    let d = Vector::between(p, far, lift).unit()?;
+    let m = if incident_first { d.rot_ccw() } else { d.rot_ccw().neg() };
+    let (n, h) = normal_toward(other.0, other.1, p, lift)?;
+    let gap = m.sub(&n);
+    let one_minus_c = lift(0.5).mul(&gap.dot(&gap));
+    if one_minus_c.signum() == 0 {
+        return None;
+    }
+    let lambda = h.div(&one_minus_c);
+    Some((Vector::of(p, lift).add(&m.scale(&lambda)), lambda))
 }
 
 /// `(p, S1, S2)`, `p` an endpoint of neither: parabola ∩ angle bisector.
@@ -423,36 +483,45 @@ fn pss_endpoint(
 /// `Δ = (g - s|w0|)(g + s|w0|)`, `s = |cross(n1, e)|`, avoid needless
 /// cancellation; the error is a few ulps of the extent times the condition,
 /// which grows like `1/√Δ` near a double root (`p` near a tangent point).
-fn pss(p: Point, s1: (Point, Point), s2: (Point, Point)) -> Option<(Point, f64)> {
+/// For nearly parallel lines `m` is the difference of two rounded unit
+/// normals, so its direction is known only to `ε / |m|`: a kink of 1e-10
+/// rad keeps six digits in `f64` (the oracle then solves again in a finer
+/// arithmetic, `vertex_in`).
+fn pss<T: Real>(p: Point, s1: (Point, Point), s2: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
     if collinear_segments(s1, s2) {
         return None;
     }
-    let (n1, h1) = normal_toward(s1.0, s1.1, p)?;
-    let (n2, h2) = normal_toward(s2.0, s2.1, p)?;
-    let m = sub(n1, n2);
-    let mm = dot(m, m);
-    if mm == 0.0 {
+    let (n1, h1) = normal_toward(s1.0, s1.1, p, lift)?;
+    let (n2, h2) = normal_toward(s2.0, s2.1, p, lift)?;
+    let m = n1.sub(&n2);
+    let mm = m.dot(&m);
+    if mm.signum() == 0 {
         return None;
     }
-    let w0 = scale((h2 - h1) / mm, m);
-    let e = scale(1.0 / mm.sqrt(), rot_ccw(m));
-    let k = dot(n1, e);
-    let s = cross(n1, e).abs();
-    let g = h1 + dot(n1, w0);
-    let w0_len = norm(w0);
-    let disc = (g - s * w0_len) * (g + s * w0_len);
-    if disc < 0.0 {
+    let w0 = m.scale(&h2.sub(&h1).div(&mm));
+    let e = m.rot_ccw().scale(&mm.sqrt().recip());
+    let k = n1.dot(&e);
+    let s = n1.cross(&e).abs();
+    let g = h1.add(&n1.dot(&w0));
+    let w0_len = w0.norm();
+    let disc = g.sub(&s.mul(&w0_len)).mul(&g.add(&s.mul(&w0_len)));
+    if disc.signum() < 0 {
         return None;
     }
     let root = disc.sqrt();
-    let gk = g * k;
-    let t = if gk > 0.0 {
-        (w0_len - g) * (w0_len + g) / (gk + root)
+    let gk = g.mul(&k);
+    let t = if gk.signum() > 0 {
+        w0_len.sub(&g).mul(&w0_len.add(&g)).div(&gk.add(&root))
     } else {
-        (gk - root) / (s * s)
+        let ss = s.mul(&s);
+        if ss.signum() == 0 {
+            return None;
+        }
+        gk.sub(&root).div(&ss)
     };
-    let w = add(w0, scale(t, e));
-    Some((add(p, w), norm(w)))
+    let w = w0.add(&e.scale(&t));
+    let r = w.norm();
+    Some((Vector::of(p, lift).add(&w), r))
 }
 
 // ---------------------------------------------------------------------------
@@ -468,13 +537,17 @@ fn pss(p: Point, s1: (Point, Point), s2: (Point, Point)) -> Option<(Point, f64)>
 /// excentres of the triangle of the lines. The touching point on line `i` is
 /// in direction `-σ_i n_i` from the centre, so a pattern has the wanted order
 /// iff `σ_1 n_1, σ_2 n_2, σ_3 n_3` are counter-clockwise — known before
-/// solving. For a proper triangle one pattern (the incentre: the seed's
-/// "q_i, q_j, q_k positively oriented") or three (the excentres) pass; the
-/// seed leaves the choice among excentres to "the relative position of the
-/// segments", which is made precise here as: the candidate whose tangent
-/// points lie inside the open segments, or when none does, the one whose
-/// tangent points stray least beyond the segments' ends (sum of distances).
-/// For segments that do not cross, at most one excentre touches all three.
+/// solving, exactly, from the turns between the segments' directions (not
+/// from the orientation of the rounded normals as points, which for lines
+/// 1e-10 rad apart is noise: the three points are 1e-10 apart and their
+/// triangle's area 1e-31), so every arithmetic makes the same choice. For a proper triangle one pattern (the incentre: the
+/// seed's "q_i, q_j, q_k positively oriented") or three (the excentres)
+/// pass; the seed leaves the choice among excentres to "the relative
+/// position of the segments", which is made precise here as: the candidate
+/// whose tangent points lie inside the open segments, or when none does,
+/// the one whose tangent points stray least beyond the segments' ends (sum
+/// of distances). For segments that do not cross, at most one excentre
+/// touches all three.
 ///
 /// Two parallel lines (a strip) make two patterns singular (a zero
 /// determinant, skipped) and leave the two circles on the mid-line, one per
@@ -485,30 +558,44 @@ fn pss(p: Point, s1: (Point, Point), s2: (Point, Point)) -> Option<(Point, f64)>
 /// Precision: relative to `a_1`; each solution costs a 3×3 determinant of
 /// unit-normal entries, a few ulps of the extent divided by the sine of the
 /// smallest angle between the lines that matter.
-fn sss(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point)) -> Option<(Point, f64)> {
+fn sss<T: Real>(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
     let segs = [s1, s2, s3];
     if collinear_segments(s1, s2) || collinear_segments(s2, s3) || collinear_segments(s3, s1) {
         return None;
     }
     let o = s1.0;
-    let mut n = [Point::default(); 3];
-    let mut c = [0.0; 3];
-    for i in 0..3 {
-        n[i] = rot_ccw(unit(sub(segs[i].1, segs[i].0))?);
-        c[i] = dot(n[i], sub(segs[i].0, o));
+    let mut normals = Vec::with_capacity(3);
+    let mut c = Vec::with_capacity(3);
+    for &(a, b) in &segs {
+        let n = Vector::between(a, b, lift).unit()?.rot_ccw();
+        c.push(n.dot(&Vector::between(o, a, lift)));
+        normals.push(n);
     }
+    let n: [Vector<T>; 3] = normals.try_into().ok()?;
+    let c: [T; 3] = c.try_into().ok()?;
+    // The turns between the segments' directions, exactly: the touching
+    // directions `σ_i n_i` are the directions turned a quarter and
+    // flipped by `σ_i`, so their order comes from these and the signs.
+    let turn_of = |i: usize, j: usize| match turn(segs[i].0, segs[i].1, segs[j].0, segs[j].1) {
+        Orientation::CounterClockwise => 1.0,
+        Orientation::Clockwise => -1.0,
+        Orientation::Collinear => 0.0,
+    };
+    let turns = [turn_of(0, 1), turn_of(1, 2), turn_of(2, 0)];
     const PATTERNS: [[f64; 3]; 4] =
         [[1.0, 1.0, 1.0], [-1.0, 1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 1.0, -1.0]];
-    let mut best: Option<(f64, Point, f64)> = None;
+    let mut best: Option<(f64, Vector<T>, T)> = None;
     for sigma in PATTERNS {
-        let dirs = [0, 1, 2].map(|i| scale(sigma[i], n[i]));
-        if orientation(dirs[0], dirs[1], dirs[2]) != Orientation::CounterClockwise {
+        // Three directions are counter-clockwise in this order when at
+        // least two of the three consecutive turns are (none parallel).
+        let left_turns = (0..3).filter(|&i| sigma[i] * sigma[(i + 1) % 3] * turns[i] > 0.0).count();
+        if left_turns < 2 {
             continue;
         }
-        let Some((w, r)) = solve_tangent_system(n, c, sigma) else { continue };
-        let centre = add(o, w);
-        let stray = stray_distance(&segs, centre);
-        if best.map_or(true, |(b, _, _)| stray < b) {
+        let Some((w, r)) = solve_tangent_system(&n, &c, sigma, lift) else { continue };
+        let centre = Vector::of(o, lift).add(&w);
+        let stray = stray_distance(&segs, Point::new(centre.x.to_f64(), centre.y.to_f64()));
+        if best.as_ref().map_or(true, |(b, _, _)| stray < *b) {
             best = Some((stray, centre, r.abs()));
         }
     }
@@ -517,24 +604,25 @@ fn sss(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point)) -> Option<(Po
 
 /// Solves `n_i·w - σ_i r = c_i` (i = 0, 1, 2) by Cramer's rule; `None` when
 /// the determinant is 0 or the result is not finite.
-fn solve_tangent_system(n: [Point; 3], c: [f64; 3], sigma: [f64; 3]) -> Option<(Point, f64)> {
-    let col_s = [-sigma[0], -sigma[1], -sigma[2]];
-    let col_x = [n[0].x, n[1].x, n[2].x];
-    let col_y = [n[0].y, n[1].y, n[2].y];
-    let det = det3(col_x, col_y, col_s);
-    if det == 0.0 {
+fn solve_tangent_system<T: Real>(n: &[Vector<T>; 3], c: &[T; 3], sigma: [f64; 3], lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
+    let col_s = sigma.map(|s| lift(-s));
+    let col_x = [n[0].x.clone(), n[1].x.clone(), n[2].x.clone()];
+    let col_y = [n[0].y.clone(), n[1].y.clone(), n[2].y.clone()];
+    let det = det3(&col_x, &col_y, &col_s);
+    if det.signum() == 0 {
         return None;
     }
-    let x = det3(c, col_y, col_s) / det;
-    let y = det3(col_x, c, col_s) / det;
-    let r = det3(col_x, col_y, c) / det;
-    (x.is_finite() && y.is_finite() && r.is_finite()).then_some((Point::new(x, y), r))
+    let x = det3(c, &col_y, &col_s).div(&det);
+    let y = det3(&col_x, c, &col_s).div(&det);
+    let r = det3(&col_x, &col_y, c).div(&det);
+    let finite = x.to_f64().is_finite() && y.to_f64().is_finite() && r.to_f64().is_finite();
+    finite.then_some((Vector { x, y }, r))
 }
 
 /// The determinant of the 3×3 matrix with columns `a`, `b`, `c`.
-fn det3(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
-    a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
-        + a[2] * (b[0] * c[1] - b[1] * c[0])
+fn det3<T: Real>(a: &[T; 3], b: &[T; 3], c: &[T; 3]) -> T {
+    let minor = |i: usize, j: usize| b[i].mul(&c[j]).sub(&b[j].mul(&c[i]));
+    a[0].mul(&minor(1, 2)).sub(&a[1].mul(&minor(0, 2))).add(&a[2].mul(&minor(0, 1)))
 }
 
 /// How far, in all, the feet of `centre` on the three supporting lines lie
@@ -557,6 +645,22 @@ mod tests {
 
     fn p(x: f64, y: f64) -> Point {
         Point::new(x, y)
+    }
+
+    fn sub(a: Point, b: Point) -> Point {
+        Point::new(a.x - b.x, a.y - b.y)
+    }
+
+    fn add(a: Point, b: Point) -> Point {
+        Point::new(a.x + b.x, a.y + b.y)
+    }
+
+    fn scale(s: f64, v: Point) -> Point {
+        Point::new(s * v.x, s * v.y)
+    }
+
+    fn cross(a: Point, b: Point) -> f64 {
+        a.x * b.y - a.y * b.x
     }
 
     fn pt(x: f64, y: f64) -> Site {
@@ -1005,5 +1109,62 @@ mod tests {
                     "swapped order answered {:?} r={}", other, other_r);
             }
         }
+    }
+
+    /// A chain of three nearly vertical segments whose joints turn by about
+    /// 7e-11 rad (c_tests/fixtures/near_vertical_chain3.txt).
+    fn kinked_chain() -> [Point; 4] {
+        [
+            p(0.93524989551077042, 0.085386995976182073),
+            p(0.93524989548178594, 0.18407541281776227),
+            p(0.93524989545530357, 0.30131729768741955),
+            p(0.93524989543751025, 0.41729566017222008),
+        ]
+    }
+
+    #[test]
+    fn the_far_circle_of_a_kinked_chain_is_found_in_double_double() {
+        // The circle tangent to the first two pieces and through the far
+        // end: about 1.8e9 away on the concave side. In f64 the angle
+        // bisector of the two lines is lost (their unit normals agree to
+        // ten digits) and no circle is found; double-double finds it, and
+        // 400-bit floats agree to 1e-15.
+        use super::super::bigfloat::BigFloat;
+        use super::super::double_double::DoubleDouble;
+        let q = kinked_chain();
+        let sites = [Site::Segment { a: q[0], b: q[1] }, Site::Point(q[3]), Site::Segment { a: q[1], b: q[2] }];
+        let dd = vertex_in(&sites, &DoubleDouble::from_f64).expect("a circle").map(|v| v.to_f64());
+        let big = vertex_in(&sites, &|x| BigFloat::from_f64(x, 400)).expect("a circle").map(|v| v.to_f64());
+        assert!(big[0] > 1e9 && big[2] > 1e9, "{big:?}");
+        for k in 0..3 {
+            assert!((dd[k] - big[k]).abs() <= 1e-14 * big[2], "{dd:?} {big:?}");
+        }
+        // and the circle touches its three sites
+        let centre = p(big[0], big[1]);
+        for site in &sites {
+            assert!((site.distance(centre) - big[2]).abs() <= 1e-12 * big[2], "{site:?}");
+        }
+    }
+
+    #[test]
+    fn the_order_of_three_nearly_parallel_lines_is_decided_exactly() {
+        // Three pieces of the kinked chain: the circle tangent to all three
+        // is the far one on the concave side, about 1.7e9 away, with
+        // touching points counter-clockwise in the order (S1, S0, S2) seen
+        // from there; the rounded unit normals, 7e-11 apart, have no
+        // reliable orientation as points, so the order comes from the
+        // exact turns between the pieces' directions.
+        use super::super::double_double::DoubleDouble;
+        let q = kinked_chain();
+        let s = [0, 1, 2].map(|i| Site::Segment { a: q[i], b: q[i + 1] });
+        let far = vertex_in(&[s[1], s[0], s[2]], &DoubleDouble::from_f64).expect("a circle").map(|v| v.to_f64());
+        assert!(far[0] > 1e9 && far[2] > 1e9, "{far:?}");
+        let centre = p(far[0], far[1]);
+        for site in &s {
+            assert!((site.distance(centre) - far[2]).abs() <= 1e-12 * far[2], "{site:?}");
+        }
+        // the other order is not the far circle
+        let near = vertex_in(&[s[0], s[1], s[2]], &DoubleDouble::from_f64).map(|v| v.map(|x| x.to_f64()));
+        assert!(near.map_or(true, |v| v[2] < 1.0), "{near:?}");
     }
 }

@@ -26,11 +26,9 @@ pub(crate) fn circle_of_sites(sites: &[Site; 3]) -> (Point, f64) {
     let [ga, gb, gc] = sites;
     let solved = segment_solvers::vertex(ga, gb, gc);
     // An ill-conditioned solve (nearly parallel lines, a circle far
-    // larger than its sites) is polished against the sites themselves.
-    let solved = match solved {
-        Some((c, r)) if !fault::active() => Some(oracle::polish_vertex(sites, c, r).unwrap_or((c, r))),
-        other => other,
-    };
+    // larger than its sites), or none where rounding lost the circle, is
+    // solved again finer and polished against the sites themselves.
+    let solved = if fault::active() { solved } else { oracle::polish_vertex(sites, solved).or(solved) };
     // No circle: keep the topology, place the vertex among its sites.
     solved.unwrap_or_else(|| among_sites(sites))
 }

@@ -2,6 +2,8 @@
 //! canonical topology text.
 
 mod access;
+#[cfg(test)]
+pub(crate) mod audit;
 mod shape;
 mod topology;
 

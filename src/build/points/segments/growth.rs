@@ -67,7 +67,10 @@ impl PointDiagram {
             return true;
         }
         let sites = self.store.sites_of(u);
-        (sites.contains(&a) && sites.contains(&b)) || in_strip(self.store.position[u.index()], pa, pb)
+        (sites.contains(&a) && sites.contains(&b))
+            || in_strip(self.store.position[u.index()], self.store.clearance[u.index()], (pa, pb), || {
+                sites.map(|s| self.site_geometry(s))
+            })
     }
 
     /// With `w = back.origin()` just marked as joining the tree by `back`:
