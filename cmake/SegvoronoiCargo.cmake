@@ -4,7 +4,8 @@
 # Sets for SegvoronoiInstall.cmake:
 #   SEGVORONOI_SOVERSION          ABI version in the SONAME (see build.rs)
 #   SEGVORONOI_SHARED_FILE        versioned shared library in the build tree
-#   SEGVORONOI_SHARED_LINKS       its SONAME and development symlinks
+#   SEGVORONOI_SONAME_LINK        its SONAME link, libsegvoronoi.so.SOVERSION
+#   SEGVORONOI_DEV_LINK           the unversioned link libsegvoronoi.so
 #   SEGVORONOI_STATIC_FILE        static library in the build tree
 #   SEGVORONOI_STATIC_SYSTEM_LIBS system libraries a static link needs
 
@@ -27,12 +28,23 @@ else()
   set(_segvoronoi_profile_dir release)
 endif()
 
-set(_segvoronoi_cargo_dir "${CMAKE_CURRENT_BINARY_DIR}/cargo")
+# cargo's target directory: inside the build tree, unless CARGO_TARGET_DIR is
+# set (as cargo itself does) or SEGVORONOI_CARGO_TARGET_DIR is given. Sharing
+# one lets two build trees, or a build tree and `cargo build --release`,
+# reuse each other's compilation (scripts/test-all.sh relies on it).
+if(DEFINED ENV{CARGO_TARGET_DIR} AND NOT "$ENV{CARGO_TARGET_DIR}" STREQUAL "")
+  set(_segvoronoi_cargo_dir_default "$ENV{CARGO_TARGET_DIR}")
+else()
+  set(_segvoronoi_cargo_dir_default "${CMAKE_CURRENT_BINARY_DIR}/cargo")
+endif()
+set(SEGVORONOI_CARGO_TARGET_DIR "${_segvoronoi_cargo_dir_default}" CACHE PATH
+    "cargo's --target-dir for the segvoronoi build")
+get_filename_component(_segvoronoi_cargo_dir "${SEGVORONOI_CARGO_TARGET_DIR}" ABSOLUTE
+                       BASE_DIR "${CMAKE_CURRENT_BINARY_DIR}")
 set(_segvoronoi_out "${_segvoronoi_cargo_dir}/${_segvoronoi_profile_dir}")
 set(SEGVORONOI_SHARED_FILE "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so.${PROJECT_VERSION}")
-set(SEGVORONOI_SHARED_LINKS
-    "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
-    "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so")
+set(SEGVORONOI_SONAME_LINK "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so.${SEGVORONOI_SOVERSION}")
+set(SEGVORONOI_DEV_LINK "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so")
 set(SEGVORONOI_STATIC_FILE "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.a")
 
 # cargo decides itself what is out of date, so it runs on every build; the
@@ -48,7 +60,7 @@ add_custom_target(segvoronoi_cargo ALL
           "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
   COMMAND "${CMAKE_COMMAND}" -E create_symlink "libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
           "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so"
-  BYPRODUCTS ${SEGVORONOI_SHARED_FILE} ${SEGVORONOI_SHARED_LINKS} ${SEGVORONOI_STATIC_FILE}
+  BYPRODUCTS ${SEGVORONOI_SHARED_FILE} ${SEGVORONOI_SONAME_LINK} ${SEGVORONOI_DEV_LINK} ${SEGVORONOI_STATIC_FILE}
   WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"
   COMMENT "cargo build segvoronoi (${_segvoronoi_profile_dir})"
   USES_TERMINAL

@@ -2,7 +2,8 @@
 # Sets up a fresh Debian/Ubuntu machine (Rust toolchain assumed) and runs every
 # test of segvoronoi: cargo tests (unit, property, header, C API through cc,
 # doctests), the fault-injection suite, then the CMake package installed into a
-# temporary prefix and the downstream C tests and CGAL cross-check under ctest.
+# temporary prefix and the downstream C tests and CGAL cross-check under ctest,
+# and the C examples (examples/c) built against the installed package.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -26,5 +27,13 @@ cargo test --workspace --quiet
 step "fault injection (predicates perturbed or random)"
 cargo test --quiet --release --features fault-injection --test fault_injection
 
+# The package steps build the library with cargo in one shared target
+# directory (CMake honours CARGO_TARGET_DIR), so the second compiles nothing.
+package_target="$(mktemp -d "${TMPDIR:-/tmp}/segvoronoi-package-target.XXXXXX")"
+trap 'rm -rf "$package_target"' EXIT
+
 step "CMake package, downstream C tests, CGAL cross-check (ctest)"
-bash c_tests/run.sh
+CARGO_TARGET_DIR="$package_target" bash c_tests/run.sh
+
+step "examples/c: the C quick start through find_package and pkg-config; stripped install, Runtime component"
+CARGO_TARGET_DIR="$package_target" bash scripts/test-c-examples.sh

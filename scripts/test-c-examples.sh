@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# Builds and runs examples/c, the README's C quick start, as an outside project
+# would: with CMake through find_package(segvoronoi) (shared and static) and
+# with make through pkg-config. On the way it checks the install itself:
+# `cmake --install --strip` strips both libraries, and the Runtime component
+# alone (the versioned library and its SONAME link) runs a program linked
+# against the shared library.
+#
+#   bash scripts/test-c-examples.sh
+#
+# The package is built in a temporary tree. With CARGO_TARGET_DIR set, cargo
+# works in that directory; scripts/test-all.sh shares one with c_tests/run.sh,
+# so cargo has nothing left to compile and this takes seconds.
+set -euo pipefail
+repo="$(cd "$(dirname "$0")/.." && pwd)"
+work="$(mktemp -d "${TMPDIR:-/tmp}/segvoronoi-c-examples.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+jobs="$(nproc 2>/dev/null || echo 2)"
+strict="-Wall -Wextra -pedantic -Werror"
+fail() { echo "test-c-examples: $*" >&2; exit 1; }
+
+echo "--- the README's C quick start is examples/c/quickstart.c"
+awk '/^## C quick start/ { s = 1 } s && /^```c$/ { c = 1; next } c && /^```$/ { exit } c' "$repo/README.md" \
+  >"$work/readme_quickstart.c"
+diff -u "$work/readme_quickstart.c" "$repo/examples/c/quickstart.c" \
+  || fail "the C block under '## C quick start' in README.md and examples/c/quickstart.c differ"
+
+echo "--- package: configure, build, install with --strip, and the Runtime component alone"
+cmake -S "$repo" -B "$work/build" -DCMAKE_BUILD_TYPE=Release >"$work/configure.log" 2>&1 \
+  || { cat "$work/configure.log"; exit 1; }
+cmake --build "$work/build" -j "$jobs" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
+cmake --install "$work/build" --prefix "$work/prefix" --strip >/dev/null
+cmake --install "$work/build" --prefix "$work/runtime" --component Runtime >/dev/null
+
+libdir="$(dirname "$(ls "$work"/prefix/lib*/libsegvoronoi.so)")"
+shared="$(ls "$libdir"/libsegvoronoi.so.*.*.*)"
+soname="$(readelf -d "$shared" | sed -n 's/.*Library soname: \[\(.*\)\]/\1/p')"
+# Stripped: no static symbol table left in the shared library (its exports
+# are in .dynsym), no debug sections in the static one (its symbols stay).
+# (Listings go to files first: grep -q would end a pipe early, and pipefail.
+# readelf rather than nm, whose LLVM plugin chokes on the embedded bitcode.)
+readelf -S "$shared" >"$work/shared_sections.txt"
+objdump -h "$libdir/libsegvoronoi.a" >"$work/static_sections.txt"
+readelf -sW "$libdir/libsegvoronoi.a" >"$work/static_symbols.txt"
+! grep -q '\.symtab' "$work/shared_sections.txt" || fail "$shared is not stripped"
+! grep -q ' \.debug_' "$work/static_sections.txt" || fail "libsegvoronoi.a still has debug sections"
+grep -q 'FUNC *GLOBAL .* segvoronoi_builder_new$' "$work/static_symbols.txt" || fail "libsegvoronoi.a lost its symbol table"
+# Runtime is the versioned library and its SONAME link, nothing for development.
+runtime_files="$(cd "$work/runtime" && find . ! -type d -printf '%f\n' | sort | tr '\n' ' ')"
+expected_runtime="$(printf '%s\n' "$(basename "$shared")" "$soname" | sort | tr '\n' ' ')"
+[ "$runtime_files" = "$expected_runtime" ] \
+  || fail "the Runtime component holds '$runtime_files', expected '$expected_runtime'"
+echo "stripped; Runtime component: $runtime_files"
+
+mkdir "$work/example"
+cp "$repo"/examples/c/{quickstart.c,CMakeLists.txt,Makefile} "$work/example/"
+
+echo "--- examples/c through CMake: find_package(segvoronoi), shared and static"
+cmake -S "$work/example" -B "$work/example-cmake" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_C_FLAGS="$strict" >"$work/example-configure.log" 2>&1 \
+  || { cat "$work/example-configure.log"; exit 1; }
+cmake --build "$work/example-cmake" -j "$jobs" >"$work/example-build.log" 2>&1 \
+  || { cat "$work/example-build.log"; exit 1; }
+"$work/example-cmake/quickstart" >"$work/out_cmake_shared.txt"
+"$work/example-cmake/quickstart_static" >"$work/out_cmake_static.txt"
+
+echo "--- examples/c through make and pkg-config"
+make -s -C "$work/example" PKG_CONFIG_PATH="$libdir/pkgconfig" CFLAGS="-O2 $strict" >/dev/null
+"$work/example/quickstart" >"$work/out_pkg_config.txt" # found through its RUNPATH
+
+# The three circumcentres of the four points, whatever their numbering.
+cat >"$work/expected.txt" <<'EOF'
+(-0.2, 1.35) r=1.36473
+(1, -0.364286) r=1.06429
+(2.2, 1.35) r=1.36473
+EOF
+for out in "$work"/out_*.txt; do
+  sed 's/^vertex [0-9]*: //' "$out" | sort | diff -u "$work/expected.txt" - \
+    || fail "$(basename "$out" .txt): unexpected output"
+done
+
+echo "--- the programs linked against the shared library, with only the Runtime component"
+mv "$work/prefix" "$work/prefix-gone"
+runtime_libdir="$(dirname "$(ls "$work"/runtime/lib*/"$soname")")"
+for program in "$work/example-cmake/quickstart" "$work/example/quickstart"; do
+  LD_LIBRARY_PATH="$runtime_libdir" "$program" | cmp -s - "$work/out_cmake_shared.txt" \
+    || fail "$program does not run against the Runtime component alone"
+done
+echo "--- examples/c: all passed (CMake shared and static, pkg-config, Runtime component)"
