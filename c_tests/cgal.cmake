@@ -272,6 +272,19 @@ segvoronoi_cgal_fixture_test(search_perpendicular_2seg_zero_length --degenerate)
 # rounded crossing point and a fourth; CGAL has one exactly zero-length edge, ours an edge flipped and vertices up to 2e4 off
 segvoronoi_cgal_fixture_test(search_split_junction3_4seg --degenerate)
 
+# Found by the full search at ef678b7 (junctions-20, snapped-2), minimised;
+# exactly degenerate, compared with --degenerate.
+# three points on a circle tangent to a segment at one of them: the two vertices are one point (zero-length edge);
+# CGAL's is_degenerate_edge says no (an open segment touching at its endpoint is outside), so the harness compares rational vertices exactly
+segvoronoi_cgal_fixture_test(search_circle_tangent_at_point_3seg --degenerate)
+# five sites on one circle, one segment touching it at its endpoint (another site): ours missed that zero-length edge until on_circle took the closed segment
+segvoronoi_cgal_fixture_test(search_five_cocircular_3seg --degenerate)
+# KNOWN HARNESS LIMITATION: a vertex of two points and a segment tangent inside it, and one of the same two points
+# and a segment from one of them, are one point; both vertices involve square roots, which the harness does not
+# compare exactly, and CGAL's is_degenerate_edge says no. Ours (one vertex) is right; disabled.
+segvoronoi_cgal_fixture_test(search_two_tangencies_3seg --degenerate)
+set_tests_properties(cgal_fixture_search_two_tangencies_3seg PROPERTIES DISABLED TRUE)
+
 # KNOWN DIFFERENCE at 2c4f111 (and still at 2e52cd8), found by the search.
 # The first four near-degenerate fixtures and search_split_junction3_4seg
 # differ at afbc170 too (signs decided wrongly: subnormal products

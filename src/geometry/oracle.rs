@@ -56,7 +56,6 @@ use super::predicates::{in_circle, CirclePosition};
 use super::real::Real;
 use super::scale::Scale;
 use super::segment_solvers;
-use super::site::segment_parameter;
 use super::site::Site;
 
 /// The question asked about a vertex and a new segment.
@@ -105,10 +104,10 @@ pub(crate) fn reach(
 /// (rounded as `centre`, `radius`): the test for a zero-length edge, whose
 /// two vertices are one point exactly when their four sites are
 /// cocircular. A point: exact in-circle among points, else the certified
-/// distance. A segment touches the circle only as an open segment: tangent
-/// at a point strictly inside it, or, where one of its endpoints is a point
-/// of `sites`, tangent at that endpoint (the centre on its perpendicular
-/// there). Decided after an exact power-of-two scaling of everything into
+/// distance. A segment whose endpoint is a point of `sites` touches the
+/// circle when it is tangent there (the centre on its perpendicular at
+/// that endpoint); any other when its nearest point is on the circle
+/// (tangent inside it, or its endpoint on the circle). Decided after an exact power-of-two scaling of everything into
 /// the safe range, so that products of tiny or huge coordinates neither
 /// underflow nor overflow.
 pub(crate) fn on_circle(sites: &[Site; 3], centre: Point, radius: f64, fourth: &Site) -> bool {
@@ -148,12 +147,11 @@ pub(crate) fn on_circle(sites: &[Site; 3], centre: Point, radius: f64, fourth: &
         },
         Site::Segment { a, b } => match sites.iter().find_map(|g| g.as_point().filter(|&p| p == a || p == b)) {
             Some(e) => on(Reach::Entering { from: e, to: if e == a { b } else { a } }),
-            // the foot must be inside the open segment (else only an
-            // endpoint, another site, could touch the circle)
-            None => {
-                let t = segment_parameter(a, b, c);
-                t > 0.0 && t < 1.0 && on(Reach::Distance { a, b })
-            }
+            // the closed segment's nearest point on the circle: tangent
+            // inside it, or touching at an endpoint (which is then a site
+            // on the circle too, and the two vertices one point: five
+            // cocircular sites, as on small grids)
+            None => on(Reach::Distance { a, b }),
         },
     }
 }
