@@ -166,14 +166,21 @@ pub(crate) fn check_segments(points: &[Point], segments: &[[Point; 2]]) -> Resul
     })
 }
 
-/// The power of two that brings the largest coordinate near 1 when it is
-/// outside the range where the predicates are exact.
+/// The power of two that brings the coordinates into the range where the
+/// predicates are exact (`Scale::for_magnitudes`).
 fn scale_for(points: &[Point], segments: &[[Point; 2]]) -> Scale {
-    let max_abs = points
-        .iter()
-        .chain(segments.iter().flatten())
-        .fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-    Scale::for_max_abs(max_abs)
+    let (max_abs, min_abs) = magnitudes(points.iter().chain(segments.iter().flatten()));
+    Scale::for_magnitudes(max_abs, min_abs)
+}
+
+/// The largest coordinate magnitude of `points` and the smallest nonzero one
+/// (infinity when there is none).
+pub(crate) fn magnitudes<'a>(points: impl Iterator<Item = &'a Point>) -> (f64, f64) {
+    points.fold((0.0f64, f64::INFINITY), |(max, min), p| {
+        let (x, y) = (p.x.abs(), p.y.abs());
+        let min = [x, y].into_iter().filter(|&v| v > 0.0).fold(min, f64::min);
+        (max.max(x).max(y), min)
+    })
 }
 
 fn input_point(points: &[Point], segments: &[[Point; 2]], src: PointSource) -> Point {

@@ -3,14 +3,25 @@
 //! The predicates are exact as long as their intermediate products neither
 //! overflow nor underflow. Coordinates up to `2^60` in magnitude are used as
 //! they are; larger or tinier inputs are multiplied by a power of two (exact
-//! in binary floating point) to bring the largest magnitude near 1. Nothing
-//! is translated, because a translation rounds and would change the answer
-//! to near-degenerate questions.
+//! in binary floating point) to bring the largest magnitude near 1. An
+//! input that also has coordinates near the subnormal range (a zero moved
+//! by a few ulps) is scaled up instead, its largest magnitude to about
+//! `2^100`: a product of such a coordinate with an ordinary one would
+//! otherwise underflow, and the predicates that sum such products would
+//! lose the term that decides them. Nothing is translated, because a
+//! translation rounds and would change the answer to near-degenerate
+//! questions.
 
 /// Largest magnitude used without rescaling.
 const UPPER: f64 = (1u64 << 60) as f64;
 /// Smallest largest-magnitude used without rescaling.
 const LOWER: f64 = 1.0 / UPPER;
+/// Below this, a nonzero magnitude is near the subnormal range (about
+/// `2^-897`).
+const TINY: f64 = 1e-270;
+/// Where an input with tiny magnitudes puts its largest one: `2^100`, with
+/// room for degree-4 predicates (`2^400`) below overflow.
+const TINY_INPUT_TARGET: i32 = 100;
 
 /// A power-of-two scale factor and its inverse.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -26,14 +37,31 @@ impl Scale {
 
     /// The scale for inputs whose largest coordinate magnitude is `max_abs`.
     pub fn for_max_abs(max_abs: f64) -> Scale {
-        if max_abs == 0.0 || (LOWER..=UPPER).contains(&max_abs) || !max_abs.is_finite() {
+        Scale::for_magnitudes(max_abs, max_abs)
+    }
+
+    /// The scale for inputs whose largest coordinate magnitude is
+    /// `max_abs` and smallest nonzero one `min_abs` (see the module
+    /// documentation).
+    pub fn for_magnitudes(max_abs: f64, min_abs: f64) -> Scale {
+        if max_abs == 0.0 || !max_abs.is_finite() {
             return Scale::IDENTITY;
         }
-        // exponent e with 2^e <= max_abs < 2^(e+1)
-        // Clamped so that both factors are normal numbers; subnormal inputs
-        // then land a little below 1, still well inside the exact range.
-        let e = exponent_of(max_abs).clamp(-1022, 1022);
-        Scale { to_internal: pow2(-e), to_input: pow2(e) }
+        let scale = if (LOWER..=UPPER).contains(&max_abs) {
+            Scale::IDENTITY
+        } else {
+            // exponent e with 2^e <= max_abs < 2^(e+1)
+            // Clamped so that both factors are normal numbers; subnormal inputs
+            // then land a little below 1, still well inside the exact range.
+            let e = exponent_of(max_abs).clamp(-1022, 1022);
+            Scale { to_internal: pow2(-e), to_input: pow2(e) }
+        };
+        let tiny_left = min_abs > 0.0 && min_abs * scale.to_internal < TINY;
+        if tiny_left && max_abs * scale.to_internal < pow2(TINY_INPUT_TARGET) {
+            let e = (exponent_of(max_abs) - TINY_INPUT_TARGET).clamp(-1022, 1022);
+            return Scale { to_internal: pow2(-e), to_input: pow2(e) };
+        }
+        scale
     }
 
     pub fn is_identity(&self) -> bool {
@@ -67,6 +95,17 @@ mod tests {
         assert!(Scale::for_max_abs(1e9).is_identity());
         assert!(Scale::for_max_abs(1e-9).is_identity());
         assert!(Scale::for_max_abs(0.0).is_identity());
+    }
+
+    #[test]
+    fn inputs_with_coordinates_near_the_subnormal_range_are_scaled_up() {
+        let tiny = 5e-324;
+        let s = Scale::for_magnitudes(20.0, tiny);
+        assert_eq!(s.to_internal, pow2(96));
+        assert!(tiny * s.to_internal >= f64::MIN_POSITIVE);
+        assert_eq!(s.to_internal * s.to_input, 1.0);
+        // not when the smallest magnitude is ordinary
+        assert!(Scale::for_magnitudes(20.0, 1e-30).is_identity());
     }
 
     #[test]

@@ -295,7 +295,20 @@ pub(crate) fn left_degree((a, b): (Point, Point), seen: SiteSeen) -> LeftDegree 
         SiteSeen::Other { site, from: Some(v) } => site.nearest_point(v),
         SiteSeen::Other { site, from: None } => site.midpoint(),
     };
-    LeftDegree(fault::perturb((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x)))
+    let degree = fault::perturb((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x));
+    // A point site is seen as itself: its side is an exact orientation
+    // (the rounded cross product of nearly collinear points, or of
+    // coordinates near the subnormal range, can have the wrong sign).
+    if let SiteSeen::Other { site: Site::Point(_), .. } = seen {
+        if !fault::active() {
+            return LeftDegree(match orientation(a, b, q) {
+                Orientation::CounterClockwise => degree.abs().max(f64::MIN_POSITIVE),
+                Orientation::Clockwise => -degree.abs().max(f64::MIN_POSITIVE),
+                Orientation::Collinear => 0.0,
+            });
+        }
+    }
+    LeftDegree(degree)
 }
 
 /// Whether the vertex of `sites` (rounded as `centre`, `radius`) lies in

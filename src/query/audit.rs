@@ -18,7 +18,7 @@ pub(crate) fn audit(diagram: &Diagram, print: bool) -> Vec<String> {
     let mut bad = Vec::new();
     for v in diagram.vertices() {
         let geometry = v.sites.map(|s| diagram.site(s));
-        if geometry.iter().all(Site::is_point) || v.sites.iter().any(|s| s.index() == 0) {
+        if geometry.iter().all(Site::is_point) {
             continue;
         }
         if print {
