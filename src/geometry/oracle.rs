@@ -79,6 +79,11 @@ const PRECISIONS: [u64; 3] = [160, 400, 1200];
 /// without rounding (the exponent range of doubles spans 2,100 bits).
 const EXACT: u64 = 1 << 20;
 
+/// The fraction of the configuration's size beyond which a rounded answer
+/// stands outright: the error of a vertex placed by the solvers (polished
+/// where they are ill-conditioned) is far below it.
+pub(crate) const CLEAR: f64 = 1e-3;
+
 /// Newton steps allowed per precision.
 const MAX_STEPS: usize = 60;
 
@@ -269,7 +274,7 @@ fn decide(
     if !(size.is_finite() && depth.is_finite()) {
         return (Stage::Unrefined, None);
     }
-    if depth.abs() > 1e-3 * size {
+    if depth.abs() > CLEAR * size {
         return (Stage::Filter, Some(sign_position(depth)));
     }
     let Some(system) = System::of(&sites(), centre) else {

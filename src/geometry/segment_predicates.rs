@@ -327,12 +327,19 @@ pub(crate) fn in_strip(centre: Point, radius: f64, (a, b): (Point, Point), sites
     if fault::active() {
         return (0.0..=length2).contains(&t);
     }
-    // Clear answers first (the rounded position is a few ulps of the
-    // configuration's size off where well-conditioned; `certified` checks
-    // the rest).
+    // Clear answers first, without asking the oracle: its own filter
+    // takes an answer beyond `oracle::CLEAR` of the configuration's size
+    // outright.
     let length = length2.sqrt();
     let from_a = t / length;
     let from_b = length - from_a;
+    let clear = oracle::CLEAR * (radius.abs() + centre.distance(a) + length);
+    if from_a > clear && from_b > clear {
+        return true;
+    }
+    if from_a < -clear || from_b < -clear {
+        return false;
+    }
     // beyond the perpendicular at `from`: the segment from there leaves
     // the centre behind, a positive `Entering` depth
     let beyond = |from: Point, to: Point, along: f64| {
