@@ -171,10 +171,12 @@ pub(crate) fn on_circle(sites: &[Site; 3], centre: Point, radius: f64, fourth: &
 /// can be far from the circle (a kink of 1e-10 rad between two lines puts
 /// it in the wrong place altogether), so it is no start for Newton's
 /// method. The same when `f64` found no circle at all (`solved` is
-/// `None`), which for such configurations is rounding too. `None` when the
-/// solve was fine or neither step succeeds.
-pub(crate) fn polish_vertex(sites: &[Site; 3], solved: Option<(Point, f64)>) -> Option<(Point, f64)> {
-    if let Some((centre, radius)) = solved {
+/// `None`), which for such configurations is rounding too, and when the
+/// solver reports its computation `ill_conditioned` (an error that the
+/// residuals do not show). `None` when the solve was fine or neither step
+/// succeeds.
+pub(crate) fn polish_vertex(sites: &[Site; 3], solved: Option<(Point, f64)>, ill_conditioned: bool) -> Option<(Point, f64)> {
+    if let (Some((centre, radius)), false) = (solved, ill_conditioned) {
         // Cheap first: how far each site is from the circle.
         let size = radius.abs() + sites.iter().map(|s| representative(s).distance(centre)).fold(0.0, f64::max);
         let residual = sites.iter().map(|s| (s.distance(centre) - radius).abs()).fold(0.0, f64::max);
@@ -191,11 +193,20 @@ pub(crate) fn polish_vertex(sites: &[Site; 3], solved: Option<(Point, f64)>) -> 
     };
     let (start_centre, start_radius) = rounded(&start)?;
     let size = start_radius + sites.iter().map(|s| representative(s).distance(start_centre)).fold(0.0, f64::max);
+    // Newton's answer only where it truly converged: for a system whose
+    // condition approaches double-double's precision (kinks of 1e-15 rad:
+    // conditions of 1e30) its steps stop shrinking at garbage, and the
+    // double-double solve is the better answer.
     let polished = System::of(sites, start_centre)
         .and_then(|system| system.newton(start.clone(), &dd, size, DOUBLE_DOUBLE_BITS))
+        .filter(|&(_, last_step, _)| last_step <= CONVERGED * size)
         .and_then(|(solution, _, _)| rounded(&solution));
     polished.or(Some((start_centre, start_radius)))
 }
+
+/// The last Newton step, relative to the size, below which a polish has
+/// converged (well below what rounding to `f64` keeps).
+const CONVERGED: f64 = 1e-20;
 
 /// A solver's result is polished when a site is farther than this, times
 /// the configuration's size, from its circle.
@@ -277,7 +288,8 @@ fn decide(
     if depth.abs() > CLEAR * size {
         return (Stage::Filter, Some(sign_position(depth)));
     }
-    let Some(system) = System::of(&sites(), centre) else {
+    let sites = sites();
+    let Some(system) = System::of(&sites, centre) else {
         return (Stage::Unrefined, None);
     };
     if let Some(error) = system.f64_error(centre, radius, size) {
@@ -304,16 +316,22 @@ fn decide(
         }
         Refined::Failed => {}
     }
-    let mut start = start.map(|x| BigFloat::from_f64(x, PRECISIONS[0]));
+    // Each precision starts from the last one's solution, or where there
+    // is none from the solver run at that precision: for a system whose
+    // condition exceeds the last precision (kinks of 1e-15 rad: 1e30) a
+    // start from the rounded vertex is in no basin at all.
+    let mut start: Option<[BigFloat; 3]> = None;
     let mut converged = false;
     for bits in PRECISIONS {
         let lift = |x: f64| BigFloat::from_f64(x, bits);
-        let begin = start.clone().map(|x| x.with_precision(bits));
+        let begin = match start.take() {
+            Some(solution) => solution.map(|x| x.with_precision(bits)),
+            None => segment_solvers::vertex_in(&sites, &lift).unwrap_or_else(|| [centre.x, centre.y, radius].map(lift)),
+        };
         match refine_at(&system, &question, begin, &lift, size, bits) {
             Refined::Decided(answer) => return (Stage::BigFloat, Some(answer)),
-            // the next precision starts from this one's solution
             Refined::Undecided(solution) => {
-                start = solution;
+                start = Some(solution);
                 converged = true;
             }
             Refined::Failed => {}
@@ -614,7 +632,7 @@ impl System {
             let (f, j) = self.linearise(&v, lift)?;
             // Rounding leaves steps of about ‖J⁻¹‖ units in the last place:
             // below that, the iteration has converged.
-            let condition = inverse_norm(&j.clone().map(|row| row.map(|x| x.to_f64())))?;
+            let condition = inverse_norm(&j)?;
             let tolerance = unit * 2f64.powi(24).max(256.0 * condition);
             let step = solve3(&j, &f)?;
             let step_size = step.iter().fold(0.0f64, |m, s| m.max(s.to_f64().abs()));
@@ -631,25 +649,28 @@ impl System {
     }
 }
 
-/// `‖J⁻¹‖∞` of a 3×3 matrix in `f64`; `None` when singular.
-fn inverse_norm(j: &[[f64; 3]; 3]) -> Option<f64> {
+/// `‖J⁻¹‖∞` of a 3×3 matrix, computed in its arithmetic and rounded;
+/// `None` when singular.
+fn inverse_norm<T: Real>(j: &[[T; 3]; 3]) -> Option<f64> {
     let det = determinant(j);
-    if det == 0.0 || !det.is_finite() {
+    let det_f64 = det.to_f64();
+    if det.signum() == 0 || !det_f64.is_finite() {
         return None;
     }
     let mut norm_rows = 0.0f64;
     for row in 0..3 {
         let mut sum = 0.0;
         for col in 0..3 {
-            // the cofactor of (col, row), over det
+            // the cofactor of (col, row), over det; in `T`, since the
+            // Jacobian of a nearly singular system may be singular in f64
             let (r1, r2) = ((col + 1) % 3, (col + 2) % 3);
             let (c1, c2) = ((row + 1) % 3, (row + 2) % 3);
-            let cofactor = j[r1][c1] * j[r2][c2] - j[r1][c2] * j[r2][c1];
-            sum += (cofactor / det).abs();
+            let cofactor = j[r1][c1].mul(&j[r2][c2]).sub(&j[r1][c2].mul(&j[r2][c1]));
+            sum += cofactor.div(&det).to_f64().abs();
         }
         norm_rows = norm_rows.max(sum);
     }
-    Some(norm_rows)
+    norm_rows.is_finite().then_some(norm_rows)
 }
 
 fn determinant<T: Real>(j: &[[T; 3]; 3]) -> T {
@@ -679,6 +700,23 @@ fn solve3<T: Real>(j: &[[T; 3]; 3], f: &[T; 3]) -> Option<[T; 3]> {
 /// solved.
 #[cfg(test)]
 pub(crate) fn audit_depth(sites: &[Site; 3], other: &Site) -> Option<(Point, f64, f64)> {
+    // in the construction's coordinates (an exact power-of-two scaling)
+    let ends = |s: &Site| match *s {
+        Site::Point(p) => [p, p],
+        Site::Segment { a, b } => [a, b],
+    };
+    let all: Vec<Point> = sites.iter().chain(std::iter::once(other)).flat_map(ends).collect();
+    let (max_abs, min_abs) = all.iter().fold((0.0f64, f64::INFINITY), |(max, min), p| {
+        let min = [p.x.abs(), p.y.abs()].into_iter().filter(|&v| v > 0.0).fold(min, f64::min);
+        (max.max(p.x.abs()).max(p.y.abs()), min)
+    });
+    let scale = Scale::for_magnitudes(max_abs, min_abs);
+    let scaled = |s: &Site| match *s {
+        Site::Point(p) => Site::Point(p.scaled(scale.to_internal)),
+        Site::Segment { a, b } => Site::Segment { a: a.scaled(scale.to_internal), b: b.scaled(scale.to_internal) },
+    };
+    let (sites, other) = (&sites.map(|s| scaled(&s)), &scaled(other));
+    let back = |v: f64| v * scale.to_input;
     let lift = |x: f64| BigFloat::from_f64(x, 400);
     let start = segment_solvers::vertex_in(sites, &lift)?;
     let [x, y, r] = start.clone().map(|v| v.to_f64());
@@ -690,8 +728,8 @@ pub(crate) fn audit_depth(sites: &[Site; 3], other: &Site) -> Option<(Point, f64
         Site::Point(p) => Reach::Distance { a: p, b: p },
         Site::Segment { a, b } => Reach::Distance { a, b },
     };
-    let depth = question.value(&solution, &lift).to_f64();
-    let [x, y, r] = solution.map(|v| v.to_f64());
+    let depth = back(question.value(&solution, &lift).to_f64());
+    let [x, y, r] = solution.map(|v| back(v.to_f64()));
     Some((Point::new(x, y), r, depth))
 }
 

@@ -66,29 +66,49 @@ pub(crate) fn vertex(a: &Site, b: &Site, c: &Site) -> Option<(Point, f64)> {
     let result = if sites.iter().all(Site::is_point) {
         ppp(rotate_smallest_first(sites))
     } else {
-        with_segments(sites, &|x| x).map(|(c, r)| (Point::new(c.x, c.y), r))
+        with_segments(sites, &|x| x).map(|(c, r, _)| (Point::new(c.x, c.y), r))
     };
     result.filter(|(centre, r)| centre.is_finite() && r.is_finite() && *r >= 0.0)
 }
 
-/// The same circle as [`vertex`], for three sites of which at least one is a
-/// segment, computed in the arithmetic `T` (`lift` brings a coordinate into
+/// [`vertex`] and the condition of its computation (see [`Solved`]): the
+/// relative error is about `f64::EPSILON` times it. Three points: 1 (the
+/// circumcircle is accurate to a few ulps of its radius).
+pub(crate) fn vertex_and_condition(a: &Site, b: &Site, c: &Site) -> Option<(Point, f64, f64)> {
+    let sites = [*a, *b, *c];
+    let result = if sites.iter().all(Site::is_point) {
+        ppp(rotate_smallest_first(sites)).map(|(c, r)| (c, r, 1.0))
+    } else {
+        with_segments(sites, &|x| x).map(|(c, r, condition)| (Point::new(c.x, c.y), r, condition))
+    };
+    result.filter(|(centre, r, _)| centre.is_finite() && r.is_finite() && *r >= 0.0)
+}
+
+/// The same circle as [`vertex`] computed in the arithmetic `T` (`lift` brings a coordinate into
 /// it exactly) as `[x, y, r]`: every case decided as in `f64` (the same
 /// exact orientations, the same root), only the arithmetic finer. For
 /// ill-conditioned configurations, where `f64` loses the circle (nearly
 /// parallel lines whose unit normals differ in the tenth digit), and
 /// whose `f64` answer is then no start for Newton's method.
 pub(crate) fn vertex_in<T: Real>(sites: &[Site; 3], lift: &impl Fn(f64) -> T) -> Option<[T; 3]> {
-    if sites.iter().all(Site::is_point) {
-        return None;
-    }
-    let (c, r) = with_segments(*sites, lift)?;
+    let (c, r, _) = if sites.iter().all(Site::is_point) {
+        ppp_in(rotate_smallest_first(*sites), lift)?
+    } else {
+        with_segments(*sites, lift)?
+    };
     let finite = c.x.to_f64().is_finite() && c.y.to_f64().is_finite() && r.to_f64().is_finite();
     (finite && r.signum() >= 0).then_some([c.x, c.y, r])
 }
 
+/// A circle in the arithmetic `T` (centre, radius) and the condition of
+/// its computation in `f64`: about how many ulps of the configuration's
+/// size its error is, from the cancellations the solver cannot avoid
+/// (nearly parallel lines, a point nearly on a line, a double root). An
+/// estimate, for deciding when to solve again in a finer arithmetic.
+type Solved<T> = (Vector<T>, T, f64);
+
 /// The dispatch of [`vertex`] when a segment is among the sites.
-fn with_segments<T: Real>(sites: [Site; 3], lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
+fn with_segments<T: Real>(sites: [Site; 3], lift: &impl Fn(f64) -> T) -> Option<Solved<T>> {
     match sites.iter().filter(|s| s.is_point()).count() {
         2 => {
             // The rotation that puts the segment last: (p, q, S).
@@ -224,12 +244,13 @@ impl<T: Real> Vector<T> {
 }
 
 /// The unit normal of the line `a → b` that points to the side of `p`, and
-/// the distance of `p` from the line. `None` when `p` is on the line (exact
+/// the distance of `p` from the line, and the condition of that distance
+/// (its relative error in ulps). `None` when `p` is on the line (exact
 /// test) or `a == b`.
 ///
 /// Precision: the side is exact; the distance is computed from the endpoint
 /// nearer to `p`, a few ulps of that distance.
-fn normal_toward<T: Real>(a: Point, b: Point, p: Point, lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
+fn normal_toward<T: Real>(a: Point, b: Point, p: Point, lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T, f64)> {
     let n = Vector::between(a, b, lift).unit()?.rot_ccw();
     let n = match orientation(a, b, p) {
         Orientation::CounterClockwise => n,
@@ -238,7 +259,9 @@ fn normal_toward<T: Real>(a: Point, b: Point, p: Point, lift: &impl Fn(f64) -> T
     };
     let near = if p.distance_squared(a) <= p.distance_squared(b) { a } else { b };
     let h = n.dot(&Vector::between(near, p, lift)).abs();
-    Some((n, h))
+    // the rounded normal tilts by an ulp: an error of about |p - near| ulps
+    let condition = p.distance(near) / h.to_f64();
+    Some((n, h, condition))
 }
 
 /// Whether the two segments lie on one line (exact).
@@ -265,11 +288,32 @@ fn ppp(sites: [Site; 3]) -> Option<(Point, f64)> {
     circumcircle(a, b, c)
 }
 
+/// [`ppp`] in the arithmetic `T`: the circumcentre relative to the first
+/// point by Cramer's rule, the orientation decided exactly. (In `f64`
+/// [`circumcircle`] is the accurate one; this is for finer arithmetics,
+/// where the differences of the inputs are exact.)
+fn ppp_in<T: Real>(sites: [Site; 3], lift: &impl Fn(f64) -> T) -> Option<Solved<T>> {
+    let [a, b, c] = sites.map(point_of);
+    let (a, b, c) = (a?, b?, c?);
+    if orientation(a, b, c) != Orientation::CounterClockwise {
+        return None;
+    }
+    let (u, v) = (Vector::between(a, b, lift), Vector::between(a, c, lift));
+    let d = lift(2.0).mul(&u.cross(&v));
+    if d.signum() == 0 {
+        return None;
+    }
+    let (u2, v2) = (u.dot(&u), v.dot(&v));
+    let w = Vector { x: v.y.mul(&u2).sub(&u.y.mul(&v2)).div(&d), y: u.x.mul(&v2).sub(&v.x.mul(&u2)).div(&d) };
+    let r = w.norm();
+    Some((Vector::of(a, lift).add(&w), r, 1.0))
+}
+
 // ---------------------------------------------------------------------------
 // Point, point, segment.
 
 /// `(p, q, S)`: chooses the endpoint case or the general one.
-fn pps_dispatch<T: Real>(p: Point, q: Point, s: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
+fn pps_dispatch<T: Real>(p: Point, q: Point, s: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<Solved<T>> {
     let seg = Site::Segment { a: s.0, b: s.1 };
     match (seg.other_endpoint(p), seg.other_endpoint(q)) {
         // S = pq: the perpendiculars at p and q are parallel.
@@ -297,7 +341,7 @@ fn pps_dispatch<T: Real>(p: Point, q: Point, s: (Point, Point), lift: &impl Fn(f
 /// Precision: relative to `shared`; a few ulps of `|λ|`, except that `λ` is
 /// ill-conditioned when `other` is nearly on the line of `S` (the vertex runs
 /// off to infinity).
-fn pps_endpoint<T: Real>(p: Point, q: Point, shared: Point, far: Point, lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
+fn pps_endpoint<T: Real>(p: Point, q: Point, shared: Point, far: Point, lift: &impl Fn(f64) -> T) -> Option<Solved<T>> {
     if orientation(p, q, far) != Orientation::CounterClockwise {
         return None;
     }
@@ -309,7 +353,9 @@ fn pps_endpoint<T: Real>(p: Point, q: Point, shared: Point, far: Point, lift: &i
         return None;
     }
     let lambda = v.dot(&v).div(&denominator);
-    Some((Vector::of(shared, lift).add(&n.scale(&lambda)), lambda.abs()))
+    // n . v cancels when `other` is nearly on the line of S
+    let condition = 4.0 + 2.0 * v.norm().to_f64() / denominator.to_f64().abs();
+    Some((Vector::of(shared, lift).add(&n.scale(&lambda)), lambda.abs(), condition))
 }
 
 /// `(p, q, S)`, neither point an endpoint of `S`: the circle through `p` and
@@ -337,8 +383,8 @@ fn pps_endpoint<T: Real>(p: Point, q: Point, shared: Point, far: Point, lift: &i
 /// (the smaller relative error of the division). A few ulps of the
 /// configuration's extent, worse when `p` or `q` is very close to `L`
 /// relative to `|pq|` (the circle is then nearly determined by one point).
-fn pps<T: Real>(p: Point, q: Point, a: Point, b: Point, lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
-    let (n, hp) = normal_toward(a, b, p, lift)?;
+fn pps<T: Real>(p: Point, q: Point, a: Point, b: Point, lift: &impl Fn(f64) -> T) -> Option<Solved<T>> {
+    let (n, hp, hp_condition) = normal_toward(a, b, p, lift)?;
     // The side of q, exactly: both points must be strictly on p's side.
     if orientation(a, b, q) != orientation(a, b, p) {
         return None;
@@ -365,18 +411,22 @@ fn pps<T: Real>(p: Point, q: Point, a: Point, b: Point, lift: &impl Fn(f64) -> T
     };
     // Centre = foot of p + ξ d + r n = p + ξ d + (r - hp) n.
     let centre = Vector::of(p, lift).add(&d.scale(&xi).add(&n.scale(&r.sub(&hp))));
-    Some((centre, r))
+    // hp and hq are known to their conditions; a point nearly on the line
+    // (small h against |pq|) makes the circle sensitive to them
+    let hq_condition = (hp_condition * hp.to_f64() + v.norm().to_f64()) / hq.to_f64();
+    let condition = 4.0 + hp_condition.max(hq_condition);
+    Some((centre, r, condition))
 }
 
 // ---------------------------------------------------------------------------
 // Point, segment, segment.
 
 /// `(p, S1, S2)`: chooses the endpoint cases or the general one.
-fn pss_dispatch<T: Real>(p: Point, s1: (Point, Point), s2: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
+fn pss_dispatch<T: Real>(p: Point, s1: (Point, Point), s2: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<Solved<T>> {
     let e1 = Site::Segment { a: s1.0, b: s1.1 }.other_endpoint(p);
     let e2 = Site::Segment { a: s2.0, b: s2.1 }.other_endpoint(p);
     match (e1, e2) {
-        (Some(f1), Some(f2)) => pss_common_endpoint(p, f1, f2).then(|| (Vector::of(p, lift), lift(0.0))),
+        (Some(f1), Some(f2)) => pss_common_endpoint(p, f1, f2).then(|| (Vector::of(p, lift), lift(0.0), 1.0)),
         (Some(f1), None) => pss_endpoint(p, f1, true, s2, lift),
         (None, Some(f2)) => pss_endpoint(p, f2, false, s1, lift),
         (None, None) => pss(p, s1, s2, lift),
@@ -435,17 +485,20 @@ fn pss_endpoint<T: Real>(
     incident_first: bool,
     other: (Point, Point),
     lift: &impl Fn(f64) -> T,
-) -> Option<(Vector<T>, T)> {
+) -> Option<Solved<T>> {
     let d = Vector::between(p, far, lift).unit()?;
     let m = if incident_first { d.rot_ccw() } else { d.rot_ccw().neg() };
-    let (n, h) = normal_toward(other.0, other.1, p, lift)?;
+    let (n, h, h_condition) = normal_toward(other.0, other.1, p, lift)?;
     let gap = m.sub(&n);
     let one_minus_c = lift(0.5).mul(&gap.dot(&gap));
     if one_minus_c.signum() == 0 {
         return None;
     }
     let lambda = h.div(&one_minus_c);
-    Some((Vector::of(p, lift).add(&m.scale(&lambda)), lambda))
+    // m - n, a difference of rounded unit normals, is known to a few ulps
+    // absolutely: nearly parallel lines lose its digits
+    let condition = 4.0 + h_condition + 4.0 / gap.norm().to_f64();
+    Some((Vector::of(p, lift).add(&m.scale(&lambda)), lambda, condition))
 }
 
 /// `(p, S1, S2)`, `p` an endpoint of neither: parabola ∩ angle bisector.
@@ -487,12 +540,12 @@ fn pss_endpoint<T: Real>(
 /// normals, so its direction is known only to `ε / |m|`: a kink of 1e-10
 /// rad keeps six digits in `f64` (the oracle then solves again in a finer
 /// arithmetic, `vertex_in`).
-fn pss<T: Real>(p: Point, s1: (Point, Point), s2: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
+fn pss<T: Real>(p: Point, s1: (Point, Point), s2: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<Solved<T>> {
     if collinear_segments(s1, s2) {
         return None;
     }
-    let (n1, h1) = normal_toward(s1.0, s1.1, p, lift)?;
-    let (n2, h2) = normal_toward(s2.0, s2.1, p, lift)?;
+    let (n1, h1, h1_condition) = normal_toward(s1.0, s1.1, p, lift)?;
+    let (n2, h2, h2_condition) = normal_toward(s2.0, s2.1, p, lift)?;
     let m = n1.sub(&n2);
     let mm = m.dot(&m);
     if mm.signum() == 0 {
@@ -521,7 +574,12 @@ fn pss<T: Real>(p: Point, s1: (Point, Point), s2: (Point, Point), lift: &impl Fn
     };
     let w = w0.add(&e.scale(&t));
     let r = w.norm();
-    Some((Vector::of(p, lift).add(&w), r))
+    // m, a difference of rounded unit normals, loses its direction for
+    // nearly parallel lines; a small discriminant (near a double root)
+    // amplifies the error of its terms
+    let disc_condition = if disc.signum() > 0 { g.mul(&g).to_f64() / disc.to_f64() } else { f64::INFINITY };
+    let condition = 4.0 + h1_condition + h2_condition + 4.0 / mm.sqrt().to_f64() + disc_condition;
+    Some((Vector::of(p, lift).add(&w), r, condition))
 }
 
 // ---------------------------------------------------------------------------
@@ -558,7 +616,7 @@ fn pss<T: Real>(p: Point, s1: (Point, Point), s2: (Point, Point), lift: &impl Fn
 /// Precision: relative to `a_1`; each solution costs a 3×3 determinant of
 /// unit-normal entries, a few ulps of the extent divided by the sine of the
 /// smallest angle between the lines that matter.
-fn sss<T: Real>(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
+fn sss<T: Real>(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<Solved<T>> {
     let segs = [s1, s2, s3];
     if collinear_segments(s1, s2) || collinear_segments(s2, s3) || collinear_segments(s3, s1) {
         return None;
@@ -584,7 +642,7 @@ fn sss<T: Real>(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point), lift
     let turns = [turn_of(0, 1), turn_of(1, 2), turn_of(2, 0)];
     const PATTERNS: [[f64; 3]; 4] =
         [[1.0, 1.0, 1.0], [-1.0, 1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 1.0, -1.0]];
-    let mut best: Option<(f64, Vector<T>, T)> = None;
+    let mut best: Option<(f64, Vector<T>, T, f64)> = None;
     for sigma in PATTERNS {
         // Three directions are counter-clockwise in this order when at
         // least two of the three consecutive turns are (none parallel).
@@ -592,19 +650,19 @@ fn sss<T: Real>(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point), lift
         if left_turns < 2 {
             continue;
         }
-        let Some((w, r)) = solve_tangent_system(&n, &c, sigma, lift) else { continue };
+        let Some((w, r, condition)) = solve_tangent_system(&n, &c, sigma, lift) else { continue };
         let centre = Vector::of(o, lift).add(&w);
         let stray = stray_distance(&segs, Point::new(centre.x.to_f64(), centre.y.to_f64()));
-        if best.as_ref().map_or(true, |(b, _, _)| stray < *b) {
-            best = Some((stray, centre, r.abs()));
+        if best.as_ref().map_or(true, |(b, _, _, _)| stray < *b) {
+            best = Some((stray, centre, r.abs(), condition));
         }
     }
-    best.map(|(_, centre, r)| (centre, r))
+    best.map(|(_, centre, r, condition)| (centre, r, condition))
 }
 
 /// Solves `n_i·w - σ_i r = c_i` (i = 0, 1, 2) by Cramer's rule; `None` when
 /// the determinant is 0 or the result is not finite.
-fn solve_tangent_system<T: Real>(n: &[Vector<T>; 3], c: &[T; 3], sigma: [f64; 3], lift: &impl Fn(f64) -> T) -> Option<(Vector<T>, T)> {
+fn solve_tangent_system<T: Real>(n: &[Vector<T>; 3], c: &[T; 3], sigma: [f64; 3], lift: &impl Fn(f64) -> T) -> Option<Solved<T>> {
     let col_s = sigma.map(|s| lift(-s));
     let col_x = [n[0].x.clone(), n[1].x.clone(), n[2].x.clone()];
     let col_y = [n[0].y.clone(), n[1].y.clone(), n[2].y.clone()];
@@ -616,7 +674,10 @@ fn solve_tangent_system<T: Real>(n: &[Vector<T>; 3], c: &[T; 3], sigma: [f64; 3]
     let y = det3(&col_x, c, &col_s).div(&det);
     let r = det3(&col_x, &col_y, c).div(&det);
     let finite = x.to_f64().is_finite() && y.to_f64().is_finite() && r.to_f64().is_finite();
-    finite.then_some((Vector { x, y }, r))
+    // Cramer's rule: the determinant of unit normals is about the product
+    // of the sines of the angles between the lines
+    let condition = 8.0 + 6.0 / det.to_f64().abs();
+    finite.then_some((Vector { x, y }, r, condition))
 }
 
 /// The determinant of the 3×3 matrix with columns `a`, `b`, `c`.

@@ -24,14 +24,24 @@ pub(crate) fn circle_of_points(a: Point, b: Point, c: Point) -> (Point, f64) {
 #[inline]
 pub(crate) fn circle_of_sites(sites: &[Site; 3]) -> (Point, f64) {
     let [ga, gb, gc] = sites;
-    let solved = segment_solvers::vertex(ga, gb, gc);
+    let solved = segment_solvers::vertex_and_condition(ga, gb, gc);
+    let ill_conditioned = solved.map_or(true, |(_, _, condition)| condition > ILL_CONDITIONED);
+    let solved = solved.map(|(c, r, _)| (c, r));
     // An ill-conditioned solve (nearly parallel lines, a circle far
     // larger than its sites), or none where rounding lost the circle, is
     // solved again finer and polished against the sites themselves.
-    let solved = if fault::active() { solved } else { oracle::polish_vertex(sites, solved).or(solved) };
+    let solved = if fault::active() { solved } else { oracle::polish_vertex(sites, solved, ill_conditioned).or(solved) };
     // No circle: keep the topology, place the vertex among its sites.
     solved.unwrap_or_else(|| among_sites(sites))
 }
+
+/// The condition (see `segment_solvers::Solved`) above which a solver's
+/// `f64` circle is solved again in double-double: an error above about
+/// 2e-13 of the configuration's size. Such an error moves a vertex along
+/// directions in which its distances to its sites barely change (a far
+/// vertex of nearly parallel lines slides along them), so the sites'
+/// residuals alone do not show it.
+const ILL_CONDITIONED: f64 = 1000.0;
 
 /// The fallback position of a vertex no solver can place: the centroid of
 /// the points standing for its sites ([`Site::midpoint`]), the radius its
