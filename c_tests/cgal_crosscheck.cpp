@@ -25,8 +25,11 @@
 // letter (the R with shared endpoints and a font's aligned corners) are
 // degenerate; inscribed, inscribed-jitter (n-gons inscribed in a circle of
 // radius 1e-6 .. 1e6 by seed), fan (n equal spokes in random directions)
-// and kinked-chain (joints turning by 1e-8 .. 1e-15 rad by seed) are near-
-// degenerate, compared as generic (several sites on one empty circle by construction).
+// kinked-chain (joints turning by 1e-8 .. 1e-15 rad by seed), ulp-off-line
+// (short segments, each with a point one ulp off its line), ulp-ends (a
+// chain whose joints are open by one ulp) and glyph (the two rings of an
+// "O" flattened into chords at integer font units) are near-degenerate,
+// compared as generic (as degenerate where CGAL finds an exact degeneracy).
 // boost-split (n random segments on the integer grid of side 1e6, every
 // crossing split at the crossing point rounded to the grid, as
 // Boost.Polygon's benchmark data; about 2.4 n pieces) is generic. For faces
@@ -576,6 +579,80 @@ std::vector<Segment> kinked_chain(std::size_t n, std::uint64_t seed, Rng& rng) {
     return out;
 }
 
+bool legal_addition(const std::vector<Segment>& segs, const Segment& s);
+bool legal_point(const std::vector<Segment>& segs, const Point& p);
+bool same_point(const Point& p, const Point& q);
+
+// Short random segments in the cells of a grid (one per cell, scaled by
+// seed_scale(seed)), and near each a point one ulp off its line, either
+// side: on the line's extension beyond an end, or beside the segment at a
+// third of its length (the point's y moved by one ulp from where the line
+// passes; kept when legal: not inside a segment).
+void ulp_off_line(std::size_t n, std::uint64_t seed, Rng& rng, Input& input) {
+    const double scale = seed_scale(seed);
+    const std::size_t side = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+    for (std::size_t k = 0; k < n; ++k) {
+        const double cx = static_cast<double>(k % side) * 4.0, cy = static_cast<double>(k / side) * 4.0;
+        const Point a = {scale * (cx + rng.unit()), scale * (cy + rng.unit())};
+        const Point b = {scale * (cx + 1.5 + rng.unit()), scale * (cy + 1.5 + rng.unit())};
+        input.segments.push_back({a, b});
+    }
+    for (const Segment& s : input.segments) {
+        const double t = rng.unit() < 0.5 ? 1.0 / 3.0 : 1.5;
+        const double x = s.a.x + t * (s.b.x - s.a.x);
+        // where the line passes at x, rounded, then one ulp up or down
+        const double y_line = s.a.y + (x - s.a.x) * (s.b.y - s.a.y) / (s.b.x - s.a.x);
+        const double y = std::nextafter(y_line, rng.unit() < 0.5 ? INFINITY : -INFINITY);
+        const Point p = {x, y};
+        if (legal_point(input.segments, p) && !same_point(p, s.a) && !same_point(p, s.b)) input.points.push_back(p);
+    }
+}
+
+// Chains whose consecutive segments do not meet: each starts one ulp (in x)
+// from where the last ended, turned by a random angle (kept when legal).
+std::vector<Segment> ulp_ends(std::size_t n, std::uint64_t seed, Rng& rng) {
+    const double scale = seed_scale(seed);
+    std::vector<Segment> out;
+    Point at = {0.0, 0.0};
+    double heading = 0.0;
+    for (std::size_t tries = 0; out.size() < n && tries < 20 * n; ++tries) {
+        heading += (rng.unit() - 0.5) * 2.5;
+        const double length = scale * (0.5 + rng.unit());
+        const Point start = {std::nextafter(at.x, rng.unit() < 0.5 ? INFINITY : -INFINITY), at.y};
+        const Segment s = {start, {start.x + length * std::cos(heading), start.y + length * std::sin(heading)}};
+        if (!legal_addition(out, s)) continue;
+        out.push_back(s);
+        at = s.b;
+    }
+    return out;
+}
+
+// Glyph-like outlines: the rings of an "O" (an outer and an inner ellipse,
+// off-centre, a thin stroke on one side), each flattened into n / 2 chords
+// at font-unit precision (corners rounded to integers, as TrueType glyphs
+// are), the whole scaled by a power of two by seed.
+std::vector<Segment> glyph(std::size_t n, std::uint64_t seed, Rng& rng) {
+    const double unit = std::ldexp(1.0, static_cast<int>(seed % 5) * 4 - 8);
+    const std::size_t chords = std::max<std::size_t>(n / 2, 3);
+    std::vector<Segment> out;
+    const double rings[2][4] = {{0.0, 0.0, 600.0, 720.0}, {40.0 + 20.0 * rng.unit(), 0.0, 470.0, 610.0}};
+    for (const auto& ring : rings) {
+        std::vector<Point> corners;
+        for (std::size_t k = 0; k < chords; ++k) {
+            const double angle = 6.283185307179586 * (static_cast<double>(k) + 0.3 * rng.unit()) / static_cast<double>(chords);
+            const Point p = {unit * std::round(ring[0] + ring[2] * std::cos(angle)),
+                             unit * std::round(ring[1] + ring[3] * std::sin(angle))};
+            if (corners.empty() || !same_point(corners.back(), p)) corners.push_back(p);
+        }
+        while (corners.size() > 1 && same_point(corners.front(), corners.back())) corners.pop_back();
+        for (std::size_t k = 0; k < corners.size(); ++k) {
+            const Segment s = {corners[k], corners[(k + 1) % corners.size()]};
+            if (legal_addition(out, s)) out.push_back(s);
+        }
+    }
+    return out;
+}
+
 // n segments from the origin in evenly spaced directions, random lengths.
 std::vector<Segment> star(std::size_t n, Rng& rng) {
     std::vector<Segment> out;
@@ -982,6 +1059,15 @@ bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, I
     } else if (family == "kinked-chain") {
         if (n < 2) return false;
         input.segments = kinked_chain(n, seed, rng);
+    } else if (family == "ulp-off-line") {
+        if (n < 1) return false;
+        ulp_off_line(n, seed, rng, input);
+    } else if (family == "ulp-ends") {
+        if (n < 2) return false;
+        input.segments = ulp_ends(n, seed, rng);
+    } else if (family == "glyph") {
+        if (n < 6) return false;
+        input.segments = glyph(n, seed, rng);
     } else {
         return false;
     }
@@ -1725,11 +1811,11 @@ Verdict compare(const Input& input, const Sites& sites, const OursResult& ours, 
     std::snprintf(line, sizeof line,
                   "family=%s n=%zu segments=%zu sites=%zu degenerate=%s ours_edges=%zu cgal_edges=%zu ours_faces=%zu "
                   "cgal_faces=%zu matched=%zu only_ours=%zu only_cgal=%zu cgal_dimension=%d cocircular_edges=%zu "
-                  "ours_build_ms=%.1f cgal_build_ms=%.1f valid=%s verdict=%s\n",
+                  "zero_length_edges=%zu ours_build_ms=%.1f cgal_build_ms=%.1f valid=%s verdict=%s\n",
                   input.family.c_str(), input.points.size() + input.segments.size(), input.segments.size(),
                   sites.count(), input.degenerate ? "yes" : "no", ours.full.count("EDGES"),
                   cgal.topology.count("EDGES"), ours.full.count("FACES"), cgal.topology.count("FACES"), matched,
-                  only_ours, only_cgal, cgal.dimension, cgal.cocircular_edges, ours.build_ms, cgal.build_ms,
+                  only_ours, only_cgal, cgal.dimension, cgal.cocircular_edges, cgal.degenerate_edges, ours.build_ms, cgal.build_ms,
                   verdict.valid ? "yes" : "no", verdict.ok() ? "AGREE" : "DIFFER");
     verdict.text = line + details.str();
     for (const std::string& problem : ours.problems) verdict.text += "  invalid: " + problem + "\n";
