@@ -16,6 +16,7 @@
 //! questions are asked.
 
 use super::fault;
+use super::double_double::DoubleDouble;
 use super::oracle::{self, Reach};
 use super::parabola::Parabola;
 use super::point::{norm, Point};
@@ -436,11 +437,46 @@ pub(crate) fn middle_margin(edge: FiniteEdge, contact: EdgeContact, segment: (Po
         (at_end(t1, 0.0), at_end(t2, 1.0))
     });
     let margin = match crossings {
+        // Crossings this close are ordered by their difference along the
+        // edge in double-double (below, `crossing_order`): rounded to
+        // f64 coordinates they may be closer than an ulp of them.
+        Some((t1, t2)) if (t2 - t1).abs() < CLOSE_CROSSINGS && !fault::active() => {
+            match crossing_order(&edge, 0.5 * (t1 + t2)) {
+                Some(order) if order > 0.0 => order,
+                Some(order) => -order.abs().max(f64::MIN_POSITIVE),
+                None if 0.0 <= t1 && t1 < t2 && t2 <= 1.0 => edge.excess(0.5 * (t1 + t2)),
+                None => -(t1 - t2).abs().max(f64::MIN_POSITIVE),
+            }
+        }
         Some((t1, t2)) if 0.0 <= t1 && t1 < t2 && t2 <= 1.0 => edge.excess(0.5 * (t1 + t2)),
         Some((t1, t2)) => -(t1 - t2).abs().max(f64::MIN_POSITIVE),
         None => sampled_maximum(&|t| edge.excess(t)),
     };
     MiddleMargin(fault::perturb(margin))
+}
+
+/// Crossings of an edge closer than this (in its parameter) are ordered in
+/// double-double.
+const CLOSE_CROSSINGS: f64 = 1e-6;
+
+/// Which way the two crossings of the new cell's boundary with the edge
+/// are ordered along it, from their circles solved in double-double: the
+/// difference from the crossing nearer the origin to the one nearer the
+/// target, along the edge's tangent at `t` (positive: in order, the middle
+/// stays). Where the two new vertices are a few ulps of their coordinates
+/// apart (joints open by one ulp), only a finer arithmetic tells them
+/// apart. `None` when a circle cannot be solved.
+fn crossing_order(edge: &EdgeUnderSegment, t: f64) -> Option<f64> {
+    let dd = DoubleDouble::from_f64;
+    let near_origin = segment_solvers::vertex_in(&[edge.right, edge.left, edge.segment], &dd)?;
+    let near_target = segment_solvers::vertex_in(&[edge.left, edge.right, edge.segment], &dd)?;
+    let h = 1e-3;
+    let t = t.clamp(h, 1.0 - h);
+    let (p, q) = (edge.arc.point(t - h), edge.arc.point(t + h));
+    let (tx, ty) = (q.x - p.x, q.y - p.y);
+    let along = near_target[0].sub(near_origin[0]).mul(dd(tx)).add(near_target[1].sub(near_origin[1]).mul(dd(ty)));
+    let along = along.to_f64();
+    along.is_finite().then_some(along)
 }
 
 /// An edge seen from a new segment (`EdgeUnderSegment::new`).

@@ -88,10 +88,10 @@ fn builder_of(text: &str) -> Builder {
 #[test]
 fn every_small_fixture_passes_the_audit() {
     const LIMIT: usize = 60;
-    // Known to be wrong (c_tests/cgal.cmake disables them with the
-    // reason), and one whose vertices lie beyond the range of f64 (1e323 away), which
+    // Known to be wrong (c_tests/cgal.cmake disables it with the reason),
+    // and one whose vertices lie beyond the range of f64 (1e323 away), which
     // the audit cannot solve.
-    const KNOWN: &[&str] = &["search_denormal_2seg.txt", "search_denormal_point_off_line.txt", "ulp_ends_4seg.txt"];
+    const KNOWN: &[&str] = &["search_denormal_2seg.txt", "search_denormal_point_off_line.txt"];
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("c_tests/fixtures");
     let mut failures = Vec::new();
     let mut checked = 0;
