@@ -41,17 +41,7 @@ pub(crate) fn audit(diagram: &Diagram, print: bool) -> Vec<String> {
 #[ignore]
 fn audit_file() {
     let path = std::env::var("SEGFILE").expect("SEGFILE names the input to audit");
-    let text = std::fs::read_to_string(path).expect("a readable input");
-    let mut nums = text.split_whitespace().map(|t| t.parse::<f64>().expect("a number"));
-    let mut next = || nums.next().expect("more numbers");
-    let mut builder = Builder::new();
-    for _ in 0..next() as usize {
-        builder.add_point(next(), next()).expect("a point");
-    }
-    for _ in 0..next() as usize {
-        let a = Point::new(next(), next());
-        builder.add_segment(a, Point::new(next(), next())).expect("a segment");
-    }
+    let builder = builder_of(&std::fs::read_to_string(path).expect("a readable input"));
     let diagram = builder.build().expect("a diagram");
     for s in diagram.site_ids() {
         eprintln!("site {s:?}: {:?}", diagram.site(s));
