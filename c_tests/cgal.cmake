@@ -363,6 +363,13 @@ endforeach()
 # had a margin, from crossings rounded to f64, that said "covered".
 # Minimised case:
 segvoronoi_cgal_fixture_test(ulp_ends_4seg)
+# A point one ulp beside a segment, another point across its line: the
+# edge between the two points, both of whose ends the segment's cell takes,
+# was cut twice on the sampled excess (noise at an ulp) although no circle
+# through both points touches the line; now covered whole, exactly
+# (segment_predicates `points_on_opposite_sides`). Minimised from
+# ulp-off-line 16 0:
+segvoronoi_cgal_fixture_test(ulp_point_beside_segment_2seg)
 # KNOWN DIFFERENCE: points one ulp off a segment's line (within its span or
 # on its extension) differ at every size and scale: the diagram has a
 # vertex of two points and the segment where the points lie on opposite

@@ -450,9 +450,25 @@ pub(crate) fn middle_margin(edge: FiniteEdge, contact: EdgeContact, segment: (Po
         }
         Some((t1, t2)) if 0.0 <= t1 && t1 < t2 && t2 <= 1.0 => edge.excess(0.5 * (t1 + t2)),
         Some((t1, t2)) => -(t1 - t2).abs().max(f64::MIN_POSITIVE),
+        // Two points on opposite sides of the segment's line (exact): no
+        // circle through both touches the line, so the new cell's boundary
+        // cannot cross their bisector inside the strip, and the edge, both
+        // of whose ends the cell takes, is covered whole. (The sampled
+        // excess there is noise when a point is an ulp from the segment.)
+        None if !fault::active() && points_on_opposite_sides(&edge) => f64::NEG_INFINITY,
         None => sampled_maximum(&|t| edge.excess(t)),
     };
     MiddleMargin(fault::perturb(margin))
+}
+
+/// Whether the edge's two sites are points strictly on opposite sides of
+/// the line of the new segment (exact orientations).
+fn points_on_opposite_sides(edge: &EdgeUnderSegment) -> bool {
+    let (Site::Point(p), Site::Point(q), Site::Segment { a, b }) = (edge.left, edge.right, edge.segment) else {
+        return false;
+    };
+    let (sp, sq) = (orientation(a, b, p), orientation(a, b, q));
+    sp != Orientation::Collinear && sq != Orientation::Collinear && sp != sq
 }
 
 /// Crossings of an edge closer than this (in its parameter) are ordered in
