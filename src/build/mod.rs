@@ -305,8 +305,7 @@ pub(crate) fn run_beside<A: Send, B>(beside: impl FnOnce() -> A + Send, here: im
 /// The power-of-two scale for `input` and the input in the construction's
 /// coordinates (scaled, with `-0` made `+0`).
 fn to_internal(input: &[Point]) -> (Scale, Vec<Point>) {
-    let (max_abs, min_abs) = segment_input::magnitudes(input.iter());
-    let scale = Scale::for_magnitudes(max_abs, min_abs);
+    let scale = Scale::for_coordinates(input.iter().flat_map(|p| [p.x, p.y]));
     (scale, input.iter().map(|p| p.scaled(scale.to_internal).canonical_zero()).collect())
 }
 

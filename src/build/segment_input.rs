@@ -167,20 +167,9 @@ pub(crate) fn check_segments(points: &[Point], segments: &[[Point; 2]]) -> Resul
 }
 
 /// The power of two that brings the coordinates into the range where the
-/// predicates are exact (`Scale::for_magnitudes`).
+/// predicates are exact (`Scale::for_coordinates`).
 fn scale_for(points: &[Point], segments: &[[Point; 2]]) -> Scale {
-    let (max_abs, min_abs) = magnitudes(points.iter().chain(segments.iter().flatten()));
-    Scale::for_magnitudes(max_abs, min_abs)
-}
-
-/// The largest coordinate magnitude of `points` and the smallest nonzero one
-/// (infinity when there is none).
-pub(crate) fn magnitudes<'a>(points: impl Iterator<Item = &'a Point>) -> (f64, f64) {
-    points.fold((0.0f64, f64::INFINITY), |(max, min), p| {
-        let (x, y) = (p.x.abs(), p.y.abs());
-        let min = [x, y].into_iter().filter(|&v| v > 0.0).fold(min, f64::min);
-        (max.max(x).max(y), min)
-    })
+    Scale::for_coordinates(points.iter().chain(segments.iter().flatten()).flat_map(|p| [p.x, p.y]))
 }
 
 fn input_point(points: &[Point], segments: &[[Point; 2]], src: PointSource) -> Point {

@@ -124,28 +124,15 @@ pub(crate) fn on_circle(sites: &[Site; 3], centre: Point, radius: f64, fourth: &
             Site::Segment { a, b } => a == centre || b == centre,
         };
     }
-    let max_abs = sites
-        .iter()
-        .chain(std::iter::once(fourth))
-        .flat_map(|s| match *s {
-            Site::Point(p) => [p, p],
-            Site::Segment { a, b } => [a, b],
-        })
-        .chain([centre])
-        .fold(radius.abs(), |m, p| m.max(p.x.abs()).max(p.y.abs()));
-    let k = Scale::for_max_abs(max_abs).to_internal;
-    let scaled = |p: Point| Point::new(p.x * k, p.y * k);
-    let scale_site = |s: &Site| match *s {
-        Site::Point(p) => Site::Point(scaled(p)),
-        Site::Segment { a, b } => Site::Segment { a: scaled(a), b: scaled(b) },
-    };
-    let sites = sites.map(|s| scale_site(&s));
-    let (c, r) = (scaled(centre), radius * k);
+    let points = sites.iter().chain(std::iter::once(fourth)).flat_map(Site::ends).chain([centre]);
+    let k = Scale::for_coordinates(points.flat_map(|p| [p.x, p.y]).chain([radius])).to_internal;
+    let sites = sites.map(|s| s.scaled(k));
+    let (c, r) = (centre.scaled(k), radius * k);
     let on = |question: Reach| {
         let depth = question.value(&[c.x, c.y, r], &|x| x);
         reach(|| sites, c, r, question, depth) == Some(CirclePosition::On)
     };
-    match scale_site(fourth) {
+    match fourth.scaled(k) {
         Site::Point(q) => match sites {
             [Site::Point(p0), Site::Point(p1), Site::Point(p2)] => in_circle(p0, p1, p2, q) == CirclePosition::On,
             _ => on(Reach::Distance { a: q, b: q }),
@@ -178,7 +165,7 @@ pub(crate) fn on_circle(sites: &[Site; 3], centre: Point, radius: f64, fourth: &
 pub(crate) fn polish_vertex(sites: &[Site; 3], solved: Option<(Point, f64)>, ill_conditioned: bool) -> Option<(Point, f64)> {
     if let (Some((centre, radius)), false) = (solved, ill_conditioned) {
         // Cheap first: how far each site is from the circle.
-        let size = radius.abs() + sites.iter().map(|s| representative(s).distance(centre)).fold(0.0, f64::max);
+        let size = size_of(sites, centre, radius);
         let residual = sites.iter().map(|s| (s.distance(centre) - radius).abs()).fold(0.0, f64::max);
         if !(residual > POLISH_TOLERANCE * size) {
             return None;
@@ -192,7 +179,7 @@ pub(crate) fn polish_vertex(sites: &[Site; 3], solved: Option<(Point, f64)>, ill
         (x.is_finite() && y.is_finite() && r.is_finite() && r >= 0.0).then_some((Point::new(x, y), r))
     };
     let (start_centre, start_radius) = rounded(&start)?;
-    let size = start_radius + sites.iter().map(|s| representative(s).distance(start_centre)).fold(0.0, f64::max);
+    let size = size_of(sites, start_centre, start_radius);
     // Newton's answer only where it truly converged: for a system whose
     // condition approaches double-double's precision (kinks of 1e-15 rad:
     // conditions of 1e30) its steps stop shrinking at garbage, and the
@@ -216,12 +203,11 @@ const POLISH_TOLERANCE: f64 = 1e-12;
 /// The counter of polished vertices, after the stages'.
 const POLISHED: usize = 6;
 
-/// One point of a site, for sizes: the point, or a segment's first end.
-fn representative(site: &Site) -> Point {
-    match *site {
-        Site::Point(p) => p,
-        Site::Segment { a, .. } => a,
-    }
+/// The size of a vertex's configuration, the scale of its tolerances: the
+/// radius plus the distance from the centre to the farthest site (a
+/// segment by its first end).
+fn size_of(sites: &[Site; 3], centre: Point, radius: f64) -> f64 {
+    radius.abs() + sites.iter().map(|s| s.ends()[0].distance(centre)).fold(0.0, f64::max)
 }
 
 /// Which stage decided a question (see the module documentation).
@@ -701,26 +687,14 @@ fn solve3<T: Real>(j: &[[T; 3]; 3], f: &[T; 3]) -> Option<[T; 3]> {
 #[cfg(test)]
 pub(crate) fn audit_depth(sites: &[Site; 3], other: &Site) -> Option<(Point, f64, f64)> {
     // in the construction's coordinates (an exact power-of-two scaling)
-    let ends = |s: &Site| match *s {
-        Site::Point(p) => [p, p],
-        Site::Segment { a, b } => [a, b],
-    };
-    let all: Vec<Point> = sites.iter().chain(std::iter::once(other)).flat_map(ends).collect();
-    let (max_abs, min_abs) = all.iter().fold((0.0f64, f64::INFINITY), |(max, min), p| {
-        let min = [p.x.abs(), p.y.abs()].into_iter().filter(|&v| v > 0.0).fold(min, f64::min);
-        (max.max(p.x.abs()).max(p.y.abs()), min)
-    });
-    let scale = Scale::for_magnitudes(max_abs, min_abs);
-    let scaled = |s: &Site| match *s {
-        Site::Point(p) => Site::Point(p.scaled(scale.to_internal)),
-        Site::Segment { a, b } => Site::Segment { a: a.scaled(scale.to_internal), b: b.scaled(scale.to_internal) },
-    };
-    let (sites, other) = (&sites.map(|s| scaled(&s)), &scaled(other));
+    let points = sites.iter().chain(std::iter::once(other)).flat_map(Site::ends);
+    let scale = Scale::for_coordinates(points.flat_map(|p| [p.x, p.y]));
+    let (sites, other) = (&sites.map(|s| s.scaled(scale.to_internal)), &other.scaled(scale.to_internal));
     let back = |v: f64| v * scale.to_input;
     let lift = |x: f64| BigFloat::from_f64(x, 400);
     let start = segment_solvers::vertex_in(sites, &lift)?;
     let [x, y, r] = start.clone().map(|v| v.to_f64());
-    let size = r.abs() + sites.iter().map(|s| representative(s).distance(Point::new(x, y))).fold(0.0, f64::max);
+    let size = size_of(sites, Point::new(x, y), r);
     let solution = System::of(sites, Point::new(x, y))
         .and_then(|system| system.newton(start.clone(), &lift, size, 400))
         .map_or(start, |(v, _, _)| v);

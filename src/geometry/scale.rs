@@ -35,9 +35,14 @@ pub(crate) struct Scale {
 impl Scale {
     pub const IDENTITY: Scale = Scale { to_internal: 1.0, to_input: 1.0 };
 
-    /// The scale for inputs whose largest coordinate magnitude is `max_abs`.
-    pub fn for_max_abs(max_abs: f64) -> Scale {
-        Scale::for_magnitudes(max_abs, max_abs)
+    /// The scale for inputs with these coordinates (`for_magnitudes` of
+    /// their largest magnitude and their smallest nonzero one).
+    pub fn for_coordinates(values: impl IntoIterator<Item = f64>) -> Scale {
+        let (max_abs, min_abs) = values.into_iter().fold((0.0f64, f64::INFINITY), |(max, min), v| {
+            let v = v.abs();
+            (max.max(v), if v > 0.0 { min.min(v) } else { min })
+        });
+        Scale::for_magnitudes(max_abs, min_abs)
     }
 
     /// The scale for inputs whose largest coordinate magnitude is
@@ -92,9 +97,9 @@ mod tests {
 
     #[test]
     fn ordinary_inputs_are_not_scaled() {
-        assert!(Scale::for_max_abs(1e9).is_identity());
-        assert!(Scale::for_max_abs(1e-9).is_identity());
-        assert!(Scale::for_max_abs(0.0).is_identity());
+        assert!(Scale::for_coordinates([1e9, -3.0]).is_identity());
+        assert!(Scale::for_coordinates([1e-9]).is_identity());
+        assert!(Scale::for_coordinates([0.0, -0.0]).is_identity());
     }
 
     #[test]
@@ -111,7 +116,7 @@ mod tests {
     #[test]
     fn huge_and_tiny_inputs_are_scaled_by_powers_of_two() {
         for &m in &[1e300, 3e-300, 5e-320, f64::MAX] {
-            let s = Scale::for_max_abs(m);
+            let s = Scale::for_coordinates([m, -m / 2.0]);
             let v = m * s.to_internal;
             assert!((LOWER..4.0).contains(&v), "{m} -> {v}");
             assert_eq!(s.to_internal * s.to_input, 1.0);

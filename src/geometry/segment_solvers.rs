@@ -62,13 +62,7 @@ use super::solvers::circumcircle;
 /// the arguments gives the same answer (bit for bit); swapping two arguments
 /// asks for the other orientation.
 pub(crate) fn vertex(a: &Site, b: &Site, c: &Site) -> Option<(Point, f64)> {
-    let sites = [*a, *b, *c];
-    let result = if sites.iter().all(Site::is_point) {
-        ppp(rotate_smallest_first(sites))
-    } else {
-        with_segments(sites, &|x| x).map(|(c, r, _)| (Point::new(c.x, c.y), r))
-    };
-    result.filter(|(centre, r)| centre.is_finite() && r.is_finite() && *r >= 0.0)
+    vertex_and_condition(a, b, c).map(|(centre, r, _)| (centre, r))
 }
 
 /// [`vertex`] and the condition of its computation (see [`Solved`]): the

@@ -53,6 +53,22 @@ impl Site {
     /// segment's midpoint (what a vertex at infinity sees of it, and where
     /// a vertex no solver can place goes).
     #[inline]
+    /// The two ends of a segment; a point twice.
+    pub(crate) fn ends(&self) -> [Point; 2] {
+        match *self {
+            Site::Point(p) => [p, p],
+            Site::Segment { a, b } => [a, b],
+        }
+    }
+
+    /// The site with its coordinates multiplied by `factor`.
+    pub(crate) fn scaled(&self, factor: f64) -> Site {
+        match *self {
+            Site::Point(p) => Site::Point(p.scaled(factor)),
+            Site::Segment { a, b } => Site::Segment { a: a.scaled(factor), b: b.scaled(factor) },
+        }
+    }
+
     pub(crate) fn midpoint(&self) -> Point {
         match *self {
             Site::Point(p) => p,
