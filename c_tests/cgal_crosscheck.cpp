@@ -87,6 +87,7 @@
 #include <iostream>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -1831,29 +1832,37 @@ Verdict compare(const Input& input, const Sites& sites, const OursResult& ours, 
     return verdict;
 }
 
-// A generic input that CGAL finds exactly degenerate (a Voronoi edge of
-// length zero: EDGES and FACES are then not unique) is compared again as
-// degenerate when the generic comparison differs, as the search does; the
-// near-degenerate families (a 1,024-gon inscribed in a circle) make such
-// inputs by rounding.
-int report(const Input& input, const Sites& sites, const OursResult& ours, const CgalResult& cgal) {
-    const Verdict verdict = compare(input, sites, ours, cgal);
-    std::fputs(verdict.text.c_str(), stdout);
-    if (verdict.ok()) return 0;
-    if (!verdict.valid || input.degenerate || cgal.degenerate_edges == 0) return 1;
+// The degenerate comparison of a generic input that CGAL finds exactly
+// degenerate (a Voronoi edge of length zero: EDGES and FACES are then not
+// unique, only the Voronoi sections are), when the generic comparison
+// `first` differs on a valid diagram. Empty when that does not apply, or
+// when CGAL cannot build the Voronoi sections (the difference stands). The
+// near-degenerate families (a 1,024-gon inscribed in a circle) and the
+// search's generic kinds (an L of two equal perpendicular arms on the
+// integer grid) make such inputs.
+std::optional<Verdict> degenerate_retry(const Input& input, const Sites& sites, const OursResult& ours,
+                                        const CgalResult& cgal, const Verdict& first) {
+    if (first.ok() || !first.valid || input.degenerate || cgal.degenerate_edges == 0) return std::nullopt;
     Input as_degenerate = input;
     as_degenerate.degenerate = true;
     CgalResult again;
     try {
         again = build_cgal(sites, as_degenerate);
-    } catch (const std::exception& error) {
-        std::printf("as degenerate: verdict=ERROR cgal: %s\n", error.what());
-        return 1;
+    } catch (const std::exception&) {
+        return std::nullopt;
     }
-    const Verdict second = compare(as_degenerate, sites, ours, again);
+    return compare(as_degenerate, sites, ours, again);
+}
+
+int report(const Input& input, const Sites& sites, const OursResult& ours, const CgalResult& cgal) {
+    const Verdict verdict = compare(input, sites, ours, cgal);
+    std::fputs(verdict.text.c_str(), stdout);
+    if (verdict.ok()) return 0;
+    const std::optional<Verdict> second = degenerate_retry(input, sites, ours, cgal, verdict);
+    if (!second) return 1;
     std::printf("as degenerate (CGAL has %zu edges of length zero):\n", cgal.degenerate_edges);
-    std::fputs(second.text.c_str(), stdout);
-    return second.ok() ? 0 : 1;
+    std::fputs(second->text.c_str(), stdout);
+    return second->ok() ? 0 : 1;
 }
 
 // ---------------------------------------------------------------------------
@@ -1910,24 +1919,12 @@ RunResult run_one(const Input& input) {
     const Verdict verdict = compare(input, sites, ours, cgal);
     result.outcome = verdict.ok() ? Outcome::Agree : Outcome::Fail;
     result.text = verdict.text;
-    // A generic kind can still make an exactly degenerate input (an L of
-    // two equal perpendicular arms on the integer grid): there EDGES and
-    // FACES are not unique, and only the degenerate comparison holds.
-    if (!verdict.ok() && verdict.valid && !input.degenerate && cgal.degenerate_edges > 0) {
-        Input as_degenerate = input;
-        as_degenerate.degenerate = true;
-        CgalResult again;
-        try {
-            again = build_cgal(sites, as_degenerate);
-        } catch (const std::exception&) {
-            return result;  // no Voronoi sections to compare: stays a failure
-        }
-        const Verdict second = compare(as_degenerate, sites, ours, again);
-        if (second.ok()) {
+    if (const std::optional<Verdict> second = degenerate_retry(input, sites, ours, cgal, verdict)) {
+        if (second->ok()) {
             result.outcome = Outcome::Agree;
             result.degenerate_fallback = true;
         } else {
-            result.text += "as degenerate:\n" + second.text;
+            result.text += "as degenerate:\n" + second->text;
         }
     }
     return result;
