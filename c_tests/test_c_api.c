@@ -11,6 +11,7 @@
 #include "segvoronoi.h"
 
 #include <float.h>
+#include <stdbool.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -93,6 +94,31 @@ static double site_distance(const segvoronoi_site *s, double x, double y) {
     return distance(x, y, px, py);
 }
 
+/* A segment site's endpoints are the point sites at its two ends, and its
+ * input index leads back to it; a point site has neither. */
+static void check_segment_site(const segvoronoi_diagram *diagram, size_t i, const segvoronoi_site *s) {
+    uint32_t ends[2] = {SEGVORONOI_NO_SITE, SEGVORONOI_NO_SITE}, back = SEGVORONOI_NO_SITE;
+    size_t input = SIZE_MAX, k;
+    if (s->kind != SEGVORONOI_SITE_SEGMENT) {
+        CHECK_STATUS(segvoronoi_diagram_segment_endpoints(diagram, i, ends), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+        CHECK_STATUS(segvoronoi_diagram_segment_input_index(diagram, i, &input), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+        CHECK(ends[0] == SEGVORONOI_NO_SITE && input == SIZE_MAX); /* untouched on error */
+        return;
+    }
+    CHECK_STATUS(segvoronoi_diagram_segment_endpoints(diagram, i, ends), SEGVORONOI_STATUS_OK);
+    CHECK(ends[0] < segvoronoi_diagram_point_site_count(diagram) &&
+          ends[1] < segvoronoi_diagram_point_site_count(diagram) && ends[0] != ends[1]);
+    for (k = 0; k < 2; ++k) {
+        segvoronoi_site end = {.struct_size = sizeof(segvoronoi_site)};
+        CHECK_STATUS(segvoronoi_diagram_site(diagram, ends[k], &end), SEGVORONOI_STATUS_OK);
+        CHECK(end.kind == SEGVORONOI_SITE_POINT);
+        CHECK(k == 0 ? (end.x == s->x && end.y == s->y) : (end.x == s->x2 && end.y == s->y2));
+    }
+    CHECK_STATUS(segvoronoi_diagram_segment_input_index(diagram, i, &input), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_diagram_site_of_segment(diagram, input, &back), SEGVORONOI_STATUS_OK);
+    CHECK(back == i);
+}
+
 /* Checks everything the accessors promise about one diagram of points and
  * segments: validate(), Euler's relation E = V + S - 1 (connected cells, one
  * vertex at infinity), point sites before segment sites, vertices
@@ -124,11 +150,13 @@ static void check_diagram(const segvoronoi_diagram *diagram) {
 
     for (i = 0; i < sites; ++i) {
         segvoronoi_site *s = &site_xy[i];
+        s->struct_size = sizeof *s;
         CHECK_STATUS(segvoronoi_diagram_site(diagram, i, s), SEGVORONOI_STATUS_OK);
         /* Points first, then open segments (of positive length). */
         CHECK(s->kind == (i < point_sites ? SEGVORONOI_SITE_POINT : SEGVORONOI_SITE_SEGMENT));
         if (s->kind == SEGVORONOI_SITE_POINT) CHECK(s->x2 == s->x && s->y2 == s->y);
         if (s->kind == SEGVORONOI_SITE_SEGMENT) CHECK(s->x2 != s->x || s->y2 != s->y);
+        check_segment_site(diagram, i, s);
         min_x = fmin(min_x, fmin(s->x, s->x2));
         max_x = fmax(max_x, fmax(s->x, s->x2));
         min_y = fmin(min_y, fmin(s->y, s->y2));
@@ -138,7 +166,7 @@ static void check_diagram(const segvoronoi_diagram *diagram) {
     if (scale == 0.0) scale = 1.0;
 
     for (i = 0; i < vertices; ++i) {
-        segvoronoi_vertex v;
+        segvoronoi_vertex v = {.struct_size = sizeof(segvoronoi_vertex)};
         double tx[3], ty[3], orient, apart;
         CHECK_STATUS(segvoronoi_diagram_vertex(diagram, i, &v), SEGVORONOI_STATUS_OK);
         CHECK(v.sites[0] < sites && v.sites[1] < sites && v.sites[2] < sites);
@@ -165,15 +193,17 @@ static void check_diagram(const segvoronoi_diagram *diagram) {
     }
 
     for (i = 0; i < edges; ++i) {
-        segvoronoi_edge e;
+        segvoronoi_edge e = {.struct_size = sizeof(segvoronoi_edge)};
         CHECK_STATUS(segvoronoi_diagram_edge(diagram, i, &e), SEGVORONOI_STATUS_OK);
         CHECK(e.sites[0] < sites && e.sites[1] < sites && e.sites[0] != e.sites[1]);
+        CHECK(e.struct_size == sizeof e);
+        CHECK(e.is_infinite == (e.ends[0].vertex == SEGVORONOI_NO_VERTEX || e.ends[1].vertex == SEGVORONOI_NO_VERTEX));
         for (k = 0; k < 2; ++k) {
             const segvoronoi_edge_end *end = &e.ends[k];
             if (end->vertex == SEGVORONOI_NO_VERTEX) {
                 CHECK(fabs(hypot(end->x, end->y) - 1.0) < 1e-12);
             } else {
-                segvoronoi_vertex v;
+                segvoronoi_vertex v = {.struct_size = sizeof(segvoronoi_vertex)};
                 CHECK_STATUS(segvoronoi_diagram_vertex(diagram, end->vertex, &v), SEGVORONOI_STATUS_OK);
                 CHECK(v.x == end->x && v.y == end->y);
                 CHECK((v.sites[0] == e.sites[0] || v.sites[1] == e.sites[0] || v.sites[2] == e.sites[0]) &&
@@ -183,26 +213,60 @@ static void check_diagram(const segvoronoi_diagram *diagram) {
     }
 
     for (i = 0; i < sites; ++i) {
-        size_t needed = 0, written = 0;
-        uint32_t *ids;
-        segvoronoi_status st = segvoronoi_diagram_cell_edges(diagram, i, NULL, 0, &needed);
-        CHECK(st == (sites > 1 ? SEGVORONOI_STATUS_BUFFER_TOO_SMALL : SEGVORONOI_STATUS_OK));
+        size_t needed = 0, written = 0, neighbor_count = 0;
+        uint32_t *ids, *neighbors;
+        bool unbounded = false, reaches_infinity = sites == 1;
+        /* (NULL, 0) only counts; a buffer one short is too small. */
+        CHECK_STATUS(segvoronoi_diagram_cell_edges(diagram, i, NULL, 0, &needed), SEGVORONOI_STATUS_OK);
         CHECK(sites == 1 || needed > 0);
+        if (needed > 0) {
+            uint32_t first = SEGVORONOI_NO_SITE;
+            /* A buffer, even of capacity 0, is no count query. */
+            CHECK_STATUS(segvoronoi_diagram_cell_edges(diagram, i, &first, 0, &written),
+                         SEGVORONOI_STATUS_BUFFER_TOO_SMALL);
+            CHECK(written == needed && first == SEGVORONOI_NO_SITE);
+        }
         ids = (uint32_t *)malloc((needed + 1) * sizeof *ids);
-        CHECK(ids != NULL);
-        if (ids == NULL) continue;
+        neighbors = (uint32_t *)malloc((needed + 1) * sizeof *neighbors);
+        CHECK(ids != NULL && neighbors != NULL);
+        if (ids == NULL || neighbors == NULL) {
+            free(ids);
+            free(neighbors);
+            continue;
+        }
         CHECK_STATUS(segvoronoi_diagram_cell_edges(diagram, i, ids, needed + 1, &written), SEGVORONOI_STATUS_OK);
         CHECK(written == needed);
+        /* One neighbour per edge, in the same order: the edge's other site. */
+        CHECK_STATUS(segvoronoi_diagram_cell_neighbors(diagram, i, NULL, 0, &neighbor_count), SEGVORONOI_STATUS_OK);
+        CHECK(neighbor_count == needed);
+        CHECK_STATUS(segvoronoi_diagram_cell_neighbors(diagram, i, neighbors, needed + 1, &neighbor_count),
+                     SEGVORONOI_STATUS_OK);
+        CHECK(neighbor_count == needed);
         for (k = 0; k < written; ++k) {
-            segvoronoi_edge e;
+            segvoronoi_edge e = {.struct_size = sizeof(segvoronoi_edge)};
             CHECK(ids[k] < edges);
             if (ids[k] >= edges) continue;
             CHECK_STATUS(segvoronoi_diagram_edge(diagram, ids[k], &e), SEGVORONOI_STATUS_OK);
             CHECK(e.sites[0] == i || e.sites[1] == i);
+            CHECK(k >= neighbor_count || neighbors[k] == (e.sites[0] == i ? e.sites[1] : e.sites[0]));
+            if (e.is_infinite) reaches_infinity = true;
             cell_sides[ids[k]]++;
         }
+        /* A cell is unbounded exactly when a ray or line bounds it. */
+        CHECK_STATUS(segvoronoi_diagram_cell_is_unbounded(diagram, i, &unbounded), SEGVORONOI_STATUS_OK);
+        CHECK(unbounded == reaches_infinity);
         cell_side_total += written;
         free(ids);
+        free(neighbors);
+    }
+    if (sites > 0) {
+        bool unbounded = false;
+        uint32_t ends[2];
+        size_t n = 0, input = 0;
+        CHECK_STATUS(segvoronoi_diagram_cell_is_unbounded(diagram, sites, &unbounded), SEGVORONOI_STATUS_OUT_OF_RANGE);
+        CHECK_STATUS(segvoronoi_diagram_cell_neighbors(diagram, sites, NULL, 0, &n), SEGVORONOI_STATUS_OUT_OF_RANGE);
+        CHECK_STATUS(segvoronoi_diagram_segment_endpoints(diagram, sites, ends), SEGVORONOI_STATUS_OUT_OF_RANGE);
+        CHECK_STATUS(segvoronoi_diagram_segment_input_index(diagram, sites, &input), SEGVORONOI_STATUS_OUT_OF_RANGE);
     }
     CHECK(cell_side_total == 2 * edges);
     for (i = 0; i < edges; ++i) CHECK(cell_sides[i] == 2);
@@ -235,6 +299,9 @@ static void test_version_and_status_strings(void) {
     snprintf(expected, sizeof expected, "%d.%d.%d", SEGVORONOI_VERSION_MAJOR, SEGVORONOI_VERSION_MINOR,
              SEGVORONOI_VERSION_PATCH);
     CHECK(strcmp(segvoronoi_version(), expected) == 0);
+    CHECK(SEGVORONOI_VERSION_NUMBER ==
+          SEGVORONOI_VERSION_MAJOR * 10000 + SEGVORONOI_VERSION_MINOR * 100 + SEGVORONOI_VERSION_PATCH);
+    CHECK(segvoronoi_version_number() == SEGVORONOI_VERSION_NUMBER);
 
     /* The numbers are part of the ABI. */
     CHECK(SEGVORONOI_STATUS_OK == 0 && SEGVORONOI_STATUS_NULL_ARGUMENT == 1 &&
@@ -258,14 +325,15 @@ static void test_version_and_status_strings(void) {
 
 static void test_free_rules_and_nulls(void) {
     segvoronoi_diagram *diagram = (segvoronoi_diagram *)&diagram; /* must be overwritten */
-    segvoronoi_site site;
-    segvoronoi_vertex vertex;
-    segvoronoi_edge edge;
-    segvoronoi_stats stats;
+    segvoronoi_site site = {.struct_size = sizeof(segvoronoi_site)};
+    segvoronoi_vertex vertex = {.struct_size = sizeof(segvoronoi_vertex)};
+    segvoronoi_edge edge = {.struct_size = sizeof(segvoronoi_edge)};
+    segvoronoi_stats stats = {.struct_size = sizeof(segvoronoi_stats)};
     uint32_t id = 7, ids[4];
     size_t count = 0;
     char *text = (char *)&text;
-    double xy[2] = {1.0, 2.0};
+    double xy[2] = {1.0, 2.0}, bezier[6];
+    bool flag = false;
     segvoronoi_builder *builder = segvoronoi_builder_new();
 
     /* _free(NULL) does nothing. */
@@ -295,6 +363,13 @@ static void test_free_rules_and_nulls(void) {
     CHECK_STATUS(segvoronoi_diagram_stats(NULL, &stats), SEGVORONOI_STATUS_NULL_ARGUMENT);
     CHECK_STATUS(segvoronoi_diagram_topology(NULL, 0, &text, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
     CHECK(text == NULL);
+    CHECK_STATUS(segvoronoi_diagram_segment_endpoints(NULL, 0, ids), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_segment_input_index(NULL, 0, &count), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_cell_neighbors(NULL, 0, ids, 4, &count), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_cell_is_unbounded(NULL, 0, &flag), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_edge_bezier(NULL, 0, bezier), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_extent(NULL, bezier), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_builder_last_error_indices(NULL, NULL, 0, &count), SEGVORONOI_STATUS_NULL_ARGUMENT);
 
     /* NULL output pointers on a live handle. */
     CHECK(builder != NULL);
@@ -314,6 +389,21 @@ static void test_free_rules_and_nulls(void) {
                  SEGVORONOI_STATUS_NULL_ARGUMENT);
     CHECK_STATUS(segvoronoi_diagram_stats(diagram, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
     CHECK_STATUS(segvoronoi_diagram_topology(diagram, 0, NULL, &count), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_segment_endpoints(diagram, 0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_segment_input_index(diagram, 0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_cell_neighbors(diagram, 0, ids, 4, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_cell_neighbors(diagram, 0, NULL, 4, &count), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_cell_is_unbounded(diagram, 0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_edge_bezier(diagram, 0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_extent(diagram, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    /* One point: no edges, and its cell is the whole plane. */
+    CHECK_STATUS(segvoronoi_diagram_edge_bezier(diagram, 0, bezier), SEGVORONOI_STATUS_OUT_OF_RANGE);
+    CHECK_STATUS(segvoronoi_diagram_cell_is_unbounded(diagram, 0, &flag), SEGVORONOI_STATUS_OK);
+    CHECK(flag);
+    CHECK_STATUS(segvoronoi_diagram_extent(diagram, bezier), SEGVORONOI_STATUS_OK);
+    CHECK(bezier[0] == 0.0);
+    CHECK_STATUS(segvoronoi_builder_last_error_indices(builder, NULL, 0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_builder_last_error_indices(builder, NULL, 1, &count), SEGVORONOI_STATUS_NULL_ARGUMENT);
 
     /* A diagram stays valid after its builder is freed. */
     segvoronoi_builder_free(builder);
@@ -374,9 +464,9 @@ static void test_small_and_degenerate_diagrams(void) {
     segvoronoi_diagram *d;
     uint32_t id;
     size_t count = 99;
-    segvoronoi_site site;
-    segvoronoi_edge edge;
-    segvoronoi_stats stats;
+    segvoronoi_site site = {.struct_size = sizeof(segvoronoi_site)};
+    segvoronoi_edge edge = {.struct_size = sizeof(segvoronoi_edge)};
+    segvoronoi_stats stats = {.struct_size = sizeof(segvoronoi_stats)};
     double one[2] = {3.0, 4.0};
     double two[4] = {0.0, 0.0, 2.0, 0.0};
     double collinear[8] = {0.0, 0.0, 3.0, 3.0, 1.0, 1.0, 2.0, 2.0};
@@ -438,7 +528,7 @@ static void test_square_with_centre(void) {
      * centre's cell a square with 4 edges, each corner's cell 3 edges. */
     double xy[10] = {0.0, 0.0, 2.0, 0.0, 2.0, 2.0, 0.0, 2.0, 1.0, 1.0};
     segvoronoi_diagram *d = build_diagram(xy, 5);
-    segvoronoi_stats stats;
+    segvoronoi_stats stats = {.struct_size = sizeof(segvoronoi_stats)};
     uint32_t centre, ids[8];
     size_t count = 0, i;
     char *text = NULL;
@@ -451,18 +541,24 @@ static void test_square_with_centre(void) {
     CHECK(stats.input_points == 5 && stats.sites == 5 && stats.duplicate_points == 0 && stats.vertices == 4 &&
           stats.edges == 8);
 
+    {
+        double extent = 0.0;
+        CHECK_STATUS(segvoronoi_diagram_extent(d, &extent), SEGVORONOI_STATUS_OK);
+        CHECK(fabs(extent - 2.0 * sqrt(2.0)) < 1e-15);
+    }
+
     /* Sites are numbered in order of first appearance. */
     CHECK_STATUS(segvoronoi_diagram_site_of_input(d, 4, &centre), SEGVORONOI_STATUS_OK);
     CHECK(centre == 4);
     for (i = 0; i < 4; ++i) {
-        segvoronoi_vertex v;
+        segvoronoi_vertex v = {.struct_size = sizeof(segvoronoi_vertex)};
         CHECK_STATUS(segvoronoi_diagram_vertex(d, i, &v), SEGVORONOI_STATUS_OK);
         CHECK(fabs(v.clearance - 1.0) < 1e-15);
         CHECK(v.sites[0] == centre || v.sites[1] == centre || v.sites[2] == centre);
     }
     CHECK_STATUS(segvoronoi_diagram_vertex(d, 4, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
     {
-        segvoronoi_vertex v;
+        segvoronoi_vertex v = {.struct_size = sizeof(segvoronoi_vertex)};
         CHECK_STATUS(segvoronoi_diagram_vertex(d, 4, &v), SEGVORONOI_STATUS_OUT_OF_RANGE);
     }
 
@@ -627,6 +723,11 @@ static void test_segment_input_rules(void) {
     CHECK(strstr(segvoronoi_builder_last_error(builder), "segment") != NULL);
     CHECK(names_index(segvoronoi_builder_last_error(builder), 3));
     CHECK(!names_index(segvoronoi_builder_last_error(builder), 2));
+    {
+        size_t index = 0, n = 0;
+        CHECK_STATUS(segvoronoi_builder_last_error_indices(builder, &index, 1, &n), SEGVORONOI_STATUS_OK);
+        CHECK(n == 1 && index == 3);
+    }
     bad[5] = 7.0;
     bad[10] = -INFINITY; /* the third */
     CHECK_STATUS(segvoronoi_builder_add_segments(builder, bad, 3), SEGVORONOI_STATUS_INVALID_COORDINATE);
@@ -646,9 +747,14 @@ static void test_segment_input_rules(void) {
     CHECK_STATUS(segvoronoi_builder_add_segments(builder, good, (size_t)300000001), SEGVORONOI_STATUS_TOO_LARGE);
     CHECK(segvoronoi_builder_segment_count(builder) == 2);
 
-    /* A successful call clears the message; the builder still builds. */
+    /* A successful call clears the message and the indices; the builder still builds. */
     CHECK_STATUS(segvoronoi_builder_add_segment(builder, 4.0, 0.0, 4.0, 1.0), SEGVORONOI_STATUS_OK);
     CHECK(strcmp(segvoronoi_builder_last_error(builder), "") == 0);
+    {
+        size_t n = 99;
+        CHECK_STATUS(segvoronoi_builder_last_error_indices(builder, NULL, 0, &n), SEGVORONOI_STATUS_OK);
+        CHECK(n == 0);
+    }
     CHECK(segvoronoi_builder_segment_count(builder) == 3);
     CHECK_STATUS(segvoronoi_builder_build(builder, &diagram), SEGVORONOI_STATUS_OK);
     CHECK(diagram != NULL);
@@ -684,6 +790,17 @@ static void expect_intersecting(const double *xy, size_t np, const double *seg, 
         fprintf(stderr, "  message '%s' should name %lu and %lu\n", message, (unsigned long)first,
                 (unsigned long)second);
     }
+    {
+        /* The same indices as numbers: (NULL, 0) counts, a short buffer gets the first. */
+        size_t indices[2] = {SIZE_MAX, SIZE_MAX}, n = 0;
+        CHECK_STATUS(segvoronoi_builder_last_error_indices(builder, NULL, 0, &n), SEGVORONOI_STATUS_OK);
+        CHECK(n == 2);
+        CHECK_STATUS(segvoronoi_builder_last_error_indices(builder, indices, 1, &n), SEGVORONOI_STATUS_BUFFER_TOO_SMALL);
+        CHECK(n == 2 && indices[1] == SIZE_MAX);
+        CHECK_STATUS(segvoronoi_builder_last_error_indices(builder, indices, 2, &n), SEGVORONOI_STATUS_OK);
+        CHECK(n == 2);
+        CHECK((indices[0] == first && indices[1] == second) || (indices[0] == second && indices[1] == first));
+    }
     CHECK(segvoronoi_builder_point_count(builder) == np && segvoronoi_builder_segment_count(builder) == ns);
     /* Same again: the builder kept its input. */
     CHECK_STATUS(segvoronoi_builder_build(builder, &diagram), SEGVORONOI_STATUS_INTERSECTING);
@@ -713,8 +830,8 @@ static void test_segment_sites_and_stats(void) {
     const double points[6] = {1.0, 2.0, 3.0, -1.5, 1.0, 2.0};
     const double segs[12] = {0.0, 0.0, 4.0, 0.0, 4.0, 0.0, 0.0, 0.0, 7.0, 7.0, 7.0, 7.0};
     segvoronoi_diagram *d = build_with_segments(points, 3, segs, 3);
-    segvoronoi_stats stats;
-    segvoronoi_site site;
+    segvoronoi_stats stats = {.struct_size = sizeof(segvoronoi_stats)};
+    segvoronoi_site site = {.struct_size = sizeof(segvoronoi_site)};
     uint32_t s0 = 99, s1 = 99, s2 = 99, p = 99;
     char *text = NULL;
     size_t length = 0;
@@ -888,20 +1005,21 @@ static void test_edge_geometry(void) {
     segvoronoi_builder_free(builder);
     if (d == NULL) return;
     for (e = 0; e < segvoronoi_diagram_edge_count(d); ++e) {
-        segvoronoi_edge_shape shape;
-        segvoronoi_edge edge;
+        segvoronoi_edge_shape shape = {.struct_size = sizeof(segvoronoi_edge_shape)};
+        segvoronoi_edge edge = {.struct_size = sizeof(segvoronoi_edge)};
         size_t needed = 0, got = 0, k;
-        double *xy;
+        double *xy, bezier[6] = {0};
         CHECK_STATUS(segvoronoi_diagram_edge_shape(d, e, &shape), SEGVORONOI_STATUS_OK);
         CHECK_STATUS(segvoronoi_diagram_edge(d, e, &edge), SEGVORONOI_STATUS_OK);
-        if (edge.ends[0].vertex == SEGVORONOI_NO_VERTEX || edge.ends[1].vertex == SEGVORONOI_NO_VERTEX) {
+        if (edge.is_infinite) {
             CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, e, 1e-3, NULL, 0, &needed),
                          SEGVORONOI_STATUS_INVALID_ARGUMENT);
+            CHECK_STATUS(segvoronoi_diagram_edge_bezier(d, e, bezier), SEGVORONOI_STATUS_INVALID_ARGUMENT);
             continue;
         }
         CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, e, 0.0, NULL, 0, &needed), SEGVORONOI_STATUS_INVALID_ARGUMENT);
         CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, e, 1e-3, NULL, 1, &needed), SEGVORONOI_STATUS_NULL_ARGUMENT);
-        CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, e, 1e-3, NULL, 0, &needed), SEGVORONOI_STATUS_BUFFER_TOO_SMALL);
+        CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, e, 1e-3, NULL, 0, &needed), SEGVORONOI_STATUS_OK);
         xy = (double *)malloc(2 * (needed + 1) * sizeof *xy);
         CHECK(xy != NULL);
         if (xy == NULL) continue;
@@ -911,6 +1029,17 @@ static void test_edge_geometry(void) {
         CHECK(xy[2 * (got - 1)] == edge.ends[1].x && xy[2 * got - 1] == edge.ends[1].y);
         if (shape.kind == SEGVORONOI_EDGE_PARABOLA) {
             ++parabolas;
+            /* The Bézier runs from end to end, through points equidistant
+             * from the focus and the directrix (the x axis). */
+            CHECK_STATUS(segvoronoi_diagram_edge_bezier(d, e, bezier), SEGVORONOI_STATUS_OK);
+            CHECK(bezier[0] == edge.ends[0].x && bezier[1] == edge.ends[0].y);
+            CHECK(bezier[4] == edge.ends[1].x && bezier[5] == edge.ends[1].y);
+            for (k = 1; k < 4; ++k) {
+                double u = 0.25 * (double)k, a = (1 - u) * (1 - u), b = 2 * u * (1 - u), c = u * u;
+                double bx = a * bezier[0] + b * bezier[2] + c * bezier[4];
+                double by = a * bezier[1] + b * bezier[3] + c * bezier[5];
+                CHECK(fabs(hypot(bx - shape.focus_x, by - shape.focus_y) - fabs(by)) < 1e-9);
+            }
             for (k = 0; k < got; ++k) { /* focus and directrix (the x axis here) equidistant */
                 double to_focus = hypot(xy[2 * k] - shape.focus_x, xy[2 * k + 1] - shape.focus_y);
                 CHECK(fabs(to_focus - fabs(xy[2 * k + 1])) < 1e-9);
@@ -918,20 +1047,81 @@ static void test_edge_geometry(void) {
         } else {
             CHECK(shape.kind == SEGVORONOI_EDGE_LINE);
             CHECK(got == 2);
+            CHECK_STATUS(segvoronoi_diagram_edge_bezier(d, e, bezier), SEGVORONOI_STATUS_INVALID_ARGUMENT);
             ++lines;
         }
         free(xy);
     }
     CHECK(parabolas >= 2 && lines >= 1);
     {
-        segvoronoi_edge_shape shape;
+        segvoronoi_edge_shape shape = {.struct_size = sizeof(segvoronoi_edge_shape)};
         size_t n = 0;
+        double bezier[6];
         CHECK_STATUS(segvoronoi_diagram_edge_shape(NULL, 0, &shape), SEGVORONOI_STATUS_NULL_ARGUMENT);
         CHECK_STATUS(segvoronoi_diagram_edge_shape(d, 0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
         CHECK_STATUS(segvoronoi_diagram_edge_shape(d, 1000, &shape), SEGVORONOI_STATUS_OUT_OF_RANGE);
         CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, 1000, 1e-3, NULL, 0, &n), SEGVORONOI_STATUS_OUT_OF_RANGE);
         CHECK_STATUS(segvoronoi_diagram_edge_polyline(d, 0, 1e-3, NULL, 0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+        CHECK_STATUS(segvoronoi_diagram_edge_bezier(d, 1000, bezier), SEGVORONOI_STATUS_OUT_OF_RANGE);
     }
+    segvoronoi_diagram_free(d);
+}
+
+/* The versioned structs: a struct_size below the first version is refused
+ * with nothing written; a larger one (a caller from a newer header) gets the
+ * fields this library has, with struct_size saying how many bytes those are,
+ * and the bytes beyond untouched. */
+static void test_versioned_structs(void) {
+    const double xy[8] = {0.0, 0.0, 2.0, 0.0, 1.0, 2.0, 1.0, 0.7};
+    segvoronoi_diagram *d = build_diagram(xy, 4);
+    struct {
+        segvoronoi_vertex v;
+        unsigned char later_fields[24];
+    } newer;
+    segvoronoi_vertex v = {.struct_size = sizeof(segvoronoi_vertex)};
+    segvoronoi_site site = {.struct_size = sizeof(segvoronoi_site)};
+    segvoronoi_edge edge = {.struct_size = sizeof(segvoronoi_edge)};
+    segvoronoi_stats stats = {.struct_size = sizeof(segvoronoi_stats)};
+    segvoronoi_edge_shape shape = {.struct_size = sizeof(segvoronoi_edge_shape)};
+    size_t k;
+    CHECK(d != NULL);
+    if (d == NULL) return;
+
+    /* Filled in whole: struct_size stays sizeof. */
+    CHECK_STATUS(segvoronoi_diagram_vertex(d, 0, &v), SEGVORONOI_STATUS_OK);
+    CHECK(v.struct_size == sizeof v && v.clearance > 0.0);
+    CHECK_STATUS(segvoronoi_diagram_site(d, 0, &site), SEGVORONOI_STATUS_OK);
+    CHECK(site.struct_size == sizeof site);
+    CHECK_STATUS(segvoronoi_diagram_edge(d, 0, &edge), SEGVORONOI_STATUS_OK);
+    CHECK(edge.struct_size == sizeof edge);
+    CHECK_STATUS(segvoronoi_diagram_stats(d, &stats), SEGVORONOI_STATUS_OK);
+    CHECK(stats.struct_size == sizeof stats && stats.input_points == 4);
+    CHECK_STATUS(segvoronoi_diagram_edge_shape(d, 0, &shape), SEGVORONOI_STATUS_OK);
+    CHECK(shape.struct_size == sizeof shape && shape.kind == SEGVORONOI_EDGE_LINE);
+
+    /* Too small (0: not set; 8: only struct_size itself): refused, untouched. */
+    memset(&v, 0x5a, sizeof v);
+    v.struct_size = 0;
+    CHECK_STATUS(segvoronoi_diagram_vertex(d, 0, &v), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+    CHECK(v.struct_size == 0 && v.sites[2] == 0x5a5a5a5aU);
+    v.struct_size = sizeof(size_t);
+    CHECK_STATUS(segvoronoi_diagram_vertex(d, 0, &v), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+    site.struct_size = sizeof site - 1;
+    CHECK_STATUS(segvoronoi_diagram_site(d, 0, &site), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+    edge.struct_size = 0;
+    CHECK_STATUS(segvoronoi_diagram_edge(d, 0, &edge), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+    stats.struct_size = 0;
+    CHECK_STATUS(segvoronoi_diagram_stats(d, &stats), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+    shape.struct_size = 0;
+    CHECK_STATUS(segvoronoi_diagram_edge_shape(d, 0, &shape), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+
+    /* A caller whose struct is larger: the library writes what it has. */
+    memset(&newer, 0xa5, sizeof newer);
+    newer.v.struct_size = sizeof newer;
+    CHECK_STATUS(segvoronoi_diagram_vertex(d, 0, &newer.v), SEGVORONOI_STATUS_OK);
+    CHECK(newer.v.struct_size == sizeof(segvoronoi_vertex));
+    CHECK(newer.v.clearance > 0.0 && newer.v.sites[0] < 4);
+    for (k = 0; k < sizeof newer.later_fields; ++k) CHECK(newer.later_fields[k] == 0xa5);
     segvoronoi_diagram_free(d);
 }
 
@@ -951,6 +1141,7 @@ int segvoronoi_run_c_tests(void) {
     test_segment_sites_and_stats();
     test_segment_shapes();
     test_edge_geometry();
+    test_versioned_structs();
     fprintf(stderr, "segvoronoi C API tests: %d checks, %d failed\n", checks, failures);
     return failures;
 }

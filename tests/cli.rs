@@ -58,7 +58,7 @@ fn boost_text(points: &[[f64; 2]]) -> String {
 fn library_topology(points: &[[f64; 2]], voronoi_pairs: bool) -> String {
     let mut b = Builder::new();
     b.add_points(points.iter().copied()).unwrap();
-    b.build().unwrap().topology(TopologyOptions { voronoi_pairs, ..Default::default() })
+    b.build().unwrap().topology(TopologyOptions::default().with_voronoi_pairs(voronoi_pairs))
 }
 
 /// A dozen points with a repeat, a collinear triple and a cocircular square.

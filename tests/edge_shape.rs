@@ -11,7 +11,7 @@ use segvoronoi::{Diagram, EdgeEnd, EdgeId, EdgeShape, Point, Site};
 
 /// How much farther `q` is from one site of the edge than from the other.
 fn imbalance(d: &Diagram, sites: [segvoronoi::SiteId; 2], q: Point) -> f64 {
-    (d.site(sites[0]).distance(q) - d.site(sites[1]).distance(q)).abs()
+    (d.site(sites[0]).unwrap().distance(q) - d.site(sites[1]).unwrap().distance(q)).abs()
 }
 
 fn lerp(a: Point, b: Point, u: f64) -> Point {
@@ -63,7 +63,7 @@ fn check_edges(d: &Diagram, tol: f64, eps: f64) -> usize {
             EdgeShape::Parabola { focus, directrix } => {
                 arcs += 1;
                 // The shape names the edge's own sites.
-                let sites = e.sites.map(|s| d.site(s));
+                let sites = e.sites.map(|s| d.site(s).unwrap());
                 assert!(sites.contains(&Site::Point(focus)), "{e:?}");
                 let seg = sites.iter().find(|s| !s.is_point()).unwrap();
                 assert_eq!(*seg, Site::Segment { a: directrix[0], b: directrix[1] });
@@ -75,6 +75,7 @@ fn check_edges(d: &Diagram, tol: f64, eps: f64) -> usize {
                     assert!(imbalance(d, e.sites, q) <= eps * scale, "{e:?}: B({u}) = {q:?}");
                 }
             }
+            other => panic!("a shape this test does not know: {other:?}"),
         }
     }
     arcs
@@ -152,7 +153,7 @@ fn shared_endpoints_triangle_around_a_point() {
     // two, one with each of its sides.
     let mut separators = 0;
     for e in d.edges() {
-        let [a, b] = e.sites.map(|s| d.site(s));
+        let [a, b] = e.sites.map(|s| d.site(s).unwrap());
         let own_corner = match (a, b) {
             (Site::Point(p), s) | (s, Site::Point(p)) => s.has_endpoint(p),
             _ => false,
@@ -219,7 +220,7 @@ fn point_very_close_to_a_segment() {
     let d = build(&[[2.0, 1e-6], [2.0, 5.0]], &[[[0.0, 0.0], [4.0, 0.0]]]);
     assert!(check_edges(&d, 1e-3, 1e-9) >= 1);
     let near = Site::Point(Point::new(2.0, 1e-6));
-    let arcs: Vec<_> = d.edges().filter(|e| d.edge_bezier(e.id).is_some() && e.sites.map(|s| d.site(s)).contains(&near)).collect();
+    let arcs: Vec<_> = d.edges().filter(|e| d.edge_bezier(e.id).is_some() && e.sites.map(|s| d.site(s)).contains(&Some(near))).collect();
     assert_eq!(arcs.len(), 1, "the sliver has one arc");
     let poly = d.edge_polyline(arcs[0].id, 1e-3).unwrap();
     assert!((45..=55).contains(&poly.len()), "{} points", poly.len());
@@ -340,6 +341,7 @@ fn c_edge_shape_agrees_with_rust() {
                         [a.x, a.y, b.x, b.y]
                     );
                 }
+                other => panic!("a shape this test does not know: {other:?}"),
             }
         }
         assert!(parabolas >= 2);
@@ -366,10 +368,10 @@ fn c_edge_polyline_buffer_convention() {
     let n = expected.len();
     assert!(n > 10);
     unsafe {
-        // Asking for the count.
+        // Asking for the count: (NULL, 0) is OK.
         let mut count = 0usize;
         let st = segvoronoi_diagram_edge_polyline(d, arc.index(), 1e-3, std::ptr::null_mut(), 0, &mut count);
-        assert_eq!((st, count), (segvoronoi_status::BufferTooSmall, n));
+        assert_eq!((st, count), (segvoronoi_status::Ok, n));
         // Exactly enough room.
         let mut xy = vec![f64::NAN; 2 * n];
         count = 0;
@@ -408,6 +410,51 @@ fn c_edge_polyline_buffer_convention() {
         let st = segvoronoi_diagram_edge_polyline(std::ptr::null(), 0, 1e-3, xy.as_mut_ptr(), n, &mut count);
         assert_eq!(st, segvoronoi_status::NullArgument);
         assert_eq!(count, 12345);
+        segvoronoi_diagram_free(d);
+    }
+}
+
+#[test]
+fn c_edge_bezier_and_unbounded_agree_with_rust() {
+    let (points, segments) = ([2.0, 2.0, 5.0, 3.0], [0.0, 0.0, 4.0, 0.0, 1.0, 4.0, 3.0, 5.0]);
+    let rust = build(&[[2.0, 2.0], [5.0, 3.0]], &[[[0.0, 0.0], [4.0, 0.0]], [[1.0, 4.0], [3.0, 5.0]]]);
+    let d = c_diagram(&points, &segments);
+    unsafe {
+        let mut arcs = 0;
+        for e in rust.edges() {
+            let mut xy = [f64::NAN; 6];
+            let st = segvoronoi_diagram_edge_bezier(d, e.id.index(), xy.as_mut_ptr());
+            match rust.edge_bezier(e.id) {
+                Some(curve) => {
+                    arcs += 1;
+                    assert_eq!(st, segvoronoi_status::Ok);
+                    assert_eq!(xy, [curve[0].x, curve[0].y, curve[1].x, curve[1].y, curve[2].x, curve[2].y]);
+                }
+                None => {
+                    assert_eq!(st, segvoronoi_status::InvalidArgument, "{e:?}");
+                    assert!(xy.iter().all(|c| c.is_nan()), "nothing written on error");
+                }
+            }
+            let mut edge = segvoronoi_edge::default();
+            assert_eq!(segvoronoi_diagram_edge(d, e.id.index(), &mut edge), segvoronoi_status::Ok);
+            assert_eq!(edge.is_infinite, e.is_infinite());
+        }
+        assert!(arcs >= 2);
+        let mut xy = [0.0; 6];
+        assert_eq!(segvoronoi_diagram_edge_bezier(d, rust.edge_count(), xy.as_mut_ptr()), segvoronoi_status::OutOfRange);
+        assert_eq!(segvoronoi_diagram_edge_bezier(d, 0, std::ptr::null_mut()), segvoronoi_status::NullArgument);
+        for cell in rust.cells() {
+            let mut unbounded = !cell.is_unbounded();
+            assert_eq!(segvoronoi_diagram_cell_is_unbounded(d, cell.site().index(), &mut unbounded), segvoronoi_status::Ok);
+            assert_eq!(unbounded, cell.is_unbounded());
+            let mut count = 0;
+            let st = segvoronoi_diagram_cell_neighbors(d, cell.site().index(), std::ptr::null_mut(), 0, &mut count);
+            assert_eq!((st, count), (segvoronoi_status::Ok, cell.neighbors().count()));
+            let mut ids = vec![u32::MAX; count];
+            let st = segvoronoi_diagram_cell_neighbors(d, cell.site().index(), ids.as_mut_ptr(), count, &mut count);
+            assert_eq!(st, segvoronoi_status::Ok);
+            assert!(ids.iter().map(|&s| s as usize).eq(cell.neighbors().map(|s| s.index())));
+        }
         segvoronoi_diagram_free(d);
     }
 }

@@ -47,6 +47,13 @@ fn header_versions_match_cargo_toml() {
     }
     let v = unsafe { std::ffi::CStr::from_ptr(segvoronoi::ffi::segvoronoi_version()) };
     assert_eq!(v.to_str().unwrap(), env!("CARGO_PKG_VERSION"));
+    let part = |s: &str| s.parse::<u32>().unwrap();
+    let number = part(env!("CARGO_PKG_VERSION_MAJOR")) * 10000
+        + part(env!("CARGO_PKG_VERSION_MINOR")) * 100
+        + part(env!("CARGO_PKG_VERSION_PATCH"));
+    assert_eq!(segvoronoi::ffi::segvoronoi_version_number(), number);
+    assert_eq!(segvoronoi::ffi::SEGVORONOI_VERSION_NUMBER, number);
+    assert!(header.contains("#define SEGVORONOI_VERSION_NUMBER ("), "header lacks SEGVORONOI_VERSION_NUMBER");
 }
 
 fn compiles(compiler: &str, args: &[&str], source: &str, ext: &str) {

@@ -18,7 +18,7 @@ fn positive_pairs(d: &Diagram) -> Vec<[(u64, u64); 2]> {
         .edges()
         .filter(|e| has_positive_length(d, e))
         .map(|e| {
-            let point = |s| d.site(s).as_point().expect("point sites only");
+            let point = |s| d.site(s).unwrap().as_point().expect("point sites only");
             let mut pair = [key(point(e.sites[0])), key(point(e.sites[1]))];
             pair.sort_unstable();
             pair
@@ -79,7 +79,7 @@ proptest! {
         prop_assert_eq!(d.site_count(), distinct.len());
         prop_assert_eq!(d.stats().duplicate_points, points.len() - distinct.len());
         for (i, p) in points.iter().enumerate() {
-            prop_assert_eq!(d.site(d.site_of_input(i).unwrap()), Site::Point(Point::new(p[0] + 0.0, p[1] + 0.0)));
+            prop_assert_eq!(d.site(d.site_of_input(i).unwrap()), Some(Site::Point(Point::new(p[0] + 0.0, p[1] + 0.0))));
         }
     }
 
@@ -116,8 +116,8 @@ proptest! {
             let mut hint = None;
             for q in queries {
                 let found = d.nearest_site(q, hint).unwrap();
-                let best = d.site_ids().map(|s| d.site(s).distance(q)).fold(f64::INFINITY, f64::min);
-                prop_assert!(d.site(found).distance(q) <= best * (1.0 + 1e-12), "query {:?}", q);
+                let best = d.site_ids().map(|s| d.site(s).unwrap().distance(q)).fold(f64::INFINITY, f64::min);
+                prop_assert!(d.site(found).unwrap().distance(q) <= best * (1.0 + 1e-12), "query {:?}", q);
                 hint = Some(found);
             }
         }

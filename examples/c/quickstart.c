@@ -12,7 +12,7 @@ int main(void) {
         return 1;
     }
     for (size_t i = 0; i < segvoronoi_diagram_vertex_count(d); i++) {
-        segvoronoi_vertex v;
+        segvoronoi_vertex v = {.struct_size = sizeof v}; /* see "Versioned structs" */
         segvoronoi_diagram_vertex(d, i, &v);
         printf("vertex %zu: (%g, %g) r=%g\n", i, v.x, v.y, v.clearance);
     }

@@ -29,7 +29,7 @@ pub const MAX_POINTS: usize = 600_000_000;
 /// use segvoronoi::Builder;
 ///
 /// let mut builder = Builder::new();
-/// builder.add_point(0.0, 0.0)?;
+/// builder.add_point([0.0, 0.0])?;
 /// builder.add_points([[4.0, 0.0], [0.0, 4.0], [4.0, 4.0], [2.0, 1.0]])?;
 /// let diagram = builder.build()?;
 /// assert_eq!(diagram.site_count(), 5);
@@ -58,53 +58,78 @@ impl Builder {
         self.segments.len()
     }
 
-    /// Adds the line segment from `a` to `b` and returns its input index
-    /// (the number of segments added before it).
+    /// Adds one point and returns its input index (the number of points
+    /// added before it). A point is anything that converts into a
+    /// [`Point`]: `[x, y]`, `(x, y)` or a `Point`, as for
+    /// [`Builder::add_points`].
+    ///
+    /// Fails with [`ErrorKind::InvalidCoordinate`] when a coordinate is not
+    /// finite, or [`ErrorKind::TooLarge`] past [`MAX_POINTS`]; the builder is
+    /// then unchanged.
+    pub fn add_point(&mut self, point: impl Into<Point>) -> Result<usize, Error> {
+        self.add_points([point]).map(|added| added.start)
+    }
+
+    /// Adds many points, all or none, and returns their input indices. On
+    /// error (the first non-finite coordinate, named by the index it would
+    /// have had, or [`ErrorKind::TooLarge`]) nothing is added.
+    pub fn add_points<P, I>(&mut self, points: I) -> Result<std::ops::Range<usize>, Error>
+    where
+        P: Into<Point>,
+        I: IntoIterator<Item = P>,
+    {
+        let iter = points.into_iter();
+        self.reserve_points(iter.size_hint().0)?;
+        let endpoints = 2 * self.segments.len();
+        append_checked(&mut self.points, iter.map(Into::into), check_point, |n| check_capacity(n.saturating_add(endpoints)))
+    }
+
+    /// Adds the line segment `[a, b]` and returns its input index (the
+    /// number of segments added before it). Its endpoints are anything that
+    /// converts into a [`Point`], as for [`Builder::add_segments`].
     ///
     /// Segments may share endpoints with any number of others; whether they
     /// cross or overlap is checked by [`Builder::build`]. A zero-length
     /// segment becomes a point. Fails with [`ErrorKind::InvalidCoordinate`]
-    /// when a coordinate is not finite; the builder is then unchanged.
+    /// when a coordinate is not finite, or [`ErrorKind::TooLarge`] when its
+    /// endpoints would pass [`MAX_POINTS`]; the builder is then unchanged.
     ///
     /// ```
     /// use segvoronoi::{Builder, Site};
     /// let mut b = Builder::new();
-    /// b.add_segment([0.0, 0.0], [4.0, 0.0])?;
+    /// b.add_segment([[0.0, 0.0], [4.0, 0.0]])?;
     /// b.add_points([[1.0, 2.0], [3.0, -1.5]])?;
     /// let d = b.build()?;
     /// assert_eq!(d.site_count(), 5); // two points, two endpoints, the open segment
     /// let s = d.site_of_segment(0).unwrap();
-    /// assert!(matches!(d.site(s), Site::Segment { .. }));
+    /// assert!(matches!(d.site(s), Some(Site::Segment { .. })));
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
-    pub fn add_segment(&mut self, a: impl Into<Point>, b: impl Into<Point>) -> Result<usize, Error> {
-        let index = self.segments.len();
-        let segment = [a.into(), b.into()];
-        check_segment(index, segment)?;
-        self.reserve_segments(1)?;
-        self.segments.push(segment);
-        Ok(index)
+    pub fn add_segment<P: Into<Point>>(&mut self, segment: [P; 2]) -> Result<usize, Error> {
+        self.add_segments([segment]).map(|added| added.start)
     }
 
-    /// Adds many segments, all or none: on error (the first non-finite
-    /// coordinate, named by the index the segment would have had) nothing is
-    /// added.
-    pub fn add_segments<P, I>(&mut self, segments: I) -> Result<(), Error>
+    /// Adds many segments, all or none, and returns their input indices. On
+    /// error (the first non-finite coordinate, named by the index the
+    /// segment would have had, or [`ErrorKind::TooLarge`]) nothing is added.
+    pub fn add_segments<P, I>(&mut self, segments: I) -> Result<std::ops::Range<usize>, Error>
     where
         P: Into<Point>,
         I: IntoIterator<Item = [P; 2]>,
     {
-        let start = self.segments.len();
         let iter = segments.into_iter();
         self.reserve_segments(iter.size_hint().0)?;
-        for (k, [a, b]) in iter.enumerate() {
-            let segment = [a.into(), b.into()];
-            if let Err(e) = check_segment(start + k, segment).and_then(|_| self.reserve_segments(1)) {
-                self.segments.truncate(start);
-                return Err(e);
-            }
-            self.segments.push(segment);
-        }
+        let points = self.points.len();
+        let segments = iter.map(|s| s.map(Into::into));
+        append_checked(&mut self.segments, segments, check_segment, |n| check_capacity(points.saturating_add(n.saturating_mul(2))))
+    }
+
+    /// Makes room for `additional` more points, or fails with
+    /// [`ErrorKind::TooLarge`] (the builder unchanged) when the points and
+    /// segment endpoints together would exceed [`MAX_POINTS`].
+    pub fn reserve_points(&mut self, additional: usize) -> Result<(), Error> {
+        check_capacity(self.points.len().saturating_add(additional).saturating_add(2 * self.segments.len()))?;
+        self.points.reserve(additional);
         Ok(())
     }
 
@@ -115,48 +140,6 @@ impl Builder {
         let points = self.points.len().saturating_add(self.segments.len().saturating_add(additional).saturating_mul(2));
         check_capacity(points)?;
         self.segments.reserve(additional);
-        Ok(())
-    }
-
-    /// Adds one point and returns its input index.
-    ///
-    /// Fails with [`ErrorKind::InvalidCoordinate`] when a coordinate is not
-    /// finite; the builder is then unchanged.
-    pub fn add_point(&mut self, x: f64, y: f64) -> Result<usize, Error> {
-        let index = self.points.len();
-        check_point(index, Point::new(x, y))?;
-        check_capacity(index + 1)?;
-        self.points.push(Point::new(x, y));
-        Ok(index)
-    }
-
-    /// Makes room for `additional` more points, or fails with
-    /// [`ErrorKind::TooLarge`] (the builder unchanged) when the total would
-    /// exceed [`MAX_POINTS`].
-    pub fn reserve(&mut self, additional: usize) -> Result<(), Error> {
-        check_capacity(self.points.len().saturating_add(additional).saturating_add(2 * self.segments.len()))?;
-        self.points.reserve(additional);
-        Ok(())
-    }
-
-    /// Adds many points, all or none: on error (the first non-finite
-    /// coordinate, named by the index it would have had) nothing is added.
-    pub fn add_points<P, I>(&mut self, points: I) -> Result<(), Error>
-    where
-        P: Into<Point>,
-        I: IntoIterator<Item = P>,
-    {
-        let start = self.points.len();
-        let iter = points.into_iter();
-        self.reserve(iter.size_hint().0)?;
-        for (k, p) in iter.enumerate() {
-            let p = p.into();
-            if let Err(e) = check_point(start + k, p).and_then(|_| check_capacity(start + k + 1)) {
-                self.points.truncate(start);
-                return Err(e);
-            }
-            self.points.push(p);
-        }
         Ok(())
     }
 
@@ -243,6 +226,27 @@ impl Builder {
             segment.into_iter().collect(),
         )
     }
+}
+
+/// Appends `items` to `list`, all or none, and returns their indices: each
+/// passes `check` (with its index) and `room` (with the list's length after
+/// it), or the list is cut back to where it was and the first error returned.
+fn append_checked<T: Copy>(
+    list: &mut Vec<T>,
+    items: impl Iterator<Item = T>,
+    check: fn(usize, T) -> Result<(), Error>,
+    room: impl Fn(usize) -> Result<(), Error>,
+) -> Result<std::ops::Range<usize>, Error> {
+    let start = list.len();
+    for item in items {
+        let index = list.len();
+        if let Err(e) = check(index, item).and_then(|()| room(index + 1)) {
+            list.truncate(start);
+            return Err(e);
+        }
+        list.push(item);
+    }
+    Ok(start..list.len())
 }
 
 fn check_point(index: usize, p: Point) -> Result<(), Error> {

@@ -6,8 +6,10 @@ use super::ids::{HalfEdgeId, SiteId};
 use super::store::Store;
 use crate::geometry::Site;
 
-/// Counts from one build.
+/// Counts from one build. More counts may come: read the fields, but do not
+/// build or destructure the struct whole outside this crate.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct BuildStats {
     /// Points given to the builder.
     pub input_points: usize,

@@ -3,6 +3,7 @@
 use std::ffi::{c_char, CString};
 
 use super::diagram::segvoronoi_diagram;
+use super::out::{require_buffer, write_buffer};
 use super::plumbing::{guard, guard_or, require_non_null, segvoronoi_status};
 use crate::error::Error;
 use crate::Builder;
@@ -12,20 +13,27 @@ use crate::Builder;
 pub struct segvoronoi_builder {
     inner: Builder,
     last_error: CString,
+    /// The input indices of the last error (`Error::indices`).
+    last_error_indices: Vec<usize>,
 }
 
 impl segvoronoi_builder {
     fn record(&mut self, result: Result<(), Error>) -> segvoronoi_status {
         match result {
             Ok(()) => {
-                self.last_error = CString::default();
+                self.set_error(CString::default(), Vec::new());
                 segvoronoi_status::Ok
             }
             Err(e) => {
-                self.last_error = CString::new(e.message()).unwrap_or_default();
+                self.set_error(CString::new(e.message()).unwrap_or_default(), e.indices().to_vec());
                 segvoronoi_status::from(&e)
             }
         }
+    }
+
+    fn set_error(&mut self, message: CString, indices: Vec<usize>) {
+        self.last_error = message;
+        self.last_error_indices = indices;
     }
 }
 
@@ -36,7 +44,11 @@ impl segvoronoi_builder {
 #[no_mangle]
 pub extern "C" fn segvoronoi_builder_new() -> *mut segvoronoi_builder {
     guard_or(std::ptr::null_mut(), || {
-        Box::into_raw(Box::new(segvoronoi_builder { inner: Builder::new(), last_error: CString::default() }))
+        Box::into_raw(Box::new(segvoronoi_builder {
+            inner: Builder::new(),
+            last_error: CString::default(),
+            last_error_indices: Vec::new(),
+        }))
     })
 }
 
@@ -61,7 +73,7 @@ pub unsafe extern "C" fn segvoronoi_builder_add_point(builder: *mut segvoronoi_b
     guard(|| {
         // SAFETY: non-null, and the caller passes a live builder used by this thread only.
         let b = unsafe { &mut *builder };
-        let r = b.inner.add_point(x, y).map(|_| ());
+        let r = b.inner.add_point([x, y]).map(|_| ());
         b.record(r)
     })
 }
@@ -81,8 +93,8 @@ pub unsafe extern "C" fn segvoronoi_builder_add_points(
 ) -> segvoronoi_status {
     // SAFETY: passed on from the caller (see `add_flat`).
     unsafe {
-        add_flat::<2>(builder, xy, count, Builder::reserve, |b, c| {
-            b.add_points(c.chunks_exact(2).map(|c| [c[0], c[1]]))
+        add_flat::<2>(builder, xy, count, Builder::reserve_points, |b, c| {
+            b.add_points(c.chunks_exact(2).map(|c| [c[0], c[1]])).map(|_| ())
         })
     }
 }
@@ -106,7 +118,7 @@ pub unsafe extern "C" fn segvoronoi_builder_add_segment(
     guard(|| {
         // SAFETY: non-null, and the caller passes a live builder used by this thread only.
         let b = unsafe { &mut *builder };
-        let r = b.inner.add_segment([x1, y1], [x2, y2]).map(|_| ());
+        let r = b.inner.add_segment([[x1, y1], [x2, y2]]).map(|_| ());
         b.record(r)
     })
 }
@@ -126,7 +138,7 @@ pub unsafe extern "C" fn segvoronoi_builder_add_segments(
     // SAFETY: passed on from the caller (see `add_flat`).
     unsafe {
         add_flat::<4>(builder, xy, count, Builder::reserve_segments, |b, c| {
-            b.add_segments(c.chunks_exact(4).map(|c| [[c[0], c[1]], [c[2], c[3]]]))
+            b.add_segments(c.chunks_exact(4).map(|c| [[c[0], c[1]], [c[2], c[3]]])).map(|_| ())
         })
     }
 }
@@ -214,14 +226,14 @@ pub unsafe extern "C" fn segvoronoi_builder_build(
         // `build` takes the builder by shared reference: a panic leaves it as it was.
         match guard_or(None, || Some(b.inner.build())) {
             Some(Ok(d)) => {
-                b.last_error = CString::default();
+                b.set_error(CString::default(), Vec::new());
                 // SAFETY: out is non-null and writable.
                 unsafe { *out = segvoronoi_diagram::into_raw(d) };
                 segvoronoi_status::Ok
             }
             Some(Err(e)) => b.record(Err(e)),
             None => {
-                b.last_error = c"internal error: the build panicked; please report this input".into();
+                b.set_error(c"internal error: the build panicked; please report this input".into(), Vec::new());
                 segvoronoi_status::Internal
             }
         }
@@ -240,4 +252,32 @@ pub unsafe extern "C" fn segvoronoi_builder_last_error(builder: *const segvorono
     }
     // SAFETY: non-null live builder.
     guard_or(c"internal error".as_ptr(), || unsafe { &*builder }.last_error.as_ptr())
+}
+
+/// The input indices that the last failed call on this builder named (the
+/// numbers in its `segvoronoi_builder_last_error` message): for
+/// `SEGVORONOI_STATUS_INVALID_COORDINATE` the point's or segment's index,
+/// for `SEGVORONOI_STATUS_INTERSECTING` both (two segment indices, or the
+/// point's and then the segment's), for `SEGVORONOI_STATUS_INTERNAL` the
+/// segment that failed when one did; none after a successful call. Writes
+/// up to `capacity` of them to `indices` and their number to `*count`;
+/// `indices = NULL, capacity = 0` only counts (`OK`).
+///
+/// Errors: `NULL_ARGUMENT` (`builder` or `count` NULL, or `indices` NULL
+/// with `capacity > 0`), `BUFFER_TOO_SMALL` (then `*count` holds the number
+/// and the first `capacity` are written).
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_last_error_indices(
+    builder: *const segvoronoi_builder,
+    indices: *mut usize,
+    capacity: usize,
+    count: *mut usize,
+) -> segvoronoi_status {
+    require_non_null!(builder);
+    require_buffer!(indices, capacity, count);
+    guard(|| {
+        // SAFETY: non-null live builder.
+        let b = unsafe { &*builder };
+        write_buffer(b.last_error_indices.iter().copied(), indices, capacity, count)
+    })
 }

@@ -2,9 +2,10 @@
 
 use std::ffi::c_char;
 
+use super::out::{require_buffer, versioned, write_buffer, write_out, write_versioned};
 use super::plumbing::{guard, guard_or, into_c_string, require_non_null, segvoronoi_status};
 use crate::query::ZERO_LENGTH;
-use crate::{Diagram, EdgeEnd, EdgeId, Site, SiteId, TopologyOptions, VertexId};
+use crate::{Diagram, EdgeEnd, EdgeId, SiteId, TopologyOptions, VertexId};
 
 /// Marks an edge end at infinity in `segvoronoi_edge_end::vertex`.
 pub const SEGVORONOI_NO_VERTEX: u32 = u32::MAX;
@@ -34,10 +35,14 @@ impl segvoronoi_diagram {
     }
 }
 
-/// A site: an input point.
+/// A site: a point, or an open segment. Versioned: set `struct_size` before
+/// the call (see the header's introduction).
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub struct segvoronoi_site {
+    /// Set by the caller to `sizeof(segvoronoi_site)`; the library writes
+    /// the fields that fit and sets it to the number of bytes written.
+    pub struct_size: usize,
     /// `SEGVORONOI_SITE_POINT` or `SEGVORONOI_SITE_SEGMENT`.
     pub kind: u32,
     /// The point, or the segment's first endpoint, in input coordinates.
@@ -49,6 +54,7 @@ pub struct segvoronoi_site {
     /// The segment's second endpoint (the point again for a point site).
     pub y2: f64,
 }
+versioned!(segvoronoi_site, y2: f64);
 
 /// `segvoronoi_site.kind` of a point site.
 pub const SEGVORONOI_SITE_POINT: u32 = 0;
@@ -56,10 +62,14 @@ pub const SEGVORONOI_SITE_POINT: u32 = 0;
 /// sites of their own).
 pub const SEGVORONOI_SITE_SEGMENT: u32 = 1;
 
-/// A finite Voronoi vertex.
+/// A finite Voronoi vertex. Versioned: set `struct_size` before the call
+/// (see the header's introduction).
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub struct segvoronoi_vertex {
+    /// Set by the caller to `sizeof(segvoronoi_vertex)`; the library writes
+    /// the fields that fit and sets it to the number of bytes written.
+    pub struct_size: usize,
     /// Position, in input coordinates.
     pub x: f64,
     /// Position, in input coordinates.
@@ -69,8 +79,10 @@ pub struct segvoronoi_vertex {
     /// The three sites whose cells meet here, counter-clockwise.
     pub sites: [u32; 3],
 }
+versioned!(segvoronoi_vertex, sites: [u32; 3]);
 
-/// One end of an edge: a finite vertex, or a direction to infinity.
+/// One end of an edge: a finite vertex, or a direction to infinity. Part of
+/// `segvoronoi_edge`; this struct never gains fields.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct segvoronoi_edge_end {
@@ -83,21 +95,33 @@ pub struct segvoronoi_edge_end {
 }
 
 /// A Voronoi edge between two sites: a segment, a ray (one end at infinity)
-/// or a whole line (both ends at infinity; all sites collinear).
+/// or a whole line (both ends at infinity; all sites collinear). Versioned:
+/// set `struct_size` before the call (see the header's introduction).
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub struct segvoronoi_edge {
+    /// Set by the caller to `sizeof(segvoronoi_edge)`; the library writes
+    /// the fields that fit and sets it to the number of bytes written.
+    pub struct_size: usize,
     /// The site on the left and the site on the right, going from
     /// `ends[0]` to `ends[1]`.
     pub sites: [u32; 2],
     /// Start and end.
     pub ends: [segvoronoi_edge_end; 2],
+    /// `true` when the edge is unbounded: a ray or a line, with an end at
+    /// infinity (`vertex == SEGVORONOI_NO_VERTEX`).
+    pub is_infinite: bool,
 }
+versioned!(segvoronoi_edge, is_infinite: bool);
 
-/// Counts from the build.
+/// Counts from the build. Versioned: set `struct_size` before the call (see
+/// the header's introduction); more counts may come.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub struct segvoronoi_stats {
+    /// Set by the caller to `sizeof(segvoronoi_stats)`; the library writes
+    /// the fields that fit and sets it to the number of bytes written.
+    pub struct_size: usize,
     /// Points given to the builder.
     pub input_points: usize,
     /// Segments given to the builder.
@@ -115,6 +139,7 @@ pub struct segvoronoi_stats {
     /// Voronoi edges between two sites.
     pub edges: usize,
 }
+versioned!(segvoronoi_stats, edges: usize);
 
 /// Runs `f` on the diagram behind a checked, non-null pointer.
 pub(super) fn with_diagram(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> segvoronoi_status) -> segvoronoi_status {
@@ -129,13 +154,6 @@ fn count(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> usize) -> usi
     }
     // SAFETY: non-null live diagram.
     guard_or(0, || f(&unsafe { &*d }.inner))
-}
-
-/// Writes `value` through `out` and reports success.
-pub(super) fn write_out<T>(out: *mut T, value: T) -> segvoronoi_status {
-    // SAFETY: callers check `out` for NULL first; it points to writable memory.
-    unsafe { out.write(value) };
-    segvoronoi_status::Ok
 }
 
 /// Frees a diagram. NULL does nothing.
@@ -183,8 +201,10 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_count(diagram: *const segvorono
     count(diagram, Diagram::edge_count)
 }
 
-/// Site `index` (`0 <= index < site_count`).
-/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (then `*out` is untouched).
+/// Site `index` (`0 <= index < site_count`) in `*out`.
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT`
+/// (`out->struct_size` too small); then `*out` is untouched.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_site(
     diagram: *const segvoronoi_diagram,
@@ -193,14 +213,72 @@ pub unsafe extern "C" fn segvoronoi_diagram_site(
 ) -> segvoronoi_status {
     require_non_null!(out);
     with_diagram(diagram, |d| {
-        if index >= d.site_count() {
+        let Some(site) = site_id(d, index).and_then(|s| d.site(s)) else {
             return segvoronoi_status::OutOfRange;
-        }
-        let site = match d.site(SiteId::from_index(index)) {
-            Site::Point(p) => segvoronoi_site { kind: SEGVORONOI_SITE_POINT, x: p.x, y: p.y, x2: p.x, y2: p.y },
-            Site::Segment { a, b } => segvoronoi_site { kind: SEGVORONOI_SITE_SEGMENT, x: a.x, y: a.y, x2: b.x, y2: b.y },
         };
-        write_out(out, site)
+        let kind = if site.is_point() { SEGVORONOI_SITE_POINT } else { SEGVORONOI_SITE_SEGMENT };
+        let [a, b] = site.ends();
+        write_versioned(out, segvoronoi_site { kind, x: a.x, y: a.y, x2: b.x, y2: b.y, ..Default::default() })
+    })
+}
+
+/// The site id of a C index, if in range.
+fn site_id(d: &Diagram, index: usize) -> Option<SiteId> {
+    (index < d.site_count()).then(|| SiteId::from_index(index))
+}
+
+/// The id of segment site `index`: `OUT_OF_RANGE` past the sites,
+/// `INVALID_ARGUMENT` for a point site.
+fn segment_site_id(d: &Diagram, index: usize) -> Result<SiteId, segvoronoi_status> {
+    match site_id(d, index) {
+        None => Err(segvoronoi_status::OutOfRange),
+        Some(_) if index < d.point_site_count() => Err(segvoronoi_status::InvalidArgument),
+        Some(s) => Ok(s),
+    }
+}
+
+/// The two endpoint sites of segment site `site` in `out_endpoints[0]` and
+/// `out_endpoints[1]` (`out_endpoints` points to two `uint32_t`): the point
+/// sites at `(x, y)` and at `(x2, y2)` of the segment's `segvoronoi_site`.
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`site >= site_count`),
+/// `INVALID_ARGUMENT` (a point site); then nothing is written.
+/// Thread safety: reads the diagram only; safe from many threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_segment_endpoints(
+    diagram: *const segvoronoi_diagram,
+    site: usize,
+    out_endpoints: *mut u32,
+) -> segvoronoi_status {
+    require_non_null!(out_endpoints);
+    with_diagram(diagram, |d| {
+        let ends = match segment_site_id(d, site).map(|s| d.segment_endpoints(s)) {
+            Ok(Some(ends)) => ends,
+            Ok(None) => return segvoronoi_status::Internal,
+            Err(status) => return status,
+        };
+        write_out(out_endpoints.cast::<[u32; 2]>(), ends.map(|s| s.index() as u32))
+    })
+}
+
+/// The input index of segment site `site` in `*out_index`: which
+/// `segvoronoi_builder_add_segment(s)` input it is (the first of its
+/// repeats; what the topology text calls `S<j>`).
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`site >= site_count`),
+/// `INVALID_ARGUMENT` (a point site); then nothing is written.
+/// Thread safety: reads the diagram only; safe from many threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_segment_input_index(
+    diagram: *const segvoronoi_diagram,
+    site: usize,
+    out_index: *mut usize,
+) -> segvoronoi_status {
+    require_non_null!(out_index);
+    with_diagram(diagram, |d| match segment_site_id(d, site).map(|s| d.segment_input_index(s)) {
+        Ok(Some(j)) => write_out(out_index, j),
+        Ok(None) => segvoronoi_status::Internal,
+        Err(status) => status,
     })
 }
 
@@ -235,8 +313,10 @@ pub unsafe extern "C" fn segvoronoi_diagram_site_of_segment(
     })
 }
 
-/// Vertex `index` (`0 <= index < vertex_count`).
-/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.
+/// Vertex `index` (`0 <= index < vertex_count`) in `*out`.
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT`
+/// (`out->struct_size` too small); then `*out` is untouched.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_vertex(
     diagram: *const segvoronoi_diagram,
@@ -249,12 +329,15 @@ pub unsafe extern "C" fn segvoronoi_diagram_vertex(
             return segvoronoi_status::OutOfRange;
         };
         let sites = v.sites.map(|s| s.index() as u32);
-        write_out(out, segvoronoi_vertex { x: v.position.x, y: v.position.y, clearance: v.clearance, sites })
+        let (x, y, clearance) = (v.position.x, v.position.y, v.clearance);
+        write_versioned(out, segvoronoi_vertex { x, y, clearance, sites, ..Default::default() })
     })
 }
 
-/// Edge `index` (`0 <= index < edge_count`).
-/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.
+/// Edge `index` (`0 <= index < edge_count`) in `*out`.
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT`
+/// (`out->struct_size` too small); then `*out` is untouched.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_edge(
     diagram: *const segvoronoi_diagram,
@@ -275,14 +358,15 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge(
                 segvoronoi_edge_end { vertex: SEGVORONOI_NO_VERTEX, x: direction.x, y: direction.y }
             }
         };
-        let sites = e.sites.map(|s| s.index() as u32);
-        write_out(out, segvoronoi_edge { sites, ends: [end(e.ends[0]), end(e.ends[1])] })
+        let (sites, ends) = (e.sites.map(|s| s.index() as u32), e.ends.map(end));
+        write_versioned(out, segvoronoi_edge { sites, ends, is_infinite: e.is_infinite(), ..Default::default() })
     })
 }
 
-/// The ids of the edges around the cell of site `site`, counter-clockwise.
-/// Writes up to `capacity` ids to `edges` and the full number to `*count`.
-/// Call with `edges = NULL, capacity = 0` to learn the number.
+/// The ids of the edges around the cell of site `site`, counter-clockwise
+/// (an unbounded cell has two rays or lines among them).
+/// Writes up to `capacity` ids to `edges` and the full number to `*count`;
+/// `edges = NULL, capacity = 0` only counts (`OK`).
 ///
 /// Errors: `NULL_ARGUMENT` (`count` NULL, or `edges` NULL with
 /// `capacity > 0`), `OUT_OF_RANGE`, `BUFFER_TOO_SMALL` (then `*count` holds
@@ -295,28 +379,50 @@ pub unsafe extern "C" fn segvoronoi_diagram_cell_edges(
     capacity: usize,
     count: *mut usize,
 ) -> segvoronoi_status {
-    require_non_null!(count);
-    if capacity > 0 {
-        require_non_null!(edges);
-    }
-    with_diagram(diagram, |d| {
-        let Some(cell) = (site < d.site_count()).then(|| d.cell(SiteId::from_index(site))).flatten() else {
-            return segvoronoi_status::OutOfRange;
-        };
-        let mut n = 0usize;
-        for e in cell.edges() {
-            if n < capacity {
-                // SAFETY: edges holds `capacity` writable u32 (checked non-null above).
-                unsafe { edges.add(n).write(e.index() as u32) };
-            }
-            n += 1;
-        }
-        write_out(count, n);
-        if n > capacity {
-            segvoronoi_status::BufferTooSmall
-        } else {
-            segvoronoi_status::Ok
-        }
+    require_buffer!(edges, capacity, count);
+    with_diagram(diagram, |d| match site_id(d, site).and_then(|s| d.cell(s)) {
+        Some(cell) => write_buffer(cell.edges().map(|e| e.index() as u32), edges, capacity, count),
+        None => segvoronoi_status::OutOfRange,
+    })
+}
+
+/// The sites whose cells border the cell of site `site`, counter-clockwise,
+/// one per edge of `segvoronoi_diagram_cell_edges` and in its order.
+/// Buffer rules as there: up to `capacity` ids to `sites`, the full number
+/// to `*count`; `sites = NULL, capacity = 0` only counts (`OK`).
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `BUFFER_TOO_SMALL`.
+/// Thread safety: reads the diagram only; safe from many threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_cell_neighbors(
+    diagram: *const segvoronoi_diagram,
+    site: usize,
+    sites: *mut u32,
+    capacity: usize,
+    count: *mut usize,
+) -> segvoronoi_status {
+    require_buffer!(sites, capacity, count);
+    with_diagram(diagram, |d| match site_id(d, site).and_then(|s| d.cell(s)) {
+        Some(cell) => write_buffer(cell.neighbors().map(|s| s.index() as u32), sites, capacity, count),
+        None => segvoronoi_status::OutOfRange,
+    })
+}
+
+/// Whether the cell of site `site` is unbounded (reaches infinity: the site
+/// is on the convex hull of the input), in `*out`.
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.
+/// Thread safety: reads the diagram only; safe from many threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_cell_is_unbounded(
+    diagram: *const segvoronoi_diagram,
+    site: usize,
+    out: *mut bool,
+) -> segvoronoi_status {
+    require_non_null!(out);
+    with_diagram(diagram, |d| match site_id(d, site).and_then(|s| d.cell(s)) {
+        Some(cell) => write_out(out, cell.is_unbounded()),
+        None => segvoronoi_status::OutOfRange,
     })
 }
 
@@ -344,8 +450,10 @@ pub unsafe extern "C" fn segvoronoi_diagram_nearest_site(
         }
         let hint = match hint {
             SEGVORONOI_NO_SITE => None,
-            h if (h as usize) < d.site_count() => Some(SiteId::from_index(h as usize)),
-            _ => return segvoronoi_status::OutOfRange,
+            h => match site_id(d, h as usize) {
+                Some(s) => Some(s),
+                None => return segvoronoi_status::OutOfRange,
+            },
         };
         match d.nearest_site(p, hint) {
             Some(s) => write_out(out_site, s.index() as u32),
@@ -354,7 +462,10 @@ pub unsafe extern "C" fn segvoronoi_diagram_nearest_site(
     })
 }
 
-/// Counts from the build. Errors: `NULL_ARGUMENT`.
+/// Counts from the build in `*out`.
+///
+/// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (`out->struct_size` too
+/// small); then `*out` is untouched.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_stats(
     diagram: *const segvoronoi_diagram,
@@ -363,9 +474,10 @@ pub unsafe extern "C" fn segvoronoi_diagram_stats(
     require_non_null!(out);
     with_diagram(diagram, |d| {
         let s = d.stats();
-        write_out(
+        write_versioned(
             out,
             segvoronoi_stats {
+                struct_size: 0,
                 input_points: s.input_points,
                 input_segments: s.input_segments,
                 sites: s.sites,
@@ -377,6 +489,18 @@ pub unsafe extern "C" fn segvoronoi_diagram_stats(
             },
         )
     })
+}
+
+/// The diagonal of the input's bounding box, in input units, in `*out`: the
+/// scale of `SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE` (0 for fewer than
+/// two distinct points).
+///
+/// Errors: `NULL_ARGUMENT`.
+/// Thread safety: reads the diagram only; safe from many threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_extent(diagram: *const segvoronoi_diagram, out: *mut f64) -> segvoronoi_status {
+    require_non_null!(out);
+    with_diagram(diagram, |d| write_out(out, d.extent()))
 }
 
 /// The canonical topology text (`EDGES`, `FACES`, and with

@@ -8,6 +8,9 @@
 //!   and are written only on success;
 //! - every pointer argument is checked for NULL
 //!   (`SEGVORONOI_STATUS_NULL_ARGUMENT`);
+//! - every struct the library fills in is versioned by a leading
+//!   `struct_size` that the caller sets, and a list query called with
+//!   `(NULL, 0)` returns `OK` with the count (both in `out.rs`);
 //! - memory the library hands out is freed by the library's own `_free`
 //!   function, and `_free(NULL)` does nothing;
 //! - no panic crosses the boundary: a panic becomes `SEGVORONOI_STATUS_INTERNAL`;
@@ -22,6 +25,7 @@
 
 mod builder;
 mod diagram;
+mod out;
 mod plumbing;
 mod shape;
 
@@ -29,6 +33,6 @@ pub use builder::*;
 pub use diagram::*;
 pub use shape::*;
 pub use plumbing::{
-    segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version, SEGVORONOI_VERSION_MAJOR,
-    SEGVORONOI_VERSION_MINOR, SEGVORONOI_VERSION_PATCH,
+    segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version, segvoronoi_version_number,
+    SEGVORONOI_VERSION_MAJOR, SEGVORONOI_VERSION_MINOR, SEGVORONOI_VERSION_NUMBER, SEGVORONOI_VERSION_PATCH,
 };

@@ -118,6 +118,17 @@ pub extern "C" fn segvoronoi_version() -> *const c_char {
     V.as_ptr() as *const c_char
 }
 
+/// The library version as one number, `MAJOR * 10000 + MINOR * 100 +
+/// PATCH` (0.1.0 is 100), the same as `SEGVORONOI_VERSION_NUMBER` in a
+/// matching header: compare the two to find a library older than the
+/// header.
+///
+/// Thread safety: safe from any thread.
+#[no_mangle]
+pub extern "C" fn segvoronoi_version_number() -> u32 {
+    SEGVORONOI_VERSION_NUMBER
+}
+
 /// Frees a string returned by segvoronoi (for example by
 /// `segvoronoi_diagram_topology`). NULL does nothing.
 ///
@@ -147,3 +158,7 @@ pub const SEGVORONOI_VERSION_MAJOR: u32 = 0;
 pub const SEGVORONOI_VERSION_MINOR: u32 = 1;
 /// Patch version of the library this header belongs to.
 pub const SEGVORONOI_VERSION_PATCH: u32 = 0;
+/// The version of the library this header belongs to as one number,
+/// `MAJOR * 10000 + MINOR * 100 + PATCH` (see `segvoronoi_version_number`).
+pub const SEGVORONOI_VERSION_NUMBER: u32 =
+    SEGVORONOI_VERSION_MAJOR * 10000 + SEGVORONOI_VERSION_MINOR * 100 + SEGVORONOI_VERSION_PATCH;

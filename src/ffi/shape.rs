@@ -1,8 +1,9 @@
-//! Edge geometry in C: the shape of an edge (straight or parabolic) and a
-//! polyline along it. Delegates to `Diagram::edge_shape` and
-//! `Diagram::edge_polyline`.
+//! Edge geometry in C: the shape of an edge (straight or parabolic), a
+//! polyline along it, and the Bézier curve of an arc. Delegates to
+//! `Diagram::edge_shape`, `Diagram::edge_polyline` and `Diagram::edge_bezier`.
 
-use super::diagram::{segvoronoi_diagram, with_diagram, write_out};
+use super::diagram::{segvoronoi_diagram, with_diagram};
+use super::out::{require_buffer, versioned, write_buffer, write_out, write_versioned};
 use super::plumbing::{require_non_null, segvoronoi_status};
 use crate::{Diagram, EdgeId, EdgeShape};
 
@@ -15,9 +16,15 @@ pub const SEGVORONOI_EDGE_LINE: u32 = 0;
 pub const SEGVORONOI_EDGE_PARABOLA: u32 = 1;
 
 /// The shape of an edge. For `SEGVORONOI_EDGE_LINE` all coordinates are 0.
+/// Versioned: set `struct_size` before the call (see the header's
+/// introduction); more shapes may come, so treat an unknown `kind` as
+/// "neither".
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub struct segvoronoi_edge_shape {
+    /// Set by the caller to `sizeof(segvoronoi_edge_shape)`; the library
+    /// writes the fields that fit and sets it to the number of bytes written.
+    pub struct_size: usize,
     /// `SEGVORONOI_EDGE_LINE` or `SEGVORONOI_EDGE_PARABOLA`.
     pub kind: u32,
     /// The focus (the point site), in input coordinates.
@@ -33,12 +40,14 @@ pub struct segvoronoi_edge_shape {
     /// Second point of the directrix (the segment site's second endpoint).
     pub directrix_y2: f64,
 }
+versioned!(segvoronoi_edge_shape, directrix_y2: f64);
 
 /// The shape of edge `edge_index` (`0 <= edge_index < edge_count`) in
 /// `*out`: straight, or a parabolic arc with its focus and directrix.
 ///
 /// Ownership: `*out` is caller-owned memory, written only on success.
-/// Errors: `NULL_ARGUMENT` (`diagram` or `out`), `OUT_OF_RANGE`.
+/// Errors: `NULL_ARGUMENT` (`diagram` or `out`), `OUT_OF_RANGE`,
+/// `INVALID_ARGUMENT` (`out->struct_size` too small).
 /// Thread safety: reads the diagram only; safe from many threads at once.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_edge_shape(
@@ -52,7 +61,6 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_shape(
             return segvoronoi_status::OutOfRange;
         };
         let shape = match shape {
-            EdgeShape::Line => segvoronoi_edge_shape { kind: SEGVORONOI_EDGE_LINE, ..Default::default() },
             EdgeShape::Parabola { focus, directrix: [a, b] } => segvoronoi_edge_shape {
                 kind: SEGVORONOI_EDGE_PARABOLA,
                 focus_x: focus.x,
@@ -61,9 +69,11 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_shape(
                 directrix_y1: a.y,
                 directrix_x2: b.x,
                 directrix_y2: b.y,
+                ..Default::default()
             },
+            EdgeShape::Line => segvoronoi_edge_shape { kind: SEGVORONOI_EDGE_LINE, ..Default::default() },
         };
-        write_out(out, shape)
+        write_versioned(out, shape)
     })
 }
 
@@ -73,8 +83,8 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_shape(
 /// the curvature allows for a parabolic arc, never more than 1,000,000 (the
 /// tolerance is then not met). Writes up to `capacity_points` points to `xy`
 /// as `x0, y0, x1, y1, ...` (`2 * capacity_points` doubles) and the full
-/// number of points to `*count`. Call with `xy = NULL, capacity_points = 0`
-/// to learn the number.
+/// number of points to `*count`; `xy = NULL, capacity_points = 0` only
+/// counts (`OK`).
 ///
 /// Ownership: `xy` and `*count` are caller-owned memory.
 /// Errors: `NULL_ARGUMENT` (`diagram` or `count` NULL, or `xy` NULL with
@@ -93,29 +103,45 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_polyline(
     capacity_points: usize,
     count: *mut usize,
 ) -> segvoronoi_status {
-    require_non_null!(count);
-    if capacity_points > 0 {
-        require_non_null!(xy);
-    }
+    require_buffer!(xy, capacity_points, count);
     with_diagram(diagram, |d| {
         if tolerance.is_nan() || tolerance <= 0.0 {
             return segvoronoi_status::InvalidArgument;
         }
         let Some(edge) = edge_id(d, edge_index) else { return segvoronoi_status::OutOfRange };
         let Some(points) = d.edge_polyline(edge, tolerance) else { return segvoronoi_status::InvalidArgument };
-        for (k, p) in points.iter().take(capacity_points).enumerate() {
-            // SAFETY: xy holds 2 * capacity_points writable doubles (checked
-            // non-null above when capacity_points > 0), and k < capacity_points.
-            unsafe {
-                xy.add(2 * k).write(p.x);
-                xy.add(2 * k + 1).write(p.y);
-            }
-        }
-        write_out(count, points.len());
-        if points.len() > capacity_points {
-            segvoronoi_status::BufferTooSmall
-        } else {
-            segvoronoi_status::Ok
+        // xy holds 2 * capacity_points doubles: capacity_points pairs, as
+        // aligned as one double.
+        write_buffer(points.into_iter().map(<[f64; 2]>::from), xy.cast::<[f64; 2]>(), capacity_points, count)
+    })
+}
+
+/// The quadratic Bézier curve of the finite parabolic edge `edge_index`:
+/// `xy = {x0, y0, x1, y1, x2, y2}` (six doubles) gets its start (the position
+/// of `ends[0]`), its control point (where the parabola's tangents at the two
+/// ends meet) and its end (the position of `ends[1]`), so that
+/// `(1-u)² p0 + 2u(1-u) p1 + u² p2` for `u` in `[0, 1]` runs along the arc
+/// (SVG's `M p0 Q p1 p2`). Precision: a few ulps of the input's magnitude;
+/// the ends are the vertex positions exactly.
+///
+/// Ownership: `xy` is caller-owned memory, written only on success.
+/// Errors: `NULL_ARGUMENT` (`diagram` or `xy`), `OUT_OF_RANGE`
+/// (`edge_index`), `INVALID_ARGUMENT` (a straight edge, see
+/// `segvoronoi_diagram_edge_shape`, or a ray or line; also an arc whose
+/// control point is beyond the range of `double`).
+/// Thread safety: reads the diagram only; safe from many threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_edge_bezier(
+    diagram: *const segvoronoi_diagram,
+    edge_index: usize,
+    xy: *mut f64,
+) -> segvoronoi_status {
+    require_non_null!(xy);
+    with_diagram(diagram, |d| {
+        let Some(edge) = edge_id(d, edge_index) else { return segvoronoi_status::OutOfRange };
+        match d.edge_bezier(edge) {
+            Some(curve) => write_out(xy.cast::<[[f64; 2]; 3]>(), curve.map(<[f64; 2]>::from)),
+            None => segvoronoi_status::InvalidArgument,
         }
     })
 }

@@ -18,8 +18,10 @@
 use super::point::{norm, Point};
 
 /// A site as geometry: a point, or an open segment whose endpoints are
-/// separate point sites.
+/// separate point sites. More kinds may come (circular arcs), so a `match`
+/// outside this crate needs a wildcard arm.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum Site {
     /// A point site.
     Point(Point),

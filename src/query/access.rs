@@ -4,8 +4,9 @@ use crate::geometry::predicates::strictly_closer_given;
 use crate::diagram::{BuildStats, Diagram, EdgeId, HalfEdgeId, SiteId, ValidationError, VertexId, NONE};
 use crate::geometry::{Point, Site};
 
-/// A finite Voronoi vertex.
+/// A finite Voronoi vertex. More fields may come (`#[non_exhaustive]`).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct Vertex {
     /// Its id.
     pub id: VertexId,
@@ -17,7 +18,8 @@ pub struct Vertex {
     pub sites: [SiteId; 3],
 }
 
-/// One end of an edge.
+/// One end of an edge: a finite vertex or a direction to infinity, and
+/// nothing else ever (so a `match` needs no wildcard arm).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum EdgeEnd {
     /// The edge ends at this finite vertex.
@@ -31,8 +33,9 @@ pub enum EdgeEnd {
 
 /// A Voronoi edge between two sites: a segment between two vertices, a ray
 /// (one end at infinity) or a whole line (both ends at infinity, when all
-/// sites are collinear).
+/// sites are collinear). More fields may come (`#[non_exhaustive]`).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct Edge {
     /// Its id.
     pub id: EdgeId,
@@ -108,9 +111,9 @@ impl Diagram {
         self.point_sites
     }
 
-    /// A site, in input coordinates. Panics if the id is out of range.
-    pub fn site(&self, site: SiteId) -> Site {
-        self.sites[site.index()]
+    /// A site, in input coordinates, or `None` if the id is out of range.
+    pub fn site(&self, site: SiteId) -> Option<Site> {
+        self.sites.get(site.index()).copied()
     }
 
     /// The input index of a segment site (what the topology text calls
@@ -120,11 +123,18 @@ impl Diagram {
         self.segment_input.get(k).map(|&j| j as usize)
     }
 
-    /// The endpoint sites of a segment site, or `None` for a point site or an
-    /// id out of range.
+    /// The endpoint sites of a segment site, in the order of its
+    /// [`Site::Segment`] `a` and `b`; `None` for a point site or an id out
+    /// of range.
     pub fn segment_endpoints(&self, site: SiteId) -> Option<[SiteId; 2]> {
         let k = site.index().checked_sub(self.point_sites)?;
-        self.segment_ends.get(k).copied()
+        let [p, q] = *self.segment_ends.get(k)?;
+        // The construction keeps the two ends in either order.
+        let first_is_a = match self.sites[site.index()] {
+            Site::Segment { a, .. } => self.sites[p.index()] == Site::Point(a),
+            _ => true,
+        };
+        Some(if first_is_a { [p, q] } else { [q, p] })
     }
 
     /// The site that the `index`-th input segment became: its open segment,
@@ -170,7 +180,7 @@ impl Diagram {
     /// b.add_points([[0.0, 0.0], [10.0, 0.0], [5.0, 8.0]])?;
     /// let d = b.build()?;
     /// let s = d.nearest_site(Point::new(9.0, 1.0), None).unwrap();
-    /// assert_eq!(d.site(s), Site::Point(Point::new(10.0, 0.0)));
+    /// assert_eq!(d.site(s), Some(Site::Point(Point::new(10.0, 0.0))));
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn nearest_site(&self, p: Point, hint: Option<SiteId>) -> Option<SiteId> {
@@ -209,7 +219,7 @@ impl Diagram {
     fn nearest_among_segments(&self, p: Point, start: SiteId) -> SiteId {
         let n = self.sites.len();
         let distance = |s: SiteId| {
-            let d = self.site(s).distance(p);
+            let d = self.sites[s.index()].distance(p);
             if d.is_nan() {
                 f64::INFINITY
             } else {

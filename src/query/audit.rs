@@ -17,7 +17,7 @@ use crate::{Builder, Diagram, Point, Site};
 pub(crate) fn audit(diagram: &Diagram, print: bool) -> Vec<String> {
     let mut bad = Vec::new();
     for v in diagram.vertices() {
-        let geometry = v.sites.map(|s| diagram.site(s));
+        let geometry = v.sites.map(|s| diagram.sites[s.index()]);
         if geometry.iter().all(Site::is_point) {
             continue;
         }
@@ -25,7 +25,7 @@ pub(crate) fn audit(diagram: &Diagram, print: bool) -> Vec<String> {
             eprintln!("vertex {:?} {:?} at {:?} r {}", v.id, v.sites, v.position, v.clearance);
         }
         for s in diagram.site_ids().filter(|s| !v.sites.contains(s)) {
-            match audit_depth(&geometry, &diagram.site(s)) {
+            match audit_depth(&geometry, &diagram.sites[s.index()]) {
                 Some((c, r, depth)) if depth < -1e-30 * r.max(1.0) => {
                     bad.push(format!("vertex {:?} {:?}: site {s:?} inside by {depth:e} (exact centre {c:?}, r {r})", v.id, v.sites));
                 }
@@ -44,7 +44,7 @@ fn audit_file() {
     let builder = builder_of(&std::fs::read_to_string(path).expect("a readable input"));
     let diagram = builder.build().expect("a diagram");
     for s in diagram.site_ids() {
-        eprintln!("site {s:?}: {:?}", diagram.site(s));
+        eprintln!("site {s:?}: {:?}", diagram.sites[s.index()]);
     }
     let bad = audit(&diagram, true);
     for line in &bad {
@@ -61,13 +61,13 @@ fn builder_of(text: &str) -> Builder {
     let points = nums.next().unwrap_or(0.0) as usize;
     for _ in 0..points {
         let (x, y) = (nums.next().expect("x"), nums.next().expect("y"));
-        builder.add_point(x, y).expect("a point");
+        builder.add_point([x, y]).expect("a point");
     }
     let segments = nums.next().unwrap_or(0.0) as usize;
     for _ in 0..segments {
         let a = Point::new(nums.next().expect("x"), nums.next().expect("y"));
         let b = Point::new(nums.next().expect("x"), nums.next().expect("y"));
-        builder.add_segment(a, b).expect("a segment");
+        builder.add_segment([a, b]).expect("a segment");
     }
     builder
 }

@@ -33,8 +33,11 @@ use crate::query::EdgeEnd;
 /// Most points [`Diagram::edge_polyline`] returns for one edge.
 const MAX_POLYLINE_POINTS: usize = 1_000_000;
 
-/// The shape of a Voronoi edge (see [`Diagram::edge_shape`]).
+/// The shape of a Voronoi edge (see [`Diagram::edge_shape`]). More shapes
+/// may come with more site kinds, so a `match` outside this crate needs a
+/// wildcard arm.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum EdgeShape {
     /// A straight piece: between two points, between two segments, or
     /// between a segment and one of its endpoints.
@@ -72,8 +75,8 @@ impl Diagram {
     /// ```
     /// use segvoronoi::{Builder, EdgeShape, Point};
     /// let mut b = Builder::new();
-    /// b.add_segment([0.0, 0.0], [4.0, 0.0])?;
-    /// b.add_point(2.0, 2.0)?;
+    /// b.add_segment([[0.0, 0.0], [4.0, 0.0]])?;
+    /// b.add_point([2.0, 2.0])?;
     /// let d = b.build()?;
     /// let arcs: Vec<EdgeShape> = d
     ///     .edges()
@@ -92,7 +95,8 @@ impl Diagram {
     /// ```
     pub fn edge_shape(&self, id: EdgeId) -> Option<EdgeShape> {
         let e = self.edge(id)?;
-        Some(EdgeShape::between(self.site(e.sites[0]), self.site(e.sites[1]), self.scale.to_internal))
+        let [first, second] = e.sites.map(|s| self.sites[s.index()]);
+        Some(EdgeShape::between(first, second, self.scale.to_internal))
     }
 
     /// A polyline along a finite edge, from the position of `ends[0]` to
@@ -111,8 +115,8 @@ impl Diagram {
     /// ```
     /// use segvoronoi::{Builder, EdgeShape};
     /// let mut b = Builder::new();
-    /// b.add_segment([0.0, 0.0], [4.0, 0.0])?;
-    /// b.add_point(2.0, 2.0)?;
+    /// b.add_segment([[0.0, 0.0], [4.0, 0.0]])?;
+    /// b.add_point([2.0, 2.0])?;
     /// let d = b.build()?;
     /// for e in d.edges().filter(|e| !e.is_infinite()) {
     ///     let poly = d.edge_polyline(e.id, 1e-3).unwrap();
@@ -121,9 +125,10 @@ impl Diagram {
     ///         EdgeShape::Parabola { .. } => {
     ///             assert!(poly.len() > 2);
     ///             // Every point is as far from the point as from the segment.
-    ///             let [p, s] = e.sites.map(|s| d.site(s));
+    ///             let [p, s] = e.sites.map(|s| d.site(s).unwrap());
     ///             assert!(poly.iter().all(|&q| (p.distance(q) - s.distance(q)).abs() < 1e-9));
     ///         }
+    ///         other => unreachable!("no other shape between points and segments: {other:?}"),
     ///     }
     /// }
     /// # Ok::<(), segvoronoi::Error>(())
@@ -157,8 +162,8 @@ impl Diagram {
     /// ```
     /// use segvoronoi::{Builder, EdgeEnd};
     /// let mut b = Builder::new();
-    /// b.add_segment([0.0, 0.0], [4.0, 0.0])?;
-    /// b.add_point(2.0, 2.0)?;
+    /// b.add_segment([[0.0, 0.0], [4.0, 0.0]])?;
+    /// b.add_point([2.0, 2.0])?;
     /// let d = b.build()?;
     /// let (e, [start, control, end]) =
     ///     d.edges().find_map(|e| Some((e, d.edge_bezier(e.id)?))).expect("one parabolic arc");

@@ -29,8 +29,17 @@ use crate::geometry::oracle;
 /// users who want a tolerance ([`TopologyOptions::zero_length_tolerance`]).
 pub const ZERO_LENGTH: f64 = 1e-9;
 
-/// What the topology text contains beyond `EDGES` and `FACES`.
+/// What the topology text contains beyond `EDGES` and `FACES`. More
+/// options may come: outside this crate, start from
+/// `TopologyOptions::default()` and set fields or use the `with_` methods.
+///
+/// ```
+/// use segvoronoi::TopologyOptions;
+/// let options = TopologyOptions::default().with_voronoi_pairs(true);
+/// assert!(options.voronoi_pairs && options.zero_length_tolerance.is_none());
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[non_exhaustive]
 pub struct TopologyOptions {
     /// Add the `VPAIRS` and `VVERTICES` sections, which are the same for
     /// every valid answer on degenerate input.
@@ -39,6 +48,19 @@ pub struct TopologyOptions {
     /// diagonal as zero-length too (`None`, the default: only edges whose
     /// sites are exactly cocircular).
     pub zero_length_tolerance: Option<f64>,
+}
+
+impl TopologyOptions {
+    /// These options with [`TopologyOptions::voronoi_pairs`] set to `on`.
+    pub fn with_voronoi_pairs(self, on: bool) -> TopologyOptions {
+        TopologyOptions { voronoi_pairs: on, ..self }
+    }
+
+    /// These options with [`TopologyOptions::zero_length_tolerance`] set to
+    /// `tolerance`.
+    pub fn with_zero_length_tolerance(self, tolerance: Option<f64>) -> TopologyOptions {
+        TopologyOptions { zero_length_tolerance: tolerance, ..self }
+    }
 }
 
 /// A site name: kind (0 = point, 1 = segment) and index.
@@ -114,8 +136,8 @@ impl Diagram {
         // tangent at its endpoint, on either side): the vertices must also be
         // one point as far as rounding can tell.
         let near = va.position.distance(vb.position) <= 1e-6 * va.clearance.max(vb.clearance);
-        let sites = va.sites.map(|s| self.site(s));
-        near && oracle::on_circle(&sites, va.position, va.clearance, &self.site(fourth))
+        let sites = va.sites.map(|s| self.sites[s.index()]);
+        near && oracle::on_circle(&sites, va.position, va.clearance, &self.sites[fourth.index()])
     }
 
     fn write_voronoi_pairs(&self, out: &mut String, tolerance: Option<f64>) {

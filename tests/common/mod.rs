@@ -40,12 +40,12 @@ pub fn build(points: &[[f64; 2]]) -> Diagram {
 pub fn check_empty_circles(d: &Diagram, tol: f64) {
     let scale = d.extent().max(f64::MIN_POSITIVE);
     for v in d.vertices() {
-        let r: Vec<f64> = v.sites.iter().map(|&s| d.site(s).distance(v.position)).collect();
+        let r: Vec<f64> = v.sites.iter().map(|&s| d.site(s).unwrap().distance(v.position)).collect();
         for &ri in &r {
             assert!((ri - v.clearance).abs() <= tol * scale, "vertex {} not equidistant: {r:?} vs {}", v.id, v.clearance);
         }
         for s in d.site_ids() {
-            let dist = d.site(s).distance(v.position);
+            let dist = d.site(s).unwrap().distance(v.position);
             assert!(dist >= v.clearance - tol * scale, "site {s} inside the circle of vertex {}", v.id);
         }
     }
@@ -60,12 +60,12 @@ pub fn check_nearest_sites(d: &Diagram, queries: &[Point], tol: f64) {
         return;
     }
     for &q in queries {
-        let best = d.site_ids().map(|s| d.site(s).distance(q)).fold(f64::INFINITY, f64::min);
+        let best = d.site_ids().map(|s| d.site(s).unwrap().distance(q)).fold(f64::INFINITY, f64::min);
         // the brute-force nearest sites (ties allowed)
-        let nearest: Vec<_> = d.site_ids().filter(|&s| d.site(s).distance(q) <= best + tol * scale).collect();
+        let nearest: Vec<_> = d.site_ids().filter(|&s| d.site(s).unwrap().distance(q) <= best + tol * scale).collect();
         // q lies in the cell of s iff no Voronoi neighbour of s is closer
         let inside = nearest.iter().any(|&s| {
-            d.cell(s).unwrap().neighbors().all(|n| d.site(n).distance(q) >= d.site(s).distance(q) - tol * scale)
+            d.cell(s).unwrap().neighbors().all(|n| d.site(n).unwrap().distance(q) >= d.site(s).unwrap().distance(q) - tol * scale)
         });
         assert!(inside, "query {q:?}: no nearest site {nearest:?} has it in its cell");
     }
@@ -166,12 +166,12 @@ pub fn check_empty_circles_relative(d: &Diagram, tol: f64) {
     let extent = d.extent().max(f64::MIN_POSITIVE);
     for v in d.vertices() {
         let slack = tol * extent.max(v.clearance);
-        let r: Vec<f64> = v.sites.iter().map(|&s| d.site(s).distance(v.position)).collect();
+        let r: Vec<f64> = v.sites.iter().map(|&s| d.site(s).unwrap().distance(v.position)).collect();
         for &ri in &r {
             assert!((ri - v.clearance).abs() <= slack, "vertex {} not equidistant: {r:?} vs {}", v.id, v.clearance);
         }
         for s in d.site_ids() {
-            let dist = d.site(s).distance(v.position);
+            let dist = d.site(s).unwrap().distance(v.position);
             assert!(
                 dist >= v.clearance - slack,
                 "site {s} inside the circle of vertex {} (sites {:?}) by {:e} (clearance {:e})",

@@ -67,7 +67,7 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
             .map_err(|e| failed(format!("cannot write {}: {e}", path.display())))?;
     }
     if options.topology {
-        print(&diagram.topology(TopologyOptions { voronoi_pairs: options.voronoi_pairs, ..Default::default() }))?;
+        print(&diagram.topology(TopologyOptions::default().with_voronoi_pairs(options.voronoi_pairs)))?;
     }
     if options.stats {
         eprint!("{}", stats::report(&diagram, build_s));

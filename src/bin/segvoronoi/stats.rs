@@ -83,7 +83,7 @@ mod tests {
         // zero-length segment's point, and one open segment.
         let mut b = segvoronoi::Builder::new();
         b.add_segments([[[0.0, 0.0], [4.0, 0.0]], [[4.0, 0.0], [0.0, 0.0]], [[9.0, 9.0], [9.0, 9.0]]]).unwrap();
-        b.add_point(2.0, 2.0).unwrap();
+        b.add_point([2.0, 2.0]).unwrap();
         let r = report(&b.build().unwrap(), 0.0);
         assert_eq!(value(&r, "input_points"), "1");
         assert_eq!(value(&r, "input_segments"), "3");

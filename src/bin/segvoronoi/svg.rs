@@ -150,7 +150,7 @@ fn power_of_two_near_inverse(max_abs: f64) -> f64 {
 /// sites collinear): the midpoint of two point sites, or the point itself
 /// when the other site is a segment ending there (a separator).
 fn line_anchor(diagram: &Diagram, edge: &Edge) -> Point {
-    match edge.sites.map(|s| diagram.site(s)) {
+    match edge.sites.map(|s| diagram.site(s).expect("edge sites are sites of the diagram")) {
         [Site::Point(p), Site::Point(q)] => Point::new(p.x / 2.0 + q.x / 2.0, p.y / 2.0 + q.y / 2.0),
         [Site::Point(p), s] | [s, Site::Point(p)] if s.has_endpoint(p) => p,
         // Not expected on collinear input; a site's middle keeps it drawable.
@@ -196,18 +196,19 @@ fn site_middle(site: Site) -> Point {
     match site {
         Site::Point(p) => p,
         Site::Segment { a, b } => Point::new(a.x / 2.0 + b.x / 2.0, a.y / 2.0 + b.y / 2.0),
+        other => unreachable!("a site kind this drawing does not know: {other:?}"),
     }
 }
 
 /// The SVG document for a diagram.
 pub fn render(diagram: &Diagram) -> String {
     // The picture frames every point site; segment endpoints are point sites.
-    let points: Vec<Point> = diagram.site_ids().filter_map(|s| diagram.site(s).as_point()).collect();
+    let points: Vec<Point> = diagram.site_ids().filter_map(|s| diagram.site(s)?.as_point()).collect();
     let segments: Vec<(Point, Point)> = diagram
         .site_ids()
-        .filter_map(|s| match diagram.site(s) {
+        .filter_map(|s| match diagram.site(s)? {
             Site::Segment { a, b } => Some((a, b)),
-            Site::Point(_) => None,
+            _ => None,
         })
         .collect();
     let frame = Frame::new(&points);
@@ -384,7 +385,7 @@ mod tests {
         assert!(arcs.len() >= 2);
         let drawn = curves(&svg);
         assert_eq!(drawn.len(), arcs.len(), "{svg}");
-        let points: Vec<Point> = d.site_ids().filter_map(|s| d.site(s).as_point()).collect();
+        let points: Vec<Point> = d.site_ids().filter_map(|s| d.site(s)?.as_point()).collect();
         let frame = Frame::new(&points);
         for (c, arc) in drawn.iter().zip(arcs) {
             for (k, p) in arc.into_iter().enumerate() {
