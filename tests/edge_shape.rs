@@ -316,11 +316,17 @@ fn c_diagram(points: &[f64], segments: &[f64]) -> *mut segvoronoi_diagram {
     }
 }
 
-#[test]
-fn c_edge_shape_agrees_with_rust() {
+/// Two points and two segments (at least two parabolic arcs), built
+/// through Rust and through C.
+fn two_points_two_segments() -> (Diagram, *mut segvoronoi_diagram) {
     let (points, segments) = ([2.0, 2.0, 5.0, 3.0], [0.0, 0.0, 4.0, 0.0, 1.0, 4.0, 3.0, 5.0]);
     let rust = build(&[[2.0, 2.0], [5.0, 3.0]], &[[[0.0, 0.0], [4.0, 0.0]], [[1.0, 4.0], [3.0, 5.0]]]);
-    let d = c_diagram(&points, &segments);
+    (rust, c_diagram(&points, &segments))
+}
+
+#[test]
+fn c_edge_shape_agrees_with_rust() {
+    let (rust, d) = two_points_two_segments();
     unsafe {
         assert_eq!(segvoronoi_diagram_edge_count(d), rust.edge_count());
         let mut parabolas = 0;
@@ -416,9 +422,7 @@ fn c_edge_polyline_buffer_convention() {
 
 #[test]
 fn c_edge_bezier_and_unbounded_agree_with_rust() {
-    let (points, segments) = ([2.0, 2.0, 5.0, 3.0], [0.0, 0.0, 4.0, 0.0, 1.0, 4.0, 3.0, 5.0]);
-    let rust = build(&[[2.0, 2.0], [5.0, 3.0]], &[[[0.0, 0.0], [4.0, 0.0]], [[1.0, 4.0], [3.0, 5.0]]]);
-    let d = c_diagram(&points, &segments);
+    let (rust, d) = two_points_two_segments();
     unsafe {
         let mut arcs = 0;
         for e in rust.edges() {

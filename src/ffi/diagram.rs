@@ -227,6 +227,18 @@ fn site_id(d: &Diagram, index: usize) -> Option<SiteId> {
     (index < d.site_count()).then(|| SiteId::from_index(index))
 }
 
+/// Runs `f` on the cell of site `site`: `OUT_OF_RANGE` past the sites.
+fn with_cell(
+    d: *const segvoronoi_diagram,
+    site: usize,
+    f: impl FnOnce(crate::Cell<'_>) -> segvoronoi_status,
+) -> segvoronoi_status {
+    with_diagram(d, |d| match site_id(d, site).and_then(|s| d.cell(s)) {
+        Some(cell) => f(cell),
+        None => segvoronoi_status::OutOfRange,
+    })
+}
+
 /// The id of segment site `index`: `OUT_OF_RANGE` past the sites,
 /// `INVALID_ARGUMENT` for a point site.
 fn segment_site_id(d: &Diagram, index: usize) -> Result<SiteId, segvoronoi_status> {
@@ -380,10 +392,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_cell_edges(
     count: *mut usize,
 ) -> segvoronoi_status {
     require_buffer!(edges, capacity, count);
-    with_diagram(diagram, |d| match site_id(d, site).and_then(|s| d.cell(s)) {
-        Some(cell) => write_buffer(cell.edges().map(|e| e.index() as u32), edges, capacity, count),
-        None => segvoronoi_status::OutOfRange,
-    })
+    with_cell(diagram, site, |cell| write_buffer(cell.edges().map(|e| e.index() as u32), edges, capacity, count))
 }
 
 /// The sites whose cells border the cell of site `site`, counter-clockwise,
@@ -402,10 +411,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_cell_neighbors(
     count: *mut usize,
 ) -> segvoronoi_status {
     require_buffer!(sites, capacity, count);
-    with_diagram(diagram, |d| match site_id(d, site).and_then(|s| d.cell(s)) {
-        Some(cell) => write_buffer(cell.neighbors().map(|s| s.index() as u32), sites, capacity, count),
-        None => segvoronoi_status::OutOfRange,
-    })
+    with_cell(diagram, site, |cell| write_buffer(cell.neighbors().map(|s| s.index() as u32), sites, capacity, count))
 }
 
 /// Whether the cell of site `site` is unbounded (reaches infinity: the site
@@ -420,10 +426,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_cell_is_unbounded(
     out: *mut bool,
 ) -> segvoronoi_status {
     require_non_null!(out);
-    with_diagram(diagram, |d| match site_id(d, site).and_then(|s| d.cell(s)) {
-        Some(cell) => write_out(out, cell.is_unbounded()),
-        None => segvoronoi_status::OutOfRange,
-    })
+    with_cell(diagram, site, |cell| write_out(out, cell.is_unbounded()))
 }
 
 /// The site nearest to `(x, y)` (whose cell contains the point; on a cell
