@@ -423,9 +423,12 @@ enum Equation {
     Circle(Point),
     /// `σ n·(c − a) − r`, `n` the left unit normal of `a → b`.
     Line { a: Point, b: Point, side: f64 },
-    /// `û·(c − p)`, `û` the unit direction of the segment: the centre lies
-    /// on the segment's perpendicular at its endpoint `p`.
-    Perpendicular { p: Point, direction: Point },
+    /// `û·(c − p)`, `û` the unit direction of the segment from its
+    /// endpoint `p` to its other endpoint `q`: the centre lies on the
+    /// segment's perpendicular at `p`. (`q − p` is formed in the
+    /// arithmetic of the evaluation: rounded to `f64`, its direction tilts
+    /// by an ulp, which moves a far centre by more than its own error.)
+    Perpendicular { p: Point, q: Point },
 }
 
 /// The three tangency equations of a vertex.
@@ -459,7 +462,7 @@ impl System {
                             }
                             perpendicular_at.push(*p);
                             let other = if *p == a { b } else { a };
-                            Equation::Perpendicular { p: *p, direction: Point::new(other.x - p.x, other.y - p.y) }
+                            Equation::Perpendicular { p: *p, q: other }
                         }
                         _ => return None,
                     }
@@ -495,9 +498,10 @@ impl System {
                     let (cross, length2, _) = line(a, b);
                     cross.signum() as f64 == side && cross.mul(&cross).sub(&r2.mul(&length2)).signum() == 0
                 }
-                Equation::Perpendicular { p, direction } => {
+                Equation::Perpendicular { p, q } => {
                     let (dx, dy) = (x.sub(&lift(p.x)), y.sub(&lift(p.y)));
-                    lift(direction.x).mul(&dx).add(&lift(direction.y).mul(&dy)).signum() == 0
+                    let (ux, uy) = (lift(q.x).sub(&lift(p.x)), lift(q.y).sub(&lift(p.y)));
+                    ux.mul(&dx).add(&uy.mul(&dy)).signum() == 0
                 }
             };
             if !holds {
@@ -556,8 +560,8 @@ impl System {
                     let (vx, vy) = (x.sub(&lift(a.x)), y.sub(&lift(a.y)));
                     Some((nx.mul(&vx).add(&ny.mul(&vy)).sub(r), [nx, ny, one.neg()]))
                 }
-                Equation::Perpendicular { p, direction } => {
-                    let (ux, uy) = (lift(direction.x), lift(direction.y));
+                Equation::Perpendicular { p, q } => {
+                    let (ux, uy) = (lift(q.x).sub(&lift(p.x)), lift(q.y).sub(&lift(p.y)));
                     let length = ux.mul(&ux).add(&uy.mul(&uy)).sqrt();
                     let (ux, uy) = (ux.div(&length), uy.div(&length));
                     let (vx, vy) = (x.sub(&lift(p.x)), y.sub(&lift(p.y)));

@@ -23,6 +23,7 @@ use super::point::{norm, Point};
 use super::predicates::{orientation, CirclePosition, Orientation};
 use super::segment_solvers;
 use super::site::Site;
+use super::vertex_placement;
 
 /// How far a new segment reaches into the circle of a finite vertex: the
 /// signed depth, negative inside, never NaN.
@@ -426,8 +427,11 @@ pub(crate) fn middle_margin(edge: FiniteEdge, contact: EdgeContact, segment: (Po
         return MiddleMargin(f64::NEG_INFINITY);
     }
     let edge = EdgeUnderSegment::new(edge, segment, contact == EdgeContact::OneEnd);
-    let crossings = segment_solvers::vertex(&edge.right, &edge.left, &edge.segment)
-        .zip(segment_solvers::vertex(&edge.left, &edge.right, &edge.segment))
+    // placed as the construction places vertices: an f64 solve that is
+    // ill-conditioned (a point an ulp from the segment's line) is solved
+    // again finer, or the order of the two crossings is noise
+    let crossings = vertex_placement::solved_circle(&[edge.right, edge.left, edge.segment])
+        .zip(vertex_placement::solved_circle(&[edge.left, edge.right, edge.segment]))
         .map(|((near_origin, _), (near_target, _))| (edge.arc.parameter(near_origin), edge.arc.parameter(near_target)));
     // Both ends of the edge are in conflict (certified), so a crossing
     // is inside the edge: one a rounding error beyond an end (the end
@@ -436,11 +440,18 @@ pub(crate) fn middle_margin(edge: FiniteEdge, contact: EdgeContact, segment: (Po
         let at_end = |t: f64, end: f64| if (t - end).abs() <= END_TOLERANCE { end } else { t };
         (at_end(t1, 0.0), at_end(t2, 1.0))
     });
+    let on_edge = |t: f64| (0.0..=1.0).contains(&t);
     let margin = match crossings {
-        // Crossings this close are ordered by their difference along the
-        // edge in double-double (below, `crossing_order`): rounded to
-        // f64 coordinates they may be closer than an ulp of them.
-        Some((t1, t2)) if (t2 - t1).abs() < CLOSE_CROSSINGS && !fault::active() => {
+        // Crossings this close, both on the edge, are ordered by their
+        // difference along the edge in double-double (below,
+        // `crossing_order`): rounded to f64 coordinates they may be closer
+        // than an ulp of them. (Two close crossings off the edge are the
+        // two circles tangent near a point an ulp from the segment, where
+        // the new cell's boundary meets the bisector beyond the edge: it
+        // is covered.)
+        Some((t1, t2))
+            if (t2 - t1).abs() < CLOSE_CROSSINGS && on_edge(t1) && on_edge(t2) && !fault::active() =>
+        {
             match crossing_order(&edge, 0.5 * (t1 + t2)) {
                 Some(order) if order > 0.0 => order,
                 Some(order) => -order.abs().max(f64::MIN_POSITIVE),

@@ -23,6 +23,13 @@ pub(crate) fn circle_of_points(a: Point, b: Point, c: Point) -> (Point, f64) {
 /// segments.
 #[inline]
 pub(crate) fn circle_of_sites(sites: &[Site; 3]) -> (Point, f64) {
+    // No circle: keep the topology, place the vertex among its sites.
+    solved_circle(sites).unwrap_or_else(|| among_sites(sites))
+}
+
+/// The circle of three sites, some of them segments, as accurately as the
+/// construction places vertices; `None` when no arithmetic finds one.
+pub(crate) fn solved_circle(sites: &[Site; 3]) -> Option<(Point, f64)> {
     let [ga, gb, gc] = sites;
     let solved = segment_solvers::vertex_and_condition(ga, gb, gc);
     let ill_conditioned = solved.map_or(true, |(_, _, condition)| condition > ILL_CONDITIONED);
@@ -30,9 +37,11 @@ pub(crate) fn circle_of_sites(sites: &[Site; 3]) -> (Point, f64) {
     // An ill-conditioned solve (nearly parallel lines, a circle far
     // larger than its sites), or none where rounding lost the circle, is
     // solved again finer and polished against the sites themselves.
-    let solved = if fault::active() { solved } else { oracle::polish_vertex(sites, solved, ill_conditioned).or(solved) };
-    // No circle: keep the topology, place the vertex among its sites.
-    solved.unwrap_or_else(|| among_sites(sites))
+    if fault::active() {
+        solved
+    } else {
+        oracle::polish_vertex(sites, solved, ill_conditioned).or(solved)
+    }
 }
 
 /// The condition (see `segment_solvers::Solved`) above which a solver's
