@@ -70,6 +70,11 @@ impl Parabola {
         (q.x - self.origin.x) * self.tangent.x + (q.y - self.origin.y) * self.tangent.y
     }
 
+    /// The unit direction of the directrix, in which the parameter grows.
+    pub(crate) fn tangent(&self) -> Point {
+        self.tangent
+    }
+
     /// The point at parameter `s`.
     pub(crate) fn point(&self, s: f64) -> Point {
         let p = self.focal_distance;

@@ -442,24 +442,24 @@ pub(crate) fn middle_margin(edge: FiniteEdge, contact: EdgeContact, segment: (Po
     });
     let on_edge = |t: f64| (0.0..=1.0).contains(&t);
     let margin = match crossings {
-        // Crossings this close, both on the edge, are ordered by their
-        // difference along the edge in double-double (below,
-        // `crossing_order`): rounded to f64 coordinates they may be closer
-        // than an ulp of them. (Two close crossings off the edge are the
-        // two circles tangent near a point an ulp from the segment, where
-        // the new cell's boundary meets the bisector beyond the edge: it
-        // is covered.)
-        Some((t1, t2))
-            if (t2 - t1).abs() < CLOSE_CROSSINGS && on_edge(t1) && on_edge(t2) && !fault::active() =>
-        {
-            match crossing_order(&edge, 0.5 * (t1 + t2)) {
+        Some((t1, t2)) if on_edge(t1) && on_edge(t2) => {
+            let excess = if t1 < t2 { edge.excess(0.5 * (t1 + t2)) } else { -(t1 - t2).abs().max(f64::MIN_POSITIVE) };
+            // Crossings close along the edge, or an excess within the
+            // rounding of the distances it compares (the middle of a
+            // needle an ulp wide), are ordered by their difference along
+            // the edge in double-double (below, `crossing_order`):
+            // rounded to f64 coordinates they may be closer than an ulp
+            // of them.
+            let doubtful = (t2 - t1).abs() < CLOSE_CROSSINGS || excess.abs() <= EXCESS_NOISE * edge.size(0.5 * (t1 + t2));
+            match (doubtful && !fault::active()).then(|| crossing_order(&edge)).flatten() {
                 Some(order) if order > 0.0 => order,
                 Some(order) => -order.abs().max(f64::MIN_POSITIVE),
-                None if 0.0 <= t1 && t1 < t2 && t2 <= 1.0 => edge.excess(0.5 * (t1 + t2)),
-                None => -(t1 - t2).abs().max(f64::MIN_POSITIVE),
+                None => excess,
             }
         }
-        Some((t1, t2)) if 0.0 <= t1 && t1 < t2 && t2 <= 1.0 => edge.excess(0.5 * (t1 + t2)),
+        // Two close crossings off the edge are the two circles tangent
+        // near a point an ulp from the segment, where the new cell's
+        // boundary meets the bisector beyond the edge: it is covered.
         Some((t1, t2)) => -(t1 - t2).abs().max(f64::MIN_POSITIVE),
         // Two points on opposite sides of the segment's line (exact): no
         // circle through both touches the line, so the new cell's boundary
@@ -486,21 +486,29 @@ fn points_on_opposite_sides(edge: &EdgeUnderSegment) -> bool {
 /// double-double.
 const CLOSE_CROSSINGS: f64 = 1e-6;
 
+/// An excess below this, relative to the size of the configuration where
+/// it is measured (`EdgeUnderSegment::size`), is within the rounding of the
+/// distances it compares: the crossings are ordered in double-double.
+const EXCESS_NOISE: f64 = 1e-12;
+
 /// Which way the two crossings of the new cell's boundary with the edge
 /// are ordered along it, from their circles solved in double-double: the
-/// difference from the crossing nearer the origin to the one nearer the
-/// target, along the edge's tangent at `t` (positive: in order, the middle
-/// stays). Where the two new vertices are a few ulps of their coordinates
-/// apart (joints open by one ulp), only a finer arithmetic tells them
-/// apart. `None` when a circle cannot be solved.
-fn crossing_order(edge: &EdgeUnderSegment, t: f64) -> Option<f64> {
+/// difference of the crossing nearer the target and the one nearer the
+/// origin, along the direction in which the edge's parameter grows
+/// (positive: in order, the middle stays). Where the two new vertices are a
+/// few ulps of their coordinates apart (joints open by one ulp), only a
+/// finer arithmetic tells them apart. `None` when a circle cannot be solved.
+///
+/// The parameter is linear in position (along the line of a straight
+/// edge, along the directrix of a parabola), so the difference is exact up
+/// to the double-double rounding and an ulp's tilt of the direction — also
+/// at the tip of a parabola whose focus is an ulp from its directrix, where
+/// the curve turns back within a few ulps.
+fn crossing_order(edge: &EdgeUnderSegment) -> Option<f64> {
     let dd = DoubleDouble::from_f64;
     let near_origin = segment_solvers::vertex_in(&[edge.right, edge.left, edge.segment], &dd)?;
     let near_target = segment_solvers::vertex_in(&[edge.left, edge.right, edge.segment], &dd)?;
-    let h = 1e-3;
-    let t = t.clamp(h, 1.0 - h);
-    let (p, q) = (edge.arc.point(t - h), edge.arc.point(t + h));
-    let (tx, ty) = (q.x - p.x, q.y - p.y);
+    let Point { x: tx, y: ty } = edge.arc.direction();
     let along = near_target[0].sub(near_origin[0]).mul(dd(tx)).add(near_target[1].sub(near_origin[1]).mul(dd(ty)));
     let along = along.to_f64();
     along.is_finite().then_some(along)
@@ -525,6 +533,13 @@ impl EdgeUnderSegment {
             None => EdgeArc::Line(from, to),
         };
         EdgeUnderSegment { left, right, arc, segment: Site::Segment { a, b }, touches_end }
+    }
+
+    /// The size of the numbers the excess at parameter `t` is made of: the
+    /// point's coordinates and its distance to the edge's sites.
+    fn size(&self, t: f64) -> f64 {
+        let q = self.arc.point(t);
+        q.x.abs().max(q.y.abs()) + self.left.distance(q)
     }
 
     /// The excess of the distance to the segment over the distance to the
@@ -564,6 +579,22 @@ impl EdgeArc {
         match *self {
             EdgeArc::Line(p, q) => Point::new(p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t),
             EdgeArc::Parabola(ref par, s0, s1) => par.point(s0 + (s1 - s0) * t),
+        }
+    }
+
+    /// The direction in which the parameter grows: along the line of a
+    /// straight piece, along the directrix of a parabola.
+    fn direction(&self) -> Point {
+        match *self {
+            EdgeArc::Line(p, q) => Point::new(q.x - p.x, q.y - p.y),
+            EdgeArc::Parabola(ref par, s0, s1) => {
+                let t = par.tangent();
+                if s1 >= s0 {
+                    t
+                } else {
+                    Point::new(-t.x, -t.y)
+                }
+            }
         }
     }
 
