@@ -56,7 +56,7 @@ fn audit_file() {
     let builder = builder_of(&std::fs::read_to_string(path).expect("a readable input"));
     let diagram = builder.build().expect("a diagram");
     for s in diagram.site_ids() {
-        eprintln!("site {s:?}: {:?}", diagram.site(s));
+        eprintln!("site {s:?}: {:?}", diagram.sites[s.index()]);
     }
     let bad = audit(&diagram, true);
     for line in &bad {
@@ -73,13 +73,13 @@ fn builder_of(text: &str) -> Builder {
     let points = nums.next().unwrap_or(0.0) as usize;
     for _ in 0..points {
         let (x, y) = (nums.next().expect("x"), nums.next().expect("y"));
-        builder.add_point(x, y).expect("a point");
+        builder.add_point([x, y]).expect("a point");
     }
     let segments = nums.next().unwrap_or(0.0) as usize;
     for _ in 0..segments {
         let a = Point::new(nums.next().expect("x"), nums.next().expect("y"));
         let b = Point::new(nums.next().expect("x"), nums.next().expect("y"));
-        builder.add_segment(a, b).expect("a segment");
+        builder.add_segment([a, b]).expect("a segment");
     }
     builder
 }
