@@ -12,6 +12,7 @@
 
 mod bigfloat;
 mod double_double;
+pub(crate) mod edge_curve;
 mod expansion;
 pub(crate) mod oracle;
 pub(crate) mod parabola;

@@ -18,7 +18,7 @@
 use super::fault;
 use super::double_double::DoubleDouble;
 use super::oracle::{self, Reach};
-use super::parabola::Parabola;
+use super::edge_curve::EdgeCurve;
 use super::point::{norm, Point};
 use super::predicates::{orientation, CirclePosition, Orientation};
 use super::segment_solvers;
@@ -518,7 +518,7 @@ fn crossing_order(edge: &EdgeUnderSegment) -> Option<f64> {
 struct EdgeUnderSegment {
     left: Site,
     right: Site,
-    arc: EdgeArc,
+    arc: EdgeCurve,
     segment: Site,
     /// One of the edge's sites is an endpoint of the segment.
     touches_end: bool,
@@ -528,10 +528,7 @@ impl EdgeUnderSegment {
     /// The edge with its two sites, its curve, and the new segment `ab`.
     fn new(edge: FiniteEdge, (a, b): (Point, Point), touches_end: bool) -> EdgeUnderSegment {
         let FiniteEdge { left, right, from, to } = edge;
-        let arc = match Parabola::of_sites(&left, &right) {
-            Some(p) => EdgeArc::Parabola(p, p.parameter(from), p.parameter(to)),
-            None => EdgeArc::Line(from, to),
-        };
+        let arc = EdgeCurve::between(&left, &right, from, to);
         EdgeUnderSegment { left, right, arc, segment: Site::Segment { a, b }, touches_end }
     }
 
@@ -563,50 +560,6 @@ impl EdgeUnderSegment {
             f64::NEG_INFINITY
         } else {
             e
-        }
-    }
-}
-
-/// A finite edge as a curve over `[0, 1]`: a straight piece, or an arc of
-/// a parabola between two of its parameters.
-enum EdgeArc {
-    Line(Point, Point),
-    Parabola(Parabola, f64, f64),
-}
-
-impl EdgeArc {
-    fn point(&self, t: f64) -> Point {
-        match *self {
-            EdgeArc::Line(p, q) => Point::new(p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t),
-            EdgeArc::Parabola(ref par, s0, s1) => par.point(s0 + (s1 - s0) * t),
-        }
-    }
-
-    /// The direction in which the parameter grows: along the line of a
-    /// straight piece, along the directrix of a parabola.
-    fn direction(&self) -> Point {
-        match *self {
-            EdgeArc::Line(p, q) => Point::new(q.x - p.x, q.y - p.y),
-            EdgeArc::Parabola(ref par, s0, s1) => {
-                let t = par.tangent();
-                if s1 >= s0 {
-                    t
-                } else {
-                    Point::new(-t.x, -t.y)
-                }
-            }
-        }
-    }
-
-    /// The parameter of the point of the curve nearest to `q` (exact for
-    /// points on it, up to rounding); NaN for a curve of no length.
-    fn parameter(&self, q: Point) -> f64 {
-        match *self {
-            EdgeArc::Line(p, r) => {
-                let (dx, dy) = (r.x - p.x, r.y - p.y);
-                ((q.x - p.x) * dx + (q.y - p.y) * dy) / (dx * dx + dy * dy)
-            }
-            EdgeArc::Parabola(ref par, s0, s1) => (par.parameter(q) - s0) / (s1 - s0),
         }
     }
 }

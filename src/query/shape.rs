@@ -25,6 +25,7 @@
 //! points are the vertex positions themselves, so that drawings join up.
 
 use crate::diagram::{Diagram, EdgeId};
+use crate::geometry::edge_curve::EdgeCurve;
 use crate::geometry::parabola::{focus_and_directrix, Parabola};
 use crate::geometry::predicates::{orientation, Orientation};
 use crate::geometry::{Point, Site};
@@ -198,10 +199,12 @@ impl Diagram {
     /// focus so close to the directrix that their distance rounds to zero;
     /// the arc is then a straight piece to within rounding).
     fn arc(&self, id: EdgeId, start: Point, end: Point) -> Option<(Parabola, f64, f64)> {
-        let EdgeShape::Parabola { focus, directrix: [a, b] } = self.edge_shape(id)? else { return None };
+        let EdgeShape::Parabola { .. } = self.edge_shape(id)? else { return None };
         let f = self.scale.to_internal;
-        let parabola = Parabola::new(focus.scaled(f), a.scaled(f), b.scaled(f))?;
-        let (s0, s1) = (parabola.parameter(start.scaled(f)), parabola.parameter(end.scaled(f)));
-        (s0.is_finite() && s1.is_finite()).then_some((parabola, s0, s1))
+        let [first, second] = self.edge(id)?.sites.map(|s| self.sites[s.index()].scaled(f));
+        match EdgeCurve::between(&first, &second, start.scaled(f), end.scaled(f)) {
+            EdgeCurve::Parabola { parabola, from, to } if from.is_finite() && to.is_finite() => Some((parabola, from, to)),
+            _ => None,
+        }
     }
 }

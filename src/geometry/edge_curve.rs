@@ -1,0 +1,71 @@
+//! A finite Voronoi edge as a curve: the one curve type that the
+//! construction's middle margin (`segment_predicates`) and the queries
+//! (`query::shape`: polylines, Bézier arcs) both walk along.
+//!
+//! The bisector of two sites is a straight line unless one is a point and
+//! the other a segment not ending at it (`Parabola::of_sites`); a finite
+//! edge is the piece of it between the positions of its two vertices.
+
+use super::parabola::Parabola;
+use super::point::Point;
+use super::site::Site;
+
+/// A finite edge between two vertex positions: a straight piece, or an arc
+/// of a parabola between the parameters of its ends. Its own parameter
+/// runs over `[0, 1]`, from the first end to the second.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum EdgeCurve {
+    Line(Point, Point),
+    Parabola { parabola: Parabola, from: f64, to: f64 },
+}
+
+impl EdgeCurve {
+    /// The edge of the sites `left` and `right` from `from` to `to`. A
+    /// parabola that cannot be set up in floating point (its focus so close
+    /// to the directrix that their distance rounds to zero) is the straight
+    /// piece it is within rounding.
+    pub(crate) fn between(left: &Site, right: &Site, from: Point, to: Point) -> EdgeCurve {
+        match Parabola::of_sites(left, right) {
+            Some(parabola) => EdgeCurve::Parabola { parabola, from: parabola.parameter(from), to: parabola.parameter(to) },
+            None => EdgeCurve::Line(from, to),
+        }
+    }
+
+    /// The point at parameter `t` (0 at the first end, 1 at the second).
+    pub(crate) fn point(&self, t: f64) -> Point {
+        match *self {
+            EdgeCurve::Line(p, q) => Point::new(p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t),
+            EdgeCurve::Parabola { ref parabola, from, to } => parabola.point(from + (to - from) * t),
+        }
+    }
+
+    /// The direction in which the parameter grows: along the line of a
+    /// straight piece, along the directrix of a parabola. (Both are linear
+    /// in position, so a difference of two points along it is a difference
+    /// of their parameters, also where the curve turns back.)
+    pub(crate) fn direction(&self) -> Point {
+        match *self {
+            EdgeCurve::Line(p, q) => Point::new(q.x - p.x, q.y - p.y),
+            EdgeCurve::Parabola { ref parabola, from, to } => {
+                let t = parabola.tangent();
+                if to >= from {
+                    t
+                } else {
+                    Point::new(-t.x, -t.y)
+                }
+            }
+        }
+    }
+
+    /// The parameter of the point of the curve nearest to `q` (exact for
+    /// points on it, up to rounding); NaN for a curve of no length.
+    pub(crate) fn parameter(&self, q: Point) -> f64 {
+        match *self {
+            EdgeCurve::Line(p, r) => {
+                let (dx, dy) = (r.x - p.x, r.y - p.y);
+                ((q.x - p.x) * dx + (q.y - p.y) * dy) / (dx * dx + dy * dy)
+            }
+            EdgeCurve::Parabola { ref parabola, from, to } => (parabola.parameter(q) - from) / (to - from),
+        }
+    }
+}
