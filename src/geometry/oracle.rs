@@ -167,7 +167,8 @@ pub(crate) fn polish_vertex(sites: &[Site; 3], solved: Option<(Point, f64)>, ill
         // Cheap first: how far each site is from the circle.
         let size = size_of(sites, centre, radius);
         let residual = sites.iter().map(|s| (s.distance(centre) - radius).abs()).fold(0.0, f64::max);
-        if !(residual > POLISH_TOLERANCE * size) {
+        // (a NaN residual, from a centre that is not finite, is polished)
+        if residual <= POLISH_TOLERANCE * size {
             return None;
         }
     }
@@ -175,7 +176,7 @@ pub(crate) fn polish_vertex(sites: &[Site; 3], solved: Option<(Point, f64)>, ill
     let dd = DoubleDouble::from_f64;
     let start = segment_solvers::vertex_in(sites, &dd).or_else(|| solved.map(|(c, r)| [c.x, c.y, r].map(dd)))?;
     let rounded = |v: &[DoubleDouble; 3]| {
-        let [x, y, r] = v.clone().map(|v| v.to_f64());
+        let [x, y, r] = v.map(|v| v.to_f64());
         (x.is_finite() && y.is_finite() && r.is_finite() && r >= 0.0).then_some((Point::new(x, y), r))
     };
     let (start_centre, start_radius) = rounded(&start)?;
@@ -185,7 +186,7 @@ pub(crate) fn polish_vertex(sites: &[Site; 3], solved: Option<(Point, f64)>, ill
     // conditions of 1e30) its steps stop shrinking at garbage, and the
     // double-double solve is the better answer.
     let polished = System::of(sites, start_centre)
-        .and_then(|system| system.newton(start.clone(), &dd, size, DOUBLE_DOUBLE_BITS))
+        .and_then(|system| system.newton(start, &dd, size, DOUBLE_DOUBLE_BITS))
         .filter(|&(_, last_step, _)| last_step <= CONVERGED * size)
         .and_then(|(solution, _, _)| rounded(&solution));
     polished.or(Some((start_centre, start_radius)))

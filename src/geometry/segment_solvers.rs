@@ -1168,6 +1168,7 @@ mod tests {
 
     /// A chain of three nearly vertical segments whose joints turn by about
     /// 7e-11 rad (c_tests/fixtures/near_vertical_chain3.txt).
+    #[allow(clippy::excessive_precision)] // the doubles of the input file, digit for digit
     fn kinked_chain() -> [Point; 4] {
         [
             p(0.93524989551077042, 0.085386995976182073),
