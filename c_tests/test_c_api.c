@@ -119,6 +119,64 @@ static void check_segment_site(const segvoronoi_diagram *diagram, size_t i, cons
     CHECK(back == i);
 }
 
+/* Half-edge navigation (h = 2 * edge + side): next and prev undo each other
+ * and stay around one cell, a finite target is where the next half-edge
+ * starts, the walk around each cell is its list of half-edges, the three
+ * half-edges of a vertex leave it, and each segment has exactly one
+ * separator with each of its endpoints. */
+static void check_navigation(const segvoronoi_diagram *diagram) {
+    size_t sites = segvoronoi_diagram_site_count(diagram);
+    size_t point_sites = segvoronoi_diagram_point_site_count(diagram);
+    size_t vertices = segvoronoi_diagram_vertex_count(diagram);
+    size_t edges = segvoronoi_diagram_edge_count(diagram);
+    size_t i, k, separators = 0;
+    uint32_t h, out, back, cell, next_cell, three[3];
+
+    for (h = 0; h < 2 * edges; ++h) {
+        segvoronoi_edge e = {.struct_size = sizeof(segvoronoi_edge)}, n = {.struct_size = sizeof(segvoronoi_edge)};
+        CHECK_STATUS(segvoronoi_diagram_edge(diagram, h / 2, &e), SEGVORONOI_STATUS_OK);
+        CHECK_STATUS(segvoronoi_diagram_half_edge_cell(diagram, h, &cell), SEGVORONOI_STATUS_OK);
+        CHECK(cell == e.sites[h & 1]);
+        CHECK_STATUS(segvoronoi_diagram_half_edge_next(diagram, h, &out), SEGVORONOI_STATUS_OK);
+        CHECK_STATUS(segvoronoi_diagram_half_edge_prev(diagram, out, &back), SEGVORONOI_STATUS_OK);
+        CHECK(back == h);
+        CHECK_STATUS(segvoronoi_diagram_half_edge_cell(diagram, out, &next_cell), SEGVORONOI_STATUS_OK);
+        CHECK(next_cell == cell);
+        CHECK_STATUS(segvoronoi_diagram_edge(diagram, out / 2, &n), SEGVORONOI_STATUS_OK);
+        /* the target of h is ends[1 - side]; the origin of the next is ends[its side] */
+        CHECK(e.ends[1 - (h & 1)].vertex == n.ends[out & 1].vertex);
+        if (h % 2 == 0 && e.is_separator) ++separators;
+    }
+    CHECK(separators == 2 * (sites - point_sites));
+    CHECK_STATUS(segvoronoi_diagram_half_edge_next(diagram, (uint32_t)(2 * edges), &out), SEGVORONOI_STATUS_OUT_OF_RANGE);
+    CHECK_STATUS(segvoronoi_diagram_half_edge_next(diagram, 0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    for (i = 0; i < vertices; ++i) {
+        CHECK_STATUS(segvoronoi_diagram_vertex_half_edges(diagram, i, three), SEGVORONOI_STATUS_OK);
+        for (k = 0; k < 3; ++k) {
+            segvoronoi_edge e = {.struct_size = sizeof(segvoronoi_edge)};
+            CHECK_STATUS(segvoronoi_diagram_edge(diagram, three[k] / 2, &e), SEGVORONOI_STATUS_OK);
+            CHECK(e.ends[three[k] & 1].vertex == i);
+        }
+    }
+    CHECK_STATUS(segvoronoi_diagram_vertex_half_edges(diagram, vertices, three), SEGVORONOI_STATUS_OUT_OF_RANGE);
+    for (i = 0; i < sites; ++i) {
+        size_t count = 0, edge_count = 0, j;
+        uint32_t *around;
+        CHECK_STATUS(segvoronoi_diagram_cell_half_edges(diagram, i, NULL, 0, &count), SEGVORONOI_STATUS_OK);
+        CHECK_STATUS(segvoronoi_diagram_cell_edges(diagram, i, NULL, 0, &edge_count), SEGVORONOI_STATUS_OK);
+        CHECK(count == edge_count);
+        if (count == 0) continue;
+        around = malloc(count * sizeof *around);
+        CHECK(around != NULL);
+        CHECK_STATUS(segvoronoi_diagram_cell_half_edges(diagram, i, around, count, &count), SEGVORONOI_STATUS_OK);
+        for (j = 0; j < count; ++j) {
+            CHECK_STATUS(segvoronoi_diagram_half_edge_next(diagram, around[j], &out), SEGVORONOI_STATUS_OK);
+            CHECK(out == around[(j + 1) % count]);
+        }
+        free(around);
+    }
+}
+
 /* Checks everything the accessors promise about one diagram of points and
  * segments: validate(), Euler's relation E = V + S - 1 (connected cells, one
  * vertex at infinity), point sites before segment sites, vertices
@@ -140,6 +198,7 @@ static void check_diagram(const segvoronoi_diagram *diagram) {
     uint32_t last_answer = SEGVORONOI_NO_SITE;
 
     CHECK_STATUS(segvoronoi_diagram_validate(diagram), SEGVORONOI_STATUS_OK);
+    check_navigation(diagram);
     if (sites > 0) CHECK(edges == vertices + sites - 1);
     CHECK(point_sites <= sites);
 

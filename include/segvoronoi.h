@@ -27,6 +27,11 @@
  * SEGVORONOI_STATUS_OK; a buffer that is too small gives
  * SEGVORONOI_STATUS_BUFFER_TOO_SMALL with *count and the first capacity
  * items written.
+ *
+ * Half-edges: each edge has two sides, numbered 2 * edge + side. Side 0
+ * runs from the edge's ends[0] to ends[1] with sites[0] on its left; side 1
+ * is its twin (h ^ 1). segvoronoi_diagram_half_edge_next walks around the
+ * cell on the left, counter-clockwise.
  */
 
 #ifndef SEGVORONOI_H
@@ -178,6 +183,9 @@ typedef struct segvoronoi_edge {
   // `true` when the edge is unbounded: a ray or a line, with an end at
   // infinity (`vertex == SEGVORONOI_NO_VERTEX`).
   bool is_infinite;
+  // `true` when the edge is a separator: between a segment and one of
+  // its own endpoints (the medial axis leaves these out). Since 0.2.
+  bool is_separator;
 } segvoronoi_edge;
 
 // Counts from the build. Versioned: set `struct_size` before the call (see
@@ -493,6 +501,54 @@ enum segvoronoi_status segvoronoi_diagram_topology(const struct segvoronoi_diagr
                                                    uint32_t flags,
                                                    char **text,
                                                    size_t *length);
+
+// The half-edge after `h` around the cell on its left, counter-clockwise,
+// in `*out` (around an unbounded cell, from the ray that leaves to
+// infinity to the ray that comes back).
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`h >= 2 * edge_count`); then
+// `*out` is untouched.
+enum segvoronoi_status segvoronoi_diagram_half_edge_next(const struct segvoronoi_diagram *diagram,
+                                                         uint32_t h,
+                                                         uint32_t *out);
+
+// The half-edge before `h` around the cell on its left, in `*out`.
+//
+// Errors: as `segvoronoi_diagram_half_edge_next`.
+enum segvoronoi_status segvoronoi_diagram_half_edge_prev(const struct segvoronoi_diagram *diagram,
+                                                         uint32_t h,
+                                                         uint32_t *out);
+
+// The site whose cell is on the left of half-edge `h`, in `*out`.
+//
+// Errors: as `segvoronoi_diagram_half_edge_next`.
+enum segvoronoi_status segvoronoi_diagram_half_edge_cell(const struct segvoronoi_diagram *diagram,
+                                                         uint32_t h,
+                                                         uint32_t *out);
+
+// The three half-edges leaving finite vertex `vertex`, counter-clockwise,
+// in `out[0..3]`; the cell on the left of `out[k]` is the vertex's
+// `sites[(k + 1) % 3]`.
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`; then `out` is untouched.
+enum segvoronoi_status segvoronoi_diagram_vertex_half_edges(const struct segvoronoi_diagram *diagram,
+                                                            size_t vertex,
+                                                            uint32_t *out);
+
+// The half-edges around the cell of site `site`, counter-clockwise, the
+// cell on their left (each is a side of the edge of
+// `segvoronoi_diagram_cell_edges` at the same place). Writes up to
+// `capacity` to `half_edges` and the full number to `*count`;
+// `half_edges = NULL, capacity = 0` only counts (`OK`).
+//
+// Errors: `NULL_ARGUMENT` (`count` NULL, or `half_edges` NULL with
+// `capacity > 0`), `OUT_OF_RANGE`, `BUFFER_TOO_SMALL` (then `*count` holds
+// the number needed and the first `capacity` are written).
+enum segvoronoi_status segvoronoi_diagram_cell_half_edges(const struct segvoronoi_diagram *diagram,
+                                                          size_t site,
+                                                          uint32_t *half_edges,
+                                                          size_t capacity,
+                                                          size_t *count);
 
 // Static text for a status code (a `segvoronoi_status` value); never NULL,
 // valid forever. Numbers that are no status give `"unknown status"`.

@@ -111,6 +111,9 @@ pub struct segvoronoi_edge {
     /// `true` when the edge is unbounded: a ray or a line, with an end at
     /// infinity (`vertex == SEGVORONOI_NO_VERTEX`).
     pub is_infinite: bool,
+    /// `true` when the edge is a separator: between a segment and one of
+    /// its own endpoints (the medial axis leaves these out). Since 0.2.
+    pub is_separator: bool,
 }
 versioned!(segvoronoi_edge, is_infinite: bool);
 
@@ -223,7 +226,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_site(
 }
 
 /// The site id of a C index, if in range.
-fn site_id(d: &Diagram, index: usize) -> Option<SiteId> {
+pub(super) fn site_id(d: &Diagram, index: usize) -> Option<SiteId> {
     (index < d.site_count()).then(|| SiteId::from_index(index))
 }
 
@@ -371,7 +374,8 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge(
             }
         };
         let (sites, ends) = (e.sites.map(|s| s.index() as u32), e.ends.map(end));
-        write_versioned(out, segvoronoi_edge { sites, ends, is_infinite: e.is_infinite(), ..Default::default() })
+        let is_separator = d.is_separator(e.id).unwrap_or(false);
+        write_versioned(out, segvoronoi_edge { sites, ends, is_infinite: e.is_infinite(), is_separator, ..Default::default() })
     })
 }
 

@@ -25,12 +25,14 @@
 
 mod builder;
 mod diagram;
+mod navigation;
 mod out;
 mod plumbing;
 mod shape;
 
 pub use builder::*;
 pub use diagram::*;
+pub use navigation::*;
 pub use shape::*;
 pub use plumbing::{
     segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version, segvoronoi_version_number,

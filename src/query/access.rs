@@ -353,7 +353,7 @@ impl Diagram {
     }
 
     /// Per half-edge its public edge id (`NONE` along the point at infinity).
-    fn edge_of_half_edge(&self) -> &[u32] {
+    pub(crate) fn edge_of_half_edge(&self) -> &[u32] {
         self.edge_of_half_edge.get_or_init(|| {
             let mut map = vec![NONE; self.store.twin.len()];
             for (i, &h) in self.edges.iter().enumerate() {
