@@ -13,6 +13,9 @@ pub enum ErrorKind {
     /// [`Error::indices`] holds both input indices (segment indices, or the
     /// point's index and then the segment's).
     Intersecting,
+    /// A polygon ring has fewer than three distinct points;
+    /// [`Error::indices`] holds the polygon's and the ring's index.
+    InvalidPolygon,
     /// The construction could not complete a valid diagram: a bug in
     /// segvoronoi, not in the input (none is known; with sound arithmetic it
     /// does not happen). The message says what failed; please report the

@@ -124,6 +124,7 @@ pub(super) fn finish(
         stats,
         extent,
         scale,
+        domain: None,
     }
 }
 

@@ -4,6 +4,7 @@
 mod finish;
 mod order;
 mod points;
+pub(crate) mod polygon_input;
 mod segment_input;
 mod sites;
 
@@ -40,6 +41,10 @@ pub const MAX_POINTS: usize = 600_000_000;
 pub struct Builder {
     points: Vec<Point>,
     segments: Vec<[Point; 2]>,
+    /// The rings of the polygons added (`polygon_input`), which bound the
+    /// domain, and how many polygons there are.
+    rings: Vec<polygon_input::RingInput>,
+    polygons: usize,
 }
 
 impl Builder {
@@ -158,11 +163,12 @@ impl Builder {
     /// sound arithmetic it does not happen), with a message saying what
     /// failed. The builder stays as it was.
     pub fn build(&self) -> Result<Diagram, Error> {
-        let (diagram, outcome) = if self.segments.is_empty() {
+        let (mut diagram, outcome) = if self.segments.is_empty() {
             build_points(&self.points)
         } else {
-            sites::build_sites(&self.points, &self.segments)?
+            sites::build_sites(&self.points, &self.segments).map_err(|e| polygon_input::name_rings(e, &self.rings))?
         };
+        diagram.set_domain(&self.rings);
         self.accept(diagram, outcome)
     }
 

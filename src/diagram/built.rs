@@ -71,4 +71,7 @@ pub struct Diagram {
     /// The power-of-two factor that brings the input into the range where
     /// squared distances cannot overflow (used by queries).
     pub(crate) scale: crate::geometry::scale::Scale,
+    /// Where each vertex, edge and cell lies against the polygons' rings,
+    /// when polygons were added (`query::domain`).
+    pub(crate) domain: Option<crate::query::Domain>,
 }

@@ -31,11 +31,14 @@ pub enum segvoronoi_status {
     /// builder is unchanged and `segvoronoi_builder_last_error` says what
     /// failed). Please report it with the input.
     Internal = 8,
+    /// A polygon ring has fewer than three distinct points (the message
+    /// names the polygon and the ring).
+    InvalidPolygon = 9,
 }
 
 impl segvoronoi_status {
     /// Every status, in numeric order.
-    const ALL: [segvoronoi_status; 9] = [
+    const ALL: [segvoronoi_status; 10] = [
         segvoronoi_status::Ok,
         segvoronoi_status::NullArgument,
         segvoronoi_status::InvalidCoordinate,
@@ -45,6 +48,7 @@ impl segvoronoi_status {
         segvoronoi_status::TooLarge,
         segvoronoi_status::InvalidArgument,
         segvoronoi_status::Internal,
+        segvoronoi_status::InvalidPolygon,
     ];
 
     fn from_number(n: c_int) -> Option<segvoronoi_status> {
@@ -59,6 +63,7 @@ impl From<&Error> for segvoronoi_status {
             ErrorKind::TooLarge => segvoronoi_status::TooLarge,
             ErrorKind::Intersecting => segvoronoi_status::Intersecting,
             ErrorKind::Internal => segvoronoi_status::Internal,
+            ErrorKind::InvalidPolygon => segvoronoi_status::InvalidPolygon,
         }
     }
 }
@@ -104,6 +109,7 @@ pub extern "C" fn segvoronoi_status_str(status: c_int) -> *const c_char {
         segvoronoi_status::TooLarge => c"too many input sites",
         segvoronoi_status::InvalidArgument => c"invalid argument",
         segvoronoi_status::Internal => c"internal error in segvoronoi",
+        segvoronoi_status::InvalidPolygon => c"a polygon ring has fewer than three distinct points",
     };
     s.as_ptr()
 }

@@ -4,11 +4,14 @@
 mod access;
 #[cfg(test)]
 pub(crate) mod audit;
+mod domain;
 mod navigation;
 mod shape;
 mod topology;
 
 pub use access::{Cell, Edge, EdgeEnd, Vertex};
+pub(crate) use domain::Domain;
+pub use domain::Location;
 pub use navigation::HalfEdge;
 pub use shape::EdgeShape;
 pub use topology::{TopologyOptions, ZERO_LENGTH};

@@ -1,0 +1,143 @@
+//! Polygons and polylines as input: each becomes a chain of segments, and
+//! the rings of polygons are remembered so that the diagram can tell the
+//! domain they bound (`query::domain`).
+
+use super::Builder;
+use crate::error::{Error, ErrorKind};
+use crate::geometry::Point;
+
+/// One ring of a polygon as the builder keeps it: which polygon and ring
+/// it is, and the input indices of its segments, in ring order.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct RingInput {
+    pub polygon: usize,
+    pub ring: usize,
+    pub segments: std::ops::Range<usize>,
+}
+
+impl Builder {
+    /// Adds a polygon: each ring a closed chain of points (the last joins
+    /// the first; a repeated closing point is accepted), as segments.
+    /// Returns, per ring, the input indices of the segments it made.
+    ///
+    /// The rings of all polygons bound the *domain* by the even-odd rule:
+    /// their orientation does not matter, a ring inside a ring is a hole,
+    /// islands in holes work, and several polygons may be added (see
+    /// [`crate::Diagram::vertex_location`]). Repeated consecutive points are
+    /// dropped. A ring with fewer than three distinct points, or a
+    /// non-finite coordinate, is [`ErrorKind::InvalidPolygon`] /
+    /// [`ErrorKind::InvalidCoordinate`] naming the polygon and the ring; the
+    /// builder is then unchanged. Rings that cross themselves or each other
+    /// are found by the build, as any crossing segments are
+    /// ([`ErrorKind::Intersecting`], naming both segments, and the message
+    /// the polygons and rings they belong to).
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, Location};
+    /// let mut b = Builder::new();
+    /// // a square with a square hole
+    /// let rings = b.add_polygon(&[
+    ///     vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]],
+    ///     vec![[4.0, 4.0], [4.0, 6.0], [6.0, 6.0], [6.0, 4.0]],
+    /// ])?;
+    /// assert_eq!(rings, vec![0..4, 4..8]);
+    /// let d = b.build()?;
+    /// assert!(d.has_domain());
+    /// let inside = d.vertices().filter(|v| d.vertex_location(v.id) == Some(Location::Inside)).count();
+    /// assert!(inside > 0);
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn add_polygon<P: Into<Point> + Copy, R: AsRef<[P]>>(&mut self, rings: &[R]) -> Result<Vec<std::ops::Range<usize>>, Error> {
+        let polygon = self.polygons;
+        let mut chains = Vec::with_capacity(rings.len());
+        for (ring, points) in rings.iter().enumerate() {
+            let points: Vec<Point> = points.as_ref().iter().map(|&p| p.into()).collect();
+            let mut chain = distinct_chain(&points, |k| {
+                let p = points[k];
+                Error::new(
+                    ErrorKind::InvalidCoordinate,
+                    format!("polygon {polygon}, ring {ring}: point {k} has a non-finite coordinate ({}, {})", p.x, p.y),
+                    vec![polygon, ring, k],
+                )
+            })?;
+            if chain.len() > 1 && chain.first() == chain.last() {
+                chain.pop();
+            }
+            if chain.len() < 3 {
+                return Err(Error::new(
+                    ErrorKind::InvalidPolygon,
+                    format!("polygon {polygon}, ring {ring} has {} distinct points; a ring needs three", chain.len()),
+                    vec![polygon, ring],
+                ));
+            }
+            chains.push(chain);
+        }
+        let first = self.segment_count();
+        let total: usize = chains.iter().map(Vec::len).sum();
+        self.reserve_segments(total)?;
+        let mut made = Vec::with_capacity(chains.len());
+        let mut next = first;
+        for (ring, chain) in chains.iter().enumerate() {
+            let segments = next..next + chain.len();
+            made.push(segments.clone());
+            self.rings.push(RingInput { polygon, ring, segments });
+            next += chain.len();
+        }
+        let closed = chains.iter().flat_map(|c| (0..c.len()).map(move |k| [c[k], c[(k + 1) % c.len()]]));
+        // finite, distinct and within capacity: checked above
+        self.add_segments(closed).expect("checked points");
+        self.polygons += 1;
+        Ok(made)
+    }
+
+    /// Adds an open chain of points as segments (repeated consecutive
+    /// points dropped) and returns their input indices. A polyline is an
+    /// obstacle, like any segment: it does not bound the domain. Fewer than
+    /// two distinct points add nothing.
+    pub fn add_polyline<P: Into<Point> + Copy>(&mut self, points: &[P]) -> Result<std::ops::Range<usize>, Error> {
+        let points: Vec<Point> = points.iter().map(|&p| p.into()).collect();
+        let chain = distinct_chain(&points, |k| {
+            let p = points[k];
+            Error::new(
+                ErrorKind::InvalidCoordinate,
+                format!("polyline point {k} has a non-finite coordinate ({}, {})", p.x, p.y),
+                vec![k],
+            )
+        })?;
+        self.add_segments(chain.windows(2).map(|w| [w[0], w[1]]))
+    }
+}
+
+/// The points with repeated consecutive ones dropped, or the error for the
+/// first non-finite one.
+fn distinct_chain(points: &[Point], non_finite: impl Fn(usize) -> Error) -> Result<Vec<Point>, Error> {
+    let mut chain: Vec<Point> = Vec::with_capacity(points.len());
+    for (k, &p) in points.iter().enumerate() {
+        if !p.is_finite() {
+            return Err(non_finite(k));
+        }
+        if chain.last() != Some(&p) {
+            chain.push(p);
+        }
+    }
+    Ok(chain)
+}
+
+/// An input error with the polygons and rings of the segments it names
+/// added to its message (a ring that crosses itself or another ring).
+pub(crate) fn name_rings(error: Error, rings: &[RingInput]) -> Error {
+    if error.kind() != ErrorKind::Intersecting || rings.is_empty() {
+        return error;
+    }
+    let named: Vec<String> = error
+        .indices()
+        .iter()
+        .filter_map(|&j| rings.iter().find(|r| r.segments.contains(&j)).map(|r| (j, r)))
+        .map(|(j, r)| format!("segment {j} is in polygon {}, ring {}", r.polygon, r.ring))
+        .collect();
+    if named.is_empty() {
+        return error;
+    }
+    let message = format!("{} ({})", error.message(), named.join("; "));
+    Error::new(error.kind(), message, error.indices().to_vec())
+}

@@ -1,0 +1,325 @@
+//! The domain bounded by the polygons' rings (even-odd rule), and where
+//! every vertex, edge and cell of the diagram lies: inside, outside, or on
+//! its boundary.
+//!
+//! The classification never looks at a rounded vertex position. Voronoi
+//! edges never cross an input segment, so each edge lies on one side of
+//! the boundary, and which side follows from the topology and exact
+//! orientation tests on input points:
+//! - in the cell of a ring segment `s = a → b`, the boundary walked
+//!   counter-clockwise runs below `s` from `a` to `b`, up the separator at
+//!   `b`, above `s` back to `a`, and down the separator at `a`: the edges
+//!   after the separator at `b` and before the one at `a` are on the left
+//!   of `a → b`, the others on its right;
+//! - the cell of a ring corner lies on the corner's reflex side (it is the
+//!   wedge between the perpendiculars of its two segments), decided by the
+//!   exact turn at the corner; a straight corner's cell has no interior;
+//! - the cell of an obstacle (an isolated point, a polyline or free
+//!   segment) lies where the obstacle lies: an exact even-odd test of one
+//!   of its points against the rings;
+//! - which side of a ring is inside: its orientation (the exact turn at its
+//!   lowest-leftmost vertex) and how many other rings contain it.
+//!
+//! Vertices take the location of their edges, except the vertices of
+//! radius zero at ring corners, which are on the boundary; cells of ring
+//! segments and corners are on the boundary.
+
+use crate::build::polygon_input::RingInput;
+use crate::diagram::{Diagram, EdgeId, SiteId, VertexId};
+use crate::geometry::predicates::{orientation, Orientation};
+use crate::geometry::{Point, Site};
+
+/// Where a vertex, edge or cell lies relative to the domain.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Location {
+    /// In the domain's interior.
+    Inside,
+    /// Outside the domain.
+    Outside,
+    /// On its boundary: a vertex at a ring corner, an edge of length zero
+    /// there, the cell of a ring's segment or corner (which lies on both
+    /// sides).
+    Boundary,
+}
+
+/// The classification, made once per build.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Domain {
+    rings: Vec<Ring>,
+    vertex: Vec<Location>,
+    edge: Vec<Location>,
+    cell: Vec<Location>,
+}
+
+/// A ring as the diagram sees it: its corners and segments as sites, in
+/// ring order (segment `k` from corner `k` to corner `k + 1`).
+#[derive(Clone, Debug)]
+struct Ring {
+    corners: Vec<SiteId>,
+    segments: Vec<SiteId>,
+    /// Whether the domain is on the left of the ring's direction.
+    left_inside: bool,
+}
+
+/// What a site is to the domain.
+#[derive(Clone, Copy)]
+enum Role {
+    /// Segment `k` of a ring: is the domain on the left of its site's
+    /// `a → b`?
+    RingSegment { left_inside: bool },
+    /// A ring corner: where its cell lies.
+    RingCorner { cell: Location },
+    /// An obstacle (or a point of no ring).
+    Obstacle,
+}
+
+impl Diagram {
+    /// Classifies the diagram against the rings the builder recorded (no
+    /// rings: no domain).
+    pub(crate) fn set_domain(&mut self, rings: &[RingInput]) {
+        self.domain = (!rings.is_empty()).then(|| self.classify(rings));
+    }
+
+    /// Whether polygons were added: then every vertex, edge and cell has a
+    /// [`Location`].
+    pub fn has_domain(&self) -> bool {
+        self.domain.is_some()
+    }
+
+    /// Where a vertex lies; `None` without a domain or out of range.
+    pub fn vertex_location(&self, v: VertexId) -> Option<Location> {
+        self.domain.as_ref()?.vertex.get(v.index()).copied()
+    }
+
+    /// Where an edge lies (all of it: an edge never crosses the boundary);
+    /// `None` without a domain or out of range.
+    pub fn edge_location(&self, e: EdgeId) -> Option<Location> {
+        self.domain.as_ref()?.edge.get(e.index()).copied()
+    }
+
+    /// Where a cell lies; `None` without a domain or out of range.
+    pub fn cell_location(&self, site: SiteId) -> Option<Location> {
+        self.domain.as_ref()?.cell.get(site.index()).copied()
+    }
+
+    /// Whether `p` (input coordinates) is in the domain, exactly (even-odd
+    /// rule over every ring); `None` without a domain.
+    pub fn locate_point(&self, p: Point) -> Option<Location> {
+        Some(self.point_location(&self.domain.as_ref()?.rings, p))
+    }
+
+    fn classify(&self, inputs: &[RingInput]) -> Domain {
+        let rings = self.rings_of(inputs);
+        let mut role = vec![Role::Obstacle; self.sites.len()];
+        for (r, ring) in rings.iter().enumerate() {
+            let n = ring.corners.len();
+            for k in 0..n {
+                let s = ring.segments[k];
+                // forward when the site runs from corner k to corner k + 1
+                let forward = self.segment_endpoints(s).is_some_and(|[a, _]| a == ring.corners[k]);
+                role[s.index()] = Role::RingSegment { left_inside: ring.left_inside == forward };
+                let [prev, here, next] = [ring.corners[(k + n - 1) % n], ring.corners[k], ring.corners[(k + 1) % n]];
+                let turn = orientation(self.point_of(prev), self.point_of(here), self.point_of(next));
+                // the reflex side: right of a left turn, left of a right turn
+                let cell = match turn {
+                    Orientation::Collinear => Location::Boundary,
+                    Orientation::CounterClockwise => inside_if(!rings[r].left_inside),
+                    Orientation::Clockwise => inside_if(rings[r].left_inside),
+                };
+                role[here.index()] = Role::RingCorner { cell };
+            }
+        }
+        let obstacle_location: Vec<Option<Location>> = (0..self.sites.len())
+            .map(|s| match role[s] {
+                Role::Obstacle => Some(self.point_location(&rings, self.point_of(SiteId::from_index(s)))),
+                _ => None,
+            })
+            .collect();
+        let cell: Vec<Location> = (0..self.sites.len())
+            .map(|s| obstacle_location[s].unwrap_or(Location::Boundary))
+            .collect();
+        let side_of = self.ring_segment_sides(&role);
+        // The location an edge has seen from the cell on the left of its
+        // half-edge `h`, where that cell tells.
+        let seen_from = |h: crate::HalfEdge| -> Option<Location> {
+            let s = self.half_edge_cell(h)?;
+            match role[s.index()] {
+                Role::RingSegment { left_inside } => side_of[h.index()].map(|left| inside_if(left == left_inside)),
+                Role::RingCorner { cell } => (cell != Location::Boundary).then_some(cell),
+                Role::Obstacle => obstacle_location[s.index()],
+            }
+        };
+        let edge: Vec<Location> = (0..self.edges.len())
+            .map(|e| {
+                let [h, t] = self.half_edges(EdgeId::from_index(e)).expect("in range");
+                seen_from(h).or_else(|| seen_from(t)).unwrap_or(Location::Boundary)
+            })
+            .collect();
+        let vertex: Vec<Location> = (0..self.finite_vertices)
+            .map(|v| {
+                let v = VertexId::from_index(v);
+                if self.is_ring_corner_vertex(v, &role) {
+                    return Location::Boundary;
+                }
+                let out = self.vertex_half_edges(v).expect("a finite vertex");
+                out.iter().map(|h| edge[h.edge().index()]).find(|&l| l != Location::Boundary).unwrap_or(Location::Boundary)
+            })
+            .collect();
+        Domain { rings, vertex, edge, cell }
+    }
+
+    /// Per half-edge on the boundary of a ring segment's cell (that cell on
+    /// its left): `Some(true)` when it is on the left of the site's
+    /// `a → b`, `Some(false)` on the right, `None` for the separators and
+    /// every other half-edge (see the module doc).
+    fn ring_segment_sides(&self, role: &[Role]) -> Vec<Option<bool>> {
+        let mut side = vec![None; 2 * self.edges.len()];
+        for (s, r) in role.iter().enumerate() {
+            if !matches!(r, Role::RingSegment { .. }) {
+                continue;
+            }
+            let s = SiteId::from_index(s);
+            let Some([a, b]) = self.segment_endpoints(s) else { continue };
+            let around: Vec<crate::HalfEdge> = self.cell_half_edges(s).collect();
+            let across = |h: &crate::HalfEdge| self.half_edge_cell(h.twin());
+            let (Some(at_a), Some(at_b)) =
+                (around.iter().position(|h| across(h) == Some(a)), around.iter().position(|h| across(h) == Some(b)))
+            else {
+                continue;
+            };
+            let n = around.len();
+            // after the separator at b, up to the one at a: the left
+            let mut k = (at_b + 1) % n;
+            while k != at_a {
+                side[around[k].index()] = Some(true);
+                k = (k + 1) % n;
+            }
+            let mut k = (at_a + 1) % n;
+            while k != at_b {
+                side[around[k].index()] = Some(false);
+                k = (k + 1) % n;
+            }
+        }
+        side
+    }
+
+    /// A vertex of radius zero at a ring corner: a corner and two segments
+    /// that both end there.
+    fn is_ring_corner_vertex(&self, v: VertexId, role: &[Role]) -> bool {
+        let sites = self.store.sites_of(v);
+        sites.iter().any(|&p| {
+            matches!(role[p.index()], Role::RingCorner { .. })
+                && sites.iter().filter(|&&s| s != p).all(|&s| self.segment_endpoints(s).is_some_and(|e| e.contains(&p)))
+        })
+    }
+
+    /// The rings with their corners, direction and inside side.
+    fn rings_of(&self, inputs: &[RingInput]) -> Vec<Ring> {
+        let mut rings: Vec<Ring> = inputs
+            .iter()
+            .map(|input| {
+                let segments: Vec<SiteId> = input.segments.clone().map(|j| self.segment_site[j]).collect();
+                let n = segments.len();
+                // corner k joins segment k - 1 and segment k
+                let corners = (0..n)
+                    .map(|k| {
+                        let (before, here) = (segments[(k + n - 1) % n], segments[k]);
+                        let ends = self.segment_endpoints(here).unwrap_or([here, here]);
+                        let shared = self.segment_endpoints(before).unwrap_or([before, before]);
+                        if shared.contains(&ends[0]) {
+                            ends[0]
+                        } else {
+                            ends[1]
+                        }
+                    })
+                    .collect();
+                Ring { corners, segments, left_inside: false }
+            })
+            .collect();
+        let counter_clockwise: Vec<bool> = rings.iter().map(|r| self.is_counter_clockwise(r)).collect();
+        for r in 0..rings.len() {
+            let depth = self.enclosing_rings(&rings, r);
+            rings[r].left_inside = counter_clockwise[r] == (depth % 2 == 0);
+        }
+        rings
+    }
+
+    /// The orientation of a ring, from the exact turn at its lowest-leftmost
+    /// corner (an extreme corner of a simple ring turns the ring's way).
+    fn is_counter_clockwise(&self, ring: &Ring) -> bool {
+        let n = ring.corners.len();
+        let key = |k: usize| {
+            let p = self.point_of(ring.corners[k]);
+            (p.x, p.y)
+        };
+        let low = (0..n).min_by(|&i, &j| key(i).partial_cmp(&key(j)).expect("finite")).unwrap_or(0);
+        let [prev, here, next] = [(low + n - 1) % n, low, (low + 1) % n].map(|k| self.point_of(ring.corners[k]));
+        orientation(prev, here, next) == Orientation::CounterClockwise
+    }
+
+    /// How many other rings contain ring `r` (rings neither cross nor
+    /// overlap, so one corner of `r` not on another ring tells).
+    fn enclosing_rings(&self, rings: &[Ring], r: usize) -> usize {
+        (0..rings.len())
+            .filter(|&other| other != r)
+            .filter(|&other| {
+                rings[r]
+                    .corners
+                    .iter()
+                    .map(|&c| self.ring_location(&rings[other], self.point_of(c)))
+                    .find(|&l| l != Location::Boundary)
+                    == Some(Location::Inside)
+            })
+            .count()
+    }
+
+    /// The even-odd location of `p` against all rings.
+    fn point_location(&self, rings: &[Ring], p: Point) -> Location {
+        let mut inside = false;
+        for ring in rings {
+            match self.ring_location(ring, p) {
+                Location::Boundary => return Location::Boundary,
+                Location::Inside => inside = !inside,
+                Location::Outside => {}
+            }
+        }
+        inside_if(inside)
+    }
+
+    /// Whether `p` is inside one ring, exactly: a ray to the right crosses
+    /// an edge that runs upward with `p` on its left, or downward with `p`
+    /// on its right (half-open in `y`, so a corner is counted once).
+    fn ring_location(&self, ring: &Ring, p: Point) -> Location {
+        let n = ring.corners.len();
+        let mut inside = false;
+        for k in 0..n {
+            let (a, b) = (self.point_of(ring.corners[k]), self.point_of(ring.corners[(k + 1) % n]));
+            let turn = orientation(a, b, p);
+            if turn == Orientation::Collinear && p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y) {
+                return Location::Boundary;
+            }
+            let upward = a.y <= p.y && p.y < b.y;
+            let downward = b.y <= p.y && p.y < a.y;
+            if (upward && turn == Orientation::CounterClockwise) || (downward && turn == Orientation::Clockwise) {
+                inside = !inside;
+            }
+        }
+        inside_if(inside)
+    }
+
+    /// The coordinates of a point site.
+    fn point_of(&self, s: SiteId) -> Point {
+        match self.sites[s.index()] {
+            Site::Point(p) => p,
+            Site::Segment { a, .. } => a,
+        }
+    }
+}
+
+fn inside_if(inside: bool) -> Location {
+    if inside {
+        Location::Inside
+    } else {
+        Location::Outside
+    }
+}
