@@ -51,7 +51,7 @@ pub use build::{Builder, MAX_POINTS};
 pub use diagram::{BuildStats, Diagram, EdgeId, SiteId, ValidationError, VertexId};
 pub use error::{Error, ErrorKind};
 pub use geometry::{Point, Site};
-pub use query::{Cell, Edge, EdgeEnd, HalfEdge, Location, TopologyOptions, Vertex, ZERO_LENGTH};
+pub use query::{Cell, Chain, Edge, EdgeEnd, HalfEdge, Location, MedialAxis, Piece, TopologyOptions, Vertex, ZERO_LENGTH};
 pub use query::EdgeShape;
 
 /// Fault injection for tests: make the floating-point decisions lie and watch

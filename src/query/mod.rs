@@ -5,6 +5,7 @@ mod access;
 #[cfg(test)]
 pub(crate) mod audit;
 mod domain;
+mod medial_axis;
 mod navigation;
 mod shape;
 mod topology;
@@ -12,6 +13,7 @@ mod topology;
 pub use access::{Cell, Edge, EdgeEnd, Vertex};
 pub(crate) use domain::Domain;
 pub use domain::Location;
+pub use medial_axis::{Chain, MedialAxis, Piece};
 pub use navigation::HalfEdge;
 pub use shape::EdgeShape;
 pub use topology::{TopologyOptions, ZERO_LENGTH};

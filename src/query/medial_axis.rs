@@ -1,0 +1,200 @@
+//! The medial axis: the Voronoi edges inside the domain that are not
+//! separators, as a graph of chains (maximal paths through vertices where
+//! exactly two of its edges meet), each a list of exact pieces with the
+//! clearance along them; and the largest disk inside the domain.
+//!
+//! Without a domain (no polygon was added) the chains cover every edge that
+//! is not a separator, rays included: the ordinary segment Voronoi diagram
+//! as a graph.
+
+use crate::diagram::{Diagram, EdgeId, VertexId};
+use crate::geometry::Point;
+use crate::query::{EdgeEnd, EdgeShape, HalfEdge, Location};
+
+/// One edge of the medial axis, walked in the chain's direction.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Piece {
+    /// The Voronoi edge.
+    pub edge: EdgeId,
+    /// `true` when the chain walks the edge from its `ends[1]` to `ends[0]`.
+    pub reversed: bool,
+    /// Where the piece starts and ends, in the chain's direction.
+    pub ends: [EdgeEnd; 2],
+    /// The clearance (radius of the largest empty disk centred there) at
+    /// both ends; infinite at an end at infinity.
+    pub clearance: [f64; 2],
+    /// Its curve: a straight piece, or an arc of the parabola of a point
+    /// and a segment's line (the same shapes as [`Diagram::edge_shape`]).
+    pub shape: EdgeShape,
+}
+
+/// A maximal path of the medial axis through vertices of degree two: from
+/// a vertex where it branches or ends (or infinity) to another, or a closed
+/// cycle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Chain {
+    /// The pieces, in order; consecutive pieces share an end.
+    pub pieces: Vec<Piece>,
+    /// Whether the chain is a cycle (its last piece ends where the first
+    /// starts and every vertex on it has degree two).
+    pub closed: bool,
+}
+
+/// The medial axis as chains (see the module doc).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct MedialAxis {
+    /// Every chain; each edge of the medial axis is in exactly one.
+    pub chains: Vec<Chain>,
+}
+
+impl Diagram {
+    /// The medial axis: the edges inside the domain that are not separators
+    /// (every non-separator edge when there is no domain), as chains.
+    ///
+    /// ```
+    /// use segvoronoi::Builder;
+    /// let mut b = Builder::new();
+    /// b.add_polygon(&[vec![[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]])?;
+    /// let d = b.build()?;
+    /// let axis = d.medial_axis();
+    /// // a rectangle: the middle line and two forks to each end's corners
+    /// let pieces: usize = axis.chains.iter().map(|c| c.pieces.len()).sum();
+    /// assert_eq!(pieces, 5);
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn medial_axis(&self) -> MedialAxis {
+        let in_axis: Vec<bool> = (0..self.edges.len()).map(|e| self.in_medial_axis(EdgeId::from_index(e))).collect();
+        let degree = |end: EdgeEnd| -> usize {
+            match end {
+                EdgeEnd::Vertex(v) => self
+                    .vertex_half_edges(v)
+                    .map_or(0, |out| out.iter().filter(|h| in_axis[h.edge().index()]).count()),
+                EdgeEnd::Infinite { .. } => 0,
+            }
+        };
+        let mut used = vec![false; self.edges.len()];
+        let mut chains = Vec::new();
+        // Open chains first: from every end whose degree is not two.
+        let starts = (0..self.edges.len()).filter(|&e| in_axis[e]).flat_map(|e| {
+            let [h, t] = self.half_edges(EdgeId::from_index(e)).expect("in range");
+            [h, t]
+        });
+        for h in starts {
+            let origin = self.half_edge_origin(h).expect("in range");
+            if used[h.edge().index()] || degree(origin) == 2 {
+                continue;
+            }
+            chains.push(self.walk_chain(h, &in_axis, &mut used, &degree));
+        }
+        // What is left are cycles through vertices of degree two.
+        for e in 0..self.edges.len() {
+            if in_axis[e] && !used[e] {
+                let [h, _] = self.half_edges(EdgeId::from_index(e)).expect("in range");
+                chains.push(self.walk_chain(h, &in_axis, &mut used, &degree));
+            }
+        }
+        MedialAxis { chains }
+    }
+
+    /// Whether an edge belongs to the medial axis.
+    fn in_medial_axis(&self, e: EdgeId) -> bool {
+        let inside = match self.edge_location(e) {
+            Some(location) => location == Location::Inside,
+            None => true,
+        };
+        inside && self.is_separator(e) == Some(false)
+    }
+
+    /// The chain that starts with half-edge `h`, through vertices of degree
+    /// two, until a vertex of another degree, infinity, or back at the start.
+    fn walk_chain(&self, first: HalfEdge, in_axis: &[bool], used: &mut [bool], degree: &impl Fn(EdgeEnd) -> usize) -> Chain {
+        let mut pieces = Vec::new();
+        let mut h = first;
+        let mut closed = false;
+        loop {
+            used[h.edge().index()] = true;
+            pieces.push(self.piece(h));
+            let end = self.half_edge_target(h).expect("in range");
+            let EdgeEnd::Vertex(v) = end else { break };
+            if degree(end) != 2 {
+                break;
+            }
+            let next = self.continue_at(v, h, in_axis);
+            match next {
+                Some(n) if n == first => {
+                    closed = true;
+                    break;
+                }
+                Some(n) if !used[n.edge().index()] => h = n,
+                _ => break,
+            }
+        }
+        Chain { pieces, closed }
+    }
+
+    /// The other medial-axis half-edge leaving `v` (of degree two), after
+    /// arriving by `h`.
+    fn continue_at(&self, v: VertexId, arrived: HalfEdge, in_axis: &[bool]) -> Option<HalfEdge> {
+        let out = self.vertex_half_edges(v)?;
+        out.into_iter().find(|o| in_axis[o.edge().index()] && o.edge() != arrived.edge())
+    }
+
+    /// The piece of half-edge `h`.
+    fn piece(&self, h: HalfEdge) -> Piece {
+        let ends = [self.half_edge_origin(h).expect("in range"), self.half_edge_target(h).expect("in range")];
+        let clearance = ends.map(|end| match end {
+            EdgeEnd::Vertex(v) => self.vertex(v).map_or(f64::NAN, |v| v.clearance),
+            EdgeEnd::Infinite { .. } => f64::INFINITY,
+        });
+        let shape = self.edge_shape(h.edge()).expect("in range");
+        Piece { edge: h.edge(), reversed: h.is_reversed(), ends, clearance, shape }
+    }
+
+    /// The points of a finite piece within `tolerance` of its curve (as
+    /// [`Diagram::edge_polyline`], in the piece's direction), each with its
+    /// clearance: `[x, y, r]`. `None` for a piece reaching infinity or a
+    /// tolerance that is not positive.
+    pub fn sample_piece(&self, piece: &Piece, tolerance: f64) -> Option<Vec<[f64; 3]>> {
+        let mut points = self.edge_polyline(piece.edge, tolerance)?;
+        if piece.reversed {
+            points.reverse();
+        }
+        let site = self.edge(piece.edge)?.sites[0];
+        let site = self.site(site)?;
+        Some(points.into_iter().map(|p| [p.x, p.y, site.distance(p)]).collect())
+    }
+
+    /// The points of a chain within `tolerance` (see [`Diagram::sample_piece`]),
+    /// shared ends once; `None` when a piece reaches infinity.
+    pub fn sample_chain(&self, chain: &Chain, tolerance: f64) -> Option<Vec<[f64; 3]>> {
+        let mut out: Vec<[f64; 3]> = Vec::new();
+        for piece in &chain.pieces {
+            let points = self.sample_piece(piece, tolerance)?;
+            let skip = usize::from(!out.is_empty());
+            out.extend(points.into_iter().skip(skip));
+        }
+        Some(out)
+    }
+
+    /// The largest disk inside the domain: its centre and radius (the
+    /// inside vertex of largest clearance: along an edge of the medial axis
+    /// the clearance has no maximum inside the edge — linear between two
+    /// segments, convex along a parabola or between two points). `None`
+    /// without a domain or when nothing is inside.
+    ///
+    /// ```
+    /// use segvoronoi::Builder;
+    /// let mut b = Builder::new();
+    /// b.add_polygon(&[vec![[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]])?;
+    /// let (centre, r) = b.build()?.max_inscribed_circle().unwrap();
+    /// assert!((r - 1.0).abs() < 1e-12 && (centre.y - 1.0).abs() < 1e-12);
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn max_inscribed_circle(&self) -> Option<(Point, f64)> {
+        self.domain.as_ref()?;
+        self.vertices()
+            .filter(|v| self.vertex_location(v.id) == Some(Location::Inside))
+            .max_by(|a, b| a.clearance.total_cmp(&b.clearance))
+            .map(|v| (v.position, v.clearance))
+    }
+}

@@ -1,0 +1,221 @@
+//! The medial axis (`Diagram::medial_axis`, `sample_chain`,
+//! `max_inscribed_circle`): closed forms (rectangle, regular polygons, an
+//! annulus), the graph's shape (each edge once, connected, one independent
+//! cycle per hole), and brute force on random polygons with holes: every
+//! sampled point is inside, at the distance it says from the nearest
+//! segment, and equidistant from the two sites of its edge.
+
+mod common;
+
+use segvoronoi::{Builder, Diagram, EdgeEnd, Location, MedialAxis, Point, Site};
+use std::collections::HashMap;
+
+fn build(rings: &[Vec<[f64; 2]>]) -> Diagram {
+    let mut b = Builder::new();
+    b.add_polygon(rings).expect("a valid polygon");
+    let d = b.build().expect("a diagram");
+    d.validate().unwrap();
+    d
+}
+
+fn regular(n: usize, r: f64, phase: f64) -> Vec<[f64; 2]> {
+    (0..n)
+        .map(|k| {
+            let t = phase + std::f64::consts::TAU * k as f64 / n as f64;
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect()
+}
+
+fn star(n: usize, cx: f64, cy: f64, r0: f64, r1: f64, rng: &mut common::Rng) -> Vec<[f64; 2]> {
+    (0..n)
+        .map(|k| {
+            let t = std::f64::consts::TAU * (k as f64 + 0.3 * rng.unit()) / n as f64;
+            let r = r0 + (r1 - r0) * rng.unit();
+            [cx + r * t.cos(), cy + r * t.sin()]
+        })
+        .collect()
+}
+
+fn ring_segments(rings: &[Vec<[f64; 2]>]) -> Vec<Site> {
+    rings
+        .iter()
+        .flat_map(|r| {
+            (0..r.len()).map(move |k| {
+                let (a, b) = (r[k], r[(k + 1) % r.len()]);
+                Site::Segment { a: Point::new(a[0], a[1]), b: Point::new(b[0], b[1]) }
+            })
+        })
+        .collect()
+}
+
+fn even_odd(rings: &[Vec<[f64; 2]>], p: Point) -> bool {
+    let mut inside = false;
+    for ring in rings {
+        for k in 0..ring.len() {
+            let ([ax, ay], [bx, by]) = (ring[k], ring[(k + 1) % ring.len()]);
+            if (ay > p.y) != (by > p.y) && p.x < ax + (p.y - ay) * (bx - ax) / (by - ay) {
+                inside = !inside;
+            }
+        }
+    }
+    inside
+}
+
+/// Each edge in exactly one chain; consecutive pieces meet; returns
+/// (edges, vertices, components) of the graph.
+fn graph_shape(d: &Diagram, axis: &MedialAxis) -> (usize, usize, usize) {
+    let mut seen = HashMap::new();
+    for chain in &axis.chains {
+        for w in chain.pieces.windows(2) {
+            assert_eq!(w[0].ends[1], w[1].ends[0], "consecutive pieces meet");
+        }
+        if chain.closed {
+            assert_eq!(chain.pieces.last().unwrap().ends[1], chain.pieces[0].ends[0]);
+        }
+        for p in &chain.pieces {
+            assert!(seen.insert(p.edge, ()).is_none(), "edge {:?} in two chains", p.edge);
+            assert_eq!(d.edge_location(p.edge).unwrap_or(Location::Inside), Location::Inside);
+            assert_eq!(d.is_separator(p.edge), Some(false));
+        }
+    }
+    // union-find over vertex ids
+    let mut parent: HashMap<usize, usize> = HashMap::new();
+    fn find(parent: &mut HashMap<usize, usize>, x: usize) -> usize {
+        let p = *parent.entry(x).or_insert(x);
+        if p == x {
+            return x;
+        }
+        let root = find(parent, p);
+        parent.insert(x, root);
+        root
+    }
+    let mut edges = 0;
+    for chain in &axis.chains {
+        for p in &chain.pieces {
+            edges += 1;
+            let ids: Vec<usize> = p.ends.iter().filter_map(|e| if let EdgeEnd::Vertex(v) = e { Some(v.index()) } else { None }).collect();
+            for &v in &ids {
+                find(&mut parent, v);
+            }
+            if let [u, v] = ids[..] {
+                let (ru, rv) = (find(&mut parent, u), find(&mut parent, v));
+                parent.insert(ru, rv);
+            }
+        }
+    }
+    let vertices = parent.len();
+    let roots: std::collections::HashSet<usize> = parent.keys().copied().collect::<Vec<_>>().into_iter().map(|v| find(&mut parent, v)).collect();
+    (edges, vertices, roots.len())
+}
+
+fn positive_length_pieces(d: &Diagram, axis: &MedialAxis) -> usize {
+    let position = |e: EdgeEnd| match e {
+        EdgeEnd::Vertex(v) => Some(d.vertex(v).unwrap().position),
+        EdgeEnd::Infinite { .. } => None,
+    };
+    axis.chains
+        .iter()
+        .flat_map(|c| &c.pieces)
+        .filter(|p| match (position(p.ends[0]), position(p.ends[1])) {
+            (Some(a), Some(b)) => a.distance(b) > 1e-12 * d.extent(),
+            _ => true,
+        })
+        .count()
+}
+
+#[test]
+fn a_rectangle_has_five_pieces() {
+    let d = build(&[vec![[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]]);
+    let axis = d.medial_axis();
+    assert_eq!(positive_length_pieces(&d, &axis), 5);
+    let (e, v, c) = graph_shape(&d, &axis);
+    assert_eq!((c, e + c - v), (1, 0), "connected, no cycle");
+    let (centre, r) = d.max_inscribed_circle().unwrap();
+    assert!((r - 1.0).abs() < 1e-12 && (centre.y - 1.0).abs() < 1e-12 && (1.0..=3.0).contains(&centre.x));
+}
+
+#[test]
+fn a_regular_polygon_is_a_star_of_spokes() {
+    for n in [3, 5, 8, 17, 64] {
+        let d = build(&[regular(n, 10.0, 0.1)]);
+        let axis = d.medial_axis();
+        assert_eq!(positive_length_pieces(&d, &axis), n, "{n}-gon");
+        let (e, v, c) = graph_shape(&d, &axis);
+        assert_eq!((c, e + c - v), (1, 0), "{n}-gon: connected, no cycle");
+        let (centre, r) = d.max_inscribed_circle().unwrap();
+        let expected = 10.0 * (std::f64::consts::PI / n as f64).cos();
+        assert!((r - expected).abs() < 1e-9 && centre.x.abs() < 1e-9 && centre.y.abs() < 1e-9, "{n}-gon: {centre:?} {r}");
+    }
+}
+
+#[test]
+fn holes_give_independent_cycles() {
+    // an annulus between two polygons: one cycle
+    let d = build(&[regular(12, 10.0, 0.0), regular(7, 3.0, 0.2)]);
+    let (e, v, c) = graph_shape(&d, &d.medial_axis());
+    assert_eq!((c, e + c - v), (1, 1));
+    // three holes: three cycles; an island in a hole is its own component
+    let square = |x: f64, y: f64, s: f64| vec![[x, y], [x + s, y], [x + s, y + s], [x, y + s]];
+    let rings = vec![square(0.0, 0.0, 30.0), square(2.0, 2.0, 5.0), square(20.0, 3.0, 4.0), square(8.0, 18.0, 10.0), square(10.0, 20.0, 6.0)];
+    let d = build(&rings);
+    let (e, v, c) = graph_shape(&d, &d.medial_axis());
+    assert_eq!((c, e + c - v), (2, 3));
+}
+
+#[test]
+fn sampled_points_are_inside_at_their_clearance() {
+    let mut rng = common::Rng(17);
+    for _ in 0..20 {
+        let rings = vec![star(10 + (rng.next_u64() % 50) as usize, 0.0, 0.0, 6.0, 10.0, &mut rng), star(6, 0.5, 0.0, 1.0, 2.5, &mut rng)];
+        let d = build(&rings);
+        let segments = ring_segments(&rings);
+        let axis = d.medial_axis();
+        let (e, v, c) = graph_shape(&d, &axis);
+        assert_eq!((c, e + c - v), (1, 1), "connected with one cycle around the hole");
+        let tolerance = 1e-3;
+        let scale = 1e-9 * d.extent();
+        let mut samples = 0;
+        for chain in &axis.chains {
+            let points = d.sample_chain(chain, tolerance).expect("finite inside a polygon");
+            for [x, y, r] in points {
+                let q = Point::new(x, y);
+                let nearest = segments.iter().map(|s| s.distance(q)).fold(f64::INFINITY, f64::min);
+                assert!((nearest - r).abs() <= scale.max(1e-9 * r), "clearance {r} but nearest {nearest} at {q:?}");
+                if r > 1e-6 {
+                    assert!(even_odd(&rings, q), "{q:?} outside");
+                }
+                samples += 1;
+            }
+            for piece in &chain.pieces {
+                let [s, t] = d.edge(piece.edge).unwrap().sites.map(|s| d.site(s).unwrap());
+                for [x, y, _] in d.sample_piece(piece, tolerance).unwrap() {
+                    let q = Point::new(x, y);
+                    assert!((s.distance(q) - t.distance(q)).abs() <= scale.max(1e-9 * s.distance(q)), "not equidistant at {q:?}");
+                }
+            }
+        }
+        assert!(samples > 0);
+        // no point of a grid inside the domain has a larger clearance
+        let (_, r) = d.max_inscribed_circle().unwrap();
+        for i in 0..60 {
+            for j in 0..60 {
+                let q = Point::new(-10.0 + 20.0 * i as f64 / 59.0, -10.0 + 20.0 * j as f64 / 59.0);
+                if even_odd(&rings, q) {
+                    let clearance = segments.iter().map(|s| s.distance(q)).fold(f64::INFINITY, f64::min);
+                    assert!(clearance <= r + 1e-9, "{q:?} has clearance {clearance} > {r}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn without_a_domain_the_chains_cover_every_edge_but_separators() {
+    let (points, segments) = common::segment_grid(5, 3, 0.5);
+    let d = common::build_sites(&points, &segments);
+    let axis = d.medial_axis();
+    let (e, _, _) = graph_shape(&d, &axis);
+    assert_eq!(e, d.edges().filter(|e| d.is_separator(e.id) == Some(false)).count());
+    assert!(d.max_inscribed_circle().is_none());
+}
