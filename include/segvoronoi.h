@@ -113,6 +113,9 @@ typedef enum segvoronoi_status {
   // builder is unchanged and `segvoronoi_builder_last_error` says what
   // failed). Please report it with the input.
   SEGVORONOI_STATUS_INTERNAL = 8,
+  // A polygon ring has fewer than three distinct points (the message
+  // names the polygon and the ring).
+  SEGVORONOI_STATUS_INVALID_POLYGON = 9,
 } segvoronoi_status;
 
 // Collects input sites. Opaque. Create with `segvoronoi_builder_new`, free

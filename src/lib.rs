@@ -31,8 +31,8 @@
 //!   determinants), vertex solvers, power-of-two normalisation.
 //! - `diagram`: the half-edge store with typed ids and its invariant checker
 //!   ([`Diagram::validate`]); it never reads coordinates to decide anything.
-//! - `build`: [`Builder`], input checking, insertion order, the
-//!   topology-oriented insertion.
+//! - `construct`: [`Builder`], input checking, insertion order, the
+//!   topology-oriented insertion of points and segments.
 //! - `query`: iteration over vertices, edges and cells, canonical topology.
 //! - `ffi`: the C API (`include/segvoronoi.h`), which only converts and
 //!   delegates.
@@ -40,14 +40,14 @@
 // An undocumented public item (and so an undocumented C export) fails the build.
 #![deny(missing_docs)]
 
-mod build;
+mod construct;
 mod diagram;
 mod error;
 pub mod ffi;
 pub mod geometry;
 mod query;
 
-pub use build::{Builder, MAX_POINTS};
+pub use construct::{Builder, MAX_POINTS};
 pub use diagram::{BuildStats, Diagram, EdgeId, SiteId, ValidationError, VertexId};
 pub use error::{Error, ErrorKind};
 pub use geometry::{Point, Site};
@@ -60,7 +60,7 @@ pub use query::EdgeShape;
 /// feature.
 #[cfg(feature = "fault-injection")]
 pub mod fault_injection {
-    pub use crate::build::set_restart_budget;
+    pub use crate::construct::set_restart_budget;
     pub use crate::geometry::fault::{set_fault_mode, FaultMode};
 }
 

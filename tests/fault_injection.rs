@@ -164,8 +164,8 @@ fn ten_thousand_segments_with_random_arithmetic() {
 /// star with points among its spokes, the unit-segment lattice. Closed
 /// chains wall off their inside, and lying numbers can misplace a site
 /// against them; the construction then starts over with the stuck segment
-/// first (`build::construct_from`), which these inputs need for about one
-/// seed in three.
+/// first (`construct::restart::insert_all_from`), which these inputs need
+/// for about one seed in three.
 #[test]
 fn shared_endpoints_with_lying_arithmetic() {
     for mode in [FaultMode::Noise(1e-3), FaultMode::Noise(1e-9), FaultMode::Random] {
@@ -218,7 +218,7 @@ impl Drop for RestartBudget {
 /// Closed chains around a point at the centre of a lattice square (on the
 /// circle of its four corners, equidistant from its four sides) and one
 /// elsewhere: the ties make lying numbers misplace the points against the
-/// chains, so several seeds need a restart (`build::construct_from`).
+/// chains, so several seeds need a restart (`construct::restart::insert_all_from`).
 fn closed_chains() -> (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>) {
     (vec![[0.5, 0.5], [2.3, 1.7]], unit_segment_lattice(6))
 }

@@ -24,6 +24,7 @@ pub(crate) mod real;
 pub(crate) mod scale;
 pub mod solvers;
 pub mod site;
+pub(crate) mod segment_contact;
 pub(crate) mod segment_predicates;
 pub(crate) mod segment_solvers;
 pub(crate) mod vertex_placement;

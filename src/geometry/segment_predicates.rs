@@ -9,7 +9,7 @@
 //!
 //! Each answer holds one number and gives its sign as an enum and,
 //! separately, its magnitude, used only to rank candidates (the strip test
-//! is a plain yes or no). The construction (`build::points::segments`) decides
+//! is a plain yes or no). The construction (`construct::insert_segment`) decides
 //! which vertex, edge or site to ask about and what its sites are; nothing
 //! here knows about the diagram. In the fault-injection build the numbers
 //! are perturbed here (`fault`), one draw per quantity, in the order the

@@ -24,7 +24,7 @@
 //! radius zero at ring corners, which are on the boundary; cells of ring
 //! segments and corners are on the boundary.
 
-use crate::build::polygon_input::RingInput;
+use crate::construct::polygon_input::RingInput;
 use crate::diagram::{Diagram, EdgeId, SiteId, VertexId};
 use crate::geometry::predicates::{orientation, Orientation};
 use crate::geometry::{Point, Site};

@@ -4,12 +4,12 @@
 //! closed cycle that is, by its margin (from the vertices the cuts would
 //! create: `geometry::segment_predicates::middle_margin`).
 
-use super::super::PointDiagram;
+use crate::construct::state::Construction;
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
 use crate::geometry::segment_predicates::{self, in_strip, EdgeContact, EdgeMiddle, FiniteEdge, MiddleMargin};
 use crate::geometry::Point;
 
-impl PointDiagram {
+impl Construction {
     /// Grows the tree from the path: P3, P5, the segment entering the
     /// circle (criteria 1, 2.3), never beyond a deleted vertex outside the
     /// strip (criterion 2.2). A vertex whose other edges lead into the tree

@@ -8,7 +8,7 @@ use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashSet};
 use std::hash::{BuildHasherDefault, Hash, Hasher};
 
-use super::super::PointDiagram;
+use crate::construct::state::Construction;
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
 use crate::geometry::predicates::{CirclePosition, Orientation};
 use crate::geometry::segment_predicates::{EdgeMiddle, LeftDegree};
@@ -27,7 +27,7 @@ impl Path {
     /// (each from both of its ends).
     fn chords<'a>(
         &'a self,
-        d: &'a PointDiagram,
+        d: &'a Construction,
         on_path: impl Fn(VertexId) -> bool + 'a,
     ) -> impl Iterator<Item = HalfEdgeId> + 'a {
         self.vertices
@@ -59,7 +59,7 @@ struct PathWalk {
     alternatives: BinaryHeap<Reverse<(u64, usize, VertexId, HalfEdgeId)>>,
 }
 
-impl PointDiagram {
+impl Construction {
     /// Finds the path of P4 and makes it the start of the tree (marked with
     /// the current epoch); the edges between path vertices other than the
     /// path's own are cut twice. Returns `false` when no path was found

@@ -2,7 +2,7 @@
 //! the rings of polygons are remembered so that the diagram can tell the
 //! domain they bound (`query::domain`).
 
-use super::Builder;
+use super::builder::Builder;
 use crate::error::{Error, ErrorKind};
 use crate::geometry::Point;
 

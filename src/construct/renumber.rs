@@ -2,7 +2,8 @@
 //! order of first appearance in the input, finite vertices first, positions
 //! back in input coordinates, and the dense list of public edges.
 
-use super::points::{Parts, PointDiagram, INFINITE};
+use super::input_check::CheckedInput;
+use super::state::{Construction, Parts, INFINITE};
 use crate::diagram::{BuildStats, Diagram, HalfEdgeId, SiteId, VertexId, NONE};
 use crate::geometry::scale::Scale;
 use crate::geometry::{Point, Site};
@@ -19,8 +20,8 @@ pub(super) struct SegmentSite {
 /// `input` (whose `i`-th point became internal site `site_of_input[i]`),
 /// then `segments` in the order given. The diagram's per-input maps are
 /// left for the caller (`input_site` holds all of `input`).
-pub(super) fn finish(
-    built: PointDiagram,
+pub(super) fn renumber(
+    built: Construction,
     site_of_input: &[SiteId],
     input: &[Point],
     segments: &[SegmentSite],
@@ -137,4 +138,28 @@ fn bounding_box_diagonal(point_sites: &[Site]) -> f64 {
     // halve first so that the extent of huge inputs does not overflow
     let (dx, dy) = (hi.x / 2.0 - lo.x / 2.0, hi.y / 2.0 - lo.y / 2.0);
     2.0 * dx.hypot(dy)
+}
+
+/// The per-input maps and statistics of a build with segments, after
+/// [`renumber`] (whose `input` was the `points` isolated points followed by
+/// each of the `segments` input segments' two endpoints).
+pub(super) fn number_segment_inputs(diagram: &mut Diagram, checked: &CheckedInput, points: usize, segments: usize) {
+    // Per input segment, its site: a kept one its own, a repeat the first
+    // one's, a zero-length one the point it became.
+    let first_segment_site = diagram.point_sites;
+    diagram.segment_site = checked
+        .kept_of_input
+        .iter()
+        .enumerate()
+        .map(|(j, kept)| match *kept {
+            Some(k) => SiteId::from_index(first_segment_site + k),
+            None => diagram.input_site[super::endpoint_index(points, j)[0]],
+        })
+        .collect();
+    diagram.input_site.truncate(points);
+    diagram.stats.input_points = points;
+    diagram.stats.input_segments = segments;
+    diagram.stats.duplicate_points = checked.duplicate_points;
+    diagram.stats.duplicate_segments = checked.duplicate_segments;
+    diagram.stats.zero_length_segments = checked.degenerate_segments;
 }

@@ -37,68 +37,95 @@
 //! numbers, so the symbolic point at infinity needs no far-away sites.
 //!
 //! Inputs whose points are all collinear never come here: their diagram is
-//! a ladder of parallel lines with the segments as rungs
-//! (`start_collinear_with_segments`).
+//! a ladder of parallel lines with the segments as rungs (`collinear.rs`).
+//!
+//! `insert_segments` inserts them all (in an order by midpoint), the
+//! path of P4 is in `path.rs`, the growth of P3/P5 and the edges cut twice
+//! in `growth.rs`; both end in `deletion_tree.rs`'s `replace_tree`.
 
 mod growth;
 mod path;
 #[cfg(test)]
 mod tests;
 
-use super::{infinite_rotation, PointDiagram, INFINITE};
-use crate::diagram::{HalfEdgeId, SiteId, VertexId, NONE};
+use super::collinear;
+use super::insert_point::PointStage;
+use super::insertion_order::insertion_order;
+use super::state::{infinite_rotation, Construction, INFINITE};
+use crate::diagram::{SiteId, VertexId, NONE};
 use crate::geometry::predicates::CirclePosition;
 use crate::geometry::segment_predicates::{self, AtEndpoint, Contact, LeftDegree, SegmentDepth, SiteSeen};
-use crate::geometry::site::Site;
 use crate::geometry::Point;
 
-impl PointDiagram {
-    /// Whether any of the sites is an open segment.
-    #[inline]
-    pub(super) fn has_segment(&self, sites: [SiteId; 3]) -> bool {
-        sites.iter().any(|&s| self.is_segment(s))
-    }
-
-    #[inline]
-    fn is_segment(&self, s: SiteId) -> bool {
-        s.0 >= self.first_segment
-    }
-
-    /// The endpoint sites of `s`, if it is a segment.
-    #[inline]
-    fn ends_of(&self, s: SiteId) -> Option<[SiteId; 2]> {
-        self.is_segment(s).then(|| self.segment_ends[(s.0 - self.first_segment) as usize])
-    }
-
-    /// The other endpoint of `s`, if it is a segment ending at `end`.
-    fn far_end(&self, s: SiteId, end: SiteId) -> Option<SiteId> {
-        match self.ends_of(s)? {
-            [x, y] if x == end => Some(y),
-            [x, y] if y == end => Some(x),
-            _ => None,
+/// Inserts the segments into the diagram of the points; those listed in
+/// `first_segments` go first, in that order. Also returns the first segment
+/// that found no path.
+pub(in crate::construct) fn insert_segments(
+    stage: PointStage,
+    points: &[Point],
+    segments: &[[usize; 2]],
+    first_segments: &[usize],
+) -> (Construction, Vec<SiteId>, Vec<SiteId>, Option<usize>) {
+    let (mut diagram, site_of) = match stage {
+        PointStage::Inserted(diagram, site_of) => (diagram, site_of),
+        PointStage::Trivial(diagram, site_of) => return (diagram, site_of, Vec::new(), None),
+        PointStage::Collinear => {
+            let mut diagram = Construction::new(points.len() + segments.len());
+            let mut site_of = vec![SiteId(NONE); points.len()];
+            let segment_sites = collinear::start_all_collinear(points, segments, &mut diagram, &mut site_of);
+            return (diagram, site_of, segment_sites, None);
         }
+    };
+    // Segments go in the same order as points, by their midpoints: BRIO
+    // rounds along a Hilbert curve (the result does not depend on it). The
+    // curve keeps each insertion where the last one worked, in memory the
+    // cache still holds; the random rounds keep the work near-linear where
+    // segments are long against the gaps between them: inserted in sweep
+    // order, each of n parallel segments would first take the cell of the
+    // one before, which reaches across all the points (n parallel segments
+    // of length n at unit spacing cost O(n^2) that way, O(n log n) in
+    // random rounds).
+    let midpoints: Vec<Point> = segments
+        .iter()
+        .map(|&[i, j]| {
+            let (p, q) = (points[i], points[j]);
+            Point::new(0.5 * p.x + 0.5 * q.x, 0.5 * p.y + 0.5 * q.y)
+        })
+        .collect();
+    let mut segment_sites = vec![SiteId(NONE); segments.len()];
+    let mut stuck = None;
+    let by_midpoint = insertion_order(&midpoints);
+    drop(midpoints);
+    let rest = by_midpoint.into_iter().filter(|&k| !first_segments.contains(&(k as usize)));
+    // Gather each segment's endpoint sites into insertion order first: the
+    // loads are independent here and overlap, where inside the loop each
+    // would be a cache miss waiting behind a whole insertion.
+    let order: Vec<(u32, SiteId, SiteId)> = first_segments
+        .iter()
+        .map(|&k| k as u32)
+        .chain(rest)
+        .map(|k| {
+            let [i, j] = segments[k as usize];
+            (k, site_of[i], site_of[j])
+        })
+        .collect();
+    for (k, a, b) in order {
+        let k = k as usize;
+        segment_sites[k] = diagram.insert_segment(a, b).unwrap_or_else(|e| {
+            stuck = stuck.or(Some(k));
+            e
+        });
     }
+    (diagram, site_of, segment_sites, stuck)
+}
 
-    /// The geometry of a real site (not the point at infinity).
-    pub(super) fn site_geometry(&self, s: SiteId) -> Site {
-        match self.ends_of(s) {
-            Some([a, b]) => Site::Segment { a: self.sites[a.index()], b: self.sites[b.index()] },
-            None => Site::Point(self.sites[s.index()]),
-        }
-    }
-
-    /// The coordinates of the endpoint sites `a` and `b` of a new segment.
-    #[inline]
-    fn segment_between(&self, a: SiteId, b: SiteId) -> (Point, Point) {
-        (self.sites[a.index()], self.sites[b.index()])
-    }
-
+impl Construction {
     /// Adds the open segment between the point sites `a` and `b`; every
     /// point must be in already. `Err` with the segment's site when no path
     /// of P4 exists: the diagram then holds the segment but is not valid
     /// (the numbers have put `a` and `b` on different sides of a closed
-    /// chain of segments; see `build::construct`).
-    pub(crate) fn insert_segment(&mut self, a: SiteId, b: SiteId) -> Result<SiteId, SiteId> {
+    /// chain of segments; see `construct/restart.rs`).
+    pub(in crate::construct) fn insert_segment(&mut self, a: SiteId, b: SiteId) -> Result<SiteId, SiteId> {
         let e = self.add_segment_site(a, b);
         self.fresh_epoch();
         let found = self.find_segment_path(a, b);
@@ -109,48 +136,6 @@ impl PointDiagram {
         } else {
             Err(e)
         }
-    }
-
-    /// The diagram of points on one line, given in order along it (at least
-    /// two, distinct), and segments each joining chain points `k` and `k + 1`
-    /// for `k` in `between`: a ladder in which every segment is one more rung
-    /// between its endpoints (its separators are the perpendiculars there).
-    /// Returns the point sites in chain order and the segment sites in the
-    /// order of `between`.
-    pub(crate) fn start_collinear_with_segments(
-        &mut self,
-        chain: &[Point],
-        between: &[usize],
-    ) -> (Vec<SiteId>, Vec<SiteId>) {
-        let ids: Vec<SiteId> = chain.iter().map(|&p| self.add_site(p)).collect();
-        let mut after: Vec<Option<SiteId>> = vec![None; chain.len()];
-        let mut segment_sites = Vec::with_capacity(between.len());
-        for &k in between {
-            let e = self.add_segment_site(ids[k], ids[(k + 1).min(ids.len() - 1)]);
-            segment_sites.push(e);
-            if let Some(slot @ None) = after.get_mut(k) {
-                *slot = Some(e);
-            }
-        }
-        let mut sequence = Vec::with_capacity(ids.len() + between.len());
-        for (k, &id) in ids.iter().enumerate() {
-            sequence.push(id);
-            sequence.extend(after[k]);
-        }
-        self.build_ladder(&sequence);
-        (ids, segment_sites)
-    }
-
-    fn add_segment_site(&mut self, a: SiteId, b: SiteId) -> SiteId {
-        let s = SiteId::from_index(self.sites.len());
-        if self.first_segment == u32::MAX {
-            self.first_segment = s.0;
-        }
-        self.segment_ends.push([a, b]);
-        self.sites.push(Point::new(f64::NAN, f64::NAN));
-        self.store.cell_edge.push(NONE);
-        self.cell_mark.push(0);
-        s
     }
 
     /// How far inside the circle of the finite vertex `v` the open segment
@@ -211,15 +196,6 @@ impl PointDiagram {
             SiteSeen::Other { site: self.site_geometry(g), from }
         };
         segment_predicates::left_degree(segment, seen)
-    }
-
-    /// Whether `h` runs between an existing segment and one of its
-    /// endpoints. Such an edge is never deleted whole (both of its vertices
-    /// in the tree): every segment keeps exactly one separator with each
-    /// endpoint, if only of zero length where many segments meet at a point.
-    pub(super) fn is_separator(&self, h: HalfEdgeId) -> bool {
-        let (l, r) = (self.store.left(h), self.store.right(h));
-        self.ends_of(l).is_some_and(|e| e.contains(&r)) || self.ends_of(r).is_some_and(|e| e.contains(&l))
     }
 
     /// Whether `v` may join the walk: not at infinity unless it conflicts.

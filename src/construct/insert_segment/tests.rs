@@ -1,21 +1,23 @@
 //! Tests of segment insertion inside the construction.
 
 use super::*;
+use crate::construct::insert_point::Inserted;
+use crate::diagram::NONE;
 
 /// Builds the point diagram of `points` (not all collinear), then
 /// inserts `segments` (pairs of indices into `points`).
-fn build(points: &[Point], segments: &[[usize; 2]]) -> PointDiagram {
-    let mut d = PointDiagram::new(points.len() + segments.len());
+fn build(points: &[Point], segments: &[[usize; 2]]) -> Construction {
+    let mut d = Construction::new(points.len() + segments.len());
     let ids = d.start_collinear(&points[..2]);
     let mut all = ids.clone();
     let mut last = ids[1];
     for &p in &points[2..] {
         match d.insert(p, last) {
-            super::super::Inserted::New(s) => {
+            Inserted::New(s) => {
                 all.push(s);
                 last = s;
             }
-            super::super::Inserted::Duplicate(_) => panic!("test points must be distinct"),
+            Inserted::Duplicate(_) => panic!("test points must be distinct"),
         }
     }
     for &[i, j] in segments {
@@ -25,7 +27,7 @@ fn build(points: &[Point], segments: &[[usize; 2]]) -> PointDiagram {
 }
 
 /// The finite vertices in use: id, sites, position, clearance.
-pub(super) fn finite_vertices(d: &PointDiagram) -> impl Iterator<Item = (usize, [SiteId; 3], Point, f64)> + '_ {
+pub(super) fn finite_vertices(d: &Construction) -> impl Iterator<Item = (usize, [SiteId; 3], Point, f64)> + '_ {
     (0..d.store.vertex_count()).filter_map(|vi| {
         let sites = d.store.sites_of(VertexId::from_index(vi));
         let unused_or_infinite = sites.contains(&INFINITE) || sites[0].0 == NONE;
@@ -36,7 +38,7 @@ pub(super) fn finite_vertices(d: &PointDiagram) -> impl Iterator<Item = (usize, 
 /// Whether the vertex is equidistant from its three sites and no site
 /// is closer (brute force), within `tol` (or 1e-12 of its clearance,
 /// for far vertices: their distances are rounded at that size).
-pub(super) fn check_vertex(d: &PointDiagram, (vi, sites, pos, r): (usize, [SiteId; 3], Point, f64), tol: f64) -> Result<(), String> {
+pub(super) fn check_vertex(d: &Construction, (vi, sites, pos, r): (usize, [SiteId; 3], Point, f64), tol: f64) -> Result<(), String> {
     let tol = tol.max(1e-12 * r);
     for s in (1..d.sites.len()).map(SiteId::from_index) {
         let dist = d.site_geometry(s).distance(pos);
@@ -48,13 +50,13 @@ pub(super) fn check_vertex(d: &PointDiagram, (vi, sites, pos, r): (usize, [SiteI
 }
 
 /// Every finite vertex passes `check_vertex`.
-fn check_geometry(d: &PointDiagram, tol: f64) {
+fn check_geometry(d: &Construction, tol: f64) {
     for v in finite_vertices(d) {
         check_vertex(d, v, tol).unwrap_or_else(|e| panic!("{e}"));
     }
 }
 
-fn validate(d: &PointDiagram) {
+fn validate(d: &Construction) {
     d.store.validate().unwrap_or_else(|e| panic!("{e}"));
 }
 
@@ -73,7 +75,7 @@ fn one_segment_among_points() {
 /// Points on a jittered grid; in some cells two points joined by a short
 /// segment that stays inside its cell, so no two segments meet.
 fn jittered(side: usize, seed: u64) -> (Vec<Point>, Vec<[usize; 2]>) {
-    let mut rng = crate::build::order::SplitMix(seed);
+    let mut rng = crate::construct::insertion_order::SplitMix(seed);
     let mut unit = move || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
     let (mut pts, mut segs) = (Vec::new(), Vec::new());
     for i in 0..side {
@@ -105,10 +107,9 @@ fn random_disjoint_segments() {
 
 /// Whether every segment so far has exactly one separator with each endpoint.
 #[cfg(feature = "fault-injection")]
-fn separators_ok(d: &PointDiagram) -> Result<(), String> {
-    for (k, ends) in d.segment_ends.iter().enumerate() {
-        let s = SiteId(d.first_segment + k as u32);
-        for &e in ends {
+fn separators_ok(d: &Construction) -> Result<(), String> {
+    for (s, ends) in d.segment_sites() {
+        for e in ends {
             let n = d.store.cell_boundary(s).filter(|&h| d.store.right(h) == e).count();
             if n != 1 {
                 return Err(format!("segment {s:?} has {n} separators with {e:?}"));
@@ -126,12 +127,12 @@ fn separators_under_random_arithmetic() {
     for seed in 0..3 {
         let (pts, segs) = jittered(20, seed);
         crate::fault_injection::set_fault_mode(crate::fault_injection::FaultMode::Random, seed);
-        let mut d = PointDiagram::new(pts.len() + segs.len());
+        let mut d = Construction::new(pts.len() + segs.len());
         let ids = d.start_collinear(&pts[..2]);
         let mut all = ids.clone();
         let mut last = ids[1];
         for &p in &pts[2..] {
-            if let super::super::Inserted::New(s) = d.insert(p, last) {
+            if let Inserted::New(s) = d.insert(p, last) {
                 all.push(s);
                 last = s;
             } else {
@@ -163,8 +164,7 @@ mod replay {
     //! free of the new segment, every new vertex equidistant from its sites
     //! with no site closer. Names the first insertion that goes wrong.
     use super::*;
-    use crate::build::order::SplitMix;
-    use crate::build::Inserted;
+    use crate::construct::insertion_order::SplitMix;
     use crate::geometry::predicates::{orientation, Orientation};
 
     /// Tolerance relative to the largest coordinate.
@@ -184,7 +184,7 @@ mod replay {
     fn replay(points: &[Point], segments: &[[Point; 2]]) -> Result<(), String> {
         let all: Vec<Point> = points.iter().copied().chain(segments.iter().flatten().copied()).collect();
         let tol = TOLERANCE * all.iter().fold(f64::MIN_POSITIVE, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-        let mut d = PointDiagram::new(all.len() + segments.len());
+        let mut d = Construction::new(all.len() + segments.len());
         let mut ids = d.start_collinear(&all[..2]);
         let mut last = ids[1];
         for &p in &all[2..] {
@@ -204,7 +204,7 @@ mod replay {
         Ok(())
     }
 
-    fn check_after(d: &PointDiagram, e: SiteId, tol: f64) -> Result<(), String> {
+    fn check_after(d: &Construction, e: SiteId, tol: f64) -> Result<(), String> {
         let segment = d.site_geometry(e);
         for v @ (vi, sites, pos, r) in super::finite_vertices(d) {
             if segment.distance(pos) < r - tol.max(1e-12 * r) {
@@ -243,8 +243,8 @@ mod replay {
     #[test]
     fn fixtures_are_right_after_every_insertion() {
         for (name, text) in [
-            ("collinear_continuation", include_str!("../../../../c_tests/fixtures/collinear_continuation.txt")),
-            ("two_segments_near_endpoint", include_str!("../../../../c_tests/fixtures/two_segments_near_endpoint.txt")),
+            ("collinear_continuation", include_str!("../../../c_tests/fixtures/collinear_continuation.txt")),
+            ("two_segments_near_endpoint", include_str!("../../../c_tests/fixtures/two_segments_near_endpoint.txt")),
         ] {
             let (points, segments) = parse(text);
             replay(&points, &segments).unwrap_or_else(|err| panic!("{name}: {err}"));

@@ -1,0 +1,216 @@
+//! The public entry: [`Builder`] collects points and segments (its adders
+//! check each coordinate and the size limit, all or none) and builds their
+//! diagram (`construct::diagram_of`).
+
+use crate::diagram::Diagram;
+use crate::error::{Error, ErrorKind};
+use crate::geometry::Point;
+
+/// Most input points one diagram may have: every id must fit in 32 bits
+/// (a diagram of n points has up to 2n vertices of 3 half-edges each).
+pub const MAX_POINTS: usize = 600_000_000;
+
+/// Collects input sites and builds their Voronoi diagram.
+///
+/// The contract: coordinates are finite `f64` values of any magnitude;
+/// points may repeat (repeats are merged and counted in
+/// [`BuildStats::duplicate_points`](crate::BuildStats)). A rejected call
+/// leaves the builder exactly as it was.
+///
+/// ```
+/// use segvoronoi::Builder;
+///
+/// let mut builder = Builder::new();
+/// builder.add_point([0.0, 0.0])?;
+/// builder.add_points([[4.0, 0.0], [0.0, 4.0], [4.0, 4.0], [2.0, 1.0]])?;
+/// let diagram = builder.build()?;
+/// assert_eq!(diagram.site_count(), 5);
+/// assert!(diagram.validate().is_ok());
+/// # Ok::<(), segvoronoi::Error>(())
+/// ```
+#[derive(Clone, Debug, Default)]
+pub struct Builder {
+    points: Vec<Point>,
+    segments: Vec<[Point; 2]>,
+    /// The rings of the polygons added (`polygon_input`), which bound the
+    /// domain, and how many polygons there are.
+    pub(super) rings: Vec<super::polygon_input::RingInput>,
+    pub(super) polygons: usize,
+}
+
+impl Builder {
+    /// An empty builder.
+    pub fn new() -> Builder {
+        Builder::default()
+    }
+
+    /// Number of points added so far (duplicates included).
+    pub fn point_count(&self) -> usize {
+        self.points.len()
+    }
+
+    /// Number of segments added so far (repeats and zero-length ones included).
+    pub fn segment_count(&self) -> usize {
+        self.segments.len()
+    }
+
+    /// Adds one point and returns its input index (the number of points
+    /// added before it). A point is anything that converts into a
+    /// [`Point`]: `[x, y]`, `(x, y)` or a `Point`, as for
+    /// [`Builder::add_points`].
+    ///
+    /// Fails with [`ErrorKind::InvalidCoordinate`] when a coordinate is not
+    /// finite, or [`ErrorKind::TooLarge`] past [`MAX_POINTS`]; the builder is
+    /// then unchanged.
+    pub fn add_point(&mut self, point: impl Into<Point>) -> Result<usize, Error> {
+        self.add_points([point]).map(|added| added.start)
+    }
+
+    /// Adds many points, all or none, and returns their input indices. On
+    /// error (the first non-finite coordinate, named by the index it would
+    /// have had, or [`ErrorKind::TooLarge`]) nothing is added.
+    pub fn add_points<P, I>(&mut self, points: I) -> Result<std::ops::Range<usize>, Error>
+    where
+        P: Into<Point>,
+        I: IntoIterator<Item = P>,
+    {
+        let iter = points.into_iter();
+        self.reserve_points(iter.size_hint().0)?;
+        let endpoints = 2 * self.segments.len();
+        append_checked(&mut self.points, iter.map(Into::into), check_point, |n| check_capacity(n.saturating_add(endpoints)))
+    }
+
+    /// Adds the line segment `[a, b]` and returns its input index (the
+    /// number of segments added before it). Its endpoints are anything that
+    /// converts into a [`Point`], as for [`Builder::add_segments`].
+    ///
+    /// Segments may share endpoints with any number of others; whether they
+    /// cross or overlap is checked by [`Builder::build`]. A zero-length
+    /// segment becomes a point. Fails with [`ErrorKind::InvalidCoordinate`]
+    /// when a coordinate is not finite, or [`ErrorKind::TooLarge`] when its
+    /// endpoints would pass [`MAX_POINTS`]; the builder is then unchanged.
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, Site};
+    /// let mut b = Builder::new();
+    /// b.add_segment([[0.0, 0.0], [4.0, 0.0]])?;
+    /// b.add_points([[1.0, 2.0], [3.0, -1.5]])?;
+    /// let d = b.build()?;
+    /// assert_eq!(d.site_count(), 5); // two points, two endpoints, the open segment
+    /// let s = d.site_of_segment(0).unwrap();
+    /// assert!(matches!(d.site(s), Some(Site::Segment { .. })));
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn add_segment<P: Into<Point>>(&mut self, segment: [P; 2]) -> Result<usize, Error> {
+        self.add_segments([segment]).map(|added| added.start)
+    }
+
+    /// Adds many segments, all or none, and returns their input indices. On
+    /// error (the first non-finite coordinate, named by the index the
+    /// segment would have had, or [`ErrorKind::TooLarge`]) nothing is added.
+    pub fn add_segments<P, I>(&mut self, segments: I) -> Result<std::ops::Range<usize>, Error>
+    where
+        P: Into<Point>,
+        I: IntoIterator<Item = [P; 2]>,
+    {
+        let iter = segments.into_iter();
+        self.reserve_segments(iter.size_hint().0)?;
+        let points = self.points.len();
+        let segments = iter.map(|s| s.map(Into::into));
+        append_checked(&mut self.segments, segments, check_segment, |n| check_capacity(points.saturating_add(n.saturating_mul(2))))
+    }
+
+    /// Makes room for `additional` more points, or fails with
+    /// [`ErrorKind::TooLarge`] (the builder unchanged) when the points and
+    /// segment endpoints together would exceed [`MAX_POINTS`].
+    pub fn reserve_points(&mut self, additional: usize) -> Result<(), Error> {
+        check_capacity(self.points.len().saturating_add(additional).saturating_add(2 * self.segments.len()))?;
+        self.points.reserve(additional);
+        Ok(())
+    }
+
+    /// Makes room for `additional` more segments, or fails with
+    /// [`ErrorKind::TooLarge`] (the builder unchanged) when the points and
+    /// segment endpoints together would exceed [`MAX_POINTS`].
+    pub fn reserve_segments(&mut self, additional: usize) -> Result<(), Error> {
+        let points = self.points.len().saturating_add(self.segments.len().saturating_add(additional).saturating_mul(2));
+        check_capacity(points)?;
+        self.segments.reserve(additional);
+        Ok(())
+    }
+
+    /// Builds the diagram. The builder is not consumed: more points may be
+    /// added and the diagram built again.
+    ///
+    /// For 100,000 points or more, part of the work (sorting the insertion
+    /// order) runs on a second, short-lived thread; the result is the same.
+    ///
+    /// With segments, the input is checked first: segments that cross or
+    /// overlap, or a point inside a segment, give
+    /// [`ErrorKind::Intersecting`] naming both input indices.
+    ///
+    /// A diagram that could not be completed is never returned: that is
+    /// [`ErrorKind::Internal`], a bug in segvoronoi (none is known; with
+    /// sound arithmetic it does not happen), with a message saying what
+    /// failed. The builder stays as it was.
+    pub fn build(&self) -> Result<Diagram, Error> {
+        let mut diagram = super::diagram_of(&self.points, &self.segments)
+            .map_err(|e| super::polygon_input::name_rings(e, &self.rings))?;
+        diagram.set_domain(&self.rings);
+        Ok(diagram)
+    }
+}
+
+/// Appends `items` to `list`, all or none, and returns their indices: each
+/// passes `check` (with its index) and `room` (with the list's length after
+/// it), or the list is cut back to where it was and the first error returned.
+fn append_checked<T: Copy>(
+    list: &mut Vec<T>,
+    items: impl Iterator<Item = T>,
+    check: fn(usize, T) -> Result<(), Error>,
+    room: impl Fn(usize) -> Result<(), Error>,
+) -> Result<std::ops::Range<usize>, Error> {
+    let start = list.len();
+    for item in items {
+        let index = list.len();
+        if let Err(e) = check(index, item).and_then(|()| room(index + 1)) {
+            list.truncate(start);
+            return Err(e);
+        }
+        list.push(item);
+    }
+    Ok(start..list.len())
+}
+
+fn check_point(index: usize, p: Point) -> Result<(), Error> {
+    if p.is_finite() {
+        return Ok(());
+    }
+    Err(Error::new(
+        ErrorKind::InvalidCoordinate,
+        format!("point {index} has a non-finite coordinate ({}, {})", p.x, p.y),
+        vec![index],
+    ))
+}
+
+fn check_segment(index: usize, [a, b]: [Point; 2]) -> Result<(), Error> {
+    if a.is_finite() && b.is_finite() {
+        return Ok(());
+    }
+    Err(Error::new(
+        ErrorKind::InvalidCoordinate,
+        format!("segment {index} has a non-finite coordinate ({}, {}) - ({}, {})", a.x, a.y, b.x, b.y),
+        vec![index],
+    ))
+}
+
+fn check_capacity(count: usize) -> Result<(), Error> {
+    if count <= MAX_POINTS {
+        return Ok(());
+    }
+    Err(Error::new(
+        ErrorKind::TooLarge,
+        format!("point {MAX_POINTS} is one too many: a diagram holds at most {MAX_POINTS} points"),
+        vec![MAX_POINTS],
+    ))
+}

@@ -1,0 +1,165 @@
+//! The input checker for line-segment sites: normalisation and the
+//! intersection rules of DESIGN §1, decided before any diagram is built.
+//!
+//! # What it does
+//! - *Normalisation.* A zero-length segment is a point. A segment that repeats
+//!   an earlier one (same endpoints, either direction) is dropped; so is a
+//!   point that repeats an earlier point or any segment endpoint. All three are
+//!   counted for the build statistics. Equality is coordinate equality, so
+//!   `-0.0` equals `+0.0`.
+//! - *Conflicts.* Two segments may meet only at a common endpoint (exactly
+//!   equal coordinates), any number of them at one point. Everything else is a
+//!   [`Conflict`] naming both input indices: a proper crossing, an endpoint in
+//!   the open interior of another segment (T-junction), two collinear segments
+//!   sharing more than a point, an isolated point in the open interior of a
+//!   segment. When several conflicts exist, the one reported is always the same
+//!   whatever the grid: the first segment pair in input order, else the first
+//!   (point, segment) pair.
+//!
+//! # Exactness
+//! Every decision is an exact orientation sign (never perturbed by fault
+//! injection) or a coordinate comparison, made by
+//! `geometry::segment_contact`; no epsilon anywhere. The checker works in
+//! the builder's coordinates: the input multiplied by the build's one power
+//! of two ([`Scale`], computed by `construct::input_scale`) so that 1e300
+//! does not overflow and
+//! 1e-300 does not underflow inside the predicates; the answers are those for
+//! the coordinates the builder itself works with. Two limits, shared with the
+//! point builder: the predicates are exact only while their products do not
+//! underflow (points closer than about 1e-70 times the largest coordinate may
+//! be misjudged), and an input spanning more than about 600 decimal orders of
+//! magnitude loses its tiniest differences in the scaling.
+//!
+//! # Where
+//! `normalise.rs` (zero-length, repeated), `candidates.rs` (the pairs worth
+//! testing, through a grid), `classify.rs` (a pair's conflict, named by
+//! input indices); the contact test itself is `geometry::segment_contact`.
+
+mod candidates;
+mod classify;
+mod normalise;
+#[cfg(test)]
+mod tests;
+
+use crate::geometry::scale::Scale;
+use crate::geometry::Point;
+use candidates::find_conflict;
+use normalise::normalise;
+
+/// Where a point of the checked input came from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum PointSource {
+    /// An isolated input point, by its index among the points.
+    Point(usize),
+    /// A zero-length input segment, by its index among the segments.
+    Segment(usize),
+}
+
+/// The normalised input: what the builder inserts.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct CheckedInput {
+    /// Distinct points that are not endpoints of a kept segment, in input
+    /// order: isolated points first, then zero-length segments. Coordinates
+    /// are the input ones with `-0.0` made `+0.0`.
+    pub points: Vec<(PointSource, Point)>,
+    /// The kept segments with their input index, in input order, endpoints as
+    /// given (with `-0.0` made `+0.0`).
+    pub segments: Vec<(usize, [Point; 2])>,
+    /// Isolated points and zero-length segments dropped because they repeat
+    /// an earlier point or any segment endpoint.
+    pub duplicate_points: usize,
+    /// Segments dropped because they repeat an earlier segment.
+    pub duplicate_segments: usize,
+    /// Zero-length segments (each became a point, or merged with one).
+    pub degenerate_segments: usize,
+    /// Per input segment: the index in `segments` of the kept segment it is
+    /// or repeats; `None` for a zero-length segment.
+    pub kept_of_input: Vec<Option<usize>>,
+}
+
+/// Why the input cannot be built: the kind of intersection and the two input
+/// indices involved. Segment and point indices are kept apart.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Conflict {
+    /// Two segments cross at a point interior to both.
+    SegmentsCross {
+        /// The earlier segment (input index).
+        first: usize,
+        /// The later segment (input index).
+        second: usize,
+    },
+    /// Two collinear segments share more than a point.
+    SegmentsOverlap {
+        /// The earlier segment (input index).
+        first: usize,
+        /// The later segment (input index).
+        second: usize,
+    },
+    /// An endpoint of `endpoint_of` lies in the open interior of `segment`
+    /// (a T-junction; `endpoint_of` may be a zero-length segment).
+    EndpointOnSegment {
+        /// The segment whose interior is touched (input index).
+        segment: usize,
+        /// The segment whose endpoint touches it (input index).
+        endpoint_of: usize,
+    },
+    /// An isolated point lies in the open interior of a segment.
+    PointOnSegment {
+        /// The point (input index among the points).
+        point: usize,
+        /// The segment (input index among the segments).
+        segment: usize,
+    },
+}
+
+impl Conflict {
+    /// A sentence naming both input indices, for the error message.
+    pub(crate) fn message(&self) -> String {
+        match *self {
+            Conflict::SegmentsCross { first, second } => format!("segments {first} and {second} cross"),
+            Conflict::SegmentsOverlap { first, second } => {
+                format!("segments {first} and {second} are collinear and overlap")
+            }
+            Conflict::EndpointOnSegment { segment, endpoint_of } => {
+                format!("an endpoint of segment {endpoint_of} lies inside segment {segment}")
+            }
+            Conflict::PointOnSegment { point, segment } => format!("point {point} lies inside segment {segment}"),
+        }
+    }
+}
+
+
+/// Normalises and checks points and segments (finite coordinates, as the
+/// builder guarantees), in the coordinates that `scale` makes (the
+/// build's one scale). See the module documentation for the rules.
+pub(crate) fn check_segments(points: &[Point], segments: &[[Point; 2]], scale: Scale) -> Result<CheckedInput, Conflict> {
+    let internal = |p: Point| p.scaled(scale.to_internal).canonical_zero();
+    let norm = normalise(points, segments, internal);
+    if let Some(conflict) = find_conflict(&norm) {
+        return Err(conflict);
+    }
+    Ok(CheckedInput {
+        points: norm
+            .points
+            .iter()
+            .map(|&(src, _)| (src, input_point(points, segments, src)))
+            .collect(),
+        segments: norm
+            .segments
+            .iter()
+            .map(|&(i, _)| (i, [segments[i][0].canonical_zero(), segments[i][1].canonical_zero()]))
+            .collect(),
+        duplicate_points: norm.duplicate_points,
+        duplicate_segments: norm.duplicate_segments,
+        degenerate_segments: norm.degenerate_segments,
+        kept_of_input: norm.kept_of_input,
+    })
+}
+
+fn input_point(points: &[Point], segments: &[[Point; 2]], src: PointSource) -> Point {
+    match src {
+        PointSource::Point(i) => points[i].canonical_zero(),
+        PointSource::Segment(i) => segments[i][0].canonical_zero(),
+    }
+}
+

@@ -1,0 +1,76 @@
+//! Normalisation of the input: zero-length segments become points, repeated
+//! segments and points are dropped and counted (the first one is kept).
+
+use std::collections::{HashMap, HashSet};
+
+use super::PointSource;
+use crate::geometry::Point;
+
+/// The input after normalisation, in internal (scaled) coordinates.
+#[derive(Debug, Default)]
+pub(super) struct Normalised {
+    pub(super) points: Vec<(PointSource, Point)>,
+    pub(super) segments: Vec<(usize, [Point; 2])>,
+    pub(super) duplicate_points: usize,
+    pub(super) duplicate_segments: usize,
+    pub(super) degenerate_segments: usize,
+    pub(super) kept_of_input: Vec<Option<usize>>,
+}
+
+/// Bit pattern of a point with canonical zeros: equal points, equal keys.
+fn point_key(p: Point) -> [u64; 2] {
+    [p.x.to_bits(), p.y.to_bits()]
+}
+
+/// Key of a segment, the same in both directions.
+fn segment_key(a: Point, b: Point) -> [u64; 4] {
+    let (ka, kb) = (point_key(a), point_key(b));
+    let (lo, hi) = if ka <= kb { (ka, kb) } else { (kb, ka) };
+    [lo[0], lo[1], hi[0], hi[1]]
+}
+
+/// Zero-length segments become points; repeated segments and points are
+/// dropped (the first one is kept). Segment endpoints take precedence over
+/// isolated points, which take precedence over zero-length segments.
+pub(super) fn normalise(points: &[Point], segments: &[[Point; 2]], internal: impl Fn(Point) -> Point) -> Normalised {
+    let mut out = Normalised::default();
+    let mut degenerate = Vec::new();
+    let mut kept_by_key: HashMap<[u64; 4], usize> = HashMap::with_capacity(segments.len());
+    for (i, s) in segments.iter().enumerate() {
+        let (a, b) = (internal(s[0]), internal(s[1]));
+        if a == b {
+            out.degenerate_segments += 1;
+            degenerate.push((PointSource::Segment(i), a));
+            out.kept_of_input.push(None);
+            continue;
+        }
+        let kept = *kept_by_key.entry(segment_key(a, b)).or_insert_with(|| {
+            out.segments.push((i, [a, b]));
+            out.segments.len() - 1
+        });
+        if out.segments[kept].0 != i {
+            out.duplicate_segments += 1;
+        }
+        out.kept_of_input.push(Some(kept));
+    }
+    drop(kept_by_key);
+    if points.is_empty() && degenerate.is_empty() {
+        // Nothing to compare with the endpoints: no set of them needed.
+        // (The keys are the caller's coordinates: the default hasher's
+        // random keys keep crafted input from colliding them.)
+        return out;
+    }
+    let mut seen_points: HashSet<[u64; 2]> = out.segments.iter().flat_map(|(_, s)| s.map(point_key)).collect();
+    let isolated = points
+        .iter()
+        .enumerate()
+        .map(|(i, &p)| (PointSource::Point(i), internal(p)));
+    for (src, p) in isolated.chain(degenerate) {
+        if seen_points.insert(point_key(p)) {
+            out.points.push((src, p));
+        } else {
+            out.duplicate_points += 1;
+        }
+    }
+    out
+}

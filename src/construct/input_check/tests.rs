@@ -1,0 +1,608 @@
+//! Tests of the input check: normalisation, conflicts, exactness, the grid
+//! against brute force, and a large input.
+
+use super::candidates::{find_conflict, Grid};
+use super::classify::{point_conflict, segment_conflict};
+use super::normalise::{normalise, Normalised};
+use super::*;
+use crate::construct::input_scale;
+use proptest::prelude::*;
+
+/// The check as the builder calls it, with the build's one scale.
+fn check_segments(points: &[Point], segments: &[[Point; 2]]) -> Result<CheckedInput, Conflict> {
+    super::check_segments(points, segments, input_scale(points, segments))
+}
+
+fn p(x: f64, y: f64) -> Point {
+    Point::new(x, y)
+}
+
+fn s(ax: f64, ay: f64, bx: f64, by: f64) -> [Point; 2] {
+    [p(ax, ay), p(bx, by)]
+}
+
+fn check(segments: &[[Point; 2]]) -> Result<CheckedInput, Conflict> {
+    check_segments(&[], segments)
+}
+
+fn up(x: f64) -> f64 {
+    f64::from_bits(x.to_bits() + 1)
+}
+
+fn down(x: f64) -> f64 {
+    f64::from_bits(x.to_bits() - 1)
+}
+
+// ---- normalisation ----
+
+#[test]
+fn empty_and_points_only() {
+    let out = check_segments(&[], &[]).unwrap();
+    assert!(out.points.is_empty() && out.segments.is_empty());
+    let out = check_segments(&[p(1., 2.), p(1., 2.), p(3., 4.)], &[]).unwrap();
+    assert_eq!(
+        out.points,
+        vec![(PointSource::Point(0), p(1., 2.)), (PointSource::Point(2), p(3., 4.))]
+    );
+    assert_eq!(out.duplicate_points, 1);
+}
+
+#[test]
+fn zero_length_segment_is_a_point_and_negative_zero_equals_zero() {
+    let out = check(&[s(0., -0., -0., 0.), s(1., 1., 2., 2.)]).unwrap();
+    assert_eq!(out.degenerate_segments, 1);
+    assert_eq!(out.points, vec![(PointSource::Segment(0), p(0., 0.))]);
+    assert!(out.points[0].1.x.is_sign_positive() && out.points[0].1.y.is_sign_positive());
+    assert_eq!(out.segments, vec![(1, s(1., 1., 2., 2.))]);
+}
+
+#[test]
+fn duplicate_segments_merge_in_either_direction() {
+    let out = check(&[
+        s(0., 0., 1., 0.),
+        s(1., 0., 0., 0.),
+        s(0., 0., 1., 0.),
+        s(-0., 0., 1., -0.),
+    ])
+    .unwrap();
+    assert_eq!(out.segments, vec![(0, s(0., 0., 1., 0.))]);
+    assert_eq!(out.duplicate_segments, 3);
+    assert_eq!(out.kept_of_input, vec![Some(0); 4]);
+}
+
+#[test]
+fn points_on_endpoints_and_repeated_points_merge() {
+    let points = [p(1., 0.), p(5., 5.), p(5., 5.)];
+    let segments = [
+        s(0., 0., 1., 0.),
+        s(5., 5., 5., 5.),
+        s(7., 7., 7., 7.),
+        s(0., 0., 0., 0.),
+    ];
+    let out = check_segments(&points, &segments).unwrap();
+    // Endpoint (1,0) absorbs point 0; point 1 absorbs point 2 and the
+    // zero-length segment 1; segment 3 repeats an endpoint.
+    assert_eq!(
+        out.points,
+        vec![(PointSource::Point(1), p(5., 5.)), (PointSource::Segment(2), p(7., 7.))]
+    );
+    assert_eq!((out.duplicate_points, out.degenerate_segments), (4, 3));
+}
+
+#[test]
+fn output_keeps_input_coordinates_of_huge_inputs() {
+    let input = [s(1e300, -1e300, 3e300, 2e300)];
+    let out = check_segments(&[p(-1e300, 7e299)], &input).unwrap();
+    assert_eq!(out.segments, vec![(0, input[0])]);
+    assert_eq!(out.points, vec![(PointSource::Point(0), p(-1e300, 7e299))]);
+}
+
+// ---- conflicts ----
+
+#[test]
+fn crossing_segments() {
+    let r = check(&[s(0., 0., 2., 2.), s(5., 5., 6., 6.), s(0., 2., 2., 0.)]);
+    assert_eq!(r, Err(Conflict::SegmentsCross { first: 0, second: 2 }));
+    assert_eq!(r.unwrap_err().message(), "segments 0 and 2 cross");
+}
+
+#[test]
+fn horizontal_and_vertical() {
+    assert_eq!(
+        check(&[s(-1., 0., 1., 0.), s(0., -1., 0., 1.)]),
+        Err(Conflict::SegmentsCross { first: 0, second: 1 })
+    );
+    // Vertical stem ending on a horizontal bar, both orders.
+    let t = Conflict::EndpointOnSegment {
+        segment: 0,
+        endpoint_of: 1,
+    };
+    assert_eq!(check(&[s(-1., 0., 1., 0.), s(0., 0., 0., 1.)]), Err(t));
+    let t = Conflict::EndpointOnSegment {
+        segment: 1,
+        endpoint_of: 0,
+    };
+    assert_eq!(check(&[s(0., 5., 0., 1.), s(1., 1., -1., 1.)]), Err(t));
+    // An L and a vertical pair touching end to end are fine.
+    assert!(check(&[s(0., 0., 1., 0.), s(1., 0., 1., 1.), s(1., 1., 1., 3.)]).is_ok());
+}
+
+#[test]
+fn t_junction_names_both_segments() {
+    let r = check(&[s(0., 0., 1., 3.), s(0., 0., 4., 0.), s(2., 0., 2., 3.)]);
+    let c = Conflict::EndpointOnSegment {
+        segment: 1,
+        endpoint_of: 2,
+    };
+    assert_eq!(r, Err(c));
+    assert_eq!(c.message(), "an endpoint of segment 2 lies inside segment 1");
+}
+
+#[test]
+fn collinear_cases() {
+    let overlap = |a, b| Err(Conflict::SegmentsOverlap { first: a, second: b });
+    assert_eq!(check(&[s(0., 0., 2., 2.), s(1., 1., 3., 3.)]), overlap(0, 1));
+    assert_eq!(
+        check(&[s(0., 0., 4., 0.), s(3., 0., 1., 0.)]),
+        overlap(0, 1),
+        "contained"
+    );
+    assert_eq!(
+        check(&[s(0., 0., 4., 0.), s(0., 0., 1., 0.)]),
+        overlap(0, 1),
+        "contained, common end"
+    );
+    assert_eq!(
+        check(&[s(0., 0., 0., 4.), s(0., 4., 0., 1.)]),
+        overlap(0, 1),
+        "vertical"
+    );
+    assert!(
+        check(&[s(0., 0., 1., 1.), s(1., 1., 2., 2.), s(2., 2., 5., 5.)]).is_ok(),
+        "consecutive"
+    );
+    assert!(check(&[s(0., 0., 1., 1.), s(2., 2., 3., 3.)]).is_ok(), "disjoint");
+    assert!(
+        check(&[s(0., 0., 1., 0.), s(3., 0., 2., 0.), s(-1., 0., -3., 0.)]).is_ok(),
+        "disjoint"
+    );
+    assert_eq!(
+        Conflict::SegmentsOverlap { first: 4, second: 9 }.message(),
+        "segments 4 and 9 are collinear and overlap"
+    );
+}
+
+#[test]
+fn point_inside_segment() {
+    let r = check_segments(&[p(9., 9.), p(1., 1.)], &[s(0., 0., 2., 2.)]);
+    assert_eq!(r, Err(Conflict::PointOnSegment { point: 1, segment: 0 }));
+    assert_eq!(r.unwrap_err().message(), "point 1 lies inside segment 0");
+    // On the line but outside, and on an endpoint: fine.
+    assert!(check_segments(&[p(3., 3.), p(2., 2.)], &[s(0., 0., 2., 2.)]).is_ok());
+    // A zero-length segment inside a segment is an endpoint on it.
+    let r = check(&[s(0., 0., 2., 2.), s(1., 1., 1., 1.)]);
+    assert_eq!(
+        r,
+        Err(Conflict::EndpointOnSegment {
+            segment: 0,
+            endpoint_of: 1
+        })
+    );
+}
+
+#[test]
+fn first_conflict_in_input_order_is_reported() {
+    // Pairs (1,2) and (0,3) both cross; (0,3) comes first.
+    let segments = [
+        s(0., 10., 2., 12.),
+        s(0., 0., 2., 2.),
+        s(0., 2., 2., 0.),
+        s(0., 12., 2., 10.),
+    ];
+    assert_eq!(check(&segments), Err(Conflict::SegmentsCross { first: 0, second: 3 }));
+    // A segment conflict wins over an earlier point conflict.
+    let r = check_segments(
+        &[p(1., 11.)],
+        &[s(0., 11., 2., 11.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)],
+    );
+    assert_eq!(r, Err(Conflict::SegmentsCross { first: 1, second: 2 }));
+}
+
+// ---- allowed shared endpoints ----
+
+#[test]
+fn star_of_256_segments() {
+    let centre = p(0.5, -0.25);
+    let star: Vec<[Point; 2]> = (0..256)
+        .map(|k| {
+            let t = k as f64 * std::f64::consts::TAU / 256.0;
+            [centre, p(centre.x + t.cos(), centre.y + t.sin())]
+        })
+        .collect();
+    let out = check(&star).unwrap();
+    assert_eq!(out.segments.len(), 256);
+    // One more spoke through the centre crosses nothing but overlaps
+    // the spoke pointing the same way.
+    let mut bad = star.clone();
+    bad.push([p(centre.x - 0.5, centre.y), p(centre.x + 0.5, centre.y)]);
+    assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: 0, second: 256 }));
+}
+
+fn polygon(centre: Point, radius: f64, n: usize) -> Vec<[Point; 2]> {
+    let corner = |k: usize| {
+        let t = (k % n) as f64 * std::f64::consts::TAU / n as f64;
+        p(centre.x + radius * t.cos(), centre.y + radius * t.sin())
+    };
+    (0..n).map(|k| [corner(k), corner(k + 1)]).collect()
+}
+
+#[test]
+fn closed_polygon_and_polygon_with_hole() {
+    let outer = polygon(p(0., 0.), 10., 1000);
+    assert!(check(&outer).is_ok());
+    let mut with_hole = outer.clone();
+    with_hole.extend(polygon(p(1., 0.), 3., 37));
+    with_hole.extend(polygon(p(-5., 0.), 1., 3));
+    let out = check_segments(&[p(0.5, 0.5)], &with_hole).unwrap();
+    assert_eq!(out.segments.len(), 1040);
+    // A hole too big for its polygon crosses it.
+    let mut bad = outer;
+    bad.extend(polygon(p(5., 0.), 6., 5));
+    assert!(matches!(check(&bad), Err(Conflict::SegmentsCross { .. })));
+}
+
+// ---- exactness ----
+
+#[test]
+fn one_ulp_decides() {
+    let bar = s(0., 0., 2., 0.);
+    assert!(check(&[bar, s(1., up(0.), 1., 5.)]).is_ok(), "one ulp above");
+    assert_eq!(
+        check(&[bar, s(1., 0., 1., 5.)]),
+        Err(Conflict::EndpointOnSegment {
+            segment: 0,
+            endpoint_of: 1
+        })
+    );
+    assert_eq!(
+        check(&[bar, s(1., -f64::from_bits(1), 1., 5.)]),
+        Err(Conflict::SegmentsCross { first: 0, second: 1 })
+    );
+    // Near the end of the bar: one ulp beyond it is fine.
+    assert!(check(&[bar, s(up(2.), 0., 3., 5.)]).is_ok());
+    assert_eq!(
+        check(&[bar, s(down(2.), 0., 3., 5.)]),
+        Err(Conflict::EndpointOnSegment {
+            segment: 0,
+            endpoint_of: 1
+        })
+    );
+    // A diagonal: a point one ulp off the line is not on it.
+    let diag = s(0.1, 0.1, 0.7, 0.7);
+    assert!(check_segments(&[p(0.3, up(0.3))], &[diag]).is_ok());
+    assert!(check_segments(&[p(0.3, 0.3)], &[diag]).is_err());
+    // Nearly parallel segments one ulp apart.
+    assert!(check(&[s(0., 1., 1e6, 1.), s(0., up(1.), 1e6, up(1.))]).is_ok());
+    assert!(check(&[s(0., 1., 1e6, 1.), s(0., up(1.), 1e6, down(1.))]).is_err());
+}
+
+#[test]
+fn huge_and_tiny_coordinates() {
+    for &f in &[1e300, 1e-300, 1.0, f64::from_bits(8) /* 8 × 2^-1074 */] {
+        let cross = [s(-f, -f, f, f), s(-f, f, f, -f)];
+        assert_eq!(
+            check(&cross),
+            Err(Conflict::SegmentsCross { first: 0, second: 1 }),
+            "{f}"
+        );
+        let apart = [s(-f, -f, f, f), s(-f, f, -f / 2.0, 0.5 * f)];
+        assert!(check(&apart).is_ok(), "{f}");
+    }
+    // Tiny: on the diagonal, and one ulp off it (products underflow
+    // without the power-of-two scaling).
+    let diag = s(0., 0., 2e-300, 2e-300);
+    assert!(check_segments(&[p(1e-300, 1e-300)], &[diag]).is_err());
+    assert!(check_segments(&[p(1e-300, up(1e-300))], &[diag]).is_ok());
+    // Huge: a T-junction and its one-ulp miss (products overflow
+    // without the scaling).
+    let bar = s(-1e300, 1e300, 1e300, -1e300);
+    assert!(check(&[bar, s(3e299, -3e299, 1e300, 1e300)]).is_err());
+    assert!(
+        check(&[bar, s(3e299, down(-3e299), 1e300, 1e300)]).is_ok(),
+        "one ulp nearer zero"
+    );
+    // Beyond the documented range: a difference of 1e-324 next to 1e300
+    // vanishes in the scaling (as in the point builder), so this touches.
+    assert!(check(&[bar, s(f64::from_bits(1), 0., 1e300, 1e300)]).is_err());
+}
+
+#[test]
+fn tiny_extent_next_to_a_far_point_uses_one_cell() {
+    // The far point sets the scale, so the segments' extent stays near
+    // 1e-300: the grid falls back to one cell. (The orientations there
+    // underflow, beyond the predicates' documented exact range, so only
+    // "no panic, an answer" is asserted.)
+    let t = 1e-300;
+    let segments = [s(0., 0., t, 0.), s(t, 0., t, t), s(0., t, 0.5 * t, 2. * t)];
+    let grid = Grid::for_segments(&segments.map(|q| (0, q)));
+    assert!(grid.single);
+    let mut cells = Vec::new();
+    grid.cover(segments[2][0], segments[2][1], &mut cells);
+    assert_eq!((cells, grid.cell_of(p(t, t))), (vec![0], 0));
+    let _ = check_segments(&[p(1.0, 1.0)], &segments);
+}
+
+// ---- the grid against brute force ----
+
+/// All pairs, in the order `find_conflict` promises.
+fn brute_force(norm: &Normalised) -> Option<Conflict> {
+    let m = norm.segments.len();
+    let seg = (0..m)
+        .flat_map(|i| (i + 1..m).map(move |j| (i, j)))
+        .find_map(|(i, j)| segment_conflict(norm, i, j));
+    seg.or_else(|| {
+        (0..norm.points.len())
+            .flat_map(|q| (0..m).map(move |s| (q, s)))
+            .find_map(|(q, s)| point_conflict(norm, q, s))
+    })
+}
+
+/// Whether integer input breaks the rules, decided independently of
+/// `segment_contact`: intersections computed in exact integer arithmetic.
+fn integer_oracle(points: &[(i64, i64)], segments: &[[(i64, i64); 2]]) -> bool {
+    let mut kept: Vec<[(i64, i64); 2]> = Vec::new();
+    let mut lone: Vec<(i64, i64)> = points.to_vec();
+    for &[a, b] in segments {
+        if a == b {
+            lone.push(a);
+        } else if !kept.iter().any(|&[c, d]| (a, b) == (c, d) || (a, b) == (d, c)) {
+            kept.push([a, b]);
+        }
+    }
+    let pairs = (0..kept.len()).any(|i| (i + 1..kept.len()).any(|j| integer_pair_conflict(kept[i], kept[j])));
+    pairs || lone.iter().any(|&q| kept.iter().any(|&seg| integer_inside(q, seg)))
+}
+
+fn sub(a: (i64, i64), b: (i64, i64)) -> (i64, i64) {
+    (a.0 - b.0, a.1 - b.1)
+}
+fn cross(u: (i64, i64), v: (i64, i64)) -> i64 {
+    u.0 * v.1 - u.1 * v.0
+}
+fn dot(u: (i64, i64), v: (i64, i64)) -> i64 {
+    u.0 * v.0 + u.1 * v.1
+}
+
+fn integer_inside(q: (i64, i64), [a, b]: [(i64, i64); 2]) -> bool {
+    let (r, w) = (sub(b, a), sub(q, a));
+    cross(r, w) == 0 && 0 < dot(r, w) && dot(r, w) < dot(r, r)
+}
+
+/// Closed segments meet in anything but a common endpoint.
+fn integer_pair_conflict([a, b]: [(i64, i64); 2], [c, d]: [(i64, i64); 2]) -> bool {
+    let (r, q, w) = (sub(b, a), sub(d, c), sub(c, a));
+    let den = cross(r, q);
+    if den == 0 {
+        if cross(r, w) != 0 {
+            return false; // parallel lines
+        }
+        // Same line: parameters along r; conflict iff the overlap has length.
+        let (tc, td) = (dot(r, w), dot(r, sub(d, a)));
+        return tc.max(td).min(dot(r, r)) > tc.min(td).max(0);
+    }
+    // a + t r = c + u q with t = tn / den, u = un / den.
+    let (tn, un) = (cross(w, q), cross(w, r));
+    let (tn, un, den) = if den < 0 { (-tn, -un, -den) } else { (tn, un, den) };
+    let meets = (0..=den).contains(&tn) && (0..=den).contains(&un);
+    let at_end = |n: i64| n == 0 || n == den;
+    meets && !(at_end(tn) && at_end(un))
+}
+
+/// `v * scale + offset`, exact for the placements used here.
+fn to_f64(v: (i64, i64), (scale, offset): (f64, f64)) -> Point {
+    p(v.0 as f64 * scale + offset, v.1 as f64 * scale + offset)
+}
+
+type IntInput = (Vec<(i64, i64)>, Vec<[(i64, i64); 2]>);
+
+/// Coordinates on a small grid: shared endpoints, T-junctions and
+/// collinear neighbours are common.
+fn small_grid_input() -> impl Strategy<Value = IntInput> {
+    let v = (0i64..6, 0i64..6);
+    (
+        prop::collection::vec(v.clone(), 0..5),
+        prop::collection::vec([v.clone(), v], 0..12),
+    )
+}
+
+/// Short segments spread over a larger grid: many grid cells in use.
+fn spread_input() -> impl Strategy<Value = IntInput> {
+    let seg = ((0i64..40, 0i64..40), (-4i64..=4, -4i64..=4)).prop_map(|(a, d)| [a, (a.0 + d.0, a.1 + d.1)]);
+    (
+        prop::collection::vec((0i64..40, 0i64..40), 0..20),
+        prop::collection::vec(seg, 0..50),
+    )
+}
+
+/// A random walk on a small grid as a polyline: every inner vertex is a
+/// shared endpoint, and the walk often touches or retraces itself.
+fn polyline_input() -> impl Strategy<Value = IntInput> {
+    let steps = prop::collection::vec((-2i64..=2, -2i64..=2), 1..10);
+    (
+        (0i64..8, 0i64..8),
+        steps,
+        prop::collection::vec((0i64..8, 0i64..8), 0..3),
+    )
+        .prop_map(|(start, steps, points)| {
+            let mut at = start;
+            let mut segments = Vec::new();
+            for (dx, dy) in steps {
+                let next = (at.0 + dx, at.1 + dy);
+                segments.push([at, next]);
+                at = next;
+            }
+            (points, segments)
+        })
+}
+
+fn run(input: &IntInput, f: (f64, f64)) -> Result<(), TestCaseError> {
+    let (points, segments) = input;
+    let fp: Vec<Point> = points.iter().map(|&v| to_f64(v, f)).collect();
+    let fs: Vec<[Point; 2]> = segments.iter().map(|s| s.map(|v| to_f64(v, f))).collect();
+    let norm = normalise(&fp, &fs, |q| q.scaled(input_scale(&fp, &fs).to_internal).canonical_zero());
+    let grid_answer = find_conflict(&norm);
+    prop_assert_eq!(grid_answer, brute_force(&norm));
+    prop_assert_eq!(grid_answer.is_some(), integer_oracle(points, segments));
+    prop_assert_eq!(check_segments(&fp, &fs).err(), grid_answer);
+    Ok(())
+}
+
+/// Exact placements `(scale, offset)` of the integer inputs, so that
+/// the integer oracle stays right: powers of two (and 3) move them to
+/// magnitudes where the power-of-two scaling matters; the offsets put
+/// them far from the origin, where one ulp of a coordinate is a sizeable
+/// part of a grid cell.
+fn placement() -> impl Strategy<Value = (f64, f64)> {
+    prop::sample::select(vec![
+        (1.0, 0.0),
+        (3.0, 0.0),
+        (2f64.powi(1000), 0.0),
+        (2f64.powi(-1000), 0.0),
+        (f64::from_bits(1 << 4), 0.0), // 2^-1070, subnormal
+        (0.25, 2f64.powi(50)),         // ulp 0.25
+        (1.0, -(2f64.powi(52))),       // ulp 0.5 to 1
+    ])
+}
+
+/// Segments with real coordinates in `[-r, r)`.
+fn real_segments(r: f64, count: std::ops::Range<usize>) -> impl Strategy<Value = Vec<[(f64, f64); 2]>> {
+    let v = (-r..r, -r..r);
+    prop::collection::vec([v.clone(), v], count)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
+
+    #[test]
+    fn grid_agrees_with_brute_force_small_grid(input in small_grid_input(), f in placement()) {
+        run(&input, f)?;
+    }
+
+    #[test]
+    fn grid_agrees_with_brute_force_spread(input in spread_input(), f in placement()) {
+        run(&input, f)?;
+    }
+
+    #[test]
+    fn grid_agrees_with_brute_force_polyline(input in polyline_input(), f in placement()) {
+        run(&input, f)?;
+    }
+
+    /// Random real coordinates: crossings are common, collinearity not.
+    #[test]
+    fn grid_agrees_with_brute_force_reals(
+        segments in real_segments(100.0, 0..40),
+    ) {
+        let fs: Vec<[Point; 2]> = segments.iter().map(|s| s.map(|(x, y)| p(x, y))).collect();
+        let norm = normalise(&[], &fs, |q| q.canonical_zero());
+        prop_assert_eq!(find_conflict(&norm), brute_force(&norm));
+    }
+
+    /// Points computed along a segment land in cells it registered.
+    #[test]
+    fn cover_is_conservative(
+        segments in real_segments(1e3, 1..30),
+    ) {
+        let kept: Vec<(usize, [Point; 2])> = segments
+            .iter()
+            .map(|s| s.map(|(x, y)| p(x, y)))
+            .filter(|[a, b]| a != b)
+            .enumerate()
+            .collect();
+        prop_assume!(!kept.is_empty());
+        let grid = Grid::for_segments(&kept);
+        for (_, [a, b]) in &kept {
+            let mut cells = Vec::new();
+            grid.cover(*a, *b, &mut cells);
+            for k in 0..=64 {
+                let t = k as f64 / 64.0;
+                let q = p(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
+                prop_assert!(cells.contains(&grid.cell_of(q)), "{:?} {:?} t={}", a, b, t);
+            }
+        }
+    }
+}
+
+// ---- scale ----
+
+/// A tiny xorshift generator: the test needs no other dependency.
+struct Rng(u64);
+impl Rng {
+    fn unit(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// One short segment in each cell of a 317 × 317 lattice (never
+/// crossing), plus a point in each cell away from its segment.
+fn jittered_segments(n_side: usize, rng: &mut Rng) -> (Vec<Point>, Vec<[Point; 2]>) {
+    let mut segments = Vec::with_capacity(n_side * n_side);
+    let mut points = Vec::new();
+    for i in 0..n_side {
+        for j in 0..n_side {
+            let (x, y) = (i as f64, j as f64);
+            let mut corner = || p(x + 0.05 + 0.9 * rng.unit(), y + 0.05 + 0.45 * rng.unit());
+            segments.push([corner(), corner()]);
+            if (i + j) % 10 == 0 {
+                points.push(p(x + 0.05 + 0.9 * rng.unit(), y + 0.55 + 0.4 * rng.unit()));
+            }
+        }
+    }
+    (points, segments)
+}
+
+#[test]
+fn scale_100k_segments() {
+    let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+    let (points, segments) = jittered_segments(317, &mut rng);
+    let start = std::time::Instant::now();
+    let out = check_segments(&points, &segments).unwrap();
+    let jittered = start.elapsed();
+    assert_eq!(out.segments.len(), segments.len());
+
+    // An open polyline through one corner per lattice cell, column by
+    // column, up one column and down the next: consecutive cells are
+    // neighbours, so it never crosses itself, and every inner vertex is
+    // shared by two segments.
+    let side = 317;
+    let corner = |i: usize, j: usize| segments[i * side + j][0];
+    let snake_order =
+        (0..side).flat_map(|i| (0..side).map(move |j| (i, if i % 2 == 0 { j } else { side - 1 - j })));
+    let vertices: Vec<Point> = snake_order.map(|(i, j)| corner(i, j)).collect();
+    let snake: Vec<[Point; 2]> = vertices.windows(2).map(|w| [w[0], w[1]]).collect();
+    let start = std::time::Instant::now();
+    let out = check(&snake).unwrap();
+    let polyline = start.elapsed();
+    assert_eq!(out.segments.len(), snake.len());
+    println!(
+        "input_check: {} jittered segments + {} points checked in {:?}; {}-edge polyline in {:?}",
+        segments.len(),
+        points.len(),
+        jittered,
+        snake.len(),
+        polyline,
+    );
+
+    // The same segments with one crossing added at the end: found.
+    let mut bad = segments.clone();
+    let last = segments[segments.len() - 1];
+    bad.push([p(last[0].x, last[1].y), p(last[1].x, last[0].y)]);
+    if let Err(c) = check(&bad) {
+        assert!(matches!(c, Conflict::SegmentsCross { second, .. } if second == segments.len()));
+    } else {
+        panic!("added crossing missed");
+    }
+}

@@ -1,0 +1,222 @@
+//! Construction: from the builder's input to a finished [`Diagram`], by the
+//! topology-oriented method (DESIGN §2). The steps, each in its own file:
+//!
+//! 1. `builder.rs`: [`Builder`] collects the input (finite coordinates,
+//!    the size limit).
+//! 2. Here, [`diagram_of`]: scale (one power of two for the whole input,
+//!    `geometry::scale`) → check (`input_check/`: normalisation, the
+//!    classification of a pair, the candidate search; on large inputs beside
+//!    the point insertions) → insert → renumber → accept (never an invalid
+//!    diagram).
+//! 3. Insert (`restart.rs`, with the restarts for closed chains): every
+//!    point (`insert_point.rs`: nearest-site walk, seed, growth of P1/P2;
+//!    in `insertion_order.rs`'s order), then every segment
+//!    (`insert_segment/`: the path of P4, the growth of P3/P5); all points
+//!    on one line instead as a ladder (`collinear.rs`). Both insertions
+//!    delete a tree and replace it by the new cell (`deletion_tree.rs`), on
+//!    the state of `state.rs` (the store, the sites and their kinds, the
+//!    marks).
+//! 4. Renumber (`renumber.rs`): internal ids to public ones, positions back
+//!    to input coordinates.
+//!
+//! Nothing here does arithmetic on coordinates to decide anything: every
+//! numerical question goes to `geometry`, and integer bookkeeping keeps the
+//! diagram valid whatever the answers.
+
+mod builder;
+mod collinear;
+mod deletion_tree;
+mod input_check;
+mod insert_point;
+mod insert_segment;
+mod insertion_order;
+pub(crate) mod polygon_input;
+mod renumber;
+mod restart;
+mod state;
+
+pub use builder::{Builder, MAX_POINTS};
+#[cfg(feature = "fault-injection")]
+pub use restart::set_restart_budget;
+
+use crate::diagram::Diagram;
+use crate::error::{Error, ErrorKind};
+use crate::geometry::scale::Scale;
+use crate::geometry::Point;
+use input_check::{check_segments, Conflict};
+use insert_point::insert_points;
+use renumber::SegmentSite;
+use restart::{insert_all, insert_all_from, Outcome, Stuck};
+
+/// The diagram of the builder's input, or the error that
+/// [`Builder::build`] returns (see there).
+pub(super) fn diagram_of(points: &[Point], segments: &[[Point; 2]]) -> Result<Diagram, Error> {
+    let (diagram, outcome) = if segments.is_empty() {
+        build_points(points)
+    } else {
+        build_sites(points, segments)?
+    };
+    accept(diagram, outcome, points, segments)
+}
+
+/// The Voronoi diagram of finite points, and how its construction ended
+/// (checked by [`accept`]).
+fn build_points(input: &[Point]) -> (Diagram, Outcome) {
+    let scale = input_scale(input, &[]);
+    let points = to_internal(input, scale);
+    let (diagram, site_of_input, _, outcome) = insert_all(&points, &[]);
+    (renumber::renumber(diagram, &site_of_input, input, &[], scale), outcome)
+}
+
+/// The diagram of points and segments, and how its construction ended
+/// (checked by [`accept`]); `Err` for input that crosses itself.
+///
+/// Check the input (beside the point insertions, on large inputs), list
+/// every point in the naming order (isolated points, then each segment's
+/// first and second endpoint), insert the points and then the segments,
+/// renumber.
+fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<(Diagram, Outcome), Error> {
+    // P<k> numbers the distinct points of this list by first appearance.
+    let mut all: Vec<Point> = Vec::with_capacity(points.len() + 2 * segments.len());
+    all.extend_from_slice(points);
+    for s in segments {
+        all.extend_from_slice(s);
+    }
+    let scale = input_scale(points, segments);
+    let scaled = to_internal(&all, scale);
+
+    // The points go in whatever the input check finds (a repeated or
+    // zero-length segment only repeats points), so on large inputs the
+    // check runs on a second thread meanwhile; an error discards the points.
+    let (checked, stage) = if segments.len() >= PARALLEL_CHECK_FROM {
+        let (checked, stage) =
+            run_beside(|| check_segments(points, segments, scale), || insert_points(&scaled, segments.len()));
+        (checked, Some(stage))
+    } else {
+        (check_segments(points, segments, scale), None)
+    };
+    let checked = checked.map_err(|c| conflict_error(&c))?;
+    let stage = stage.unwrap_or_else(|| insert_points(&scaled, segments.len()));
+
+    let kept: Vec<usize> = checked.segments.iter().map(|&(j, _)| j).collect();
+    let pairs: Vec<[usize; 2]> = kept.iter().map(|&j| endpoint_index(points.len(), j)).collect();
+    let (built, site_of_input, segment_sites, outcome) = insert_all_from(stage, &scaled, &pairs);
+    let described: Vec<SegmentSite> = kept
+        .iter()
+        .zip(segment_sites)
+        .map(|(&j, internal)| SegmentSite { input: j, internal, ends: segments[j] })
+        .collect();
+    let mut diagram = renumber::renumber(built, &site_of_input, &all, &described, scale);
+    renumber::number_segment_inputs(&mut diagram, &checked, points.len(), segments.len());
+    Ok((diagram, outcome))
+}
+
+/// The indices in the construction's point list of input segment `j`'s two
+/// endpoints: isolated points first, then each segment's first and second
+/// endpoint.
+fn endpoint_index(points: usize, j: usize) -> [usize; 2] {
+    [points + 2 * j, points + 2 * j + 1]
+}
+
+/// From this many segments on, the input check runs beside the point
+/// insertions (below, a thread costs more than it saves).
+const PARALLEL_CHECK_FROM: usize = 20_000;
+
+/// The one power-of-two scale of a build (`Scale::for_coordinates` of every
+/// coordinate, points and segment endpoints): the input check and the
+/// insertions both work in the coordinates it makes.
+fn input_scale(points: &[Point], segments: &[[Point; 2]]) -> Scale {
+    Scale::for_coordinates(points.iter().chain(segments.iter().flatten()).flat_map(|p| [p.x, p.y]))
+}
+
+/// `input` in the construction's coordinates (scaled, with `-0` made `+0`).
+fn to_internal(input: &[Point], scale: Scale) -> Vec<Point> {
+    input.iter().map(|p| p.scaled(scale.to_internal).canonical_zero()).collect()
+}
+
+/// Runs `beside` on a second thread while `here` runs on this one, and
+/// returns both results. When no thread can be had (resource limits) both
+/// run here, one after the other. A panic in `beside` is passed on.
+pub(crate) fn run_beside<A: Send, B>(beside: impl FnOnce() -> A + Send, here: impl FnOnce() -> B) -> (A, B) {
+    // Whichever side gets to it runs the task: the thread, or this one if
+    // the thread could not start.
+    let task = std::sync::Mutex::new(Some(beside));
+    let take_and_run = || task.lock().ok().and_then(|mut t| t.take()).map(|f| f());
+    std::thread::scope(|scope| {
+        let handle = std::thread::Builder::new().spawn_scoped(scope, take_and_run).ok();
+        let b = here();
+        let a = handle.and_then(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).or_else(take_and_run);
+        (a.expect("the task ran on one of the two threads"), b)
+    })
+}
+
+/// The builder's error for an input conflict, naming both input indices.
+fn conflict_error(conflict: &Conflict) -> Error {
+    let indices = match *conflict {
+        Conflict::SegmentsCross { first, second } | Conflict::SegmentsOverlap { first, second } => vec![first, second],
+        Conflict::EndpointOnSegment { segment, endpoint_of } => vec![segment, endpoint_of],
+        Conflict::PointOnSegment { point, segment } => vec![point, segment],
+    };
+    Error::new(ErrorKind::Intersecting, conflict.message(), indices)
+}
+
+/// `diagram`, or [`ErrorKind::Internal`] when the construction did not
+/// complete (a segment without a path after the last restart) or, where
+/// the diagram is checked, it fails [`Diagram::validate`].
+///
+/// The check is the whole combinatorial validation, which costs about a
+/// quarter of the build itself (1M random points: 0.7 s against 2.8 s;
+/// 1M points and 300k short segments: 1.5 s against 6.9 s), so release
+/// builds run it only where something went wrong on the way (the
+/// construction started over) and under fault injection; debug builds
+/// always.
+fn accept(diagram: Diagram, outcome: Outcome, points: &[Point], segments: &[[Point; 2]]) -> Result<Diagram, Error> {
+    if let Some(stuck) = outcome.stuck {
+        return Err(stuck_error(stuck, outcome.restarts, points, segments));
+    }
+    let check = cfg!(debug_assertions) || outcome.restarts > 0 || crate::geometry::fault::active();
+    if check {
+        if let Err(e) = diagram.validate() {
+            let after = match outcome.restarts {
+                0 => String::new(),
+                1 => " (after 1 restart)".to_string(),
+                n => format!(" (after {n} restarts)"),
+            };
+            return Err(Error::new(
+                ErrorKind::Internal,
+                format!(
+                    "construction could not complete: the finished diagram is invalid{after}: {}; please report this input",
+                    e.0
+                ),
+                Vec::new(),
+            ));
+        }
+    }
+    Ok(diagram)
+}
+
+/// The error for a segment that found no path in the last attempt.
+fn stuck_error(stuck: Stuck, restarts: usize, points: &[Point], segments: &[[Point; 2]]) -> Error {
+    // Endpoint `i` of the construction's point list is input segment
+    // `(i - points) / 2`'s (isolated points first, then each segment's
+    // two endpoints: see `endpoint_index`).
+    let segment = stuck.endpoint.checked_sub(points.len()).map(|i| i / 2).filter(|&j| j < segments.len());
+    let which = match segment {
+        Some(j) => {
+            let [a, b] = segments[j];
+            format!("segment {j} ({}, {}) - ({}, {})", a.x, a.y, b.x, b.y)
+        }
+        None => "a segment".to_string(),
+    };
+    let plural = if restarts == 1 { "" } else { "s" };
+    let when = if stuck.inserted_first {
+        format!("even when inserted first, after {restarts} restart{plural}")
+    } else {
+        format!("after {restarts} restart{plural}")
+    };
+    Error::new(
+        ErrorKind::Internal,
+        format!("construction could not complete: {which} found no path {when}; please report this input"),
+        segment.into_iter().collect(),
+    )
+}
