@@ -1,0 +1,1 @@
+//! The benchmark inputs (see bench/).
