@@ -1,7 +1,12 @@
 # Cross-check against CGAL's segment Delaunay graph (exact predicates).
 # Included by c_tests/CMakeLists.txt after find_package(segvoronoi); adds the
 # program segvoronoi_cgal_check and one test per input family, or skips with
-# a warning when the CGAL headers, Boost headers, GMP or MPFR are missing.
+# a warning when the CGAL headers, Boost headers, GMP or MPFR are missing, or
+# the input generator segvoronoi-testgen is (it is built here with cargo
+# from testgen/ of the source tree, SEGVORONOI_TESTGEN_SOURCE, unless
+# SEGVORONOI_TESTGEN names a built one). A family's test generates its input
+# file and compares it (cgal_family.cmake); the search reads the generator's
+# cases through a pipe.
 #
 # find_package(CGAL) is deliberately not used: its config also changes
 # project-wide settings (build type), and the headers plus two libraries are
@@ -33,15 +38,58 @@ endif()
 target_link_libraries(segvoronoi_cgal_check PRIVATE
   segvoronoi::segvoronoi ${SEGVORONOI_MPFR_LIBRARY} ${SEGVORONOI_GMP_LIBRARY})
 
-# One test per "family count timeout" entry, named cgal_<family>_<count>.
+# The input generator: cargo builds it into CARGO_TARGET_DIR when that is
+# set (shared with the package's build), else into this build directory.
+set(SEGVORONOI_TESTGEN "" CACHE FILEPATH
+    "segvoronoi-testgen to use (empty: build it from SEGVORONOI_TESTGEN_SOURCE with cargo)")
+set(SEGVORONOI_TESTGEN_SOURCE "${CMAKE_CURRENT_LIST_DIR}/../testgen" CACHE PATH
+    "testgen/ of the segvoronoi source tree")
+if(SEGVORONOI_TESTGEN)
+  set(_segvoronoi_testgen "${SEGVORONOI_TESTGEN}")
+else()
+  find_program(SEGVORONOI_CARGO cargo)
+  if(NOT SEGVORONOI_CARGO OR NOT EXISTS "${SEGVORONOI_TESTGEN_SOURCE}/Cargo.toml")
+    message(WARNING "CGAL cross-check skipped: need segvoronoi-testgen (cargo and SEGVORONOI_TESTGEN_SOURCE "
+                    "= testgen/ of the segvoronoi sources, or SEGVORONOI_TESTGEN = a built one)")
+    return()
+  endif()
+  if(DEFINED ENV{CARGO_TARGET_DIR})
+    set(_segvoronoi_testgen_target "$ENV{CARGO_TARGET_DIR}")
+  else()
+    set(_segvoronoi_testgen_target "${CMAKE_CURRENT_BINARY_DIR}/cargo")
+  endif()
+  set(_segvoronoi_testgen "${_segvoronoi_testgen_target}/release/segvoronoi-testgen")
+  add_custom_target(segvoronoi_testgen ALL
+    COMMAND "${SEGVORONOI_CARGO}" build --release --locked --quiet --bin segvoronoi-testgen
+            --manifest-path "${SEGVORONOI_TESTGEN_SOURCE}/Cargo.toml" --target-dir "${_segvoronoi_testgen_target}"
+    BYPRODUCTS "${_segvoronoi_testgen}"
+    COMMENT "cargo build segvoronoi-testgen"
+    USES_TERMINAL VERBATIM)
+  add_dependencies(segvoronoi_cgal_check segvoronoi_testgen)
+endif()
+target_compile_definitions(segvoronoi_cgal_check PRIVATE SEGVORONOI_TESTGEN_PATH="${_segvoronoi_testgen}")
+set(_segvoronoi_cgal_dir "${CMAKE_CURRENT_LIST_DIR}")
+
+# The test `name`: family `family` of size `count` from `seed`, generated
+# into inputs/<name>.txt and compared (as degenerate where the generator
+# says so).
+function(segvoronoi_cgal_generated_test name family count seed timeout)
+  add_test(NAME ${name}
+           COMMAND ${CMAKE_COMMAND} -DTESTGEN=${_segvoronoi_testgen} -DCHECK=$<TARGET_FILE:segvoronoi_cgal_check>
+                   -DFAMILY=${family} -DCOUNT=${count} -DSEED=${seed}
+                   -DINPUT=${CMAKE_CURRENT_BINARY_DIR}/inputs/${name}.txt -P ${_segvoronoi_cgal_dir}/cgal_family.cmake)
+  set_tests_properties(${name} PROPERTIES TIMEOUT ${timeout} LABELS cgal)
+endfunction()
+
+# One test per "family count timeout" entry, named cgal_<family>_<count>
+# (seed 1).
 function(segvoronoi_cgal_family_tests)
   foreach(_run IN LISTS ARGN)
     separate_arguments(_run)
     list(GET _run 0 _family)
     list(GET _run 1 _count)
     list(GET _run 2 _timeout)
-    add_test(NAME cgal_${_family}_${_count} COMMAND segvoronoi_cgal_check ${_family} ${_count})
-    set_tests_properties(cgal_${_family}_${_count} PROPERTIES TIMEOUT ${_timeout} LABELS cgal)
+    segvoronoi_cgal_generated_test(cgal_${_family}_${_count} ${_family} ${_count} 1 ${_timeout})
   endforeach()
 endfunction()
 
@@ -62,15 +110,13 @@ unset(_segvoronoi_cgal_runs)
 # Regression inputs from library bugs this cross-check found: edge lengths
 # that underflowed when squared (tiny lattice), and a repeated point that a
 # walk with rounded distance comparisons missed (snapped, seed 3).
-add_test(NAME cgal_tiny-lattice_2500 COMMAND segvoronoi_cgal_check tiny-lattice 2500)
-add_test(NAME cgal_snapped_40_seed3 COMMAND segvoronoi_cgal_check snapped 40 3)
-set_tests_properties(cgal_tiny-lattice_2500 cgal_snapped_40_seed3 PROPERTIES TIMEOUT 120 LABELS cgal)
+segvoronoi_cgal_generated_test(cgal_tiny-lattice_2500 tiny-lattice 2500 1 120)
+segvoronoi_cgal_generated_test(cgal_snapped_40_seed3 snapped 40 3 120)
 
 # Few distinct coordinate values a hair apart: repeats, collinear and
 # cocircular points and needle triangles, several seeds.
 foreach(_seed 1 2 3 4 5)
-  add_test(NAME cgal_snapped_150_seed${_seed} COMMAND segvoronoi_cgal_check snapped 150 ${_seed})
-  set_tests_properties(cgal_snapped_150_seed${_seed} PROPERTIES TIMEOUT 60 LABELS cgal)
+  segvoronoi_cgal_generated_test(cgal_snapped_150_seed${_seed} snapped 150 ${_seed} 60)
 endforeach()
 
 # Line segments (n = number of segments; none cross). Generic families,
@@ -93,8 +139,7 @@ unset(_segvoronoi_cgal_segment_runs)
 # centre is one degenerate vertex of n segments and only VPAIRS/VVERTICES
 # (zero length decided on CGAL's double constructions) are compared.
 foreach(_sides RANGE 3 64)
-  add_test(NAME cgal_polygon_${_sides} COMMAND segvoronoi_cgal_check polygon ${_sides})
-  set_tests_properties(cgal_polygon_${_sides} PROPERTIES TIMEOUT 60 LABELS cgal)
+  segvoronoi_cgal_generated_test(cgal_polygon_${_sides} polygon ${_sides} 1 60)
 endforeach()
 
 # Regression: two segments, one passing just below the other's endpoint
@@ -109,10 +154,10 @@ set_tests_properties(cgal_two_segments_near_endpoint PROPERTIES TIMEOUT 60 LABEL
 # edge (seg-random1 8); a segment that continues another straight on leaves
 # the shared endpoint a cell of no width (collinear_continuation, from the
 # proptest of tests/segments.rs).
-add_test(NAME cgal_seg-random1_8 COMMAND segvoronoi_cgal_check seg-random1 8)
+segvoronoi_cgal_generated_test(cgal_seg-random1_8 seg-random1 8 1 60)
 add_test(NAME cgal_collinear_continuation
          COMMAND segvoronoi_cgal_check --file ${CMAKE_CURRENT_LIST_DIR}/fixtures/collinear_continuation.txt)
-set_tests_properties(cgal_seg-random1_8 cgal_collinear_continuation PROPERTIES TIMEOUT 60 LABELS cgal)
+set_tests_properties(cgal_collinear_continuation PROPERTIES TIMEOUT 60 LABELS cgal)
 
 # Issue 3's further segment families. Generic (EDGES and FACES must agree):
 # a random polygon with random polygonal holes (n corners in all), the
@@ -218,11 +263,13 @@ set(_segvoronoi_cgal_split_runs "boost-split 1000 60" "boost-split 10000 120")
 segvoronoi_cgal_family_tests(${_segvoronoi_cgal_split_runs})
 unset(_segvoronoi_cgal_split_runs)
 
-# Randomised search: small random inputs of every kind the harness knows
+# Randomised search: small random inputs of every kind the generator knows
 # (integer junctions, stars, polylines, snapped floats, small boost-split,
-# near-degenerate nudges of small-grid inputs), each as generated, reversed
-# and shuffled, for 120 s with a new seed each run; failures are minimised
-# and printed in the input format (see the top of cgal_crosscheck.cpp).
+# near-degenerate nudges of small-grid inputs; testgen/src/search.rs), read
+# from `segvoronoi-testgen search SEED` through a pipe, each as generated,
+# reversed and shuffled, for 120 s with a new seed each run; failures are
+# minimised and printed in the input format (see the top of
+# cgal_crosscheck.cpp).
 # cgal_search_generic draws only the kinds compared as generic and none of
 # the near-degenerate ones (no small-grid junctions, no snapped floats, no
 # nudged points).
@@ -324,8 +371,7 @@ set_tests_properties(
 # degenerate where CGAL finds an exact degeneracy (a Voronoi edge of
 # length zero: the harness then compares again).
 function(segvoronoi_cgal_seeded_test family count seed)
-  add_test(NAME cgal_${family}_${count}_seed${seed} COMMAND segvoronoi_cgal_check ${family} ${count} ${seed})
-  set_tests_properties(cgal_${family}_${count}_seed${seed} PROPERTIES TIMEOUT 120 LABELS cgal)
+  segvoronoi_cgal_generated_test(cgal_${family}_${count}_seed${seed} ${family} ${count} ${seed} 120)
 endfunction()
 foreach(_run "8 0" "64 1" "256 4" "512 2" "1024 0" "4096 3")
   separate_arguments(_run)

@@ -1,69 +1,46 @@
 // segvoronoi_cgal_check: builds the Voronoi diagram of one set of points and
 // line segments with segvoronoi (through its C API) and with CGAL's segment
 // Delaunay graph (exact predicates), writes both in the canonical topology of
-// src/query/topology.rs and compares them as multisets of lines.
+// src/query/topology.rs and compares them as multisets of lines. It reads its
+// inputs; the generated ones come from segvoronoi-testgen (testgen/: every
+// family, `segvoronoi-testgen --list`, and the search's cases).
 //
-//   segvoronoi_cgal_check <family> <n> [seed]
-//   segvoronoi_cgal_check --file input.txt [--degenerate]
-//   segvoronoi_cgal_check --search SECONDS [seed] [--generic] [--no-subnormal] [--out DIR]
+//   segvoronoi_cgal_check --file input.txt [--degenerate] [--family NAME]
+//   segvoronoi_cgal_check --search SECONDS [seed] [--generic] [--no-subnormal] [--out DIR] [--testgen PATH]
 //   segvoronoi_cgal_check --minimise input.txt [--degenerate]
 //
-// Point families: uniform, clustered, tiny, tiny-offset, huge (generic: EDGES
-// and FACES must agree exactly) and lattice, circle, collinear, tiny-lattice,
-// snapped (degenerate: only VPAIRS and VVERTICES are unique, so only they
-// must agree). Segment families (n = number of segments, all non-crossing):
-// seg-random1/2/3 (the three generators of seed 000 in [0,1]^2), seg-short
-// (random short segments), polyline (a random non-crossing walk of
-// random-length steps), square-hole (8 segments, n ignored), polygon-holes
-// (a random polygon with random polygonal holes, n corners in all),
-// letter-gap (the outline of a capital R, every segment shortened at both
-// ends by its own amounts, n ignored) and near-vertical (segments whose x
-// changes by 1e-9 of their length, half of them chained) are generic;
-// polygon (regular n-gon), star (n segments from one point), tangent (n
-// segments tangent to the unit circle), seg-lattice (the unit segments of an
-// integer grid), parallel (n equal, equally spaced parallel segments) and
-// letter (the R with shared endpoints and a font's aligned corners) are
-// degenerate; inscribed, inscribed-jitter (n-gons inscribed in a circle of
-// radius 1e-6 .. 1e6 by seed), fan (n equal spokes in random directions)
-// kinked-chain (joints turning by 1e-8 .. 1e-15 rad by seed), ulp-off-line
-// (short segments, each with a point one ulp off its line), ulp-ends (a
-// chain whose joints are open by one ulp) and glyph (the two rings of an
-// "O" flattened into chords at integer font units) are near-degenerate,
-// compared as generic (as degenerate where CGAL finds an exact degeneracy).
-// boost-split (n random segments on the integer grid of side 1e6, every
-// crossing split at the crossing point rounded to the grid, as
-// Boost.Polygon's benchmark data; about 2.4 n pieces) is generic. For faces
-// with segments CGAL's Voronoi vertex is a double construction, so
+// The file is in Boost.Polygon's text format: P, then P lines "x y", then S,
+// then S lines "x1 y1 x2 y2" (S may be left out when zero). Generic input
+// (the default): EDGES and FACES must agree exactly. Degenerate input
+// (--degenerate: cocircular or collinear sites, where the Delaunay graph is
+// not unique): only VPAIRS and VVERTICES are unique, so only they must agree.
+// For faces with segments CGAL's Voronoi vertex is a double construction, so
 // VPAIRS/VVERTICES of segment inputs decide zero length from rounded
-// positions; they are checked for the degenerate families and informational
+// positions; they are checked for degenerate inputs and informational
 // otherwise (and left out of a generic run when CGAL's construction is not
-// finite, as for nearly collinear segments). The file is in Boost.Polygon's
-// text format: P, then P lines "x y", then S, then S lines "x1 y1 x2 y2". Exit
+// finite, as for nearly collinear segments). A generic input that CGAL finds
+// exactly degenerate (a Voronoi edge of length zero) is compared again as
+// degenerate when the generic comparison differs. --family names the input
+// in the summary line (c_tests/cgal_family.cmake passes the family). Exit
 // status: 0 agreement and a valid diagram, 1 a difference or an invalid
 // diagram, 2 bad usage or input, 3 a library error.
 //
 // --search runs small random inputs until SECONDS are up (seed: a new one
-// each run unless given; printed first). Kinds, one drawn per input:
-// integer junctions (2..40 segments in [0, 20|1000|1e6]^2, 30% of endpoints
-// reused so that up to ten segments meet), stars (3..10 spokes pointing in
-// or out, a few points), polylines (2..40 steps, sometimes closed), snapped
-// floats (multiples of 2^-2..2^-6 with endpoint reuse), small boost-split
-// inputs, and near-degenerate ones (small-grid junctions or snapped floats
-// with points moved by a few ulps, zeros to subnormals, or by 1e-12 or
-// 1e-9). Junctions in [0, 20]^2 and snapped floats are compared as
-// degenerate, the rest as generic (--generic: only those, without the
-// near-degenerate ones; --no-subnormal: without the zeros moved to
-// subnormals); a generic input that CGAL finds exactly
-// degenerate (a Voronoi edge of length zero) is compared as degenerate when
-// the generic comparison differs. Each input is checked as generated, with
-// every segment reversed and shuffled. A difference, an invalid diagram or
-// a library error (an INTERSECTING status included: the generators only
-// make legal inputs, checked exactly) is a failure: it is minimised (drop
+// each run unless given; printed first). They come from `segvoronoi-testgen
+// search SEED [--generic]` through a pipe (the kinds are described in
+// testgen/src/search.rs; --generic: only those compared as generic, without
+// the near-degenerate ones), one record per input: the input as generated
+// and a shuffled copy (--no-subnormal: the kinds that move zeros to
+// subnormals are skipped). Each input is checked as generated, with every
+// segment reversed and shuffled. A difference, an invalid diagram or a
+// library error (an INTERSECTING status included: the generator only makes
+// legal inputs, checked exactly) is a failure: it is minimised (drop
 // segments and points one at a time while it still fails, in a few orders,
 // then turn reversed segments back) and printed in the input format (and
 // written to DIR with --out). Ends with "search: inputs=N per_minute=M
 // failures=K"; exit status 1 when K > 0. --minimise applies the same
-// minimisation to a failing file.
+// minimisation to a failing file. The generator is the one CMake built
+// (SEGVORONOI_TESTGEN_PATH), or --testgen PATH.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpq.h>
@@ -82,12 +59,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <initializer_list>
-#include <iostream>
 #include <map>
 #include <numeric>
 #include <optional>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -96,6 +72,10 @@
 #include <vector>
 
 #include "segvoronoi.h"
+
+#ifndef SEGVORONOI_TESTGEN_PATH
+#define SEGVORONOI_TESTGEN_PATH "segvoronoi-testgen"
+#endif
 
 namespace {
 
@@ -122,962 +102,9 @@ struct Input {
     bool degenerate = false;
 };
 
-// splitmix64: tiny, and the same sequence on every platform (the standard
-// library's distributions are implementation-defined).
-class Rng {
-  public:
-    explicit Rng(std::uint64_t seed) : state_(seed) {}
-
-    std::uint64_t next() {
-        std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-        return z ^ (z >> 31);
-    }
-
-    // Uniform in [0, 1), 53 random bits.
-    double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
-    std::size_t below(std::size_t bound) { return static_cast<std::size_t>(next() % bound); }
-
-    // Standard normal by Box-Muller (one of the pair is enough here).
-    double normal() {
-        const double u = 1.0 - unit();  // in (0, 1], so the log is finite
-        const double v = unit();
-        const double two_pi = 6.283185307179586;
-        return std::sqrt(-2.0 * std::log(u)) * std::cos(two_pi * v);
-    }
-
-  private:
-    std::uint64_t state_;
-};
-
-template <class T>
-void shuffle(std::vector<T>& items, Rng& rng) {
-    for (std::size_t i = items.size(); i > 1; --i) {
-        std::swap(items[i - 1], items[rng.below(i)]);
-    }
-}
-
-std::vector<Point> scaled_uniform(std::size_t n, Rng& rng, double offset, double size) {
-    std::vector<Point> points(n);
-    for (auto& p : points) {
-        p.x = offset + size * rng.unit();
-        p.y = offset + size * rng.unit();
-    }
-    return points;
-}
-
-// Gaussian clusters of different spreads around random centres.
-std::vector<Point> clustered(std::size_t n, Rng& rng) {
-    const std::size_t cluster_count = std::max<std::size_t>(1, n / 500);
-    std::vector<Point> centres(cluster_count);
-    std::vector<double> spreads(cluster_count);
-    for (std::size_t c = 0; c < cluster_count; ++c) {
-        centres[c] = {0.1 + 0.8 * rng.unit(), 0.1 + 0.8 * rng.unit()};
-        spreads[c] = 0.001 + 0.02 * rng.unit();
-    }
-    std::vector<Point> points(n);
-    for (auto& p : points) {
-        const std::size_t c = rng.below(cluster_count);
-        p.x = centres[c].x + spreads[c] * rng.normal();
-        p.y = centres[c].y + spreads[c] * rng.normal();
-    }
-    return points;
-}
-
-// The integer grid side x side with side = floor(sqrt(n)), shuffled: every
-// unit square is cocircular.
-std::vector<Point> lattice(std::size_t n, Rng& rng) {
-    std::size_t side = static_cast<std::size_t>(std::sqrt(static_cast<double>(n)));
-    while ((side + 1) * (side + 1) <= n) ++side;
-    std::vector<Point> points;
-    points.reserve(side * side);
-    for (std::size_t i = 0; i < side; ++i) {
-        for (std::size_t j = 0; j < side; ++j) {
-            points.push_back({static_cast<double>(i), static_cast<double>(j)});
-        }
-    }
-    shuffle(points, rng);
-    return points;
-}
-
-// Every integer point of x^2 + y^2 = R^2 for R = 5*13*17*29*37*41: R^2 is a
-// product of six squared primes of the form 4k + 1, so it has 4 * 3^6 = 2916
-// representations, all exactly cocircular (and R^2 < 2^53, so exact doubles).
-// Shuffled; the first n are kept.
-std::vector<Point> circle(std::size_t n, Rng& rng) {
-    const std::int64_t radius = 5LL * 13 * 17 * 29 * 37 * 41;
-    const std::int64_t r2 = radius * radius;
-    std::vector<Point> points;
-    for (std::int64_t x = 0; x <= radius; ++x) {
-        const std::int64_t rest = r2 - x * x;
-        std::int64_t y = static_cast<std::int64_t>(std::sqrt(static_cast<double>(rest)));
-        while (y * y > rest) --y;
-        while ((y + 1) * (y + 1) <= rest) ++y;
-        if (y * y != rest) continue;
-        // (x, y) with x >= 0, y >= 0 and its mirror images, each once.
-        for (const std::int64_t sx : {1, -1}) {
-            for (const std::int64_t sy : {1, -1}) {
-                if ((sx < 0 && x == 0) || (sy < 0 && y == 0)) continue;
-                points.push_back({static_cast<double>(sx * x), static_cast<double>(sy * y)});
-            }
-        }
-    }
-    shuffle(points, rng);
-    if (points.size() > n) points.resize(n);
-    return points;
-}
-
-// Points (i, 2i + 1) on one line, about a tenth of them repeated, shuffled.
-std::vector<Point> collinear(std::size_t n, Rng& rng) {
-    const std::size_t repeats = n / 10;
-    const std::size_t distinct = n - repeats;
-    std::vector<Point> points;
-    points.reserve(n);
-    for (std::size_t i = 0; i < distinct; ++i) {
-        const double t = static_cast<double>(i);
-        points.push_back({t, 2.0 * t + 1.0});
-    }
-    for (std::size_t k = 0; k < repeats && distinct > 0; ++k) {
-        points.push_back(points[rng.below(distinct)]);
-    }
-    shuffle(points, rng);
-    return points;
-}
-
-// The lattice scaled by 2^-600 (exact): Voronoi edges about 1e-181 long,
-// whose squared lengths underflow. Exactly as degenerate as the lattice.
-std::vector<Point> tiny_lattice(std::size_t n, Rng& rng) {
-    std::vector<Point> points = lattice(n, rng);
-    for (Point& p : points) p = {std::ldexp(p.x, -600), std::ldexp(p.y, -600)};
-    return points;
-}
-
-// Coordinates drawn from a few values, some a hair apart (1e-20, 3e-17 next
-// to 0 and 1): many repeats, collinear and cocircular points, and
-// near-collinear triples whose Voronoi vertices are hard to place.
-std::vector<Point> snapped(std::size_t n, Rng& rng) {
-    const double values[] = {0.0, 1.0, -1.0, 1e-20, -1e-20, 2.0, 0.5, -3e-17};
-    const std::size_t count = sizeof values / sizeof values[0];
-    std::vector<Point> points(n);
-    for (Point& p : points) p = {values[rng.below(count)], values[rng.below(count)]};
-    return points;
-}
-
-// ---------------------------------------------------------------------------
-// Segment families. Every crossing test is exact (CGAL's filtered
-// orientation), so the generators never hand over two segments that the
-// library's exact input check would call intersecting.
-// ---------------------------------------------------------------------------
-
-using Ek = CGAL::Exact_predicates_inexact_constructions_kernel;
-
-CGAL::Orientation orient(const Point& a, const Point& b, const Point& c) {
-    return CGAL::orientation(Ek::Point_2(a.x, a.y), Ek::Point_2(b.x, b.y), Ek::Point_2(c.x, c.y));
-}
-
-// c lies on the closed segment ab, given that a, b, c are collinear.
-bool on_collinear_segment(const Point& a, const Point& b, const Point& c) {
-    return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
-           c.y <= std::max(a.y, b.y);
-}
-
-// The closed segments share at least one point.
-bool closed_segments_meet(const Segment& s, const Segment& t) {
-    const CGAL::Orientation o1 = orient(s.a, s.b, t.a), o2 = orient(s.a, s.b, t.b);
-    const CGAL::Orientation o3 = orient(t.a, t.b, s.a), o4 = orient(t.a, t.b, s.b);
-    if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-    return (o1 == CGAL::COLLINEAR && on_collinear_segment(s.a, s.b, t.a)) ||
-           (o2 == CGAL::COLLINEAR && on_collinear_segment(s.a, s.b, t.b)) ||
-           (o3 == CGAL::COLLINEAR && on_collinear_segment(t.a, t.b, s.a)) ||
-           (o4 == CGAL::COLLINEAR && on_collinear_segment(t.a, t.b, s.b));
-}
-
-// Segments sharing exactly one endpoint meet legally unless they overlap.
-bool segments_conflict(const Segment& s, const Segment& t) {
-    auto same = [](const Point& p, const Point& q) { return p.x == q.x && p.y == q.y; };
-    const bool shared = same(s.a, t.a) || same(s.a, t.b) || same(s.b, t.a) || same(s.b, t.b);
-    if (!shared) return closed_segments_meet(s, t);
-    // Shared endpoint p: a conflict only if the other endpoint of one lies
-    // on the other segment (collinear overlap, or a repeat).
-    const Point& sp = same(s.a, t.a) || same(s.a, t.b) ? s.a : s.b;
-    const Point& so = same(sp, s.a) ? s.b : s.a;
-    const Point& to = same(sp, t.a) ? t.b : t.a;
-    if (orient(sp, so, to) != CGAL::COLLINEAR) return false;
-    return on_collinear_segment(sp, so, to) || on_collinear_segment(sp, to, so);
-}
-
-// Segments registered in every cell of their bounding box; a query walks
-// along the segment in steps of at most one cell and visits the 3x3 cells
-// around each step, which covers every cell the segment passes through.
-class SegmentGrid {
-  public:
-    SegmentGrid(Point lo, Point hi, std::size_t side)
-        : lo_(lo), side_(side), cells_(side * side),
-          h_(std::max(hi.x - lo.x, hi.y - lo.y) / static_cast<double>(side)) {}
-
-    void add(const Segment& s, std::size_t id) {
-        const std::size_t x0 = cell(std::min(s.a.x, s.b.x) - lo_.x), x1 = cell(std::max(s.a.x, s.b.x) - lo_.x);
-        const std::size_t y0 = cell(std::min(s.a.y, s.b.y) - lo_.y), y1 = cell(std::max(s.a.y, s.b.y) - lo_.y);
-        for (std::size_t x = x0; x <= x1; ++x)
-            for (std::size_t y = y0; y <= y1; ++y) cells_[x * side_ + y].push_back(id);
-    }
-
-    // Calls visit(id) once for every registered segment near s (a superset
-    // of those meeting s) until visit returns true; returns whether it did.
-    template <class Visit>
-    bool any_near(const Segment& s, Visit visit) {
-        ++stamp_;
-        const double length = std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
-        const std::size_t steps = 1 + static_cast<std::size_t>(length / h_);
-        std::size_t last_x = SIZE_MAX, last_y = SIZE_MAX;
-        for (std::size_t k = 0; k <= steps; ++k) {
-            const double t = static_cast<double>(k) / static_cast<double>(steps);
-            const std::size_t cx = cell(s.a.x + t * (s.b.x - s.a.x) - lo_.x);
-            const std::size_t cy = cell(s.a.y + t * (s.b.y - s.a.y) - lo_.y);
-            if (cx == last_x && cy == last_y) continue;
-            last_x = cx;
-            last_y = cy;
-            for (std::size_t x = cx == 0 ? 0 : cx - 1; x <= std::min(cx + 1, side_ - 1); ++x) {
-                for (std::size_t y = cy == 0 ? 0 : cy - 1; y <= std::min(cy + 1, side_ - 1); ++y) {
-                    for (std::size_t id : cells_[x * side_ + y]) {
-                        if (id >= seen_.size()) seen_.resize(id + 1, 0);
-                        if (seen_[id] == stamp_) continue;
-                        seen_[id] = stamp_;
-                        if (visit(id)) return true;
-                    }
-                }
-            }
-        }
-        return false;
-    }
-
-  private:
-    std::size_t cell(double offset) const {
-        if (!(offset > 0.0)) return 0;
-        const double c = std::floor(offset / h_);
-        return c >= static_cast<double>(side_ - 1) ? side_ - 1 : static_cast<std::size_t>(c);
-    }
-
-    Point lo_;
-    std::size_t side_;
-    std::vector<std::vector<std::size_t>> cells_;
-    double h_;
-    std::vector<std::uint64_t> seen_;
-    std::uint64_t stamp_ = 0;
-};
-
-std::size_t grid_side(std::size_t n) {
-    return std::max<std::size_t>(4, std::min<std::size_t>(2048, static_cast<std::size_t>(std::sqrt(static_cast<double>(n)))));
-}
-
-Segment random_unit_segment(Rng& rng) {
-    Segment s;
-    s.a = {rng.unit(), rng.unit()};
-    s.b = {rng.unit(), rng.unit()};
-    return s;
-}
-
-// Seed 000, method 1: draw a segment, redraw while it meets an earlier one.
-std::vector<Segment> seg_random1(std::size_t n, Rng& rng) {
-    std::vector<Segment> out;
-    SegmentGrid grid({0.0, 0.0}, {1.0, 1.0}, grid_side(n));
-    while (out.size() < n) {
-        const Segment s = random_unit_segment(rng);
-        if (grid.any_near(s, [&](std::size_t id) { return closed_segments_meet(s, out[id]); })) continue;
-        grid.add(s, out.size());
-        out.push_back(s);
-    }
-    return out;
-}
-
-// Seed 000, method 2: draw a segment; for each earlier segment in order that
-// it crosses, move its second endpoint to the 1:9 point between the crossing
-// and the first endpoint (90% of the way from the first endpoint).
-std::vector<Segment> seg_random2(std::size_t n, Rng& rng) {
-    std::vector<Segment> out;
-    SegmentGrid grid({0.0, 0.0}, {1.0, 1.0}, grid_side(n));
-    while (out.size() < n) {
-        Segment s = random_unit_segment(rng);
-        bool ok = false;
-        // The new segment only ever shrinks along itself, so one pass in
-        // index order suffices in exact arithmetic; the rounded new endpoint
-        // may leave the line by an ulp, hence the re-check.
-        for (int round = 0; round < 8 && !ok; ++round) {
-            std::vector<std::size_t> near;
-            grid.any_near(s, [&](std::size_t id) { near.push_back(id); return false; });
-            std::sort(near.begin(), near.end());
-            for (std::size_t id : near) {
-                const Segment& t = out[id];
-                if (!closed_segments_meet(s, t)) continue;
-                const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-                const double ex = t.b.x - t.a.x, ey = t.b.y - t.a.y;
-                const double den = dx * ey - dy * ex;
-                double u = den != 0.0 ? ((t.a.x - s.a.x) * ey - (t.a.y - s.a.y) * ex) / den : 0.0;
-                u = std::min(1.0, std::max(0.0, u));
-                s.b = {s.a.x + 0.9 * u * dx, s.a.y + 0.9 * u * dy};
-            }
-            ok = !grid.any_near(s, [&](std::size_t id) { return closed_segments_meet(s, out[id]); });
-        }
-        if (!ok || (s.a.x == s.b.x && s.a.y == s.b.y)) continue;  // degenerate leftovers: draw again
-        grid.add(s, out.size());
-        out.push_back(s);
-    }
-    return out;
-}
-
-// Seed 000, method 3: draw n segments; test the pairs (i, j), i < j, in
-// lexicographic order and swap the second endpoints of every crossing pair
-// (which shortens the total length, so it ends), until no pair crosses.
-std::vector<Segment> seg_random3(std::size_t n, Rng& rng) {
-    std::vector<Segment> s(n);
-    for (Segment& seg : s) seg = random_unit_segment(rng);
-    auto box_apart = [](const Segment& p, const Segment& q) {
-        return std::max(p.a.x, p.b.x) < std::min(q.a.x, q.b.x) || std::max(q.a.x, q.b.x) < std::min(p.a.x, p.b.x) ||
-               std::max(p.a.y, p.b.y) < std::min(q.a.y, q.b.y) || std::max(q.a.y, q.b.y) < std::min(p.a.y, p.b.y);
-    };
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (std::size_t i = 0; i < n; ++i) {
-            for (std::size_t j = i + 1; j < n; ++j) {
-                if (box_apart(s[i], s[j]) || !closed_segments_meet(s[i], s[j])) continue;
-                std::swap(s[i].b, s[j].b);
-                changed = true;
-            }
-        }
-    }
-    return s;
-}
-
-// Short segments: random position and direction, length 1/sqrt(n) of the
-// unit square; a segment meeting an earlier one is dropped (and redrawn,
-// until there are n).
-std::vector<Segment> seg_short(std::size_t n, Rng& rng) {
-    std::vector<Segment> out;
-    const double length = 1.0 / std::sqrt(static_cast<double>(std::max<std::size_t>(n, 1)));
-    SegmentGrid grid({-length, -length}, {1.0 + length, 1.0 + length}, grid_side(n));
-    while (out.size() < n) {
-        Segment s;
-        s.a = {rng.unit(), rng.unit()};
-        const double angle = 6.283185307179586 * rng.unit();
-        s.b = {s.a.x + length * std::cos(angle), s.a.y + length * std::sin(angle)};
-        if (grid.any_near(s, [&](std::size_t id) { return closed_segments_meet(s, out[id]); })) continue;
-        grid.add(s, out.size());
-        out.push_back(s);
-    }
-    return out;
-}
-
-// A random walk of n short steps in the unit square that never meets itself
-// except where consecutive steps share their endpoint (a steps that would is
-// redrawn; a walk that gets stuck restarts from a new random point).
-std::vector<Segment> polyline(std::size_t n, Rng& rng) {
-    std::vector<Segment> out;
-    // Steps of random length: equal steps would make every sharp turn a
-    // degenerate spike (the perpendiculars at both far ends meet the angle
-    // bisector in one point), which the family is not meant to test.
-    const double unit_length = 0.5 / std::sqrt(static_cast<double>(std::max<std::size_t>(n, 1)));
-    SegmentGrid grid({-0.1, -0.1}, {1.1, 1.1}, grid_side(n));
-    Point at{rng.unit(), rng.unit()};
-    int stuck = 0;
-    while (out.size() < n) {
-        const double angle = 6.283185307179586 * rng.unit();
-        const double length = unit_length * (0.5 + rng.unit());
-        Segment s{at, {at.x + length * std::cos(angle), at.y + length * std::sin(angle)}};
-        const bool outside = s.b.x < 0.0 || s.b.x > 1.0 || s.b.y < 0.0 || s.b.y > 1.0;
-        // The previous step shares `at` with this one: only an overlap is a
-        // conflict there; with any other segment, any contact is.
-        auto conflict = [&](std::size_t id) {
-            const bool previous = id + 1 == out.size() && out[id].b.x == at.x && out[id].b.y == at.y;
-            return previous ? segments_conflict(s, out[id]) : closed_segments_meet(s, out[id]);
-        };
-        if (outside || grid.any_near(s, conflict)) {
-            if (++stuck > 200) {
-                at = {rng.unit(), rng.unit()};
-                stuck = 0;
-            }
-            continue;
-        }
-        stuck = 0;
-        grid.add(s, out.size());
-        out.push_back(s);
-        at = s.b;
-    }
-    return out;
-}
-
-// The regular n-gon on the unit circle (every side touches the inscribed
-// circle: one Voronoi vertex of degree n at the centre).
-std::vector<Segment> polygon(std::size_t n) {
-    std::vector<Point> corners(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        const double angle = 6.283185307179586 * static_cast<double>(k) / static_cast<double>(n);
-        corners[k] = {std::cos(angle), std::sin(angle)};
-    }
-    std::vector<Segment> out;
-    for (std::size_t k = 0; k < n; ++k) out.push_back({corners[k], corners[(k + 1) % n]});
-    return out;
-}
-
-// The scale of a near-degenerate family's seed-th run: 1e-6, 1e-3, 1, 1e3,
-// 1e6 in turn, so that every magnitude meets the same shapes.
-double seed_scale(std::uint64_t seed) {
-    const double scales[] = {1e-6, 1e-3, 1.0, 1e3, 1e6};
-    return scales[seed % 5];
-}
-
-// A polygon inscribed in a circle: n corners on the circle of radius
-// seed_scale(seed) (rounded, so cocircular only to the last bit), at
-// regular angles or, jittered, each moved along the circle by up to a third
-// of the spacing. Issue 7's circles flattened into chords.
-std::vector<Segment> inscribed(std::size_t n, std::uint64_t seed, Rng& rng, bool jitter) {
-    const double radius = seed_scale(seed), spacing = 6.283185307179586 / static_cast<double>(n);
-    std::vector<Point> corners(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        const double angle = spacing * (static_cast<double>(k) + (jitter ? (rng.unit() - 0.5) * 0.66 : 0.0));
-        corners[k] = {radius * std::cos(angle), radius * std::sin(angle)};
-    }
-    std::vector<Segment> out;
-    for (std::size_t k = 0; k < n; ++k) out.push_back({corners[k], corners[(k + 1) % n]});
-    return out;
-}
-
-// n spokes of equal length from one point in random directions (at least
-// 1e-3 rad apart): their far ends lie on one circle up to rounding.
-std::vector<Segment> fan(std::size_t n, std::uint64_t seed, Rng& rng) {
-    const double length = seed_scale(seed);
-    std::vector<double> angles;
-    while (angles.size() < n) {
-        const double a = 6.283185307179586 * rng.unit();
-        bool apart = true;
-        for (double b : angles) {
-            const double d = std::fabs(a - b);
-            if (std::min(d, 6.283185307179586 - d) < 1e-3) apart = false;
-        }
-        if (apart) angles.push_back(a);
-    }
-    std::vector<Segment> out;
-    for (double a : angles) out.push_back({{0.0, 0.0}, {length * std::cos(a), length * std::sin(a)}});
-    return out;
-}
-
-// A chain of n segments of unit-ish length along a gentle curve whose
-// every joint turns by 10^-(8 + seed % 8) rad, left or right at random:
-// chains with kinks of 1e-8 .. 1e-15 rad.
-std::vector<Segment> kinked_chain(std::size_t n, std::uint64_t seed, Rng& rng) {
-    const double kink = std::pow(10.0, -8.0 - static_cast<double>(seed % 8));
-    double heading = 6.283185307179586 * rng.unit();
-    Point at = {0.0, 0.0};
-    std::vector<Segment> out;
-    for (std::size_t k = 0; k < n; ++k) {
-        const double length = 0.5 + rng.unit();
-        const Point next = {at.x + length * std::cos(heading), at.y + length * std::sin(heading)};
-        out.push_back({at, next});
-        at = next;
-        heading += rng.unit() < 0.5 ? kink : -kink;
-    }
-    return out;
-}
-
-bool legal_addition(const std::vector<Segment>& segs, const Segment& s);
-bool legal_point(const std::vector<Segment>& segs, const Point& p);
-bool same_point(const Point& p, const Point& q);
-
-// Short random segments in the cells of a grid (one per cell, scaled by
-// seed_scale(seed)), and near each a point one ulp off its line, either
-// side: on the line's extension beyond an end, or beside the segment at a
-// third of its length (the point's y moved by one ulp from where the line
-// passes; kept when legal: not inside a segment).
-void ulp_off_line(std::size_t n, std::uint64_t seed, Rng& rng, Input& input) {
-    const double scale = seed_scale(seed);
-    const std::size_t side = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
-    for (std::size_t k = 0; k < n; ++k) {
-        const double cx = static_cast<double>(k % side) * 4.0, cy = static_cast<double>(k / side) * 4.0;
-        const Point a = {scale * (cx + rng.unit()), scale * (cy + rng.unit())};
-        const Point b = {scale * (cx + 1.5 + rng.unit()), scale * (cy + 1.5 + rng.unit())};
-        input.segments.push_back({a, b});
-    }
-    for (const Segment& s : input.segments) {
-        const double t = rng.unit() < 0.5 ? 1.0 / 3.0 : 1.5;
-        const double x = s.a.x + t * (s.b.x - s.a.x);
-        // where the line passes at x, rounded, then one ulp up or down
-        const double y_line = s.a.y + (x - s.a.x) * (s.b.y - s.a.y) / (s.b.x - s.a.x);
-        const double y = std::nextafter(y_line, rng.unit() < 0.5 ? INFINITY : -INFINITY);
-        const Point p = {x, y};
-        if (legal_point(input.segments, p) && !same_point(p, s.a) && !same_point(p, s.b)) input.points.push_back(p);
-    }
-}
-
-// Chains whose consecutive segments do not meet: each starts one ulp (in x)
-// from where the last ended, turned by a random angle (kept when legal).
-std::vector<Segment> ulp_ends(std::size_t n, std::uint64_t seed, Rng& rng) {
-    const double scale = seed_scale(seed);
-    std::vector<Segment> out;
-    Point at = {0.0, 0.0};
-    double heading = 0.0;
-    for (std::size_t tries = 0; out.size() < n && tries < 20 * n; ++tries) {
-        heading += (rng.unit() - 0.5) * 2.5;
-        const double length = scale * (0.5 + rng.unit());
-        const Point start = {std::nextafter(at.x, rng.unit() < 0.5 ? INFINITY : -INFINITY), at.y};
-        const Segment s = {start, {start.x + length * std::cos(heading), start.y + length * std::sin(heading)}};
-        if (!legal_addition(out, s)) continue;
-        out.push_back(s);
-        at = s.b;
-    }
-    return out;
-}
-
-// Glyph-like outlines: the rings of an "O" (an outer and an inner ellipse,
-// off-centre, a thin stroke on one side), each flattened into n / 2 chords
-// at font-unit precision (corners rounded to integers, as TrueType glyphs
-// are), the whole scaled by a power of two by seed.
-std::vector<Segment> glyph(std::size_t n, std::uint64_t seed, Rng& rng) {
-    const double unit = std::ldexp(1.0, static_cast<int>(seed % 5) * 4 - 8);
-    const std::size_t chords = std::max<std::size_t>(n / 2, 3);
-    std::vector<Segment> out;
-    const double rings[2][4] = {{0.0, 0.0, 600.0, 720.0}, {40.0 + 20.0 * rng.unit(), 0.0, 470.0, 610.0}};
-    for (const auto& ring : rings) {
-        std::vector<Point> corners;
-        for (std::size_t k = 0; k < chords; ++k) {
-            const double angle = 6.283185307179586 * (static_cast<double>(k) + 0.3 * rng.unit()) / static_cast<double>(chords);
-            const Point p = {unit * std::round(ring[0] + ring[2] * std::cos(angle)),
-                             unit * std::round(ring[1] + ring[3] * std::sin(angle))};
-            if (corners.empty() || !same_point(corners.back(), p)) corners.push_back(p);
-        }
-        while (corners.size() > 1 && same_point(corners.front(), corners.back())) corners.pop_back();
-        for (std::size_t k = 0; k < corners.size(); ++k) {
-            const Segment s = {corners[k], corners[(k + 1) % corners.size()]};
-            if (legal_addition(out, s)) out.push_back(s);
-        }
-    }
-    return out;
-}
-
-// n segments from the origin in evenly spaced directions, random lengths.
-std::vector<Segment> star(std::size_t n, Rng& rng) {
-    std::vector<Segment> out;
-    for (std::size_t k = 0; k < n; ++k) {
-        const double angle = 6.283185307179586 * static_cast<double>(k) / static_cast<double>(n);
-        const double r = 0.5 + rng.unit();
-        out.push_back({{0.0, 0.0}, {r * std::cos(angle), r * std::sin(angle)}});
-    }
-    return out;
-}
-
-// A square with a smaller, rotated, off-centre square hole: two closed
-// polygons of four segments each.
-std::vector<Segment> square_hole() {
-    const Point outer[4] = {{0.0, 0.0}, {10.0, 0.0}, {10.0, 10.0}, {0.0, 10.0}};
-    Point inner[4];
-    for (int k = 0; k < 4; ++k) {
-        const double angle = 0.3 + 1.5707963267948966 * k;
-        inner[k] = {4.3 + 2.0 * std::cos(angle), 5.7 + 2.0 * std::sin(angle)};
-    }
-    std::vector<Segment> out;
-    for (int k = 0; k < 4; ++k) out.push_back({outer[k], outer[(k + 1) % 4]});
-    for (int k = 0; k < 4; ++k) out.push_back({inner[k], inner[(k + 1) % 4]});
-    return out;
-}
-
-// The closed polygon through `corners` in order: one segment per corner.
-void add_closed_polygon(const std::vector<Point>& corners, std::vector<Segment>& out) {
-    for (std::size_t k = 0; k < corners.size(); ++k) out.push_back({corners[k], corners[(k + 1) % corners.size()]});
-}
-
-// A random polygon star-shaped around `centre`: m corners at increasing
-// jittered angles (every angular gap is below pi, so the polygon is
-// simple) and radii in [r_min, r_max].
-std::vector<Point> random_star_polygon(Point centre, std::size_t m, double r_min, double r_max, Rng& rng) {
-    const double two_pi = 6.283185307179586;
-    const double start = two_pi * rng.unit();
-    std::vector<Point> corners(m);
-    for (std::size_t k = 0; k < m; ++k) {
-        const double angle = start + two_pi * (static_cast<double>(k) + 0.5 * rng.unit()) / static_cast<double>(m);
-        const double r = r_min + (r_max - r_min) * rng.unit();
-        corners[k] = {centre.x + r * std::cos(angle), centre.y + r * std::sin(angle)};
-    }
-    return corners;
-}
-
-// A random simple polygon with holes, n corners (= segments) in all: an
-// outer star-shaped polygon with radii in [0.9, 1] around the origin, and
-// h holes, each a smaller random star-shaped polygon inside its own cell of
-// a grid over [-0.55, 0.55]^2 (inside radius 0.78, so inside the outer
-// polygon; one hole per cell, so the holes are disjoint). Random
-// coordinates: generic.
-std::vector<Segment> polygon_holes(std::size_t n, Rng& rng) {
-    const std::size_t holes = std::max<std::size_t>(3, std::min<std::size_t>(32, n / 32));
-    const std::size_t hole_corners = std::max<std::size_t>(3, n / (4 * holes));
-    const std::size_t outer_corners = n > holes * hole_corners + 3 ? n - holes * hole_corners : 3;
-    std::vector<Segment> out;
-    add_closed_polygon(random_star_polygon({0.0, 0.0}, outer_corners, 0.9, 1.0, rng), out);
-    std::size_t side = 1;
-    while (side * side < holes) ++side;
-    const double cell = 1.1 / static_cast<double>(side);
-    std::vector<std::size_t> cells(side * side);
-    std::iota(cells.begin(), cells.end(), 0);
-    shuffle(cells, rng);
-    for (std::size_t h = 0; h < holes; ++h) {
-        const double cx = -0.55 + cell * (static_cast<double>(cells[h] % side) + 0.45 + 0.1 * rng.unit());
-        const double cy = -0.55 + cell * (static_cast<double>(cells[h] / side) + 0.45 + 0.1 * rng.unit());
-        const double r_max = cell * (0.3 + 0.1 * rng.unit());
-        add_closed_polygon(random_star_polygon({cx, cy}, hole_corners, 0.5 * r_max, r_max, rng), out);
-    }
-    return out;
-}
-
-// The integer lattice side x side cut into unit segments: every horizontal
-// and vertical unit segment between neighbouring lattice points, up to four
-// segments per point, every unit square a cocircular cell (degenerate).
-// side is the largest with 2 side (side - 1) <= n; shuffled, random
-// directions.
-std::vector<Segment> seg_lattice(std::size_t n, Rng& rng) {
-    std::size_t side = 2;
-    while (2 * (side + 1) * side <= n) ++side;
-    std::vector<Segment> out;
-    for (std::size_t i = 0; i < side; ++i) {
-        for (std::size_t j = 0; j < side; ++j) {
-            const double x = static_cast<double>(i), y = static_cast<double>(j);
-            if (i + 1 < side) out.push_back({{x, y}, {x + 1.0, y}});
-            if (j + 1 < side) out.push_back({{x, y}, {x, y + 1.0}});
-        }
-    }
-    shuffle(out, rng);
-    for (Segment& s : out) {
-        if (rng.below(2) == 1) std::swap(s.a, s.b);
-    }
-    return out;
-}
-
-// Seed 000, figure 8 (3): n short segments tangent to the unit circle at
-// the angles 2 pi k / n, each half as long as the gap to its neighbours'
-// tangent lines allows (so none touch). The centre is equidistant from all
-// of them (degenerate, up to the rounding of the coordinates).
-std::vector<Segment> tangent(std::size_t n) {
-    const double pi = 3.141592653589793;
-    const double half = 0.5 * std::tan(pi / static_cast<double>(n));
-    std::vector<Segment> out;
-    for (std::size_t k = 0; k < n; ++k) {
-        const double angle = 2.0 * pi * static_cast<double>(k) / static_cast<double>(n);
-        const double c = std::cos(angle), s = std::sin(angle);
-        out.push_back({{c + half * s, s - half * c}, {c - half * s, s + half * c}});
-    }
-    return out;
-}
-
-// Seed 000, figure 8 (4): n parallel segments (0, k)-(n, k), k = 0..n-1,
-// regularly spaced with aligned endpoints: exactly degenerate (the
-// endpoints lie on two lines, equally spaced).
-std::vector<Segment> parallel(std::size_t n) {
-    std::vector<Segment> out;
-    const double length = static_cast<double>(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        const double y = static_cast<double>(k);
-        out.push_back({{0.0, y}, {length, y}});
-    }
-    return out;
-}
-
-// Seed 000, figure 8 (5): the outline of a capital R on a 100 x 100 box,
-// its bowl approximated by straight pieces: an outer polygon of 15
-// segments and the counter (a hole) of 7, sharing endpoints at every
-// corner. Hand-picked integer coordinates with a font's alignments (the
-// stem's inner edge and the counter's left side on x = 20, the corners
-// (20, 40) and (20, 58) aligned, parallel horizontal runs), so not
-// generic. With `gaps`, segment k is shortened by its own amounts, between
-// 0.2 and 0.7, at each end, so that no two segments touch (the seed's form
-// of input) and no two pulled-apart endpoints line up again: equal gaps
-// would put the two endpoints of a corner symmetric about its angle
-// bisector, where both perpendiculars meet, a point equidistant from all
-// four sites.
-std::vector<Segment> letter_r(bool gaps) {
-    const std::vector<Point> outer = {{0, 0},   {20, 0},  {20, 40}, {38, 40}, {63, 0},
-                                      {88, 0},  {61, 44}, {71, 48}, {79, 55}, {84, 65},
-                                      {85, 74}, {81, 84}, {73, 92}, {60, 100}, {0, 100}};
-    const std::vector<Point> counter = {{20, 58}, {57, 58}, {63, 61}, {66, 69}, {65, 76}, {59, 82}, {20, 82}};
-    std::vector<Segment> out;
-    add_closed_polygon(outer, out);
-    add_closed_polygon(counter, out);
-    if (gaps) {
-        for (std::size_t k = 0; k < out.size(); ++k) {
-            Segment& s = out[k];
-            const double golden = 0.6180339887498949 * static_cast<double>(k);
-            const double silver = 0.41421356237309503 * static_cast<double>(k) + 0.3;
-            const double start_gap = 0.2 + 0.5 * (golden - std::floor(golden));
-            const double end_gap = 0.2 + 0.5 * (silver - std::floor(silver));
-            const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-            const double length = std::hypot(dx, dy);
-            const double t0 = start_gap / length, t1 = end_gap / length;
-            s = {{s.a.x + t0 * dx, s.a.y + t0 * dy}, {s.b.x - t1 * dx, s.b.y - t1 * dy}};
-        }
-    }
-    return out;
-}
-
-// Almost vertical segments (Boost.Polygon's Voronoi had bugs with vertical
-// and nearly vertical input): n segments of random length about
-// 1/sqrt(n) in the unit square whose x changes by at most 1e-9 of their
-// length. Every other segment, where it fits, continues the previous one
-// from its upper endpoint (a shared endpoint with a tiny kink); the rest
-// start at random points. A segment meeting an earlier one is redrawn.
-// Random coordinates: generic.
-std::vector<Segment> near_vertical(std::size_t n, Rng& rng) {
-    std::vector<Segment> out;
-    const double unit_length = 1.0 / std::sqrt(static_cast<double>(std::max<std::size_t>(n, 1)));
-    SegmentGrid grid({-0.1, -0.1}, {1.1, 2.1}, grid_side(n));
-    while (out.size() < n) {
-        const bool chain = !out.empty() && rng.below(2) == 1;
-        const Point a = chain ? out.back().b : Point{rng.unit(), rng.unit()};
-        const double length = unit_length * (0.5 + rng.unit());
-        const double dx = (2.0 * rng.unit() - 1.0) * 1e-9 * length;
-        const Segment s{a, {a.x + dx, a.y + length}};
-        if (s.b.x == s.a.x || s.b.y > 2.0) continue;  // exactly vertical, or off the grid
-        auto conflict = [&](std::size_t id) {
-            const bool previous = chain && id + 1 == out.size();
-            return previous ? segments_conflict(s, out[id]) : closed_segments_meet(s, out[id]);
-        };
-        if (grid.any_near(s, conflict)) continue;
-        grid.add(s, out.size());
-        out.push_back(s);
-    }
-    return out;
-}
-
-// ---------------------------------------------------------------------------
-// Boost.Polygon's benchmark style: random segments on the integer grid, every
-// crossing split at the crossing point rounded to the grid (what
-// boost::polygon::intersect_segments does to the benchmark data).
-// ---------------------------------------------------------------------------
-
-bool same_point(const Point& p, const Point& q) { return p.x == q.x && p.y == q.y; }
-
-// The pairs (i, j), i < j, of segments that the library would reject
-// (crossing, overlapping, touching away from a shared endpoint), found
-// through a grid over the bounding box (all pairs below 64 segments).
-std::vector<std::pair<std::size_t, std::size_t>> conflicting_pairs(const std::vector<Segment>& segs) {
-    std::vector<std::pair<std::size_t, std::size_t>> pairs;
-    if (segs.size() < 64) {
-        for (std::size_t i = 0; i < segs.size(); ++i)
-            for (std::size_t j = i + 1; j < segs.size(); ++j)
-                if (segments_conflict(segs[i], segs[j])) pairs.emplace_back(i, j);
-        return pairs;
-    }
-    Point lo = segs[0].a, hi = segs[0].a;
-    for (const Segment& s : segs) {
-        for (const Point& p : {s.a, s.b}) {
-            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-        }
-    }
-    SegmentGrid grid(lo, {hi.x + 1.0, hi.y + 1.0}, grid_side(segs.size()));
-    for (std::size_t j = 0; j < segs.size(); ++j) {
-        grid.any_near(segs[j], [&](std::size_t i) {
-            if (segments_conflict(segs[i], segs[j])) pairs.emplace_back(i, j);
-            return false;
-        });
-        grid.add(segs[j], j);
-    }
-    return pairs;
-}
-
-// The crossing point of two properly crossing segments, rounded to the
-// integer grid.
-Point rounded_crossing(const Segment& s, const Segment& t) {
-    const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-    const double ex = t.b.x - t.a.x, ey = t.b.y - t.a.y;
-    const double den = dx * ey - dy * ex;
-    const double u = ((t.a.x - s.a.x) * ey - (t.a.y - s.a.y) * ex) / den;
-    return {std::round(s.a.x + u * dx), std::round(s.a.y + u * dy)};
-}
-
-bool in_open_segment(const Segment& s, const Point& p) {
-    return !same_point(p, s.a) && !same_point(p, s.b) && orient(s.a, s.b, p) == CGAL::COLLINEAR &&
-           on_collinear_segment(s.a, s.b, p);
-}
-
-// Splits crossing segments at their rounded crossing points and segments
-// touched inside by another's endpoint at that endpoint, round after round
-// (rounding moves a crossing point off both lines, so the pieces can cross
-// again); after `rounds` rounds, or for overlaps, the later segment of each
-// remaining conflicting pair is dropped. Pieces keep their parent's
-// direction; zero-length and repeated pieces are left out.
-std::vector<Segment> split_at_rounded_crossings(std::vector<Segment> segs, int rounds = 12) {
-    for (int round = 0; round < rounds; ++round) {
-        const auto pairs = conflicting_pairs(segs);
-        if (pairs.empty()) return segs;
-        std::vector<std::vector<Point>> cuts(segs.size());
-        std::vector<bool> drop(segs.size(), false);
-        for (const auto& pair : pairs) {
-            const Segment& s = segs[pair.first];
-            const Segment& t = segs[pair.second];
-            const CGAL::Orientation o1 = orient(s.a, s.b, t.a), o2 = orient(s.a, s.b, t.b);
-            const CGAL::Orientation o3 = orient(t.a, t.b, s.a), o4 = orient(t.a, t.b, s.b);
-            if (o1 * o2 < 0 && o3 * o4 < 0) {
-                const Point q = rounded_crossing(s, t);
-                cuts[pair.first].push_back(q);
-                cuts[pair.second].push_back(q);
-                continue;
-            }
-            bool touched = false;
-            for (const Point& p : {t.a, t.b})
-                if (in_open_segment(s, p)) cuts[pair.first].push_back(p), touched = true;
-            for (const Point& p : {s.a, s.b})
-                if (in_open_segment(t, p)) cuts[pair.second].push_back(p), touched = true;
-            // Collinear overlap: no cut separates the two.
-            if (o1 == CGAL::COLLINEAR && o2 == CGAL::COLLINEAR) drop[pair.second] = true;
-            else if (!touched) drop[pair.second] = true;
-        }
-        std::vector<Segment> next;
-        std::map<std::pair<std::pair<double, double>, std::pair<double, double>>, bool> seen;
-        for (std::size_t i = 0; i < segs.size(); ++i) {
-            if (drop[i]) continue;
-            const Segment& s = segs[i];
-            std::vector<Point>& c = cuts[i];
-            const double dx = s.b.x - s.a.x, dy = s.b.y - s.a.y;
-            auto along = [&](const Point& p) { return (p.x - s.a.x) * dx + (p.y - s.a.y) * dy; };
-            std::sort(c.begin(), c.end(), [&](const Point& p, const Point& q) { return along(p) < along(q); });
-            Point from = s.a;
-            c.push_back(s.b);
-            for (const Point& to : c) {
-                if (same_point(from, to)) continue;
-                std::pair<double, double> ka{from.x, from.y}, kb{to.x, to.y};
-                if (kb < ka) std::swap(ka, kb);
-                if (seen.emplace(std::make_pair(ka, kb), true).second) next.push_back({from, to});
-                from = to;
-            }
-        }
-        segs.swap(next);
-    }
-    const auto pairs = conflicting_pairs(segs);
-    std::vector<bool> drop(segs.size(), false);
-    for (const auto& pair : pairs) {
-        if (!drop[pair.first]) drop[pair.second] = true;
-    }
-    std::vector<Segment> kept;
-    for (std::size_t i = 0; i < segs.size(); ++i)
-        if (!drop[i]) kept.push_back(segs[i]);
-    return kept;
-}
-
-// n random segments with integer endpoints in [0, side]^2, lengths uniform
-// in [0, 3 side / sqrt(n)] (about 1.4 crossings per segment), then split
-// at the rounded crossings: many segments meeting at shared points, kinks
-// of near-zero angle where a crossing point was rounded.
-std::vector<Segment> boost_split(std::size_t n, Rng& rng, double side = 1e6) {
-    const double max_length = 3.0 * side / std::sqrt(static_cast<double>(std::max<std::size_t>(n, 1)));
-    std::vector<Segment> segs;
-    segs.reserve(n);
-    const double two_pi = 6.283185307179586;
-    while (segs.size() < n) {
-        const Point a{std::floor(rng.unit() * (side + 1.0)), std::floor(rng.unit() * (side + 1.0))};
-        const double angle = two_pi * rng.unit(), length = max_length * rng.unit();
-        const Point b{std::round(a.x + length * std::cos(angle)), std::round(a.y + length * std::sin(angle))};
-        if (same_point(a, b) || b.x < 0.0 || b.y < 0.0 || b.x > side || b.y > side) continue;
-        segs.push_back({a, b});
-    }
-    return split_at_rounded_crossings(std::move(segs));
-}
-
-bool make_family(const std::string& family, std::size_t n, std::uint64_t seed, Input& input) {
-    Rng rng(seed);
-    input.family = family;
-    input.degenerate = false;
-    if (family == "uniform") {
-        input.points = scaled_uniform(n, rng, 0.0, 1.0);
-    } else if (family == "clustered") {
-        input.points = clustered(n, rng);
-    } else if (family == "tiny") {
-        input.points = scaled_uniform(n, rng, 0.0, 1e-9);
-    } else if (family == "tiny-offset") {
-        input.points = scaled_uniform(n, rng, 1.0, 1e-9);
-    } else if (family == "huge") {
-        input.points = scaled_uniform(n, rng, 0.0, 1e9);
-    } else if (family == "lattice") {
-        input.points = lattice(n, rng);
-        input.degenerate = true;
-    } else if (family == "circle") {
-        input.points = circle(n, rng);
-        input.degenerate = true;
-    } else if (family == "collinear") {
-        input.points = collinear(n, rng);
-        input.degenerate = true;
-    } else if (family == "tiny-lattice") {
-        input.points = tiny_lattice(n, rng);
-        input.degenerate = true;
-    } else if (family == "snapped") {
-        input.points = snapped(n, rng);
-        input.degenerate = true;
-    } else if (family == "seg-random1") {
-        input.segments = seg_random1(n, rng);
-    } else if (family == "seg-random2") {
-        input.segments = seg_random2(n, rng);
-    } else if (family == "seg-random3") {
-        input.segments = seg_random3(n, rng);
-    } else if (family == "seg-short") {
-        input.segments = seg_short(n, rng);
-    } else if (family == "polyline") {
-        input.segments = polyline(n, rng);
-    } else if (family == "square-hole") {
-        input.segments = square_hole();
-    } else if (family == "polygon") {
-        if (n < 3) return false;
-        input.segments = polygon(n);
-        input.degenerate = true;
-    } else if (family == "star") {
-        input.segments = star(n, rng);
-        input.degenerate = true;
-    } else if (family == "polygon-holes") {
-        if (n < 3 * 4 + 3) return false;
-        input.segments = polygon_holes(n, rng);
-    } else if (family == "seg-lattice") {
-        if (n < 4) return false;
-        input.segments = seg_lattice(n, rng);
-        input.degenerate = true;
-    } else if (family == "tangent") {
-        if (n < 3) return false;
-        input.segments = tangent(n);
-        input.degenerate = true;
-    } else if (family == "parallel") {
-        if (n < 2) return false;
-        input.segments = parallel(n);
-        input.degenerate = true;
-    } else if (family == "letter") {
-        input.segments = letter_r(false);
-        input.degenerate = true;
-    } else if (family == "letter-gap") {
-        input.segments = letter_r(true);
-    } else if (family == "near-vertical") {
-        input.segments = near_vertical(n, rng);
-    } else if (family == "boost-split") {
-        input.segments = boost_split(n, rng);
-    } else if (family == "inscribed" || family == "inscribed-jitter") {
-        if (n < 3) return false;
-        input.segments = inscribed(n, seed, rng, family == "inscribed-jitter");
-    } else if (family == "fan") {
-        if (n < 2) return false;
-        input.segments = fan(n, seed, rng);
-    } else if (family == "kinked-chain") {
-        if (n < 2) return false;
-        input.segments = kinked_chain(n, seed, rng);
-    } else if (family == "ulp-off-line") {
-        if (n < 1) return false;
-        ulp_off_line(n, seed, rng, input);
-    } else if (family == "ulp-ends") {
-        if (n < 2) return false;
-        input.segments = ulp_ends(n, seed, rng);
-    } else if (family == "glyph") {
-        if (n < 6) return false;
-        input.segments = glyph(n, seed, rng);
-    } else {
-        return false;
-    }
-    return true;
-}
-
 // Boost.Polygon text format: P, P lines "x y", S, S lines "x0 y0 x1 y1".
-// Writes the input in the format read_file reads, with every digit needed to
-// read back the same doubles: a generated case becomes a file to debug with.
+// Writes the input in the format read_text reads, with every digit needed to
+// read back the same doubles: a minimised case becomes a file to debug with.
 void write_text(std::FILE* out, const Input& input) {
     std::fprintf(out, "%zu\n", input.points.size());
     for (const Point& p : input.points) std::fprintf(out, "%.17g %.17g\n", p.x, p.y);
@@ -1094,38 +121,47 @@ bool write_file(const std::string& path, const Input& input) {
     return std::fclose(out) == 0;
 }
 
-bool read_file(const std::string& path, Input& input, std::string& error) {
-    std::ifstream in(path);
-    if (!in) {
-        error = "cannot open " + path;
-        return false;
-    }
+bool read_number(std::FILE* in, double& v) { return std::fscanf(in, "%lf", &v) == 1 && std::isfinite(v); }
+
+// Reads one input (the format above) from `in`; the segment count may be
+// left out at the end of a file.
+bool read_text(std::FILE* in, Input& input, std::string& error) {
     std::size_t point_count = 0;
-    if (!(in >> point_count)) {
+    if (std::fscanf(in, "%zu", &point_count) != 1) {
         error = "missing point count";
         return false;
     }
     input.points.resize(point_count);
     for (std::size_t i = 0; i < point_count; ++i) {
         Point& p = input.points[i];
-        if (!(in >> p.x >> p.y) || !std::isfinite(p.x) || !std::isfinite(p.y)) {
+        if (!read_number(in, p.x) || !read_number(in, p.y)) {
             error = "point " + std::to_string(i) + " is missing, malformed or not finite";
             return false;
         }
     }
     std::size_t segment_count = 0;
-    if (!(in >> segment_count)) segment_count = 0;  // the segment count may be left out
+    if (std::fscanf(in, "%zu", &segment_count) != 1) segment_count = 0;
     input.segments.resize(segment_count);
     for (std::size_t i = 0; i < segment_count; ++i) {
         Segment& s = input.segments[i];
-        if (!(in >> s.a.x >> s.a.y >> s.b.x >> s.b.y) || !std::isfinite(s.a.x) || !std::isfinite(s.a.y) ||
-            !std::isfinite(s.b.x) || !std::isfinite(s.b.y)) {
+        if (!read_number(in, s.a.x) || !read_number(in, s.a.y) || !read_number(in, s.b.x) || !read_number(in, s.b.y)) {
             error = "segment " + std::to_string(i) + " is missing, malformed or not finite";
             return false;
         }
     }
-    input.family = "file";
     return true;
+}
+
+bool read_file(const std::string& path, Input& input, std::string& error) {
+    std::FILE* in = std::fopen(path.c_str(), "r");
+    if (in == nullptr) {
+        error = "cannot open " + path;
+        return false;
+    }
+    const bool ok = read_text(in, input, error);
+    std::fclose(in);
+    input.family = "file";
+    return ok;
 }
 
 // ---------------------------------------------------------------------------
@@ -1866,11 +902,18 @@ int report(const Input& input, const Sites& sites, const OursResult& ours, const
 }
 
 // ---------------------------------------------------------------------------
-// Randomised search (--search SECONDS [seed]): small random inputs until the
-// time is up, each cross-checked as generated, with every segment reversed
-// and shuffled; every difference, invalid diagram or library error is
-// minimised and printed in the input format.
+// Randomised search (--search SECONDS [seed]): the generator's inputs until
+// the time is up, each cross-checked as generated, with every segment
+// reversed and shuffled; every difference, invalid diagram or library error
+// is minimised and printed in the input format.
 // ---------------------------------------------------------------------------
+
+// The reorderings minimise tries (std::mt19937_64 is the same sequence on
+// every platform; the distributions of <random> are not, so no std::shuffle).
+template <class T>
+void shuffle(std::vector<T>& items, std::mt19937_64& rng) {
+    for (std::size_t i = items.size(); i > 1; --i) std::swap(items[i - 1], items[rng() % i]);
+}
 
 enum class Outcome { Agree, Fail, CgalError };
 
@@ -1882,8 +925,6 @@ struct RunResult {
     bool degenerate_fallback = false;
 };
 
-// Inputs are legal by construction (the generators filter exactly), so a
-// library that rejects one as intersecting is a failure too.
 // The input being checked, for the SIGFPE report.
 const Input* g_current_input = nullptr;
 
@@ -1930,237 +971,6 @@ RunResult run_one(const Input& input) {
     return result;
 }
 
-// A legal input: no segment crosses, overlaps or touches another except at
-// a shared endpoint, no isolated point lies inside a segment, no segment
-// has length zero.
-bool legal_addition(const std::vector<Segment>& segs, const Segment& s) {
-    if (same_point(s.a, s.b)) return false;
-    for (const Segment& t : segs)
-        if (segments_conflict(s, t)) return false;
-    return true;
-}
-
-bool legal_point(const std::vector<Segment>& segs, const Point& p) {
-    for (const Segment& s : segs)
-        if (in_open_segment(s, p)) return false;
-    return true;
-}
-
-struct SearchCase {
-    Input input;
-    std::string kind;
-};
-
-double random_int(Rng& rng, double range) { return std::floor(rng.unit() * (range + 1.0)); }
-
-// A point that is an earlier endpoint with probability `reuse` (half of
-// those from the first three distinct endpoints, the hubs, so that up to
-// ten segments meet at a point), else a fresh one from `fresh`.
-template <class Fresh>
-Point pick_endpoint(const std::vector<Point>& ends, double reuse, Rng& rng, Fresh fresh) {
-    if (!ends.empty() && rng.unit() < reuse) {
-        const std::size_t hubs = std::min<std::size_t>(3, ends.size());
-        return rng.below(2) == 0 ? ends[rng.below(hubs)] : ends[rng.below(ends.size())];
-    }
-    return fresh();
-}
-
-// Segments drawn one at a time (up to 40 tries each) and kept when legal.
-template <class Draw>
-std::vector<Segment> draw_segments(std::size_t n, Rng& rng, Draw draw) {
-    std::vector<Segment> segs;
-    for (std::size_t k = 0; k < n; ++k) {
-        for (int attempt = 0; attempt < 40; ++attempt) {
-            Segment s = draw(segs);
-            if (rng.below(2) == 1) std::swap(s.a, s.b);
-            if (legal_addition(segs, s)) {
-                segs.push_back(s);
-                break;
-            }
-        }
-    }
-    return segs;
-}
-
-std::vector<Point> endpoints_of(const std::vector<Segment>& segs) {
-    std::vector<Point> ends;
-    for (const Segment& s : segs) {
-        for (const Point& p : {s.a, s.b}) {
-            if (std::none_of(ends.begin(), ends.end(), [&](const Point& q) { return same_point(p, q); }))
-                ends.push_back(p);
-        }
-    }
-    return ends;
-}
-
-// 0..max isolated points, legal ones only (an endpoint repeated is legal).
-template <class Fresh>
-void add_points(Input& input, std::size_t max, Rng& rng, Fresh fresh) {
-    const std::size_t count = rng.below(max + 1);
-    for (std::size_t k = 0; k < count; ++k) {
-        const Point p = fresh();
-        if (legal_point(input.segments, p)) input.points.push_back(p);
-    }
-}
-
-// Kind 0..4 (below); with `generic_only`, junctions never on the small grid,
-// with `small_grid` always.
-SearchCase random_case_of(std::size_t kind, Rng& rng, bool generic_only, bool small_grid) {
-    SearchCase c;
-    Input& input = c.input;
-    const double two_pi = 6.283185307179586;
-    if (kind == 0) {
-        // Integer junctions: endpoints in [0, range]^2, 30% of them earlier
-        // endpoints; short or long segments.
-        const double ranges[] = {20.0, 1000.0, 1e6};
-        const std::size_t r = small_grid ? 0 : generic_only ? 1 + rng.below(2) : rng.below(3);
-        const double range = ranges[r];
-        const std::size_t n = 2 + rng.below(39);
-        const bool short_ones = rng.below(2) == 0;
-        auto fresh = [&] { return Point{random_int(rng, range), random_int(rng, range)}; };
-        input.segments = draw_segments(n, rng, [&](const std::vector<Segment>& segs) {
-            const std::vector<Point> ends = endpoints_of(segs);
-            const Point a = pick_endpoint(ends, 0.3, rng, fresh);
-            const Point b = pick_endpoint(ends, 0.3, rng, [&] {
-                if (!short_ones) return fresh();
-                const double reach = std::max(2.0, range / 4.0);
-                return Point{std::round(a.x + reach * (2.0 * rng.unit() - 1.0)),
-                             std::round(a.y + reach * (2.0 * rng.unit() - 1.0))};
-            });
-            return Segment{a, b};
-        });
-        add_points(input, 3, rng, fresh);
-        input.degenerate = range < 100.0;
-        c.kind = "junctions-" + std::to_string(static_cast<long long>(range));
-    } else if (kind == 1) {
-        // A star: 3..10 spokes from one hub at random angles and lengths,
-        // each pointing in or out at random, and a few random points.
-        const bool integer = rng.below(2) == 0;
-        const double range = integer ? 1e6 : 1.0;
-        auto coordinate = [&](double v) { return integer ? std::round(v) : v; };
-        const Point hub{coordinate(range * (0.25 + 0.5 * rng.unit())), coordinate(range * (0.25 + 0.5 * rng.unit()))};
-        const std::size_t n = 3 + rng.below(8);
-        input.segments = draw_segments(n, rng, [&](const std::vector<Segment>&) {
-            const double angle = two_pi * rng.unit(), length = range * (0.05 + 0.25 * rng.unit());
-            return Segment{hub, {coordinate(hub.x + length * std::cos(angle)), coordinate(hub.y + length * std::sin(angle))}};
-        });
-        add_points(input, 4, rng, [&] { return Point{coordinate(range * rng.unit()), coordinate(range * rng.unit())}; });
-        c.kind = integer ? "star-int" : "star-double";
-    } else if (kind == 2) {
-        // A random polyline (sometimes closed) of 2..40 steps, each segment
-        // in a random direction.
-        const bool integer = rng.below(2) == 0;
-        const double range = integer ? 1e6 : 1.0;
-        auto coordinate = [&](double v) { return integer ? std::round(v) : v; };
-        const std::size_t n = 2 + rng.below(39);
-        const double step = range * 0.5 / std::sqrt(static_cast<double>(n));
-        std::vector<Segment> segs;
-        Point at{coordinate(range * rng.unit()), coordinate(range * rng.unit())};
-        const Point first = at;
-        for (std::size_t k = 0, tries = 0; k < n && tries < 40 * n; ++tries) {
-            const double angle = two_pi * rng.unit(), length = step * (0.3 + rng.unit());
-            const Point to{coordinate(at.x + length * std::cos(angle)), coordinate(at.y + length * std::sin(angle))};
-            if (!legal_addition(segs, {at, to})) continue;
-            segs.push_back({at, to});
-            at = to;
-            ++k;
-        }
-        if (segs.size() >= 2 && rng.below(3) == 0 && legal_addition(segs, {at, first})) segs.push_back({at, first});
-        for (Segment& s : segs)
-            if (rng.below(2) == 1) std::swap(s.a, s.b);
-        input.segments = segs;
-        add_points(input, 2, rng, [&] { return Point{coordinate(range * rng.unit()), coordinate(range * rng.unit())}; });
-        c.kind = integer ? "polyline-int" : "polyline-double";
-    } else if (kind == 3) {
-        // Snapped floats: random doubles rounded to 2..6 bits after the
-        // binary point in [0, 4)^2 (exact repeats, collinear and cocircular
-        // sites), with endpoint reuse: degenerate.
-        const int bits = 2 + static_cast<int>(rng.below(5));
-        const double scale = std::ldexp(1.0, bits);
-        auto snap = [&](double v) { return std::round(v * scale) / scale; };
-        auto fresh = [&] { return Point{snap(4.0 * rng.unit()), snap(4.0 * rng.unit())}; };
-        const std::size_t n = 2 + rng.below(24);
-        input.segments = draw_segments(n, rng, [&](const std::vector<Segment>& segs) {
-            const std::vector<Point> ends = endpoints_of(segs);
-            const Point a = pick_endpoint(ends, 0.3, rng, fresh);
-            const Point b = pick_endpoint(ends, 0.3, rng, [&] {
-                return Point{snap(a.x + 2.0 * rng.unit() - 1.0), snap(a.y + 2.0 * rng.unit() - 1.0)};
-            });
-            return Segment{a, b};
-        });
-        add_points(input, 3, rng, fresh);
-        input.degenerate = true;
-        c.kind = "snapped-" + std::to_string(bits);
-    } else {
-        // Boost.Polygon's benchmark style, small: 2..30 random segments split
-        // at their crossings rounded to the integer grid.
-        const double side = rng.below(2) == 0 ? 1000.0 : 1e6;
-        input.segments = boost_split(2 + rng.below(29), rng, side);
-        for (Segment& s : input.segments)
-            if (rng.below(2) == 1) std::swap(s.a, s.b);
-        c.kind = "split-" + std::to_string(static_cast<long long>(side));
-    }
-    input.family = c.kind;
-    return c;
-}
-
-// Near-degenerate: a small-grid junction or snapped input (exact
-// coincidences everywhere) with every distinct point moved, with
-// probability one half, in x, y or both (shared endpoints move together);
-// segments and points that become illegal are left out. Compared as
-// generic.
-SearchCase nudged_case(Rng& rng) {
-    SearchCase base = random_case_of(rng.below(2) == 0 ? 0 : 3, rng, false, true);
-    // ulps: nonzero coordinates by 1..4 ulps (zero stays); denormal: zero
-    // coordinates by 1..4 times the least subnormal (the rest stays);
-    // 1e-12, 1e-9: any coordinate by up to that much of the extent.
-    const std::size_t level = rng.below(4);
-    const char* const level_names[] = {"ulps", "denormal", "1e-12", "1e-9"};
-    const double extent = base.kind.rfind("junctions", 0) == 0 ? 20.0 : 4.0;
-    std::map<std::pair<double, double>, Point> moved;
-    auto shift = [&](double v) {
-        if (level <= 1) {
-            if ((v == 0.0) != (level == 1)) return v;
-            const double toward = rng.below(2) == 0 ? HUGE_VAL : -HUGE_VAL;
-            for (std::size_t k = 1 + rng.below(4); k > 0; --k) v = std::nextafter(v, toward);
-            return v;
-        }
-        return v + (2.0 * rng.unit() - 1.0) * extent * (level == 2 ? 1e-12 : 1e-9);
-    };
-    auto nudge = [&](const Point& p) {
-        auto it = moved.find({p.x, p.y});
-        if (it != moved.end()) return it->second;
-        Point q = p;
-        if (rng.below(2) == 0) {
-            const std::size_t axes = rng.below(3);
-            if (axes != 1) q.x = shift(q.x);
-            if (axes != 0) q.y = shift(q.y);
-        }
-        moved.emplace(std::make_pair(p.x, p.y), q);
-        return q;
-    };
-    SearchCase c;
-    for (const Segment& s : base.input.segments) {
-        const Segment t{nudge(s.a), nudge(s.b)};
-        if (legal_addition(c.input.segments, t)) c.input.segments.push_back(t);
-    }
-    for (const Point& p : base.input.points) {
-        const Point q = nudge(p);
-        if (legal_point(c.input.segments, q)) c.input.points.push_back(q);
-    }
-    c.kind = "nudged-" + base.kind.substr(0, base.kind.find('-')) + "-" + level_names[level];
-    c.input.family = c.kind;
-    return c;
-}
-
-// One input of a random kind; with `generic_only`, only the kinds compared
-// as generic, and not the near-degenerate ones.
-SearchCase random_case(Rng& rng, bool generic_only) {
-    std::size_t kind = rng.below(6);
-    if (generic_only && (kind == 3 || kind == 5)) kind = rng.below(2) == 0 ? 0 : 4;
-    if (kind == 5) return nudged_case(rng);
-    return random_case_of(kind, rng, generic_only, false);
-}
 
 // Greedy minimisation of a failing input: drop one segment, then one
 // point, at a time while it still fails (until nothing can go); then turn
@@ -2179,7 +989,7 @@ struct Candidate {
 // the smallest input so far.
 Input minimise(Input input, std::vector<bool> flipped, std::uint64_t seed, std::size_t& runs,
                std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max()) {
-    Rng rng(seed);
+    std::mt19937_64 rng(seed);
     auto fails = [&](const Input& candidate) {
         if (std::chrono::steady_clock::now() > deadline) return false;
         ++runs;
@@ -2242,24 +1052,59 @@ Input minimise(Input input, std::vector<bool> flipped, std::uint64_t seed, std::
     return best.input;
 }
 
-std::uint64_t mix_seed(std::uint64_t seed, std::uint64_t k) {
-    Rng rng(seed ^ (0xD1B54A32D192ED03ULL * (k + 1)));
-    return rng.next();
+
+// One record of `segvoronoi-testgen search`: a line "input K CASE_SEED KIND
+// DEGENERATE", the input as generated and its shuffled copy.
+struct SearchRecord {
+    unsigned long long k = 0;
+    unsigned long long case_seed = 0;
+    std::string kind;
+    Input input;
+    Input shuffled;
+};
+
+bool read_record(std::FILE* in, SearchRecord& record, std::string& error) {
+    char kind[128];
+    int degenerate = 0;
+    if (std::fscanf(in, " input %llu %llu %127s %d", &record.k, &record.case_seed, kind, &degenerate) != 4) {
+        error = "no record header";
+        return false;
+    }
+    record.input = Input();
+    record.shuffled = Input();
+    if (!read_text(in, record.input, error) || !read_text(in, record.shuffled, error)) return false;
+    record.kind = kind;
+    record.input.family = record.shuffled.family = kind;
+    record.input.degenerate = record.shuffled.degenerate = degenerate != 0;
+    return true;
 }
 
-int search(double seconds, std::uint64_t seed, bool generic_only, bool no_subnormal, const std::string& out_dir) {
+int search(double seconds, std::uint64_t seed, bool generic_only, bool no_subnormal, const std::string& out_dir,
+           const std::string& testgen) {
     std::signal(SIGFPE, report_sigfpe);
     std::printf("search: seconds=%g seed=%llu%s%s\n", seconds, static_cast<unsigned long long>(seed),
                 generic_only ? " generic" : "", no_subnormal ? " no-subnormal" : "");
     std::fflush(stdout);
+    const std::string command =
+        "'" + testgen + "' search " + std::to_string(seed) + (generic_only ? " --generic" : "");
+    std::FILE* stream = popen(command.c_str(), "r");
+    if (stream == nullptr) {
+        std::fprintf(stderr, "segvoronoi_cgal_check: cannot run %s\n", command.c_str());
+        return 2;
+    }
     const auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     std::size_t inputs = 0, runs = 0, failures = 0, cgal_errors = 0, empty = 0, fallbacks = 0;
     std::map<std::string, std::size_t> kinds;
-    for (std::uint64_t k = 0; elapsed() < seconds; ++k) {
-        const std::uint64_t case_seed = mix_seed(seed, k);
-        Rng rng(case_seed);
-        SearchCase c = random_case(rng, generic_only);
+    SearchRecord c;
+    std::string error;
+    bool stream_ok = true;
+    while (elapsed() < seconds) {
+        if (!read_record(stream, c, error)) {
+            std::fprintf(stderr, "segvoronoi_cgal_check: %s: %s\n", command.c_str(), error.c_str());
+            stream_ok = false;
+            break;
+        }
         // --no-subnormal: the kinds that move zeros to subnormals (known
         // to differ, see cgal.cmake) are drawn but not run
         if (no_subnormal && c.kind.find("denormal") != std::string::npos) continue;
@@ -2270,23 +1115,17 @@ int search(double seconds, std::uint64_t seed, bool generic_only, bool no_subnor
         ++inputs;
         ++kinds[c.kind];
         // The variants: as generated, every segment reversed, and points
-        // and segments shuffled (with the reversal marks moved along).
+        // and segments shuffled.
         const std::size_t n = c.input.segments.size();
         Input reversed = c.input;
         for (Segment& s : reversed.segments) std::swap(s.a, s.b);
-        Input shuffled = c.input;
-        std::vector<std::size_t> order(n);
-        std::iota(order.begin(), order.end(), 0);
-        shuffle(order, rng);
-        for (std::size_t j = 0; j < n; ++j) shuffled.segments[j] = c.input.segments[order[j]];
-        shuffle(shuffled.points, rng);
         const struct {
             const char* name;
             const Input* input;
             std::vector<bool> flipped;
         } variants[] = {{"as generated", &c.input, std::vector<bool>(n, false)},
                         {"every segment reversed", &reversed, std::vector<bool>(n, true)},
-                        {"shuffled", &shuffled, std::vector<bool>(n, false)}};
+                        {"shuffled", &c.shuffled, std::vector<bool>(n, false)}};
         for (const auto& variant : variants) {
             ++runs;
             const RunResult result = run_one(*variant.input);
@@ -2300,21 +1139,20 @@ int search(double seconds, std::uint64_t seed, bool generic_only, bool no_subnor
             // Minimising takes at most a second or two; all of it together
             // at most half the search time past its end.
             const auto deadline = start + std::chrono::milliseconds(static_cast<long long>(1500.0 * seconds));
-            const Input smallest = minimise(*variant.input, variant.flipped, case_seed, runs, deadline);
+            const Input smallest = minimise(*variant.input, variant.flipped, c.case_seed, runs, deadline);
             const RunResult again = run_one(smallest);
             std::printf("FAILURE %zu: kind=%s case_seed=%llu (search seed %llu, input %llu) variant=%s degenerate=%s "
                         "segments %zu -> %zu, points %zu -> %zu\n",
-                        failures, c.kind.c_str(), static_cast<unsigned long long>(case_seed),
-                        static_cast<unsigned long long>(seed), static_cast<unsigned long long>(k), variant.name,
-                        smallest.degenerate ? "yes" : "no", variant.input->segments.size(), smallest.segments.size(),
-                        variant.input->points.size(), smallest.points.size());
+                        failures, c.kind.c_str(), c.case_seed, static_cast<unsigned long long>(seed), c.k,
+                        variant.name, smallest.degenerate ? "yes" : "no", variant.input->segments.size(),
+                        smallest.segments.size(), variant.input->points.size(), smallest.points.size());
             std::printf("--- minimised input (Boost.Polygon text; compare with%s) ---\n",
                         smallest.degenerate ? " --degenerate" : "");
             write_text(stdout, smallest);
             std::printf("--- its comparison ---\n%s", again.text.c_str());
             std::printf("--- first result of the unminimised input ---\n%s---\n", result.text.c_str());
             if (!out_dir.empty()) {
-                const std::string path = out_dir + "/search_" + std::to_string(case_seed) + "_" +
+                const std::string path = out_dir + "/search_" + std::to_string(c.case_seed) + "_" +
                                          std::to_string(failures) + (smallest.degenerate ? "_deg" : "") + ".txt";
                 if (!write_file(path, smallest)) std::fprintf(stderr, "cannot write %s\n", path.c_str());
             }
@@ -2322,6 +1160,7 @@ int search(double seconds, std::uint64_t seed, bool generic_only, bool no_subnor
             break;  // one failure per input is enough
         }
     }
+    pclose(stream);  // the generator ends on the closed pipe
     const double minutes = elapsed() / 60.0;
     std::string kind_counts;
     for (const auto& entry : kinds) kind_counts += " " + entry.first + "=" + std::to_string(entry.second);
@@ -2329,19 +1168,18 @@ int search(double seconds, std::uint64_t seed, bool generic_only, bool no_subnor
                 kind_counts.c_str(), runs, cgal_errors, empty, fallbacks);
     std::printf("search: inputs=%zu per_minute=%.0f failures=%zu\n", inputs,
                 minutes > 0.0 ? static_cast<double>(inputs) / minutes : 0.0, failures);
+    if (!stream_ok) return 2;
     return failures > 0 ? 1 : 0;
 }
 
 int usage() {
     std::fprintf(stderr,
-                 "usage: segvoronoi_cgal_check <family> <n> [seed] [--write-input FILE]\n"
-                 "       segvoronoi_cgal_check --file input.txt [--degenerate]\n"
-                 "       segvoronoi_cgal_check --search SECONDS [seed] [--generic] [--out DIR]\n"
+                 "usage: segvoronoi_cgal_check --file input.txt [--degenerate] [--family NAME]\n"
+                 "       segvoronoi_cgal_check --search SECONDS [seed] [--generic] [--no-subnormal] [--out DIR] "
+                 "[--testgen PATH]\n"
                  "       segvoronoi_cgal_check --minimise input.txt [--degenerate]\n"
-                 "families: uniform clustered tiny tiny-offset huge (generic), lattice circle collinear "
-                 "tiny-lattice snapped (degenerate); segments: seg-random1 seg-random2 seg-random3 seg-short "
-                 "polyline square-hole polygon-holes letter-gap near-vertical (generic), polygon star tangent "
-                 "seg-lattice parallel letter (degenerate), boost-split (generic)\n");
+                 "inputs of a family: segvoronoi-testgen FAMILY N [SEED] > input.txt (--list: the families, and "
+                 "which are compared as degenerate)\n");
     return 2;
 }
 
@@ -2352,32 +1190,29 @@ bool parse_count(const char* text, std::uint64_t& value) {
     return errno == 0 && end != text && *end == '\0' && text[0] != '-';
 }
 
-// Fills `input` from the command line; returns false after printing why not.
+// --file PATH [--degenerate] [--family NAME]: fills `input`; returns false
+// after printing why not.
 bool parse_arguments(int argc, char** argv, Input& input) {
-    if (argc >= 3 && std::string(argv[1]) == "--file") {
-        if (argc > 4 || (argc == 4 && std::string(argv[3]) != "--degenerate")) return usage(), false;
-        std::string error;
-        if (!read_file(argv[2], input, error)) {
-            std::fprintf(stderr, "segvoronoi_cgal_check: %s: %s\n", argv[2], error.c_str());
-            return false;
+    if (argc < 3 || std::string(argv[1]) != "--file") return usage(), false;
+    bool degenerate = false;
+    std::string family;
+    for (int k = 3; k < argc; ++k) {
+        const std::string arg = argv[k];
+        if (arg == "--degenerate") {
+            degenerate = true;
+        } else if (arg == "--family" && k + 1 < argc) {
+            family = argv[++k];
+        } else {
+            return usage(), false;
         }
-        input.degenerate = argc == 4;
-        return true;
     }
-    std::string write_to;
-    if (argc >= 5 && std::string(argv[argc - 2]) == "--write-input") {
-        write_to = argv[argc - 1];
-        argc -= 2;
-    }
-    std::uint64_t n = 0, seed = 1;
-    if (argc < 3 || argc > 4 || !parse_count(argv[2], n) || (argc == 4 && !parse_count(argv[3], seed))) {
-        return usage(), false;
-    }
-    if (!make_family(argv[1], static_cast<std::size_t>(n), seed, input)) return usage(), false;
-    if (!write_to.empty() && !write_file(write_to, input)) {
-        std::fprintf(stderr, "segvoronoi_cgal_check: cannot write %s\n", write_to.c_str());
+    std::string error;
+    if (!read_file(argv[2], input, error)) {
+        std::fprintf(stderr, "segvoronoi_cgal_check: %s: %s\n", argv[2], error.c_str());
         return false;
     }
+    input.degenerate = degenerate;
+    if (!family.empty()) input.family = family;
     return true;
 }
 
@@ -2409,18 +1244,20 @@ int minimise_file(int argc, char** argv) {
     return 1;
 }
 
-// --search SECONDS [seed] [--generic] [--no-subnormal] [--out DIR] and --minimise; returns
+// --search SECONDS [seed] [--generic] [--no-subnormal] [--out DIR] [--testgen PATH] and --minimise; returns
 // -1 when argv is neither.
 int search_main(int argc, char** argv) {
     if (argc >= 2 && std::string(argv[1]) == "--minimise") return minimise_file(argc, argv);
     if (argc < 2 || std::string(argv[1]) != "--search") return -1;
-    std::string out_dir;
+    std::string out_dir, testgen = SEGVORONOI_TESTGEN_PATH;
     bool generic_only = false, no_subnormal = false;
     std::vector<std::string> numbers;
     for (int k = 2; k < argc; ++k) {
         const std::string arg = argv[k];
         if (arg == "--out" && k + 1 < argc) {
             out_dir = argv[++k];
+        } else if (arg == "--testgen" && k + 1 < argc) {
+            testgen = argv[++k];
         } else if (arg == "--generic") {
             generic_only = true;
         } else if (arg == "--no-subnormal") {
@@ -2436,10 +1273,9 @@ int search_main(int argc, char** argv) {
     }
     if (numbers.size() == 1) {
         // A new seed each run (printed first, so that any run can be repeated).
-        seed = static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
-        seed = Rng(seed).next();
+        seed = std::mt19937_64(std::chrono::system_clock::now().time_since_epoch().count())();
     }
-    return search(static_cast<double>(seconds), seed, generic_only, no_subnormal, out_dir);
+    return search(static_cast<double>(seconds), seed, generic_only, no_subnormal, out_dir, testgen);
 }
 
 int main(int argc, char** argv) {

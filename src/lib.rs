@@ -40,6 +40,8 @@
 // An undocumented public item (and so an undocumented C export) fails the build.
 #![deny(missing_docs)]
 
+#[doc(hidden)]
+pub mod boost_text;
 mod construct;
 mod diagram;
 mod error;

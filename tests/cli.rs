@@ -45,13 +45,9 @@ fn stderr(o: &Output) -> String {
     String::from_utf8(o.stderr.clone()).unwrap()
 }
 
-/// Boost.Polygon's text format for points only.
+/// Boost.Polygon's text format for points only (testgen's writer).
 fn boost_text(points: &[[f64; 2]]) -> String {
-    let mut text = format!("{}\n", points.len());
-    for p in points {
-        text += &format!("{} {}\n", p[0], p[1]);
-    }
-    text + "0\n"
+    segvoronoi_testgen::text(points, &[])
 }
 
 /// The topology text the library gives for the same points.

@@ -56,47 +56,17 @@ struct Fixture {
     segments: Vec<Segment>,
 }
 
-/// Boost.Polygon's text format, as `c_tests/cgal_crosscheck.cpp` reads it:
-/// a point count, that many lines "x y", a segment count (may be left out
-/// when zero), that many lines "x0 y0 x1 y1". Whitespace-separated tokens.
+/// A fixture through the library's reader of Boost.Polygon's text format
+/// (the one the CLI uses; `c_tests/cgal_crosscheck.cpp` reads the same
+/// files), every coordinate finite.
 fn read_boost_text(path: &Path) -> Result<Fixture, String> {
     let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read: {e}"))?;
-    let mut rest = text.split_whitespace();
-    let point_count = match rest.next() {
-        None => return Err("missing point count".into()),
-        Some(t) => t.parse::<usize>().map_err(|e| format!("bad point count '{t}': {e}"))?,
-    };
-    let mut numbers = Vec::with_capacity(2 * point_count);
-    for _ in 0..2 * point_count {
-        numbers.push(number(rest.next())?);
+    let input = segvoronoi::boost_text::parse(&text)?;
+    if let Some(v) = input.points.iter().flatten().chain(input.segments.iter().flatten()).find(|v| !v.is_finite()) {
+        return Err(format!("coordinate {v} is not finite"));
     }
-    let points: Vec<[f64; 2]> = numbers.chunks(2).map(|c| [c[0], c[1]]).collect();
-    let segment_count = match rest.next() {
-        None => 0,
-        Some(t) => t.parse::<usize>().map_err(|e| format!("bad segment count '{t}': {e}"))?,
-    };
-    let mut segments = Vec::with_capacity(segment_count);
-    for _ in 0..segment_count {
-        let mut c = [0.0; 4];
-        for v in &mut c {
-            *v = number(rest.next())?;
-        }
-        segments.push([[c[0], c[1]], [c[2], c[3]]]);
-    }
-    if let Some(t) = rest.next() {
-        return Err(format!("trailing text after {segment_count} segments: '{t}'"));
-    }
-    Ok(Fixture { points, segments })
-}
-
-fn number(token: Option<&str>) -> Result<f64, String> {
-    let t = token.ok_or("file ends early")?;
-    let v: f64 = t.parse().map_err(|e| format!("bad number '{t}': {e}"))?;
-    if v.is_finite() {
-        Ok(v)
-    } else {
-        Err(format!("coordinate '{t}' is not finite"))
-    }
+    let segments = input.segments.iter().map(|&[x1, y1, x2, y2]| [[x1, y1], [x2, y2]]).collect();
+    Ok(Fixture { points: input.points, segments })
 }
 
 fn fixture_files() -> Vec<PathBuf> {

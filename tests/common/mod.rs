@@ -1,30 +1,15 @@
-//! Helpers shared by the integration tests: input generators and the
-//! brute-force geometric checks.
+//! Helpers shared by the integration tests: the brute-force geometric
+//! checks, and the input generators of testgen/ re-exported.
 #![allow(dead_code)]
 
 use segvoronoi::{Builder, Diagram, EdgeEnd, Point};
 
-/// A small deterministic generator.
-pub struct Rng(pub u64);
-
-impl Rng {
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [0, 1).
-    pub fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
-pub fn uniform(n: usize, seed: u64) -> Vec<[f64; 2]> {
-    let mut r = Rng(seed);
-    (0..n).map(|_| [r.unit(), r.unit()]).collect()
-}
+// The generated inputs live in testgen/ with every other generator of the
+// tests, the bench and the CGAL cross-check.
+#[allow(unused_imports)] // each test uses some
+pub use segvoronoi_testgen::shapes::{polygon, segment_grid, snake, uniform, unit_segment_lattice};
+#[allow(unused_imports)]
+pub use segvoronoi_testgen::Rng;
 
 pub fn build(points: &[[f64; 2]]) -> Diagram {
     let mut b = Builder::new();
@@ -76,25 +61,6 @@ pub fn ray_count(d: &Diagram) -> usize {
     d.edges().filter(|e| matches!(e.ends, [EdgeEnd::Vertex(_), EdgeEnd::Infinite { .. }] | [EdgeEnd::Infinite { .. }, EdgeEnd::Vertex(_)])).count()
 }
 
-/// Points and short segments on a jittered grid, one item per cell (a
-/// segment with probability `segment_share`): no two segments meet.
-pub fn segment_grid(side: usize, seed: u64, segment_share: f64) -> (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>) {
-    let mut rng = Rng(seed);
-    let (mut pts, mut segs) = (Vec::new(), Vec::new());
-    for i in 0..side {
-        for j in 0..side {
-            let (x, y) = (i as f64, j as f64);
-            let a = [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()];
-            if rng.unit() < segment_share {
-                segs.push([a, [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()]]);
-            } else {
-                pts.push(a);
-            }
-        }
-    }
-    (pts, segs)
-}
-
 /// The diagram of points and segments, validated.
 pub fn build_sites(points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) -> Diagram {
     let mut b = Builder::new();
@@ -103,44 +69,6 @@ pub fn build_sites(points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) -> Diagram {
     let d = b.build().unwrap_or_else(|e| panic!("{e}"));
     d.validate().unwrap_or_else(|e| panic!("{e}"));
     d
-}
-
-/// The sides of the regular `n`-gon of circumradius `r` centred at
-/// `(cx, cy)`, each sharing its endpoints with its neighbours.
-pub fn polygon(n: usize, r: f64, cx: f64, cy: f64) -> Vec<[[f64; 2]; 2]> {
-    let corner = |k: usize| {
-        let t = std::f64::consts::TAU * (k % n) as f64 / n as f64;
-        [cx + r * t.cos(), cy + r * t.sin()]
-    };
-    (0..n).map(|k| [corner(k), corner(k + 1)]).collect()
-}
-
-/// A boustrophedon polyline through one jittered point per grid cell:
-/// consecutive segments share endpoints, none cross.
-pub fn snake(side: usize, seed: u64) -> Vec<[[f64; 2]; 2]> {
-    let mut rng = Rng(seed);
-    let mut path = Vec::new();
-    for i in 0..side {
-        for k in 0..side {
-            let j = if i % 2 == 0 { k } else { side - 1 - k };
-            path.push([i as f64 + 0.1 + 0.8 * rng.unit(), j as f64 + 0.1 + 0.8 * rng.unit()]);
-        }
-    }
-    path.windows(2).map(|w| [w[0], w[1]]).collect()
-}
-
-/// Every line of the `n` by `n` unit grid split into unit segments:
-/// degree-4 shared endpoints, collinear neighbours, cocircular everything.
-pub fn unit_segment_lattice(n: usize) -> Vec<[[f64; 2]; 2]> {
-    let mut segs = Vec::new();
-    for i in 0..=n {
-        for j in 0..n {
-            let (x, y) = (i as f64, j as f64);
-            segs.push([[x, y], [x, y + 1.0]]);
-            segs.push([[y, x], [y + 1.0, x]]);
-        }
-    }
-    segs
 }
 
 /// Whether an edge is longer than 1e-9 of the diagram's extent (rays and

@@ -5,7 +5,6 @@
 
 mod args;
 mod demo;
-mod input;
 mod stats;
 mod svg;
 
@@ -14,6 +13,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use args::{Command, Options, Source};
+use segvoronoi::boost_text as input;
 use segvoronoi::{Builder, TopologyOptions};
 
 /// Why the program stops early: an exit status and a message for the user.

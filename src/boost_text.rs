@@ -1,4 +1,7 @@
-//! Boost.Polygon's voronoi text format:
+//! Boost.Polygon's voronoi text format, the one reader of it: the CLI's
+//! input and the test fixtures (`c_tests/fixtures/`). Not part of the
+//! stable API (hidden from the docs); it lives in the library because the
+//! CLI can depend on nothing else.
 //!
 //! ```text
 //! P            number of points
@@ -11,12 +14,15 @@
 //! does not care how they are spread over lines, so blank lines and several
 //! points on one line are fine; what it adds is a line number in every error.
 //! Coordinates are parsed as `f64`, so `nan` and `inf` get through here and
-//! are left to the library, which rejects them naming the point's index.
+//! are left to the library, which rejects them naming the point's index
+//! (the fixtures' test rejects them itself).
 
 /// The parsed input.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Input {
+    /// The points, `[x, y]`, in input order.
     pub points: Vec<[f64; 2]>,
+    /// The segments, `[x1, y1, x2, y2]`, in input order.
     pub segments: Vec<[f64; 4]>,
 }
 

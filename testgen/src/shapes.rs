@@ -1,0 +1,68 @@
+//! Inputs of the cargo tests: uniform points, points and segments on a
+//! jittered grid, regular polygons, a snake, the unit-segment lattice.
+
+use crate::points::scaled_uniform;
+use crate::{Point, Rng, Segment};
+
+/// `n` points uniform in the unit square.
+pub fn uniform(n: usize, seed: u64) -> Vec<Point> {
+    scaled_uniform(n, &mut Rng(seed), 0.0, 1.0)
+}
+
+/// Points and short segments on a jittered grid, one item per cell (a
+/// segment with probability `segment_share`): no two segments meet.
+pub fn segment_grid(side: usize, seed: u64, segment_share: f64) -> (Vec<Point>, Vec<Segment>) {
+    let mut rng = Rng(seed);
+    let (mut pts, mut segs) = (Vec::new(), Vec::new());
+    for i in 0..side {
+        for j in 0..side {
+            let (x, y) = (i as f64, j as f64);
+            let a = [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()];
+            if rng.unit() < segment_share {
+                segs.push([a, [x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit()]]);
+            } else {
+                pts.push(a);
+            }
+        }
+    }
+    (pts, segs)
+}
+
+/// The sides of the regular `n`-gon of circumradius `r` centred at
+/// `(cx, cy)`, each sharing its endpoints with its neighbours (with
+/// `r = 1` at the origin: the cross-check's `polygon` family).
+pub fn polygon(n: usize, r: f64, cx: f64, cy: f64) -> Vec<Segment> {
+    let corner = |k: usize| {
+        let t = std::f64::consts::TAU * (k % n) as f64 / n as f64;
+        [cx + r * t.cos(), cy + r * t.sin()]
+    };
+    (0..n).map(|k| [corner(k), corner(k + 1)]).collect()
+}
+
+/// A boustrophedon polyline through one jittered point per grid cell:
+/// consecutive segments share endpoints, none cross.
+pub fn snake(side: usize, seed: u64) -> Vec<Segment> {
+    let mut rng = Rng(seed);
+    let mut path = Vec::new();
+    for i in 0..side {
+        for k in 0..side {
+            let j = if i % 2 == 0 { k } else { side - 1 - k };
+            path.push([i as f64 + 0.1 + 0.8 * rng.unit(), j as f64 + 0.1 + 0.8 * rng.unit()]);
+        }
+    }
+    path.windows(2).map(|w| [w[0], w[1]]).collect()
+}
+
+/// Every line of the `n` by `n` unit grid split into unit segments:
+/// degree-4 shared endpoints, collinear neighbours, cocircular everything.
+pub fn unit_segment_lattice(n: usize) -> Vec<Segment> {
+    let mut segs = Vec::new();
+    for i in 0..=n {
+        for j in 0..n {
+            let (x, y) = (i as f64, j as f64);
+            segs.push([[x, y], [x, y + 1.0]]);
+            segs.push([[y, x], [y + 1.0, x]]);
+        }
+    }
+    segs
+}
