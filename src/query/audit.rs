@@ -8,7 +8,7 @@
 //! rounded positions say.
 
 use crate::geometry::oracle::audit_depth;
-use crate::{Builder, Diagram, Point, Site};
+use crate::{Builder, Diagram, Site};
 
 /// The vertices of `diagram` whose circle holds another site, with the
 /// depth (most negative first within a vertex), or whose position is not
@@ -65,22 +65,12 @@ fn audit_file() {
     assert!(bad.is_empty(), "{} vertices hold a site", bad.len());
 }
 
-/// Reads Boost.Polygon's text format into a builder (points, then
-/// segments; the segment count may be left out when zero).
+/// A builder of an input in Boost.Polygon's text format (`boost_text`).
 fn builder_of(text: &str) -> Builder {
-    let mut nums = text.split_whitespace().map(|t| t.parse::<f64>().expect("a number"));
+    let input = crate::boost_text::parse(text).expect("an input in Boost.Polygon's text format");
     let mut builder = Builder::new();
-    let points = nums.next().unwrap_or(0.0) as usize;
-    for _ in 0..points {
-        let (x, y) = (nums.next().expect("x"), nums.next().expect("y"));
-        builder.add_point([x, y]).expect("a point");
-    }
-    let segments = nums.next().unwrap_or(0.0) as usize;
-    for _ in 0..segments {
-        let a = Point::new(nums.next().expect("x"), nums.next().expect("y"));
-        let b = Point::new(nums.next().expect("x"), nums.next().expect("y"));
-        builder.add_segment([a, b]).expect("a segment");
-    }
+    builder.add_points(input.points).expect("points");
+    builder.add_segments(input.segments.iter().map(|&[x1, y1, x2, y2]| [[x1, y1], [x2, y2]])).expect("segments");
     builder
 }
 
