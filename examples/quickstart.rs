@@ -29,10 +29,7 @@ fn main() -> Result<(), segvoronoi::Error> {
         println!("cell of site {} ({site:?}): {kind}, neighbours [{}]", cell.site(), neighbours.join(", "));
     }
     let stats = diagram.stats();
-    println!(
-        "{} points, {} sites, {} vertices, {} edges",
-        stats.input_points, stats.sites, stats.vertices, stats.edges
-    );
+    println!("{} points, {} sites, {} vertices, {} edges", stats.input_points, stats.sites, stats.vertices, stats.edges);
     diagram.validate().expect("a diagram from the library is always valid");
     Ok(())
 }

@@ -21,6 +21,11 @@ if [ ${#need_packages[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${need_packages[@]}" >/dev/null
 fi
 
+step "formatting (rustfmt.toml; cargo fmt --check over the workspace and bench/)"
+cargo fmt --version >/dev/null 2>&1 || rustup component add rustfmt
+cargo fmt --all -- --check
+(cd bench && cargo fmt -- --check)
+
 step "cargo test (workspace: library, C API via cc, header, properties, doctests)"
 cargo test --workspace --quiet
 

@@ -54,14 +54,11 @@ impl<'a> Tokens<'a> {
 
     /// The next token, or an error saying what was expected.
     fn expect(&mut self, what: &dyn Fn() -> String) -> Result<(usize, &'a str), String> {
-        self.next()
-            .ok_or_else(|| format!("line {}: expected {}, found the end of the input", self.last_line.max(1), what()))
+        self.next().ok_or_else(|| format!("line {}: expected {}, found the end of the input", self.last_line.max(1), what()))
     }
 
     fn count(line: usize, token: &str, what: &str) -> Result<usize, String> {
-        token
-            .parse::<usize>()
-            .map_err(|_| format!("line {line}: expected {what} (a non-negative integer), found {token:?}"))
+        token.parse::<usize>().map_err(|_| format!("line {line}: expected {what} (a non-negative integer), found {token:?}"))
     }
 
     fn number(&mut self, what: &dyn Fn() -> String) -> Result<f64, String> {
@@ -97,9 +94,7 @@ pub fn parse(text: &str) -> Result<Input, String> {
         input.segments.push(s);
     }
     if let Some((line, token)) = tokens.next() {
-        return Err(format!(
-            "line {line}: unexpected {token:?} after {point_count} points and {segment_count} segments"
-        ));
+        return Err(format!("line {line}: unexpected {token:?} after {point_count} points and {segment_count} segments"));
     }
     Ok(input)
 }

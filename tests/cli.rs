@@ -26,13 +26,8 @@ fn run(args: &[&str]) -> Output {
 }
 
 fn run_with_stdin(args: &[&str], stdin: &str) -> Output {
-    let mut child = Command::new(BIN)
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child =
+        Command::new(BIN).args(args).stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().unwrap();
     child.stdin.take().unwrap().write_all(stdin.as_bytes()).unwrap();
     child.wait_with_output().unwrap()
 }
@@ -197,10 +192,8 @@ fn segment_input_topology_names_segments() {
     std::fs::remove_file(&path).unwrap();
     assert!(o.status.success(), "{}", stderr(&o));
     let out = stdout(&o);
-    let expected = library_topology_with_segments(
-        &[[2.0, 2.0], [7.0, 3.0]],
-        &[[[0.0, 0.0], [4.0, 0.0]], [[4.0, 0.0], [5.0, -2.0]]],
-    );
+    let expected =
+        library_topology_with_segments(&[[2.0, 2.0], [7.0, 3.0]], &[[[0.0, 0.0], [4.0, 0.0]], [[4.0, 0.0], [5.0, -2.0]]]);
     assert_eq!(out, expected);
     // P0 (2,2) over S0: a parabolic edge; S0 and S1 meet at their shared endpoint.
     assert!(out.contains("\nP0 S0\n") && out.contains("S0 S1"), "{out}");

@@ -92,10 +92,7 @@ fn one_point_over_one_segment_by_hand() {
     let e = parabolic[0];
     assert_eq!(
         d.edge_shape(e.id),
-        Some(EdgeShape::Parabola {
-            focus: Point::new(2.0, 2.0),
-            directrix: [Point::new(0.0, 0.0), Point::new(4.0, 0.0)]
-        })
+        Some(EdgeShape::Parabola { focus: Point::new(2.0, 2.0), directrix: [Point::new(0.0, 0.0), Point::new(4.0, 0.0)] })
     );
     let [b0, b1, b2] = d.edge_bezier(e.id).unwrap();
     let mut xs = [b0.x, b2.x];
@@ -220,7 +217,8 @@ fn point_very_close_to_a_segment() {
     let d = build(&[[2.0, 1e-6], [2.0, 5.0]], &[[[0.0, 0.0], [4.0, 0.0]]]);
     assert!(check_edges(&d, 1e-3, 1e-9) >= 1);
     let near = Site::Point(Point::new(2.0, 1e-6));
-    let arcs: Vec<_> = d.edges().filter(|e| d.edge_bezier(e.id).is_some() && e.sites.map(|s| d.site(s)).contains(&Some(near))).collect();
+    let arcs: Vec<_> =
+        d.edges().filter(|e| d.edge_bezier(e.id).is_some() && e.sites.map(|s| d.site(s)).contains(&Some(near))).collect();
     assert_eq!(arcs.len(), 1, "the sliver has one arc");
     let poly = d.edge_polyline(arcs[0].id, 1e-3).unwrap();
     assert!((45..=55).contains(&poly.len()), "{} points", poly.len());
@@ -342,10 +340,7 @@ fn c_edge_shape_agrees_with_rust() {
                     parabolas += 1;
                     assert_eq!(out.kind, SEGVORONOI_EDGE_PARABOLA);
                     assert_eq!((out.focus_x, out.focus_y), (focus.x, focus.y));
-                    assert_eq!(
-                        [out.directrix_x1, out.directrix_y1, out.directrix_x2, out.directrix_y2],
-                        [a.x, a.y, b.x, b.y]
-                    );
+                    assert_eq!([out.directrix_x1, out.directrix_y1, out.directrix_x2, out.directrix_y2], [a.x, a.y, b.x, b.y]);
                 }
                 other => panic!("a shape this test does not know: {other:?}"),
             }

@@ -49,10 +49,12 @@ fn lattice(side: usize) -> Vec<[f64; 2]> {
 }
 
 fn circle(n: usize) -> Vec<[f64; 2]> {
-    (0..n).map(|i| {
-        let a = i as f64 * std::f64::consts::TAU / n as f64;
-        [a.cos(), a.sin()]
-    }).collect()
+    (0..n)
+        .map(|i| {
+            let a = i as f64 * std::f64::consts::TAU / n as f64;
+            [a.cos(), a.sin()]
+        })
+        .collect()
 }
 
 #[test]

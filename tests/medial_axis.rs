@@ -94,7 +94,8 @@ fn graph_shape(d: &Diagram, axis: &MedialAxis) -> (usize, usize, usize) {
     for chain in &axis.chains {
         for p in &chain.pieces {
             edges += 1;
-            let ids: Vec<usize> = p.ends.iter().filter_map(|e| if let EdgeEnd::Vertex(v) = e { Some(v.index()) } else { None }).collect();
+            let ids: Vec<usize> =
+                p.ends.iter().filter_map(|e| if let EdgeEnd::Vertex(v) = e { Some(v.index()) } else { None }).collect();
             for &v in &ids {
                 find(&mut parent, v);
             }
@@ -105,7 +106,8 @@ fn graph_shape(d: &Diagram, axis: &MedialAxis) -> (usize, usize, usize) {
         }
     }
     let vertices = parent.len();
-    let roots: std::collections::HashSet<usize> = parent.keys().copied().collect::<Vec<_>>().into_iter().map(|v| find(&mut parent, v)).collect();
+    let roots: std::collections::HashSet<usize> =
+        parent.keys().copied().collect::<Vec<_>>().into_iter().map(|v| find(&mut parent, v)).collect();
     (edges, vertices, roots.len())
 }
 
@@ -157,7 +159,13 @@ fn holes_give_independent_cycles() {
     assert_eq!((c, e + c - v), (1, 1));
     // three holes: three cycles; an island in a hole is its own component
     let square = |x: f64, y: f64, s: f64| vec![[x, y], [x + s, y], [x + s, y + s], [x, y + s]];
-    let rings = vec![square(0.0, 0.0, 30.0), square(2.0, 2.0, 5.0), square(20.0, 3.0, 4.0), square(8.0, 18.0, 10.0), square(10.0, 20.0, 6.0)];
+    let rings = vec![
+        square(0.0, 0.0, 30.0),
+        square(2.0, 2.0, 5.0),
+        square(20.0, 3.0, 4.0),
+        square(8.0, 18.0, 10.0),
+        square(10.0, 20.0, 6.0),
+    ];
     let d = build(&rings);
     let (e, v, c) = graph_shape(&d, &d.medial_axis());
     assert_eq!((c, e + c - v), (2, 3));
@@ -167,7 +175,8 @@ fn holes_give_independent_cycles() {
 fn sampled_points_are_inside_at_their_clearance() {
     let mut rng = common::Rng(17);
     for _ in 0..20 {
-        let rings = vec![star(10 + (rng.next_u64() % 50) as usize, 0.0, 0.0, 6.0, 10.0, &mut rng), star(6, 0.5, 0.0, 1.0, 2.5, &mut rng)];
+        let rings =
+            vec![star(10 + (rng.next_u64() % 50) as usize, 0.0, 0.0, 6.0, 10.0, &mut rng), star(6, 0.5, 0.0, 1.0, 2.5, &mut rng)];
         let d = build(&rings);
         let segments = ring_segments(&rings);
         let axis = d.medial_axis();

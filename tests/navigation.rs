@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::{build_sites, polygon, segment_grid, unit_segment_lattice, uniform};
+use common::{build_sites, polygon, segment_grid, uniform, unit_segment_lattice};
 use segvoronoi::ffi::*;
 use segvoronoi::{Diagram, EdgeEnd, HalfEdge, Site, SiteId, VertexId};
 
@@ -74,7 +74,8 @@ fn check_navigation(d: &Diagram) {
     assert_eq!(separators.len(), 2 * segments);
     for e in separators {
         let [a, b] = e.sites.map(|s| d.site(s).unwrap());
-        let (segment, point) = if matches!(a, Site::Segment { .. }) { (e.sites[0], e.sites[1]) } else { (e.sites[1], e.sites[0]) };
+        let (segment, point) =
+            if matches!(a, Site::Segment { .. }) { (e.sites[0], e.sites[1]) } else { (e.sites[1], e.sites[0]) };
         assert!(d.segment_endpoints(segment).unwrap().contains(&point), "{a:?} {b:?}");
     }
 }

@@ -122,7 +122,10 @@ fn huge_offset_tiny_extent() {
     // extent 1e-6 around 1e9: differences are a few hundred ulps
     let pts: Vec<[f64; 2]> = uniform(300, 11).iter().map(|p| [1e9 + p[0] * 1e-6, 1e9 + p[1] * 1e-6]).collect();
     let d = build(&pts);
-    assert_eq!(d.site_count(), pts.iter().map(|p| (p[0].to_bits(), p[1].to_bits())).collect::<std::collections::HashSet<_>>().len());
+    assert_eq!(
+        d.site_count(),
+        pts.iter().map(|p| (p[0].to_bits(), p[1].to_bits())).collect::<std::collections::HashSet<_>>().len()
+    );
 }
 
 /// Found by the CGAL cross-check: with distances of about 1 that differ by

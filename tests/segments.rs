@@ -4,8 +4,8 @@
 mod common;
 
 use common::{
-    build_sites as build, check_empty_circles as check_geometry, check_nearest_sites, has_positive_length, polygon, segment_grid, snake,
-    unit_segment_lattice, Rng,
+    build_sites as build, check_empty_circles as check_geometry, check_nearest_sites, has_positive_length, polygon, segment_grid,
+    snake, unit_segment_lattice, Rng,
 };
 use segvoronoi::{Builder, ErrorKind, Point, Site, TopologyOptions};
 

@@ -26,8 +26,7 @@ pub enum Contender {
 }
 
 impl Contender {
-    pub const ALL: [Contender; 4] =
-        [Contender::Segvoronoi, Contender::BoostCpp, Contender::Boostvoronoi, Contender::Spade];
+    pub const ALL: [Contender; 4] = [Contender::Segvoronoi, Contender::BoostCpp, Contender::Boostvoronoi, Contender::Spade];
 
     /// The contenders this binary can run (boost-cpp only when compiled in).
     pub fn available() -> Vec<Contender> {
@@ -113,12 +112,16 @@ pub fn measure(contender: Contender, n: usize, runs: usize) -> Measured {
         }
         Contender::Spade => {
             let points = float_points(n, SEED);
-            time_runs(runs, || spade_build(&points), |t| Counts {
-                sites: t.num_vertices(),
-                vertices: t.num_inner_faces(),
-                edges: t.num_undirected_edges(),
-                vertex_sum: [f64::NAN; 2],
-            })
+            time_runs(
+                runs,
+                || spade_build(&points),
+                |t| Counts {
+                    sites: t.num_vertices(),
+                    vertices: t.num_inner_faces(),
+                    edges: t.num_undirected_edges(),
+                    vertex_sum: [f64::NAN; 2],
+                },
+            )
         }
     }
 }

@@ -213,8 +213,7 @@ fn run_segments(workloads: &[Workload], options: &Options) -> (Vec<Row>, Vec<Inp
             let least_gap = segments::verify(&generated.segments)
                 .unwrap_or_else(|e| panic!("generator bug, {} n = {n}: {e}", workload.name()));
             let file = dir.join(format!("{}-{n}.bin", workload.name()));
-            segments::write_file(&file, &generated.segments)
-                .unwrap_or_else(|e| panic!("cannot write {}: {e}", file.display()));
+            segments::write_file(&file, &generated.segments).unwrap_or_else(|e| panic!("cannot write {}: {e}", file.display()));
             inputs.push(InputInfo {
                 workload,
                 n,
@@ -278,8 +277,7 @@ fn parse_options(args: &[String]) -> Result<Options, String> {
                 }
             }
             "--contenders" => {
-                contenders =
-                    Some(parse_list(value, |s| Contender::parse(s).ok_or_else(|| format!("unknown contender {s:?}")))?);
+                contenders = Some(parse_list(value, |s| Contender::parse(s).ok_or_else(|| format!("unknown contender {s:?}")))?);
             }
             "--methods" => {
                 methods = parse_list(value, |s| {
@@ -287,7 +285,8 @@ fn parse_options(args: &[String]) -> Result<Options, String> {
                 })?;
             }
             "--timeout" => {
-                let seconds: f64 = value.parse().ok().filter(|&s: &f64| s > 0.0).ok_or_else(|| format!("bad timeout {value:?}"))?;
+                let seconds: f64 =
+                    value.parse().ok().filter(|&s: &f64| s > 0.0).ok_or_else(|| format!("bad timeout {value:?}"))?;
                 timeout = Duration::from_secs_f64(seconds);
             }
             _ => return Err(format!("unknown option {flag}")),
@@ -322,11 +321,8 @@ fn run_child(workload: Workload, who: Who, n: usize, options: &Options, file: Op
     if let Some(file) = file {
         command.arg(file);
     }
-    let mut child = command
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .map_err(|e| format!("cannot start child: {e}"))?;
+    let mut child =
+        command.stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().map_err(|e| format!("cannot start child: {e}"))?;
     // Drained on threads so a chatty child never blocks on a full pipe.
     let drain = |pipe: Option<Box<dyn Read + Send>>| {
         std::thread::spawn(move || {

@@ -241,18 +241,9 @@ fn print_counts(rows: &[Row]) {
     for row in rows {
         let (Who::Lib(c), Some(m)) = (row.who, measured(row)) else { continue };
         let what = if c == Contender::Spade { " (Delaunay triangles)" } else { "" };
-        let reference = rows
-            .iter()
-            .find(|r| r.n == row.n && r.who == Who::Lib(Contender::Segvoronoi))
-            .and_then(measured);
+        let reference = rows.iter().find(|r| r.n == row.n && r.who == Who::Lib(Contender::Segvoronoi)).and_then(measured);
         let delta = reference.map_or("—".into(), |s| format!("{:+}", m.vertices as i64 - s.vertices as i64));
-        println!(
-            "| {} | {}{what} | {} | {} | {delta} |",
-            thousands(row.n),
-            c.name(),
-            thousands(m.sites),
-            thousands(m.vertices)
-        );
+        println!("| {} | {}{what} | {} | {} | {delta} |", thousands(row.n), c.name(), thousands(m.sites), thousands(m.vertices));
     }
 }
 
@@ -271,9 +262,8 @@ fn print_scaling(rows: &[Row]) {
             .filter(|r| r.workload == row.workload && r.who == row.who && r.n < row.n)
             .filter_map(|r| measured(r).map(|pm| (r.n, median(pm))))
             .max_by_key(|&(n, _)| n);
-        let exponent = previous.map_or("—".into(), |(n1, t1)| {
-            format!("{:.3}", (t / t1).ln() / (row.n as f64 / n1 as f64).ln())
-        });
+        let exponent =
+            previous.map_or("—".into(), |(n1, t1)| format!("{:.3}", (t / t1).ln() / (row.n as f64 / n1 as f64).ln()));
         println!("| {} | {} | {:.0} | {exponent} |", thousands(row.n), c.name(), t * 1e9 / row.n as f64);
     }
 }
@@ -283,10 +273,7 @@ fn measured(row: &Row) -> Option<&Measured> {
 }
 
 fn segvoronoi_median(rows: &[Row], n: usize) -> Option<f64> {
-    rows.iter()
-        .find(|r| r.n == n && r.who == Who::Lib(Contender::Segvoronoi))
-        .and_then(measured)
-        .map(median)
+    rows.iter().find(|r| r.n == n && r.who == Who::Lib(Contender::Segvoronoi)).and_then(measured).map(median)
 }
 
 pub fn median(m: &Measured) -> f64 {

@@ -117,7 +117,9 @@ impl Builder {
         self.reserve_segments(iter.size_hint().0)?;
         let points = self.points.len();
         let segments = iter.map(|s| s.map(Into::into));
-        append_checked(&mut self.segments, segments, check_segment, |n| check_capacity(points.saturating_add(n.saturating_mul(2))))
+        append_checked(&mut self.segments, segments, check_segment, |n| {
+            check_capacity(points.saturating_add(n.saturating_mul(2)))
+        })
     }
 
     /// Makes room for `additional` more points, or fails with
@@ -154,8 +156,8 @@ impl Builder {
     /// sound arithmetic it does not happen), with a message saying what
     /// failed. The builder stays as it was.
     pub fn build(&self) -> Result<Diagram, Error> {
-        let mut diagram = super::diagram_of(&self.points, &self.segments)
-            .map_err(|e| super::polygon_input::name_rings(e, &self.rings))?;
+        let mut diagram =
+            super::diagram_of(&self.points, &self.segments).map_err(|e| super::polygon_input::name_rings(e, &self.rings))?;
         diagram.set_domain(&self.rings);
         Ok(diagram)
     }

@@ -57,11 +57,7 @@ impl Construction {
     /// between its endpoints (its separators are the perpendiculars there).
     /// Returns the point sites in chain order and the segment sites in the
     /// order of `between`.
-    pub(super) fn start_collinear_with_segments(
-        &mut self,
-        chain: &[Point],
-        between: &[usize],
-    ) -> (Vec<SiteId>, Vec<SiteId>) {
+    pub(super) fn start_collinear_with_segments(&mut self, chain: &[Point], between: &[usize]) -> (Vec<SiteId>, Vec<SiteId>) {
         let ids: Vec<SiteId> = chain.iter().map(|&p| self.add_site(p)).collect();
         let mut after: Vec<Option<SiteId>> = vec![None; chain.len()];
         let mut segment_sites = Vec::with_capacity(between.len());

@@ -28,7 +28,9 @@ use super::insertion_order::insertion_order;
 use super::state::{infinite_rotation, Construction};
 use crate::diagram::{SiteId, VertexId, NONE};
 use crate::geometry::point_predicates::{self, VertexCircle};
-use crate::geometry::predicates::{in_circle, orientation, strictly_closer_given, in_half_plane_circle, CirclePosition, Orientation};
+use crate::geometry::predicates::{
+    in_circle, in_half_plane_circle, orientation, strictly_closer_given, CirclePosition, Orientation,
+};
 use crate::geometry::Point;
 
 /// How far the fallback seed search may look beyond the nearest cell.
@@ -71,10 +73,7 @@ pub(super) fn insert_points(points: &[Point], segment_count: usize) -> PointStag
     };
     let second = order[b_pos];
     let pb = points[second as usize];
-    let third = order[b_pos + 1..]
-        .iter()
-        .copied()
-        .find(|&i| orientation(pa, pb, points[i as usize]) != Orientation::Collinear);
+    let third = order[b_pos + 1..].iter().copied().find(|&i| orientation(pa, pb, points[i as usize]) != Orientation::Collinear);
     let Some(third) = third else {
         return PointStage::Collinear;
     };

@@ -55,8 +55,8 @@ fn insertion_order_threaded(points: &[Point], parallel_from: usize) -> Vec<u32> 
         // Level k with probability 2^-(k+1): half the points in the last
         // round. Drawn from the index alone, so any split of the work gives
         // the same order.
-        let level = (SplitMix(seed ^ (i as u64).wrapping_mul(0xD1B5_4A32_D192_ED03)).next() | (1 << MAX_LEVEL))
-            .trailing_zeros() as u64;
+        let level =
+            (SplitMix(seed ^ (i as u64).wrapping_mul(0xD1B5_4A32_D192_ED03)).next() | (1 << MAX_LEVEL)).trailing_zeros() as u64;
         let round = MAX_LEVEL - level;
         let mut h = hilbert_index(grid(p.x, lo.x), grid(p.y, lo.y));
         if round % 2 == 1 {
@@ -76,8 +76,7 @@ fn insertion_order_threaded(points: &[Point], parallel_from: usize) -> Vec<u32> 
         return keyed_sorted(0, points).into_iter().map(|(_, i)| i).collect();
     }
     let half = n / 2;
-    let (second, first) =
-        super::run_beside(|| keyed_sorted(half, &points[half..]), || keyed_sorted(0, &points[..half]));
+    let (second, first) = super::run_beside(|| keyed_sorted(half, &points[half..]), || keyed_sorted(0, &points[..half]));
     merge_indices(&first, &second)
 }
 

@@ -51,11 +51,7 @@ use restart::{insert_all, insert_all_from, Outcome, Stuck};
 /// The diagram of the builder's input, or the error that
 /// [`Builder::build`] returns (see there).
 pub(super) fn diagram_of(points: &[Point], segments: &[[Point; 2]]) -> Result<Diagram, Error> {
-    let (diagram, outcome) = if segments.is_empty() {
-        build_points(points)
-    } else {
-        build_sites(points, segments)?
-    };
+    let (diagram, outcome) = if segments.is_empty() { build_points(points) } else { build_sites(points, segments)? };
     accept(diagram, outcome, points, segments)
 }
 
@@ -89,8 +85,7 @@ fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<(Diagram, Ou
     // zero-length segment only repeats points), so on large inputs the
     // check runs on a second thread meanwhile; an error discards the points.
     let (checked, stage) = if segments.len() >= PARALLEL_CHECK_FROM {
-        let (checked, stage) =
-            run_beside(|| check_segments(points, segments, scale), || insert_points(&scaled, segments.len()));
+        let (checked, stage) = run_beside(|| check_segments(points, segments, scale), || insert_points(&scaled, segments.len()));
         (checked, Some(stage))
     } else {
         (check_segments(points, segments, scale), None)
@@ -101,11 +96,8 @@ fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<(Diagram, Ou
     let kept: Vec<usize> = checked.segments.iter().map(|&(j, _)| j).collect();
     let pairs: Vec<[usize; 2]> = kept.iter().map(|&j| endpoint_index(points.len(), j)).collect();
     let (built, site_of_input, segment_sites, outcome) = insert_all_from(stage, &scaled, &pairs);
-    let described: Vec<SegmentSite> = kept
-        .iter()
-        .zip(segment_sites)
-        .map(|(&j, internal)| SegmentSite { input: j, internal, ends: segments[j] })
-        .collect();
+    let described: Vec<SegmentSite> =
+        kept.iter().zip(segment_sites).map(|(&j, internal)| SegmentSite { input: j, internal, ends: segments[j] }).collect();
     let mut diagram = renumber::renumber(built, &site_of_input, &all, &described, scale);
     renumber::number_segment_inputs(&mut diagram, &checked, points.len(), segments.len());
     Ok((diagram, outcome))

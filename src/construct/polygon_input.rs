@@ -47,7 +47,10 @@ impl Builder {
     /// assert!(inside > 0);
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
-    pub fn add_polygon<P: Into<Point> + Copy, R: AsRef<[P]>>(&mut self, rings: &[R]) -> Result<Vec<std::ops::Range<usize>>, Error> {
+    pub fn add_polygon<P: Into<Point> + Copy, R: AsRef<[P]>>(
+        &mut self,
+        rings: &[R],
+    ) -> Result<Vec<std::ops::Range<usize>>, Error> {
         let polygon = self.polygons;
         let mut chains = Vec::with_capacity(rings.len());
         for (ring, points) in rings.iter().enumerate() {

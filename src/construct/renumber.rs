@@ -80,9 +80,8 @@ pub(super) fn renumber(
         }
         v += 1;
     }
-    let finite_vertices = (0..store.vertex_count())
-        .find(|&v| store.is_at_infinity(VertexId::from_index(v)))
-        .unwrap_or(store.vertex_count());
+    let finite_vertices =
+        (0..store.vertex_count()).find(|&v| store.is_at_infinity(VertexId::from_index(v))).unwrap_or(store.vertex_count());
 
     if !scale.is_identity() {
         for v in 0..finite_vertices {
@@ -132,9 +131,8 @@ pub(super) fn renumber(
 fn bounding_box_diagonal(point_sites: &[Site]) -> f64 {
     let mut points = point_sites.iter().filter_map(Site::as_point);
     let Some(first) = points.next() else { return 0.0 };
-    let (lo, hi) = points.fold((first, first), |(lo, hi), p| {
-        (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y)))
-    });
+    let (lo, hi) = points
+        .fold((first, first), |(lo, hi), p| (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y))));
     // halve first so that the extent of huge inputs does not overflow
     let (dx, dy) = (hi.x / 2.0 - lo.x / 2.0, hi.y / 2.0 - lo.y / 2.0);
     2.0 * dx.hypot(dy)

@@ -24,7 +24,7 @@ mod store;
 mod validate;
 
 pub use built::{BuildStats, Diagram};
-pub use ids::{EdgeId, HalfEdgeId, SiteId, VertexId};
 pub(crate) use ids::NONE;
+pub use ids::{EdgeId, HalfEdgeId, SiteId, VertexId};
 pub(crate) use store::Store;
 pub use validate::ValidationError;

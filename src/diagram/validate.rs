@@ -100,10 +100,7 @@ impl Store {
             ensure!(k == 1, "site {s} has {k} boundary cycles (must be exactly one)");
             let e = self.cell_edge[s];
             ensure!(e != NONE && (e as usize) < nh, "site {s} has no cell edge");
-            ensure!(
-                self.left(HalfEdgeId(e)) == SiteId::from_index(s),
-                "cell edge of site {s} borders another cell"
-            );
+            ensure!(self.left(HalfEdgeId(e)) == SiteId::from_index(s), "cell edge of site {s} borders another cell");
         }
 
         // Connectivity, then Euler on the sphere.
@@ -123,10 +120,7 @@ impl Store {
         }
         ensure!(count == nv, "graph is not connected: {count} of {nv} vertices reached");
         let edges = nh / 2;
-        ensure!(
-            nv as i64 - edges as i64 + faces as i64 == 2,
-            "Euler's formula fails: V={nv} E={edges} F={faces}"
-        );
+        ensure!(nv as i64 - edges as i64 + faces as i64 == 2, "Euler's formula fails: V={nv} E={edges} F={faces}");
         Ok(())
     }
 }

@@ -33,8 +33,8 @@ mod shape;
 pub use builder::*;
 pub use diagram::*;
 pub use navigation::*;
-pub use shape::*;
 pub use plumbing::{
     segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version, segvoronoi_version_number,
     SEGVORONOI_VERSION_MAJOR, SEGVORONOI_VERSION_MINOR, SEGVORONOI_VERSION_NUMBER, SEGVORONOI_VERSION_PATCH,
 };
+pub use shape::*;

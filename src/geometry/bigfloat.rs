@@ -177,8 +177,7 @@ impl Mul for &BigFloat {
     type Output = BigFloat;
     fn mul(self, other: &BigFloat) -> BigFloat {
         let bits = self.bits.max(other.bits);
-        BigFloat { mantissa: &self.mantissa * &other.mantissa, exponent: self.exponent + other.exponent, bits }
-            .rounded()
+        BigFloat { mantissa: &self.mantissa * &other.mantissa, exponent: self.exponent + other.exponent, bits }.rounded()
     }
 }
 

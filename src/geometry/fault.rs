@@ -67,9 +67,9 @@ mod imp {
 }
 
 #[cfg(feature = "fault-injection")]
-pub use imp::{set_fault_mode, FaultMode};
-#[cfg(feature = "fault-injection")]
 pub(crate) use imp::{active, perturb, perturb_difference};
+#[cfg(feature = "fault-injection")]
+pub use imp::{set_fault_mode, FaultMode};
 
 #[cfg(not(feature = "fault-injection"))]
 #[inline(always)]

@@ -200,7 +200,6 @@ const CONVERGED: f64 = 1e-20;
 /// the configuration's size, from its circle.
 const POLISH_TOLERANCE: f64 = 1e-12;
 
-
 /// The counter of polished vertices, after the stages'.
 const POLISHED: usize = 6;
 
@@ -739,7 +738,11 @@ mod tests {
         // a point and two segments: the circle through (0, 2) tangent to
         // y = 0 and x = 0 (-ish: the second line tilted by one ulp), and a
         // new segment through its computed bottom-right
-        let sites = [point(0.5, 2.0), Site::Segment { a: Point::new(-5.0, 0.0), b: Point::new(5.0, 0.0) }, Site::Segment { a: Point::new(-1.0, 5.0), b: Point::new(-1.0 + 2f64.powi(-50), -5.0) }];
+        let sites = [
+            point(0.5, 2.0),
+            Site::Segment { a: Point::new(-5.0, 0.0), b: Point::new(5.0, 0.0) },
+            Site::Segment { a: Point::new(-1.0, 5.0), b: Point::new(-1.0 + 2f64.powi(-50), -5.0) },
+        ];
         let (c, r) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]).unwrap();
         // the exact answers at f64 distance from the rounded circle
         for (offset, expected) in [(1e-9, CirclePosition::Outside), (-1e-9, CirclePosition::Inside)] {

@@ -79,10 +79,7 @@ impl Parabola {
     pub(crate) fn point(&self, s: f64) -> Point {
         let p = self.focal_distance;
         let h = (s * s + p * p) / (2.0 * p);
-        Point::new(
-            self.origin.x + s * self.tangent.x + h * self.normal.x,
-            self.origin.y + s * self.tangent.y + h * self.normal.y,
-        )
+        Point::new(self.origin.x + s * self.tangent.x + h * self.normal.x, self.origin.y + s * self.tangent.y + h * self.normal.y)
     }
 
     /// The quadratic Bézier control points `[start, control, end]` of the arc
@@ -123,9 +120,7 @@ impl Parabola {
 /// pair of sites.
 pub(crate) fn focus_and_directrix(first: &Site, second: &Site) -> Option<(Point, Point, Point)> {
     match (*first, *second) {
-        (Site::Point(f), s @ Site::Segment { a, b }) | (s @ Site::Segment { a, b }, Site::Point(f))
-            if !s.has_endpoint(f) =>
-        {
+        (Site::Point(f), s @ Site::Segment { a, b }) | (s @ Site::Segment { a, b }, Site::Point(f)) if !s.has_endpoint(f) => {
             Some((f, a, b))
         }
         _ => None,

@@ -28,10 +28,8 @@ pub(crate) fn segment_contact(s: [Point; 2], t: [Point; 2]) -> Option<SegmentCon
         // On one line the segments are intervals; distinct intervals share
         // more than a point exactly when an endpoint of one lies strictly
         // inside the other (a common endpoint alone is allowed).
-        let inside = strictly_between(a, b, c)
-            || strictly_between(a, b, d)
-            || strictly_between(c, d, a)
-            || strictly_between(c, d, b);
+        let inside =
+            strictly_between(a, b, c) || strictly_between(a, b, d) || strictly_between(c, d, a) || strictly_between(c, d, b);
         return inside.then_some(SegmentContact::Overlap);
     }
     let (oa, ob) = (orientation(c, d, a), orientation(c, d, b));
@@ -57,8 +55,7 @@ pub(crate) fn segment_contact(s: [Point; 2], t: [Point; 2]) -> Option<SegmentCon
 fn opposite(p: Orientation, q: Orientation) -> bool {
     matches!(
         (p, q),
-        (Orientation::Clockwise, Orientation::CounterClockwise)
-            | (Orientation::CounterClockwise, Orientation::Clockwise)
+        (Orientation::Clockwise, Orientation::CounterClockwise) | (Orientation::CounterClockwise, Orientation::Clockwise)
     )
 }
 
@@ -66,4 +63,3 @@ fn opposite(p: Orientation, q: Orientation) -> bool {
 pub(crate) fn inside_segment(p: Point, s: [Point; 2]) -> bool {
     orientation(s[0], s[1], p) == Orientation::Collinear && strictly_between(s[0], s[1], p)
 }
-

@@ -15,10 +15,10 @@
 //! are perturbed here (`fault`), one draw per quantity, in the order the
 //! questions are asked.
 
-use super::fault;
 use super::double_double::DoubleDouble;
-use super::oracle::{self, Reach};
 use super::edge_curve::EdgeCurve;
+use super::fault;
+use super::oracle::{self, Reach};
 use super::point::{norm, Point};
 use super::predicates::{orientation, CirclePosition, Orientation};
 use super::segment_solvers;
@@ -344,9 +344,8 @@ pub(crate) fn in_strip(centre: Point, radius: f64, (a, b): (Point, Point), sites
     }
     // beyond the perpendicular at `from`: the segment from there leaves
     // the centre behind, a positive `Entering` depth
-    let beyond = |from: Point, to: Point, along: f64| {
-        certified(Reach::Entering { from, to }, -along, centre, radius, &sites) > 0.0
-    };
+    let beyond =
+        |from: Point, to: Point, along: f64| certified(Reach::Entering { from, to }, -along, centre, radius, &sites) > 0.0;
     !(beyond(a, b, from_a) || beyond(b, a, from_b))
 }
 

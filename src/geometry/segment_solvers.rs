@@ -129,10 +129,7 @@ fn with_segments<T: Real>(sites: [Site; 3], lift: &impl Fn(f64) -> T) -> Option<
 /// none does, which the callers rule out by counting site types).
 fn rotate_until(sites: [Site; 3], wanted: impl Fn(&[Site; 3]) -> bool) -> [Site; 3] {
     let [a, b, c] = sites;
-    [[a, b, c], [b, c, a], [c, a, b]]
-        .into_iter()
-        .find(|r| wanted(r))
-        .unwrap_or(sites)
+    [[a, b, c], [b, c, a], [c, a, b]].into_iter().find(|r| wanted(r)).unwrap_or(sites)
 }
 
 /// The rotation that starts with the site of smallest coordinates (lexicographic
@@ -146,12 +143,7 @@ fn rotate_smallest_first(sites: [Site; 3]) -> [Site; 3] {
         }
     };
     let less = |s: &Site, t: &Site| {
-        key(s)
-            .iter()
-            .zip(key(t).iter())
-            .map(|(x, y)| x.total_cmp(y))
-            .find(|o| o.is_ne())
-            .is_some_and(|o| o.is_lt())
+        key(s).iter().zip(key(t).iter()).map(|(x, y)| x.total_cmp(y)).find(|o| o.is_ne()).is_some_and(|o| o.is_lt())
     };
     let [a, b, c] = sites;
     if less(&b, &a) && !less(&c, &b) {
@@ -260,8 +252,7 @@ fn normal_toward<T: Real>(a: Point, b: Point, p: Point, lift: &impl Fn(f64) -> T
 
 /// Whether the two segments lie on one line (exact).
 fn collinear_segments(s: (Point, Point), t: (Point, Point)) -> bool {
-    orientation(s.0, s.1, t.0) == Orientation::Collinear
-        && orientation(s.0, s.1, t.1) == Orientation::Collinear
+    orientation(s.0, s.1, t.0) == Orientation::Collinear && orientation(s.0, s.1, t.1) == Orientation::Collinear
 }
 
 // ---------------------------------------------------------------------------
@@ -634,8 +625,7 @@ fn sss<T: Real>(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point), lift
         Orientation::Collinear => 0.0,
     };
     let turns = [turn_of(0, 1), turn_of(1, 2), turn_of(2, 0)];
-    const PATTERNS: [[f64; 3]; 4] =
-        [[1.0, 1.0, 1.0], [-1.0, 1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 1.0, -1.0]];
+    const PATTERNS: [[f64; 3]; 4] = [[1.0, 1.0, 1.0], [-1.0, 1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 1.0, -1.0]];
     let mut best: Option<(f64, Vector<T>, T, f64)> = None;
     for sigma in PATTERNS {
         // Three directions are counter-clockwise in this order when at
@@ -1064,13 +1054,7 @@ mod tests {
     /// counter-clockwise at `angles`, with segments short enough not to meet
     /// each other (a tangent at angle `θ` meets the one at `φ` at distance
     /// `r |tan((θ - φ)/2)|` from its tangent point).
-    fn configuration(
-        centre: Point,
-        r: f64,
-        angles: [f64; 3],
-        slots: [Slot; 3],
-        lengths: [(f64, f64); 3],
-    ) -> [Site; 3] {
+    fn configuration(centre: Point, r: f64, angles: [f64; 3], slots: [Slot; 3], lengths: [(f64, f64); 3]) -> [Site; 3] {
         let on_circle = |th: f64| p(centre.x + r * th.cos(), centre.y + r * th.sin());
         let tangent = |th: f64| p(-th.sin(), th.cos());
         let reach = |th: f64| {

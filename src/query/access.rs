@@ -1,7 +1,7 @@
 //! Iterators and accessors of [`Diagram`].
 
-use crate::geometry::predicates::strictly_closer_given;
 use crate::diagram::{BuildStats, Diagram, EdgeId, HalfEdgeId, SiteId, ValidationError, VertexId, NONE};
+use crate::geometry::predicates::strictly_closer_given;
 use crate::geometry::{Point, Site};
 
 /// A finite Voronoi vertex. More fields may come (`#[non_exhaustive]`).
@@ -76,12 +76,10 @@ impl<'a> Cell<'a> {
     pub fn edges(&self) -> impl Iterator<Item = EdgeId> + 'a {
         let d = self.diagram;
         let edge_of = d.edge_of_half_edge();
-        d.store
-            .cell_boundary(self.site)
-            .filter_map(move |h| {
-                let e = edge_of[h.index()];
-                (e != NONE).then_some(EdgeId(e))
-            })
+        d.store.cell_boundary(self.site).filter_map(move |h| {
+            let e = edge_of[h.index()];
+            (e != NONE).then_some(EdgeId(e))
+        })
     }
 
     /// The neighbouring sites, counter-clockwise, one per edge.

@@ -32,7 +32,10 @@ pub(crate) fn audit(diagram: &Diagram, print: bool) -> Vec<String> {
             match audit_depth(&geometry, &other) {
                 Some((c, r, depth)) => {
                     if depth < -1e-30 * r.max(1.0) {
-                        bad.push(format!("vertex {:?} {:?}: site {s:?} inside by {depth:e} (exact centre {c:?}, r {r})", v.id, v.sites));
+                        bad.push(format!(
+                            "vertex {:?} {:?}: site {s:?} inside by {depth:e} (exact centre {c:?}, r {r})",
+                            v.id, v.sites
+                        ));
                     }
                     // a vertex on the wrong side of a nearly flat
                     // configuration has an empty exact circle but is
@@ -103,4 +106,3 @@ fn every_small_fixture_passes_the_audit() {
     assert!(checked > 20, "only {checked} fixtures checked");
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
-

@@ -135,9 +135,7 @@ impl Diagram {
                 _ => None,
             })
             .collect();
-        let cell: Vec<Location> = (0..self.sites.len())
-            .map(|s| obstacle_location[s].unwrap_or(Location::Boundary))
-            .collect();
+        let cell: Vec<Location> = (0..self.sites.len()).map(|s| obstacle_location[s].unwrap_or(Location::Boundary)).collect();
         let side_of = self.ring_segment_sides(&role);
         // The location an edge has seen from the cell on the left of its
         // half-edge `h`, where that cell tells.
@@ -295,7 +293,12 @@ impl Diagram {
         for k in 0..n {
             let (a, b) = (self.point_of(ring.corners[k]), self.point_of(ring.corners[(k + 1) % n]));
             let turn = orientation(a, b, p);
-            if turn == Orientation::Collinear && p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y) {
+            if turn == Orientation::Collinear
+                && p.x >= a.x.min(b.x)
+                && p.x <= a.x.max(b.x)
+                && p.y >= a.y.min(b.y)
+                && p.y <= a.y.max(b.y)
+            {
                 return Location::Boundary;
             }
             let upward = a.y <= p.y && p.y < b.y;

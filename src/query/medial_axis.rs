@@ -66,9 +66,9 @@ impl Diagram {
         let in_axis: Vec<bool> = (0..self.edges.len()).map(|e| self.in_medial_axis(EdgeId::from_index(e))).collect();
         let degree = |end: EdgeEnd| -> usize {
             match end {
-                EdgeEnd::Vertex(v) => self
-                    .vertex_half_edges(v)
-                    .map_or(0, |out| out.iter().filter(|h| in_axis[h.edge().index()]).count()),
+                EdgeEnd::Vertex(v) => {
+                    self.vertex_half_edges(v).map_or(0, |out| out.iter().filter(|h| in_axis[h.edge().index()]).count())
+                }
                 EdgeEnd::Infinite { .. } => 0,
             }
         };

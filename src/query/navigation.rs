@@ -143,11 +143,7 @@ impl Diagram {
     /// One step of `step` around the cell on the left of `h`, past the
     /// store's edges along the point at infinity (at most one between two
     /// rays; the bound only guards a corrupt store).
-    fn step_around_cell(
-        &self,
-        h: HalfEdge,
-        step: impl Fn(&Store, HalfEdgeId) -> HalfEdgeId,
-    ) -> Option<HalfEdge> {
+    fn step_around_cell(&self, h: HalfEdge, step: impl Fn(&Store, HalfEdgeId) -> HalfEdgeId) -> Option<HalfEdge> {
         let mut k = self.inner(h)?;
         for _ in 0..4 {
             k = step(&self.store, k);

@@ -55,9 +55,7 @@ pub fn grid_points(n: usize, seed: u64) -> Vec<[i32; 2]> {
 /// Collected straight from the generator, so no integer copy inflates the
 /// child's peak memory.
 pub fn float_points(n: usize, seed: u64) -> Vec<[f64; 2]> {
-    snapped(n, seed)
-        .map(|[x, y]| [f64::from(x), f64::from(y)])
-        .collect()
+    snapped(n, seed).map(|[x, y]| [f64::from(x), f64::from(y)]).collect()
 }
 
 fn snapped(n: usize, seed: u64) -> impl Iterator<Item = [i32; 2]> {
@@ -369,10 +367,7 @@ pub fn intersect(s: Seg, t: Seg) -> bool {
     if o1 * o2 < 0 && o3 * o4 < 0 {
         return true;
     }
-    (o1 == 0 && in_box(a, b, c))
-        || (o2 == 0 && in_box(a, b, d))
-        || (o3 == 0 && in_box(c, d, a))
-        || (o4 == 0 && in_box(c, d, b))
+    (o1 == 0 && in_box(a, b, c)) || (o2 == 0 && in_box(a, b, d)) || (o3 == 0 && in_box(c, d, a)) || (o4 == 0 && in_box(c, d, b))
 }
 
 /// The interiors cross at one point and no endpoint is on the other segment.
@@ -475,8 +470,7 @@ impl Grid {
     fn visit(&self, s: Seg, pad: f64, mut f: impl FnMut(usize) -> bool) -> bool {
         let [x1, y1, x2, y2] = s.map(f64::from);
         let (r0, r1) = (self.index(y1.min(y2) - pad), self.index(y1.max(y2) + pad));
-        let rows: Box<dyn Iterator<Item = usize>> =
-            if y2 >= y1 { Box::new(r0..=r1) } else { Box::new((r0..=r1).rev()) };
+        let rows: Box<dyn Iterator<Item = usize>> = if y2 >= y1 { Box::new(r0..=r1) } else { Box::new((r0..=r1).rev()) };
         for r in rows {
             // The part of the segment within `pad` of this row's band.
             let (lo, hi) = (r as f64 * self.side - pad, (r + 1) as f64 * self.side + pad);

@@ -38,7 +38,8 @@ fn orient_big(a: Point, b: Point, c: Point) -> i32 {
     };
     let all = [a[0], a[1], b[0], b[1], c[0], c[1]].map(parts);
     let least = all.iter().filter(|(m, _)| *m != 0).map(|&(_, e)| e).min().unwrap_or(0);
-    let [ax, ay, bx, by, cx, cy] = all.map(|(m, e)| if m == 0 { BigInt::from(0) } else { BigInt::from(m) << (e - least) as usize });
+    let [ax, ay, bx, by, cx, cy] =
+        all.map(|(m, e)| if m == 0 { BigInt::from(0) } else { BigInt::from(m) << (e - least) as usize });
     let det = (&bx - &ax) * (&cy - &ay) - (&by - &ay) * (&cx - &ax);
     match det.sign() {
         num_bigint::Sign::Plus => 1,

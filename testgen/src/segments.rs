@@ -324,8 +324,7 @@ pub fn letter_r(gaps: bool) -> Vec<Segment> {
         [60.0, 100.0],
         [0.0, 100.0],
     ];
-    let counter: [Point; 7] =
-        [[20.0, 58.0], [57.0, 58.0], [63.0, 61.0], [66.0, 69.0], [65.0, 76.0], [59.0, 82.0], [20.0, 82.0]];
+    let counter: [Point; 7] = [[20.0, 58.0], [57.0, 58.0], [63.0, 61.0], [66.0, 69.0], [65.0, 76.0], [59.0, 82.0], [20.0, 82.0]];
     let mut out = Vec::new();
     add_closed_polygon(&outer, &mut out);
     add_closed_polygon(&counter, &mut out);

@@ -58,7 +58,11 @@ pub fn check_nearest_sites(d: &Diagram, queries: &[Point], tol: f64) {
 
 /// Number of rays (edges with one end at infinity).
 pub fn ray_count(d: &Diagram) -> usize {
-    d.edges().filter(|e| matches!(e.ends, [EdgeEnd::Vertex(_), EdgeEnd::Infinite { .. }] | [EdgeEnd::Infinite { .. }, EdgeEnd::Vertex(_)])).count()
+    d.edges()
+        .filter(|e| {
+            matches!(e.ends, [EdgeEnd::Vertex(_), EdgeEnd::Infinite { .. }] | [EdgeEnd::Infinite { .. }, EdgeEnd::Vertex(_)])
+        })
+        .count()
 }
 
 /// The diagram of points and segments, validated.

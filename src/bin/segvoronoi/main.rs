@@ -63,8 +63,7 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     let build_s = start.elapsed().as_secs_f64();
 
     if let Some(path) = &options.svg {
-        std::fs::write(path, svg::render(&diagram))
-            .map_err(|e| failed(format!("cannot write {}: {e}", path.display())))?;
+        std::fs::write(path, svg::render(&diagram)).map_err(|e| failed(format!("cannot write {}: {e}", path.display())))?;
     }
     if options.topology {
         print(&diagram.topology(TopologyOptions::default().with_voronoi_pairs(options.voronoi_pairs)))?;
@@ -94,9 +93,7 @@ fn read_input(source: &Source) -> Result<(String, input::Input), Failure> {
         Source::Demo => return Ok(("demo input".into(), demo::input())),
         Source::Stdin => {
             let mut bytes = Vec::new();
-            std::io::stdin()
-                .read_to_end(&mut bytes)
-                .map_err(|e| bad_input(format!("cannot read standard input: {e}")))?;
+            std::io::stdin().read_to_end(&mut bytes).map_err(|e| bad_input(format!("cannot read standard input: {e}")))?;
             ("standard input".to_string(), bytes)
         }
         Source::File(path) => {
@@ -112,7 +109,5 @@ fn read_input(source: &Source) -> Result<(String, input::Input), Failure> {
 /// Writes to standard output; a closed pipe is an output error, not a panic.
 fn print(text: &str) -> Result<(), Failure> {
     let mut out = std::io::stdout().lock();
-    out.write_all(text.as_bytes())
-        .and_then(|()| out.flush())
-        .map_err(|e| failed(format!("cannot write to standard output: {e}")))
+    out.write_all(text.as_bytes()).and_then(|()| out.flush()).map_err(|e| failed(format!("cannot write to standard output: {e}")))
 }

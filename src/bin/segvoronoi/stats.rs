@@ -49,11 +49,7 @@ mod tests {
 
     fn value(report: &str, key: &str) -> String {
         let prefix = format!("{key}=");
-        report
-            .lines()
-            .find_map(|l| l.strip_prefix(&prefix))
-            .unwrap_or_else(|| panic!("no {key} in {report}"))
-            .to_string()
+        report.lines().find_map(|l| l.strip_prefix(&prefix)).unwrap_or_else(|| panic!("no {key} in {report}")).to_string()
     }
 
     #[test]
@@ -70,8 +66,7 @@ mod tests {
         assert_eq!(value(&r, "rays"), "4");
         assert_eq!(value(&r, "lines"), "0");
         assert_eq!(value(&r, "build_s").parse::<f64>().unwrap(), 0.25);
-        for key in ["input_segments", "segment_sites", "duplicate_segments", "zero_length_segments", "parabolic_edges"]
-        {
+        for key in ["input_segments", "segment_sites", "duplicate_segments", "zero_length_segments", "parabolic_edges"] {
             assert_eq!(value(&r, key), "0", "{key}");
         }
     }

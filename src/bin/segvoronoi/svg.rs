@@ -181,8 +181,7 @@ fn visible_piece(diagram: &Diagram, frame: &Frame, edge: &Edge) -> Option<Piece>
             frame.clip(p, Point::new(q.x - p.x, q.y - p.y), 0.0, 1.0).map(|(p, q)| Piece::Line(p, q))
         }
         // Both directions point away from the finite end, towards infinity.
-        [EdgeEnd::Vertex(a), EdgeEnd::Infinite { direction }]
-        | [EdgeEnd::Infinite { direction }, EdgeEnd::Vertex(a)] => {
+        [EdgeEnd::Vertex(a), EdgeEnd::Infinite { direction }] | [EdgeEnd::Infinite { direction }, EdgeEnd::Vertex(a)] => {
             frame.clip(vertex(a), direction, 0.0, f64::INFINITY).map(|(p, q)| Piece::Line(p, q))
         }
         [EdgeEnd::Infinite { .. }, EdgeEnd::Infinite { direction }] => frame
@@ -228,8 +227,7 @@ pub fn render(diagram: &Diagram) -> String {
     );
     let _ = writeln!(out, r#"<rect width="100%" height="100%" fill="white"/>"#);
 
-    let _ =
-        writeln!(out, r#"<g id="edges" stroke="{EDGE_COLOUR}" stroke-width="1.2" stroke-linecap="round" fill="none">"#);
+    let _ = writeln!(out, r#"<g id="edges" stroke="{EDGE_COLOUR}" stroke-width="1.2" stroke-linecap="round" fill="none">"#);
     for edge in diagram.edges() {
         match visible_piece(diagram, &frame, &edge) {
             Some(Piece::Line(p, q)) => {
@@ -238,9 +236,7 @@ pub fn render(diagram: &Diagram) -> String {
                 }
             }
             Some(Piece::Curve([p, c, q])) => {
-                if let (Some((x0, y0)), Some((cx, cy)), Some((x1, y1))) =
-                    (frame.pixel(p), frame.pixel(c), frame.pixel(q))
-                {
+                if let (Some((x0, y0)), Some((cx, cy)), Some((x1, y1))) = (frame.pixel(p), frame.pixel(c), frame.pixel(q)) {
                     let _ = writeln!(out, r#"<path d="M {x0:.2} {y0:.2} Q {cx:.2} {cy:.2} {x1:.2} {y1:.2}"/>"#);
                 }
             }
@@ -258,10 +254,7 @@ pub fn render(diagram: &Diagram) -> String {
     }
     let _ = writeln!(out, "</g>");
 
-    let _ = writeln!(
-        out,
-        r#"<g id="segments" stroke="{SITE_COLOUR}" stroke-width="{SEGMENT_WIDTH}" stroke-linecap="round">"#
-    );
+    let _ = writeln!(out, r#"<g id="segments" stroke="{SITE_COLOUR}" stroke-width="{SEGMENT_WIDTH}" stroke-linecap="round">"#);
     for &(a, b) in &segments {
         if let (Some((x1, y1)), Some((x2, y2))) = (frame.pixel(frame.unit(a)), frame.pixel(frame.unit(b))) {
             let _ = writeln!(out, r#"<line x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}"/>"#);
@@ -404,8 +397,7 @@ mod tests {
         let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0]]));
         check_numbers(&svg);
         let (w, h) = (SIZE_PX, SIZE_PX);
-        let on_border =
-            |x: f64, y: f64| x.abs() < 0.01 || y.abs() < 0.01 || (x - w).abs() < 0.01 || (y - h).abs() < 0.01;
+        let on_border = |x: f64, y: f64| x.abs() < 0.01 || y.abs() < 0.01 || (x - w).abs() < 0.01 || (y - h).abs() < 0.01;
         let ls = lines(&svg);
         assert_eq!(ls.len(), 8);
         let rays = ls.iter().filter(|l| on_border(l[0], l[1]) || on_border(l[2], l[3])).count();

@@ -21,7 +21,6 @@
 //! sweep position and special handling of the shared endpoints that are the
 //! normal case here; the grid needs only the orientation predicate.
 
-
 use super::classify::{point_conflict, segment_conflict};
 use super::normalise::Normalised;
 use super::Conflict;
@@ -61,13 +60,7 @@ impl Grid {
         // Below this (an extent under ~1e-290 after scaling) the margin
         // would sink into subnormal numbers; one cell is then the safe grid.
         let single = !(h >= f64::MIN_POSITIVE * 2f64.powi(60) && inv_h.is_finite());
-        Grid {
-            min,
-            h,
-            inv_h,
-            margin: h / 1024.0,
-            single,
-        }
+        Grid { min, h, inv_h, margin: h / 1024.0, single }
     }
 
     /// Cell index of an offset from the grid corner along one axis: a
@@ -176,9 +169,7 @@ pub(super) fn find_conflict(norm: &Normalised) -> Option<Conflict> {
         for &(_, p) in points {
             for &(_, s) in segments {
                 let pair = (p - m, s);
-                if best_point.map_or(true, |best| pair < best)
-                    && point_conflict(norm, pair.0 as usize, s as usize).is_some()
-                {
+                if best_point.map_or(true, |best| pair < best) && point_conflict(norm, pair.0 as usize, s as usize).is_some() {
                     best_point = Some(pair);
                 }
             }

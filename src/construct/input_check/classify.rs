@@ -13,14 +13,8 @@ pub(super) fn segment_conflict(norm: &Normalised, i: usize, j: usize) -> Option<
     Some(match segment_contact(s, t)? {
         SegmentContact::Cross => Conflict::SegmentsCross { first, second },
         SegmentContact::Overlap => Conflict::SegmentsOverlap { first, second },
-        SegmentContact::EndpointOfSecondOnFirst => Conflict::EndpointOnSegment {
-            segment: first,
-            endpoint_of: second,
-        },
-        SegmentContact::EndpointOfFirstOnSecond => Conflict::EndpointOnSegment {
-            segment: second,
-            endpoint_of: first,
-        },
+        SegmentContact::EndpointOfSecondOnFirst => Conflict::EndpointOnSegment { segment: first, endpoint_of: second },
+        SegmentContact::EndpointOfFirstOnSecond => Conflict::EndpointOnSegment { segment: second, endpoint_of: first },
     })
 }
 
@@ -36,4 +30,3 @@ pub(super) fn point_conflict(norm: &Normalised, p: usize, s: usize) -> Option<Co
         PointSource::Segment(endpoint_of) => Conflict::EndpointOnSegment { segment, endpoint_of },
     })
 }
-

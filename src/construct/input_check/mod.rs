@@ -128,7 +128,6 @@ impl Conflict {
     }
 }
 
-
 /// Normalises and checks points and segments (finite coordinates, as the
 /// builder guarantees), in the coordinates that `scale` makes (the
 /// build's one scale). See the module documentation for the rules.
@@ -139,11 +138,7 @@ pub(crate) fn check_segments(points: &[Point], segments: &[[Point; 2]], scale: S
         return Err(conflict);
     }
     Ok(CheckedInput {
-        points: norm
-            .points
-            .iter()
-            .map(|&(src, _)| (src, input_point(points, segments, src)))
-            .collect(),
+        points: norm.points.iter().map(|&(src, _)| (src, input_point(points, segments, src))).collect(),
         segments: norm
             .segments
             .iter()
@@ -162,4 +157,3 @@ fn input_point(points: &[Point], segments: &[[Point; 2]], src: PointSource) -> P
         PointSource::Segment(i) => segments[i][0].canonical_zero(),
     }
 }
-

@@ -61,10 +61,7 @@ pub(super) fn normalise(points: &[Point], segments: &[[Point; 2]], internal: imp
         return out;
     }
     let mut seen_points: HashSet<[u64; 2]> = out.segments.iter().flat_map(|(_, s)| s.map(point_key)).collect();
-    let isolated = points
-        .iter()
-        .enumerate()
-        .map(|(i, &p)| (PointSource::Point(i), internal(p)));
+    let isolated = points.iter().enumerate().map(|(i, &p)| (PointSource::Point(i), internal(p)));
     for (src, p) in isolated.chain(degenerate) {
         if seen_points.insert(point_key(p)) {
             out.points.push((src, p));

@@ -40,10 +40,7 @@ fn empty_and_points_only() {
     let out = check_segments(&[], &[]).unwrap();
     assert!(out.points.is_empty() && out.segments.is_empty());
     let out = check_segments(&[p(1., 2.), p(1., 2.), p(3., 4.)], &[]).unwrap();
-    assert_eq!(
-        out.points,
-        vec![(PointSource::Point(0), p(1., 2.)), (PointSource::Point(2), p(3., 4.))]
-    );
+    assert_eq!(out.points, vec![(PointSource::Point(0), p(1., 2.)), (PointSource::Point(2), p(3., 4.))]);
     assert_eq!(out.duplicate_points, 1);
 }
 
@@ -58,13 +55,7 @@ fn zero_length_segment_is_a_point_and_negative_zero_equals_zero() {
 
 #[test]
 fn duplicate_segments_merge_in_either_direction() {
-    let out = check(&[
-        s(0., 0., 1., 0.),
-        s(1., 0., 0., 0.),
-        s(0., 0., 1., 0.),
-        s(-0., 0., 1., -0.),
-    ])
-    .unwrap();
+    let out = check(&[s(0., 0., 1., 0.), s(1., 0., 0., 0.), s(0., 0., 1., 0.), s(-0., 0., 1., -0.)]).unwrap();
     assert_eq!(out.segments, vec![(0, s(0., 0., 1., 0.))]);
     assert_eq!(out.duplicate_segments, 3);
     assert_eq!(out.kept_of_input, vec![Some(0); 4]);
@@ -73,19 +64,11 @@ fn duplicate_segments_merge_in_either_direction() {
 #[test]
 fn points_on_endpoints_and_repeated_points_merge() {
     let points = [p(1., 0.), p(5., 5.), p(5., 5.)];
-    let segments = [
-        s(0., 0., 1., 0.),
-        s(5., 5., 5., 5.),
-        s(7., 7., 7., 7.),
-        s(0., 0., 0., 0.),
-    ];
+    let segments = [s(0., 0., 1., 0.), s(5., 5., 5., 5.), s(7., 7., 7., 7.), s(0., 0., 0., 0.)];
     let out = check_segments(&points, &segments).unwrap();
     // Endpoint (1,0) absorbs point 0; point 1 absorbs point 2 and the
     // zero-length segment 1; segment 3 repeats an endpoint.
-    assert_eq!(
-        out.points,
-        vec![(PointSource::Point(1), p(5., 5.)), (PointSource::Segment(2), p(7., 7.))]
-    );
+    assert_eq!(out.points, vec![(PointSource::Point(1), p(5., 5.)), (PointSource::Segment(2), p(7., 7.))]);
     assert_eq!((out.duplicate_points, out.degenerate_segments), (4, 3));
 }
 
@@ -108,20 +91,11 @@ fn crossing_segments() {
 
 #[test]
 fn horizontal_and_vertical() {
-    assert_eq!(
-        check(&[s(-1., 0., 1., 0.), s(0., -1., 0., 1.)]),
-        Err(Conflict::SegmentsCross { first: 0, second: 1 })
-    );
+    assert_eq!(check(&[s(-1., 0., 1., 0.), s(0., -1., 0., 1.)]), Err(Conflict::SegmentsCross { first: 0, second: 1 }));
     // Vertical stem ending on a horizontal bar, both orders.
-    let t = Conflict::EndpointOnSegment {
-        segment: 0,
-        endpoint_of: 1,
-    };
+    let t = Conflict::EndpointOnSegment { segment: 0, endpoint_of: 1 };
     assert_eq!(check(&[s(-1., 0., 1., 0.), s(0., 0., 0., 1.)]), Err(t));
-    let t = Conflict::EndpointOnSegment {
-        segment: 1,
-        endpoint_of: 0,
-    };
+    let t = Conflict::EndpointOnSegment { segment: 1, endpoint_of: 0 };
     assert_eq!(check(&[s(0., 5., 0., 1.), s(1., 1., -1., 1.)]), Err(t));
     // An L and a vertical pair touching end to end are fine.
     assert!(check(&[s(0., 0., 1., 0.), s(1., 0., 1., 1.), s(1., 1., 1., 3.)]).is_ok());
@@ -130,10 +104,7 @@ fn horizontal_and_vertical() {
 #[test]
 fn t_junction_names_both_segments() {
     let r = check(&[s(0., 0., 1., 3.), s(0., 0., 4., 0.), s(2., 0., 2., 3.)]);
-    let c = Conflict::EndpointOnSegment {
-        segment: 1,
-        endpoint_of: 2,
-    };
+    let c = Conflict::EndpointOnSegment { segment: 1, endpoint_of: 2 };
     assert_eq!(r, Err(c));
     assert_eq!(c.message(), "an endpoint of segment 2 lies inside segment 1");
 }
@@ -142,34 +113,13 @@ fn t_junction_names_both_segments() {
 fn collinear_cases() {
     let overlap = |a, b| Err(Conflict::SegmentsOverlap { first: a, second: b });
     assert_eq!(check(&[s(0., 0., 2., 2.), s(1., 1., 3., 3.)]), overlap(0, 1));
-    assert_eq!(
-        check(&[s(0., 0., 4., 0.), s(3., 0., 1., 0.)]),
-        overlap(0, 1),
-        "contained"
-    );
-    assert_eq!(
-        check(&[s(0., 0., 4., 0.), s(0., 0., 1., 0.)]),
-        overlap(0, 1),
-        "contained, common end"
-    );
-    assert_eq!(
-        check(&[s(0., 0., 0., 4.), s(0., 4., 0., 1.)]),
-        overlap(0, 1),
-        "vertical"
-    );
-    assert!(
-        check(&[s(0., 0., 1., 1.), s(1., 1., 2., 2.), s(2., 2., 5., 5.)]).is_ok(),
-        "consecutive"
-    );
+    assert_eq!(check(&[s(0., 0., 4., 0.), s(3., 0., 1., 0.)]), overlap(0, 1), "contained");
+    assert_eq!(check(&[s(0., 0., 4., 0.), s(0., 0., 1., 0.)]), overlap(0, 1), "contained, common end");
+    assert_eq!(check(&[s(0., 0., 0., 4.), s(0., 4., 0., 1.)]), overlap(0, 1), "vertical");
+    assert!(check(&[s(0., 0., 1., 1.), s(1., 1., 2., 2.), s(2., 2., 5., 5.)]).is_ok(), "consecutive");
     assert!(check(&[s(0., 0., 1., 1.), s(2., 2., 3., 3.)]).is_ok(), "disjoint");
-    assert!(
-        check(&[s(0., 0., 1., 0.), s(3., 0., 2., 0.), s(-1., 0., -3., 0.)]).is_ok(),
-        "disjoint"
-    );
-    assert_eq!(
-        Conflict::SegmentsOverlap { first: 4, second: 9 }.message(),
-        "segments 4 and 9 are collinear and overlap"
-    );
+    assert!(check(&[s(0., 0., 1., 0.), s(3., 0., 2., 0.), s(-1., 0., -3., 0.)]).is_ok(), "disjoint");
+    assert_eq!(Conflict::SegmentsOverlap { first: 4, second: 9 }.message(), "segments 4 and 9 are collinear and overlap");
 }
 
 #[test]
@@ -181,30 +131,16 @@ fn point_inside_segment() {
     assert!(check_segments(&[p(3., 3.), p(2., 2.)], &[s(0., 0., 2., 2.)]).is_ok());
     // A zero-length segment inside a segment is an endpoint on it.
     let r = check(&[s(0., 0., 2., 2.), s(1., 1., 1., 1.)]);
-    assert_eq!(
-        r,
-        Err(Conflict::EndpointOnSegment {
-            segment: 0,
-            endpoint_of: 1
-        })
-    );
+    assert_eq!(r, Err(Conflict::EndpointOnSegment { segment: 0, endpoint_of: 1 }));
 }
 
 #[test]
 fn first_conflict_in_input_order_is_reported() {
     // Pairs (1,2) and (0,3) both cross; (0,3) comes first.
-    let segments = [
-        s(0., 10., 2., 12.),
-        s(0., 0., 2., 2.),
-        s(0., 2., 2., 0.),
-        s(0., 12., 2., 10.),
-    ];
+    let segments = [s(0., 10., 2., 12.), s(0., 0., 2., 2.), s(0., 2., 2., 0.), s(0., 12., 2., 10.)];
     assert_eq!(check(&segments), Err(Conflict::SegmentsCross { first: 0, second: 3 }));
     // A segment conflict wins over an earlier point conflict.
-    let r = check_segments(
-        &[p(1., 11.)],
-        &[s(0., 11., 2., 11.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)],
-    );
+    let r = check_segments(&[p(1., 11.)], &[s(0., 11., 2., 11.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)]);
     assert_eq!(r, Err(Conflict::SegmentsCross { first: 1, second: 2 }));
 }
 
@@ -257,26 +193,11 @@ fn closed_polygon_and_polygon_with_hole() {
 fn one_ulp_decides() {
     let bar = s(0., 0., 2., 0.);
     assert!(check(&[bar, s(1., up(0.), 1., 5.)]).is_ok(), "one ulp above");
-    assert_eq!(
-        check(&[bar, s(1., 0., 1., 5.)]),
-        Err(Conflict::EndpointOnSegment {
-            segment: 0,
-            endpoint_of: 1
-        })
-    );
-    assert_eq!(
-        check(&[bar, s(1., -f64::from_bits(1), 1., 5.)]),
-        Err(Conflict::SegmentsCross { first: 0, second: 1 })
-    );
+    assert_eq!(check(&[bar, s(1., 0., 1., 5.)]), Err(Conflict::EndpointOnSegment { segment: 0, endpoint_of: 1 }));
+    assert_eq!(check(&[bar, s(1., -f64::from_bits(1), 1., 5.)]), Err(Conflict::SegmentsCross { first: 0, second: 1 }));
     // Near the end of the bar: one ulp beyond it is fine.
     assert!(check(&[bar, s(up(2.), 0., 3., 5.)]).is_ok());
-    assert_eq!(
-        check(&[bar, s(down(2.), 0., 3., 5.)]),
-        Err(Conflict::EndpointOnSegment {
-            segment: 0,
-            endpoint_of: 1
-        })
-    );
+    assert_eq!(check(&[bar, s(down(2.), 0., 3., 5.)]), Err(Conflict::EndpointOnSegment { segment: 0, endpoint_of: 1 }));
     // A diagonal: a point one ulp off the line is not on it.
     let diag = s(0.1, 0.1, 0.7, 0.7);
     assert!(check_segments(&[p(0.3, up(0.3))], &[diag]).is_ok());
@@ -290,11 +211,7 @@ fn one_ulp_decides() {
 fn huge_and_tiny_coordinates() {
     for &f in &[1e300, 1e-300, 1.0, f64::from_bits(8) /* 8 × 2^-1074 */] {
         let cross = [s(-f, -f, f, f), s(-f, f, f, -f)];
-        assert_eq!(
-            check(&cross),
-            Err(Conflict::SegmentsCross { first: 0, second: 1 }),
-            "{f}"
-        );
+        assert_eq!(check(&cross), Err(Conflict::SegmentsCross { first: 0, second: 1 }), "{f}");
         let apart = [s(-f, -f, f, f), s(-f, f, -f / 2.0, 0.5 * f)];
         assert!(check(&apart).is_ok(), "{f}");
     }
@@ -307,10 +224,7 @@ fn huge_and_tiny_coordinates() {
     // without the scaling).
     let bar = s(-1e300, 1e300, 1e300, -1e300);
     assert!(check(&[bar, s(3e299, -3e299, 1e300, 1e300)]).is_err());
-    assert!(
-        check(&[bar, s(3e299, down(-3e299), 1e300, 1e300)]).is_ok(),
-        "one ulp nearer zero"
-    );
+    assert!(check(&[bar, s(3e299, down(-3e299), 1e300, 1e300)]).is_ok(), "one ulp nearer zero");
     // Beyond the documented range: a difference of 1e-324 next to 1e300
     // vanishes in the scaling (as in the point builder), so this touches.
     assert!(check(&[bar, s(f64::from_bits(1), 0., 1e300, 1e300)]).is_err());
@@ -337,14 +251,8 @@ fn tiny_extent_next_to_a_far_point_uses_one_cell() {
 /// All pairs, in the order `find_conflict` promises.
 fn brute_force(norm: &Normalised) -> Option<Conflict> {
     let m = norm.segments.len();
-    let seg = (0..m)
-        .flat_map(|i| (i + 1..m).map(move |j| (i, j)))
-        .find_map(|(i, j)| segment_conflict(norm, i, j));
-    seg.or_else(|| {
-        (0..norm.points.len())
-            .flat_map(|q| (0..m).map(move |s| (q, s)))
-            .find_map(|(q, s)| point_conflict(norm, q, s))
-    })
+    let seg = (0..m).flat_map(|i| (i + 1..m).map(move |j| (i, j))).find_map(|(i, j)| segment_conflict(norm, i, j));
+    seg.or_else(|| (0..norm.points.len()).flat_map(|q| (0..m).map(move |s| (q, s))).find_map(|(q, s)| point_conflict(norm, q, s)))
 }
 
 /// Whether integer input breaks the rules, decided independently of
@@ -409,40 +317,29 @@ type IntInput = (Vec<(i64, i64)>, Vec<[(i64, i64); 2]>);
 /// collinear neighbours are common.
 fn small_grid_input() -> impl Strategy<Value = IntInput> {
     let v = (0i64..6, 0i64..6);
-    (
-        prop::collection::vec(v.clone(), 0..5),
-        prop::collection::vec([v.clone(), v], 0..12),
-    )
+    (prop::collection::vec(v.clone(), 0..5), prop::collection::vec([v.clone(), v], 0..12))
 }
 
 /// Short segments spread over a larger grid: many grid cells in use.
 fn spread_input() -> impl Strategy<Value = IntInput> {
     let seg = ((0i64..40, 0i64..40), (-4i64..=4, -4i64..=4)).prop_map(|(a, d)| [a, (a.0 + d.0, a.1 + d.1)]);
-    (
-        prop::collection::vec((0i64..40, 0i64..40), 0..20),
-        prop::collection::vec(seg, 0..50),
-    )
+    (prop::collection::vec((0i64..40, 0i64..40), 0..20), prop::collection::vec(seg, 0..50))
 }
 
 /// A random walk on a small grid as a polyline: every inner vertex is a
 /// shared endpoint, and the walk often touches or retraces itself.
 fn polyline_input() -> impl Strategy<Value = IntInput> {
     let steps = prop::collection::vec((-2i64..=2, -2i64..=2), 1..10);
-    (
-        (0i64..8, 0i64..8),
-        steps,
-        prop::collection::vec((0i64..8, 0i64..8), 0..3),
-    )
-        .prop_map(|(start, steps, points)| {
-            let mut at = start;
-            let mut segments = Vec::new();
-            for (dx, dy) in steps {
-                let next = (at.0 + dx, at.1 + dy);
-                segments.push([at, next]);
-                at = next;
-            }
-            (points, segments)
-        })
+    ((0i64..8, 0i64..8), steps, prop::collection::vec((0i64..8, 0i64..8), 0..3)).prop_map(|(start, steps, points)| {
+        let mut at = start;
+        let mut segments = Vec::new();
+        for (dx, dy) in steps {
+            let next = (at.0 + dx, at.1 + dy);
+            segments.push([at, next]);
+            at = next;
+        }
+        (points, segments)
+    })
 }
 
 fn run(input: &IntInput, f: (f64, f64)) -> Result<(), TestCaseError> {
@@ -579,8 +476,7 @@ fn scale_100k_segments() {
     // shared by two segments.
     let side = 317;
     let corner = |i: usize, j: usize| segments[i * side + j][0];
-    let snake_order =
-        (0..side).flat_map(|i| (0..side).map(move |j| (i, if i % 2 == 0 { j } else { side - 1 - j })));
+    let snake_order = (0..side).flat_map(|i| (0..side).map(move |j| (i, if i % 2 == 0 { j } else { side - 1 - j })));
     let vertices: Vec<Point> = snake_order.map(|(i, j)| corner(i, j)).collect();
     let snake: Vec<[Point; 2]> = vertices.windows(2).map(|w| [w[0], w[1]]).collect();
     let start = std::time::Instant::now();

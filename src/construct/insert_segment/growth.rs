@@ -109,8 +109,7 @@ impl Construction {
             let chosen = candidates.into_iter().map(|(_, h)| h).find(|&h| {
                 self.twice_cut[slot] = h;
                 let sides = [self.store.left(h), self.store.right(h)];
-                !(sides.contains(&a) || sides.contains(&b))
-                    || (self.cell_visits(a, w) == 1 && self.cell_visits(b, w) == 1)
+                !(sides.contains(&a) || sides.contains(&b)) || (self.cell_visits(a, w) == 1 && self.cell_visits(b, w) == 1)
             });
             if chosen.is_none() {
                 self.twice_cut.truncate(saved);

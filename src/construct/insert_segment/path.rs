@@ -70,14 +70,16 @@ impl Construction {
         // path. Otherwise first only through vertices the segment conflicts
         // with (where the true path runs); if the numbers leave no such path,
         // through any.
-        let (found, path) = match self.shared_boundary(a, b).map(|path| (true, path)).unwrap_or_else(|| self.walk_to(a, b, true)) {
+        let (found, path) = match self.shared_boundary(a, b).map(|path| (true, path)).unwrap_or_else(|| self.walk_to(a, b, true))
+        {
             (true, path) => (true, path),
             _ => match self.walk_to(a, b, false) {
                 (true, path) => (true, path),
                 (false, start_only) => self.shortest_path(a, b).map_or((false, start_only), |path| (true, path)),
             },
         };
-        let Path { vertices, entered_by } = if found { path } else { Path { vertices: path.vertices[..1].to_vec(), entered_by: Vec::new() } };
+        let Path { vertices, entered_by } =
+            if found { path } else { Path { vertices: path.vertices[..1].to_vec(), entered_by: Vec::new() } };
         let epoch = self.epoch;
         self.tree.clear();
         for &v in &vertices {
@@ -296,15 +298,7 @@ impl Construction {
 
     /// The next half-edge to follow from `v`, by the left/right rule, with
     /// the other choice kept for backtracking; `None` when neither is open.
-    fn walk_step(
-        &self,
-        walk: &mut PathWalk,
-        v: VertexId,
-        a: SiteId,
-        b: SiteId,
-        pa: Point,
-        pb: Point,
-    ) -> Option<HalfEdgeId> {
+    fn walk_step(&self, walk: &mut PathWalk, v: VertexId, a: SiteId, b: SiteId, pa: Point, pb: Point) -> Option<HalfEdgeId> {
         let pos = walk.vertices.len() - 1;
         let (preferred, other, certainty) = match walk.entered_by.last() {
             Some(&h) => {

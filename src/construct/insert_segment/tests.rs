@@ -38,7 +38,11 @@ pub(super) fn finite_vertices(d: &Construction) -> impl Iterator<Item = (usize, 
 /// Whether the vertex is equidistant from its three sites and no site
 /// is closer (brute force), within `tol` (or 1e-12 of its clearance,
 /// for far vertices: their distances are rounded at that size).
-pub(super) fn check_vertex(d: &Construction, (vi, sites, pos, r): (usize, [SiteId; 3], Point, f64), tol: f64) -> Result<(), String> {
+pub(super) fn check_vertex(
+    d: &Construction,
+    (vi, sites, pos, r): (usize, [SiteId; 3], Point, f64),
+    tol: f64,
+) -> Result<(), String> {
     let tol = tol.max(1e-12 * r);
     for s in (1..d.sites.len()).map(SiteId::from_index) {
         let dist = d.site_geometry(s).distance(pos);
@@ -208,7 +212,10 @@ mod replay {
         let segment = d.site_geometry(e);
         for v @ (vi, sites, pos, r) in super::finite_vertices(d) {
             if segment.distance(pos) < r - tol.max(1e-12 * r) {
-                return Err(format!("vertex {vi} {sites:?} at {pos:?} kept with the new segment inside its circle (at {}, clearance {r})", segment.distance(pos)));
+                return Err(format!(
+                    "vertex {vi} {sites:?} at {pos:?} kept with the new segment inside its circle (at {}, clearance {r})",
+                    segment.distance(pos)
+                ));
             }
             if sites.contains(&e) {
                 super::check_vertex(d, v, tol).map_err(|err| format!("new {err}"))?;
