@@ -7,22 +7,8 @@
 
 mod common;
 
+use common::star_ring;
 use segvoronoi::{Builder, Diagram, ErrorKind, Location, Point};
-
-/// A plain even-odd test in floating point (the reference on generic
-/// inputs, where no vertex is near the boundary).
-fn even_odd(rings: &[Vec<[f64; 2]>], p: Point) -> bool {
-    let mut inside = false;
-    for ring in rings {
-        for k in 0..ring.len() {
-            let ([ax, ay], [bx, by]) = (ring[k], ring[(k + 1) % ring.len()]);
-            if (ay > p.y) != (by > p.y) && p.x < ax + (p.y - ay) * (bx - ax) / (by - ay) {
-                inside = !inside;
-            }
-        }
-    }
-    inside
-}
 
 /// Distance from `p` to the nearest ring edge.
 fn boundary_distance(rings: &[Vec<[f64; 2]>], p: Point) -> f64 {
@@ -58,7 +44,7 @@ fn check_against_positions(rings: &[Vec<[f64; 2]>], d: &Diagram) -> (usize, usiz
             continue;
         }
         if away > 1e-9 {
-            let expected = if even_odd(rings, v.position) { Location::Inside } else { Location::Outside };
+            let expected = if common::even_odd(rings, v.position) { Location::Inside } else { Location::Outside };
             assert_eq!(location, expected, "vertex {v:?}");
         }
         match location {
@@ -82,17 +68,6 @@ fn square(x0: f64, y0: f64, side: f64) -> Vec<[f64; 2]> {
     vec![[x0, y0], [x0 + side, y0], [x0 + side, y0 + side], [x0, y0 + side]]
 }
 
-/// A star-shaped ring around `(cx, cy)` with radii in `[r0, r1]`.
-fn star(n: usize, cx: f64, cy: f64, r0: f64, r1: f64, rng: &mut common::Rng) -> Vec<[f64; 2]> {
-    (0..n)
-        .map(|k| {
-            let t = std::f64::consts::TAU * (k as f64 + 0.3 * rng.unit()) / n as f64;
-            let r = r0 + (r1 - r0) * rng.unit();
-            [cx + r * t.cos(), cy + r * t.sin()]
-        })
-        .collect()
-}
-
 #[test]
 fn a_square_with_a_hole_and_an_island() {
     let rings = vec![square(0.0, 0.0, 10.0), square(2.0, 2.0, 6.0), square(4.0, 4.0, 2.0)];
@@ -109,8 +84,8 @@ fn a_square_with_a_hole_and_an_island() {
 #[test]
 fn orientation_and_order_of_rings_do_not_matter() {
     let mut rng = common::Rng(11);
-    let outer = star(40, 0.0, 0.0, 8.0, 10.0, &mut rng);
-    let hole = star(12, 1.0, -1.0, 2.0, 3.0, &mut rng);
+    let outer = star_ring(40, 0.0, 0.0, 8.0, 10.0, &mut rng);
+    let hole = star_ring(12, 1.0, -1.0, 2.0, 3.0, &mut rng);
     let reference = build(&[outer.clone(), hole.clone()], &[]);
     check_against_positions(&[outer.clone(), hole.clone()], &reference);
     let reversed = |r: &Vec<[f64; 2]>| r.iter().rev().copied().collect::<Vec<_>>();
@@ -129,14 +104,14 @@ fn random_star_polygons_with_holes_and_obstacles() {
     let mut rng = common::Rng(5);
     for _ in 0..30 {
         let n = 8 + (rng.next_u64() % 60) as usize;
-        let rings = vec![star(n, 0.0, 0.0, 6.0, 10.0, &mut rng), star(7, 0.0, 0.0, 1.0, 2.5, &mut rng)];
+        let rings = vec![star_ring(n, 0.0, 0.0, 6.0, 10.0, &mut rng), star_ring(7, 0.0, 0.0, 1.0, 2.5, &mut rng)];
         // obstacles: points between the hole and the outer ring, and far out
         let points = [[3.5, 0.2], [-0.3, 4.0], [30.0, 30.0]];
         let d = build(&rings, &points);
         check_against_positions(&rings, &d);
         for (k, p) in points.iter().enumerate() {
             let site = d.site_of_input(k).unwrap();
-            let expected = if even_odd(&rings, Point::new(p[0], p[1])) { Location::Inside } else { Location::Outside };
+            let expected = if common::even_odd(&rings, Point::new(p[0], p[1])) { Location::Inside } else { Location::Outside };
             assert_eq!(d.cell_location(site), Some(expected));
         }
     }

@@ -7,7 +7,8 @@
 
 mod common;
 
-use segvoronoi::{Builder, Diagram, EdgeEnd, Location, MedialAxis, Point, Site};
+use common::star_ring;
+use segvoronoi::{Builder, Diagram, EdgeEnd, Location, MedialAxis, Point};
 use std::collections::HashMap;
 
 fn build(rings: &[Vec<[f64; 2]>]) -> Diagram {
@@ -25,41 +26,6 @@ fn regular(n: usize, r: f64, phase: f64) -> Vec<[f64; 2]> {
             [r * t.cos(), r * t.sin()]
         })
         .collect()
-}
-
-fn star(n: usize, cx: f64, cy: f64, r0: f64, r1: f64, rng: &mut common::Rng) -> Vec<[f64; 2]> {
-    (0..n)
-        .map(|k| {
-            let t = std::f64::consts::TAU * (k as f64 + 0.3 * rng.unit()) / n as f64;
-            let r = r0 + (r1 - r0) * rng.unit();
-            [cx + r * t.cos(), cy + r * t.sin()]
-        })
-        .collect()
-}
-
-fn ring_segments(rings: &[Vec<[f64; 2]>]) -> Vec<Site> {
-    rings
-        .iter()
-        .flat_map(|r| {
-            (0..r.len()).map(move |k| {
-                let (a, b) = (r[k], r[(k + 1) % r.len()]);
-                Site::Segment { a: Point::new(a[0], a[1]), b: Point::new(b[0], b[1]) }
-            })
-        })
-        .collect()
-}
-
-fn even_odd(rings: &[Vec<[f64; 2]>], p: Point) -> bool {
-    let mut inside = false;
-    for ring in rings {
-        for k in 0..ring.len() {
-            let ([ax, ay], [bx, by]) = (ring[k], ring[(k + 1) % ring.len()]);
-            if (ay > p.y) != (by > p.y) && p.x < ax + (p.y - ay) * (bx - ax) / (by - ay) {
-                inside = !inside;
-            }
-        }
-    }
-    inside
 }
 
 /// Each edge in exactly one chain; consecutive pieces meet; returns
@@ -175,10 +141,12 @@ fn holes_give_independent_cycles() {
 fn sampled_points_are_inside_at_their_clearance() {
     let mut rng = common::Rng(17);
     for _ in 0..20 {
-        let rings =
-            vec![star(10 + (rng.next_u64() % 50) as usize, 0.0, 0.0, 6.0, 10.0, &mut rng), star(6, 0.5, 0.0, 1.0, 2.5, &mut rng)];
+        let rings = vec![
+            star_ring(10 + (rng.next_u64() % 50) as usize, 0.0, 0.0, 6.0, 10.0, &mut rng),
+            star_ring(6, 0.5, 0.0, 1.0, 2.5, &mut rng),
+        ];
         let d = build(&rings);
-        let segments = ring_segments(&rings);
+        let segments = common::ring_segments(&rings);
         let axis = d.medial_axis();
         let (e, v, c) = graph_shape(&d, &axis);
         assert_eq!((c, e + c - v), (1, 1), "connected with one cycle around the hole");
@@ -192,7 +160,7 @@ fn sampled_points_are_inside_at_their_clearance() {
                 let nearest = segments.iter().map(|s| s.distance(q)).fold(f64::INFINITY, f64::min);
                 assert!((nearest - r).abs() <= scale.max(1e-9 * r), "clearance {r} but nearest {nearest} at {q:?}");
                 if r > 1e-6 {
-                    assert!(even_odd(&rings, q), "{q:?} outside");
+                    assert!(common::even_odd(&rings, q), "{q:?} outside");
                 }
                 samples += 1;
             }
@@ -210,7 +178,7 @@ fn sampled_points_are_inside_at_their_clearance() {
         for i in 0..60 {
             for j in 0..60 {
                 let q = Point::new(-10.0 + 20.0 * i as f64 / 59.0, -10.0 + 20.0 * j as f64 / 59.0);
-                if even_odd(&rings, q) {
+                if common::even_odd(&rings, q) {
                     let clearance = segments.iter().map(|s| s.distance(q)).fold(f64::INFINITY, f64::min);
                     assert!(clearance <= r + 1e-9, "{q:?} has clearance {clearance} > {r}");
                 }

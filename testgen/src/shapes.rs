@@ -66,3 +66,16 @@ pub fn unit_segment_lattice(n: usize) -> Vec<Segment> {
     }
     segs
 }
+
+/// A star-shaped ring of `n` corners around `(cx, cy)`: corner `k` at angle
+/// `2π (k + 0.3 u) / n` and radius in `[r0, r1]` (`u` and the radius drawn
+/// from `rng`), so corners keep their angular order and the ring is simple.
+pub fn star_ring(n: usize, cx: f64, cy: f64, r0: f64, r1: f64, rng: &mut Rng) -> Vec<Point> {
+    (0..n)
+        .map(|k| {
+            let t = std::f64::consts::TAU * (k as f64 + 0.3 * rng.unit()) / n as f64;
+            let r = r0 + (r1 - r0) * rng.unit();
+            [cx + r * t.cos(), cy + r * t.sin()]
+        })
+        .collect()
+}

@@ -7,7 +7,7 @@ use segvoronoi::{Builder, Diagram, EdgeEnd, Point};
 // The generated inputs live in testgen/ with every other generator of the
 // tests, the bench and the CGAL cross-check.
 #[allow(unused_imports)] // each test uses some
-pub use segvoronoi_testgen::shapes::{polygon, segment_grid, snake, uniform, unit_segment_lattice};
+pub use segvoronoi_testgen::shapes::{polygon, segment_grid, snake, star_ring, uniform, unit_segment_lattice};
 #[allow(unused_imports)]
 pub use segvoronoi_testgen::Rng;
 
@@ -114,4 +114,32 @@ pub fn check_empty_circles_relative(d: &Diagram, tol: f64) {
             );
         }
     }
+}
+
+/// A plain even-odd test of `p` against closed rings, in floating point:
+/// the reference for inputs where no tested point is near a ring.
+pub fn even_odd(rings: &[Vec<[f64; 2]>], p: Point) -> bool {
+    let mut inside = false;
+    for ring in rings {
+        for k in 0..ring.len() {
+            let ([ax, ay], [bx, by]) = (ring[k], ring[(k + 1) % ring.len()]);
+            if (ay > p.y) != (by > p.y) && p.x < ax + (p.y - ay) * (bx - ax) / (by - ay) {
+                inside = !inside;
+            }
+        }
+    }
+    inside
+}
+
+/// The segments of closed rings, as sites.
+pub fn ring_segments(rings: &[Vec<[f64; 2]>]) -> Vec<segvoronoi::Site> {
+    rings
+        .iter()
+        .flat_map(|r| {
+            (0..r.len()).map(move |k| {
+                let (a, b) = (r[k], r[(k + 1) % r.len()]);
+                segvoronoi::Site::Segment { a: Point::new(a[0], a[1]), b: Point::new(b[0], b[1]) }
+            })
+        })
+        .collect()
 }
