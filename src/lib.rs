@@ -48,6 +48,8 @@ mod error;
 pub mod ffi;
 pub mod geometry;
 mod query;
+#[doc(hidden)]
+pub mod splitmix;
 
 pub use construct::{Builder, MAX_POINTS};
 pub use diagram::{BuildStats, Diagram, EdgeId, SiteId, ValidationError, VertexId};

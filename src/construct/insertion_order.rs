@@ -12,6 +12,7 @@
 //! merged; the order is the same as on one thread.
 
 use crate::geometry::Point;
+use crate::splitmix::SplitMix64;
 
 /// Bits of the Hilbert grid per axis: 65536 cells a side separate far more
 /// points than one diagram holds; more bits only cost time.
@@ -55,8 +56,8 @@ fn insertion_order_threaded(points: &[Point], parallel_from: usize) -> Vec<u32> 
         // Level k with probability 2^-(k+1): half the points in the last
         // round. Drawn from the index alone, so any split of the work gives
         // the same order.
-        let level =
-            (SplitMix(seed ^ (i as u64).wrapping_mul(0xD1B5_4A32_D192_ED03)).next() | (1 << MAX_LEVEL)).trailing_zeros() as u64;
+        let level = (SplitMix64(seed ^ (i as u64).wrapping_mul(0xD1B5_4A32_D192_ED03)).next_u64() | (1 << MAX_LEVEL))
+            .trailing_zeros() as u64;
         let round = MAX_LEVEL - level;
         let mut h = hilbert_index(grid(p.x, lo.x), grid(p.y, lo.y));
         if round % 2 == 1 {
@@ -120,20 +121,6 @@ fn hilbert_index(mut x: u32, mut y: u32) -> u64 {
         s >>= 1;
     }
     d
-}
-
-/// A small deterministic generator (splitmix64); the order need not be
-/// unpredictable, only well spread.
-pub(crate) struct SplitMix(pub u64);
-
-impl SplitMix {
-    pub fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
 }
 
 #[cfg(test)]

@@ -41,13 +41,10 @@ mod imp {
 
     fn uniform() -> f64 {
         STATE.with(|s| {
-            // splitmix64
-            let mut z = s.get().wrapping_add(0x9E37_79B9_7F4A_7C15);
-            s.set(z);
-            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            z ^= z >> 31;
-            (z >> 11) as f64 / (1u64 << 53) as f64
+            let mut rng = crate::splitmix::SplitMix64(s.get());
+            let u = rng.unit();
+            s.set(rng.0);
+            u
         })
     }
 

@@ -24,6 +24,7 @@ mod segments;
 pub mod shapes;
 mod split;
 
+use segvoronoi::splitmix::SplitMix64;
 use std::io::{self, Write};
 
 /// A point `[x, y]`.
@@ -34,23 +35,28 @@ pub type Segment = [Point; 2];
 /// 2π as the generators write it (the C++ harness's literal).
 pub(crate) const TWO_PI: f64 = 6.283185307179586;
 
-/// SplitMix64 (Steele, Lea, Flood 2014): tiny, and the same sequence on
-/// every platform (the standard libraries' distributions are not).
+/// SplitMix64 (Steele, Lea, Flood 2014), the library's own
+/// (`segvoronoi::splitmix`): tiny, and the same sequence on every platform
+/// (the standard libraries' distributions are not).
 #[derive(Clone, Debug)]
 pub struct Rng(pub u64);
 
 impl Rng {
     pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
+        self.step(SplitMix64::next_u64)
     }
 
     /// Uniform in [0, 1), 53 random bits (the most an `f64` holds).
     pub fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+        self.step(SplitMix64::unit)
+    }
+
+    /// One draw of the library's generator from this state.
+    fn step<T>(&mut self, draw: impl FnOnce(&mut SplitMix64) -> T) -> T {
+        let mut g = SplitMix64(self.0);
+        let value = draw(&mut g);
+        self.0 = g.0;
+        value
     }
 
     /// Uniform in `0..bound` (by remainder: the tiny bias does not matter here).

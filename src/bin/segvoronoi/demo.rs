@@ -7,23 +7,13 @@
 
 use crate::input::Input;
 
-/// A small deterministic generator (SplitMix64): the demo must not depend on
-/// a random-number crate or on the platform.
-struct SplitMix64(u64);
+// The demo must not depend on a random-number crate or on the platform:
+// the library's SplitMix64.
+use segvoronoi::splitmix::SplitMix64;
 
-impl SplitMix64 {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in `[-1, 1)`.
-    fn symmetric(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
+/// Uniform in `[-1, 1)`.
+fn symmetric(rng: &mut SplitMix64) -> f64 {
+    (rng.next_u64() >> 11) as f64 / (1u64 << 52) as f64 - 1.0
 }
 
 /// About sixty points and a dozen segments (see the module doc).
@@ -42,9 +32,9 @@ pub fn input() -> Input {
     // collinear row: each reaches at most 0.65 from its cell's centre.
     for i in 0..3 {
         for j in 0..2 {
-            let centre = [3.1 + 1.5 * i as f64 + 0.1 * rng.symmetric(), -2.9 - 1.5 * j as f64 + 0.1 * rng.symmetric()];
-            let angle = std::f64::consts::PI * rng.symmetric();
-            let half = 0.45 + 0.1 * rng.symmetric();
+            let centre = [3.1 + 1.5 * i as f64 + 0.1 * symmetric(&mut rng), -2.9 - 1.5 * j as f64 + 0.1 * symmetric(&mut rng)];
+            let angle = std::f64::consts::PI * symmetric(&mut rng);
+            let half = 0.45 + 0.1 * symmetric(&mut rng);
             let (dx, dy) = (half * angle.cos(), half * angle.sin());
             segments.push([centre[0] - dx, centre[1] - dy, centre[0] + dx, centre[1] + dy]);
         }
@@ -59,12 +49,12 @@ fn points() -> Vec<[f64; 2]> {
     let mut points = Vec::with_capacity(64);
     let ring = 36;
     for k in 0..ring {
-        let angle = std::f64::consts::TAU * (k as f64 + 0.3 * rng.symmetric()) / ring as f64;
-        let radius = 10.0 + 0.7 * rng.symmetric();
+        let angle = std::f64::consts::TAU * (k as f64 + 0.3 * symmetric(&mut rng)) / ring as f64;
+        let radius = 10.0 + 0.7 * symmetric(&mut rng);
         points.push([radius * angle.cos(), radius * angle.sin()]);
     }
     for _ in 0..9 {
-        points.push([3.5 + 1.3 * rng.symmetric(), 3.0 + 1.3 * rng.symmetric()]);
+        points.push([3.5 + 1.3 * symmetric(&mut rng), 3.0 + 1.3 * symmetric(&mut rng)]);
     }
     // Exactly collinear: integer steps along a line of slope 1/2.
     for k in 0..7 {

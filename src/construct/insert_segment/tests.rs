@@ -79,8 +79,8 @@ fn one_segment_among_points() {
 /// Points on a jittered grid; in some cells two points joined by a short
 /// segment that stays inside its cell, so no two segments meet.
 fn jittered(side: usize, seed: u64) -> (Vec<Point>, Vec<[usize; 2]>) {
-    let mut rng = crate::construct::insertion_order::SplitMix(seed);
-    let mut unit = move || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
+    let mut rng = crate::splitmix::SplitMix64(seed);
+    let mut unit = move || rng.unit();
     let (mut pts, mut segs) = (Vec::new(), Vec::new());
     for i in 0..side {
         for j in 0..side {
@@ -168,18 +168,17 @@ mod replay {
     //! free of the new segment, every new vertex equidistant from its sites
     //! with no site closer. Names the first insertion that goes wrong.
     use super::*;
-    use crate::construct::insertion_order::SplitMix;
     use crate::geometry::predicates::{orientation, Orientation};
+    use crate::splitmix::SplitMix64 as SplitMix;
 
     /// Tolerance relative to the largest coordinate.
     const TOLERANCE: f64 = 1e-9;
 
-    /// Reads Boost.Polygon's text format (points, then segments).
+    /// An input in Boost.Polygon's text format (`boost_text`).
     fn parse(text: &str) -> (Vec<Point>, Vec<[Point; 2]>) {
-        let mut nums = text.split_whitespace().map(|t| t.parse::<f64>().expect("a number"));
-        let mut next = || nums.next().expect("more numbers");
-        let points = (0..next() as usize).map(|_| Point::new(next(), next())).collect();
-        let segments = (0..next() as usize).map(|_| [Point::new(next(), next()), Point::new(next(), next())]).collect();
+        let input = crate::boost_text::parse(text).expect("an input in Boost.Polygon's text format");
+        let points = input.points.iter().map(|&[x, y]| Point::new(x, y)).collect();
+        let segments = input.segments.iter().map(|&[x1, y1, x2, y2]| [Point::new(x1, y1), Point::new(x2, y2)]).collect();
         (points, segments)
     }
 
@@ -236,7 +235,7 @@ mod replay {
     /// segment that meets an earlier one redrawn.
     fn random_segments(n: usize, seed: u64) -> Vec<[Point; 2]> {
         let mut rng = SplitMix(seed);
-        let mut unit = move || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
+        let mut unit = move || rng.unit();
         let mut out: Vec<[Point; 2]> = Vec::new();
         while out.len() < n {
             let s = [Point::new(unit(), unit()), Point::new(unit(), unit())];
