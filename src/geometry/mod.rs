@@ -21,7 +21,8 @@ pub mod point;
 pub(crate) mod point_predicates;
 pub mod predicates;
 pub(crate) mod real;
-pub(crate) mod scale;
+#[doc(hidden)] // the CLI's picture normalises with it; not stable API
+pub mod scale;
 pub(crate) mod segment_contact;
 pub(crate) mod segment_predicates;
 pub(crate) mod segment_solvers;

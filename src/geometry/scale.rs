@@ -25,7 +25,7 @@ const TINY_INPUT_TARGET: i32 = 100;
 
 /// A power-of-two scale factor and its inverse.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Scale {
+pub struct Scale {
     /// Input coordinates are multiplied by this to get internal ones.
     pub to_internal: f64,
     /// Internal coordinates are multiplied by this to get input ones.
@@ -52,21 +52,25 @@ impl Scale {
         if max_abs == 0.0 || !max_abs.is_finite() {
             return Scale::IDENTITY;
         }
-        let scale = if (LOWER..=UPPER).contains(&max_abs) {
-            Scale::IDENTITY
-        } else {
-            // exponent e with 2^e <= max_abs < 2^(e+1)
-            // Clamped so that both factors are normal numbers; subnormal inputs
-            // then land a little below 1, still well inside the exact range.
-            let e = exponent_of(max_abs).clamp(-1022, 1022);
-            Scale { to_internal: pow2(-e), to_input: pow2(e) }
-        };
+        let scale = if (LOWER..=UPPER).contains(&max_abs) { Scale::IDENTITY } else { Scale::to_unit(max_abs) };
         let tiny_left = min_abs > 0.0 && min_abs * scale.to_internal < TINY;
         if tiny_left && max_abs * scale.to_internal < pow2(TINY_INPUT_TARGET) {
             let e = (exponent_of(max_abs) - TINY_INPUT_TARGET).clamp(-1022, 1022);
             return Scale { to_internal: pow2(-e), to_input: pow2(e) };
         }
         scale
+    }
+
+    /// The scale that brings `max_abs` into `[1, 2)` (the identity for zero
+    /// or a value that is not finite): `2^-e` for `2^e <= max_abs < 2^(e+1)`,
+    /// clamped so that both factors are normal numbers (subnormal inputs then
+    /// land a little below 1).
+    pub fn to_unit(max_abs: f64) -> Scale {
+        if max_abs == 0.0 || !max_abs.is_finite() {
+            return Scale::IDENTITY;
+        }
+        let e = exponent_of(max_abs.abs()).clamp(-1022, 1022);
+        Scale { to_internal: pow2(-e), to_input: pow2(e) }
     }
 
     pub fn is_identity(&self) -> bool {

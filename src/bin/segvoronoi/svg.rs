@@ -45,7 +45,7 @@ struct Frame {
 impl Frame {
     fn new(sites: &[Point]) -> Frame {
         let max_abs = sites.iter().fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-        let to_unit = power_of_two_near_inverse(max_abs);
+        let to_unit = segvoronoi::geometry::scale::Scale::to_unit(max_abs).to_internal;
         let unit: Vec<Point> = sites.iter().map(|&p| Point::new(p.x * to_unit, p.y * to_unit)).collect();
         let (mut low, mut high) = (Point::new(-1.0, -1.0), Point::new(1.0, 1.0));
         if let Some(&first) = unit.first() {
@@ -134,16 +134,6 @@ impl Frame {
         let at = |t: f64| Point::new(start.x + t * dir.x, start.y + t * dir.y);
         Some((at(t0), at(t1)))
     }
-}
-
-/// An exact power of two close to `1 / max_abs` (1 for zero or non-finite),
-/// kept within the range where it and its use stay finite and normal.
-fn power_of_two_near_inverse(max_abs: f64) -> f64 {
-    if !(max_abs > 0.0 && max_abs.is_finite()) {
-        return 1.0;
-    }
-    let exponent = max_abs.log2().floor().clamp(-1000.0, 1000.0) as i32;
-    2f64.powi(-exponent)
 }
 
 /// A point of the line that an edge with both ends at infinity lies on (all
