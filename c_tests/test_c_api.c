@@ -1126,6 +1126,80 @@ static void test_edge_geometry(void) {
     segvoronoi_diagram_free(d);
 }
 
+/* Polygons and the domain: a square with a square hole, both rings in either
+ * orientation; locations of points, vertices and cells; the largest disk;
+ * the input rules (a ring of two points names polygon and ring, leaves the
+ * builder unchanged); no polygon, no domain. */
+static void test_polygon_domain(void) {
+    const double xy[] = {0, 0, 10, 0, 10, 10, 0, 10, /* outer, counter-clockwise */
+                         4, 4, 4, 6, 6, 6, 6, 4};    /* hole, clockwise */
+    const size_t lengths[] = {4, 4};
+    const double bad[] = {0, 0, 1, 1, 1, 1};
+    const size_t bad_length = 3;
+    const double line[] = {20, 20, 21, 20, 21, 21};
+    segvoronoi_builder *b = segvoronoi_builder_new();
+    segvoronoi_diagram *d = NULL;
+    uint32_t where = 99;
+    size_t i, indices[4] = {0}, n_indices = 0, inside = 0;
+    double x = 0, y = 0, r = 0;
+
+    CHECK(b != NULL);
+    CHECK_STATUS(segvoronoi_builder_add_polygon(b, xy, lengths, 2), SEGVORONOI_STATUS_OK);
+    CHECK(segvoronoi_builder_segment_count(b) == 8);
+    CHECK_STATUS(segvoronoi_builder_add_polygon(b, bad, &bad_length, 1), SEGVORONOI_STATUS_INVALID_POLYGON);
+    CHECK_STATUS(segvoronoi_builder_last_error_indices(b, indices, 4, &n_indices), SEGVORONOI_STATUS_OK);
+    CHECK(n_indices == 2 && indices[0] == 1 && indices[1] == 0); /* polygon 1, ring 0 */
+    CHECK(segvoronoi_builder_segment_count(b) == 8);
+    CHECK_STATUS(segvoronoi_builder_add_polygon(b, NULL, lengths, 2), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_builder_add_polyline(b, line, 3), SEGVORONOI_STATUS_OK);
+    CHECK(segvoronoi_builder_segment_count(b) == 10);
+    CHECK_STATUS(segvoronoi_builder_build(b, &d), SEGVORONOI_STATUS_OK);
+    check_diagram(d);
+    CHECK(segvoronoi_diagram_has_domain(d));
+    CHECK_STATUS(segvoronoi_diagram_locate_point(d, 1, 1, &where), SEGVORONOI_STATUS_OK);
+    CHECK(where == SEGVORONOI_LOCATION_INSIDE);
+    CHECK_STATUS(segvoronoi_diagram_locate_point(d, 5, 5, &where), SEGVORONOI_STATUS_OK);
+    CHECK(where == SEGVORONOI_LOCATION_OUTSIDE);
+    CHECK_STATUS(segvoronoi_diagram_locate_point(d, 10, 3, &where), SEGVORONOI_STATUS_OK);
+    CHECK(where == SEGVORONOI_LOCATION_BOUNDARY);
+    for (i = 0; i < segvoronoi_diagram_vertex_count(d); ++i) {
+        segvoronoi_vertex v = {.struct_size = sizeof v};
+        uint32_t at = 99;
+        CHECK_STATUS(segvoronoi_diagram_vertex(d, i, &v), SEGVORONOI_STATUS_OK);
+        CHECK_STATUS(segvoronoi_diagram_vertex_location(d, i, &at), SEGVORONOI_STATUS_OK);
+        if (at == SEGVORONOI_LOCATION_INSIDE) {
+            ++inside;
+            /* strictly inside the ring between the squares */
+            CHECK(v.x > 0 && v.x < 10 && v.y > 0 && v.y < 10 && !(v.x > 4 && v.x < 6 && v.y > 4 && v.y < 6));
+        }
+    }
+    CHECK(inside > 0);
+    CHECK_STATUS(segvoronoi_diagram_vertex_location(d, segvoronoi_diagram_vertex_count(d), &where),
+                 SEGVORONOI_STATUS_OUT_OF_RANGE);
+    CHECK_STATUS(segvoronoi_diagram_edge_location(d, 0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    /* the polyline's first point (20, 20), site 8 after the rings' eight
+       corners, is an obstacle outside */
+    CHECK_STATUS(segvoronoi_diagram_cell_location(d, 8, &where), SEGVORONOI_STATUS_OK);
+    CHECK(where == SEGVORONOI_LOCATION_OUTSIDE);
+    CHECK_STATUS(segvoronoi_diagram_max_inscribed_circle(d, &x, &y, &r), SEGVORONOI_STATUS_OK);
+    /* at a corner of the ring between the squares: (t, t) as far from the
+       outer sides as from the hole's corner (4, 4), t = 8 - 4 sqrt 2 */
+    CHECK(fabs(r - (8.0 - 4.0 * sqrt(2.0))) < 1e-12);
+    CHECK(fabs(fmin(fmin(x, y), fmin(10 - x, 10 - y)) - r) < 1e-12); /* r from the outer square */
+    segvoronoi_diagram_free(d);
+    segvoronoi_builder_free(b);
+
+    b = segvoronoi_builder_new();
+    CHECK_STATUS(segvoronoi_builder_add_point(b, 1, 2), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_add_point(b, 3, 1), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_build(b, &d), SEGVORONOI_STATUS_OK);
+    CHECK(!segvoronoi_diagram_has_domain(d));
+    CHECK_STATUS(segvoronoi_diagram_locate_point(d, 1, 1, &where), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_max_inscribed_circle(d, &x, &y, &r), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+    segvoronoi_diagram_free(d);
+    segvoronoi_builder_free(b);
+}
+
 /* The versioned structs: a struct_size below the first version is refused
  * with nothing written; a larger one (a caller from a newer header) gets the
  * fields this library has, with struct_size saying how many bytes those are,
@@ -1201,6 +1275,7 @@ int segvoronoi_run_c_tests(void) {
     test_segment_shapes();
     test_edge_geometry();
     test_versioned_structs();
+    test_polygon_domain();
     fprintf(stderr, "segvoronoi C API tests: %d checks, %d failed\n", checks, failures);
     return failures;
 }

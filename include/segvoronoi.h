@@ -67,6 +67,16 @@
 // sites of their own).
 #define SEGVORONOI_SITE_SEGMENT 1
 
+// In the domain's interior.
+#define SEGVORONOI_LOCATION_INSIDE 0
+
+// Outside the domain.
+#define SEGVORONOI_LOCATION_OUTSIDE 1
+
+// On its boundary: a vertex at a ring corner, the cell of a ring's segment
+// or corner.
+#define SEGVORONOI_LOCATION_BOUNDARY 2
+
 // Major version of the library this header belongs to.
 #define SEGVORONOI_VERSION_MAJOR 0
 
@@ -297,6 +307,34 @@ enum segvoronoi_status segvoronoi_builder_add_segments(struct segvoronoi_builder
                                                        const double *xy,
                                                        size_t count);
 
+// Adds a polygon: `n_rings` rings, ring `k` of `ring_lengths[k]` points,
+// their coordinates one after another in `xy` = `{x, y, ...}`. Each ring is
+// closed (its last point joins its first; a repeated closing point is
+// accepted); repeated consecutive points are dropped. The rings of all
+// polygons bound the domain by the even-odd rule, whatever their
+// orientation (see `segvoronoi_diagram_vertex_location`). The segments get
+// the next input indices, ring by ring.
+//
+// Errors: `NULL_ARGUMENT`; `INVALID_POLYGON` (a ring with fewer than three
+// distinct points) or `INVALID_COORDINATE`, naming the polygon and the ring
+// (`segvoronoi_builder_last_error_indices`: polygon, ring[, point]);
+// `TOO_LARGE`. The builder is then unchanged. Rings that cross are
+// `INTERSECTING` from `segvoronoi_builder_build`.
+enum segvoronoi_status segvoronoi_builder_add_polygon(struct segvoronoi_builder *builder,
+                                                      const double *xy,
+                                                      const size_t *ring_lengths,
+                                                      size_t n_rings);
+
+// Adds an open chain of `count` points `xy` = `{x, y, ...}` as segments
+// (repeated consecutive points dropped): an obstacle, which does not bound
+// the domain. `xy` may be NULL when `count` is 0.
+//
+// Errors: `NULL_ARGUMENT`, `INVALID_COORDINATE` (naming the point),
+// `TOO_LARGE`; the builder is then unchanged.
+enum segvoronoi_status segvoronoi_builder_add_polyline(struct segvoronoi_builder *builder,
+                                                       const double *xy,
+                                                       size_t count);
+
 // The number of segments added so far (repeats included); 0 for NULL.
 size_t segvoronoi_builder_segment_count(const struct segvoronoi_builder *builder);
 
@@ -504,6 +542,48 @@ enum segvoronoi_status segvoronoi_diagram_topology(const struct segvoronoi_diagr
                                                    uint32_t flags,
                                                    char **text,
                                                    size_t *length);
+
+// Whether polygons were added (then vertices, edges and cells have a
+// location); false for NULL.
+bool segvoronoi_diagram_has_domain(const struct segvoronoi_diagram *diagram);
+
+// Where vertex `vertex` lies, a `SEGVORONOI_LOCATION_*`, in `*out`.
+//
+// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (no polygon was added),
+// `OUT_OF_RANGE`; then `*out` is untouched.
+enum segvoronoi_status segvoronoi_diagram_vertex_location(const struct segvoronoi_diagram *diagram,
+                                                          size_t vertex,
+                                                          uint32_t *out);
+
+// Where edge `edge` lies (all of it), in `*out`. Errors: as
+// `segvoronoi_diagram_vertex_location`.
+enum segvoronoi_status segvoronoi_diagram_edge_location(const struct segvoronoi_diagram *diagram,
+                                                        size_t edge,
+                                                        uint32_t *out);
+
+// Where the cell of site `site` lies, in `*out`. Errors: as
+// `segvoronoi_diagram_vertex_location`.
+enum segvoronoi_status segvoronoi_diagram_cell_location(const struct segvoronoi_diagram *diagram,
+                                                        size_t site,
+                                                        uint32_t *out);
+
+// Where the point `(x, y)` lies, exactly (even-odd over every ring), in
+// `*out`. Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (no polygon was
+// added).
+enum segvoronoi_status segvoronoi_diagram_locate_point(const struct segvoronoi_diagram *diagram,
+                                                       double x,
+                                                       double y,
+                                                       uint32_t *out);
+
+// The largest disk inside the domain: its centre in `*x, *y` and radius in
+// `*r`.
+//
+// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (no polygon was added, or
+// nothing is inside); then the outputs are untouched.
+enum segvoronoi_status segvoronoi_diagram_max_inscribed_circle(const struct segvoronoi_diagram *diagram,
+                                                               double *x,
+                                                               double *y,
+                                                               double *r);
 
 // The half-edge after `h` around the cell on its left, counter-clockwise,
 // in `*out` (around an unbounded cell, from the ray that leaves to

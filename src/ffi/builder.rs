@@ -143,6 +143,78 @@ pub unsafe extern "C" fn segvoronoi_builder_add_segments(
     }
 }
 
+/// Adds a polygon: `n_rings` rings, ring `k` of `ring_lengths[k]` points,
+/// their coordinates one after another in `xy` = `{x, y, ...}`. Each ring is
+/// closed (its last point joins its first; a repeated closing point is
+/// accepted); repeated consecutive points are dropped. The rings of all
+/// polygons bound the domain by the even-odd rule, whatever their
+/// orientation (see `segvoronoi_diagram_vertex_location`). The segments get
+/// the next input indices, ring by ring.
+///
+/// Errors: `NULL_ARGUMENT`; `INVALID_POLYGON` (a ring with fewer than three
+/// distinct points) or `INVALID_COORDINATE`, naming the polygon and the ring
+/// (`segvoronoi_builder_last_error_indices`: polygon, ring[, point]);
+/// `TOO_LARGE`. The builder is then unchanged. Rings that cross are
+/// `INTERSECTING` from `segvoronoi_builder_build`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_add_polygon(
+    builder: *mut segvoronoi_builder,
+    xy: *const f64,
+    ring_lengths: *const usize,
+    n_rings: usize,
+) -> segvoronoi_status {
+    require_non_null!(builder);
+    if n_rings > 0 {
+        require_non_null!(ring_lengths);
+    }
+    guard(|| {
+        // SAFETY: non-null; the caller keeps the builder exclusive.
+        let b = unsafe { &mut *builder };
+        // SAFETY: non-null when n_rings > 0, valid for n_rings reads (the caller's promise).
+        let lengths: &[usize] = if n_rings == 0 { &[] } else { unsafe { std::slice::from_raw_parts(ring_lengths, n_rings) } };
+        let Some(total) = lengths.iter().try_fold(0usize, |sum, &n| sum.checked_add(n)) else {
+            return segvoronoi_status::TooLarge;
+        };
+        if let Err(e) = b.inner.reserve_segments(total) {
+            return b.record(Err(e));
+        }
+        if total > 0 && xy.is_null() {
+            return segvoronoi_status::NullArgument;
+        }
+        // SAFETY: non-null, valid for 2 * total reads (the caller's promise).
+        let coords: &[f64] = if total == 0 { &[] } else { unsafe { std::slice::from_raw_parts(xy, 2 * total) } };
+        let mut rings: Vec<Vec<[f64; 2]>> = Vec::with_capacity(n_rings);
+        let mut at = 0;
+        for &n in lengths {
+            rings.push(coords[2 * at..2 * (at + n)].chunks_exact(2).map(|c| [c[0], c[1]]).collect());
+            at += n;
+        }
+        let r = b.inner.add_polygon(&rings).map(|_| ());
+        b.record(r)
+    })
+}
+
+/// Adds an open chain of `count` points `xy` = `{x, y, ...}` as segments
+/// (repeated consecutive points dropped): an obstacle, which does not bound
+/// the domain. `xy` may be NULL when `count` is 0.
+///
+/// Errors: `NULL_ARGUMENT`, `INVALID_COORDINATE` (naming the point),
+/// `TOO_LARGE`; the builder is then unchanged.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_add_polyline(
+    builder: *mut segvoronoi_builder,
+    xy: *const f64,
+    count: usize,
+) -> segvoronoi_status {
+    // SAFETY: passed on from the caller (see `add_flat`).
+    unsafe {
+        add_flat::<2>(builder, xy, count, Builder::reserve_segments, |b, c| {
+            let points: Vec<[f64; 2]> = c.chunks_exact(2).map(|c| [c[0], c[1]]).collect();
+            b.add_polyline(&points).map(|_| ())
+        })
+    }
+}
+
 /// Bulk input shared by the `add_points` / `add_segments` calls: `count`
 /// items of `STRIDE` doubles at `xy`, all or none. The room is checked with
 /// `reserve` before `xy` is turned into a slice (a count that large cannot

@@ -25,6 +25,7 @@
 
 mod builder;
 mod diagram;
+mod domain;
 mod navigation;
 mod out;
 mod plumbing;
@@ -32,6 +33,7 @@ mod shape;
 
 pub use builder::*;
 pub use diagram::*;
+pub use domain::*;
 pub use navigation::*;
 pub use plumbing::{
     segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version, segvoronoi_version_number,

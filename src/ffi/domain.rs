@@ -1,0 +1,128 @@
+//! The domain and the medial axis's largest disk in C: where a vertex,
+//! edge, cell or point lies (`SEGVORONOI_LOCATION_*`), and the maximum
+//! inscribed circle. Delegates to `Diagram::vertex_location`,
+//! `edge_location`, `cell_location`, `locate_point` and
+//! `max_inscribed_circle`.
+
+use super::diagram::{segvoronoi_diagram, with_diagram};
+use super::out::write_out;
+use super::plumbing::{require_non_null, segvoronoi_status};
+use crate::{Diagram, EdgeId, Location, Point, SiteId, VertexId};
+
+/// In the domain's interior.
+pub const SEGVORONOI_LOCATION_INSIDE: u32 = 0;
+/// Outside the domain.
+pub const SEGVORONOI_LOCATION_OUTSIDE: u32 = 1;
+/// On its boundary: a vertex at a ring corner, the cell of a ring's segment
+/// or corner.
+pub const SEGVORONOI_LOCATION_BOUNDARY: u32 = 2;
+
+fn code(location: Location) -> u32 {
+    match location {
+        Location::Inside => SEGVORONOI_LOCATION_INSIDE,
+        Location::Outside => SEGVORONOI_LOCATION_OUTSIDE,
+        Location::Boundary => SEGVORONOI_LOCATION_BOUNDARY,
+    }
+}
+
+/// Writes where `ask` says something lies: `INVALID_ARGUMENT` without a
+/// domain, `OUT_OF_RANGE` past the ids.
+fn locate(
+    diagram: *const segvoronoi_diagram,
+    out: *mut u32,
+    ask: impl FnOnce(&Diagram) -> Option<Location>,
+) -> segvoronoi_status {
+    require_non_null!(out);
+    with_diagram(diagram, |d| {
+        if !d.has_domain() {
+            return segvoronoi_status::InvalidArgument;
+        }
+        match ask(d) {
+            Some(location) => write_out(out, code(location)),
+            None => segvoronoi_status::OutOfRange,
+        }
+    })
+}
+
+/// Whether polygons were added (then vertices, edges and cells have a
+/// location); false for NULL.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_has_domain(diagram: *const segvoronoi_diagram) -> bool {
+    let mut answer = false;
+    with_diagram(diagram, |d| {
+        answer = d.has_domain();
+        segvoronoi_status::Ok
+    });
+    answer
+}
+
+/// Where vertex `vertex` lies, a `SEGVORONOI_LOCATION_*`, in `*out`.
+///
+/// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (no polygon was added),
+/// `OUT_OF_RANGE`; then `*out` is untouched.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_vertex_location(
+    diagram: *const segvoronoi_diagram,
+    vertex: usize,
+    out: *mut u32,
+) -> segvoronoi_status {
+    locate(diagram, out, |d| (vertex < d.vertex_count()).then(|| d.vertex_location(VertexId::from_index(vertex))).flatten())
+}
+
+/// Where edge `edge` lies (all of it), in `*out`. Errors: as
+/// `segvoronoi_diagram_vertex_location`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_edge_location(
+    diagram: *const segvoronoi_diagram,
+    edge: usize,
+    out: *mut u32,
+) -> segvoronoi_status {
+    locate(diagram, out, |d| (edge < d.edge_count()).then(|| d.edge_location(EdgeId::from_index(edge))).flatten())
+}
+
+/// Where the cell of site `site` lies, in `*out`. Errors: as
+/// `segvoronoi_diagram_vertex_location`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_cell_location(
+    diagram: *const segvoronoi_diagram,
+    site: usize,
+    out: *mut u32,
+) -> segvoronoi_status {
+    locate(diagram, out, |d| (site < d.site_count()).then(|| d.cell_location(SiteId::from_index(site))).flatten())
+}
+
+/// Where the point `(x, y)` lies, exactly (even-odd over every ring), in
+/// `*out`. Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (no polygon was
+/// added).
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_locate_point(
+    diagram: *const segvoronoi_diagram,
+    x: f64,
+    y: f64,
+    out: *mut u32,
+) -> segvoronoi_status {
+    locate(diagram, out, |d| d.locate_point(Point::new(x, y)))
+}
+
+/// The largest disk inside the domain: its centre in `*x, *y` and radius in
+/// `*r`.
+///
+/// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (no polygon was added, or
+/// nothing is inside); then the outputs are untouched.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_max_inscribed_circle(
+    diagram: *const segvoronoi_diagram,
+    x: *mut f64,
+    y: *mut f64,
+    r: *mut f64,
+) -> segvoronoi_status {
+    require_non_null!(x, y, r);
+    with_diagram(diagram, |d| match d.max_inscribed_circle() {
+        Some((centre, radius)) => {
+            write_out(x, centre.x);
+            write_out(y, centre.y);
+            write_out(r, radius)
+        }
+        None => segvoronoi_status::InvalidArgument,
+    })
+}
