@@ -1126,6 +1126,54 @@ static void test_edge_geometry(void) {
     segvoronoi_diagram_free(d);
 }
 
+/* The medial axis of a diagram with a domain: its pieces are exactly the
+ * inside edges that are not separators, consecutive pieces meet, and every
+ * sampled point has a clearance between 0 and the largest disk's radius. */
+static void check_medial_axis(const segvoronoi_diagram *d, double max_r) {
+    segvoronoi_medial_axis *axis = NULL;
+    size_t chains, c, k, pieces_total = 0, inside_edges = 0, e;
+    CHECK_STATUS(segvoronoi_diagram_medial_axis(d, &axis), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_diagram_medial_axis(d, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    chains = segvoronoi_medial_axis_chain_count(axis);
+    CHECK(chains > 0);
+    for (e = 0; e < segvoronoi_diagram_edge_count(d); ++e) {
+        segvoronoi_edge edge = {.struct_size = sizeof edge};
+        uint32_t at = 99;
+        CHECK_STATUS(segvoronoi_diagram_edge(d, e, &edge), SEGVORONOI_STATUS_OK);
+        CHECK_STATUS(segvoronoi_diagram_edge_location(d, e, &at), SEGVORONOI_STATUS_OK);
+        if (at == SEGVORONOI_LOCATION_INSIDE && !edge.is_separator) ++inside_edges;
+    }
+    for (c = 0; c < chains; ++c) {
+        size_t n = 0, points = 0, needed = 0;
+        bool closed = false;
+        double *xyr;
+        segvoronoi_piece previous = {.struct_size = sizeof previous};
+        CHECK_STATUS(segvoronoi_medial_axis_chain(axis, c, &n, &closed), SEGVORONOI_STATUS_OK);
+        CHECK(n > 0);
+        for (k = 0; k < n; ++k) {
+            segvoronoi_piece p = {.struct_size = sizeof p};
+            CHECK_STATUS(segvoronoi_medial_axis_piece(axis, c, k, &p), SEGVORONOI_STATUS_OK);
+            CHECK(p.struct_size == sizeof p);
+            if (k > 0) CHECK(previous.ends[1].vertex == p.ends[0].vertex);
+            previous = p;
+        }
+        pieces_total += n;
+        CHECK_STATUS(segvoronoi_medial_axis_sample_chain(axis, c, 1e-3, NULL, 0, &needed), SEGVORONOI_STATUS_OK);
+        CHECK(needed >= n + 1);
+        xyr = malloc(3 * needed * sizeof *xyr);
+        CHECK(xyr != NULL);
+        CHECK_STATUS(segvoronoi_medial_axis_sample_chain(axis, c, 1e-3, xyr, needed, &points), SEGVORONOI_STATUS_OK);
+        for (k = 0; k < points; ++k) CHECK(xyr[3 * k + 2] >= 0.0 && xyr[3 * k + 2] <= max_r + 1e-12);
+        CHECK_STATUS(segvoronoi_medial_axis_sample_chain(axis, c, 0.0, xyr, needed, &points),
+                     SEGVORONOI_STATUS_INVALID_ARGUMENT);
+        free(xyr);
+    }
+    CHECK(pieces_total == inside_edges);
+    CHECK_STATUS(segvoronoi_medial_axis_chain(axis, chains, &k, &(bool){false}), SEGVORONOI_STATUS_OUT_OF_RANGE);
+    segvoronoi_medial_axis_free(axis);
+    segvoronoi_medial_axis_free(NULL);
+}
+
 /* Polygons and the domain: a square with a square hole, both rings in either
  * orientation; locations of points, vertices and cells; the largest disk;
  * the input rules (a ring of two points names polygon and ring, leaves the
@@ -1186,6 +1234,7 @@ static void test_polygon_domain(void) {
        outer sides as from the hole's corner (4, 4), t = 8 - 4 sqrt 2 */
     CHECK(fabs(r - (8.0 - 4.0 * sqrt(2.0))) < 1e-12);
     CHECK(fabs(fmin(fmin(x, y), fmin(10 - x, 10 - y)) - r) < 1e-12); /* r from the outer square */
+    check_medial_axis(d, r);
     segvoronoi_diagram_free(d);
     segvoronoi_builder_free(b);
 

@@ -8,7 +8,7 @@
  * one thread at a time.
  *
  * Versioned structs: every struct the library fills in (segvoronoi_site,
- * _vertex, _edge, _edge_shape, _stats) starts with `size_t struct_size` and
+ * _vertex, _edge, _edge_shape, _stats, _piece) starts with `size_t struct_size` and
  * may gain fields at its end in a later version. Set struct_size to sizeof
  * the struct before the call:
  *
@@ -136,6 +136,11 @@ typedef struct segvoronoi_builder segvoronoi_builder;
 // read it at once. Free with `segvoronoi_diagram_free`.
 typedef struct segvoronoi_diagram segvoronoi_diagram;
 
+// A medial axis (`segvoronoi_diagram_medial_axis`). Opaque and immutable;
+// it refers to its diagram, so free it (`segvoronoi_medial_axis_free`)
+// before the diagram.
+typedef struct segvoronoi_medial_axis segvoronoi_medial_axis;
+
 // A site: a point, or an open segment. Versioned: set `struct_size` before
 // the call (see the header's introduction).
 typedef struct segvoronoi_site {
@@ -224,6 +229,22 @@ typedef struct segvoronoi_stats {
   // Voronoi edges between two sites.
   size_t edges;
 } segvoronoi_stats;
+
+// One piece of a chain of the medial axis: an edge of the diagram walked in
+// the chain's direction. Versioned: set `struct_size` before the call.
+typedef struct segvoronoi_piece {
+  // Set by the caller to `sizeof(segvoronoi_piece)`; the library writes
+  // the fields that fit and sets it to the number of bytes written.
+  size_t struct_size;
+  // The edge (its shape: `segvoronoi_diagram_edge_shape`).
+  uint32_t edge;
+  // `true` when the chain walks the edge from its `ends[1]` to `ends[0]`.
+  bool reversed;
+  // Where the piece starts and ends, in the chain's direction.
+  struct segvoronoi_edge_end ends[2];
+  // The clearance at both ends (infinite at an end at infinity).
+  double clearance[2];
+} segvoronoi_piece;
 
 // The shape of an edge. For `SEGVORONOI_EDGE_LINE` all coordinates are 0.
 // Versioned: set `struct_size` before the call (see the header's
@@ -584,6 +605,57 @@ enum segvoronoi_status segvoronoi_diagram_max_inscribed_circle(const struct segv
                                                                double *x,
                                                                double *y,
                                                                double *r);
+
+// The medial axis of a diagram (the edges inside the domain that are not
+// separators; without polygons, every edge that is not a separator) in
+// `*out`.
+//
+// Ownership: the caller frees it with `segvoronoi_medial_axis_free`, before
+// freeing the diagram.
+//
+// Errors: `NULL_ARGUMENT`; then `*out` is untouched.
+enum segvoronoi_status segvoronoi_diagram_medial_axis(const struct segvoronoi_diagram *diagram,
+                                                      struct segvoronoi_medial_axis **out);
+
+// Frees a medial axis. NULL does nothing.
+void segvoronoi_medial_axis_free(struct segvoronoi_medial_axis *axis);
+
+// The number of chains; 0 for NULL.
+size_t segvoronoi_medial_axis_chain_count(const struct segvoronoi_medial_axis *axis);
+
+// The number of pieces of chain `chain` in `*count`, and whether it is
+// closed (a cycle) in `*closed`.
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`; then the outputs are untouched.
+enum segvoronoi_status segvoronoi_medial_axis_chain(const struct segvoronoi_medial_axis *axis,
+                                                    size_t chain,
+                                                    size_t *count,
+                                                    bool *closed);
+
+// Piece `piece` of chain `chain` in `*out`.
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT`
+// (`out->struct_size` too small); then `*out` is untouched.
+enum segvoronoi_status segvoronoi_medial_axis_piece(const struct segvoronoi_medial_axis *axis,
+                                                    size_t chain,
+                                                    size_t piece,
+                                                    struct segvoronoi_piece *out);
+
+// The points of chain `chain` within `tolerance` (input units) of its exact
+// curve, each `{x, y, clearance}`: up to `capacity` points (`3 * capacity`
+// doubles) to `xyr`, the full number of points to `*count`; `xyr = NULL,
+// capacity = 0` only counts (`OK`).
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT` (a tolerance
+// that is not positive, or a chain that reaches infinity),
+// `BUFFER_TOO_SMALL` (then `*count` holds the number needed and the first
+// `capacity` points are written).
+enum segvoronoi_status segvoronoi_medial_axis_sample_chain(const struct segvoronoi_medial_axis *axis,
+                                                           size_t chain,
+                                                           double tolerance,
+                                                           double *xyr,
+                                                           size_t capacity,
+                                                           size_t *count);
 
 // The half-edge after `h` around the cell on its left, counter-clockwise,
 // in `*out` (around an unbounded cell, from the ray that leaves to

@@ -26,6 +26,7 @@
 mod builder;
 mod diagram;
 mod domain;
+mod medial_axis;
 mod navigation;
 mod out;
 mod plumbing;
@@ -34,6 +35,7 @@ mod shape;
 pub use builder::*;
 pub use diagram::*;
 pub use domain::*;
+pub use medial_axis::*;
 pub use navigation::*;
 pub use plumbing::{
     segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version, segvoronoi_version_number,

@@ -1,0 +1,175 @@
+//! The medial axis in C: a handle with its chains and their pieces, and
+//! the sampling of a chain as `(x, y, clearance)`. Delegates to
+//! `Diagram::medial_axis` and `Diagram::sample_chain`.
+
+use super::diagram::{segvoronoi_diagram, segvoronoi_edge_end, with_diagram};
+use super::out::{require_buffer, versioned, write_buffer, write_out, write_versioned};
+use super::plumbing::{guard, guard_or, require_non_null, segvoronoi_status};
+use crate::{EdgeEnd, MedialAxis};
+
+/// A medial axis (`segvoronoi_diagram_medial_axis`). Opaque and immutable;
+/// it refers to its diagram, so free it (`segvoronoi_medial_axis_free`)
+/// before the diagram.
+pub struct segvoronoi_medial_axis {
+    diagram: *const segvoronoi_diagram,
+    inner: MedialAxis,
+}
+
+/// One piece of a chain of the medial axis: an edge of the diagram walked in
+/// the chain's direction. Versioned: set `struct_size` before the call.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct segvoronoi_piece {
+    /// Set by the caller to `sizeof(segvoronoi_piece)`; the library writes
+    /// the fields that fit and sets it to the number of bytes written.
+    pub struct_size: usize,
+    /// The edge (its shape: `segvoronoi_diagram_edge_shape`).
+    pub edge: u32,
+    /// `true` when the chain walks the edge from its `ends[1]` to `ends[0]`.
+    pub reversed: bool,
+    /// Where the piece starts and ends, in the chain's direction.
+    pub ends: [segvoronoi_edge_end; 2],
+    /// The clearance at both ends (infinite at an end at infinity).
+    pub clearance: [f64; 2],
+}
+versioned!(segvoronoi_piece, clearance: [f64; 2]);
+
+/// The medial axis of a diagram (the edges inside the domain that are not
+/// separators; without polygons, every edge that is not a separator) in
+/// `*out`.
+///
+/// Ownership: the caller frees it with `segvoronoi_medial_axis_free`, before
+/// freeing the diagram.
+///
+/// Errors: `NULL_ARGUMENT`; then `*out` is untouched.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_medial_axis(
+    diagram: *const segvoronoi_diagram,
+    out: *mut *mut segvoronoi_medial_axis,
+) -> segvoronoi_status {
+    require_non_null!(out);
+    with_diagram(diagram, |d| {
+        let axis = Box::new(segvoronoi_medial_axis { diagram, inner: d.medial_axis() });
+        write_out(out, Box::into_raw(axis))
+    })
+}
+
+/// Frees a medial axis. NULL does nothing.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_medial_axis_free(axis: *mut segvoronoi_medial_axis) {
+    if axis.is_null() {
+        return;
+    }
+    // SAFETY: the caller passes an axis from `segvoronoi_diagram_medial_axis`, not freed yet.
+    guard_or((), || drop(unsafe { Box::from_raw(axis) }))
+}
+
+/// Runs `f` on the axis and its chain `chain`: `OUT_OF_RANGE` past the
+/// chains.
+fn with_chain(
+    axis: *const segvoronoi_medial_axis,
+    chain: usize,
+    f: impl FnOnce(&segvoronoi_medial_axis, &crate::Chain) -> segvoronoi_status,
+) -> segvoronoi_status {
+    require_non_null!(axis);
+    guard(|| {
+        // SAFETY: non-null; the caller passes a live axis (shared reads are fine).
+        let axis = unsafe { &*axis };
+        match axis.inner.chains.get(chain) {
+            Some(c) => f(axis, c),
+            None => segvoronoi_status::OutOfRange,
+        }
+    })
+}
+
+/// The number of chains; 0 for NULL.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_medial_axis_chain_count(axis: *const segvoronoi_medial_axis) -> usize {
+    if axis.is_null() {
+        return 0;
+    }
+    // SAFETY: non-null live axis.
+    guard_or(0, || unsafe { &*axis }.inner.chains.len())
+}
+
+/// The number of pieces of chain `chain` in `*count`, and whether it is
+/// closed (a cycle) in `*closed`.
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`; then the outputs are untouched.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_medial_axis_chain(
+    axis: *const segvoronoi_medial_axis,
+    chain: usize,
+    count: *mut usize,
+    closed: *mut bool,
+) -> segvoronoi_status {
+    require_non_null!(count, closed);
+    with_chain(axis, chain, |_, c| {
+        write_out(closed, c.closed);
+        write_out(count, c.pieces.len())
+    })
+}
+
+/// Piece `piece` of chain `chain` in `*out`.
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT`
+/// (`out->struct_size` too small); then `*out` is untouched.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_medial_axis_piece(
+    axis: *const segvoronoi_medial_axis,
+    chain: usize,
+    piece: usize,
+    out: *mut segvoronoi_piece,
+) -> segvoronoi_status {
+    require_non_null!(out);
+    with_chain(axis, chain, |axis, c| {
+        let Some(p) = c.pieces.get(piece) else { return segvoronoi_status::OutOfRange };
+        with_diagram(axis.diagram, |d| {
+            let end = |end: EdgeEnd| match end {
+                EdgeEnd::Vertex(v) => {
+                    let position = d.vertex(v).map(|v| v.position).unwrap_or_default();
+                    segvoronoi_edge_end { vertex: v.index() as u32, x: position.x, y: position.y }
+                }
+                EdgeEnd::Infinite { direction } => {
+                    segvoronoi_edge_end { vertex: super::diagram::SEGVORONOI_NO_VERTEX, x: direction.x, y: direction.y }
+                }
+            };
+            let value = segvoronoi_piece {
+                edge: p.edge.index() as u32,
+                reversed: p.reversed,
+                ends: p.ends.map(end),
+                clearance: p.clearance,
+                ..Default::default()
+            };
+            write_versioned(out, value)
+        })
+    })
+}
+
+/// The points of chain `chain` within `tolerance` (input units) of its exact
+/// curve, each `{x, y, clearance}`: up to `capacity` points (`3 * capacity`
+/// doubles) to `xyr`, the full number of points to `*count`; `xyr = NULL,
+/// capacity = 0` only counts (`OK`).
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT` (a tolerance
+/// that is not positive, or a chain that reaches infinity),
+/// `BUFFER_TOO_SMALL` (then `*count` holds the number needed and the first
+/// `capacity` points are written).
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_medial_axis_sample_chain(
+    axis: *const segvoronoi_medial_axis,
+    chain: usize,
+    tolerance: f64,
+    xyr: *mut f64,
+    capacity: usize,
+    count: *mut usize,
+) -> segvoronoi_status {
+    require_buffer!(xyr, capacity, count);
+    with_chain(axis, chain, |axis, c| {
+        with_diagram(axis.diagram, |d| match d.sample_chain(c, tolerance) {
+            // three consecutive doubles per point: the alignment of an array of them
+            Some(points) => write_buffer(points, xyr.cast::<[f64; 3]>(), capacity, count),
+            None => segvoronoi_status::InvalidArgument,
+        })
+    })
+}
