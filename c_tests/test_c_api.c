@@ -1155,6 +1155,16 @@ static void check_medial_axis(const segvoronoi_diagram *d, double max_r) {
             CHECK_STATUS(segvoronoi_medial_axis_piece(axis, c, k, &p), SEGVORONOI_STATUS_OK);
             CHECK(p.struct_size == sizeof p);
             if (k > 0) CHECK(previous.ends[1].vertex == p.ends[0].vertex);
+            { /* the ends of the piece at t = 0 and 1, its clearance in between */
+                double at0[3], at1[3], mid[3];
+                CHECK_STATUS(segvoronoi_medial_axis_piece_at(axis, c, k, 0.0, at0), SEGVORONOI_STATUS_OK);
+                CHECK_STATUS(segvoronoi_medial_axis_piece_at(axis, c, k, 1.0, at1), SEGVORONOI_STATUS_OK);
+                CHECK_STATUS(segvoronoi_medial_axis_piece_at(axis, c, k, 0.5, mid), SEGVORONOI_STATUS_OK);
+                CHECK(at0[0] == p.ends[0].x && at0[1] == p.ends[0].y && at1[0] == p.ends[1].x && at1[1] == p.ends[1].y);
+                CHECK(fabs(at0[2] - p.clearance[0]) < 1e-12 && fabs(at1[2] - p.clearance[1]) < 1e-12);
+                CHECK(mid[2] >= 0.0 && mid[2] <= max_r + 1e-12);
+                CHECK_STATUS(segvoronoi_medial_axis_piece_at(axis, c, k, 1.5, mid), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+            }
             previous = p;
         }
         pieces_total += n;

@@ -657,6 +657,19 @@ enum segvoronoi_status segvoronoi_medial_axis_sample_chain(const struct segvoron
                                                            size_t capacity,
                                                            size_t *count);
 
+// The point of piece `piece` of chain `chain` at parameter `t` (0 at its
+// start, 1 at its end, in the chain's direction) and the clearance there,
+// as `{x, y, clearance}` in `xyr[0..3]`.
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (chain or piece), `INVALID_ARGUMENT`
+// (`t` outside `[0, 1]`, or a piece that reaches infinity); then `xyr` is
+// untouched.
+enum segvoronoi_status segvoronoi_medial_axis_piece_at(const struct segvoronoi_medial_axis *axis,
+                                                       size_t chain,
+                                                       size_t piece,
+                                                       double t,
+                                                       double *xyr);
+
 // The half-edge after `h` around the cell on its left, counter-clockwise,
 // in `*out` (around an unbounded cell, from the ray that leaves to
 // infinity to the ray that comes back).

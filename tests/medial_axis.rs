@@ -166,6 +166,16 @@ fn sampled_points_are_inside_at_their_clearance() {
             }
             for piece in &chain.pieces {
                 let [s, t] = d.edge(piece.edge).unwrap().sites.map(|s| d.site(s).unwrap());
+                // at any parameter: on the edge (equidistant from its two
+                // sites), at its clearance
+                for k in 0..=8 {
+                    let [x, y, r] = d.piece_point_at(piece, k as f64 / 8.0).unwrap();
+                    let q = Point::new(x, y);
+                    let nearest = segments.iter().map(|s| s.distance(q)).fold(f64::INFINITY, f64::min);
+                    assert!((nearest - r).abs() <= scale.max(1e-9 * r), "clearance {r} but nearest {nearest} at {q:?}");
+                    assert!((s.distance(q) - t.distance(q)).abs() <= scale.max(1e-9 * r), "off the edge at {q:?}");
+                }
+                assert_eq!(d.piece_point_at(piece, 1.5), None);
                 for [x, y, _] in d.sample_piece(piece, tolerance).unwrap() {
                     let q = Point::new(x, y);
                     assert!((s.distance(q) - t.distance(q)).abs() <= scale.max(1e-9 * s.distance(q)), "not equidistant at {q:?}");

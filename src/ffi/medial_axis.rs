@@ -173,3 +173,29 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_sample_chain(
         })
     })
 }
+
+/// The point of piece `piece` of chain `chain` at parameter `t` (0 at its
+/// start, 1 at its end, in the chain's direction) and the clearance there,
+/// as `{x, y, clearance}` in `xyr[0..3]`.
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (chain or piece), `INVALID_ARGUMENT`
+/// (`t` outside `[0, 1]`, or a piece that reaches infinity); then `xyr` is
+/// untouched.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_medial_axis_piece_at(
+    axis: *const segvoronoi_medial_axis,
+    chain: usize,
+    piece: usize,
+    t: f64,
+    xyr: *mut f64,
+) -> segvoronoi_status {
+    require_non_null!(xyr);
+    with_chain(axis, chain, |axis, c| {
+        let Some(p) = c.pieces.get(piece) else { return segvoronoi_status::OutOfRange };
+        with_diagram(axis.diagram, |d| match d.piece_point_at(p, t) {
+            // three consecutive doubles: the alignment of an array of them
+            Some(point) => write_out(xyr.cast::<[f64; 3]>(), point),
+            None => segvoronoi_status::InvalidArgument,
+        })
+    })
+}

@@ -8,6 +8,7 @@
 //! as a graph.
 
 use crate::diagram::{Diagram, EdgeId, VertexId};
+use crate::geometry::edge_curve::EdgeCurve;
 use crate::geometry::Point;
 use crate::query::{EdgeEnd, EdgeShape, HalfEdge, Location};
 
@@ -148,6 +149,35 @@ impl Diagram {
         });
         let shape = self.edge_shape(h.edge()).expect("in range");
         Piece { edge: h.edge(), reversed: h.is_reversed(), ends, clearance, shape }
+    }
+
+    /// The point of a finite piece at parameter `t` (0 at its start, 1 at
+    /// its end, in the chain's direction; along the line of a straight
+    /// piece, along the directrix of a parabolic one) and the clearance
+    /// there: `[x, y, r]`. `None` for a piece reaching infinity or a `t`
+    /// outside `[0, 1]`.
+    pub fn piece_point_at(&self, piece: &Piece, t: f64) -> Option<[f64; 3]> {
+        if !(0.0..=1.0).contains(&t) {
+            return None;
+        }
+        let positions = piece.ends.map(|end| match end {
+            EdgeEnd::Vertex(v) => self.vertex(v).map(|v| v.position),
+            EdgeEnd::Infinite { .. } => None,
+        });
+        let [Some(from), Some(to)] = positions else { return None };
+        let f = self.scale.to_internal;
+        let [left, right] = self.edge(piece.edge)?.sites.map(|s| self.sites[s.index()]);
+        let curve = EdgeCurve::between(&left.scaled(f), &right.scaled(f), from.scaled(f), to.scaled(f));
+        let q = curve.point(t).scaled(self.scale.to_input);
+        // the ends exactly, as the vertices have them
+        let q = if t == 0.0 {
+            from
+        } else if t == 1.0 {
+            to
+        } else {
+            q
+        };
+        Some([q.x, q.y, left.distance(q)])
     }
 
     /// The points of a finite piece within `tolerance` of its curve (as
