@@ -225,6 +225,18 @@ pub unsafe extern "C" fn segvoronoi_diagram_site(
     })
 }
 
+/// An edge's end as C sees it: the vertex and its position, or
+/// `SEGVORONOI_NO_VERTEX` and the unit direction to infinity.
+pub(super) fn edge_end(d: &Diagram, end: EdgeEnd) -> segvoronoi_edge_end {
+    match end {
+        EdgeEnd::Vertex(v) => {
+            let p = d.vertex(v).map(|v| v.position).unwrap_or_default();
+            segvoronoi_edge_end { vertex: v.index() as u32, x: p.x, y: p.y }
+        }
+        EdgeEnd::Infinite { direction } => segvoronoi_edge_end { vertex: SEGVORONOI_NO_VERTEX, x: direction.x, y: direction.y },
+    }
+}
+
 /// The site id of a C index, if in range.
 pub(super) fn site_id(d: &Diagram, index: usize) -> Option<SiteId> {
     (index < d.site_count()).then(|| SiteId::from_index(index))
@@ -364,16 +376,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge(
         let Some(e) = (index < d.edge_count()).then(|| d.edge(EdgeId::from_index(index))).flatten() else {
             return segvoronoi_status::OutOfRange;
         };
-        let end = |end: EdgeEnd| match end {
-            EdgeEnd::Vertex(v) => {
-                let p = d.vertex(v).map(|v| v.position).unwrap_or_default();
-                segvoronoi_edge_end { vertex: v.index() as u32, x: p.x, y: p.y }
-            }
-            EdgeEnd::Infinite { direction } => {
-                segvoronoi_edge_end { vertex: SEGVORONOI_NO_VERTEX, x: direction.x, y: direction.y }
-            }
-        };
-        let (sites, ends) = (e.sites.map(|s| s.index() as u32), e.ends.map(end));
+        let (sites, ends) = (e.sites.map(|s| s.index() as u32), e.ends.map(|end| edge_end(d, end)));
         let is_separator = d.is_separator(e.id).unwrap_or(false);
         write_versioned(out, segvoronoi_edge { sites, ends, is_infinite: e.is_infinite(), is_separator, ..Default::default() })
     })

@@ -2,10 +2,10 @@
 //! the sampling of a chain as `(x, y, clearance)`. Delegates to
 //! `Diagram::medial_axis` and `Diagram::sample_chain`.
 
-use super::diagram::{segvoronoi_diagram, segvoronoi_edge_end, with_diagram};
+use super::diagram::{edge_end, segvoronoi_diagram, segvoronoi_edge_end, with_diagram};
 use super::out::{require_buffer, versioned, write_buffer, write_out, write_versioned};
 use super::plumbing::{guard, guard_or, require_non_null, segvoronoi_status};
-use crate::{EdgeEnd, MedialAxis};
+use crate::{Diagram, MedialAxis};
 
 /// A medial axis (`segvoronoi_diagram_medial_axis`). Opaque and immutable;
 /// it refers to its diagram, so free it (`segvoronoi_medial_axis_free`)
@@ -82,6 +82,20 @@ fn with_chain(
     })
 }
 
+/// Runs `f` on piece `piece` of chain `chain` and the axis's diagram:
+/// `OUT_OF_RANGE` past the chains or the chain's pieces.
+fn with_piece(
+    axis: *const segvoronoi_medial_axis,
+    chain: usize,
+    piece: usize,
+    f: impl FnOnce(&Diagram, &crate::Piece) -> segvoronoi_status,
+) -> segvoronoi_status {
+    with_chain(axis, chain, |axis, c| match c.pieces.get(piece) {
+        Some(p) => with_diagram(axis.diagram, |d| f(d, p)),
+        None => segvoronoi_status::OutOfRange,
+    })
+}
+
 /// The number of chains; 0 for NULL.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_medial_axis_chain_count(axis: *const segvoronoi_medial_axis) -> usize {
@@ -122,27 +136,15 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_piece(
     out: *mut segvoronoi_piece,
 ) -> segvoronoi_status {
     require_non_null!(out);
-    with_chain(axis, chain, |axis, c| {
-        let Some(p) = c.pieces.get(piece) else { return segvoronoi_status::OutOfRange };
-        with_diagram(axis.diagram, |d| {
-            let end = |end: EdgeEnd| match end {
-                EdgeEnd::Vertex(v) => {
-                    let position = d.vertex(v).map(|v| v.position).unwrap_or_default();
-                    segvoronoi_edge_end { vertex: v.index() as u32, x: position.x, y: position.y }
-                }
-                EdgeEnd::Infinite { direction } => {
-                    segvoronoi_edge_end { vertex: super::diagram::SEGVORONOI_NO_VERTEX, x: direction.x, y: direction.y }
-                }
-            };
-            let value = segvoronoi_piece {
-                edge: p.edge.index() as u32,
-                reversed: p.reversed,
-                ends: p.ends.map(end),
-                clearance: p.clearance,
-                ..Default::default()
-            };
-            write_versioned(out, value)
-        })
+    with_piece(axis, chain, piece, |d, p| {
+        let value = segvoronoi_piece {
+            edge: p.edge.index() as u32,
+            reversed: p.reversed,
+            ends: p.ends.map(|end| edge_end(d, end)),
+            clearance: p.clearance,
+            ..Default::default()
+        };
+        write_versioned(out, value)
     })
 }
 
@@ -190,12 +192,9 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_piece_at(
     xyr: *mut f64,
 ) -> segvoronoi_status {
     require_non_null!(xyr);
-    with_chain(axis, chain, |axis, c| {
-        let Some(p) = c.pieces.get(piece) else { return segvoronoi_status::OutOfRange };
-        with_diagram(axis.diagram, |d| match d.piece_point_at(p, t) {
-            // three consecutive doubles: the alignment of an array of them
-            Some(point) => write_out(xyr.cast::<[f64; 3]>(), point),
-            None => segvoronoi_status::InvalidArgument,
-        })
+    with_piece(axis, chain, piece, |d, p| match d.piece_point_at(p, t) {
+        // three consecutive doubles: the alignment of an array of them
+        Some(point) => write_out(xyr.cast::<[f64; 3]>(), point),
+        None => segvoronoi_status::InvalidArgument,
     })
 }
