@@ -8,7 +8,6 @@
 //! as a graph.
 
 use crate::diagram::{Diagram, EdgeId, VertexId};
-use crate::geometry::edge_curve::EdgeCurve;
 use crate::geometry::Point;
 use crate::query::{EdgeEnd, EdgeShape, HalfEdge, Location};
 
@@ -165,10 +164,7 @@ impl Diagram {
             EdgeEnd::Infinite { .. } => None,
         });
         let [Some(from), Some(to)] = positions else { return None };
-        let f = self.scale.to_internal;
-        let [left, right] = self.edge(piece.edge)?.sites.map(|s| self.sites[s.index()]);
-        let curve = EdgeCurve::between(&left.scaled(f), &right.scaled(f), from.scaled(f), to.scaled(f));
-        let q = curve.point(t).scaled(self.scale.to_input);
+        let q = self.edge_curve(piece.edge, from, to)?.point(t).scaled(self.scale.to_input);
         // the ends exactly, as the vertices have them
         let q = if t == 0.0 {
             from
@@ -177,6 +173,7 @@ impl Diagram {
         } else {
             q
         };
+        let left = self.sites[self.edge(piece.edge)?.sites[0].index()];
         Some([q.x, q.y, left.distance(q)])
     }
 

@@ -200,11 +200,18 @@ impl Diagram {
     /// the arc is then a straight piece to within rounding).
     fn arc(&self, id: EdgeId, start: Point, end: Point) -> Option<(Parabola, f64, f64)> {
         let EdgeShape::Parabola { .. } = self.edge_shape(id)? else { return None };
-        let f = self.scale.to_internal;
-        let [first, second] = self.edge(id)?.sites.map(|s| self.sites[s.index()].scaled(f));
-        match EdgeCurve::between(&first, &second, start.scaled(f), end.scaled(f)) {
+        match self.edge_curve(id, start, end)? {
             EdgeCurve::Parabola { parabola, from, to } if from.is_finite() && to.is_finite() => Some((parabola, from, to)),
             _ => None,
         }
+    }
+
+    /// The curve of edge `id` from `start` to `end` (input coordinates, in
+    /// either direction along it), in internal coordinates (the diagram's
+    /// power-of-two scale); `None` if the id is out of range.
+    pub(crate) fn edge_curve(&self, id: EdgeId, start: Point, end: Point) -> Option<EdgeCurve> {
+        let f = self.scale.to_internal;
+        let [first, second] = self.edge(id)?.sites.map(|s| self.sites[s.index()].scaled(f));
+        Some(EdgeCurve::between(&first, &second, start.scaled(f), end.scaled(f)))
     }
 }
