@@ -307,6 +307,10 @@ segvoronoi_cgal_fixture_test(search_parallel_snapped_4seg)
 # a point 2.5e-324 off the line of a segment (its x a subnormal): ours was one-dimensional (no faces); agrees since
 # inputs with coordinates near the subnormal range are scaled up (geometry/scale.rs)
 segvoronoi_cgal_fixture_test(search_denormal_point_off_line)
+# 1e-300 beside 16 (magnitudes spanning 2^1001): scaled up to 2^100 its far
+# vertex (radius 16^2/1e-300) overflowed and was placed among its sites, with
+# the wrong topology; a smaller scale-up keeps it finite (geometry/scale.rs)
+segvoronoi_cgal_fixture_test(tiny_1e-300_beside_16_2seg)
 # two segments, one endpoint's y the least subnormal (-4.9e-324): vertices placed 4.6 off
 segvoronoi_cgal_fixture_test(search_denormal_2seg)
 # a chain of two segments with a kink of 1e-16 rad (endpoints moved by ulps) and a third segment: a vertex 0.6 off

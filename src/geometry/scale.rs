@@ -8,7 +8,9 @@
 //! by a few ulps) is scaled up instead, its largest magnitude to about
 //! `2^100`: a product of such a coordinate with an ordinary one would
 //! otherwise underflow, and the predicates that sum such products would
-//! lose the term that decides them. Nothing is translated, because a
+//! lose the term that decides them. Where the magnitudes span less than
+//! about `2^1000`, a smaller scale-up also keeps the far Voronoi vertices
+//! such inputs have within `f64` (`tiny_input_target`). Nothing is translated, because a
 //! translation rounds and would change the answer to near-degenerate
 //! questions.
 
@@ -19,7 +21,8 @@ const LOWER: f64 = 1.0 / UPPER;
 /// Below this, a nonzero magnitude is near the subnormal range (about
 /// `2^-897`).
 const TINY: f64 = 1e-270;
-/// Where an input with tiny magnitudes puts its largest one: `2^100`, with
+/// Where an input with tiny magnitudes puts its largest one when no scale
+/// also keeps its far vertices finite (`tiny_input_target`): `2^100`, with
 /// room for degree-4 predicates (`2^400`) below overflow.
 const TINY_INPUT_TARGET: i32 = 100;
 
@@ -54,8 +57,12 @@ impl Scale {
         }
         let scale = if (LOWER..=UPPER).contains(&max_abs) { Scale::IDENTITY } else { Scale::to_unit(max_abs) };
         let tiny_left = min_abs > 0.0 && min_abs * scale.to_internal < TINY;
-        if tiny_left && max_abs * scale.to_internal < pow2(TINY_INPUT_TARGET) {
-            let e = (exponent_of(max_abs) - TINY_INPUT_TARGET).clamp(-1022, 1022);
+        if !tiny_left {
+            return scale;
+        }
+        let target = tiny_input_target(exponent_of(max_abs) - exponent_of(min_abs));
+        if max_abs * scale.to_internal < pow2(target) {
+            let e = (exponent_of(max_abs) - target).clamp(-1022, 1022);
             return Scale { to_internal: pow2(-e), to_input: pow2(e) };
         }
         scale
@@ -75,6 +82,28 @@ impl Scale {
 
     pub fn is_identity(&self) -> bool {
         self.to_internal == 1.0
+    }
+}
+
+/// Where an input whose magnitudes span `2^span` puts its largest one, as
+/// `2^target`. Two needs pull apart. The products of the tiniest
+/// coordinate with three ordinary ones (degree-4 predicates) must stay out
+/// of the subnormal range: `3 · target + (target − span) ≥ −1022`. The far
+/// vertices of such an input must stay finite: a point `2^-span` of the
+/// size off a segment's line has a circle with the segment's end of radius
+/// about `2^span` sizes, so `target + span ≤ 1023`. Between the two bounds
+/// (spans up to about 1,000: a coordinate of 1e-300 next to 16) the middle
+/// is taken, with a margin of `2^8` either side; beyond them no scale serves
+/// both, the products are kept (`TINY_INPUT_TARGET`), and a far vertex lies
+/// beyond `f64`.
+fn tiny_input_target(span: i32) -> i32 {
+    const MARGIN: i32 = 8;
+    let lowest = (span - 1022 + 3).div_euclid(4) + MARGIN;
+    let highest = 1023 - span - MARGIN;
+    if lowest <= highest {
+        (lowest + highest) / 2
+    } else {
+        TINY_INPUT_TARGET
     }
 }
 
@@ -115,6 +144,18 @@ mod tests {
         assert_eq!(s.to_internal * s.to_input, 1.0);
         // not when the smallest magnitude is ordinary
         assert!(Scale::for_magnitudes(20.0, 1e-30).is_identity());
+    }
+
+    #[test]
+    fn a_tiny_coordinate_within_reach_of_the_far_vertices_is_barely_scaled() {
+        // 1e-300 next to 16: scaled up to 2^100 the far vertex of a point
+        // that far off a segment's line (a radius of 16^2/1e-300 sizes)
+        // would overflow; the middle of the two bounds keeps it finite
+        let s = Scale::for_magnitudes(16.0, 1e-300);
+        let target = exponent_of(16.0 * s.to_internal);
+        assert!((1..=20).contains(&target), "{target}");
+        assert!(1e-300 * s.to_internal * (16.0 * s.to_internal).powi(3) >= f64::MIN_POSITIVE);
+        assert!((16.0 * s.to_internal).powi(2) / (1e-300 * s.to_internal) < f64::MAX / 1e3);
     }
 
     #[test]
