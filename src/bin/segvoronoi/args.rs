@@ -6,6 +6,8 @@ use std::path::PathBuf;
 /// The usage text printed by `--help`.
 pub const USAGE: &str = "\
 Usage: segvoronoi [INPUT] [--svg OUT.svg] [--topology] [--voronoi-pairs] [--stats]
+                  [--medial-axis OUT.wkt|OUT.json] [--tolerance T]
+                  [--corner-angle DEG] [--prune-spurs K] [--max-inscribed-circle]
 
 Builds the Voronoi diagram of the points and line segments in INPUT.
 
@@ -17,21 +19,71 @@ point. Without INPUT a built-in demo (a jittered ring, a cluster, collinear
 points, a grid of cocircular points, a repeated point, short segments and a
 polyline) is used.
 
+INPUT is read as WKT instead when its name ends in `.wkt` or its text
+starts with a WKT keyword: POINT, MULTIPOINT, LINESTRING, MULTILINESTRING,
+POLYGON, MULTIPOLYGON, GEOMETRYCOLLECTION, in any case, EMPTY allowed, an
+optional Z, M or ZM dimension (the extra ordinates are ignored), any number
+of geometries one after the other. Each polygon's rings bound the domain
+(even-odd: a ring inside a ring is a hole; orientation does not matter);
+linestrings and points are obstacles. Rings must not cross themselves or
+each other (the message names the polygons and rings).
+
 Options:
   --svg OUT.svg      draw the diagram: edges (parabolic arcs as exact
                      quadratic Bezier curves), vertices (small dots), sites
-                     (dots; segments as thick lines)
+                     (dots; segments as thick lines). With polygons also the
+                     domain (lightly shaded, even-odd), the medial axis
+                     (thick, coloured by clearance from teal at 0 to
+                     magenta at the largest clearance, linear in RGB) and
+                     the largest inscribed circle (dashed)
   --topology         print the canonical topology text on standard output
   --voronoi-pairs    add the VPAIRS and VVERTICES sections (implies --topology)
   --stats            print key=value statistics on standard error
+  --medial-axis OUT  write the medial axis (the Voronoi edges inside the
+                     domain that are not separators; without polygons every
+                     such edge). OUT.wkt: one MULTILINESTRING Z, a linestring
+                     per chain sampled within the tolerance, z the clearance
+                     at each point; the pieces of a chain that reach
+                     infinity (only without polygons) are cut off, the rest
+                     of the chain is kept. OUT.json: the exact chains, each
+                     with `closed` and its pieces: Voronoi edge id, kind
+                     (line or parabola), both ends (a vertex id and point,
+                     or a direction to infinity), the clearance at both
+                     ends (null at infinity), for a parabola its focus (the
+                     point site) and directrix (the segment's endpoints)
+  --tolerance T      chord tolerance of every sampled output, in input
+                     units (default 1e-4 times the input's bounding-box
+                     diagonal)
+  --corner-angle DEG leave out the medial-axis branches that run into
+                     boundary corners sharper than DEG degrees... see below
+  --prune-spurs K    leave out spurs: branches ending at the boundary that
+                     are short against their clearance (factor K)
+                     The two filters shape the axis of --medial-axis and
+                     --svg.
+  --max-inscribed-circle
+                     print the largest disk inside the domain, `x y r`, on
+                     standard output (exit status 1 without polygons)
   -h, --help         print this help
   -V, --version      print the version
 
+Example: segvoronoi glyph.wkt --medial-axis axis.wkt --svg axis.svg
+
 Exit status: 0 on success, 1 when the library rejects the input (a
 non-finite coordinate, segments that cross or overlap, a point inside a
-segment: the message names the input indices) or an output cannot be
-written, 2 for usage errors and unreadable or malformed input.
+segment, rings that cross: the message names the input indices, polygons
+and rings) or an output cannot be written, 2 for usage errors and
+unreadable or malformed input (for WKT the message names the line and
+column).
 ";
+
+/// The format of `--medial-axis`, from its file name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AxisFormat {
+    /// Sampled: one `MULTILINESTRING Z`.
+    Wkt,
+    /// The exact chains.
+    Json,
+}
 
 /// Where the input comes from.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -45,17 +97,26 @@ pub enum Source {
 }
 
 /// What to do with the diagram.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Options {
     pub source: Source,
     pub svg: Option<PathBuf>,
     pub topology: bool,
     pub voronoi_pairs: bool,
     pub stats: bool,
+    /// `--medial-axis`: where and in which format.
+    pub medial_axis: Option<(PathBuf, AxisFormat)>,
+    /// `--tolerance`: positive and finite.
+    pub tolerance: Option<f64>,
+    /// `--corner-angle`, in degrees.
+    pub corner_angle: Option<f64>,
+    /// `--prune-spurs`.
+    pub prune_spurs: Option<f64>,
+    pub max_inscribed_circle: bool,
 }
 
 /// The outcome of parsing: run, or answer `--help` / `--version` and stop.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Command {
     Run(Options),
     Help,
@@ -65,7 +126,18 @@ pub enum Command {
 /// Parses the arguments after the program name. The error is a message for
 /// the user.
 pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String> {
-    let mut options = Options { source: Source::Demo, svg: None, topology: false, voronoi_pairs: false, stats: false };
+    let mut options = Options {
+        source: Source::Demo,
+        svg: None,
+        topology: false,
+        voronoi_pairs: false,
+        stats: false,
+        medial_axis: None,
+        tolerance: None,
+        corner_angle: None,
+        prune_spurs: None,
+        max_inscribed_circle: false,
+    };
     let mut input: Option<String> = None;
     let mut args = args.into_iter();
     let mut only_positional = false;
@@ -77,7 +149,29 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
             input = Some(arg);
             continue;
         }
-        match arg.as_str() {
+        // `--flag=value` and `--flag value` alike.
+        let (flag, inline) = match arg.split_once('=') {
+            Some((flag, value)) if flag.starts_with("--") => (flag, Some(value.to_string())),
+            _ => (arg.as_str(), None),
+        };
+        let takes_value = matches!(flag, "--svg" | "--medial-axis" | "--tolerance" | "--corner-angle" | "--prune-spurs");
+        let value = match inline {
+            _ if !takes_value => {
+                if inline.is_some() {
+                    return Err(format!("{flag} takes no value"));
+                }
+                String::new()
+            }
+            Some(value) => value,
+            None => args.next().unwrap_or_default(),
+        };
+        if takes_value && value.is_empty() {
+            return Err(format!(
+                "{flag} needs {}",
+                if flag == "--svg" || flag == "--medial-axis" { "a file name" } else { "a number" }
+            ));
+        }
+        match flag {
             "--" => only_positional = true,
             "-h" | "--help" => return Ok(Command::Help),
             "-V" | "--version" => return Ok(Command::Version),
@@ -87,15 +181,15 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
                 options.voronoi_pairs = true;
             }
             "--stats" => options.stats = true,
-            "--svg" => {
-                let path = args.next().ok_or("--svg needs a file name")?;
-                options.svg = Some(PathBuf::from(path));
+            "--max-inscribed-circle" => options.max_inscribed_circle = true,
+            "--svg" => options.svg = Some(PathBuf::from(value)),
+            "--medial-axis" => options.medial_axis = Some((PathBuf::from(&value), axis_format(&value)?)),
+            "--tolerance" => options.tolerance = Some(number(flag, &value, |t| t > 0.0, "a positive number")?),
+            "--corner-angle" => {
+                options.corner_angle = Some(number(flag, &value, |a| (0.0..=180.0).contains(&a), "an angle from 0 to 180")?)
             }
-            _ => match arg.strip_prefix("--svg=") {
-                Some(path) if !path.is_empty() => options.svg = Some(PathBuf::from(path)),
-                Some(_) => return Err("--svg needs a file name".into()),
-                None => return Err(format!("unknown option {arg:?}")),
-            },
+            "--prune-spurs" => options.prune_spurs = Some(number(flag, &value, |k| k >= 0.0, "a number not below 0")?),
+            _ => return Err(format!("unknown option {arg:?}")),
         }
     }
     options.source = match input.as_deref() {
@@ -104,6 +198,24 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
         Some(path) => Source::File(PathBuf::from(path)),
     };
     Ok(Command::Run(options))
+}
+
+/// The format of `--medial-axis`, by the file name's extension.
+fn axis_format(path: &str) -> Result<AxisFormat, String> {
+    let extension = std::path::Path::new(path).extension().map(|e| e.to_ascii_lowercase());
+    match extension.as_ref().and_then(|e| e.to_str()) {
+        Some("wkt") => Ok(AxisFormat::Wkt),
+        Some("json") => Ok(AxisFormat::Json),
+        _ => Err(format!("--medial-axis writes .wkt or .json, not {path:?}")),
+    }
+}
+
+/// A finite number for `flag` that `ok` accepts; `what` says which.
+fn number(flag: &str, text: &str, ok: impl Fn(f64) -> bool, what: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(v) if v.is_finite() && ok(v) => Ok(v),
+        _ => Err(format!("{flag} needs {what}, not {text:?}")),
+    }
 }
 
 #[cfg(test)]
@@ -122,6 +234,7 @@ mod tests {
         let o = run(&[]).unwrap();
         assert_eq!(o.source, Source::Demo);
         assert!(o.svg.is_none() && !o.topology && !o.voronoi_pairs && !o.stats);
+        assert!(o.medial_axis.is_none() && o.tolerance.is_none() && !o.max_inscribed_circle);
     }
 
     #[test]
@@ -151,6 +264,25 @@ mod tests {
         assert!(run(&["--svg="]).unwrap_err().contains("--svg"));
         assert!(run(&["--frobnicate"]).unwrap_err().contains("--frobnicate"));
         assert!(run(&["a", "b"]).unwrap_err().contains("more than one input"));
+        assert!(run(&["--stats=1"]).unwrap_err().contains("takes no value"));
+        assert!(run(&["--medial-axis", "axis.svg"]).unwrap_err().contains(".wkt or .json"));
+        assert!(run(&["--medial-axis"]).unwrap_err().contains("a file name"));
+        assert!(run(&["--tolerance", "0"]).unwrap_err().contains("positive"));
+        assert!(run(&["--tolerance=inf"]).unwrap_err().contains("positive"));
+        assert!(run(&["--tolerance"]).unwrap_err().contains("a number"));
+        assert!(run(&["--corner-angle", "181"]).unwrap_err().contains("0 to 180"));
+        assert!(run(&["--prune-spurs", "-1"]).unwrap_err().contains("--prune-spurs"));
+    }
+
+    #[test]
+    fn medial_axis_options() {
+        let o = run(&["g.wkt", "--medial-axis", "a.WKT", "--tolerance=0.01", "--max-inscribed-circle"]).unwrap();
+        assert_eq!(o.medial_axis, Some((PathBuf::from("a.WKT"), AxisFormat::Wkt)));
+        assert_eq!(o.tolerance, Some(0.01));
+        assert!(o.max_inscribed_circle);
+        let o = run(&["--medial-axis=a.json", "--corner-angle", "45", "--prune-spurs=1.5"]).unwrap();
+        assert_eq!(o.medial_axis, Some((PathBuf::from("a.json"), AxisFormat::Json)));
+        assert_eq!((o.corner_angle, o.prune_spurs), (Some(45.0), Some(1.5)));
     }
 
     #[test]

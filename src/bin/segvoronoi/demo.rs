@@ -5,7 +5,7 @@
 //! jittered grid, a long one alone, and a zigzag polyline whose segments
 //! share endpoints.
 
-use crate::input::Input;
+use segvoronoi::boost_text::Input;
 
 // The demo must not depend on a random-number crate or on the platform:
 // the library's SplitMix64.

@@ -1,20 +1,24 @@
 //! `segvoronoi`: builds the Voronoi diagram of the points and line segments
-//! in a Boost.Polygon voronoi text file (or of a built-in demo) and writes an
-//! SVG picture, the canonical topology text and statistics. `segvoronoi
-//! --help` for usage.
+//! in a Boost.Polygon voronoi text file or of the polygons, linestrings and
+//! points of a WKT file (or of a built-in demo) and writes an SVG picture,
+//! the canonical topology text, statistics, the medial axis and the largest
+//! inscribed circle. `segvoronoi --help` for usage.
 
 mod args;
 mod demo;
+mod input;
+mod medial_output;
 mod stats;
 mod svg;
+mod wkt;
 
-use std::io::{Read, Write};
+use std::io::Write;
+use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use args::{Command, Options, Source};
-use segvoronoi::boost_text as input;
-use segvoronoi::{Builder, TopologyOptions};
+use args::{AxisFormat, Command, Options};
+use segvoronoi::{Builder, Diagram, MedialAxis, TopologyOptions};
 
 /// Why the program stops early: an exit status and a message for the user.
 struct Failure {
@@ -49,24 +53,48 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
         Ok(Command::Version) => return print(&format!("segvoronoi {}\n", segvoronoi::VERSION)),
         Err(message) => return Err(bad_input(format!("{message}\nTry 'segvoronoi --help'."))),
     };
-    let (name, input) = read_input(&options.source)?;
+    let (name, input) = input::read(&options.source)?;
 
-    // Library errors (a non-finite coordinate, crossing segments) name the
-    // input indices: exit status 1 with that message.
+    // Library errors (a non-finite coordinate, crossing segments or rings,
+    // a ring of fewer than three points) name the input indices: exit
+    // status 1 with that message.
     let mut builder = Builder::new();
-    builder.add_points(input.points).map_err(|e| failed(format!("{name}: {e}")))?;
-    let segments = input.segments.into_iter().map(|[x1, y1, x2, y2]| [[x1, y1], [x2, y2]]);
-    builder.add_segments(segments).map_err(|e| failed(format!("{name}: {e}")))?;
+    input.add_to(&mut builder).map_err(|e| failed(format!("{name}: {e}")))?;
     // Only the construction is timed: not reading, not writing.
     let start = Instant::now();
     let diagram = builder.build().map_err(|e| failed(format!("{name}: {e}")))?;
     let build_s = start.elapsed().as_secs_f64();
+    // Before any output, so that a failed run writes nothing.
+    if options.max_inscribed_circle && !diagram.has_domain() {
+        return Err(failed(format!("{name}: --max-inscribed-circle needs a polygon in the input, and there is none")));
+    }
 
+    let tolerance = options.tolerance.unwrap_or_else(|| input.default_tolerance());
+    // The axis is computed once, for the file and the picture alike.
+    let needs_axis = options.medial_axis.is_some() || (options.svg.is_some() && diagram.has_domain());
+    let axis = if needs_axis { medial_axis(&diagram, &options)? } else { MedialAxis::default() };
     if let Some(path) = &options.svg {
-        std::fs::write(path, svg::render(&diagram)).map_err(|e| failed(format!("cannot write {}: {e}", path.display())))?;
+        let rings = input.rings();
+        let domain = svg::Domain { rings: &rings, axis: &axis, tolerance };
+        write_file(path, &svg::render(&diagram, diagram.has_domain().then_some(&domain)))?;
+    }
+    if let Some((path, format)) = &options.medial_axis {
+        let text = match format {
+            AxisFormat::Wkt => medial_output::wkt(&diagram, &axis, tolerance),
+            AxisFormat::Json => medial_output::json(&diagram, &axis),
+        };
+        write_file(path, &text)?;
     }
     if options.topology {
         print(&diagram.topology(TopologyOptions::default().with_voronoi_pairs(options.voronoi_pairs)))?;
+    }
+    if options.max_inscribed_circle {
+        // A domain whose every vertex is on its boundary has no inside
+        // vertex; the library's domains always have one, but say so rather
+        // than panic.
+        let (centre, r) =
+            diagram.max_inscribed_circle().ok_or_else(|| failed(format!("{name}: the domain has no inscribed circle")))?;
+        print(&format!("{} {} {}\n", centre.x, centre.y, r))?;
     }
     if options.stats {
         eprint!("{}", stats::report(&diagram, build_s));
@@ -74,7 +102,7 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     if !wants_output(&options) {
         // Nothing asked for: say what was built and how to see it.
         print(&format!(
-            "{name}: {} sites, {} vertices, {} edges (see --svg, --topology, --stats)\n",
+            "{name}: {} sites, {} vertices, {} edges (see --svg, --topology, --stats, --medial-axis)\n",
             diagram.site_count(),
             diagram.vertex_count(),
             diagram.edge_count()
@@ -83,27 +111,22 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     Ok(())
 }
 
-fn wants_output(options: &Options) -> bool {
-    options.svg.is_some() || options.topology || options.stats
+/// The medial axis, filtered as the options ask.
+fn medial_axis(diagram: &Diagram, options: &Options) -> Result<MedialAxis, Failure> {
+    // The filters are being added to the library; until then they are
+    // refused rather than silently ignored.
+    if options.corner_angle.is_some() || options.prune_spurs.is_some() {
+        return Err(failed("--corner-angle and --prune-spurs are not available in this build yet".into()));
+    }
+    Ok(diagram.medial_axis())
 }
 
-/// The points and segments of the chosen input and a name for it in messages.
-fn read_input(source: &Source) -> Result<(String, input::Input), Failure> {
-    let (name, bytes) = match source {
-        Source::Demo => return Ok(("demo input".into(), demo::input())),
-        Source::Stdin => {
-            let mut bytes = Vec::new();
-            std::io::stdin().read_to_end(&mut bytes).map_err(|e| bad_input(format!("cannot read standard input: {e}")))?;
-            ("standard input".to_string(), bytes)
-        }
-        Source::File(path) => {
-            let bytes = std::fs::read(path).map_err(|e| bad_input(format!("cannot read {}: {e}", path.display())))?;
-            (path.display().to_string(), bytes)
-        }
-    };
-    // Invalid UTF-8 becomes U+FFFD and so a parse error on the right line.
-    let input = input::parse(&String::from_utf8_lossy(&bytes)).map_err(|e| bad_input(format!("{name}: {e}")))?;
-    Ok((name, input))
+fn wants_output(options: &Options) -> bool {
+    options.svg.is_some() || options.topology || options.stats || options.medial_axis.is_some() || options.max_inscribed_circle
+}
+
+fn write_file(path: &Path, text: &str) -> Result<(), Failure> {
+    std::fs::write(path, text).map_err(|e| failed(format!("cannot write {}: {e}", path.display())))
 }
 
 /// Writes to standard output; a closed pipe is an output error, not a panic.

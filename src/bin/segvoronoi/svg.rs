@@ -3,7 +3,12 @@
 //! quadratic Bézier curves the library gives (`<path d="M .. Q .. .."/>`),
 //! rays and lines clipped to the picture; vertices as small dots, point
 //! sites as bigger dots of another colour, segment sites as thick lines of
-//! that colour (their endpoints are point sites: dots).
+//! that colour (their endpoints are point sites: dots). With a domain
+//! (polygons) also, beneath the edges, its inside lightly shaded (the rings
+//! filled even-odd, as the library's domain), and above them the medial
+//! axis, thick, each sampled stretch coloured by its clearance (a linear
+//! ramp in RGB from teal at clearance 0 to magenta at the largest), and the
+//! largest inscribed circle, dashed.
 //!
 //! All geometry is done in "normalised" coordinates, the input multiplied by
 //! an exact power of two that brings the largest magnitude near 1, so that
@@ -13,7 +18,9 @@
 
 use std::fmt::Write;
 
-use segvoronoi::{Diagram, Edge, EdgeEnd, Point, Site};
+use segvoronoi::{Diagram, Edge, EdgeEnd, MedialAxis, Point, Site};
+
+use crate::medial_output;
 
 /// The longer side of the picture, in pixels.
 const SIZE_PX: f64 = 800.0;
@@ -30,6 +37,22 @@ const VERTEX_RADIUS: f64 = 2.0;
 const SITE_RADIUS: f64 = 3.5;
 /// Stroke width of segment sites, in pixels.
 const SEGMENT_WIDTH: f64 = 3.0;
+const DOMAIN_FILL: &str = "#e4ecf4";
+/// The clearance ramp's ends: clearance 0 and the largest.
+const RAMP: [[f64; 3]; 2] = [[0.0, 158.0, 158.0], [200.0, 0.0, 125.0]];
+/// Stroke width of the medial axis, in pixels.
+const AXIS_WIDTH: f64 = 3.5;
+const CIRCLE_COLOUR: &str = "#444444";
+
+/// What the picture adds when the input has polygons.
+pub struct Domain<'a> {
+    /// Every ring of every polygon.
+    pub rings: &'a [Vec<[f64; 2]>],
+    /// The medial axis to draw (filtered as the command line asks).
+    pub axis: &'a MedialAxis,
+    /// Chord tolerance of its samples, in input units.
+    pub tolerance: f64,
+}
 
 /// Maps input coordinates to normalised ones and those to pixels.
 struct Frame {
@@ -189,8 +212,8 @@ fn site_middle(site: Site) -> Point {
     }
 }
 
-/// The SVG document for a diagram.
-pub fn render(diagram: &Diagram) -> String {
+/// The SVG document for a diagram, with its domain when there is one.
+pub fn render(diagram: &Diagram, domain: Option<&Domain>) -> String {
     // The picture frames every point site; segment endpoints are point sites.
     let points: Vec<Point> = diagram.site_ids().filter_map(|s| diagram.site(s)?.as_point()).collect();
     let segments: Vec<(Point, Point)> = diagram
@@ -216,6 +239,9 @@ pub fn render(diagram: &Diagram) -> String {
         diagram.edge_count()
     );
     let _ = writeln!(out, r#"<rect width="100%" height="100%" fill="white"/>"#);
+    if let Some(domain) = domain {
+        write_domain(&mut out, &frame, domain.rings);
+    }
 
     let _ = writeln!(out, r#"<g id="edges" stroke="{EDGE_COLOUR}" stroke-width="1.2" stroke-linecap="round" fill="none">"#);
     for edge in diagram.edges() {
@@ -234,6 +260,10 @@ pub fn render(diagram: &Diagram) -> String {
         }
     }
     let _ = writeln!(out, "</g>");
+
+    if let Some(domain) = domain {
+        write_axis(&mut out, &frame, diagram, domain);
+    }
 
     let _ = writeln!(out, r#"<g id="vertices" fill="{VERTEX_COLOUR}">"#);
     for v in diagram.vertices() {
@@ -259,6 +289,63 @@ pub fn render(diagram: &Diagram) -> String {
     let _ = writeln!(out, "</g>");
     out.push_str("</svg>\n");
     out
+}
+
+/// The domain's inside: one path of every ring, filled even-odd.
+fn write_domain(out: &mut String, frame: &Frame, rings: &[Vec<[f64; 2]>]) {
+    let mut d = String::new();
+    for ring in rings {
+        let pixels: Vec<(f64, f64)> = ring.iter().filter_map(|&[x, y]| frame.pixel(frame.unit(Point::new(x, y)))).collect();
+        for (k, (x, y)) in pixels.iter().enumerate() {
+            let _ = write!(d, "{}{x:.2} {y:.2} ", if k == 0 { "M " } else { "L " });
+        }
+        if !pixels.is_empty() {
+            d.push_str("Z ");
+        }
+    }
+    let _ = writeln!(out, r#"<path id="domain" fill="{DOMAIN_FILL}" fill-rule="evenodd" stroke="none" d="{}"/>"#, d.trim_end());
+}
+
+/// The medial axis, sampled as `--medial-axis` samples it (rays cut), each
+/// stretch between two samples coloured by the clearance at its middle;
+/// then the largest inscribed circle.
+fn write_axis(out: &mut String, frame: &Frame, diagram: &Diagram, domain: &Domain) {
+    let circle = diagram.max_inscribed_circle();
+    let chains: Vec<Vec<[f64; 3]>> =
+        domain.axis.chains.iter().filter_map(|c| medial_output::sample(diagram, c, domain.tolerance)).collect();
+    // The ramp's top: the largest clearance drawn, and at least the
+    // circle's, so that the centre of the largest disk is always magenta.
+    let top = chains.iter().flatten().fold(circle.map_or(0.0, |(_, r)| r), |m, p| m.max(p[2]));
+    let _ = writeln!(
+        out,
+        r#"<g id="medial-axis" stroke-width="{AXIS_WIDTH}" stroke-linecap="round" fill="none" data-max-clearance="{top}">"#
+    );
+    for points in &chains {
+        for w in points.windows(2) {
+            let (p, q) = (frame.unit(Point::new(w[0][0], w[0][1])), frame.unit(Point::new(w[1][0], w[1][1])));
+            if let (Some((x1, y1)), Some((x2, y2))) = (frame.pixel(p), frame.pixel(q)) {
+                let colour = ramp(if top > 0.0 { (w[0][2] + w[1][2]) / 2.0 / top } else { 0.0 });
+                let _ = writeln!(out, r#"<line x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}" stroke="{colour}"/>"#);
+            }
+        }
+    }
+    let _ = writeln!(out, "</g>");
+    if let Some((centre, r)) = circle {
+        if let Some((x, y)) = frame.pixel(frame.unit(centre)) {
+            let r = r * frame.to_unit * frame.px;
+            let _ = writeln!(
+                out,
+                r#"<circle id="inscribed-circle" cx="{x:.2}" cy="{y:.2}" r="{r:.2}" fill="none" stroke="{CIRCLE_COLOUR}" stroke-width="1.5" stroke-dasharray="6 4"/>"#
+            );
+        }
+    }
+}
+
+/// The colour at `t` in `[0, 1]` of the clearance ramp (`RAMP`).
+fn ramp(t: f64) -> String {
+    let t = if t.is_finite() { t.clamp(0.0, 1.0) } else { 1.0 };
+    let [r, g, b] = [0, 1, 2].map(|k| (RAMP[0][k] + t * (RAMP[1][k] - RAMP[0][k])).round() as u8);
+    format!("#{r:02x}{g:02x}{b:02x}")
 }
 
 fn write_dot(out: &mut String, frame: &Frame, p: Point, radius: f64) {
@@ -345,7 +432,7 @@ mod tests {
         // vertical rays down from (0,2) and (4,2). A direction made up from
         // the sites' middles would tilt them.
         let d = with_segments(&[[2.0, 2.0]], &[[[0.0, 0.0], [4.0, 0.0]]]);
-        let svg = render(&d);
+        let svg = render(&d, None);
         check_numbers(&svg);
         let height: f64 = svg.split('"').nth(5).unwrap().parse().unwrap();
         let vertical: Vec<[f64; 4]> = lines(&svg).into_iter().filter(|l| (l[0] - l[2]).abs() < 1e-9).collect();
@@ -362,7 +449,7 @@ mod tests {
     #[test]
     fn parabolic_arcs_are_bezier_paths_from_vertex_to_vertex() {
         let d = with_segments(&[[2.0, 2.0], [6.0, 3.0]], &[[[0.0, 0.0], [4.0, 0.0]], [[1.0, 4.0], [3.0, 5.5]]]);
-        let svg = render(&d);
+        let svg = render(&d, None);
         check_numbers(&svg);
         let arcs: Vec<[Point; 3]> = d.edges().filter_map(|e| d.edge_bezier(e.id)).collect();
         assert!(arcs.len() >= 2);
@@ -384,7 +471,7 @@ mod tests {
 
     #[test]
     fn rays_reach_the_border_and_segments_stay_inside() {
-        let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0]]));
+        let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0]]), None);
         check_numbers(&svg);
         let (w, h) = (SIZE_PX, SIZE_PX);
         let on_border = |x: f64, y: f64| x.abs() < 0.01 || y.abs() < 0.01 || (x - w).abs() < 0.01 || (y - h).abs() < 0.01;
@@ -416,7 +503,7 @@ mod tests {
         ];
         for points in cases {
             let d = diagram(points);
-            let svg = render(&d);
+            let svg = render(&d, None);
             assert!(svg.starts_with("<svg"), "{svg}");
             check_numbers(&svg);
             assert_eq!(svg.matches("<circle").count(), d.site_count() + d.vertex_count(), "{points:?}: {svg}");
@@ -426,9 +513,30 @@ mod tests {
     }
 
     #[test]
+    fn a_domain_adds_its_shade_axis_and_circle() {
+        let rings = vec![vec![[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]], vec![[1.0, 0.5], [1.5, 0.5], [1.5, 1.0]]];
+        let mut b = Builder::new();
+        b.add_polygon(&rings).unwrap();
+        let d = b.build().unwrap();
+        let axis = d.medial_axis();
+        let svg = render(&d, Some(&Domain { rings: &rings, axis: &axis, tolerance: 1e-3 }));
+        check_numbers(&svg);
+        let path = svg.lines().find(|l| l.starts_with(r#"<path id="domain""#)).expect(&svg);
+        assert!(path.contains(r#"fill-rule="evenodd""#) && path.matches('M').count() == 2 && path.matches('Z').count() == 2);
+        let drawn = group(&svg, "medial-axis").matches("<line").count();
+        assert!(drawn > axis.chains.len(), "{drawn} stretches");
+        // the largest disk touches the hole or the outer ring: radius below 1
+        let circle = svg.lines().find(|l| l.starts_with(r#"<circle id="inscribed-circle""#)).expect(&svg);
+        let (_, r) = d.max_inscribed_circle().unwrap();
+        let frame = Frame::new(&d.site_ids().filter_map(|s| d.site(s)?.as_point()).collect::<Vec<_>>());
+        assert!(circle.contains(&format!(r#"r="{:.2}""#, r * frame.to_unit * frame.px)), "{circle}");
+        assert_eq!((ramp(0.0), ramp(1.0), ramp(f64::NAN)), ("#009e9e".into(), "#c8007d".into(), "#c8007d".into()));
+    }
+
+    #[test]
     fn collinear_bisectors_cross_the_whole_picture() {
         // Sites on the x axis: bisectors are vertical lines, top to bottom.
-        let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [6.0, 0.0]]));
+        let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [6.0, 0.0]]), None);
         let ls = lines(&svg);
         assert_eq!(ls.len(), 2);
         let height: f64 = svg.split('"').nth(5).unwrap().parse().unwrap();
