@@ -320,3 +320,184 @@ fn degenerate_inputs_draw_without_nan() {
         assert!(svg.starts_with("<svg") && !svg.contains("NaN") && !svg.contains("inf"), "{name}: {svg}");
     }
 }
+
+/// A square with a square hole off its centre, as WKT, and its rings.
+const HOLED: &str = "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (3 4, 3 7, 6 7, 6 4, 3 4))\n";
+const HOLED_RINGS: [&[[f64; 2]]; 2] =
+    [&[[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]], &[[3.0, 4.0], [3.0, 7.0], [6.0, 7.0], [6.0, 4.0]]];
+
+/// The distance from `p` to the nearest segment of the rings.
+fn distance_to_rings(p: [f64; 2], rings: &[&[[f64; 2]]]) -> f64 {
+    let mut best = f64::INFINITY;
+    for ring in rings {
+        for k in 0..ring.len() {
+            let (a, b) = (ring[k], ring[(k + 1) % ring.len()]);
+            let (d, v) = ([b[0] - a[0], b[1] - a[1]], [p[0] - a[0], p[1] - a[1]]);
+            let t = ((v[0] * d[0] + v[1] * d[1]) / (d[0] * d[0] + d[1] * d[1])).clamp(0.0, 1.0);
+            best = best.min((v[0] - t * d[0]).hypot(v[1] - t * d[1]));
+        }
+    }
+    best
+}
+
+/// The linestrings of one `MULTILINESTRING Z`, each a list of `[x, y, z]`.
+fn multilinestring_z(text: &str) -> Vec<Vec<[f64; 3]>> {
+    let body = text.trim().strip_prefix("MULTILINESTRING Z (").and_then(|t| t.strip_suffix(')')).expect(text);
+    body.split("), ")
+        .map(|line| {
+            line.trim_matches(['(', ')'])
+                .split(", ")
+                .map(|point| {
+                    let v: Vec<f64> = point.split(' ').map(|w| w.parse().expect(point)).collect();
+                    assert_eq!(v.len(), 3, "{point}");
+                    [v[0], v[1], v[2]]
+                })
+                .collect()
+        })
+        .collect()
+}
+
+fn holed_diagram() -> segvoronoi::Diagram {
+    let mut b = Builder::new();
+    b.add_polygon(&HOLED_RINGS).unwrap();
+    b.build().unwrap()
+}
+
+#[test]
+fn medial_axis_wkt_z_is_the_clearance() {
+    let input = input_file("holed.wkt", HOLED);
+    let out = temp_path("holed-axis.wkt");
+    let o = run(&[input.to_str().unwrap(), "--medial-axis", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).is_empty(), "{}", stdout(&o));
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert_eq!(text.lines().count(), 1, "one geometry: {text}");
+    let lines = multilinestring_z(&text);
+    // One linestring per chain: the domain has no rays to cut.
+    assert_eq!(lines.len(), holed_diagram().medial_axis().chains.len());
+    let diagonal = 10.0f64.hypot(10.0);
+    let mut points = 0;
+    for point in lines.iter().flatten() {
+        let d = distance_to_rings([point[0], point[1]], &HOLED_RINGS);
+        assert!((point[2] - d).abs() <= 1e-9 * diagonal, "{point:?}: nearest ring segment at {d}");
+        points += 1;
+    }
+    // A finer tolerance samples the parabolic arcs (at the hole's corners) more densely.
+    let o = run(&[input.to_str().unwrap(), "--medial-axis", out.to_str().unwrap(), "--tolerance", "1e-6"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let finer: usize = multilinestring_z(&std::fs::read_to_string(&out).unwrap()).iter().map(Vec::len).sum();
+    std::fs::remove_file(&out).unwrap();
+    std::fs::remove_file(&input).unwrap();
+    assert!(finer > points, "{finer} points at 1e-6, {points} by default");
+}
+
+#[test]
+fn medial_axis_json_is_valid_and_exact() {
+    let input = input_file("holed-json.wkt", HOLED);
+    let out = temp_path("holed-axis.json");
+    let o = run(&[input.to_str().unwrap(), "--medial-axis", out.to_str().unwrap()]);
+    std::fs::remove_file(&input).unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&out).unwrap();
+    let axis = holed_diagram().medial_axis();
+    let pieces: usize = axis.chains.iter().map(|c| c.pieces.len()).sum();
+    assert_eq!(text.matches("\"closed\": ").count(), axis.chains.len(), "{text}");
+    assert_eq!(text.matches("\"edge\": ").count(), pieces, "{text}");
+    // The hole's corners face the outer ring's sides: parabolic pieces.
+    assert!(text.contains("\"kind\": \"parabola\", \"focus\": [6, 7], \"directrix\": "), "{text}");
+    assert!(!text.contains("NaN") && !text.contains("inf"), "{text}");
+    // Brackets balance (a minimal check where python3 is missing).
+    assert_eq!(text.matches('{').count(), text.matches('}').count());
+    assert_eq!(text.matches('[').count(), text.matches(']').count());
+    match Command::new("python3").args(["-m", "json.tool", out.to_str().unwrap()]).output() {
+        Ok(check) => assert!(check.status.success(), "python3 -m json.tool: {}", String::from_utf8_lossy(&check.stderr)),
+        Err(e) => eprintln!("python3 not run ({e}): JSON validity checked by bracket balance only"),
+    }
+    std::fs::remove_file(&out).unwrap();
+}
+
+#[test]
+fn max_inscribed_circle_of_a_rectangle() {
+    let o = run_with_stdin(&["-", "--max-inscribed-circle"], "polygon ((0 0, 4 0, 4 2, 0 2, 0 0))\n");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert_eq!(out.lines().count(), 1, "{out}");
+    let v: Vec<f64> = out.split_whitespace().map(|w| w.parse().unwrap()).collect();
+    assert_eq!(v.len(), 3, "{out}");
+    assert!((1.0..=3.0).contains(&v[0]) && (v[1] - 1.0).abs() < 1e-12 && (v[2] - 1.0).abs() < 1e-12, "{out}");
+    // No polygon: exit status 1, nothing on standard output.
+    let o = run_with_stdin(&["-", "--max-inscribed-circle"], "MULTIPOINT (0 0, 4 0, 4 2)\n");
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).is_empty());
+    assert!(stderr(&o).contains("--max-inscribed-circle needs a polygon"), "{}", stderr(&o));
+}
+
+#[test]
+fn malformed_wkt_names_line_and_column() {
+    let path = input_file("malformed.wkt", "POINT (1 2)\nPOLYGON ((0 0, 4 0, 4 two, 0 0))\n");
+    let o = run(&[path.to_str().unwrap(), "--medial-axis", temp_path("never.wkt").to_str().unwrap()]);
+    std::fs::remove_file(&path).unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!temp_path("never.wkt").exists());
+    let err = stderr(&o);
+    assert!(err.contains("malformed.wkt: line 2, column 23: expected a number (y), found 'two'"), "{err}");
+    // Recognised by its first word on standard input too.
+    let o = run_with_stdin(&["-"], "LineString (0 0, 1 1");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("line 1, column 21: expected ',' or ')'"), "{}", stderr(&o));
+}
+
+#[test]
+fn crossing_rings_exit_1_naming_the_rings() {
+    let o = run_with_stdin(
+        &["-", "--medial-axis", temp_path("never.json").to_str().unwrap()],
+        "POLYGON ((0 0, 4 0, 4 4, 0 4), (1 1, 5 1, 5 2, 1 2))",
+    );
+    assert_eq!(o.status.code(), Some(1));
+    assert!(!temp_path("never.json").exists());
+    let err = stderr(&o);
+    assert!(err.contains("cross") && err.contains("polygon 0, ring 0") && err.contains("polygon 0, ring 1"), "{err}");
+}
+
+#[test]
+fn wkt_obstacles_and_the_domain_in_the_picture() {
+    // A polygon, a linestring and a point inside it: every kind of input.
+    let input = input_file(
+        "mixed.wkt",
+        "GEOMETRYCOLLECTION (POLYGON ((0 0, 12 0, 12 8, 0 8)), LINESTRING Z (2 2 0, 4 3 0), POINT (9 5))\n",
+    );
+    let svg_path = temp_path("mixed.svg");
+    let o = run(&[input.to_str().unwrap(), "--svg", svg_path.to_str().unwrap(), "--stats"]);
+    std::fs::remove_file(&input).unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stderr(&o).lines().any(|l| l == "input_segments=5"), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(&svg_path).unwrap();
+    std::fs::remove_file(&svg_path).unwrap();
+    assert!(!svg.contains("NaN") && !svg.contains("inf"));
+    for part in [r#"<path id="domain""#, r#"fill-rule="evenodd""#, r#"<g id="medial-axis""#, r#"<circle id="inscribed-circle""#] {
+        assert!(svg.contains(part), "no {part}: {svg}");
+    }
+    // Without polygons the picture is the diagram alone.
+    let svg_path = temp_path("points.svg");
+    let o = run_with_stdin(&["-", "--svg", svg_path.to_str().unwrap()], "MULTIPOINT ((0 0), (3 1), (1 4))");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(&svg_path).unwrap();
+    std::fs::remove_file(&svg_path).unwrap();
+    assert!(!svg.contains("medial-axis") && !svg.contains(r#"id="domain""#), "{svg}");
+}
+
+#[test]
+fn medial_axis_without_a_domain_cuts_the_rays() {
+    // A point over a segment (Boost.Polygon's format): the parabolic edge
+    // between them is finite, every other non-separator edge is a ray.
+    let out = temp_path("free-axis.wkt");
+    let o = run_with_stdin(&["-", "--medial-axis", out.to_str().unwrap()], "1\n2 2\n1\n0 0 4 0\n");
+    assert!(o.status.success(), "{}", stderr(&o));
+    let lines = multilinestring_z(&std::fs::read_to_string(&out).unwrap());
+    std::fs::remove_file(&out).unwrap();
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    for p in &lines[0] {
+        // on the parabola: as far from (2, 2) as from the segment's line
+        assert!((p[2] - (p[0] - 2.0).hypot(p[1] - 2.0)).abs() < 1e-12 && (p[2] - p[1]).abs() < 1e-12, "{p:?}");
+    }
+}
