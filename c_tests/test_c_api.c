@@ -1184,6 +1184,50 @@ static void check_medial_axis(const segvoronoi_diagram *d, double max_r) {
     segvoronoi_medial_axis_free(NULL);
 }
 
+/* The filters on the medial axis of the square with a square hole: a zeroed
+ * filter (and NULL) leaves the whole axis; the corner filter at 80 degrees
+ * takes the four branches into the outer square's right-angled corners,
+ * nothing else; a NaN or a struct_size below the first version is refused. */
+static void check_medial_axis_filters(const segvoronoi_diagram *d) {
+    segvoronoi_medial_axis *full = NULL, *same = NULL, *cut = NULL, *untouched = NULL;
+    segvoronoi_medial_axis_filter filter = {.struct_size = sizeof filter};
+    size_t c, n, pieces[3] = {0, 0, 0};
+    bool closed = false;
+    CHECK_STATUS(segvoronoi_diagram_medial_axis_filtered(d, NULL, &full), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_diagram_medial_axis_filtered(d, &filter, &same), SEGVORONOI_STATUS_OK);
+    filter.corner_filter = true;
+    filter.corner_angle = 80.0;
+    CHECK_STATUS(segvoronoi_diagram_medial_axis_filtered(d, &filter, &cut), SEGVORONOI_STATUS_OK);
+    for (c = 0; c < segvoronoi_medial_axis_chain_count(full); ++c) {
+        CHECK_STATUS(segvoronoi_medial_axis_chain(full, c, &n, &closed), SEGVORONOI_STATUS_OK);
+        pieces[0] += n;
+    }
+    for (c = 0; c < segvoronoi_medial_axis_chain_count(same); ++c) {
+        CHECK_STATUS(segvoronoi_medial_axis_chain(same, c, &n, &closed), SEGVORONOI_STATUS_OK);
+        pieces[1] += n;
+    }
+    for (c = 0; c < segvoronoi_medial_axis_chain_count(cut); ++c) {
+        CHECK_STATUS(segvoronoi_medial_axis_chain(cut, c, &n, &closed), SEGVORONOI_STATUS_OK);
+        pieces[2] += n;
+    }
+    CHECK(pieces[0] == pieces[1] && pieces[2] == pieces[0] - 4);
+    /* what is left is the cycle around the hole */
+    CHECK(segvoronoi_medial_axis_chain_count(cut) == 1);
+    CHECK_STATUS(segvoronoi_medial_axis_chain(cut, 0, &n, &closed), SEGVORONOI_STATUS_OK);
+    CHECK(closed);
+    filter.spur_filter = true;
+    filter.spur_factor = NAN;
+    CHECK_STATUS(segvoronoi_diagram_medial_axis_filtered(d, &filter, &untouched), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+    filter.spur_factor = 1.0;
+    filter.struct_size = sizeof(size_t);
+    CHECK_STATUS(segvoronoi_diagram_medial_axis_filtered(d, &filter, &untouched), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+    CHECK(untouched == NULL);
+    CHECK_STATUS(segvoronoi_diagram_medial_axis_filtered(d, NULL, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    segvoronoi_medial_axis_free(full);
+    segvoronoi_medial_axis_free(same);
+    segvoronoi_medial_axis_free(cut);
+}
+
 /* Polygons and the domain: a square with a square hole, both rings in either
  * orientation; locations of points, vertices and cells; the largest disk;
  * the input rules (a ring of two points names polygon and ring, leaves the
@@ -1194,7 +1238,7 @@ static void test_polygon_domain(void) {
     const size_t lengths[] = {4, 4};
     const double bad[] = {0, 0, 1, 1, 1, 1};
     const size_t bad_length = 3;
-    const double line[] = {20, 20, 21, 20, 21, 21};
+    const double line[] = {20, 20, 21, 20, 21, 20, 21, 21}; /* one repeated point */
     segvoronoi_builder *b = segvoronoi_builder_new();
     segvoronoi_diagram *d = NULL;
     uint32_t where = 99;
@@ -1209,7 +1253,7 @@ static void test_polygon_domain(void) {
     CHECK(n_indices == 2 && indices[0] == 1 && indices[1] == 0); /* polygon 1, ring 0 */
     CHECK(segvoronoi_builder_segment_count(b) == 8);
     CHECK_STATUS(segvoronoi_builder_add_polygon(b, NULL, lengths, 2), SEGVORONOI_STATUS_NULL_ARGUMENT);
-    CHECK_STATUS(segvoronoi_builder_add_polyline(b, line, 3), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_add_polyline(b, line, 4), SEGVORONOI_STATUS_OK);
     CHECK(segvoronoi_builder_segment_count(b) == 10);
     CHECK_STATUS(segvoronoi_builder_build(b, &d), SEGVORONOI_STATUS_OK);
     check_diagram(d);
@@ -1245,6 +1289,20 @@ static void test_polygon_domain(void) {
     CHECK(fabs(r - (8.0 - 4.0 * sqrt(2.0))) < 1e-12);
     CHECK(fabs(fmin(fmin(x, y), fmin(10 - x, 10 - y)) - r) < 1e-12); /* r from the outer square */
     check_medial_axis(d, r);
+    check_medial_axis_filters(d);
+    {
+        segvoronoi_stats stats = {.struct_size = sizeof stats};
+        double circles[6] = {0};
+        size_t n_circles = 0;
+        CHECK_STATUS(segvoronoi_diagram_stats(d, &stats), SEGVORONOI_STATUS_OK);
+        CHECK(stats.dropped_chain_points == 1);
+        /* one component: its disk is the largest one */
+        CHECK_STATUS(segvoronoi_diagram_inscribed_circles(d, NULL, 0, &n_circles), SEGVORONOI_STATUS_OK);
+        CHECK(n_circles == 1);
+        CHECK_STATUS(segvoronoi_diagram_inscribed_circles(d, circles, 2, &n_circles), SEGVORONOI_STATUS_OK);
+        CHECK(circles[0] == x && circles[1] == y && circles[2] == r);
+        CHECK_STATUS(segvoronoi_diagram_inscribed_circles(d, NULL, 2, &n_circles), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    }
     segvoronoi_diagram_free(d);
     segvoronoi_builder_free(b);
 

@@ -228,7 +228,28 @@ typedef struct segvoronoi_stats {
   size_t vertices;
   // Voronoi edges between two sites.
   size_t edges;
+  // Points of polygons and polylines dropped because they repeated the
+  // point before them (a ring's repeated closing point is not counted).
+  size_t dropped_chain_points;
 } segvoronoi_stats;
+
+// Which branches `segvoronoi_diagram_medial_axis_filtered` leaves out
+// (Rust's `MedialAxisFilter`). Versioned: set `struct_size` to
+// `sizeof(segvoronoi_medial_axis_filter)`; a zeroed struct filters nothing.
+typedef struct segvoronoi_medial_axis_filter {
+  // Set by the caller to `sizeof(segvoronoi_medial_axis_filter)`.
+  size_t struct_size;
+  // Whether the corner filter is on.
+  bool corner_filter;
+  // With the corner filter: leave out the branches into convex corners
+  // whose interior angle, in degrees, is above this.
+  double corner_angle;
+  // Whether the spur filter is on.
+  bool spur_filter;
+  // With the spur filter: leave out the leaf branches shorter than this
+  // times the clearance at their junction.
+  double spur_factor;
+} segvoronoi_medial_axis_filter;
 
 // One piece of a chain of the medial axis: an edge of the diagram walked in
 // the chain's direction. Versioned: set `struct_size` before the call.
@@ -606,6 +627,18 @@ enum segvoronoi_status segvoronoi_diagram_max_inscribed_circle(const struct segv
                                                                double *y,
                                                                double *r);
 
+// The largest disk inside each connected component of the domain, largest
+// first, each `{x, y, r}`: up to `capacity` circles (`3 * capacity`
+// doubles) to `xyr`, their full number to `*count` (0 without a polygon);
+// `xyr = NULL, capacity = 0` only counts (`OK`).
+//
+// Errors: `NULL_ARGUMENT`, `BUFFER_TOO_SMALL` (then `*count` holds the
+// number needed and the first `capacity` circles are written).
+enum segvoronoi_status segvoronoi_diagram_inscribed_circles(const struct segvoronoi_diagram *diagram,
+                                                            double *xyr,
+                                                            size_t capacity,
+                                                            size_t *count);
+
 // The medial axis of a diagram (the edges inside the domain that are not
 // separators; without polygons, every edge that is not a separator) in
 // `*out`.
@@ -616,6 +649,17 @@ enum segvoronoi_status segvoronoi_diagram_max_inscribed_circle(const struct segv
 // Errors: `NULL_ARGUMENT`; then `*out` is untouched.
 enum segvoronoi_status segvoronoi_diagram_medial_axis(const struct segvoronoi_diagram *diagram,
                                                       struct segvoronoi_medial_axis **out);
+
+// The medial axis without the branches `filter` leaves out (NULL: none;
+// the rules are Rust's `MedialAxisFilter`'s, with pictures in
+// `docs/medial_axis_filters.svg`) in `*out`. Free it with
+// `segvoronoi_medial_axis_free`, before the diagram.
+//
+// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (`filter->struct_size` too
+// small, or a filter that is on with a NaN); then `*out` is untouched.
+enum segvoronoi_status segvoronoi_diagram_medial_axis_filtered(const struct segvoronoi_diagram *diagram,
+                                                               const struct segvoronoi_medial_axis_filter *filter,
+                                                               struct segvoronoi_medial_axis **out);
 
 // Frees a medial axis. NULL does nothing.
 void segvoronoi_medial_axis_free(struct segvoronoi_medial_axis *axis);

@@ -56,7 +56,9 @@ pub use diagram::{BuildStats, Diagram, EdgeId, SiteId, ValidationError, VertexId
 pub use error::{Error, ErrorKind};
 pub use geometry::{Point, Site};
 pub use query::EdgeShape;
-pub use query::{Cell, Chain, Edge, EdgeEnd, HalfEdge, Location, MedialAxis, Piece, TopologyOptions, Vertex, ZERO_LENGTH};
+pub use query::{
+    Cell, Chain, Edge, EdgeEnd, HalfEdge, Location, MedialAxis, MedialAxisFilter, Piece, TopologyOptions, Vertex, ZERO_LENGTH,
+};
 
 /// Fault injection for tests: make the floating-point decisions lie and watch
 /// the topology survive (or the build give up with [`ErrorKind::Internal`],

@@ -134,6 +134,9 @@ fn polygon_input_rules() {
     assert_eq!(b.segment_count(), 3);
     // a polyline is an obstacle, not a ring
     assert_eq!(b.add_polyline(&[[3.0, 3.0], [4.0, 3.0], [4.0, 3.0], [4.0, 4.0]]).unwrap(), 3..5);
+    // the dropped points are counted (the ring's one repeat and the
+    // polyline's; not the ring's closing point, nor the rejected rings')
+    assert_eq!(b.build().unwrap().stats().dropped_chain_points, 2);
     // rings that cross: the build names both segments and their rings
     let mut c = Builder::new();
     c.add_polygon(&[square(0.0, 0.0, 4.0), square(2.0, 2.0, 4.0)]).unwrap();

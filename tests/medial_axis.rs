@@ -135,6 +135,25 @@ fn holes_give_independent_cycles() {
     let d = build(&rings);
     let (e, v, c) = graph_shape(&d, &d.medial_axis());
     assert_eq!((c, e + c - v), (2, 3));
+    // one largest disk per component, the island's its inscribed square's
+    let circles = d.inscribed_circles();
+    assert_eq!(circles.len(), 2);
+    assert_eq!(Some(circles[0]), d.max_inscribed_circle());
+    let (island, r) = circles[1];
+    assert!((r - 3.0).abs() < 1e-12 && island.distance(Point::new(13.0, 23.0)) < 1e-12, "{circles:?}");
+    // no grid point of the big component has a larger clearance than its disk
+    let segments = common::ring_segments(&rings);
+    for i in 0..=120 {
+        for j in 0..=120 {
+            let q = Point::new(30.0 * i as f64 / 120.0, 30.0 * j as f64 / 120.0);
+            if common::even_odd(&rings, q) {
+                let clearance = segments.iter().map(|s| s.distance(q)).fold(f64::INFINITY, f64::min);
+                let own = if (10.0..=16.0).contains(&q.x) && (20.0..=26.0).contains(&q.y) { r } else { circles[0].1 };
+                assert!(clearance <= own + 1e-9, "{q:?}: {clearance} > {own}");
+            }
+        }
+    }
+    assert!(build(&[regular(5, 1.0, 0.0)]).inscribed_circles().len() == 1);
 }
 
 #[test]

@@ -36,6 +36,9 @@ pub struct Builder {
     /// domain, and how many polygons there are.
     pub(super) rings: Vec<super::polygon_input::RingInput>,
     pub(super) polygons: usize,
+    /// Points of polygons and polylines dropped because they repeated the
+    /// point before them (`BuildStats::dropped_chain_points`).
+    pub(super) dropped_chain_points: usize,
 }
 
 impl Builder {
@@ -159,6 +162,7 @@ impl Builder {
         let mut diagram =
             super::diagram_of(&self.points, &self.segments).map_err(|e| super::polygon_input::name_rings(e, &self.rings))?;
         diagram.set_domain(&self.rings);
+        diagram.stats.dropped_chain_points = self.dropped_chain_points;
         Ok(diagram)
     }
 }

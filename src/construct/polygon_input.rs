@@ -53,6 +53,7 @@ impl Builder {
     ) -> Result<Vec<std::ops::Range<usize>>, Error> {
         let polygon = self.polygons;
         let mut chains = Vec::with_capacity(rings.len());
+        let mut dropped = 0;
         for (ring, points) in rings.iter().enumerate() {
             let points: Vec<Point> = points.as_ref().iter().map(|&p| p.into()).collect();
             let mut chain = distinct_chain(&points, |k| {
@@ -64,8 +65,11 @@ impl Builder {
                 )
             })?;
             if chain.len() > 1 && chain.first() == chain.last() {
+                // the conventional closing point: not counted as dropped
                 chain.pop();
+                dropped -= 1;
             }
+            dropped += points.len() - chain.len();
             if chain.len() < 3 {
                 return Err(Error::new(
                     ErrorKind::InvalidPolygon,
@@ -90,6 +94,7 @@ impl Builder {
         // finite, distinct and within capacity: checked above
         self.add_segments(closed).expect("checked points");
         self.polygons += 1;
+        self.dropped_chain_points += dropped;
         Ok(made)
     }
 
@@ -107,7 +112,9 @@ impl Builder {
                 vec![k],
             )
         })?;
-        self.add_segments(chain.windows(2).map(|w| [w[0], w[1]]))
+        let made = self.add_segments(chain.windows(2).map(|w| [w[0], w[1]]))?;
+        self.dropped_chain_points += points.len() - chain.len();
+        Ok(made)
     }
 }
 

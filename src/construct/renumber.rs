@@ -109,6 +109,7 @@ pub(super) fn renumber(
         zero_length_segments: 0,
         vertices: finite_vertices,
         edges: edges.len(),
+        dropped_chain_points: 0,
     };
     Diagram {
         store,

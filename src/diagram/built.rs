@@ -26,6 +26,10 @@ pub struct BuildStats {
     pub duplicate_segments: usize,
     /// Input segments of zero length, which became points.
     pub zero_length_segments: usize,
+    /// Points of polygons and polylines (`Builder::add_polygon`,
+    /// `add_polyline`) that repeated the point before them and were dropped
+    /// (a ring's closing point that repeats its first is not counted).
+    pub dropped_chain_points: usize,
     /// Voronoi vertices (finite ones; vertices at infinity are not counted).
     pub vertices: usize,
     /// Voronoi edges between two sites, rays and lines included.

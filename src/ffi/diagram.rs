@@ -141,6 +141,9 @@ pub struct segvoronoi_stats {
     pub vertices: usize,
     /// Voronoi edges between two sites.
     pub edges: usize,
+    /// Points of polygons and polylines dropped because they repeated the
+    /// point before them (a ring's repeated closing point is not counted).
+    pub dropped_chain_points: usize,
 }
 versioned!(segvoronoi_stats, edges: usize);
 
@@ -496,6 +499,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_stats(
                 zero_length_segments: s.zero_length_segments,
                 vertices: s.vertices,
                 edges: s.edges,
+                dropped_chain_points: s.dropped_chain_points,
             },
         )
     })

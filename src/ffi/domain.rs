@@ -1,11 +1,11 @@
 //! The domain and the medial axis's largest disk in C: where a vertex,
 //! edge, cell or point lies (`SEGVORONOI_LOCATION_*`), and the maximum
-//! inscribed circle. Delegates to `Diagram::vertex_location`,
-//! `edge_location`, `cell_location`, `locate_point` and
-//! `max_inscribed_circle`.
+//! inscribed circle, over the domain and per component. Delegates to
+//! `Diagram::vertex_location`, `edge_location`, `cell_location`,
+//! `locate_point`, `max_inscribed_circle` and `inscribed_circles`.
 
 use super::diagram::{segvoronoi_diagram, with_diagram};
-use super::out::write_out;
+use super::out::{require_buffer, write_buffer, write_out};
 use super::plumbing::{require_non_null, segvoronoi_status};
 use crate::{Diagram, EdgeId, Location, Point, SiteId, VertexId};
 
@@ -124,5 +124,27 @@ pub unsafe extern "C" fn segvoronoi_diagram_max_inscribed_circle(
             write_out(r, radius)
         }
         None => segvoronoi_status::InvalidArgument,
+    })
+}
+
+/// The largest disk inside each connected component of the domain, largest
+/// first, each `{x, y, r}`: up to `capacity` circles (`3 * capacity`
+/// doubles) to `xyr`, their full number to `*count` (0 without a polygon);
+/// `xyr = NULL, capacity = 0` only counts (`OK`).
+///
+/// Errors: `NULL_ARGUMENT`, `BUFFER_TOO_SMALL` (then `*count` holds the
+/// number needed and the first `capacity` circles are written).
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_inscribed_circles(
+    diagram: *const segvoronoi_diagram,
+    xyr: *mut f64,
+    capacity: usize,
+    count: *mut usize,
+) -> segvoronoi_status {
+    require_buffer!(xyr, capacity, count);
+    with_diagram(diagram, |d| {
+        let circles = d.inscribed_circles().into_iter().map(|(c, r)| [c.x, c.y, r]);
+        // three consecutive doubles per circle: the alignment of an array of them
+        write_buffer(circles, xyr.cast::<[f64; 3]>(), capacity, count)
     })
 }

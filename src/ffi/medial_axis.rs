@@ -3,9 +3,9 @@
 //! `Diagram::medial_axis` and `Diagram::sample_chain`.
 
 use super::diagram::{edge_end, segvoronoi_diagram, segvoronoi_edge_end, with_diagram};
-use super::out::{require_buffer, versioned, write_buffer, write_out, write_versioned};
+use super::out::{read_versioned, require_buffer, versioned, write_buffer, write_out, write_versioned};
 use super::plumbing::{guard, guard_or, require_non_null, segvoronoi_status};
-use crate::{Diagram, MedialAxis};
+use crate::{Diagram, MedialAxis, MedialAxisFilter};
 
 /// A medial axis (`segvoronoi_diagram_medial_axis`). Opaque and immutable;
 /// it refers to its diagram, so free it (`segvoronoi_medial_axis_free`)
@@ -50,6 +50,64 @@ pub unsafe extern "C" fn segvoronoi_diagram_medial_axis(
     require_non_null!(out);
     with_diagram(diagram, |d| {
         let axis = Box::new(segvoronoi_medial_axis { diagram, inner: d.medial_axis() });
+        write_out(out, Box::into_raw(axis))
+    })
+}
+
+/// Which branches `segvoronoi_diagram_medial_axis_filtered` leaves out
+/// (Rust's `MedialAxisFilter`). Versioned: set `struct_size` to
+/// `sizeof(segvoronoi_medial_axis_filter)`; a zeroed struct filters nothing.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct segvoronoi_medial_axis_filter {
+    /// Set by the caller to `sizeof(segvoronoi_medial_axis_filter)`.
+    pub struct_size: usize,
+    /// Whether the corner filter is on.
+    pub corner_filter: bool,
+    /// With the corner filter: leave out the branches into convex corners
+    /// whose interior angle, in degrees, is above this.
+    pub corner_angle: f64,
+    /// Whether the spur filter is on.
+    pub spur_filter: bool,
+    /// With the spur filter: leave out the leaf branches shorter than this
+    /// times the clearance at their junction.
+    pub spur_factor: f64,
+}
+versioned!(segvoronoi_medial_axis_filter, spur_factor: f64);
+
+/// The medial axis without the branches `filter` leaves out (NULL: none;
+/// the rules are Rust's `MedialAxisFilter`'s, with pictures in
+/// `docs/medial_axis_filters.svg`) in `*out`. Free it with
+/// `segvoronoi_medial_axis_free`, before the diagram.
+///
+/// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (`filter->struct_size` too
+/// small, or a filter that is on with a NaN); then `*out` is untouched.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_medial_axis_filtered(
+    diagram: *const segvoronoi_diagram,
+    filter: *const segvoronoi_medial_axis_filter,
+    out: *mut *mut segvoronoi_medial_axis,
+) -> segvoronoi_status {
+    require_non_null!(out);
+    let rules = if filter.is_null() {
+        MedialAxisFilter::new()
+    } else {
+        // SAFETY: non-null; the caller passes a filter of `struct_size` bytes.
+        let Some(f) = (unsafe { read_versioned(filter) }) else { return segvoronoi_status::InvalidArgument };
+        let mut rules = MedialAxisFilter::new();
+        if f.corner_filter {
+            rules = rules.with_corner_angle(f.corner_angle);
+        }
+        if f.spur_filter {
+            rules = rules.with_spur_pruning(f.spur_factor);
+        }
+        if rules.corner_angle.is_nan() || rules.spur_factor.is_nan() {
+            return segvoronoi_status::InvalidArgument;
+        }
+        rules
+    };
+    with_diagram(diagram, |d| {
+        let axis = Box::new(segvoronoi_medial_axis { diagram, inner: d.medial_axis_filtered(&rules) });
         write_out(out, Box::into_raw(axis))
     })
 }

@@ -91,6 +91,29 @@ pub(super) fn write_versioned<T: Versioned>(out: *mut T, value: T) -> segvoronoi
     segvoronoi_status::Ok
 }
 
+/// Reads a versioned struct the caller passes in (`p` non-NULL): the
+/// bytes its `struct_size` says it has, up to the library's own size, over
+/// the defaults of the fields it lacks (an older caller's struct is
+/// shorter). `None` when `struct_size` is below the first version's size.
+///
+/// # Safety
+/// `p` is non-NULL and points to at least `struct_size` readable bytes.
+pub(super) unsafe fn read_versioned<T: Versioned + Default>(p: *const T) -> Option<T> {
+    // SAFETY: `struct_size` is the first field (the `Versioned` contract)
+    // and every caller's struct has it.
+    let size = unsafe { p.cast::<usize>().read_unaligned() };
+    if size < T::FIRST_SIZE {
+        return None;
+    }
+    let mut value = T::default();
+    let n = size.min(std::mem::size_of::<T>());
+    // SAFETY: the caller's struct has `size >= n` readable bytes, `value`
+    // has `size_of::<T>() >= n` writable ones, and every field is plain
+    // data for which any bytes the caller wrote are its own value.
+    unsafe { std::ptr::copy_nonoverlapping(p.cast::<u8>(), (&mut value as *mut T).cast::<u8>(), n) };
+    Some(value)
+}
+
 /// Returns early with `NullArgument` unless `count` is non-NULL and
 /// `buffer` is non-NULL or `capacity` is 0.
 macro_rules! require_buffer {

@@ -63,15 +63,29 @@ impl Diagram {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn medial_axis(&self) -> MedialAxis {
-        let in_axis: Vec<bool> = (0..self.edges.len()).map(|e| self.in_medial_axis(EdgeId::from_index(e))).collect();
-        let degree = |end: EdgeEnd| -> usize {
-            match end {
-                EdgeEnd::Vertex(v) => {
-                    self.vertex_half_edges(v).map_or(0, |out| out.iter().filter(|h| in_axis[h.edge().index()]).count())
-                }
-                EdgeEnd::Infinite { .. } => 0,
+        MedialAxis { chains: self.chains_of(&self.medial_axis_edges()) }
+    }
+
+    /// Which edges belong to the medial axis, by edge index.
+    pub(super) fn medial_axis_edges(&self) -> Vec<bool> {
+        (0..self.edges.len()).map(|e| self.in_medial_axis(EdgeId::from_index(e))).collect()
+    }
+
+    /// How many of the edges marked in `in_axis` meet at an end (zero at
+    /// infinity).
+    pub(super) fn axis_degree(&self, end: EdgeEnd, in_axis: &[bool]) -> usize {
+        match end {
+            EdgeEnd::Vertex(v) => {
+                self.vertex_half_edges(v).map_or(0, |out| out.iter().filter(|h| in_axis[h.edge().index()]).count())
             }
-        };
+            EdgeEnd::Infinite { .. } => 0,
+        }
+    }
+
+    /// The edges marked in `in_axis` as chains: maximal paths through
+    /// vertices where two of them meet.
+    pub(super) fn chains_of(&self, in_axis: &[bool]) -> Vec<Chain> {
+        let degree = |end: EdgeEnd| self.axis_degree(end, in_axis);
         let mut used = vec![false; self.edges.len()];
         let mut chains = Vec::new();
         // Open chains first: from every end whose degree is not two.
@@ -84,16 +98,16 @@ impl Diagram {
             if used[h.edge().index()] || degree(origin) == 2 {
                 continue;
             }
-            chains.push(self.walk_chain(h, &in_axis, &mut used, &degree));
+            chains.push(self.walk_chain(h, in_axis, &mut used, &degree));
         }
         // What is left are cycles through vertices of degree two.
         for e in 0..self.edges.len() {
             if in_axis[e] && !used[e] {
                 let [h, _] = self.half_edges(EdgeId::from_index(e)).expect("in range");
-                chains.push(self.walk_chain(h, &in_axis, &mut used, &degree));
+                chains.push(self.walk_chain(h, in_axis, &mut used, &degree));
             }
         }
-        MedialAxis { chains }
+        chains
     }
 
     /// Whether an edge belongs to the medial axis.
@@ -218,10 +232,39 @@ impl Diagram {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn max_inscribed_circle(&self) -> Option<(Point, f64)> {
-        self.domain.as_ref()?;
-        self.vertices()
-            .filter(|v| self.vertex_location(v.id) == Some(Location::Inside))
-            .max_by(|a, b| a.clearance.total_cmp(&b.clearance))
-            .map(|v| (v.position, v.clearance))
+        self.inscribed_circles().into_iter().next()
+    }
+
+    /// The largest disk inside each connected component of the domain
+    /// (as [`Diagram::max_inscribed_circle`], per component: the
+    /// components of the medial axis), largest first; empty without a
+    /// domain.
+    ///
+    /// ```
+    /// use segvoronoi::Builder;
+    /// let square = |x: f64, s: f64| vec![[x, 0.0], [x + s, 0.0], [x + s, s], [x, s]];
+    /// let mut b = Builder::new();
+    /// b.add_polygon(&[square(0.0, 2.0)])?;
+    /// b.add_polygon(&[square(5.0, 4.0)])?;
+    /// let circles = b.build()?.inscribed_circles();
+    /// let radii: Vec<f64> = circles.iter().map(|&(_, r)| r).collect();
+    /// assert_eq!(radii, [2.0, 1.0]);
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn inscribed_circles(&self) -> Vec<(Point, f64)> {
+        if self.domain.is_none() {
+            return Vec::new();
+        }
+        let components = self.axis_components(&self.medial_axis_edges());
+        let mut largest: Vec<Option<(Point, f64)>> = vec![None; self.finite_vertices];
+        for v in self.vertices().filter(|v| self.vertex_location(v.id) == Some(Location::Inside)) {
+            let best = &mut largest[components.find(v.id.index())];
+            if best.is_none_or(|(_, r)| v.clearance > r) {
+                *best = Some((v.position, v.clearance));
+            }
+        }
+        let mut circles: Vec<(Point, f64)> = largest.into_iter().flatten().collect();
+        circles.sort_by(|a, b| b.1.total_cmp(&a.1));
+        circles
     }
 }

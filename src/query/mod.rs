@@ -6,7 +6,9 @@ mod access;
 pub(crate) mod audit;
 mod domain;
 mod medial_axis;
+mod medial_axis_filter;
 mod navigation;
+mod partition;
 mod shape;
 mod topology;
 
@@ -14,6 +16,7 @@ pub use access::{Cell, Edge, EdgeEnd, Vertex};
 pub(crate) use domain::Domain;
 pub use domain::Location;
 pub use medial_axis::{Chain, MedialAxis, Piece};
+pub use medial_axis_filter::MedialAxisFilter;
 pub use navigation::HalfEdge;
 pub use shape::EdgeShape;
 pub use topology::{TopologyOptions, ZERO_LENGTH};

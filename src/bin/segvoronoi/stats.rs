@@ -21,7 +21,7 @@ pub fn report(diagram: &Diagram, build_s: f64) -> String {
     }
     let segment_sites = diagram.site_count() - diagram.point_site_count();
     let mut out = String::new();
-    let figures: [(&str, &dyn std::fmt::Display); 14] = [
+    let figures: [(&str, &dyn std::fmt::Display); 15] = [
         ("input_points", &stats.input_points),
         ("input_segments", &stats.input_segments),
         ("sites", &stats.sites),
@@ -29,6 +29,7 @@ pub fn report(diagram: &Diagram, build_s: f64) -> String {
         ("duplicates", &stats.duplicate_points),
         ("duplicate_segments", &stats.duplicate_segments),
         ("zero_length_segments", &stats.zero_length_segments),
+        ("dropped_chain_points", &stats.dropped_chain_points),
         ("vertices", &stats.vertices),
         ("edges", &stats.edges),
         ("finite_edges", &segments),
