@@ -64,12 +64,13 @@ impl Builder {
                     vec![polygon, ring, k],
                 )
             })?;
-            if chain.len() > 1 && chain.first() == chain.last() {
-                // the conventional closing point: not counted as dropped
+            let closing = chain.len() > 1 && chain.first() == chain.last();
+            if closing {
                 chain.pop();
-                dropped -= 1;
             }
-            dropped += points.len() - chain.len();
+            // the conventional closing point is not counted as dropped (and
+            // is subtracted last: `dropped` is unsigned)
+            dropped += points.len() - chain.len() - usize::from(closing);
             if chain.len() < 3 {
                 return Err(Error::new(
                     ErrorKind::InvalidPolygon,
