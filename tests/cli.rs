@@ -464,13 +464,14 @@ fn wkt_obstacles_and_the_domain_in_the_picture() {
     // A polygon, a linestring and a point inside it: every kind of input.
     let input = input_file(
         "mixed.wkt",
-        "GEOMETRYCOLLECTION (POLYGON ((0 0, 12 0, 12 8, 0 8)), LINESTRING Z (2 2 0, 4 3 0), POINT (9 5))\n",
+        "GEOMETRYCOLLECTION (POLYGON ((0 0, 12 0, 12 8, 0 8, 0 0)), LINESTRING Z (2 2 0, 4 3 0), POINT (9 5))\n",
     );
     let svg_path = temp_path("mixed.svg");
     let o = run(&[input.to_str().unwrap(), "--svg", svg_path.to_str().unwrap(), "--stats"]);
     std::fs::remove_file(&input).unwrap();
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(stderr(&o).lines().any(|l| l == "input_segments=5"), "{}", stderr(&o));
+    assert!(stderr(&o).lines().any(|l| l == "dropped_chain_points=0"), "{}", stderr(&o));
     let svg = std::fs::read_to_string(&svg_path).unwrap();
     std::fs::remove_file(&svg_path).unwrap();
     assert!(!svg.contains("NaN") && !svg.contains("inf"));
@@ -500,4 +501,36 @@ fn medial_axis_without_a_domain_cuts_the_rays() {
         // on the parabola: as far from (2, 2) as from the segment's line
         assert!((p[2] - (p[0] - 2.0).hypot(p[1] - 2.0)).abs() < 1e-12 && (p[2] - p[1]).abs() < 1e-12, "{p:?}");
     }
+}
+
+#[test]
+fn filters_leave_the_middle_line_of_a_rectangle() {
+    // The four branches into the right-angled corners are sqrt(2) long, the
+    // clearance at their junctions is 1: either filter leaves the middle line.
+    let input = input_file("rectangle.wkt", "POLYGON ((0 0, 4 0, 4 2, 0 2, 0 0))\n");
+    let out = temp_path("rectangle-axis.wkt");
+    let middle = |args: &[&str]| {
+        let mut all = vec![input.to_str().unwrap(), "--medial-axis", out.to_str().unwrap()];
+        all.extend(args);
+        let o = run(&all);
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+        multilinestring_z(&std::fs::read_to_string(&out).unwrap())
+    };
+    assert_eq!(middle(&[]).len(), 5);
+    for filter in [&["--prune-spurs", "2"][..], &["--corner-angle=80"], &["--corner-angle", "80", "--prune-spurs", "0.5"]] {
+        let lines = middle(filter);
+        assert_eq!(lines.len(), 1, "{filter:?}: {lines:?}");
+        let ends = [lines[0][0], *lines[0].last().unwrap()];
+        let mut xs = ends.map(|p| p[0]);
+        xs.sort_by(f64::total_cmp);
+        assert!((xs[0] - 1.0).abs() < 1e-12 && (xs[1] - 3.0).abs() < 1e-12, "{filter:?}: {ends:?}");
+        assert!(ends.iter().all(|p| (p[1] - 1.0).abs() < 1e-12 && (p[2] - 1.0).abs() < 1e-12), "{filter:?}: {ends:?}");
+    }
+    // Branches into corners of 90 degrees stay below a threshold of 90.
+    assert_eq!(middle(&["--corner-angle", "90"]).len(), 5);
+    std::fs::remove_file(&out).unwrap();
+    std::fs::remove_file(&input).unwrap();
+    let o = run(&["--prune-spurs", "2"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--medial-axis or --svg"), "{}", stderr(&o));
 }

@@ -54,12 +54,17 @@ Options:
   --tolerance T      chord tolerance of every sampled output, in input
                      units (default 1e-4 times the input's bounding-box
                      diagonal)
-  --corner-angle DEG leave out the medial-axis branches that run into
-                     boundary corners sharper than DEG degrees... see below
-  --prune-spurs K    leave out spurs: branches ending at the boundary that
-                     are short against their clearance (factor K)
-                     The two filters shape the axis of --medial-axis and
-                     --svg.
+  --corner-angle DEG leave out the branches of the medial axis that run
+                     into a convex corner of interior angle above DEG
+                     degrees (0 to 180; 180, the default, leaves out none):
+                     the spurs of curves flattened into chords
+  --prune-spurs K    leave out the branches from a leaf to a junction that
+                     are shorter than K times the clearance at the junction
+                     (K >= 0; 0, the default, leaves out none). Both filters
+                     look at the unfiltered axis once (what a removal
+                     leaves is not filtered again) and keep a part of the
+                     axis whole that they would remove entirely; they apply
+                     to --medial-axis and --svg
   --max-inscribed-circle
                      print the largest disk inside the domain, `x y r`, on
                      standard output (exit status 1 without polygons)
@@ -192,6 +197,10 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
             _ => return Err(format!("unknown option {arg:?}")),
         }
     }
+    if (options.corner_angle.is_some() || options.prune_spurs.is_some()) && options.medial_axis.is_none() && options.svg.is_none()
+    {
+        return Err("--corner-angle and --prune-spurs filter the medial axis of --medial-axis or --svg; give one of them".into());
+    }
     options.source = match input.as_deref() {
         None => Source::Demo,
         Some("-") => Source::Stdin,
@@ -270,8 +279,9 @@ mod tests {
         assert!(run(&["--tolerance", "0"]).unwrap_err().contains("positive"));
         assert!(run(&["--tolerance=inf"]).unwrap_err().contains("positive"));
         assert!(run(&["--tolerance"]).unwrap_err().contains("a number"));
-        assert!(run(&["--corner-angle", "181"]).unwrap_err().contains("0 to 180"));
-        assert!(run(&["--prune-spurs", "-1"]).unwrap_err().contains("--prune-spurs"));
+        assert!(run(&["--corner-angle", "181", "--svg", "a.svg"]).unwrap_err().contains("0 to 180"));
+        assert!(run(&["--prune-spurs", "-1", "--svg", "a.svg"]).unwrap_err().contains("--prune-spurs"));
+        assert!(run(&["--prune-spurs", "1"]).unwrap_err().contains("give one of them"));
     }
 
     #[test]

@@ -18,7 +18,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use args::{AxisFormat, Command, Options};
-use segvoronoi::{Builder, Diagram, MedialAxis, TopologyOptions};
+use segvoronoi::{Builder, Diagram, MedialAxis, MedialAxisFilter, TopologyOptions};
 
 /// Why the program stops early: an exit status and a message for the user.
 struct Failure {
@@ -72,7 +72,7 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     let tolerance = options.tolerance.unwrap_or_else(|| input.default_tolerance());
     // The axis is computed once, for the file and the picture alike.
     let needs_axis = options.medial_axis.is_some() || (options.svg.is_some() && diagram.has_domain());
-    let axis = if needs_axis { medial_axis(&diagram, &options)? } else { MedialAxis::default() };
+    let axis = if needs_axis { medial_axis(&diagram, &options) } else { MedialAxis::default() };
     if let Some(path) = &options.svg {
         let rings = input.rings();
         let domain = svg::Domain { rings: &rings, axis: &axis, tolerance };
@@ -111,14 +111,16 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     Ok(())
 }
 
-/// The medial axis, filtered as the options ask.
-fn medial_axis(diagram: &Diagram, options: &Options) -> Result<MedialAxis, Failure> {
-    // The filters are being added to the library; until then they are
-    // refused rather than silently ignored.
-    if options.corner_angle.is_some() || options.prune_spurs.is_some() {
-        return Err(failed("--corner-angle and --prune-spurs are not available in this build yet".into()));
+/// The medial axis, filtered as the options ask (no option: no filter).
+fn medial_axis(diagram: &Diagram, options: &Options) -> MedialAxis {
+    let mut filter = MedialAxisFilter::new();
+    if let Some(degrees) = options.corner_angle {
+        filter = filter.with_corner_angle(degrees);
     }
-    Ok(diagram.medial_axis())
+    if let Some(k) = options.prune_spurs {
+        filter = filter.with_spur_pruning(k);
+    }
+    diagram.medial_axis_filtered(&filter)
 }
 
 fn wants_output(options: &Options) -> bool {
