@@ -2,7 +2,12 @@
 //! drops the branch into a convex corner whose interior angle is above a
 //! threshold (the spurs of curves flattened into chords), the spur filter
 //! a leaf branch shorter than `k` times the clearance at its junction.
-//! Pictures: `docs/medial_axis_filters.svg`.
+//! Pictures: `docs/medial_axis_filters.svg`. (The clearance changes no
+//! faster than the length along the axis, and a branch into a corner
+//! starts at clearance 0, so it is at least as long as its junction's
+//! clearance: useful factors are above 1. A rectangle's corners have
+//! branches `sqrt(2)` times it, the spokes of a circle flattened into
+//! chords barely more than 1.)
 //!
 //! A *branch* is a chain of the unfiltered medial axis from a leaf (a vertex
 //! where only that chain ends) to a junction (a vertex where three or more
