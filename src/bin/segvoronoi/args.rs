@@ -60,7 +60,9 @@ Options:
                      the spurs of curves flattened into chords
   --prune-spurs K    leave out the branches from a leaf to a junction that
                      are shorter than K times the clearance at the junction
-                     (K >= 0; 0, the default, leaves out none). Both filters
+                     (K >= 0; 0, the default, leaves out none; a branch
+                     into a corner is at least as long as that clearance,
+                     so useful factors are above 1). Both filters
                      look at the unfiltered axis once (what a removal
                      leaves is not filtered again) and keep a part of the
                      axis whole that they would remove entirely; they apply
