@@ -451,3 +451,45 @@ segvoronoi_cgal_fixture_test(kinked_chain_1e-15_3seg)
 # CGAL (rounding puts four of their sites on one circle: edges of length
 # zero, so EDGES and FACES are not unique there); compared as degenerate,
 # as the harness now does for every generic input CGAL finds so, they agree.
+
+# Issue 9: the medial axis of polygons with holes (the harness's --polygon,
+# the rings format; see the top of cgal_crosscheck.cpp): the pairs of sites
+# of the Voronoi edges inside the domain that are not separators and have
+# positive length, ours (segvoronoi_builder_add_polygon, edge locations)
+# against CGAL's (the segment Delaunay graph, each finite edge located by
+# the exact even-odd rule at a point inside it). Families (testgen/src/
+# rings.rs): random star-shaped polygons with random star-shaped holes
+# (generic); an n/2-gon inscribed in a circle around a concentric one with
+# the same angles, plus octagons in the annulus, regular (cocircular up to
+# rounding; the seed picks the scale 1e-6 .. 1e6) and jittered along the
+# circles; the glyphs B, 8, g of DejaVu Sans (tests/data/glyph_*.rings;
+# seeds 1..3, then the same scaled by 2^-10, 2^10, 2^-20, 2^20). Label
+# medial_axis as well: `ctest -L medial_axis`. About 45 s in all here.
+function(segvoronoi_cgal_axis_test family count seed timeout)
+  set(_name cgal_axis_${family}_${count}_seed${seed})
+  segvoronoi_cgal_generated_test(${_name} ${family} ${count} ${seed} ${timeout})
+  set_tests_properties(${_name} PROPERTIES LABELS "cgal;medial_axis")
+endfunction()
+foreach(_count 8 64 512 4096)
+  foreach(_seed 1 2 3)
+    segvoronoi_cgal_axis_test(rings-holes ${_count} ${_seed} 60)
+  endforeach()
+endforeach()
+foreach(_family rings-inscribed rings-inscribed-jitter)
+  foreach(_count 8 64 512)
+    foreach(_seed 1 2 3 4 5)
+      segvoronoi_cgal_axis_test(${_family} ${_count} ${_seed} 60)
+    endforeach()
+  endforeach()
+endforeach()
+# CGAL needs 9..15 s for the regular 4096 (its exact stage on the nearly
+# cocircular vertices), 1..2 s for the jittered one.
+segvoronoi_cgal_axis_test(rings-inscribed 4096 1 120)
+segvoronoi_cgal_axis_test(rings-inscribed-jitter 4096 1 60)
+segvoronoi_cgal_axis_test(rings-inscribed-jitter 4096 4 60)
+foreach(_seed RANGE 1 15)
+  segvoronoi_cgal_axis_test(glyphs 0 ${_seed} 60)
+endforeach()
+unset(_count)
+unset(_seed)
+unset(_family)

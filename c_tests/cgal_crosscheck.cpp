@@ -8,6 +8,7 @@
 //   segvoronoi_cgal_check --file input.txt [--degenerate] [--family NAME]
 //   segvoronoi_cgal_check --search SECONDS [seed] [--generic] [--no-subnormal] [--out DIR] [--testgen PATH]
 //   segvoronoi_cgal_check --minimise input.txt [--degenerate]
+//   segvoronoi_cgal_check --polygon rings.txt [--family NAME]
 //
 // The file is in Boost.Polygon's text format: P, then P lines "x y", then S,
 // then S lines "x1 y1 x2 y2" (S may be left out when zero). Generic input
@@ -41,6 +42,24 @@
 // failures=K"; exit status 1 when K > 0. --minimise applies the same
 // minimisation to a failing file. The generator is the one CMake built
 // (SEGVORONOI_TESTGEN_PATH), or --testgen PATH.
+//
+// --polygon compares the medial axis of a polygon with holes (issue 9). The
+// file is in the rings format (testgen/src/rings.rs writes it, and the
+// glyph fixtures tests/data/glyph_*.rings use it): a line "rings R", then
+// for each ring a line with its point count K and K lines "x y", the last
+// point joining the first; lines starting with '#' are comments. The
+// domain is the even-odd region of the rings. Ours: the rings through
+// segvoronoi_builder_add_polygon; every edge whose location is INSIDE, not
+// a separator, and of positive length (zero length decided exactly from the
+// sites of its two vertices, with CGAL's predicates as for CGAL's edges).
+// CGAL's: the ring segments in the segment Delaunay graph; the dual of
+// every finite Delaunay edge that is not a separator and not of length
+// zero, a ray counting as outside, a finite edge inside when a point
+// strictly inside it (edge_middle) is, by the exact even-odd rule. The two
+// multisets of site pairs (the canonical names) must be equal, and the
+// library's medial axis must hold exactly its INSIDE non-separator edges.
+// Prints "family=... mode=polygon ... verdict=AGREE|DIFFER"; exit status as
+// for --file.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpq.h>
@@ -663,15 +682,24 @@ bool rational_vertex(const Gt::Site_2& a, const Gt::Site_2& b, const Gt::Site_2&
 // segment.) Still open: two vertices with square
 // roots (a general point-point-segment circle) that coincide through such
 // a touching.
+//
+// The same test on sites alone (is_zero_length_sites) decides zero length
+// for the library's edges in --polygon: the edge (p, q) between the faces
+// (p, q, r) and (q, p, s), each counter-clockwise.
+bool is_zero_length_sites(const Gt& traits, const Gt::Site_2& p, const Gt::Site_2& q, const Gt::Site_2& r,
+                          const Gt::Site_2& s) {
+    CGAL::Gmpq x1, y1, x2, y2;
+    if (rational_vertex(p, q, r, x1, y1) && rational_vertex(q, p, s, x2, y2)) return x1 == x2 && y1 == y2;
+    return traits.is_degenerate_edge_2_object()(p, q, r, s);
+}
+
 bool is_zero_length_edge(const Sdg& sdg, const Sdg::Edge& e) {
     const Sdg::Vertex_handle apex = e.first->vertex(e.second);
     const Sdg::Vertex_handle mirror = sdg.tds().mirror_vertex(e.first, e.second);
     if (apex == mirror) return false;
     const auto ends = edge_vertices(e);
-    const Gt::Site_2 &p = ends.first->site(), &q = ends.second->site(), &r = apex->site(), &s = mirror->site();
-    CGAL::Gmpq x1, y1, x2, y2;
-    if (rational_vertex(p, q, r, x1, y1) && rational_vertex(q, p, s, x2, y2)) return x1 == x2 && y1 == y2;
-    return sdg.geom_traits().is_degenerate_edge_2_object()(p, q, r, s);
+    return is_zero_length_sites(sdg.geom_traits(), ends.first->site(), ends.second->site(), apex->site(),
+                                mirror->site());
 }
 
 // VPAIRS and VVERTICES, zero length decided exactly (is_zero_length_edge),
@@ -1178,6 +1206,7 @@ int usage() {
                  "       segvoronoi_cgal_check --search SECONDS [seed] [--generic] [--no-subnormal] [--out DIR] "
                  "[--testgen PATH]\n"
                  "       segvoronoi_cgal_check --minimise input.txt [--degenerate]\n"
+                 "       segvoronoi_cgal_check --polygon rings.txt [--family NAME]\n"
                  "inputs of a family: segvoronoi-testgen FAMILY N [SEED] > input.txt (--list: the families, and "
                  "which are compared as degenerate)\n");
     return 2;
@@ -1214,6 +1243,387 @@ bool parse_arguments(int argc, char** argv, Input& input) {
     input.degenerate = degenerate;
     if (!family.empty()) input.family = family;
     return true;
+}
+
+// ---------------------------------------------------------------------------
+// Medial axis (--polygon FILE): the pairs of sites of the Voronoi edges
+// inside a polygon with holes, against CGAL's.
+// ---------------------------------------------------------------------------
+
+// Rings format: "rings R", then per ring its point count K and K lines
+// "x y" (the last point joins the first); lines starting with '#' are
+// comments. Repeated consecutive points and a repeated closing point are
+// dropped, as segvoronoi_builder_add_polygon drops them, so that the
+// segments here are the library's.
+bool read_rings(const std::string& path, std::vector<std::vector<Point>>& rings, std::string& error) {
+    std::FILE* in = std::fopen(path.c_str(), "r");
+    if (in == nullptr) {
+        error = "cannot open " + path;
+        return false;
+    }
+    std::string text;
+    char buffer[4096];
+    for (std::size_t got; (got = std::fread(buffer, 1, sizeof buffer, in)) > 0;) text.append(buffer, got);
+    std::fclose(in);
+    std::istringstream lines(text);
+    std::string words, line;
+    while (std::getline(lines, line)) {
+        const std::size_t first = line.find_first_not_of(" \t\r");
+        if (first != std::string::npos && line[first] != '#') words += line + "\n";
+    }
+    std::istringstream tokens(words);
+    std::string keyword;
+    std::size_t ring_count = 0;
+    if (!(tokens >> keyword) || keyword != "rings" || !(tokens >> ring_count)) {
+        error = "expected `rings R` first";
+        return false;
+    }
+    auto number = [&](double& v) {
+        std::string token;
+        if (!(tokens >> token)) return false;
+        char* end = nullptr;
+        v = std::strtod(token.c_str(), &end);
+        return *end == '\0' && std::isfinite(v);
+    };
+    rings.assign(ring_count, {});
+    for (std::size_t r = 0; r < ring_count; ++r) {
+        std::size_t k = 0;
+        if (!(tokens >> k)) {
+            error = "ring " + std::to_string(r) + ": missing point count";
+            return false;
+        }
+        for (std::size_t i = 0; i < k; ++i) {
+            Point p{};
+            if (!number(p.x) || !number(p.y)) {
+                error = "ring " + std::to_string(r) + ", point " + std::to_string(i) + ": missing, malformed or not finite";
+                return false;
+            }
+            if (rings[r].empty() || rings[r].back().x != p.x || rings[r].back().y != p.y) rings[r].push_back(p);
+        }
+        while (rings[r].size() > 1 && rings[r].front().x == rings[r].back().x && rings[r].front().y == rings[r].back().y) {
+            rings[r].pop_back();
+        }
+    }
+    std::string rest;
+    if (tokens >> rest) {
+        error = "text after the last ring";
+        return false;
+    }
+    return true;
+}
+
+// Whether (x, y) lies inside the even-odd region of the rings: the
+// crossings of a ray to +x (half-open in y), each decided by an exact
+// orientation. Asked at points off the rings only.
+bool even_odd_inside(const std::vector<std::vector<Point>>& rings, double x, double y) {
+    const Epick::Point_2 q(x, y);
+    bool inside = false;
+    for (const std::vector<Point>& ring : rings) {
+        for (std::size_t k = 0; k < ring.size(); ++k) {
+            const Point& a = ring[k];
+            const Point& b = ring[(k + 1) % ring.size()];
+            if ((a.y > y) == (b.y > y)) continue;
+            const Point& lo = a.y < b.y ? a : b;
+            const Point& hi = a.y < b.y ? b : a;
+            if (CGAL::orientation(Epick::Point_2(lo.x, lo.y), Epick::Point_2(hi.x, hi.y), q) == CGAL::LEFT_TURN) {
+                inside = !inside;
+            }
+        }
+    }
+    return inside;
+}
+
+// One side's medial axis as pairs of site names (with multiplicity).
+struct AxisResult {
+    Section pairs;
+    // Edges that are not separators, of length zero (anywhere; left out),
+    // and of positive length outside the domain (rays included). The
+    // Voronoi diagram decides both, so they agree when the diagrams do
+    // (informational: a note when not).
+    std::size_t zero_length = 0;
+    std::size_t outside = 0;
+    // CGAL's: finite edges whose middle point is within 1e-12 of the
+    // extent from its sites, so that its rounding might move it across a
+    // ring segment (then a difference may be the harness's; none so far).
+    std::size_t close_middles = 0;
+    double build_ms = 0.0;
+    std::vector<std::string> problems;  // ours: validity and consistency failures
+};
+
+void add_pair(Section& section, Name a, Name b) {
+    Line line{a, b};
+    std::sort(line.begin(), line.end());
+    ++section[line];
+}
+
+// Our side: every edge INSIDE the domain that is not a separator and has
+// positive length, decided exactly by the harness from the sites of its two
+// vertices (the library's zero length is in the topology text only): with
+// p, q the edge's sites, r the third site at one end and s at the other,
+// the faces are (p, q, r) and (q, p, s) counter-clockwise, as CGAL's. The
+// medial axis (segvoronoi_diagram_medial_axis) must hold exactly these
+// edges, zero-length ones included, each once.
+AxisResult axis_ours(const std::vector<std::vector<Point>>& rings, const Sites& sites) {
+    AxisResult ours;
+    std::vector<double> xy;
+    std::vector<std::size_t> lengths;
+    for (const std::vector<Point>& ring : rings) {
+        for (const Point& p : ring) xy.insert(xy.end(), {p.x, p.y});
+        lengths.push_back(ring.size());
+    }
+    segvoronoi_builder* builder = segvoronoi_builder_new();
+    if (builder == nullptr) throw LibraryError("segvoronoi_builder_new returned NULL");
+    segvoronoi_diagram* diagram = nullptr;
+    segvoronoi_medial_axis* axis = nullptr;
+    try {
+        const auto start = std::chrono::steady_clock::now();
+        check_status(segvoronoi_builder_add_polygon(builder, xy.data(), lengths.data(), lengths.size()),
+                     "segvoronoi_builder_add_polygon", builder);
+        check_status(segvoronoi_builder_build(builder, &diagram), "segvoronoi_builder_build", builder);
+        ours.build_ms = elapsed_ms(start);
+        if (segvoronoi_diagram_validate(diagram) != SEGVORONOI_STATUS_OK) {
+            ours.problems.push_back("segvoronoi_diagram_validate failed");
+        }
+        const std::size_t site_count = segvoronoi_diagram_site_count(diagram);
+        std::vector<Name> names;
+        std::vector<Gt::Site_2> cgal_sites;
+        for (std::size_t k = 0; k < site_count; ++k) {
+            segvoronoi_site site{};
+            site.struct_size = sizeof site;
+            check_status(segvoronoi_diagram_site(diagram, k, &site), "segvoronoi_diagram_site");
+            const K::Point_2 a(site.x, site.y), b(site.x2, site.y2);
+            if (site.kind == SEGVORONOI_SITE_POINT) {
+                names.push_back({0, sites.index(site.x, site.y)});
+                cgal_sites.push_back(Gt::Site_2::construct_site_2(a));
+            } else {
+                names.push_back({1, sites.segment({site.x, site.y}, {site.x2, site.y2})});
+                cgal_sites.push_back(Gt::Site_2::construct_site_2(a, b));
+            }
+        }
+        const Gt traits;
+        const std::size_t edge_count = segvoronoi_diagram_edge_count(diagram);
+        std::vector<bool> in_axis(edge_count, false);
+        auto vertex = [&](std::uint32_t id) {
+            segvoronoi_vertex v{};
+            v.struct_size = sizeof v;
+            check_status(segvoronoi_diagram_vertex(diagram, id, &v), "segvoronoi_diagram_vertex");
+            return v;
+        };
+        // The site after `first, second` counter-clockwise around `v`, if
+        // they follow each other there.
+        auto third = [](const segvoronoi_vertex& v, std::uint32_t first, std::uint32_t second, std::uint32_t& out) {
+            for (int i = 0; i < 3; ++i) {
+                if (v.sites[i] == first && v.sites[(i + 1) % 3] == second) {
+                    out = v.sites[(i + 2) % 3];
+                    return true;
+                }
+            }
+            return false;
+        };
+        for (std::size_t e = 0; e < edge_count; ++e) {
+            segvoronoi_edge edge{};
+            edge.struct_size = sizeof edge;
+            check_status(segvoronoi_diagram_edge(diagram, e, &edge), "segvoronoi_diagram_edge");
+            std::uint32_t location = 0;
+            check_status(segvoronoi_diagram_edge_location(diagram, e, &location), "segvoronoi_diagram_edge_location");
+            if (edge.is_separator) continue;
+            in_axis[e] = location == SEGVORONOI_LOCATION_INSIDE;
+            if (edge.is_infinite) {
+                if (in_axis[e]) ours.problems.push_back("edge " + std::to_string(e) + " is inside and reaches infinity");
+                ++ours.outside;
+                continue;
+            }
+            const segvoronoi_vertex start_vertex = vertex(edge.ends[0].vertex), end_vertex = vertex(edge.ends[1].vertex);
+            std::uint32_t p = edge.sites[0], q = edge.sites[1], r = 0, s = 0;
+            if (!third(end_vertex, p, q, r)) std::swap(p, q);
+            if (!third(end_vertex, p, q, r) || !third(start_vertex, q, p, s)) {
+                ours.problems.push_back("edge " + std::to_string(e) + ": its sites are not those of its vertices");
+                continue;
+            }
+            // two vertices of the same three sites are two circles: apart
+            if (r != s && is_zero_length_sites(traits, cgal_sites[p], cgal_sites[q], cgal_sites[r], cgal_sites[s])) {
+                ++ours.zero_length;
+            } else if (in_axis[e]) {
+                add_pair(ours.pairs, names[p], names[q]);
+            } else {
+                ++ours.outside;
+            }
+        }
+        check_status(segvoronoi_diagram_medial_axis(diagram, &axis), "segvoronoi_diagram_medial_axis");
+        std::vector<std::size_t> seen(edge_count, 0);
+        for (std::size_t c = 0; c < segvoronoi_medial_axis_chain_count(axis); ++c) {
+            std::size_t pieces = 0;
+            bool closed = false;
+            check_status(segvoronoi_medial_axis_chain(axis, c, &pieces, &closed), "segvoronoi_medial_axis_chain");
+            for (std::size_t k = 0; k < pieces; ++k) {
+                segvoronoi_piece piece{};
+                piece.struct_size = sizeof piece;
+                check_status(segvoronoi_medial_axis_piece(axis, c, k, &piece), "segvoronoi_medial_axis_piece");
+                if (piece.edge < edge_count) ++seen[piece.edge];
+            }
+        }
+        for (std::size_t e = 0; e < edge_count; ++e) {
+            if (seen[e] != (in_axis[e] ? 1u : 0u)) {
+                ours.problems.push_back("the medial axis has edge " + std::to_string(e) + " " + std::to_string(seen[e]) +
+                                        " times, expected " + (in_axis[e] ? "once" : "never"));
+                break;
+            }
+        }
+    } catch (...) {
+        segvoronoi_medial_axis_free(axis);
+        segvoronoi_diagram_free(diagram);
+        segvoronoi_builder_free(builder);
+        throw;
+    }
+    segvoronoi_medial_axis_free(axis);
+    segvoronoi_diagram_free(diagram);
+    segvoronoi_builder_free(builder);
+    return ours;
+}
+
+// A point strictly inside the Voronoi edge from v1 to v2 (both finite)
+// between the sites a and b, in double: the middle of the two vertices for
+// a straight edge (two points, two segments), and for a parabolic one (a
+// point and a segment not its endpoint) the point of the parabola above
+// the middle of the vertices' feet on the segment's line. A positive-length
+// Voronoi edge meets no input segment in its interior, so one such point
+// says on which side of the rings all of it is; it errs only if its
+// rounding moves it across a segment, by more than its clearance.
+K::Point_2 edge_middle(const Gt::Site_2& a, const Gt::Site_2& b, const K::Point_2& v1, const K::Point_2& v2) {
+    const bool parabola = a.is_point() != b.is_point();
+    if (!parabola) return K::Point_2(v1.x() / 2.0 + v2.x() / 2.0, v1.y() / 2.0 + v2.y() / 2.0);
+    const K::Point_2 focus = a.is_point() ? a.point() : b.point();
+    const K::Segment_2 seg = a.is_point() ? b.segment() : a.segment();
+    const double ax = seg.source().x(), ay = seg.source().y();
+    double ux = seg.target().x() - ax, uy = seg.target().y() - ay;
+    const double length = std::hypot(ux, uy);
+    ux /= length;
+    uy /= length;
+    const double t1 = (v1.x() - ax) * ux + (v1.y() - ay) * uy, t2 = (v2.x() - ax) * ux + (v2.y() - ay) * uy;
+    const double t = (t1 + t2) / 2.0;
+    const double fx = ax + t * ux, fy = ay + t * uy;
+    // the unit normal toward the focus
+    double nx = -uy, ny = ux;
+    if ((focus.x() - fx) * nx + (focus.y() - fy) * ny < 0.0) nx = -nx, ny = -ny;
+    // |f + h n - focus| = h
+    const double dx = focus.x() - fx, dy = focus.y() - fy;
+    const double h = (dx * dx + dy * dy) / (2.0 * (dx * nx + dy * ny));
+    return K::Point_2(fx + h * nx, fy + h * ny);
+}
+
+// CGAL's side: every finite Delaunay edge that is not a separator (a
+// segment and one of its own endpoints); its dual is a ray (next to an
+// infinite face: unbounded, so outside the bounded domain), of length zero
+// (is_zero_length_edge: left out), or a finite edge inside or outside as
+// the point edge_middle says by the exact even-odd rule.
+AxisResult axis_cgal(const std::vector<std::vector<Point>>& rings, const Sites& sites, const Input& input) {
+    AxisResult cgal;
+    Sdg sdg;
+    CgalResult built;
+    build_cgal_graph(sites, input, sdg, built);
+    cgal.build_ms = built.build_ms;
+    if (sdg.dimension() < 2) throw std::runtime_error("the rings are collinear");
+    const double extent = sites.extent();
+    auto is_separator = [](const Gt::Site_2& a, const Gt::Site_2& b) {
+        if (a.is_point() == b.is_point()) return false;
+        const K::Point_2 p = a.is_point() ? a.point() : b.point();
+        const K::Segment_2 seg = a.is_point() ? b.segment() : a.segment();
+        return p == seg.source() || p == seg.target();
+    };
+    for (auto e = sdg.finite_edges_begin(); e != sdg.finite_edges_end(); ++e) {
+        const auto ends = edge_vertices(*e);
+        const Gt::Site_2 &a = ends.first->site(), &b = ends.second->site();
+        if (is_separator(a, b)) continue;
+        const Sdg::Face_handle f = e->first, g = f->neighbor(e->second);
+        if (sdg.is_infinite(f) || sdg.is_infinite(g)) {
+            ++cgal.outside;
+            continue;
+        }
+        if (is_zero_length_edge(sdg, *e)) {
+            ++cgal.zero_length;
+            continue;
+        }
+        const K::Point_2 middle = edge_middle(a, b, sdg.primal(f), sdg.primal(g));
+        if (!std::isfinite(middle.x()) || !std::isfinite(middle.y())) {
+            throw std::runtime_error("a Voronoi edge whose middle CGAL's double construction cannot place");
+        }
+        // its distance to site a is the clearance there (it is on a's cell)
+        const double clearance = a.is_point() ? std::hypot(middle.x() - a.point().x(), middle.y() - a.point().y())
+                                              : std::sqrt(CGAL::to_double(CGAL::squared_distance(middle, a.segment())));
+        if (!(clearance > 1e-12 * extent)) ++cgal.close_middles;
+        if (!even_odd_inside(rings, middle.x(), middle.y())) {
+            ++cgal.outside;
+            continue;
+        }
+        add_pair(cgal.pairs, site_name(ends.first, sites), site_name(ends.second, sites));
+    }
+    return cgal;
+}
+
+// --polygon FILE [--family NAME]: the medial axis of the rings in FILE,
+// ours against CGAL's. Exit status as --file.
+int polygon_main(int argc, char** argv) {
+    if (argc < 3) return usage();
+    std::string family = "file";
+    for (int k = 3; k < argc; ++k) {
+        if (std::string(argv[k]) == "--family" && k + 1 < argc) {
+            family = argv[++k];
+        } else {
+            return usage();
+        }
+    }
+    std::vector<std::vector<Point>> rings;
+    std::string error;
+    if (!read_rings(argv[2], rings, error)) {
+        std::fprintf(stderr, "segvoronoi_cgal_check: %s: %s\n", argv[2], error.c_str());
+        return 2;
+    }
+    Input input;
+    input.family = family;
+    for (const std::vector<Point>& ring : rings) {
+        for (std::size_t k = 0; k < ring.size(); ++k) input.segments.push_back({ring[k], ring[(k + 1) % ring.size()]});
+    }
+    const Sites sites(input);
+    std::signal(SIGFPE, report_sigfpe);
+    g_current_input = &input;
+    AxisResult ours, cgal;
+    try {
+        ours = axis_ours(rings, sites);
+    } catch (const std::exception& e) {
+        std::printf("family=%s mode=polygon segments=%zu verdict=ERROR segvoronoi: %s\n", family.c_str(),
+                    input.segments.size(), e.what());
+        return 3;
+    }
+    try {
+        cgal = axis_cgal(rings, sites, input);
+    } catch (const std::exception& e) {
+        std::printf("family=%s mode=polygon segments=%zu verdict=ERROR cgal: %s\n", family.c_str(),
+                    input.segments.size(), e.what());
+        return 3;
+    }
+    const SectionDiff diff = compare_section(ours.pairs, cgal.pairs);
+    std::size_t ours_count = 0, cgal_count = 0;
+    for (const auto& entry : ours.pairs) ours_count += entry.second;
+    for (const auto& entry : cgal.pairs) cgal_count += entry.second;
+    const bool agree = diff.only_ours == 0 && diff.only_cgal == 0, valid = ours.problems.empty();
+    std::printf("family=%s mode=polygon rings=%zu segments=%zu ours_axis=%zu cgal_axis=%zu matched=%zu only_ours=%zu "
+                "only_cgal=%zu ours_zero_length=%zu cgal_zero_length=%zu ours_outside=%zu cgal_outside=%zu "
+                "close_middles=%zu ours_build_ms=%.1f cgal_build_ms=%.1f valid=%s verdict=%s\n",
+                family.c_str(), rings.size(), input.segments.size(), ours_count, cgal_count, diff.matched,
+                diff.only_ours, diff.only_cgal, ours.zero_length, cgal.zero_length, ours.outside, cgal.outside,
+                cgal.close_middles, ours.build_ms, cgal.build_ms, valid ? "yes" : "no", agree && valid ? "AGREE" : "DIFFER");
+    for (const auto& example : diff.examples) {
+        std::printf("    %s AXIS: %s\n", example.first.c_str(), format_line(example.second).c_str());
+    }
+    for (const std::string& problem : ours.problems) std::printf("  invalid: %s\n", problem.c_str());
+    if (ours.zero_length != cgal.zero_length || ours.outside != cgal.outside) {
+        std::printf("  note: the counts of zero-length or outside edges differ\n");
+    }
+    if (!agree && cgal.close_middles > 0) {
+        std::printf("  note: %zu of CGAL's edges were located at a point within rounding of a ring segment\n",
+                    cgal.close_middles);
+    }
+    return agree && valid ? 0 : 1;
 }
 
 }  // namespace
@@ -1279,6 +1689,7 @@ int search_main(int argc, char** argv) {
 }
 
 int main(int argc, char** argv) {
+    if (argc >= 2 && std::string(argv[1]) == "--polygon") return polygon_main(argc, argv);
     const int searched = search_main(argc, argv);
     if (searched >= 0) return searched;
     Input input;

@@ -5,8 +5,9 @@
 #
 # writes the family's input to INPUT (kept, to rerun or debug by hand) and
 # compares it: `segvoronoi_cgal_check --file INPUT --family FAMILY`, with
-# --degenerate for the families the generator says are compared so. Fails
-# when either program does.
+# --degenerate for the families the generator says are compared so, or
+# `--polygon INPUT --family FAMILY` (the medial axis) for the ring families
+# (the generator says "polygon"). Fails when either program does.
 foreach(_var TESTGEN CHECK FAMILY COUNT SEED INPUT)
   if(NOT DEFINED ${_var})
     message(FATAL_ERROR "cgal_family.cmake: ${_var} is not set")
@@ -23,11 +24,14 @@ execute_process(COMMAND "${TESTGEN}" --comparison "${FAMILY}"
 if(NOT _status EQUAL 0)
   message(FATAL_ERROR "segvoronoi-testgen --comparison ${FAMILY}: ${_status}")
 endif()
+set(_mode --file)
 set(_flags --family "${FAMILY}")
 if(_comparison STREQUAL "degenerate")
   list(APPEND _flags --degenerate)
+elseif(_comparison STREQUAL "polygon")
+  set(_mode --polygon)
 endif()
-execute_process(COMMAND "${CHECK}" --file "${INPUT}" ${_flags} RESULT_VARIABLE _status)
+execute_process(COMMAND "${CHECK}" ${_mode} "${INPUT}" ${_flags} RESULT_VARIABLE _status)
 if(NOT _status EQUAL 0)
-  message(FATAL_ERROR "segvoronoi_cgal_check --file ${INPUT} ${_flags}: exit status ${_status}")
+  message(FATAL_ERROR "segvoronoi_cgal_check ${_mode} ${INPUT} ${_flags}: exit status ${_status}")
 endif()

@@ -23,6 +23,7 @@ pub mod bench;
 pub mod exact;
 mod near_degenerate;
 mod points;
+pub mod rings;
 pub mod search;
 mod segments;
 pub mod shapes;

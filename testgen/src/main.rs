@@ -1,8 +1,10 @@
-//! segvoronoi-testgen: writes the cross-check's inputs in Boost.Polygon's
-//! text format on stdout.
+//! segvoronoi-testgen: writes the cross-check's inputs on stdout, in
+//! Boost.Polygon's text format, or for the ring families (polygons with
+//! holes, `segvoronoi_testgen::rings`) in the rings format.
 //!
 //!   segvoronoi-testgen FAMILY N [SEED]        one input (SEED 1 if left out)
-//!   segvoronoi-testgen --comparison FAMILY    "degenerate" or "generic"
+//!   segvoronoi-testgen --comparison FAMILY    "degenerate", "generic" or "polygon"
+//!                                             (a ring family: the harness's --polygon)
 //!   segvoronoi-testgen --list                 every family and its comparison
 //!   segvoronoi-testgen search SEED [--generic] [--count K]
 //!                                             the search's cases, one record each
@@ -14,10 +16,11 @@
 use std::io::{self, BufWriter, Write};
 use std::process::ExitCode;
 
+use segvoronoi_testgen::rings::{generate_rings, write_rings, RING_FAMILIES};
 use segvoronoi_testgen::{generate, search, write_text, FAMILIES};
 
 fn usage() -> ExitCode {
-    let names: Vec<&str> = FAMILIES.iter().map(|(name, _)| *name).collect();
+    let names: Vec<&str> = FAMILIES.iter().map(|(name, _)| *name).chain(RING_FAMILIES.iter().copied()).collect();
     eprintln!(
         "usage: segvoronoi-testgen FAMILY N [SEED]\n       segvoronoi-testgen --comparison FAMILY\n       \
          segvoronoi-testgen --list\n       segvoronoi-testgen search SEED [--generic] [--count K]\nfamilies: {}",
@@ -47,6 +50,7 @@ fn main() -> ExitCode {
             let text: String = FAMILIES
                 .iter()
                 .map(|(name, degenerate)| format!("{name} {}\n", if *degenerate { "degenerate" } else { "generic" }))
+                .chain(RING_FAMILIES.iter().map(|name| format!("{name} polygon\n")))
                 .collect();
             finish(out.write_all(text.as_bytes()).and_then(|()| out.flush()))
         }
@@ -54,6 +58,7 @@ fn main() -> ExitCode {
             Some((_, degenerate)) => {
                 finish(writeln!(out, "{}", if *degenerate { "degenerate" } else { "generic" }).and_then(|()| out.flush()))
             }
+            None if RING_FAMILIES.contains(family) => finish(writeln!(out, "polygon").and_then(|()| out.flush())),
             None => usage(),
         },
         ["search", seed, options @ ..] => {
@@ -76,6 +81,12 @@ fn main() -> ExitCode {
             let (Ok(n), Ok(seed)) = (n.parse::<usize>(), seed.first().map_or(Ok(1), |s| s.parse::<u64>())) else {
                 return usage();
             };
+            if RING_FAMILIES.contains(family) {
+                return match generate_rings(family, n, seed) {
+                    Some(rings) => finish(write_rings(&mut out, &rings).and_then(|()| out.flush())),
+                    None => usage(),
+                };
+            }
             match generate(family, n, seed) {
                 Some(input) => finish(write_text(&mut out, &input.points, &input.segments).and_then(|()| out.flush())),
                 None => usage(),

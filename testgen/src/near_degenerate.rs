@@ -8,7 +8,7 @@ use crate::{next_after, power_of_two, Input, Rng, Segment, TWO_PI};
 
 /// The scale of a near-degenerate family's seed-th run: 1e-6, 1e-3, 1,
 /// 1e3, 1e6 in turn, so that every magnitude meets the same shapes.
-fn seed_scale(seed: u64) -> f64 {
+pub(crate) fn seed_scale(seed: u64) -> f64 {
     [1e-6, 1e-3, 1.0, 1e3, 1e6][(seed % 5) as usize]
 }
 
