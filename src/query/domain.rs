@@ -59,6 +59,32 @@ struct Ring {
     segments: Vec<SiteId>,
     /// Whether the domain is on the left of the ring's direction.
     left_inside: bool,
+    /// The bounding box of its corners: a ring can hold a point, or
+    /// another ring, only inside it (which keeps the tests of many small
+    /// rings near-linear).
+    bounds: Bounds,
+}
+
+/// An axis-parallel box `[min x, min y, max x, max y]`.
+#[derive(Clone, Copy, Debug)]
+struct Bounds([f64; 4]);
+
+impl Bounds {
+    fn of(points: impl Iterator<Item = Point>) -> Bounds {
+        Bounds(points.fold([f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY], |[x0, y0, x1, y1], p| {
+            [x0.min(p.x), y0.min(p.y), x1.max(p.x), y1.max(p.y)]
+        }))
+    }
+
+    fn holds_point(&self, p: Point) -> bool {
+        let [x0, y0, x1, y1] = self.0;
+        (x0..=x1).contains(&p.x) && (y0..=y1).contains(&p.y)
+    }
+
+    fn holds(&self, other: &Bounds) -> bool {
+        let [x0, y0, x1, y1] = other.0;
+        self.holds_point(Point::new(x0, y0)) && self.holds_point(Point::new(x1, y1))
+    }
 }
 
 /// What a site is to the domain.
@@ -231,7 +257,9 @@ impl Diagram {
                         }
                     })
                     .collect();
-                Ring { corners, segments, left_inside: false }
+                let corners: Vec<SiteId> = corners;
+                let bounds = Bounds::of(corners.iter().map(|&c| self.point_of(c)));
+                Ring { corners, segments, left_inside: false, bounds }
             })
             .collect();
         let counter_clockwise: Vec<bool> = rings.iter().map(|r| self.is_counter_clockwise(r)).collect();
@@ -259,7 +287,7 @@ impl Diagram {
     /// overlap, so one corner of `r` not on another ring tells).
     fn enclosing_rings(&self, rings: &[Ring], r: usize) -> usize {
         (0..rings.len())
-            .filter(|&other| other != r)
+            .filter(|&other| other != r && rings[other].bounds.holds(&rings[r].bounds))
             .filter(|&other| {
                 rings[r]
                     .corners
@@ -274,7 +302,7 @@ impl Diagram {
     /// The even-odd location of `p` against all rings.
     fn point_location(&self, rings: &[Ring], p: Point) -> Location {
         let mut inside = false;
-        for ring in rings {
+        for ring in rings.iter().filter(|ring| ring.bounds.holds_point(p)) {
             match self.ring_location(ring, p) {
                 Location::Boundary => return Location::Boundary,
                 Location::Inside => inside = !inside,

@@ -71,21 +71,29 @@ impl Diagram {
         (0..self.edges.len()).map(|e| self.in_medial_axis(EdgeId::from_index(e))).collect()
     }
 
-    /// How many of the edges marked in `in_axis` meet at an end (zero at
-    /// infinity).
-    pub(super) fn axis_degree(&self, end: EdgeEnd, in_axis: &[bool]) -> usize {
-        match end {
-            EdgeEnd::Vertex(v) => {
-                self.vertex_half_edges(v).map_or(0, |out| out.iter().filter(|h| in_axis[h.edge().index()]).count())
+    /// Per finite vertex, how many of the edges marked in `in_axis` meet
+    /// there.
+    pub(super) fn axis_degrees(&self, in_axis: &[bool]) -> Vec<u8> {
+        let mut degree = vec![0u8; self.finite_vertices];
+        for (e, _) in in_axis.iter().enumerate().filter(|(_, &marked)| marked) {
+            for v in self.end_vertices(EdgeId::from_index(e)).into_iter().flatten() {
+                degree[v.index()] += 1;
             }
-            EdgeEnd::Infinite { .. } => 0,
         }
+        degree
+    }
+
+    /// The finite vertices at the two ends of an edge (in range).
+    pub(super) fn end_vertices(&self, e: EdgeId) -> [Option<VertexId>; 2] {
+        let h = self.edges[e.index()];
+        [h.origin(), self.store.twin(h).origin()].map(|v| (v.index() < self.finite_vertices).then_some(v))
     }
 
     /// The edges marked in `in_axis` as chains: maximal paths through
     /// vertices where two of them meet.
     pub(super) fn chains_of(&self, in_axis: &[bool]) -> Vec<Chain> {
-        let degree = |end: EdgeEnd| self.axis_degree(end, in_axis);
+        let degrees = self.axis_degrees(in_axis);
+        let degree = |end: EdgeEnd| degree_at(end, &degrees);
         let mut used = vec![false; self.edges.len()];
         let mut chains = Vec::new();
         // Open chains first: from every end whose degree is not two.
@@ -127,8 +135,9 @@ impl Diagram {
         let mut closed = false;
         loop {
             used[h.edge().index()] = true;
-            pieces.push(self.piece(h));
-            let end = self.half_edge_target(h).expect("in range");
+            let piece = self.piece(h);
+            let end = piece.ends[1];
+            pieces.push(piece);
             let EdgeEnd::Vertex(v) = end else { break };
             if degree(end) != 2 {
                 break;
@@ -155,12 +164,16 @@ impl Diagram {
 
     /// The piece of half-edge `h`.
     fn piece(&self, h: HalfEdge) -> Piece {
-        let ends = [self.half_edge_origin(h).expect("in range"), self.half_edge_target(h).expect("in range")];
+        let edge = self.edge(h.edge()).expect("in range");
+        let mut ends = edge.ends;
+        if h.is_reversed() {
+            ends.reverse();
+        }
         let clearance = ends.map(|end| match end {
-            EdgeEnd::Vertex(v) => self.vertex(v).map_or(f64::NAN, |v| v.clearance),
+            EdgeEnd::Vertex(v) => self.store.clearance[v.index()],
             EdgeEnd::Infinite { .. } => f64::INFINITY,
         });
-        let shape = self.edge_shape(h.edge()).expect("in range");
+        let shape = self.shape_of(&edge);
         Piece { edge: h.edge(), reversed: h.is_reversed(), ends, clearance, shape }
     }
 
@@ -196,23 +209,45 @@ impl Diagram {
     /// clearance: `[x, y, r]`. `None` for a piece reaching infinity or a
     /// tolerance that is not positive.
     pub fn sample_piece(&self, piece: &Piece, tolerance: f64) -> Option<Vec<[f64; 3]>> {
-        let mut points = self.edge_polyline(piece.edge, tolerance)?;
-        if piece.reversed {
-            points.reverse();
+        let mut points = Vec::new();
+        self.append_piece(piece, tolerance, &mut points)?;
+        Some(points)
+    }
+
+    /// Appends the points of `sample_piece` to `out`, but for its first
+    /// when `out` already ends there (the end of the previous piece).
+    fn append_piece(&self, piece: &Piece, tolerance: f64, out: &mut Vec<[f64; 3]>) -> Option<()> {
+        let skip = usize::from(!out.is_empty());
+        let &canonical = self.edges.get(piece.edge.index())?;
+        let site = self.sites[self.store.left(canonical).index()];
+        let at = |end: EdgeEnd| match end {
+            EdgeEnd::Vertex(v) => Some(self.store.position[v.index()]),
+            EdgeEnd::Infinite { .. } => None,
+        };
+        let with_clearance = |p: Point| [p.x, p.y, site.distance(p)];
+        match piece.shape {
+            // a straight piece is its two ends (as `edge_polyline` has it)
+            EdgeShape::Line if tolerance > 0.0 => {
+                let ends = [at(piece.ends[0])?, at(piece.ends[1])?];
+                out.extend(ends.into_iter().skip(skip).map(with_clearance));
+            }
+            _ => {
+                let mut points = self.edge_polyline(piece.edge, tolerance)?;
+                if piece.reversed {
+                    points.reverse();
+                }
+                out.extend(points.into_iter().skip(skip).map(with_clearance));
+            }
         }
-        let site = self.edge(piece.edge)?.sites[0];
-        let site = self.site(site)?;
-        Some(points.into_iter().map(|p| [p.x, p.y, site.distance(p)]).collect())
+        Some(())
     }
 
     /// The points of a chain within `tolerance` (see [`Diagram::sample_piece`]),
     /// shared ends once; `None` when a piece reaches infinity.
     pub fn sample_chain(&self, chain: &Chain, tolerance: f64) -> Option<Vec<[f64; 3]>> {
-        let mut out: Vec<[f64; 3]> = Vec::new();
+        let mut out: Vec<[f64; 3]> = Vec::with_capacity(chain.pieces.len() + 1);
         for piece in &chain.pieces {
-            let points = self.sample_piece(piece, tolerance)?;
-            let skip = usize::from(!out.is_empty());
-            out.extend(points.into_iter().skip(skip));
+            self.append_piece(piece, tolerance, &mut out)?;
         }
         Some(out)
     }
@@ -257,14 +292,26 @@ impl Diagram {
         }
         let components = self.axis_components(&self.medial_axis_edges());
         let mut largest: Vec<Option<(Point, f64)>> = vec![None; self.finite_vertices];
-        for v in self.vertices().filter(|v| self.vertex_location(v.id) == Some(Location::Inside)) {
-            let best = &mut largest[components.find(v.id.index())];
-            if best.is_none_or(|(_, r)| v.clearance > r) {
-                *best = Some((v.position, v.clearance));
+        for v in (0..self.finite_vertices).map(VertexId::from_index) {
+            if self.vertex_location(v) != Some(Location::Inside) {
+                continue;
+            }
+            let (position, clearance) = (self.store.position[v.index()], self.store.clearance[v.index()]);
+            let best = &mut largest[components.find(v.index())];
+            if best.map_or(true, |(_, r)| clearance > r) {
+                *best = Some((position, clearance));
             }
         }
         let mut circles: Vec<(Point, f64)> = largest.into_iter().flatten().collect();
         circles.sort_by(|a, b| b.1.total_cmp(&a.1));
         circles
+    }
+}
+
+/// The degree of an end in the axis (`axis_degrees`): zero at infinity.
+pub(super) fn degree_at(end: EdgeEnd, degrees: &[u8]) -> usize {
+    match end {
+        EdgeEnd::Vertex(v) => usize::from(degrees[v.index()]),
+        EdgeEnd::Infinite { .. } => 0,
     }
 }

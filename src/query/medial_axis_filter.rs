@@ -20,6 +20,7 @@
 //! which is a branch into a corner) is kept whole.
 
 use crate::diagram::{Diagram, EdgeId, VertexId};
+use crate::query::medial_axis::degree_at;
 use crate::query::partition::Partition;
 use crate::query::{Chain, EdgeEnd, EdgeShape, MedialAxis};
 use crate::Site;
@@ -86,7 +87,8 @@ impl Diagram {
     pub fn medial_axis_filtered(&self, filter: &MedialAxisFilter) -> MedialAxis {
         let mut in_axis = self.medial_axis_edges();
         let chains = self.chains_of(&in_axis);
-        let removed: Vec<&Chain> = chains.iter().filter(|c| self.filter_removes(c, filter, &in_axis)).collect();
+        let degrees = self.axis_degrees(&in_axis);
+        let removed: Vec<&Chain> = chains.iter().filter(|c| self.filter_removes(c, filter, &degrees)).collect();
         if removed.is_empty() {
             return MedialAxis { chains };
         }
@@ -98,19 +100,19 @@ impl Diagram {
         // them all
         let components = self.axis_components(&in_axis);
         let mut keeps_some = vec![false; self.finite_vertices];
-        for (e, &marked) in in_axis.iter().enumerate() {
-            let ends = self.edge_vertices(EdgeId::from_index(e));
-            let zero_length = matches!(ends[..], [a, b] if self.is_zero_length_edge(a, b));
-            if marked && !out[e] && !zero_length {
-                for v in ends {
-                    keeps_some[components.find(v.index())] = true;
-                }
+        for (e, _) in in_axis.iter().enumerate().filter(|&(e, &marked)| marked && !out[e]) {
+            let ends = self.end_vertices(EdgeId::from_index(e));
+            let Some(v) = ends.into_iter().flatten().next() else { continue };
+            let component = components.find(v.index());
+            // the exact zero-length test only where it can matter
+            if !keeps_some[component] && !matches!(ends, [Some(a), Some(b)] if self.is_zero_length_edge(a, b)) {
+                keeps_some[component] = true;
             }
         }
         for (e, marked) in in_axis.iter_mut().enumerate() {
             if *marked && out[e] {
-                let ends = self.edge_vertices(EdgeId::from_index(e));
-                *marked = ends.iter().all(|v| !keeps_some[components.find(v.index())]);
+                let ends = self.end_vertices(EdgeId::from_index(e));
+                *marked = ends.into_iter().flatten().all(|v| !keeps_some[components.find(v.index())]);
             }
         }
         MedialAxis { chains: self.chains_of(&in_axis) }
@@ -119,13 +121,13 @@ impl Diagram {
     /// Whether `filter` leaves out `chain`: a branch (see the module doc)
     /// into a corner above the angle, or shorter than the spur factor
     /// times its junction's clearance.
-    fn filter_removes(&self, chain: &Chain, filter: &MedialAxisFilter, in_axis: &[bool]) -> bool {
+    fn filter_removes(&self, chain: &Chain, filter: &MedialAxisFilter, degrees: &[u8]) -> bool {
         let (Some(first), Some(last)) = (chain.pieces.first(), chain.pieces.last()) else { return false };
         if chain.closed {
             return false;
         }
         let (start, end) = (first.ends[0], last.ends[1]);
-        let degree = |end: EdgeEnd| self.axis_degree(end, in_axis);
+        let degree = |end: EdgeEnd| degree_at(end, degrees);
         let (leaf, leaf_piece, junction) = match (degree(start), degree(end)) {
             (1, d) if d >= 3 => (start, first, end),
             (d, 1) if d >= 3 => (end, last, start),
@@ -134,7 +136,7 @@ impl Diagram {
         let (EdgeEnd::Vertex(leaf), EdgeEnd::Vertex(junction)) = (leaf, junction) else { return false };
         let into_flat_corner = self.corner_angle_at(leaf, leaf_piece.edge).is_some_and(|angle| angle > filter.corner_angle);
         let short = filter.spur_factor > 0.0 && {
-            let clearance = self.vertex(junction).map_or(f64::NAN, |v| v.clearance);
+            let clearance = self.store.clearance[junction.index()];
             self.chain_length(chain, clearance) < filter.spur_factor * clearance
         };
         into_flat_corner || short
@@ -145,8 +147,7 @@ impl Diagram {
     /// endpoint `v` is at (the edge is their bisector, inside the angle).
     /// `None` when `v` is not such a corner.
     fn corner_angle_at(&self, v: VertexId, e: EdgeId) -> Option<f64> {
-        let vertex = self.vertex(v)?;
-        if vertex.clearance != 0.0 {
+        if self.store.clearance.get(v.index()) != Some(&0.0) {
             return None;
         }
         let [s, t] = self.edge(e)?.sites.map(|s| self.site(s));
@@ -178,28 +179,13 @@ impl Diagram {
             .sum()
     }
 
-    /// The finite ends of an edge.
-    pub(super) fn edge_vertices(&self, e: EdgeId) -> Vec<VertexId> {
-        self.half_edges(e).map_or(Vec::new(), |[h, _]| {
-            [self.half_edge_origin(h), self.half_edge_target(h)]
-                .into_iter()
-                .filter_map(|end| match end {
-                    Some(EdgeEnd::Vertex(v)) => Some(v),
-                    _ => None,
-                })
-                .collect()
-        })
-    }
-
     /// The connected components of the edges marked in `in_axis`, as a
     /// partition of the vertices.
     pub(super) fn axis_components(&self, in_axis: &[bool]) -> Partition {
         let mut components = Partition::new(self.finite_vertices);
         for (e, &marked) in in_axis.iter().enumerate() {
-            if let [v, w] = self.edge_vertices(EdgeId::from_index(e))[..] {
-                if marked {
-                    components.join(v.index(), w.index());
-                }
+            if let (true, [Some(v), Some(w)]) = (marked, self.end_vertices(EdgeId::from_index(e))) {
+                components.join(v.index(), w.index());
             }
         }
         components

@@ -95,9 +95,13 @@ impl Diagram {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn edge_shape(&self, id: EdgeId) -> Option<EdgeShape> {
-        let e = self.edge(id)?;
+        Some(self.shape_of(&self.edge(id)?))
+    }
+
+    /// The shape of an edge already looked up.
+    pub(crate) fn shape_of(&self, e: &crate::query::Edge) -> EdgeShape {
         let [first, second] = e.sites.map(|s| self.sites[s.index()]);
-        Some(EdgeShape::between(first, second, self.scale.to_internal))
+        EdgeShape::between(first, second, self.scale.to_internal)
     }
 
     /// A polyline along a finite edge, from the position of `ends[0]` to
@@ -138,8 +142,9 @@ impl Diagram {
         if tolerance.is_nan() || tolerance <= 0.0 {
             return None;
         }
-        let (start, end) = self.finite_ends(id)?;
-        let Some((parabola, s0, s1)) = self.arc(id, start, end) else { return Some(vec![start, end]) };
+        let edge = self.edge(id)?;
+        let (start, end) = self.finite_ends(&edge)?;
+        let Some((parabola, s0, s1)) = self.arc(&edge, start, end) else { return Some(vec![start, end]) };
         // A tolerance beyond the scaled range becomes infinite: two points.
         let mut points = parabola.sample(s0, s1, tolerance * self.scale.to_internal, MAX_POLYLINE_POINTS);
         for p in points.iter_mut() {
@@ -177,18 +182,18 @@ impl Diagram {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn edge_bezier(&self, id: EdgeId) -> Option<[Point; 3]> {
-        let (start, end) = self.finite_ends(id)?;
-        let (parabola, s0, s1) = self.arc(id, start, end)?;
+        let edge = self.edge(id)?;
+        let (start, end) = self.finite_ends(&edge)?;
+        let (parabola, s0, s1) = self.arc(&edge, start, end)?;
         let [_, control, _] = parabola.bezier(s0, s1);
         let control = control.scaled(self.scale.to_input);
         control.is_finite().then_some([start, control, end])
     }
 
     /// The positions of both ends of a finite edge.
-    fn finite_ends(&self, id: EdgeId) -> Option<(Point, Point)> {
-        let e = self.edge(id)?;
+    fn finite_ends(&self, e: &crate::query::Edge) -> Option<(Point, Point)> {
         match e.ends {
-            [EdgeEnd::Vertex(u), EdgeEnd::Vertex(v)] => Some((self.vertex(u)?.position, self.vertex(v)?.position)),
+            [EdgeEnd::Vertex(u), EdgeEnd::Vertex(v)] => Some((self.store.position[u.index()], self.store.position[v.index()])),
             _ => None,
         }
     }
@@ -198,9 +203,9 @@ impl Diagram {
     /// edges, and when the parabola cannot be set up in floating point (the
     /// focus so close to the directrix that their distance rounds to zero;
     /// the arc is then a straight piece to within rounding).
-    fn arc(&self, id: EdgeId, start: Point, end: Point) -> Option<(Parabola, f64, f64)> {
-        let EdgeShape::Parabola { .. } = self.edge_shape(id)? else { return None };
-        match self.edge_curve(id, start, end)? {
+    fn arc(&self, edge: &crate::query::Edge, start: Point, end: Point) -> Option<(Parabola, f64, f64)> {
+        let EdgeShape::Parabola { .. } = self.shape_of(edge) else { return None };
+        match self.curve_of(edge, start, end) {
             EdgeCurve::Parabola { parabola, from, to } if from.is_finite() && to.is_finite() => Some((parabola, from, to)),
             _ => None,
         }
@@ -210,8 +215,13 @@ impl Diagram {
     /// either direction along it), in internal coordinates (the diagram's
     /// power-of-two scale); `None` if the id is out of range.
     pub(crate) fn edge_curve(&self, id: EdgeId, start: Point, end: Point) -> Option<EdgeCurve> {
+        Some(self.curve_of(&self.edge(id)?, start, end))
+    }
+
+    /// The curve of an edge already looked up (see `edge_curve`).
+    fn curve_of(&self, edge: &crate::query::Edge, start: Point, end: Point) -> EdgeCurve {
         let f = self.scale.to_internal;
-        let [first, second] = self.edge(id)?.sites.map(|s| self.sites[s.index()].scaled(f));
-        Some(EdgeCurve::between(&first, &second, start.scaled(f), end.scaled(f)))
+        let [first, second] = edge.sites.map(|s| self.sites[s.index()].scaled(f));
+        EdgeCurve::between(&first, &second, start.scaled(f), end.scaled(f))
     }
 }
