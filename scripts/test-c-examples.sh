@@ -24,6 +24,10 @@ awk '/^## C quick start/ { s = 1 } s && /^```c$/ { c = 1; next } c && /^```$/ { 
   >"$work/readme_quickstart.c"
 diff -u "$work/readme_quickstart.c" "$repo/examples/c/quickstart.c" \
   || fail "the C block under '## C quick start' in README.md and examples/c/quickstart.c differ"
+awk '/^### The medial axis in C/ { s = 1 } s && /^```c$/ { c = 1; next } c && /^```$/ { exit } c' "$repo/README.md" \
+  >"$work/readme_medial_axis.c"
+diff -u "$work/readme_medial_axis.c" "$repo/examples/c/medial_axis.c" \
+  || fail "the C block under '### The medial axis in C' in README.md and examples/c/medial_axis.c differ"
 
 echo "--- package: configure, build, install with --strip, and the Runtime component alone"
 cmake -S "$repo" -B "$work/build" -DCMAKE_BUILD_TYPE=Release >"$work/configure.log" 2>&1 \
@@ -53,7 +57,7 @@ expected_runtime="$(printf '%s\n' "$(basename "$shared")" "$soname" | sort | tr 
 echo "stripped; Runtime component: $runtime_files"
 
 mkdir "$work/example"
-cp "$repo"/examples/c/{quickstart.c,CMakeLists.txt,Makefile} "$work/example/"
+cp "$repo"/examples/c/{quickstart.c,medial_axis.c,CMakeLists.txt,Makefile} "$work/example/"
 
 echo "--- examples/c through CMake: find_package(segvoronoi), shared and static"
 cmake -S "$work/example" -B "$work/example-cmake" -DCMAKE_BUILD_TYPE=Release \
@@ -78,6 +82,10 @@ for out in "$work"/out_*.txt; do
   sed 's/^vertex [0-9]*: //' "$out" | sort | diff -u "$work/expected.txt" - \
     || fail "$(basename "$out" .txt): unexpected output"
 done
+# A 4 x 2 rectangle: a disk of radius 1, five pieces, the middle line pruned.
+printf 'largest disk: r=1\nmedial axis: 5 pieces\npruned: 1 pieces\n' >"$work/expected_medial_axis.txt"
+"$work/example-cmake/medial_axis" | diff -u "$work/expected_medial_axis.txt" - \
+  || fail "examples/c/medial_axis: unexpected output"
 
 echo "--- the programs linked against the shared library, with only the Runtime component"
 mv "$work/prefix" "$work/prefix-gone"
