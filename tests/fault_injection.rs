@@ -358,6 +358,22 @@ fn medial_axis_of_polygons_with_lying_arithmetic() {
             assert!(r.is_finite() || mode == FaultMode::Random);
         }
         assert!(!axis.chains.is_empty(), "{mode:?}: no medial axis");
+        // the filters leave a part of the same edges, each once, chained
+        let all = segvoronoi::MedialAxisFilter::new().with_corner_angle(0.0).with_spur_pruning(10.0);
+        let filtered = d.medial_axis_filtered(&all);
+        assert!(!filtered.chains.is_empty(), "{mode:?}: the filters left nothing");
+        let mut kept = std::collections::HashSet::new();
+        for chain in &filtered.chains {
+            for w in chain.pieces.windows(2) {
+                assert_eq!(w[0].ends[1], w[1].ends[0], "{mode:?}: consecutive filtered pieces meet");
+            }
+            for p in &chain.pieces {
+                assert!(seen.contains(&p.edge) && kept.insert(p.edge), "{mode:?}: a filtered edge not once in the axis");
+            }
+        }
+        let circles = d.inscribed_circles();
+        assert!(circles.windows(2).all(|w| w[0].1 >= w[1].1), "{mode:?}: disks largest first");
+        assert_eq!(circles.first().copied(), d.max_inscribed_circle());
     }
     assert!(built > 0, "no build completed: the test proves nothing");
 }
