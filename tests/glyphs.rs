@@ -17,6 +17,8 @@
 //! seeds 4..15) must give the same answers; the CGAL cross-check compares
 //! the axis itself (`ctest -L medial_axis`).
 
+mod common;
+
 use segvoronoi::{Builder, Diagram, EdgeEnd, Point, Site};
 use segvoronoi_testgen::rings::{even_odd, generate_rings, read_rings, ring_segments, GLYPHS};
 
@@ -51,38 +53,10 @@ fn build(rings: &Rings) -> Diagram {
 /// (every piece an edge, its two vertices; a piece reaching infinity fails).
 fn axis_graph(d: &Diagram) -> (usize, usize, usize) {
     let axis = d.medial_axis();
-    let mut index = std::collections::HashMap::new();
-    let mut edges = Vec::new();
-    for chain in &axis.chains {
-        for piece in &chain.pieces {
-            let ends = piece.ends.map(|end| match end {
-                EdgeEnd::Vertex(v) => v,
-                EdgeEnd::Infinite { .. } => panic!("a medial-axis piece {piece:?} reaches infinity"),
-            });
-            let ids = ends.map(|v| {
-                let next = index.len();
-                *index.entry(v).or_insert(next)
-            });
-            edges.push(ids);
-        }
+    for piece in axis.chains.iter().flat_map(|c| &c.pieces) {
+        assert!(piece.ends.iter().all(|e| matches!(e, EdgeEnd::Vertex(_))), "a medial-axis piece {piece:?} reaches infinity");
     }
-    let mut parent: Vec<usize> = (0..index.len()).collect();
-    fn root(parent: &mut [usize], mut v: usize) -> usize {
-        while parent[v] != v {
-            parent[v] = parent[parent[v]];
-            v = parent[v];
-        }
-        v
-    }
-    let mut components = index.len();
-    for &[a, b] in &edges {
-        let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
-        if ra != rb {
-            parent[ra] = rb;
-            components -= 1;
-        }
-    }
-    (index.len(), edges.len(), components)
+    common::axis_graph(&axis)
 }
 
 fn bounding_box_diagonal(rings: &Rings) -> f64 {

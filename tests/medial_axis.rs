@@ -45,36 +45,9 @@ fn graph_shape(d: &Diagram, axis: &MedialAxis) -> (usize, usize, usize) {
             assert_eq!(d.is_separator(p.edge), Some(false));
         }
     }
-    // union-find over vertex ids
-    let mut parent: HashMap<usize, usize> = HashMap::new();
-    fn find(parent: &mut HashMap<usize, usize>, x: usize) -> usize {
-        let p = *parent.entry(x).or_insert(x);
-        if p == x {
-            return x;
-        }
-        let root = find(parent, p);
-        parent.insert(x, root);
-        root
-    }
-    let mut edges = 0;
-    for chain in &axis.chains {
-        for p in &chain.pieces {
-            edges += 1;
-            let ids: Vec<usize> =
-                p.ends.iter().filter_map(|e| if let EdgeEnd::Vertex(v) = e { Some(v.index()) } else { None }).collect();
-            for &v in &ids {
-                find(&mut parent, v);
-            }
-            if let [u, v] = ids[..] {
-                let (ru, rv) = (find(&mut parent, u), find(&mut parent, v));
-                parent.insert(ru, rv);
-            }
-        }
-    }
-    let vertices = parent.len();
-    let roots: std::collections::HashSet<usize> =
-        parent.keys().copied().collect::<Vec<_>>().into_iter().map(|v| find(&mut parent, v)).collect();
-    (edges, vertices, roots.len())
+    // every piece, rays included; the vertices and components of the finite ones
+    let (vertices, _, components) = common::axis_graph(axis);
+    (seen.len(), vertices, components)
 }
 
 fn positive_length_pieces(d: &Diagram, axis: &MedialAxis) -> usize {

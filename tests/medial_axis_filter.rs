@@ -35,24 +35,8 @@ fn vertex_ends(axis: &MedialAxis) -> Vec<[VertexId; 2]> {
 
 /// (components, independent cycles) of the axis as a graph.
 fn components_and_cycles(axis: &MedialAxis) -> (usize, usize) {
-    let ends = vertex_ends(axis);
-    let mut parent: HashMap<VertexId, VertexId> = HashMap::new();
-    fn find(parent: &mut HashMap<VertexId, VertexId>, x: VertexId) -> VertexId {
-        let p = *parent.entry(x).or_insert(x);
-        if p == x {
-            return x;
-        }
-        let root = find(parent, p);
-        parent.insert(x, root);
-        root
-    }
-    for &[a, b] in &ends {
-        let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-        parent.insert(ra, rb);
-    }
-    let vertices: Vec<VertexId> = parent.keys().copied().collect();
-    let roots: HashSet<VertexId> = vertices.iter().map(|&v| find(&mut parent, v)).collect();
-    (roots.len(), ends.len() + roots.len() - vertices.len())
+    let (vertices, edges, components) = common::axis_graph(axis);
+    (components, edges + components - vertices)
 }
 
 fn degree_in(axis: &MedialAxis) -> HashMap<VertexId, usize> {

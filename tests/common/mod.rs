@@ -143,3 +143,36 @@ pub fn ring_segments(rings: &[Vec<[f64; 2]>]) -> Vec<segvoronoi::Site> {
         })
         .collect()
 }
+
+/// Vertices, edges and connected components of the medial axis as a graph:
+/// every finite piece an edge between its two vertices (pieces reaching
+/// infinity are left out).
+pub fn axis_graph(axis: &segvoronoi::MedialAxis) -> (usize, usize, usize) {
+    let mut index = std::collections::HashMap::new();
+    let mut edges = Vec::new();
+    for piece in axis.chains.iter().flat_map(|c| &c.pieces) {
+        let [EdgeEnd::Vertex(a), EdgeEnd::Vertex(b)] = piece.ends else { continue };
+        let ids = [a, b].map(|v| {
+            let next = index.len();
+            *index.entry(v).or_insert(next)
+        });
+        edges.push(ids);
+    }
+    let mut parent: Vec<usize> = (0..index.len()).collect();
+    fn root(parent: &mut [usize], mut v: usize) -> usize {
+        while parent[v] != v {
+            parent[v] = parent[parent[v]];
+            v = parent[v];
+        }
+        v
+    }
+    let mut components = index.len();
+    for &[a, b] in &edges {
+        let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
+        if ra != rb {
+            parent[ra] = rb;
+            components -= 1;
+        }
+    }
+    (index.len(), edges.len(), components)
+}
