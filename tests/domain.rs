@@ -143,6 +143,14 @@ fn polygon_input_rules() {
     let e = c.build().unwrap_err();
     assert_eq!(e.kind(), ErrorKind::Intersecting);
     assert!(e.message().contains("polygon 0, ring 0") && e.message().contains("ring 1"), "{}", e.message());
+    // rings that share an edge overlap there: refused, naming both
+    let mut shared = Builder::new();
+    shared.add_polygon(&[square(0.0, 0.0, 4.0)]).unwrap();
+    shared.add_polygon(&[square(4.0, 0.0, 4.0)]).unwrap();
+    let e = shared.build().unwrap_err();
+    assert_eq!(e.kind(), ErrorKind::Intersecting);
+    assert_eq!(e.indices(), &[1, 7], "{}", e.message());
+    assert!(e.message().contains("polygon 0, ring 0") && e.message().contains("polygon 1, ring 0"), "{}", e.message());
     // no polygon: no domain
     let mut p = Builder::new();
     p.add_points([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]).unwrap();

@@ -198,3 +198,61 @@ fn without_a_domain_the_chains_cover_every_edge_but_separators() {
     assert_eq!(e, d.edges().filter(|e| d.is_separator(e.id) == Some(false)).count());
     assert!(d.max_inscribed_circle().is_none());
 }
+
+/// Rings that touch at a corner (two squares sharing one, a hole touching
+/// the outer ring, a triangle's corner on another ring's corner): every
+/// location agrees with the even-odd rule at sample points, and every
+/// sampled medial-axis point is inside, at its clearance, whichever
+/// orientation the rings have.
+#[test]
+fn rings_touching_at_a_corner() {
+    let square = |x: f64, y: f64, s: f64| vec![[x, y], [x + s, y], [x + s, y + s], [x, y + s]];
+    let cases: Vec<Vec<Vec<[f64; 2]>>> = vec![
+        vec![square(0.0, 0.0, 2.0), square(2.0, 2.0, 2.0)],
+        vec![square(0.0, 0.0, 10.0), vec![[0.0, 0.0], [3.0, 5.0], [5.0, 3.0]]],
+        vec![square(0.0, 0.0, 10.0), vec![[2.0, 2.0], [5.0, 2.0], [2.0, 5.0]], vec![[5.0, 2.0], [8.0, 3.0], [6.0, 6.0]]],
+        vec![square(0.0, 0.0, 4.0), square(4.0, 4.0, 4.0), vec![[4.0, 4.0], [6.0, 1.0], [7.0, 3.0]]],
+    ];
+    for (k, rings) in cases.iter().enumerate() {
+        for reversed in [false, true] {
+            let rings: Vec<Vec<[f64; 2]>> = rings
+                .iter()
+                .enumerate()
+                .map(|(j, r)| if reversed && j % 2 == 0 { r.iter().rev().copied().collect() } else { r.clone() })
+                .collect();
+            let d = build(&rings);
+            let segments = common::ring_segments(&rings);
+            let axis = d.medial_axis();
+            assert!(!axis.chains.is_empty(), "case {k}");
+            for chain in &axis.chains {
+                for [x, y, r] in d.sample_chain(chain, 1e-3).expect("finite") {
+                    let q = Point::new(x, y);
+                    let nearest = segments.iter().map(|s| s.distance(q)).fold(f64::INFINITY, f64::min);
+                    assert!((nearest - r).abs() <= 1e-9, "case {k}: clearance {r}, nearest {nearest} at {q:?}");
+                    if r > 1e-9 {
+                        assert!(common::even_odd(&rings, q), "case {k} (reversed {reversed}): {q:?} outside");
+                    }
+                }
+            }
+            // every edge away from the rings is where its middle point is
+            for e in d.edges().filter(|e| !e.is_infinite()) {
+                let points = d.edge_polyline(e.id, 1e-3).unwrap();
+                let (a, b) = (points[0], points[points.len() - 1]);
+                let q =
+                    if points.len() > 2 { points[points.len() / 2] } else { Point::new(0.5 * (a.x + b.x), 0.5 * (a.y + b.y)) };
+                if segments.iter().map(|s| s.distance(q)).fold(f64::INFINITY, f64::min) > 1e-9 {
+                    let expected = if common::even_odd(&rings, q) { Location::Inside } else { Location::Outside };
+                    assert_eq!(d.edge_location(e.id), Some(expected), "case {k} (reversed {reversed}): edge {:?} at {q:?}", e.id);
+                }
+            }
+            // the domain at points of a grid, off the rings
+            for i in 0..=40 {
+                for j in 0..=40 {
+                    let q = Point::new(-0.5 + 10.9 * i as f64 / 40.0 + 0.013, -0.5 + 10.9 * j as f64 / 40.0 + 0.017);
+                    let expected = if common::even_odd(&rings, q) { Location::Inside } else { Location::Outside };
+                    assert_eq!(d.locate_point(q), Some(expected), "case {k}: {q:?}");
+                }
+            }
+        }
+    }
+}

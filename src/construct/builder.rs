@@ -161,6 +161,9 @@ impl Builder {
     pub fn build(&self) -> Result<Diagram, Error> {
         let mut diagram =
             super::diagram_of(&self.points, &self.segments).map_err(|e| super::polygon_input::name_rings(e, &self.rings))?;
+        if let Some(e) = super::polygon_input::shared_ring_edge(&diagram, &self.rings) {
+            return Err(super::polygon_input::name_rings(e, &self.rings));
+        }
         diagram.set_domain(&self.rings);
         diagram.stats.dropped_chain_points = self.dropped_chain_points;
         Ok(diagram)

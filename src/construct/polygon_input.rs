@@ -27,10 +27,12 @@ impl Builder {
     /// dropped. A ring with fewer than three distinct points, or a
     /// non-finite coordinate, is [`ErrorKind::InvalidPolygon`] /
     /// [`ErrorKind::InvalidCoordinate`] naming the polygon and the ring; the
-    /// builder is then unchanged. Rings that cross themselves or each other
-    /// are found by the build, as any crossing segments are
-    /// ([`ErrorKind::Intersecting`], naming both segments, and the message
-    /// the polygons and rings they belong to).
+    /// builder is then unchanged. Rings that cross themselves or each other,
+    /// or share an edge, are found by the build, as any crossing segments
+    /// are ([`ErrorKind::Intersecting`], naming both segments, and the
+    /// message the polygons and rings they belong to). Rings may touch at
+    /// corners: two squares sharing one corner, a hole touching its outer
+    /// ring.
     ///
     /// ```
     /// use segvoronoi::{Builder, Location};
@@ -132,6 +134,24 @@ fn distinct_chain(points: &[Point], non_finite: impl Fn(usize) -> Error) -> Resu
         }
     }
     Ok(chain)
+}
+
+/// Two ring segments that are one segment (rings that share an edge, or a
+/// ring that runs back along itself): an overlap, as the input check calls
+/// partial ones, [`ErrorKind::Intersecting`] naming both. The check merges
+/// repeated segments into one site, so it is found here, from the sites.
+pub(crate) fn shared_ring_edge(diagram: &crate::Diagram, rings: &[RingInput]) -> Option<Error> {
+    let mut first_input_of = std::collections::HashMap::new();
+    for j in rings.iter().flat_map(|r| r.segments.clone()) {
+        let site = diagram.site_of_segment(j)?;
+        if let Some(&i) = first_input_of.get(&site) {
+            let message =
+                format!("segments {i} and {j} overlap: they are the same segment, and rings may touch but not share an edge");
+            return Some(Error::new(ErrorKind::Intersecting, message, vec![i, j]));
+        }
+        first_input_of.insert(site, j);
+    }
+    None
 }
 
 /// An input error with the polygons and rings of the segments it names
