@@ -256,3 +256,57 @@ fn rings_touching_at_a_corner() {
         }
     }
 }
+
+/// Polylines (obstacles) touching a ring at its corners, or chords between
+/// two corners, inside and outside (across an L's notch): they do not
+/// change the domain, every edge is located by its middle point, and the
+/// medial axis keeps its clearance from them too.
+#[test]
+fn polylines_touching_a_ring() {
+    let square = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
+    let ell = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 4.0], [4.0, 4.0], [4.0, 10.0], [0.0, 10.0]];
+    let cases: Vec<(Vec<[f64; 2]>, Vec<Vec<[f64; 2]>>)> = vec![
+        (
+            square.clone(),
+            vec![vec![[0.0, 0.0], [5.0, 5.0]], vec![[10.0, 10.0], [8.0, 6.0], [9.0, 3.0]], vec![[0.0, 10.0], [-3.0, 12.0]]],
+        ),
+        (square.clone(), vec![vec![[10.0, 0.0], [0.0, 10.0]]]),
+        (square.iter().rev().copied().collect(), vec![vec![[10.0, 0.0], [0.0, 10.0]]]),
+        (ell.clone(), vec![vec![[10.0, 4.0], [4.0, 10.0]], vec![[0.0, 0.0], [4.0, 4.0]]]),
+        (ell.iter().rev().copied().collect(), vec![vec![[10.0, 4.0], [4.0, 10.0]], vec![[10.0, 0.0], [4.0, 4.0]]]),
+    ];
+    for (k, (ring, lines)) in cases.into_iter().enumerate() {
+        let mut b = Builder::new();
+        b.add_polygon(&[ring.clone()]).unwrap();
+        let mut obstacles = Vec::new();
+        for line in &lines {
+            b.add_polyline(line).unwrap();
+            obstacles.extend(line.windows(2).map(|w| segvoronoi::Site::Segment { a: w[0].into(), b: w[1].into() }));
+        }
+        let d = b.build().unwrap();
+        d.validate().unwrap();
+        let rings = vec![ring];
+        let mut sites = common::ring_segments(&rings);
+        sites.extend(obstacles);
+        for e in d.edges().filter(|e| !e.is_infinite()) {
+            let points = d.edge_polyline(e.id, 1e-3).unwrap();
+            let q = points[points.len() / 2];
+            let q = if points.len() == 2 {
+                Point::new(0.5 * (points[0].x + points[1].x), 0.5 * (points[0].y + points[1].y))
+            } else {
+                q
+            };
+            if sites.iter().map(|s| s.distance(q)).fold(f64::INFINITY, f64::min) > 1e-9 {
+                let expected = if common::even_odd(&rings, q) { Location::Inside } else { Location::Outside };
+                assert_eq!(d.edge_location(e.id), Some(expected), "case {k}: edge {:?} at {q:?}", e.id);
+            }
+        }
+        for chain in &d.medial_axis().chains {
+            for [x, y, r] in d.sample_chain(chain, 1e-3).unwrap() {
+                let q = Point::new(x, y);
+                let nearest = sites.iter().map(|s| s.distance(q)).fold(f64::INFINITY, f64::min);
+                assert!((nearest - r).abs() <= 1e-9, "case {k}: clearance {r}, nearest {nearest} at {q:?}");
+            }
+        }
+    }
+}

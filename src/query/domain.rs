@@ -157,7 +157,7 @@ impl Diagram {
         }
         let obstacle_location: Vec<Option<Location>> = (0..self.sites.len())
             .map(|s| match role[s] {
-                Role::Obstacle => Some(self.point_location(&rings, self.point_of(SiteId::from_index(s)))),
+                Role::Obstacle => Some(self.obstacle_location(&rings, SiteId::from_index(s))),
                 _ => None,
             })
             .collect();
@@ -297,6 +297,51 @@ impl Diagram {
                     == Some(Location::Inside)
             })
             .count()
+    }
+
+    /// Where an obstacle lies. A point, or a segment with an end off the
+    /// rings: where that point is. A segment between two ring corners (it
+    /// touches the rings only there): where it leaves its first end, by
+    /// exact orientations against the rings' corners there.
+    fn obstacle_location(&self, rings: &[Ring], s: SiteId) -> Location {
+        let Site::Segment { a, b } = self.sites[s.index()] else { return self.point_location(rings, self.point_of(s)) };
+        for p in [a, b] {
+            let at = self.point_location(rings, p);
+            if at != Location::Boundary {
+                return at;
+            }
+        }
+        self.direction_location(rings, a, b)
+    }
+
+    /// Whether the segment from the ring corner `p` towards `q` starts
+    /// inside the domain: the parity of the rings whose region holds that
+    /// direction at `p` (a ring's region is the wedge at `p` on its inside,
+    /// the left of a counter-clockwise ring). Collinear with a ring's side
+    /// (an overlap the input check refuses): the boundary.
+    fn direction_location(&self, rings: &[Ring], p: Point, q: Point) -> Location {
+        let mut inside = false;
+        for ring in rings.iter().filter(|r| r.bounds.holds_point(p)) {
+            let n = ring.corners.len();
+            for k in (0..n).filter(|&k| self.point_of(ring.corners[k]) == p) {
+                let (before, after) = (self.point_of(ring.corners[(k + n - 1) % n]), self.point_of(ring.corners[(k + 1) % n]));
+                // the region's wedge runs counter-clockwise from `from` to `to`
+                let (from, to) = if self.is_counter_clockwise(ring) { (after, before) } else { (before, after) };
+                let (turn_from, turn_to) = (orientation(p, from, q), orientation(p, q, to));
+                if turn_from == Orientation::Collinear || turn_to == Orientation::Collinear {
+                    return Location::Boundary;
+                }
+                let ccw = Orientation::CounterClockwise;
+                let holds = if orientation(p, from, to) == ccw {
+                    turn_from == ccw && turn_to == ccw
+                } else {
+                    // a reflex wedge: all but the convex one the other way
+                    !(turn_from != ccw && turn_to != ccw)
+                };
+                inside ^= holds;
+            }
+        }
+        inside_if(inside)
     }
 
     /// The even-odd location of `p` against all rings.
