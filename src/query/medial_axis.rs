@@ -89,6 +89,13 @@ impl Diagram {
         [h.origin(), self.store.twin(h).origin()].map(|v| (v.index() < self.finite_vertices).then_some(v))
     }
 
+    /// The finite vertex where `h` starts (`None` at infinity).
+    fn origin_vertex(&self, h: HalfEdge) -> Option<VertexId> {
+        let canonical = self.edges[h.edge().index()];
+        let v = if h.is_reversed() { self.store.twin(canonical) } else { canonical }.origin();
+        (v.index() < self.finite_vertices).then_some(v)
+    }
+
     /// The edges marked in `in_axis` as chains: maximal paths through
     /// vertices where two of them meet.
     pub(super) fn chains_of(&self, in_axis: &[bool]) -> Vec<Chain> {
@@ -102,8 +109,7 @@ impl Diagram {
             [h, t]
         });
         for h in starts {
-            let origin = self.half_edge_origin(h).expect("in range");
-            if used[h.edge().index()] || degree(origin) == 2 {
+            if used[h.edge().index()] || self.origin_vertex(h).is_some_and(|v| degrees[v.index()] == 2) {
                 continue;
             }
             chains.push(self.walk_chain(h, in_axis, &mut used, &degree));

@@ -11,7 +11,6 @@
 //! edge of the diagram).
 
 use crate::diagram::{Diagram, EdgeId, HalfEdgeId, SiteId, Store, VertexId, NONE};
-use crate::geometry::Site;
 use crate::query::EdgeEnd;
 
 /// One side of an edge of the diagram: the edge walked with one of its two
@@ -119,10 +118,15 @@ impl Diagram {
     /// Boost.Polygon's "secondary" edge). The medial axis leaves them out.
     /// `None` out of range.
     pub fn is_separator(&self, edge: EdgeId) -> Option<bool> {
-        let [left, right] = self.edge(edge)?.sites;
+        let &h = self.edges.get(edge.index())?;
+        let (left, right) = (self.store.left(h), self.store.right(h));
+        // segment sites follow the points; their ends in either order
         let own_endpoint = |segment: SiteId, point: SiteId| {
-            matches!(self.sites[segment.index()], Site::Segment { .. })
-                && self.segment_endpoints(segment).is_some_and(|ends| ends.contains(&point))
+            segment
+                .index()
+                .checked_sub(self.point_sites)
+                .and_then(|k| self.segment_ends.get(k))
+                .is_some_and(|ends| ends.contains(&point))
         };
         Some(own_endpoint(left, right) || own_endpoint(right, left))
     }
