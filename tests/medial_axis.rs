@@ -265,7 +265,8 @@ fn rings_touching_at_a_corner() {
 fn polylines_touching_a_ring() {
     let square = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]];
     let ell = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 4.0], [4.0, 4.0], [4.0, 10.0], [0.0, 10.0]];
-    let cases: Vec<(Vec<[f64; 2]>, Vec<Vec<[f64; 2]>>)> = vec![
+    type Ring = Vec<[f64; 2]>;
+    let cases: Vec<(Ring, Vec<Ring>)> = vec![
         (
             square.clone(),
             vec![vec![[0.0, 0.0], [5.0, 5.0]], vec![[10.0, 10.0], [8.0, 6.0], [9.0, 3.0]], vec![[0.0, 10.0], [-3.0, 12.0]]],
@@ -277,7 +278,7 @@ fn polylines_touching_a_ring() {
     ];
     for (k, (ring, lines)) in cases.into_iter().enumerate() {
         let mut b = Builder::new();
-        b.add_polygon(&[ring.clone()]).unwrap();
+        b.add_polygon(std::slice::from_ref(&ring)).unwrap();
         let mut obstacles = Vec::new();
         for line in &lines {
             b.add_polyline(line).unwrap();

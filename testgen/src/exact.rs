@@ -127,7 +127,8 @@ impl SegmentGrid {
     }
 
     fn cell(&self, offset: f64) -> usize {
-        if !(offset > 0.0) {
+        // NaN and everything not above zero: the first cell
+        if offset.is_nan() || offset <= 0.0 {
             return 0;
         }
         let c = (offset / self.h).floor();
