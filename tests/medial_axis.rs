@@ -311,3 +311,60 @@ fn polylines_touching_a_ring() {
         }
     }
 }
+
+/// An L, a T and a comb: the axis is one tree with a leaf in every convex
+/// corner (none in a reflex one), and the L's largest disk sits in its
+/// bend, touching both outer sides and the reflex corner: radius
+/// `w (2 - sqrt 2)` for arms of width `w`.
+#[test]
+fn an_l_a_t_and_a_comb() {
+    let w = 2.0;
+    let ell = vec![[0.0, 0.0], [8.0, 0.0], [8.0, w], [w, w], [w, 8.0], [0.0, 8.0]];
+    // a bar 9 wide along y in 6..8 on a stem 2 wide (x in 3.5..5.5) down to y = 0
+    let tee = vec![[3.5, 0.0], [5.5, 0.0], [5.5, 6.0], [9.0, 6.0], [9.0, 8.0], [0.0, 8.0], [0.0, 6.0], [3.5, 6.0]];
+    let mut comb = vec![[0.0, 0.0], [13.0, 0.0], [13.0, 2.0]];
+    for k in (0..4).rev() {
+        let x = 1.0 + 3.0 * k as f64;
+        comb.extend([[x + 2.0, 2.0], [x + 2.0, 7.0], [x + 1.0, 7.0], [x + 1.0, 2.0]]);
+    }
+    comb.push([0.0, 2.0]);
+    for (name, ring) in [("L", ell), ("T", tee), ("comb", comb)] {
+        let rings = vec![ring.clone()];
+        let d = build(&rings);
+        let axis = d.medial_axis();
+        let (e, v, c) = graph_shape(&d, &axis);
+        assert_eq!((c, e + c - v), (1, 0), "{name}: one tree");
+        let n = ring.len();
+        let turns: Vec<f64> = (0..n)
+            .map(|k| {
+                let (a, b, q) = (ring[(k + n - 1) % n], ring[k], ring[(k + 1) % n]);
+                (b[0] - a[0]) * (q[1] - b[1]) - (b[1] - a[1]) * (q[0] - b[0])
+            })
+            .collect();
+        // the ring's orientation is the sign of the turns' majority
+        let ccw = turns.iter().filter(|&&t| t > 0.0).count() * 2 > n;
+        let convex = turns.iter().filter(|&&t| (t > 0.0) == ccw).count();
+        let mut degree: HashMap<segvoronoi::VertexId, usize> = HashMap::new();
+        for p in axis.chains.iter().flat_map(|c| &c.pieces) {
+            for end in p.ends {
+                if let EdgeEnd::Vertex(v) = end {
+                    *degree.entry(v).or_insert(0) += 1;
+                }
+            }
+        }
+        let leaves: Vec<_> = degree.iter().filter(|&(_, &k)| k == 1).map(|(&v, _)| d.vertex(v).unwrap()).collect();
+        assert_eq!(leaves.len(), convex, "{name}: a leaf per convex corner");
+        assert!(
+            leaves.iter().all(|v| v.clearance == 0.0 && ring.contains(&[v.position.x, v.position.y])),
+            "{name}: leaves at corners"
+        );
+        if name == "L" {
+            let (centre, r) = d.max_inscribed_circle().unwrap();
+            let expected = w * (2.0 - 2f64.sqrt());
+            assert!(
+                (r - expected).abs() < 1e-12 && (centre.x - expected).abs() < 1e-12 && (centre.y - expected).abs() < 1e-12,
+                "L: {centre:?} {r}"
+            );
+        }
+    }
+}
