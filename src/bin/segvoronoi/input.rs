@@ -86,36 +86,4 @@ impl Input {
                 .collect(),
         }
     }
-
-    /// The default chord tolerance: 1e-4 times the diagonal of the input's
-    /// bounding box (1e-4 when the box is a point or empty, where nothing
-    /// finite gets sampled anyway).
-    pub fn default_tolerance(&self) -> f64 {
-        let mut coordinates: Vec<Xy> = Vec::new();
-        match self {
-            Input::Boost(input) => {
-                coordinates.extend(&input.points);
-                coordinates.extend(input.segments.iter().flat_map(|&[x1, y1, x2, y2]| [[x1, y1], [x2, y2]]));
-            }
-            Input::Wkt(shapes) => {
-                for shape in shapes {
-                    match shape {
-                        Shape::Point(p) => coordinates.push(*p),
-                        Shape::LineString(points) => coordinates.extend(points),
-                        Shape::Polygon(rings) => coordinates.extend(rings.iter().flatten()),
-                    }
-                }
-            }
-        }
-        let finite = coordinates.iter().filter(|p| p[0].is_finite() && p[1].is_finite());
-        let (low, high) = finite.fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(l, h), p| {
-            ([l[0].min(p[0]), l[1].min(p[1])], [h[0].max(p[0]), h[1].max(p[1])])
-        });
-        // Halved before subtracting: the span of ±1e308 does not overflow.
-        let half = (high[0] / 2.0 - low[0] / 2.0).hypot(high[1] / 2.0 - low[1] / 2.0);
-        match 2e-4 * half {
-            t if t.is_finite() && t > 0.0 => t,
-            _ => 1e-4,
-        }
-    }
 }

@@ -69,7 +69,7 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
         return Err(failed(format!("{name}: --max-inscribed-circle needs a polygon in the input, and there is none")));
     }
 
-    let tolerance = options.tolerance.unwrap_or_else(|| input.default_tolerance());
+    let tolerance = options.tolerance.unwrap_or_else(|| default_tolerance(&diagram));
     // The axis is computed once, for the file and the picture alike.
     let needs_axis = options.medial_axis.is_some() || (options.svg.is_some() && diagram.has_domain());
     let axis = if needs_axis { medial_axis(&diagram, &options) } else { MedialAxis::default() };
@@ -121,6 +121,17 @@ fn medial_axis(diagram: &Diagram, options: &Options) -> MedialAxis {
         filter = filter.with_spur_pruning(k);
     }
     diagram.medial_axis_filtered(&filter)
+}
+
+/// The default chord tolerance: 1e-4 times the diagonal of the input's
+/// bounding box (1e-4 when the box is a point, where nothing finite gets
+/// sampled anyway; from the largest double when the diagonal overflows).
+fn default_tolerance(diagram: &segvoronoi::Diagram) -> f64 {
+    match diagram.extent() {
+        e if e.is_infinite() => 1e-4 * f64::MAX,
+        e if e > 0.0 => 1e-4 * e,
+        _ => 1e-4,
+    }
 }
 
 fn wants_output(options: &Options) -> bool {
