@@ -167,31 +167,24 @@ pub unsafe extern "C" fn segvoronoi_builder_add_polygon(
     if n_rings > 0 {
         require_non_null!(ring_lengths);
     }
-    guard(|| {
-        // SAFETY: non-null; the caller keeps the builder exclusive.
-        let b = unsafe { &mut *builder };
-        // SAFETY: non-null when n_rings > 0, valid for n_rings reads (the caller's promise).
-        let lengths: &[usize] = if n_rings == 0 { &[] } else { unsafe { std::slice::from_raw_parts(ring_lengths, n_rings) } };
-        let Some(total) = lengths.iter().try_fold(0usize, |sum, &n| sum.checked_add(n)) else {
-            return segvoronoi_status::TooLarge;
-        };
-        if let Err(e) = b.inner.reserve_segments(total) {
-            return b.record(Err(e));
-        }
-        if total > 0 && xy.is_null() {
-            return segvoronoi_status::NullArgument;
-        }
-        // SAFETY: non-null, valid for 2 * total reads (the caller's promise).
-        let coords: &[f64] = if total == 0 { &[] } else { unsafe { std::slice::from_raw_parts(xy, 2 * total) } };
-        let mut rings: Vec<Vec<[f64; 2]>> = Vec::with_capacity(n_rings);
-        let mut at = 0;
-        for &n in lengths {
-            rings.push(coords[2 * at..2 * (at + n)].chunks_exact(2).map(|c| [c[0], c[1]]).collect());
-            at += n;
-        }
-        let r = b.inner.add_polygon(&rings).map(|_| ());
-        b.record(r)
-    })
+    // SAFETY: non-null when n_rings > 0, valid for n_rings reads (the caller's promise).
+    let lengths: &[usize] = if n_rings == 0 { &[] } else { unsafe { std::slice::from_raw_parts(ring_lengths, n_rings) } };
+    let Some(total) = lengths.iter().try_fold(0usize, |sum, &n| sum.checked_add(n)) else {
+        return segvoronoi_status::TooLarge;
+    };
+    // SAFETY: passed on from the caller (see `add_flat`): `xy` holds the
+    // `total` points of all rings.
+    unsafe {
+        add_flat::<2>(builder, xy, total, Builder::reserve_segments, |b, coords| {
+            let mut rings: Vec<Vec<[f64; 2]>> = Vec::with_capacity(lengths.len());
+            let mut at = 0;
+            for &n in lengths {
+                rings.push(coords[2 * at..2 * (at + n)].chunks_exact(2).map(|c| [c[0], c[1]]).collect());
+                at += n;
+            }
+            b.add_polygon(&rings).map(|_| ())
+        })
+    }
 }
 
 /// Adds an open chain of `count` points `xy` = `{x, y, ...}` as segments
