@@ -85,8 +85,8 @@ impl Diagram {
 
     /// The finite vertices at the two ends of an edge (in range).
     pub(super) fn end_vertices(&self, e: EdgeId) -> [Option<VertexId>; 2] {
-        let h = self.edges[e.index()];
-        [h.origin(), self.store.twin(h).origin()].map(|v| (v.index() < self.finite_vertices).then_some(v))
+        let [h, t] = self.half_edges(e).expect("in range");
+        [self.origin_vertex(h), self.origin_vertex(t)]
     }
 
     /// The finite vertex where `h` starts (`None` at infinity).

@@ -22,7 +22,7 @@
 use crate::diagram::{Diagram, EdgeId, VertexId};
 use crate::query::medial_axis::degree_at;
 use crate::query::partition::Partition;
-use crate::query::{Chain, EdgeEnd, EdgeShape, MedialAxis};
+use crate::query::{Chain, EdgeEnd, MedialAxis};
 use crate::Site;
 
 /// Which branches of the medial axis [`Diagram::medial_axis_filtered`]
@@ -160,23 +160,13 @@ impl Diagram {
         Some(cross.abs().atan2(dot).to_degrees())
     }
 
-    /// The length of a chain, its parabolic pieces measured on their
-    /// polyline within a thousandth of `clearance` (a filter's threshold
-    /// is a multiple of it); infinite when a piece reaches infinity.
+    /// The length of a chain, measured on its points within a thousandth
+    /// of `clearance` (a filter's threshold is a multiple of it); infinite
+    /// when a piece reaches infinity.
     fn chain_length(&self, chain: &Chain, clearance: f64) -> f64 {
         let tolerance = if clearance > 0.0 { 1e-3 * clearance } else { f64::MIN_POSITIVE };
-        chain
-            .pieces
-            .iter()
-            .map(|piece| {
-                let points = match piece.shape {
-                    EdgeShape::Line => None,
-                    _ => self.edge_polyline(piece.edge, tolerance),
-                };
-                let points = points.or_else(|| self.edge_polyline(piece.edge, f64::MAX));
-                points.map_or(f64::INFINITY, |p| p.windows(2).map(|w| w[0].distance(w[1])).sum())
-            })
-            .sum()
+        self.sample_chain(chain, tolerance)
+            .map_or(f64::INFINITY, |points| points.windows(2).map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1])).sum())
     }
 
     /// The connected components of the edges marked in `in_axis`, as a
