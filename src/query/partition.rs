@@ -1,5 +1,6 @@
 //! A partition of `0..n` into sets: union–find with path halving, for the
-//! connected components of the medial axis.
+//! connected components of the medial axis and the vertices joined by
+//! zero-length edges in the canonical topology.
 
 /// A partition of `0..n` into sets (union–find with path halving).
 pub(crate) struct Partition(Vec<std::cell::Cell<usize>>);

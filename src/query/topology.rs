@@ -20,6 +20,7 @@
 //! (`geometry::oracle`) otherwise. [`ZERO_LENGTH`] is a tolerance a user may
 //! ask for instead ([`TopologyOptions::zero_length_tolerance`]).
 
+use crate::query::partition::Partition;
 use std::fmt::Write;
 
 use crate::diagram::{Diagram, SiteId, VertexId};
@@ -148,28 +149,18 @@ impl Diagram {
             length <= threshold || self.is_zero_length_edge(a, b)
         };
         let mut pairs = Vec::new();
-        let mut parent: Vec<u32> = (0..self.vertex_count() as u32).collect();
-        fn root(parent: &mut [u32], mut v: u32) -> u32 {
-            while parent[v as usize] != v {
-                parent[v as usize] = parent[parent[v as usize] as usize];
-                v = parent[v as usize];
-            }
-            v
-        }
+        // the vertices joined by zero-length edges
+        let mut joined = Partition::new(self.vertex_count());
         for e in self.edges() {
             match self.finite_vertices_of(&e) {
-                Some((a, b)) if short(a, b) => {
-                    let (ra, rb) = (root(&mut parent, a.0), root(&mut parent, b.0));
-                    parent[ra as usize] = rb;
-                }
+                Some((a, b)) if short(a, b) => joined.join(a.index(), b.index()),
                 _ => pairs.push(vec![self.name(e.sites[0]), self.name(e.sites[1])]),
             }
         }
         write_section(out, "VPAIRS", pairs);
-        let mut groups: std::collections::BTreeMap<u32, Vec<Name>> = Default::default();
+        let mut groups: std::collections::BTreeMap<usize, Vec<Name>> = Default::default();
         for v in self.vertices() {
-            let r = root(&mut parent, v.id.0);
-            let g = groups.entry(r).or_default();
+            let g = groups.entry(joined.find(v.id.index())).or_default();
             for s in v.sites {
                 if !g.contains(&self.name(s)) {
                     g.push(self.name(s));
