@@ -226,25 +226,11 @@ impl Diagram {
         let skip = usize::from(!out.is_empty());
         let &canonical = self.edges.get(piece.edge.index())?;
         let site = self.sites[self.store.left(canonical).index()];
-        let at = |end: EdgeEnd| match end {
-            EdgeEnd::Vertex(v) => Some(self.store.position[v.index()]),
-            EdgeEnd::Infinite { .. } => None,
-        };
-        let with_clearance = |p: Point| [p.x, p.y, site.distance(p)];
-        match piece.shape {
-            // a straight piece is its two ends (as `edge_polyline` has it)
-            EdgeShape::Line if tolerance > 0.0 => {
-                let ends = [at(piece.ends[0])?, at(piece.ends[1])?];
-                out.extend(ends.into_iter().skip(skip).map(with_clearance));
-            }
-            _ => {
-                let mut points = self.edge_polyline(piece.edge, tolerance)?;
-                if piece.reversed {
-                    points.reverse();
-                }
-                out.extend(points.into_iter().skip(skip).map(with_clearance));
-            }
+        let mut points = self.edge_polyline(piece.edge, tolerance)?;
+        if piece.reversed {
+            points.reverse();
         }
+        out.extend(points.into_iter().skip(skip).map(|p| [p.x, p.y, site.distance(p)]));
         Some(())
     }
 
