@@ -169,7 +169,11 @@ typedef struct segvoronoi_vertex {
   double x;
   // Position, in input coordinates.
   double y;
-  // Distance from the vertex to each of its sites.
+  // Distance from the vertex to each of its sites. Infinite for a
+  // vertex whose position lies beyond the range of `double` (inputs
+  // whose magnitudes span nearly all of it, such as 5e-324 beside
+  // ordinary coordinates): `x` and `y` are then the nearest `double`
+  // point, each coordinate beyond the range saturated at `±DBL_MAX`.
   double clearance;
   // The three sites whose cells meet here, counter-clockwise.
   uint32_t sites[3];

@@ -36,15 +36,7 @@ const TOLERANCE: f64 = 1e-7;
 
 /// Fixtures on which the library is known to be wrong, with the reason.
 /// Delete an entry once the fixture passes (the test says when).
-const KNOWN: &[(&str, &str)] = &[
-    // Found by the harness's --search, 2c4f111 and 2e52cd8.
-    ("search_denormal_2seg.txt", "an endpoint's y the least subnormal: vertices placed 4.6 off"),
-    // Agrees with CGAL's topology since the subnormal-range scaling; the
-    // vertex of the point, the segment's near end and the segment is about
-    // 1e323 away (the point is 2.5e-324 off the segment's line), beyond the
-    // range of f64, and is placed among its sites.
-    ("search_denormal_point_off_line.txt", "a vertex 1e323 away, beyond f64: placed among its sites"),
-];
+const KNOWN: &[(&str, &str)] = &[];
 
 type Segment = [[f64; 2]; 2];
 

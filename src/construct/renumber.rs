@@ -85,7 +85,11 @@ pub(super) fn renumber(
 
     if !scale.is_identity() {
         for v in 0..finite_vertices {
-            store.position[v] = store.position[v].scaled(scale.to_input);
+            // (a coordinate saturated at ±f64::MAX, of a vertex beyond the
+            // range of f64, stays saturated)
+            let unscaled = |x: f64| if x.abs() == f64::MAX { x } else { x * scale.to_input };
+            let p = store.position[v];
+            store.position[v] = Point::new(unscaled(p.x), unscaled(p.y));
             store.clearance[v] *= scale.to_input;
         }
     }

@@ -74,7 +74,11 @@ pub struct segvoronoi_vertex {
     pub x: f64,
     /// Position, in input coordinates.
     pub y: f64,
-    /// Distance from the vertex to each of its sites.
+    /// Distance from the vertex to each of its sites. Infinite for a
+    /// vertex whose position lies beyond the range of `double` (inputs
+    /// whose magnitudes span nearly all of it, such as 5e-324 beside
+    /// ordinary coordinates): `x` and `y` are then the nearest `double`
+    /// point, each coordinate beyond the range saturated at `±DBL_MAX`.
     pub clearance: f64,
     /// The three sites whose cells meet here, counter-clockwise.
     pub sites: [u32; 3],

@@ -267,6 +267,10 @@ fn decide(
     question: Reach,
     depth: f64,
 ) -> (Stage, Option<CirclePosition>) {
+    if is_beyond_range(radius) {
+        // nothing rounded to `f64` stands for such a vertex
+        return (Stage::BigFloat, beyond_range_answer(&sites(), &question));
+    }
     let size = question.size(centre, radius);
     if !(size.is_finite() && depth.is_finite()) {
         return (Stage::Unrefined, None);
@@ -323,13 +327,131 @@ fn decide(
             Refined::Failed => {}
         }
     }
-    // Zero within 2^-1150 or so of the size: on the circle. Without
-    // convergence at any precision the rounded value stands.
+    // Magnitudes far apart (a coordinate near the subnormal range beside
+    // ordinary ones): a nonzero value can be far smaller than 2^-1150 of
+    // the size (about the square of the tiny coordinate's ratio to the
+    // others), so one more precision, twice the span of f64's exponents.
+    if let Some(solution) = start.filter(|_| converged && exponent_spread(&sites, &question) > WIDE_SPREAD) {
+        if let Some(answer) = refine_wide(&system, &question, solution, size) {
+            return (Stage::BigFloat, Some(answer));
+        }
+    }
+    // Zero within 2^-1150 or so of the size (2^-4300 for magnitudes far
+    // apart): on the circle. Without convergence at any precision the
+    // rounded value stands.
     if converged {
         (Stage::Zero, Some(CirclePosition::On))
     } else {
         (Stage::Unrefined, None)
     }
+}
+
+/// The precision of the questions about a vertex beyond the range of
+/// `f64`: its circle is solved once, from the sites, in big floats. Twice
+/// the span of `f64`'s exponents (2,098 bits) and a margin: the solvers'
+/// squares of coordinate differences are then exact, however far apart
+/// their magnitudes (at 400 bits, a point `2^-1074` off a line of size 1
+/// already gets a circle of the wrong size).
+pub(crate) const BEYOND_RANGE_BITS: u64 = 4400;
+
+/// Whether the stored radius of a finite vertex marks a circle beyond the
+/// range of `f64` (`vertex_placement` stores such a vertex with an infinite
+/// radius, the nearest `f64` point to its centre as its position).
+pub(crate) fn is_beyond_range(radius: f64) -> bool {
+    radius == f64::INFINITY
+}
+
+/// The answer for a vertex whose circle lies beyond the range of `f64`
+/// (its magnitudes span more than `f64`'s exponents: a point the least
+/// subnormal off a segment's line, beside ordinary coordinates). The
+/// circle is solved from the sites at `BEYOND_RANGE_BITS`, whose exponents
+/// are unbounded, and the question's value there decides; below `2^-3000`
+/// of the configuration's size it is zero (the solve's rounding, even
+/// amplified by a condition of `2^1300`, is below it). Not the
+/// refinement's `2^-1150`: the size here is the huge radius, and a site off
+/// such a circle by an ordinary gap `g` of the input is off it by about
+/// `g² / r` only, far below `2^-1150 r` (a point beside the near end of a
+/// circle of radius `2^1080` through an endpoint `2^-1074` off a line).
+/// `None` when no circle is found: the caller's `f64` value stands.
+fn beyond_range_answer(sites: &[Site; 3], question: &Reach) -> Option<CirclePosition> {
+    let lift = |x: f64| BigFloat::from_f64(x, BEYOND_RANGE_BITS);
+    let solution = segment_solvers::vertex_in_any_range(sites, &lift)?;
+    let value = question.value(&solution, &lift);
+    let third_cut_off = lift(2f64.powi(-1000));
+    let size = question.size_in(&solution, &lift);
+    let bound = size.mul(&third_cut_off).mul(&third_cut_off).mul(&third_cut_off);
+    Some(if value.abs().sub(&bound).signum() <= 0 {
+        CirclePosition::On
+    } else if value.signum() < 0 {
+        CirclePosition::Inside
+    } else {
+        CirclePosition::Outside
+    })
+}
+
+/// The spread, in bits, of the magnitudes of a question's nonzero
+/// coordinates (the sites' and the new segment's) above which a value that
+/// stays undecided at 1200 bits is refined at `BEYOND_RANGE_BITS` before it
+/// is taken as zero.
+const WIDE_SPREAD: i32 = 200;
+
+/// The spread of the binary exponents of the nonzero coordinates of
+/// `sites` and the question's points.
+fn exponent_spread(sites: &[Site; 3], question: &Reach) -> i32 {
+    let (p, q) = match *question {
+        Reach::Distance { a, b } => (a, b),
+        Reach::Entering { from, to } => (from, to),
+    };
+    let points = sites.iter().flat_map(Site::ends).chain([p, q]);
+    coordinate_exponent_spread(points)
+}
+
+/// The spread of the binary exponents of the nonzero coordinates of
+/// `points` (0 for none).
+fn coordinate_exponent_spread(points: impl Iterator<Item = Point>) -> i32 {
+    let exponents = points.flat_map(|p| [p.x, p.y]).filter(|&v| v != 0.0 && v.is_finite()).map(|v| v.abs().log2().floor() as i32);
+    let (low, high) = exponents.fold((i32::MAX, i32::MIN), |(low, high), e| (low.min(e), high.max(e)));
+    if low > high {
+        0
+    } else {
+        high - low
+    }
+}
+
+/// Newton steps allowed at `BEYOND_RANGE_BITS` from a 1200-bit solution
+/// (quadratic convergence needs two).
+const WIDE_STEPS: usize = 6;
+
+/// The last stage for magnitudes far apart: Newton's method at
+/// `BEYOND_RANGE_BITS` from a converged 1200-bit `start`, with every bound
+/// kept in big floats (`f64` holds no `2^-4300` of a size, so `refine_at`'s
+/// bounds would vanish). Converged when no step exceeds `R = 2^-4300 (1 +
+/// ‖J⁻¹‖)` of the size, about `2^100` times the rounding; the answer
+/// stands when the question's value exceeds `8 R`, and is `On` below it.
+/// `None` without convergence.
+fn refine_wide(system: &System, question: &Reach, start: [BigFloat; 3], size: f64) -> Option<CirclePosition> {
+    let bits = BEYOND_RANGE_BITS;
+    let lift = |x: f64| BigFloat::from_f64(x, bits);
+    let below = |x: &BigFloat, bound: &BigFloat| x.abs().sub(bound).signum() <= 0;
+    let unit = [-1000, -1000, -1000, -1000, -300].iter().fold(lift(size), |u, &e| u.mul(&lift(2f64.powi(e))));
+    let mut v = start.map(|x| x.with_precision(bits));
+    for _ in 0..WIDE_STEPS {
+        let (f, j) = system.linearise(&v, &lift)?;
+        let reach = unit.mul(&lift(1.0 + inverse_norm(&j)?));
+        let step = solve3(&j, &f)?;
+        v = [v[0].sub(&step[0]), v[1].sub(&step[1]), v[2].sub(&step[2])];
+        if step.iter().all(|s| below(s, &reach)) {
+            let value = question.value(&v, &lift);
+            return Some(if below(&value, &reach.mul(&lift(8.0))) {
+                CirclePosition::On
+            } else if value.signum() < 0 {
+                CirclePosition::Inside
+            } else {
+                CirclePosition::Outside
+            });
+        }
+    }
+    None
 }
 
 /// What one precision of the refinement found.
@@ -385,6 +507,18 @@ impl Reach {
             Reach::Entering { from, to } => (from, to),
         };
         r.abs() + c.distance(p) + p.distance(q)
+    }
+
+    /// [`Reach::size`] in the arithmetic `T`, at `(x, y, r)`.
+    fn size_in<T: Real>(&self, [x, y, r]: &[T; 3], lift: &impl Fn(f64) -> T) -> T {
+        let (p, q) = match *self {
+            Reach::Distance { a, b } => (a, b),
+            Reach::Entering { from, to } => (from, to),
+        };
+        let (px, py) = (lift(p.x), lift(p.y));
+        let centre_to_p = T::hypot(&x.sub(&px), &y.sub(&py));
+        let along = T::hypot(&lift(q.x).sub(&px), &lift(q.y).sub(&py));
+        r.abs().add(&centre_to_p).add(&along)
     }
 
     /// The question's value at `(x, y, r)`.
@@ -685,9 +819,11 @@ fn solve3<T: Real>(j: &[[T; 3]; 3], f: &[T; 3]) -> Option<[T; 3]> {
 }
 
 /// Debug aid for tests: the vertex of `sites` solved in 400-bit floats
-/// (the solver, then Newton's method), and the signed distance of `other`
-/// from its circle (negative inside), rounded. `None` when it cannot be
-/// solved.
+/// (4400 where the magnitudes lie far apart, `WIDE_SPREAD`; the solver,
+/// then Newton's method), and the signed distance of `other` from its
+/// circle (negative inside), rounded; for a circle beyond the
+/// range of `f64`, an infinite radius and the distance relative to the
+/// configuration's size. `None` when it cannot be solved.
 #[cfg(test)]
 pub(crate) fn audit_depth(sites: &[Site; 3], other: &Site) -> Option<(Point, f64, f64)> {
     // in the construction's coordinates (an exact power-of-two scaling)
@@ -695,17 +831,30 @@ pub(crate) fn audit_depth(sites: &[Site; 3], other: &Site) -> Option<(Point, f64
     let scale = Scale::for_coordinates(points.flat_map(|p| [p.x, p.y]));
     let (sites, other) = (&sites.map(|s| s.scaled(scale.to_internal)), &other.scaled(scale.to_internal));
     let back = |v: f64| v * scale.to_input;
-    let lift = |x: f64| BigFloat::from_f64(x, 400);
-    let start = segment_solvers::vertex_in(sites, &lift)?;
-    let [x, y, r] = start.clone().map(|v| v.to_f64());
-    let size = size_of(sites, Point::new(x, y), r);
-    let solution = System::of(sites, Point::new(x, y))
-        .and_then(|system| system.newton(start.clone(), &lift, size, 400))
-        .map_or(start, |(v, _, _)| v);
     let question = match *other {
         Site::Point(p) => Reach::Distance { a: p, b: p },
         Site::Segment { a, b } => Reach::Distance { a, b },
     };
+    // magnitudes far apart: 400 bits lose the small ones
+    let spread = coordinate_exponent_spread(sites.iter().chain(std::iter::once(other)).flat_map(Site::ends));
+    let bits = if spread > WIDE_SPREAD { BEYOND_RANGE_BITS } else { 400 };
+    let lift = |x: f64| BigFloat::from_f64(x, bits);
+    let start = segment_solvers::vertex_in(sites, &lift);
+    let Some(start) = start else {
+        // beyond the range of f64: the depth relative to the size
+        let lift = |x: f64| BigFloat::from_f64(x, BEYOND_RANGE_BITS);
+        let solution = segment_solvers::vertex_in_any_range(sites, &lift)?;
+        let relative = question.value(&solution, &lift).div(&question.size_in(&solution, &lift));
+        let saturated = |v: &BigFloat| v.to_f64().clamp(-f64::MAX, f64::MAX);
+        let [x, y] =
+            [&solution[0], &solution[1]].map(|v| if saturated(v).abs() == f64::MAX { saturated(v) } else { back(v.to_f64()) });
+        return Some((Point::new(x, y), f64::INFINITY, relative.to_f64()));
+    };
+    let [x, y, r] = start.clone().map(|v| v.to_f64());
+    let size = size_of(sites, Point::new(x, y), r);
+    let solution = System::of(sites, Point::new(x, y))
+        .and_then(|system| system.newton(start.clone(), &lift, size, bits))
+        .map_or(start, |(v, _, _)| v);
     let depth = back(question.value(&solution, &lift).to_f64());
     let [x, y, r] = solution.map(|v| back(v.to_f64()));
     Some((Point::new(x, y), r, depth))

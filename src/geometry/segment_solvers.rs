@@ -85,13 +85,20 @@ pub(crate) fn vertex_and_condition(a: &Site, b: &Site, c: &Site) -> Option<(Poin
 /// parallel lines whose unit normals differ in the tenth digit), and
 /// whose `f64` answer is then no start for Newton's method.
 pub(crate) fn vertex_in<T: Real>(sites: &[Site; 3], lift: &impl Fn(f64) -> T) -> Option<[T; 3]> {
+    let [x, y, r] = vertex_in_any_range(sites, lift)?;
+    let finite = x.to_f64().is_finite() && y.to_f64().is_finite() && r.to_f64().is_finite();
+    finite.then_some([x, y, r])
+}
+
+/// [`vertex_in`] wherever the circle lies, also beyond the range of
+/// `f64` (an arithmetic with a wider exponent holds it: big floats).
+pub(crate) fn vertex_in_any_range<T: Real>(sites: &[Site; 3], lift: &impl Fn(f64) -> T) -> Option<[T; 3]> {
     let (c, r, _) = if sites.iter().all(Site::is_point) {
         ppp_in(rotate_smallest_first(*sites), lift)?
     } else {
         with_segments(*sites, lift)?
     };
-    let finite = c.x.to_f64().is_finite() && c.y.to_f64().is_finite() && r.to_f64().is_finite();
-    (finite && r.signum() >= 0).then_some([c.x, c.y, r])
+    (r.signum() >= 0).then_some([c.x, c.y, r])
 }
 
 /// A circle in the arithmetic `T` (centre, radius) and the condition of

@@ -5,6 +5,7 @@
 //! numbers find no circle. The position is stored as the fault-injection
 //! build perturbs it (`as_stored`).
 
+use super::bigfloat::BigFloat;
 use super::fault;
 use super::oracle;
 use super::point::Point;
@@ -14,17 +15,41 @@ use super::solvers::{circumcircle, left_normal};
 
 /// The centre and radius of the vertex of three point sites `a`, `b`, `c`.
 pub(crate) fn circle_of_points(a: Point, b: Point, c: Point) -> (Point, f64) {
-    // No circle (only when the predicates were made to lie): keep the
-    // topology, put the vertex at the centroid.
-    circumcircle(a, b, c).unwrap_or_else(|| among_sites(&[Site::Point(a), Site::Point(b), Site::Point(c)]))
+    // No circle in `f64`: one beyond its range, or (only when the
+    // predicates were made to lie) none; then keep the topology, put the
+    // vertex at the centroid.
+    let sites = [Site::Point(a), Site::Point(b), Site::Point(c)];
+    circumcircle(a, b, c).or_else(|| beyond_range(&sites)).unwrap_or_else(|| among_sites(&sites))
 }
 
 /// The centre and radius of the vertex of three sites, some of them
 /// segments.
 #[inline]
 pub(crate) fn circle_of_sites(sites: &[Site; 3]) -> (Point, f64) {
-    // No circle: keep the topology, place the vertex among its sites.
-    solved_circle(sites).unwrap_or_else(|| among_sites(sites))
+    // No circle in `f64`: one beyond its range, or (only when the
+    // predicates were made to lie) none; then keep the topology, place the
+    // vertex among its sites.
+    solved_circle(sites).or_else(|| beyond_range(sites)).unwrap_or_else(|| among_sites(sites))
+}
+
+/// The stored form of a vertex whose circle lies beyond the range of
+/// `f64`, as big floats find it (an input whose magnitudes span more than
+/// `f64`'s exponents: a point the least subnormal off a segment's line,
+/// beside ordinary coordinates): the nearest `f64` point to its centre
+/// (each coordinate beyond the range saturated at `±f64::MAX`) and an
+/// infinite radius ([`oracle::is_beyond_range`]), by which the predicates know to decide it
+/// from its sites alone. `None` when big floats find no circle either,
+/// and in fault injection.
+fn beyond_range(sites: &[Site; 3]) -> Option<(Point, f64)> {
+    if fault::active() {
+        // lying numbers find no circle for triples that have none; the
+        // fallback among the sites is what the fault suite exercises
+        return None;
+    }
+    let lift = |x: f64| BigFloat::from_f64(x, oracle::BEYOND_RANGE_BITS);
+    let [x, y, r] = segment_solvers::vertex_in_any_range(sites, &lift)?;
+    let saturated = |v: &BigFloat| v.to_f64().clamp(-f64::MAX, f64::MAX);
+    (r.to_f64() > f64::MAX).then(|| (Point::new(saturated(&x), saturated(&y)), f64::INFINITY))
 }
 
 /// The circle of three sites, some of them segments, as accurately as the

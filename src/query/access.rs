@@ -12,7 +12,11 @@ pub struct Vertex {
     pub id: VertexId,
     /// Its position, in input coordinates.
     pub position: Point,
-    /// Its distance to each of its three sites.
+    /// Its distance to each of its three sites. Infinite for a vertex
+    /// whose position lies beyond the range of `f64` (only for inputs
+    /// whose magnitudes span nearly all of it, such as a coordinate of
+    /// 5e-324 beside ordinary ones): `position` is then the nearest `f64`
+    /// point, each coordinate beyond the range saturated at `±f64::MAX`.
     pub clearance: f64,
     /// The three sites whose cells meet here, counter-clockwise.
     pub sites: [SiteId; 3],
