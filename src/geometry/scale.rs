@@ -95,7 +95,8 @@ impl Scale {
 /// (spans up to about 1,000: a coordinate of 1e-300 next to 16) the middle
 /// is taken, with a margin of `2^8` either side; beyond them no scale serves
 /// both, the products are kept (`TINY_INPUT_TARGET`), and a far vertex lies
-/// beyond `f64`.
+/// beyond `f64` (`vertex_placement` stores it as such, and `oracle` decides
+/// it from its sites in big floats).
 fn tiny_input_target(span: i32) -> i32 {
     const MARGIN: i32 = 8;
     let lowest = (span - 1022 + 3).div_euclid(4) + MARGIN;
