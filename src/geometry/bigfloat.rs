@@ -36,6 +36,18 @@ impl BigFloat {
         BigFloat { mantissa: if x < 0.0 { -m } else { m }, exponent: e, bits }
     }
 
+    /// `2^e` exactly, with `bits` of precision for later operations (any
+    /// exponent, also far outside `f64`'s range).
+    pub fn pow2(e: i64, bits: u64) -> BigFloat {
+        BigFloat { mantissa: BigInt::from(1), exponent: e, bits }
+    }
+
+    /// The value rounded to `f64`, saturated at `±f64::MAX` beyond its
+    /// range.
+    pub fn to_f64_saturated(&self) -> f64 {
+        self.to_f64().clamp(-f64::MAX, f64::MAX)
+    }
+
     /// The same value, kept to `bits` from now on (truncated if longer).
     pub fn with_precision(self, bits: u64) -> BigFloat {
         BigFloat { bits, ..self }.rounded()

@@ -377,16 +377,20 @@ fn beyond_range_answer(sites: &[Site; 3], question: &Reach) -> Option<CirclePosi
     let lift = |x: f64| BigFloat::from_f64(x, BEYOND_RANGE_BITS);
     let solution = segment_solvers::vertex_in_any_range(sites, &lift)?;
     let value = question.value(&solution, &lift);
-    let third_cut_off = lift(2f64.powi(-1000));
-    let size = question.size_in(&solution, &lift);
-    let bound = size.mul(&third_cut_off).mul(&third_cut_off).mul(&third_cut_off);
-    Some(if value.abs().sub(&bound).signum() <= 0 {
+    let bound = question.size_in(&solution, &lift).mul(&BigFloat::pow2(-3000, BEYOND_RANGE_BITS));
+    Some(position_beyond(&value, &bound))
+}
+
+/// The position a big-float value of a question gives: `On` within
+/// `bound` of zero, else by its sign.
+fn position_beyond(value: &BigFloat, bound: &BigFloat) -> CirclePosition {
+    if value.abs().sub(bound).signum() <= 0 {
         CirclePosition::On
     } else if value.signum() < 0 {
         CirclePosition::Inside
     } else {
         CirclePosition::Outside
-    })
+    }
 }
 
 /// The spread, in bits, of the magnitudes of a question's nonzero
@@ -398,12 +402,7 @@ const WIDE_SPREAD: i32 = 200;
 /// The spread of the binary exponents of the nonzero coordinates of
 /// `sites` and the question's points.
 fn exponent_spread(sites: &[Site; 3], question: &Reach) -> i32 {
-    let (p, q) = match *question {
-        Reach::Distance { a, b } => (a, b),
-        Reach::Entering { from, to } => (from, to),
-    };
-    let points = sites.iter().flat_map(Site::ends).chain([p, q]);
-    coordinate_exponent_spread(points)
+    coordinate_exponent_spread(sites.iter().flat_map(Site::ends).chain(question.points()))
 }
 
 /// The spread of the binary exponents of the nonzero coordinates of
@@ -432,23 +431,15 @@ const WIDE_STEPS: usize = 6;
 fn refine_wide(system: &System, question: &Reach, start: [BigFloat; 3], size: f64) -> Option<CirclePosition> {
     let bits = BEYOND_RANGE_BITS;
     let lift = |x: f64| BigFloat::from_f64(x, bits);
-    let below = |x: &BigFloat, bound: &BigFloat| x.abs().sub(bound).signum() <= 0;
-    let unit = [-1000, -1000, -1000, -1000, -300].iter().fold(lift(size), |u, &e| u.mul(&lift(2f64.powi(e))));
+    let unit = lift(size).mul(&BigFloat::pow2(-4300, bits));
     let mut v = start.map(|x| x.with_precision(bits));
     for _ in 0..WIDE_STEPS {
         let (f, j) = system.linearise(&v, &lift)?;
         let reach = unit.mul(&lift(1.0 + inverse_norm(&j)?));
         let step = solve3(&j, &f)?;
         v = [v[0].sub(&step[0]), v[1].sub(&step[1]), v[2].sub(&step[2])];
-        if step.iter().all(|s| below(s, &reach)) {
-            let value = question.value(&v, &lift);
-            return Some(if below(&value, &reach.mul(&lift(8.0))) {
-                CirclePosition::On
-            } else if value.signum() < 0 {
-                CirclePosition::Inside
-            } else {
-                CirclePosition::Outside
-            });
+        if step.iter().all(|s| s.abs().sub(&reach).signum() <= 0) {
+            return Some(position_beyond(&question.value(&v, &lift), &reach.mul(&lift(8.0))));
         }
     }
     None
@@ -500,21 +491,23 @@ fn sign_position(depth: f64) -> CirclePosition {
 }
 
 impl Reach {
+    /// The two points the question names (`a`, `b` or `from`, `to`).
+    fn points(&self) -> [Point; 2] {
+        match *self {
+            Reach::Distance { a, b } => [a, b],
+            Reach::Entering { from, to } => [from, to],
+        }
+    }
+
     /// The size of the configuration: the scale of every error bound.
     fn size(&self, c: Point, r: f64) -> f64 {
-        let (p, q) = match *self {
-            Reach::Distance { a, b } => (a, b),
-            Reach::Entering { from, to } => (from, to),
-        };
+        let [p, q] = self.points();
         r.abs() + c.distance(p) + p.distance(q)
     }
 
     /// [`Reach::size`] in the arithmetic `T`, at `(x, y, r)`.
     fn size_in<T: Real>(&self, [x, y, r]: &[T; 3], lift: &impl Fn(f64) -> T) -> T {
-        let (p, q) = match *self {
-            Reach::Distance { a, b } => (a, b),
-            Reach::Entering { from, to } => (from, to),
-        };
+        let [p, q] = self.points();
         let (px, py) = (lift(p.x), lift(p.y));
         let centre_to_p = T::hypot(&x.sub(&px), &y.sub(&py));
         let along = T::hypot(&lift(q.x).sub(&px), &lift(q.y).sub(&py));
@@ -845,9 +838,10 @@ pub(crate) fn audit_depth(sites: &[Site; 3], other: &Site) -> Option<(Point, f64
         let lift = |x: f64| BigFloat::from_f64(x, BEYOND_RANGE_BITS);
         let solution = segment_solvers::vertex_in_any_range(sites, &lift)?;
         let relative = question.value(&solution, &lift).div(&question.size_in(&solution, &lift));
-        let saturated = |v: &BigFloat| v.to_f64().clamp(-f64::MAX, f64::MAX);
-        let [x, y] =
-            [&solution[0], &solution[1]].map(|v| if saturated(v).abs() == f64::MAX { saturated(v) } else { back(v.to_f64()) });
+        let [x, y] = [&solution[0], &solution[1]].map(|v| match v.to_f64_saturated() {
+            s if s.abs() == f64::MAX => s,
+            s => back(s),
+        });
         return Some((Point::new(x, y), f64::INFINITY, relative.to_f64()));
     };
     let [x, y, r] = start.clone().map(|v| v.to_f64());

@@ -37,8 +37,8 @@ pub(crate) fn circle_of_sites(sites: &[Site; 3]) -> (Point, f64) {
 /// `f64`'s exponents: a point the least subnormal off a segment's line,
 /// beside ordinary coordinates): the nearest `f64` point to its centre
 /// (each coordinate beyond the range saturated at `±f64::MAX`) and an
-/// infinite radius ([`oracle::is_beyond_range`]), by which the predicates know to decide it
-/// from its sites alone. `None` when big floats find no circle either,
+/// infinite radius ([`oracle::is_beyond_range`]), by which the predicates
+/// know to decide it from its sites alone. `None` when big floats find no circle either,
 /// and in fault injection.
 fn beyond_range(sites: &[Site; 3]) -> Option<(Point, f64)> {
     if fault::active() {
@@ -48,8 +48,7 @@ fn beyond_range(sites: &[Site; 3]) -> Option<(Point, f64)> {
     }
     let lift = |x: f64| BigFloat::from_f64(x, oracle::BEYOND_RANGE_BITS);
     let [x, y, r] = segment_solvers::vertex_in_any_range(sites, &lift)?;
-    let saturated = |v: &BigFloat| v.to_f64().clamp(-f64::MAX, f64::MAX);
-    (r.to_f64() > f64::MAX).then(|| (Point::new(saturated(&x), saturated(&y)), f64::INFINITY))
+    (r.to_f64() > f64::MAX).then(|| (Point::new(x.to_f64_saturated(), y.to_f64_saturated()), f64::INFINITY))
 }
 
 /// The circle of three sites, some of them segments, as accurately as the
