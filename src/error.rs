@@ -16,6 +16,9 @@ pub enum ErrorKind {
     /// A polygon ring has fewer than three distinct points;
     /// [`Error::indices`] holds the polygon's and the ring's index.
     InvalidPolygon,
+    /// An argument of a query is out of its domain (such as an offset
+    /// distance that is NaN, infinite or zero); the message says which.
+    InvalidArgument,
     /// The construction could not complete a valid diagram: a bug in
     /// segvoronoi, not in the input (none is known; with sound arithmetic it
     /// does not happen). The message says what failed; please report the

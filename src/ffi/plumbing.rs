@@ -64,6 +64,7 @@ impl From<&Error> for segvoronoi_status {
             ErrorKind::Intersecting => segvoronoi_status::Intersecting,
             ErrorKind::Internal => segvoronoi_status::Internal,
             ErrorKind::InvalidPolygon => segvoronoi_status::InvalidPolygon,
+            ErrorKind::InvalidArgument => segvoronoi_status::InvalidArgument,
         }
     }
 }

@@ -13,6 +13,7 @@
 mod bigfloat;
 mod double_double;
 pub(crate) mod edge_curve;
+pub(crate) mod edge_track;
 mod expansion;
 pub(crate) mod fault;
 pub(crate) mod oracle;

@@ -70,6 +70,11 @@ impl Parabola {
         (q.x - self.origin.x) * self.tangent.x + (q.y - self.origin.y) * self.tangent.y
     }
 
+    /// The distance from the focus to the directrix (positive).
+    pub(crate) fn focal_distance(&self) -> f64 {
+        self.focal_distance
+    }
+
     /// The unit direction of the directrix, in which the parameter grows.
     pub(crate) fn tangent(&self) -> Point {
         self.tangent

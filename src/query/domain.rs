@@ -63,6 +63,9 @@ struct Ring {
     /// another ring, only inside it (which keeps the tests of many small
     /// rings near-linear).
     bounds: Bounds,
+    /// How many rings contain it, and the innermost of them.
+    depth: usize,
+    parent: Option<usize>,
 }
 
 /// An axis-parallel box `[min x, min y, max x, max y]`.
@@ -132,6 +135,18 @@ impl Diagram {
     /// rule over every ring); `None` without a domain.
     pub fn locate_point(&self, p: Point) -> Option<Location> {
         Some(self.point_location(&self.domain.as_ref()?.rings, p))
+    }
+
+    /// The rings as the offsets need them: per ring, its sites (corners
+    /// and segments), how many rings contain it, and the innermost of them
+    /// (an index into the same list). Empty without a domain.
+    pub(crate) fn ring_nesting(&self) -> Vec<(Vec<SiteId>, usize, Option<usize>)> {
+        let Some(domain) = &self.domain else { return Vec::new() };
+        domain
+            .rings
+            .iter()
+            .map(|r| (r.corners.iter().chain(&r.segments).copied().collect(), r.depth, r.parent))
+            .collect()
     }
 
     fn classify(&self, inputs: &[RingInput]) -> Domain {
@@ -259,13 +274,17 @@ impl Diagram {
                     .collect();
                 let corners: Vec<SiteId> = corners;
                 let bounds = Bounds::of(corners.iter().map(|&c| self.point_of(c)));
-                Ring { corners, segments, left_inside: false, bounds }
+                Ring { corners, segments, left_inside: false, bounds, depth: 0, parent: None }
             })
             .collect();
         let counter_clockwise: Vec<bool> = rings.iter().map(|r| self.is_counter_clockwise(r)).collect();
+        let enclosing: Vec<Vec<usize>> = (0..rings.len()).map(|r| self.enclosing_rings(&rings, r)).collect();
         for r in 0..rings.len() {
-            let depth = self.enclosing_rings(&rings, r);
+            let depth = enclosing[r].len();
             rings[r].left_inside = counter_clockwise[r] == (depth % 2 == 0);
+            rings[r].depth = depth;
+            // rings are nested in a chain: the innermost encloser is the deepest
+            rings[r].parent = enclosing[r].iter().copied().max_by_key(|&o| enclosing[o].len());
         }
         rings
     }
@@ -283,9 +302,9 @@ impl Diagram {
         orientation(prev, here, next) == Orientation::CounterClockwise
     }
 
-    /// How many other rings contain ring `r` (rings neither cross nor
+    /// The other rings that contain ring `r` (rings neither cross nor
     /// overlap, so one corner of `r` not on another ring tells).
-    fn enclosing_rings(&self, rings: &[Ring], r: usize) -> usize {
+    fn enclosing_rings(&self, rings: &[Ring], r: usize) -> Vec<usize> {
         (0..rings.len())
             .filter(|&other| other != r && rings[other].bounds.holds(&rings[r].bounds))
             .filter(|&other| {
@@ -296,7 +315,7 @@ impl Diagram {
                     .find(|&l| l != Location::Boundary)
                     == Some(Location::Inside)
             })
-            .count()
+            .collect()
     }
 
     /// Where an obstacle lies. A point, or a segment with an end off the

@@ -1,0 +1,198 @@
+//! What the offsets of one side (growing or shrinking) share across
+//! distances, built once: the edges they may cross with the range of the
+//! clearance along each (an interval tree, so one distance looks only at
+//! the edges it crosses), each half-edge's place around its cell, the
+//! cells an offset may circle without crossing any edge, and the two merge
+//! trees that give the nesting.
+
+use super::interval_tree::IntervalTree;
+use super::level_tree::LevelTree;
+use crate::diagram::{Diagram, EdgeId, SiteId};
+use crate::geometry::edge_track::{EdgeTrack, TrackEnd};
+use crate::geometry::Site;
+use crate::query::{EdgeEnd, HalfEdge, Location};
+
+/// Which way the offset goes: away from the sites (a positive distance)
+/// or, with a domain, into it (a negative one).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Side {
+    Grow,
+    Shrink,
+}
+
+impl Side {
+    /// Whether a clearance `c` counts as within the band of width `r`
+    /// along the sites. The band is open when growing and closed when
+    /// shrinking, so that the region the loops bound is always open: where
+    /// two parts of it touch at one point, the loops stay apart (see
+    /// `Diagram::offset`).
+    #[inline]
+    pub(super) fn in_band(self, c: f64, r: f64) -> bool {
+        match self {
+            Side::Grow => c < r,
+            Side::Shrink => c <= r,
+        }
+    }
+}
+
+/// The shared part of the offsets on one side (see the module doc).
+pub(super) struct OffsetIndex {
+    pub(super) side: Side,
+    /// The edges that can carry the offset, by their clearance range.
+    pub(super) edges: IntervalTree,
+    /// Per half-edge, its place counter-clockwise around its cell.
+    pub(super) rank: Vec<u32>,
+    /// Per site, how many half-edges its cell has.
+    pub(super) cell_size: Vec<u32>,
+    /// Point sites whose cell can hold a whole circle: the lowest
+    /// clearance on the cell's boundary, the site, and a leaf of `above`
+    /// on that boundary; by that clearance.
+    pub(super) circles: Vec<(f64, SiteId, u32)>,
+    /// The components of what lies above a level: leaves are the finite
+    /// vertices, then infinity.
+    pub(super) above: LevelTree,
+    /// The components of what lies below: leaves are the sites, then the
+    /// outside of the domain's outer rings.
+    pub(super) below: LevelTree,
+}
+
+impl OffsetIndex {
+    pub(super) fn new(diagram: &Diagram, side: Side) -> OffsetIndex {
+        let edge_count = diagram.edges.len();
+        let infinity = diagram.finite_vertices as u32;
+        let outside = diagram.sites.len() as u32;
+        let mut low = vec![f64::INFINITY; edge_count];
+        let mut intervals = Vec::new();
+        let mut above_links = Vec::new();
+        let mut below_links = Vec::new();
+        for e in (0..edge_count).map(EdgeId::from_index) {
+            if !diagram.offset_may_cross(e, side) {
+                continue;
+            }
+            let (lo, hi) = diagram.clearance_range(e);
+            low[e.index()] = lo;
+            intervals.push((lo, hi, e.index() as u32));
+            let ends = diagram.end_vertices(e).map(|v| v.map_or(infinity, |v| v.index() as u32));
+            above_links.push((ends[0], ends[1], lo));
+            let [h, t] = diagram.half_edges(e).expect("in range");
+            let cells = [h, t].map(|h| diagram.half_edge_cell(h).expect("in range").index() as u32);
+            below_links.push((cells[0], cells[1], lo));
+        }
+        below_links.extend(ring_links(diagram, side, outside));
+
+        let mut rank = vec![0u32; 2 * edge_count];
+        let mut cell_size = vec![0u32; diagram.sites.len()];
+        let mut circles = Vec::new();
+        for s in (0..diagram.sites.len()).map(SiteId::from_index) {
+            let mut lowest = f64::INFINITY;
+            let mut first: Option<HalfEdge> = None;
+            for (k, h) in diagram.cell_half_edges(s).enumerate() {
+                rank[h.index()] = k as u32;
+                cell_size[s.index()] += 1;
+                lowest = lowest.min(low[h.edge().index()]);
+                first.get_or_insert(h);
+            }
+            if matches!(diagram.sites[s.index()], Site::Point(_)) && diagram.offset_may_circle(s, side) {
+                let leaf = first.and_then(|h| diagram.target_vertex(h)).map_or(infinity, |v| v.index() as u32);
+                circles.push((lowest, s, leaf));
+            }
+        }
+        circles.sort_by(|a, b| a.0.total_cmp(&b.0));
+
+        let mut vertex_levels: Vec<f64> = diagram.store.clearance[..diagram.finite_vertices].to_vec();
+        vertex_levels.push(f64::INFINITY);
+        OffsetIndex {
+            side,
+            edges: IntervalTree::new(intervals),
+            rank,
+            cell_size,
+            circles,
+            above: LevelTree::new(vertex_levels, above_links, true),
+            below: LevelTree::new(vec![f64::NEG_INFINITY; diagram.sites.len() + 1], below_links, false),
+        }
+    }
+}
+
+/// Links of `below` that hold at every level: the sites of each ring
+/// (the ring itself is at distance zero), and rings to the ring that
+/// encloses them across a part of the plane on the far side of the
+/// offsets: outside the domain when shrinking (the outer rings to
+/// `outside`), inside it when growing.
+fn ring_links(diagram: &Diagram, side: Side, outside: u32) -> Vec<(u32, u32, f64)> {
+    let rings = diagram.ring_nesting();
+    let mut links = Vec::new();
+    for (sites, depth, parent) in &rings {
+        let first = sites[0].index() as u32;
+        links.extend(sites[1..].iter().map(|s| (first, s.index() as u32, f64::NEG_INFINITY)));
+        // between a ring of even depth and its encloser lies the outside
+        let across_outside = depth % 2 == 0;
+        let joins = match side {
+            Side::Shrink => across_outside,
+            Side::Grow => !across_outside,
+        };
+        if !joins {
+            continue;
+        }
+        let other = match parent {
+            Some(p) => rings[*p].0[0].index() as u32,
+            None if side == Side::Shrink => outside,
+            None => continue,
+        };
+        links.push((first, other, f64::NEG_INFINITY));
+    }
+    links
+}
+
+impl Diagram {
+    /// Whether the offsets on `side` may cross edge `e`: every edge without
+    /// a domain; with one, the edges outside it when growing, inside when
+    /// shrinking.
+    pub(super) fn offset_may_cross(&self, e: EdgeId, side: Side) -> bool {
+        match (self.edge_location(e), side) {
+            (None, _) => true,
+            (Some(l), Side::Grow) => l == Location::Outside,
+            (Some(l), Side::Shrink) => l == Location::Inside,
+        }
+    }
+
+    /// Whether a whole circle around point site `s` may be an offset on
+    /// `side` (its cell on that side of the domain).
+    fn offset_may_circle(&self, s: SiteId, side: Side) -> bool {
+        match (self.cell_location(s), side) {
+            (None, _) => true,
+            (Some(l), Side::Grow) => l == Location::Outside,
+            (Some(l), Side::Shrink) => l == Location::Inside,
+        }
+    }
+
+    /// The lowest and highest clearance along edge `e` (input units;
+    /// infinite at an end at infinity).
+    pub(super) fn clearance_range(&self, e: EdgeId) -> (f64, f64) {
+        let [c0, c1] = self.end_clearances(e);
+        let interior = self.edge_track(e).and_then(|t| t.interior_minimum()).map_or(f64::INFINITY, |m| m * self.scale.to_input);
+        (c0.min(c1).min(interior), c0.max(c1))
+    }
+
+    /// The clearance at both ends of `e`, as the vertices store it.
+    pub(super) fn end_clearances(&self, e: EdgeId) -> [f64; 2] {
+        self.end_vertices(e).map(|v| v.map_or(f64::INFINITY, |v| self.store.clearance[v.index()]))
+    }
+
+    /// The track of edge `e` (internal coordinates) from `ends[0]` to
+    /// `ends[1]`.
+    pub(super) fn edge_track(&self, e: EdgeId) -> Option<EdgeTrack> {
+        let edge = self.edge(e)?;
+        let f = self.scale.to_internal;
+        let [a, b] = edge.sites.map(|s| self.sites[s.index()].scaled(f));
+        let end = |end: EdgeEnd| match end {
+            EdgeEnd::Vertex(v) => TrackEnd::At(self.store.position[v.index()].scaled(f)),
+            EdgeEnd::Infinite { direction } => TrackEnd::Towards(direction),
+        };
+        EdgeTrack::new([&a, &b], end(edge.ends[0]), end(edge.ends[1]))
+    }
+
+    /// The finite vertex where `h` ends.
+    pub(super) fn target_vertex(&self, h: HalfEdge) -> Option<crate::diagram::VertexId> {
+        self.end_vertices(h.edge())[usize::from(!h.is_reversed())]
+    }
+}

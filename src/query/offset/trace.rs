@@ -1,0 +1,199 @@
+//! The loops at one distance, traced through the cells of the diagram.
+//!
+//! The clearance is quasi-convex along every edge (`geometry::edge_track`),
+//! so an edge crosses the level `r` at most twice. Which edges cross it,
+//! and how often, follows from the vertices' stored clearances and the
+//! lowest clearance inside each edge, never from a recomputed position: an
+//! edge whose ends lie on different sides of the band crosses once, an
+//! edge with both ends beyond it and its lowest point within crosses
+//! twice. Every cell walked counter-clockwise then meets its crossings
+//! alternately rising out of the band and falling back into it, and the
+//! offset inside the cell runs from each rising crossing to the next
+//! falling one (counter-clockwise around a point site, parallel to a
+//! segment site, with the band on its left). The falling crossing is the
+//! rising crossing of the cell across the edge, where the loop goes on.
+
+use super::index::{OffsetIndex, Side};
+use crate::diagram::{Diagram, EdgeId, SiteId};
+use crate::geometry::{Point, Site};
+use crate::query::HalfEdge;
+
+/// Within this fraction of the distance a crossing is taken to be at the
+/// vertex it nears, or the two crossings of one edge at its lowest point:
+/// the roots of a near-tangency are only that precise (a square root of
+/// rounding), and offsets that touch there then touch exactly.
+const SNAP: f64 = 1e-10;
+
+/// A point of the level on an edge.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Crossing {
+    pub(super) at: Point,
+}
+
+/// One view of a crossing from a cell: the half-edge it is on, and
+/// whether the clearance rises out of the band there walking that
+/// half-edge.
+#[derive(Clone, Copy, Debug)]
+struct View {
+    cell: u32,
+    rank: u32,
+    order: u8,
+    crossing: u32,
+    rising: bool,
+    half_edge: HalfEdge,
+}
+
+/// The offset inside one cell, from a rising crossing to the next falling
+/// one.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Span {
+    pub(super) site: SiteId,
+    pub(super) from: u32,
+    pub(super) to: u32,
+    /// The half-edge of the rising crossing (its target lies beyond the
+    /// band).
+    pub(super) rising_on: HalfEdge,
+    /// Whether the boundary between the two crossings passes a whole edge
+    /// (so equal end points mean a whole circle, not nothing).
+    pub(super) long: bool,
+}
+
+/// The crossings and spans at one distance, and how the spans follow each
+/// other.
+pub(super) struct Traced {
+    pub(super) crossings: Vec<Crossing>,
+    pub(super) spans: Vec<Span>,
+    /// Per span, the span after it (the one starting where it ends).
+    pub(super) next: Vec<u32>,
+}
+
+const NONE: u32 = u32::MAX;
+
+impl Diagram {
+    /// Crossings and spans of the level `r` (input units) on `index`'s
+    /// side.
+    pub(super) fn trace(&self, index: &OffsetIndex, r: f64) -> Traced {
+        let side = index.side;
+        let mut hits = Vec::new();
+        index.edges.stab(r, |c| side.in_band(c, r), &mut hits);
+        hits.sort_unstable();
+        let mut crossings = Vec::new();
+        let mut views = Vec::new();
+        for &e in &hits {
+            let e = EdgeId::from_index(e as usize);
+            let placed = self.edge_crossings(e, side, r);
+            let n = placed.len();
+            let [h, t] = self.half_edges(e).expect("in range");
+            let cells = [h, t].map(|h| self.half_edge_cell(h).expect("in range").index() as u32);
+            for (k, (at, rising)) in placed.into_iter().enumerate() {
+                let id = crossings.len() as u32;
+                crossings.push(Crossing { at });
+                views.push(View { cell: cells[0], rank: index.rank[h.index()], order: k as u8, crossing: id, rising, half_edge: h });
+                views.push(View {
+                    cell: cells[1],
+                    rank: index.rank[t.index()],
+                    order: (n - 1 - k) as u8,
+                    crossing: id,
+                    rising: !rising,
+                    half_edge: t,
+                });
+            }
+        }
+        views.sort_unstable_by_key(|v| (v.cell, v.rank, v.order));
+        let mut spans = Vec::new();
+        let mut start_of = vec![NONE; crossings.len()];
+        for group in views.chunk_by(|a, b| a.cell == b.cell) {
+            let size = index.cell_size[group[0].cell as usize];
+            for (i, up) in group.iter().enumerate().filter(|(_, v)| v.rising) {
+                let down = group[(i + 1) % group.len()];
+                if down.rising {
+                    // not alternating: an inconsistency the pairing skips
+                    debug_assert!(false, "crossings of cell {} do not alternate", up.cell);
+                    continue;
+                }
+                let wraps = down.rank < up.rank || (down.rank == up.rank && down.order <= up.order);
+                let steps = if wraps { down.rank + size - up.rank } else { down.rank - up.rank };
+                start_of[up.crossing as usize] = spans.len() as u32;
+                spans.push(Span {
+                    site: SiteId::from_index(up.cell as usize),
+                    from: up.crossing,
+                    to: down.crossing,
+                    rising_on: up.half_edge,
+                    long: steps >= 2,
+                });
+            }
+        }
+        let next = spans.iter().map(|s| start_of[s.to as usize]).collect();
+        Traced { crossings, spans, next }
+    }
+
+    /// Where edge `e` crosses the level `r`, in the order of its
+    /// `ends[0] → ends[1]`, each with whether the clearance rises there.
+    fn edge_crossings(&self, e: EdgeId, side: Side, r: f64) -> Vec<(Point, bool)> {
+        let [c0, c1] = self.end_clearances(e);
+        let (b0, b1) = (side.in_band(c0, r), side.in_band(c1, r));
+        let track = self.edge_track(e);
+        let kinds: &[bool] = match (b0, b1) {
+            (true, false) => &[true],
+            (false, true) => &[false],
+            (false, false) => {
+                let dips = track.and_then(|t| t.interior_minimum()).is_some_and(|m| side.in_band(m * self.scale.to_input, r));
+                if dips {
+                    &[false, true]
+                } else {
+                    &[]
+                }
+            }
+            (true, true) => &[],
+        };
+        let ends = self.end_vertices(e);
+        let vertex_at = |k: usize| ends[k].map(|v| self.store.position[v.index()]);
+        let Some(track) = track else {
+            // no curve to follow (not expected): the crossing at a finite end
+            let at = vertex_at(0).or(vertex_at(1)).unwrap_or_default();
+            return kinds.iter().map(|&rising| (at, rising)).collect();
+        };
+        let level = r * self.scale.to_internal;
+        let roots = track.roots(level);
+        let lowest = track.clamp(track.lowest());
+        let snap = SNAP * level;
+        if let (2, Some((lo, hi))) = (kinds.len(), roots) {
+            if hi - lo <= 2.0 * snap {
+                let at = track.point(lowest).scaled(self.scale.to_input);
+                return vec![(at, false), (at, true)];
+            }
+        }
+        kinds
+            .iter()
+            .map(|&rising| {
+                let t = match roots {
+                    Some((lo, hi)) => track.clamp(if rising { hi } else { lo }),
+                    None => lowest,
+                };
+                let at = if t - track.from <= snap && vertex_at(0).is_some() {
+                    vertex_at(0).expect("checked")
+                } else if track.to - t <= snap && vertex_at(1).is_some() {
+                    vertex_at(1).expect("checked")
+                } else {
+                    track.point(t).scaled(self.scale.to_input)
+                };
+                (at, rising)
+            })
+            .collect()
+    }
+
+    /// The finite vertex or infinity (`infinity`) where `h` ends, as a leaf
+    /// of the index's `above` tree.
+    pub(super) fn above_leaf(&self, h: HalfEdge, infinity: u32) -> u32 {
+        self.target_vertex(h).map_or(infinity, |v| v.index() as u32)
+    }
+
+    /// Whether a site is a point (offset pieces there are arcs).
+    pub(super) fn point_site(&self, s: SiteId) -> Option<Point> {
+        match self.sites[s.index()] {
+            Site::Point(p) => Some(p),
+            _ => None,
+        }
+    }
+
+}
