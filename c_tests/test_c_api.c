@@ -1375,6 +1375,87 @@ static void test_versioned_structs(void) {
     segvoronoi_diagram_free(d);
 }
 
+/* Offsets of the square 10 x 10 with a square hole 2 x 2 in its middle:
+ * shrunk by 1, an 8 x 8 square with a hole grown by 1 (the 4 x 4 square
+ * with rounded corners); grown by 1, the 12 x 12 rounded square with a hole
+ * of 0 x 0 (gone). Loops close, holes run clockwise, pieces say their kind,
+ * polylines stay within the tolerance of the exact area, bad calls fail. */
+static void test_offsets(void) {
+    const double xy[] = {0, 0, 10, 0, 10, 10, 0, 10, 4, 4, 4, 6, 6, 6, 6, 4};
+    const size_t lengths[] = {4, 4};
+    const double distances[] = {-1.0, 1.0, -2.0};
+    const double pi = 3.14159265358979323846;
+    segvoronoi_builder *b = segvoronoi_builder_new();
+    segvoronoi_diagram *d = NULL;
+    segvoronoi_offset *offsets[3] = {NULL, NULL, NULL}, *untouched = NULL;
+    size_t k, l, p;
+    CHECK_STATUS(segvoronoi_builder_add_polygon(b, xy, lengths, 2), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_build(b, &d), SEGVORONOI_STATUS_OK);
+    segvoronoi_builder_free(b);
+    CHECK_STATUS(segvoronoi_diagram_offsets(d, distances, 3, offsets), SEGVORONOI_STATUS_OK);
+    CHECK(segvoronoi_offset_distance(offsets[0]) == -1.0);
+    /* 64 - (4 + 4 x 2 + pi) */
+    CHECK(fabs(segvoronoi_offset_area(offsets[0]) - (64.0 - (4.0 + 8.0 + pi))) < 1e-9);
+    CHECK(segvoronoi_offset_loop_count(offsets[0]) == 2);
+    CHECK(fabs(segvoronoi_offset_area(offsets[1]) - (100.0 + 40.0 + pi)) < 1e-9); /* the hole filled */
+    CHECK(segvoronoi_offset_loop_count(offsets[1]) == 1);
+    /* 2 in: the 6 x 6 square less the hole grown by 2 leaves four corners */
+    CHECK(segvoronoi_offset_loop_count(offsets[2]) == 4);
+    for (k = 0; k < 3; ++k) {
+        for (l = 0; l < segvoronoi_offset_loop_count(offsets[k]); ++l) {
+            segvoronoi_loop loop = {.struct_size = sizeof loop};
+            segvoronoi_loop_piece first = {.struct_size = sizeof first}, last = {.struct_size = sizeof last};
+            size_t n = 0, got = 0;
+            double *points, shoelace = 0.0;
+            CHECK_STATUS(segvoronoi_offset_loop(offsets[k], l, &loop), SEGVORONOI_STATUS_OK);
+            CHECK(loop.piece_count > 0);
+            CHECK(loop.hole == (loop.signed_area < 0.0));
+            CHECK(loop.hole == (loop.parent != SEGVORONOI_NO_PARENT));
+            CHECK(loop.parent == SEGVORONOI_NO_PARENT || loop.parent < l);
+            for (p = 0; p < loop.piece_count; ++p) {
+                segvoronoi_loop_piece piece = {.struct_size = sizeof piece};
+                CHECK_STATUS(segvoronoi_offset_piece(offsets[k], l, p, &piece), SEGVORONOI_STATUS_OK);
+                CHECK(piece.kind == SEGVORONOI_OFFSET_LINE || piece.kind == SEGVORONOI_OFFSET_ARC);
+                if (piece.kind == SEGVORONOI_OFFSET_ARC) CHECK(piece.radius == fabs(distances[k]));
+                if (p > 0) CHECK(piece.from[0] == last.to[0] && piece.from[1] == last.to[1]);
+                if (p == 0) first = piece;
+                last = piece;
+            }
+            CHECK(first.from[0] == last.to[0] && first.from[1] == last.to[1]);
+            CHECK_STATUS(segvoronoi_offset_piece(offsets[k], l, loop.piece_count, &last), SEGVORONOI_STATUS_OUT_OF_RANGE);
+            CHECK_STATUS(segvoronoi_offset_loop_polyline(offsets[k], l, 1e-4, NULL, 0, &n), SEGVORONOI_STATUS_OK);
+            CHECK(n >= loop.piece_count);
+            points = malloc(2 * n * sizeof *points);
+            CHECK(points != NULL);
+            CHECK_STATUS(segvoronoi_offset_loop_polyline(offsets[k], l, 1e-4, points, n, &got), SEGVORONOI_STATUS_OK);
+            CHECK(got == n);
+            for (p = 0; p < n; ++p) {
+                size_t q = (p + 1) % n;
+                shoelace += (points[2 * p] * points[2 * q + 1] - points[2 * q] * points[2 * p + 1]) / 2.0;
+            }
+            CHECK(fabs(shoelace - loop.signed_area) < 1e-4 * 100.0);
+            CHECK_STATUS(segvoronoi_offset_loop_polyline(offsets[k], l, 1e-4, points, n - 1, &got),
+                         SEGVORONOI_STATUS_BUFFER_TOO_SMALL);
+            CHECK_STATUS(segvoronoi_offset_loop_polyline(offsets[k], l, -1.0, points, n, &got),
+                         SEGVORONOI_STATUS_INVALID_ARGUMENT);
+            free(points);
+        }
+        CHECK_STATUS(segvoronoi_offset_loop(offsets[k], 99, &(segvoronoi_loop){.struct_size = 0}),
+                     SEGVORONOI_STATUS_OUT_OF_RANGE);
+    }
+    CHECK_STATUS(segvoronoi_diagram_offset(d, 0.0, &untouched), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_offset(d, NAN, &untouched), SEGVORONOI_STATUS_INVALID_ARGUMENT);
+    CHECK(untouched == NULL);
+    CHECK_STATUS(segvoronoi_diagram_offset(NULL, 1.0, &untouched), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_diagram_offset(d, 1.0, NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK(segvoronoi_offset_loop_count(NULL) == 0 && isnan(segvoronoi_offset_area(NULL)));
+    /* an offset outlives its diagram */
+    segvoronoi_diagram_free(d);
+    CHECK(segvoronoi_offset_loop_count(offsets[1]) == 1);
+    for (k = 0; k < 3; ++k) segvoronoi_offset_free(offsets[k]);
+    segvoronoi_offset_free(NULL);
+}
+
 int segvoronoi_run_c_tests(void) {
     failures = 0;
     checks = 0;
@@ -1393,6 +1474,7 @@ int segvoronoi_run_c_tests(void) {
     test_edge_geometry();
     test_versioned_structs();
     test_polygon_domain();
+    test_offsets();
     fprintf(stderr, "segvoronoi C API tests: %d checks, %d failed\n", checks, failures);
     return failures;
 }

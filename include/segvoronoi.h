@@ -77,6 +77,16 @@
 // or corner.
 #define SEGVORONOI_LOCATION_BOUNDARY 2
 
+// `segvoronoi_loop_piece.kind` of a straight piece, parallel to a
+// segment site.
+#define SEGVORONOI_OFFSET_LINE 0
+
+// `segvoronoi_loop_piece.kind` of a circular arc around a point site.
+#define SEGVORONOI_OFFSET_ARC 1
+
+// `segvoronoi_loop.parent` of an outermost loop.
+#define SEGVORONOI_NO_PARENT UINT32_MAX
+
 // Major version of the library this header belongs to.
 #define SEGVORONOI_VERSION_MAJOR 0
 
@@ -140,6 +150,12 @@ typedef struct segvoronoi_diagram segvoronoi_diagram;
 // it refers to its diagram, so free it (`segvoronoi_medial_axis_free`)
 // before the diagram.
 typedef struct segvoronoi_medial_axis segvoronoi_medial_axis;
+
+// The offset of a diagram at one distance (`segvoronoi_diagram_offset`):
+// closed loops of exact pieces. Opaque and immutable; it holds its own
+// copy of everything it reports, so it may outlive its diagram. Free it
+// with `segvoronoi_offset_free`.
+typedef struct segvoronoi_offset segvoronoi_offset;
 
 // A site: a point, or an open segment. Versioned: set `struct_size` before
 // the call (see the header's introduction).
@@ -270,6 +286,49 @@ typedef struct segvoronoi_piece {
   // The clearance at both ends (infinite at an end at infinity).
   double clearance[2];
 } segvoronoi_piece;
+
+// One loop of an offset. Versioned: set `struct_size` before the call.
+typedef struct segvoronoi_loop {
+  // Set by the caller to `sizeof(segvoronoi_loop)`; the library
+  // writes the fields that fit and sets it to the number of bytes written.
+  size_t struct_size;
+  // How many pieces it has.
+  size_t piece_count;
+  // The loop it lies directly inside, or `SEGVORONOI_NO_PARENT`. A
+  // parent's index is below its children's.
+  uint32_t parent;
+  // Whether it bounds a hole (it runs clockwise; outer boundaries run
+  // counter-clockwise, with the region on their left).
+  bool hole;
+  // The signed area it encloses, from its exact pieces (negative for a
+  // hole).
+  double signed_area;
+} segvoronoi_loop;
+
+// One piece of an offset loop, in the loop's direction. For
+// `SEGVORONOI_OFFSET_LINE` the centre, radius and direction are 0. More
+// kinds may come, so treat an unknown `kind` as "neither". Versioned: set
+// `struct_size` before the call.
+typedef struct segvoronoi_loop_piece {
+  // Set by the caller to `sizeof(segvoronoi_loop_piece)`; the library
+  // writes the fields that fit and sets it to the number of bytes written.
+  size_t struct_size;
+  // `SEGVORONOI_OFFSET_LINE` or `SEGVORONOI_OFFSET_ARC`.
+  uint32_t kind;
+  // The site it keeps its distance from (a segment site for a line, a
+  // point site for an arc).
+  uint32_t site;
+  // Where it starts: `{x, y}`.
+  double from[2];
+  // Where it ends: `{x, y}`; for an arc equal to `from`, a whole circle.
+  double to[2];
+  // An arc's centre (its point site): `{x, y}`.
+  double centre[2];
+  // An arc's radius (the offset's distance).
+  double radius;
+  // Whether an arc runs counter-clockwise from `from` to `to`.
+  bool counter_clockwise;
+} segvoronoi_loop_piece;
 
 // The shape of an edge. For `SEGVORONOI_EDGE_LINE` all coordinates are 0.
 // Versioned: set `struct_size` before the call (see the header's
@@ -765,6 +824,79 @@ enum segvoronoi_status segvoronoi_diagram_cell_half_edges(const struct segvorono
                                                           uint32_t *half_edges,
                                                           size_t capacity,
                                                           size_t *count);
+
+// The offset of `diagram` at signed distance `distance` in `*out` (Rust's
+// `Diagram::offset`: with polygons, a negative distance shrinks the
+// domain and a positive one grows it; without, only a positive distance,
+// the boundary of the points within it of any site).
+//
+// Ownership: the caller frees `*out` with `segvoronoi_offset_free`.
+// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (a distance that is NaN,
+// infinite or zero, or not positive without polygons); then `*out` is
+// untouched.
+enum segvoronoi_status segvoronoi_diagram_offset(const struct segvoronoi_diagram *diagram,
+                                                 double distance,
+                                                 struct segvoronoi_offset **out);
+
+// The offsets of `diagram` at the `count` signed distances `distances`
+// (see `segvoronoi_diagram_offset`), one handle per distance in
+// `out[0..count]`, in the order given. The work they share is done once,
+// so each distance costs about its own output.
+//
+// Ownership: the caller frees each `out[k]` with `segvoronoi_offset_free`.
+// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (any distance as for
+// `segvoronoi_diagram_offset`); then `out` is untouched.
+enum segvoronoi_status segvoronoi_diagram_offsets(const struct segvoronoi_diagram *diagram,
+                                                  const double *distances,
+                                                  size_t count,
+                                                  struct segvoronoi_offset **out);
+
+// Frees an offset. NULL does nothing.
+void segvoronoi_offset_free(struct segvoronoi_offset *offset);
+
+// The signed distance the offset was asked for; NaN for NULL.
+double segvoronoi_offset_distance(const struct segvoronoi_offset *offset);
+
+// The number of loops; 0 for NULL.
+size_t segvoronoi_offset_loop_count(const struct segvoronoi_offset *offset);
+
+// The area of the region the loops bound, from the exact pieces; NaN for
+// NULL.
+double segvoronoi_offset_area(const struct segvoronoi_offset *offset);
+
+// Loop `index` (`0 <= index < loop_count`) in `*out`.
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT`
+// (`out->struct_size` too small); then `*out` is untouched.
+enum segvoronoi_status segvoronoi_offset_loop(const struct segvoronoi_offset *offset,
+                                              size_t index,
+                                              struct segvoronoi_loop *out);
+
+// Piece `piece` of loop `index` in `*out`.
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (loop or piece),
+// `INVALID_ARGUMENT` (`out->struct_size` too small); then `*out` is
+// untouched.
+enum segvoronoi_status segvoronoi_offset_piece(const struct segvoronoi_offset *offset,
+                                               size_t index,
+                                               size_t piece,
+                                               struct segvoronoi_loop_piece *out);
+
+// The points of loop `index` within `tolerance` (input units) of its exact
+// curve, `{x, y}` each, the first not repeated at the end: simple, and
+// nested as the exact loops are (Rust's `OffsetLoop::polyline`). Up to
+// `capacity` points (`2 * capacity` doubles) to `xy`, the full number to
+// `*count`; `xy = NULL, capacity = 0` only counts (`OK`).
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT` (a tolerance
+// that is not positive), `BUFFER_TOO_SMALL` (then `*count` holds the number
+// needed and the first `capacity` points are written).
+enum segvoronoi_status segvoronoi_offset_loop_polyline(const struct segvoronoi_offset *offset,
+                                                       size_t index,
+                                                       double tolerance,
+                                                       double *xy,
+                                                       size_t capacity,
+                                                       size_t *count);
 
 // Static text for a status code (a `segvoronoi_status` value); never NULL,
 // valid forever. Numbers that are no status give `"unknown status"`.

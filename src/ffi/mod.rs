@@ -28,6 +28,7 @@ mod diagram;
 mod domain;
 mod medial_axis;
 mod navigation;
+mod offset;
 mod out;
 mod plumbing;
 mod shape;
@@ -37,6 +38,7 @@ pub use diagram::*;
 pub use domain::*;
 pub use medial_axis::*;
 pub use navigation::*;
+pub use offset::*;
 pub use plumbing::{
     segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version, segvoronoi_version_number,
     SEGVORONOI_VERSION_MAJOR, SEGVORONOI_VERSION_MINOR, SEGVORONOI_VERSION_NUMBER, SEGVORONOI_VERSION_PATCH,

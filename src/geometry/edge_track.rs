@@ -69,7 +69,8 @@ impl EdgeTrack {
         let (origin, unit, from, to) = match (start, end) {
             (TrackEnd::At(p), TrackEnd::At(q)) => {
                 let length = p.distance(q);
-                let unit = if length > 0.0 { Point::new((q.x - p.x) / length, (q.y - p.y) / length) } else { Point::new(1.0, 0.0) };
+                let unit =
+                    if length > 0.0 { Point::new((q.x - p.x) / length, (q.y - p.y) / length) } else { Point::new(1.0, 0.0) };
                 (p, unit, 0.0, length)
             }
             (TrackEnd::At(p), TrackEnd::Towards(u)) => (p, u, 0.0, f64::INFINITY),

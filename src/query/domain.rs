@@ -142,11 +142,7 @@ impl Diagram {
     /// (an index into the same list). Empty without a domain.
     pub(crate) fn ring_nesting(&self) -> Vec<(Vec<SiteId>, usize, Option<usize>)> {
         let Some(domain) = &self.domain else { return Vec::new() };
-        domain
-            .rings
-            .iter()
-            .map(|r| (r.corners.iter().chain(&r.segments).copied().collect(), r.depth, r.parent))
-            .collect()
+        domain.rings.iter().map(|r| (r.corners.iter().chain(&r.segments).copied().collect(), r.depth, r.parent)).collect()
     }
 
     fn classify(&self, inputs: &[RingInput]) -> Domain {

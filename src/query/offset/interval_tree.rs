@@ -136,8 +136,7 @@ mod tests {
                     let mut got = Vec::new();
                     tree.stab(value, starts, &mut got);
                     got.sort_unstable();
-                    let mut want: Vec<u32> =
-                        intervals.iter().filter(|iv| starts(iv.0) && !starts(iv.1)).map(|iv| iv.2).collect();
+                    let mut want: Vec<u32> = intervals.iter().filter(|iv| starts(iv.0) && !starts(iv.1)).map(|iv| iv.2).collect();
                     want.sort_unstable();
                     assert_eq!(got, want, "round {round} value {value} closed {closed}");
                 }

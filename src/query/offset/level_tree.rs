@@ -146,7 +146,11 @@ mod tests {
                 })
                 .collect();
             for descending in [true, false] {
-                let tree = LevelTree::new(vec![if descending { f64::INFINITY } else { f64::NEG_INFINITY }; n], links.clone(), descending);
+                let tree = LevelTree::new(
+                    vec![if descending { f64::INFINITY } else { f64::NEG_INFINITY }; n],
+                    links.clone(),
+                    descending,
+                );
                 for r in 0..11 {
                     let r = r as f64;
                     let present = |l: f64| if descending { l >= r } else { l < r };

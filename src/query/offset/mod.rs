@@ -194,7 +194,8 @@ impl Diagram {
 
     /// Which way `distance` goes, or why it cannot.
     fn offset_side(&self, distance: f64) -> Result<Side, Error> {
-        let invalid = |why: &str| Err(Error::new(ErrorKind::InvalidArgument, format!("offset distance {distance}: {why}"), Vec::new()));
+        let invalid =
+            |why: &str| Err(Error::new(ErrorKind::InvalidArgument, format!("offset distance {distance}: {why}"), Vec::new()));
         if !distance.is_finite() {
             return invalid("not a finite number");
         }
@@ -223,7 +224,8 @@ impl Diagram {
             let near = from.distance(to) <= 1e-9 * r;
             if from == to && (!span.long || centre.is_none()) {
                 empty[k] = true;
-            } else if near && !span.long && centre.is_some_and(|c| approximation::sweep(c, from, to, true) > std::f64::consts::PI) {
+            } else if near && !span.long && centre.is_some_and(|c| approximation::sweep(c, from, to, true) > std::f64::consts::PI)
+            {
                 empty[k] = true;
                 traced.crossings[span.to as usize].at = from;
             }
@@ -247,7 +249,9 @@ impl Diagram {
                     faces.get_or_insert((self.above_leaf(span.rising_on, infinity), span.site.index() as u32));
                     let (from, to) = (traced.crossings[span.from as usize].at, traced.crossings[span.to as usize].at);
                     pieces.push(match self.point_site(span.site) {
-                        Some(centre) => OffsetPiece::Arc { centre, radius: r, from, to, counter_clockwise: true, site: span.site },
+                        Some(centre) => {
+                            OffsetPiece::Arc { centre, radius: r, from, to, counter_clockwise: true, site: span.site }
+                        }
                         None => OffsetPiece::Line { from, to, site: span.site },
                     });
                 }
@@ -262,7 +266,11 @@ impl Diagram {
         for &(_, site, leaf) in &index.circles[first_circle..] {
             let centre = self.point_site(site).expect("a point site");
             let at = Point::new(centre.x + r, centre.y);
-            loops.push((vec![OffsetPiece::Arc { centre, radius: r, from: at, to: at, counter_clockwise: true, site }], leaf, site.index() as u32));
+            loops.push((
+                vec![OffsetPiece::Arc { centre, radius: r, from: at, to: at, counter_clockwise: true, site }],
+                leaf,
+                site.index() as u32,
+            ));
         }
 
         let (parents, depths) = self.nest(index, r, &loops);
@@ -306,7 +314,8 @@ impl Diagram {
             Side::Grow => region((true, above(self.finite_vertices as u32))),
             Side::Shrink => region((false, below(self.sites.len() as u32))),
         };
-        let ends: Vec<[usize; 2]> = loops.iter().map(|(_, a, b)| [region((true, above(*a))), region((false, below(*b)))]).collect();
+        let ends: Vec<[usize; 2]> =
+            loops.iter().map(|(_, a, b)| [region((true, above(*a))), region((false, below(*b)))]).collect();
         let mut around: Vec<Vec<usize>> = vec![Vec::new(); region_of.len()];
         for (k, e) in ends.iter().enumerate() {
             around[e[0]].push(k);

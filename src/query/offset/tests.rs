@@ -229,6 +229,10 @@ fn polylines_are_within_tolerance_and_areas_agree() {
             .sum();
         // chords cut inside the arcs: at most tolerance × perimeter less
         let perimeter = 5.0 * 2.0 * 2.0 * (PI / 5.0).sin() + 2.0 * PI * 1.5;
-        assert!(shoelace <= o.area() + 1e-9 && o.area() - shoelace <= tolerance * perimeter, "{tolerance}: {shoelace} {}", o.area());
+        assert!(
+            shoelace <= o.area() + 1e-9 && o.area() - shoelace <= tolerance * perimeter,
+            "{tolerance}: {shoelace} {}",
+            o.area()
+        );
     }
 }

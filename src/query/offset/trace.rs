@@ -88,7 +88,14 @@ impl Diagram {
             for (k, (at, rising)) in placed.into_iter().enumerate() {
                 let id = crossings.len() as u32;
                 crossings.push(Crossing { at });
-                views.push(View { cell: cells[0], rank: index.rank[h.index()], order: k as u8, crossing: id, rising, half_edge: h });
+                views.push(View {
+                    cell: cells[0],
+                    rank: index.rank[h.index()],
+                    order: k as u8,
+                    crossing: id,
+                    rising,
+                    half_edge: h,
+                });
                 views.push(View {
                     cell: cells[1],
                     rank: index.rank[t.index()],
@@ -195,5 +202,4 @@ impl Diagram {
             _ => None,
         }
     }
-
 }
