@@ -47,13 +47,68 @@ pub(crate) struct EdgeTrack {
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Curve {
-    /// `origin + τ unit`, measured from the point `centre`.
-    FromPoint { origin: Point, unit: Point, centre: Point },
-    /// `origin + τ unit`, measured from the line through `on_line` with
-    /// unit normal `normal`.
-    FromLine { origin: Point, unit: Point, on_line: Point, normal: Point },
+    /// `origin + τ unit`; a finite piece also from its far end, `far − (to
+    /// − τ) unit`, so that points and roots near either end are computed
+    /// from that end (a vertex far away would otherwise cost the digits of
+    /// a near one).
+    Straight { origin: Point, unit: Point, far: Option<Point>, gauge: Gauge },
     /// The parabola at directrix parameter `sign × τ`.
     Parabolic { parabola: Parabola, sign: f64 },
+}
+
+/// What a straight edge measures its distance from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Gauge {
+    Point(Point),
+    /// The line through a point with this unit normal.
+    Line(Point, Point),
+}
+
+impl Gauge {
+    /// Where the distance is lowest along `origin + τ unit`.
+    fn lowest(self, origin: Point, unit: Point) -> f64 {
+        match self {
+            Gauge::Point(c) => -((origin.x - c.x) * unit.x + (origin.y - c.y) * unit.y),
+            Gauge::Line(a, n) => {
+                let (g0, g1) = line_gauge(origin, unit, a, n);
+                -g0 / g1
+            }
+        }
+    }
+
+    /// The parameters along `origin + τ unit` at distance `r`.
+    fn roots(self, origin: Point, unit: Point, r: f64) -> Option<(f64, f64)> {
+        match self {
+            Gauge::Point(c) => {
+                let (wx, wy) = (origin.x - c.x, origin.y - c.y);
+                let foot = -(wx * unit.x + wy * unit.y);
+                let height = (unit.x * wy - unit.y * wx).abs();
+                (r >= height).then(|| {
+                    let half = ((r - height) * (r + height)).sqrt();
+                    (foot - half, foot + half)
+                })
+            }
+            Gauge::Line(a, n) => {
+                let (g0, g1) = line_gauge(origin, unit, a, n);
+                let (t1, t2) = ((r - g0) / g1, (-r - g0) / g1);
+                (g1 != 0.0 && t1.is_finite() && t2.is_finite()).then(|| (t1.min(t2), t1.max(t2)))
+            }
+        }
+    }
+
+    fn distance(self, q: Point) -> f64 {
+        match self {
+            Gauge::Point(c) => q.distance(c),
+            Gauge::Line(a, n) => ((q.x - a.x) * n.x + (q.y - a.y) * n.y).abs(),
+        }
+    }
+
+    fn is_finite(self) -> bool {
+        match self {
+            Gauge::Point(c) => c.is_finite(),
+            Gauge::Line(a, n) => a.is_finite() && n.is_finite(),
+        }
+    }
 }
 
 impl EdgeTrack {
@@ -66,47 +121,79 @@ impl EdgeTrack {
             let sign = if s1 >= s0 { 1.0 } else { -1.0 };
             return finite(EdgeTrack { curve: Curve::Parabolic { parabola, sign }, from: sign * s0, to: sign * s1 });
         }
-        let (origin, unit, from, to) = match (start, end) {
+        let gauge = match nearest_point_site(sites) {
+            Some(centre) => Gauge::Point(centre),
+            None => {
+                let Site::Segment { a, b } = *sites[0] else { return None };
+                let length = a.distance(b);
+                Gauge::Line(a, Point::new(-(b.y - a.y) / length, (b.x - a.x) / length))
+            }
+        };
+        if let Some((origin, unit)) = line_of_sites(sites) {
+            return finite(EdgeTrack::along_line(origin, unit, start, end, gauge));
+        }
+        let (origin, unit, far, from, to) = match (start, end) {
             (TrackEnd::At(p), TrackEnd::At(q)) => {
                 let length = p.distance(q);
                 let unit =
                     if length > 0.0 { Point::new((q.x - p.x) / length, (q.y - p.y) / length) } else { Point::new(1.0, 0.0) };
-                (p, unit, 0.0, length)
+                (p, unit, Some(q), 0.0, length)
             }
-            (TrackEnd::At(p), TrackEnd::Towards(u)) => (p, u, 0.0, f64::INFINITY),
-            (TrackEnd::Towards(u), TrackEnd::At(q)) => (q, Point::new(-u.x, -u.y), f64::NEG_INFINITY, 0.0),
-            (TrackEnd::Towards(_), TrackEnd::Towards(u)) => (lowest_point(sites)?, u, f64::NEG_INFINITY, f64::INFINITY),
+            (TrackEnd::At(p), TrackEnd::Towards(u)) => (p, u, None, 0.0, f64::INFINITY),
+            (TrackEnd::Towards(u), TrackEnd::At(q)) => (q, Point::new(-u.x, -u.y), None, f64::NEG_INFINITY, 0.0),
+            (TrackEnd::Towards(_), TrackEnd::Towards(_)) => return None,
         };
-        let curve = match nearest_point_site(sites) {
-            Some(centre) => Curve::FromPoint { origin, unit, centre },
-            None => {
-                let Site::Segment { a, b } = *sites[0] else { return None };
-                let length = a.distance(b);
-                let normal = Point::new(-(b.y - a.y) / length, (b.x - a.x) / length);
-                Curve::FromLine { origin, unit, on_line: a, normal }
-            }
+        finite(EdgeTrack { curve: Curve::Straight { origin, unit, far, gauge }, from, to })
+    }
+
+    /// A straight edge on the line `origin + τ unit` known from its sites
+    /// (its lowest point there): the parameter runs along it in the edge's
+    /// direction, its ends the projections of the vertices.
+    fn along_line(origin: Point, unit: Point, start: TrackEnd, end: TrackEnd, gauge: Gauge) -> EdgeTrack {
+        let travel = match (start, end) {
+            (TrackEnd::At(p), TrackEnd::At(q)) => Point::new(q.x - p.x, q.y - p.y),
+            (_, TrackEnd::Towards(u)) => u,
+            (TrackEnd::Towards(u), _) => Point::new(-u.x, -u.y),
         };
-        finite(EdgeTrack { curve, from, to })
+        let unit = if travel.x * unit.x + travel.y * unit.y < 0.0 { Point::new(-unit.x, -unit.y) } else { unit };
+        let at = |p: Point| (p.x - origin.x) * unit.x + (p.y - origin.y) * unit.y;
+        let from = match start {
+            TrackEnd::At(p) => at(p),
+            TrackEnd::Towards(_) => f64::NEG_INFINITY,
+        };
+        let to = match end {
+            TrackEnd::At(q) => at(q).max(from),
+            TrackEnd::Towards(_) => f64::INFINITY,
+        };
+        EdgeTrack { curve: Curve::Straight { origin, unit, far: None, gauge }, from, to }
     }
 
     /// The point at parameter `τ`.
     pub(crate) fn point(&self, t: f64) -> Point {
         match self.curve {
-            Curve::FromPoint { origin, unit, .. } | Curve::FromLine { origin, unit, .. } => {
-                Point::new(origin.x + t * unit.x, origin.y + t * unit.y)
-            }
+            Curve::Straight { origin, unit, far, .. } => match far {
+                Some(q) if t > self.to / 2.0 => Point::new(q.x - (self.to - t) * unit.x, q.y - (self.to - t) * unit.y),
+                _ => Point::new(origin.x + t * unit.x, origin.y + t * unit.y),
+            },
             Curve::Parabolic { parabola, sign } => parabola.point(sign * t),
+        }
+    }
+
+    /// The point at parameter `τ` where the distance is `r` (a root): on a
+    /// parabola placed at height `r` over the directrix rather than at the
+    /// height its parameter gives, which a narrow parabola (a focus nearly
+    /// on the line) would magnify from the rounding of the parameter.
+    pub(crate) fn point_at_distance(&self, t: f64, r: f64) -> Point {
+        match self.curve {
+            Curve::Parabolic { parabola, sign } => parabola.point_at_height(sign * t, r),
+            Curve::Straight { .. } => self.point(t),
         }
     }
 
     /// The distance from the edge's sites at parameter `τ`.
     pub(crate) fn distance(&self, t: f64) -> f64 {
         match self.curve {
-            Curve::FromPoint { centre, .. } => self.point(t).distance(centre),
-            Curve::FromLine { on_line, normal, .. } => {
-                let q = self.point(t);
-                ((q.x - on_line.x) * normal.x + (q.y - on_line.y) * normal.y).abs()
-            }
+            Curve::Straight { gauge, .. } => gauge.distance(self.point(t)),
             Curve::Parabolic { parabola, sign } => {
                 let (s, p) = (sign * t, parabola.focal_distance());
                 (s * s + p * p) / (2.0 * p)
@@ -118,10 +205,12 @@ impl EdgeTrack {
     /// edge); NaN where it is constant.
     pub(crate) fn lowest(&self) -> f64 {
         match self.curve {
-            Curve::FromPoint { origin, unit, centre } => -((origin.x - centre.x) * unit.x + (origin.y - centre.y) * unit.y),
-            Curve::FromLine { origin, unit, on_line, normal } => {
-                let (g0, g1) = line_gauge(origin, unit, on_line, normal);
-                -g0 / g1
+            Curve::Straight { origin, unit, far, gauge } => {
+                let t = gauge.lowest(origin, unit);
+                match far {
+                    Some(q) if !(t <= self.to / 2.0) => self.to + gauge.lowest(q, unit),
+                    _ => t,
+                }
             }
             Curve::Parabolic { .. } => 0.0,
         }
@@ -139,19 +228,17 @@ impl EdgeTrack {
     /// constant).
     pub(crate) fn roots(&self, r: f64) -> Option<(f64, f64)> {
         match self.curve {
-            Curve::FromPoint { origin, unit, centre } => {
-                let (wx, wy) = (origin.x - centre.x, origin.y - centre.y);
-                let foot = -(wx * unit.x + wy * unit.y);
-                let height = (unit.x * wy - unit.y * wx).abs();
-                (r >= height).then(|| {
-                    let half = ((r - height) * (r + height)).sqrt();
-                    (foot - half, foot + half)
-                })
-            }
-            Curve::FromLine { origin, unit, on_line, normal } => {
-                let (g0, g1) = line_gauge(origin, unit, on_line, normal);
-                let (t1, t2) = ((r - g0) / g1, (-r - g0) / g1);
-                (g1 != 0.0 && t1.is_finite() && t2.is_finite()).then(|| (t1.min(t2), t1.max(t2)))
+            Curve::Straight { origin, unit, far, gauge } => {
+                let near = gauge.roots(origin, unit, r);
+                let Some(q) = far else { return near };
+                let from_far = gauge.roots(q, unit, r).map(|(lo, hi)| (self.to + lo, self.to + hi));
+                let half = self.to / 2.0;
+                match (near, from_far) {
+                    (Some((lo, hi)), Some((flo, fhi))) => {
+                        Some((if lo <= half { lo } else { flo }, if hi <= half { hi } else { fhi }))
+                    }
+                    (one, other) => one.or(other),
+                }
             }
             Curve::Parabolic { parabola, .. } => {
                 let p = parabola.focal_distance();
@@ -187,22 +274,41 @@ fn nearest_point_site(sites: [&Site; 2]) -> Option<Point> {
     sites.iter().find_map(|s| s.as_point())
 }
 
-/// The lowest point of a whole line edge (both ends at infinity, when all
-/// sites are collinear): the midpoint of two points, or the endpoint a
-/// separator passes through.
-fn lowest_point(sites: [&Site; 2]) -> Option<Point> {
+/// The line of a straight edge from its sites alone, through its lowest
+/// point: the perpendicular bisector of two points (through their
+/// midpoint), the perpendicular of a segment through a point on its line
+/// (its own endpoint), the bisector of two segments at their shared
+/// endpoint. Exact up to rounding wherever the vertices are, so the
+/// crossings near the lowest point do not inherit the rounding of
+/// vertices far away. `None` for two segments that share no endpoint.
+fn line_of_sites(sites: [&Site; 2]) -> Option<(Point, Point)> {
+    let unit = |x: f64, y: f64| {
+        let n = x.hypot(y);
+        (n > 0.0 && n.is_finite()).then(|| Point::new(x / n, y / n))
+    };
     match (*sites[0], *sites[1]) {
-        (Site::Point(p), Site::Point(q)) => Some(Point::new(p.x + (q.x - p.x) / 2.0, p.y + (q.y - p.y) / 2.0)),
-        (Site::Point(p), Site::Segment { .. }) | (Site::Segment { .. }, Site::Point(p)) => Some(p),
-        _ => None,
+        (Site::Point(p), Site::Point(q)) => {
+            Some((Point::new(p.x + (q.x - p.x) / 2.0, p.y + (q.y - p.y) / 2.0), unit(-(q.y - p.y), q.x - p.x)?))
+        }
+        (Site::Point(p), Site::Segment { a, b }) | (Site::Segment { a, b }, Site::Point(p)) => {
+            Some((p, unit(-(b.y - a.y), b.x - a.x)?))
+        }
+        (Site::Segment { a, b }, Site::Segment { a: c, b: e }) => {
+            let corner = [a, b].into_iter().find(|&x| x == c || x == e)?;
+            let away = |s: Point, t: Point| if s == corner { t } else { s };
+            let (u, v) = (away(a, b), away(c, e));
+            let (u, v) = (unit(u.x - corner.x, u.y - corner.y)?, unit(v.x - corner.x, v.y - corner.y)?);
+            // the bisector of the angle below 180°; straight on: the perpendicular
+            let line = unit(u.x + v.x, u.y + v.y).filter(|_| u.x * v.x + u.y * v.y > -1.0 + 1e-12).or(unit(-u.y, u.x))?;
+            Some((corner, line))
+        }
     }
 }
 
 fn finite(track: EdgeTrack) -> Option<EdgeTrack> {
     let ok = match track.curve {
-        Curve::FromPoint { origin, unit, centre } => origin.is_finite() && unit.is_finite() && centre.is_finite(),
-        Curve::FromLine { origin, unit, on_line, normal } => {
-            origin.is_finite() && unit.is_finite() && on_line.is_finite() && normal.is_finite()
+        Curve::Straight { origin, unit, far, gauge } => {
+            origin.is_finite() && unit.is_finite() && far.is_none_or(|q| q.is_finite()) && gauge.is_finite()
         }
         Curve::Parabolic { .. } => true,
     };

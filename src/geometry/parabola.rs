@@ -46,7 +46,10 @@ impl Parabola {
         let tangent = Point::new(dx / len, dy / len);
         let (fx, fy) = (focus.x - a.x, focus.y - a.y);
         let along = fx * tangent.x + fy * tangent.y;
-        let across = tangent.x * fy - tangent.y * fx; // left of a → b when positive
+        // left of a → b when positive; in double-double, because a focus
+        // nearly on the line (the kinks of flattened curves) would lose the
+        // digits of its small distance to the rounding of the differences
+        let across = cross_accurately(a, b, focus) / len;
         if across == 0.0 || !across.is_finite() {
             return None;
         }
@@ -87,6 +90,13 @@ impl Parabola {
         Point::new(self.origin.x + s * self.tangent.x + h * self.normal.x, self.origin.y + s * self.tangent.y + h * self.normal.y)
     }
 
+    /// The point at parameter `s` placed at height `h` over the directrix
+    /// (`h` is the height of `s` when both are right; see
+    /// `EdgeTrack::point_at_distance` for why it is given).
+    pub(crate) fn point_at_height(&self, s: f64, h: f64) -> Point {
+        Point::new(self.origin.x + s * self.tangent.x + h * self.normal.x, self.origin.y + s * self.tangent.y + h * self.normal.y)
+    }
+
     /// The quadratic Bézier control points `[start, control, end]` of the arc
     /// from parameter `s0` to `s1`: the curve is exactly that arc. The
     /// control point is where the tangents at the two ends meet.
@@ -117,6 +127,13 @@ impl Parabola {
         let pieces = pieces.min(max_points - 1);
         (0..=pieces).map(|k| self.point(s0 + (s1 - s0) * (k as f64 / pieces as f64))).collect()
     }
+}
+
+/// `(b − a) × (c − a)`, in double-double from the exact coordinates.
+fn cross_accurately(a: Point, b: Point, c: Point) -> f64 {
+    use super::double_double::DoubleDouble as Dd;
+    let d = |p: f64, q: f64| Dd::from_f64(p).sub(Dd::from_f64(q));
+    d(b.x, a.x).mul(d(c.y, a.y)).sub(d(b.y, a.y).mul(d(c.x, a.x))).to_f64()
 }
 
 /// For a point and a segment that does not end at it (in either order):

@@ -21,19 +21,37 @@ pub(super) enum Side {
 }
 
 impl Side {
-    /// Whether a clearance `c` counts as within the band of width `r`
-    /// along the sites. The band is open when growing and closed when
-    /// shrinking, so that the region the loops bound is always open: where
-    /// two parts of it touch at one point, the loops stay apart (see
-    /// `Diagram::offset`).
+    /// The clearance below which (growing), or at or below which
+    /// (shrinking), a point counts as within the band of width `r` along
+    /// the sites. The band is open when growing and closed when shrinking,
+    /// so that the region the loops bound is always open: where two parts
+    /// of it touch at one point, the loops stay apart (see
+    /// `Diagram::offset`). Clearances within `LEVEL_TOLERANCE × r` of `r`
+    /// count as equal to it: a part of the region thinner than that is
+    /// what rounding alone makes or unmakes (the clearances of a corridor
+    /// between parallel segments, exactly `r`, are stored a few ulps either
+    /// side), so it is left out, the same way for every edge.
     #[inline]
-    pub(super) fn in_band(self, c: f64, r: f64) -> bool {
+    pub(super) fn threshold(self, r: f64) -> f64 {
         match self {
-            Side::Grow => c < r,
-            Side::Shrink => c <= r,
+            Side::Grow => r * (1.0 - LEVEL_TOLERANCE),
+            Side::Shrink => r * (1.0 + LEVEL_TOLERANCE),
+        }
+    }
+
+    /// Whether a clearance `c` is within the band whose `threshold` is
+    /// `t`.
+    #[inline]
+    pub(super) fn in_band(self, c: f64, t: f64) -> bool {
+        match self {
+            Side::Grow => c < t,
+            Side::Shrink => c <= t,
         }
     }
 }
+
+/// See [`Side::threshold`].
+pub(super) const LEVEL_TOLERANCE: f64 = 1e-10;
 
 /// The shared part of the offsets on one side (see the module doc).
 pub(super) struct OffsetIndex {
@@ -42,8 +60,6 @@ pub(super) struct OffsetIndex {
     pub(super) edges: IntervalTree,
     /// Per half-edge, its place counter-clockwise around its cell.
     pub(super) rank: Vec<u32>,
-    /// Per site, how many half-edges its cell has.
-    pub(super) cell_size: Vec<u32>,
     /// Point sites whose cell can hold a whole circle: the lowest
     /// clearance on the cell's boundary, the site, and a leaf of `above`
     /// on that boundary; by that clearance.
@@ -81,14 +97,12 @@ impl OffsetIndex {
         below_links.extend(ring_links(diagram, side, outside));
 
         let mut rank = vec![0u32; 2 * edge_count];
-        let mut cell_size = vec![0u32; diagram.sites.len()];
         let mut circles = Vec::new();
         for s in (0..diagram.sites.len()).map(SiteId::from_index) {
             let mut lowest = f64::INFINITY;
             let mut first: Option<HalfEdge> = None;
             for (k, h) in diagram.cell_half_edges(s).enumerate() {
                 rank[h.index()] = k as u32;
-                cell_size[s.index()] += 1;
                 lowest = lowest.min(low[h.edge().index()]);
                 first.get_or_insert(h);
             }
@@ -105,7 +119,6 @@ impl OffsetIndex {
             side,
             edges: IntervalTree::new(intervals),
             rank,
-            cell_size,
             circles,
             above: LevelTree::new(vertex_levels, above_links, true),
             below: LevelTree::new(vec![f64::NEG_INFINITY; diagram.sites.len() + 1], below_links, false),

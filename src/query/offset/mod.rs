@@ -212,24 +212,52 @@ impl Diagram {
     fn offset_with(&self, index: &OffsetIndex, distance: f64) -> Offset {
         let r = distance.abs();
         let side = index.side;
+        let threshold = side.threshold(r);
         let mut traced = self.trace(index, r);
         let infinity = self.finite_vertices as u32;
 
-        // A span whose ends meet with no edge between them is nothing; a
-        // rounding that left its ends the wrong way round is nothing too.
+        // A span whose ends meet, with the cell boundary between them
+        // going nowhere, is nothing (a whole circle if it goes round); one
+        // that rounding left the wrong way round is nothing too.
+        let near = 1e-9 * r;
         let mut empty = vec![false; traced.spans.len()];
+        let mut whole = vec![false; traced.spans.len()];
+        let mut moved_to: Vec<u32> = (0..traced.crossings.len() as u32).collect();
         for (k, span) in traced.spans.iter().enumerate() {
             let (from, to) = (traced.crossings[span.from as usize].at, traced.crossings[span.to as usize].at);
+            if from.distance(to) > near {
+                continue;
+            }
             let centre = self.point_site(span.site);
-            let near = from.distance(to) <= 1e-9 * r;
-            if from == to && (!span.long || centre.is_none()) {
-                empty[k] = true;
-            } else if near && !span.long && centre.is_some_and(|c| approximation::sweep(c, from, to, true) > std::f64::consts::PI)
+            whole[k] = centre.is_some() && self.span_leaves(span, from, near);
+            let whole = whole[k];
+            if (from == to && !whole)
+                || (!whole && centre.is_some_and(|c| approximation::sweep(c, from, to, true) > std::f64::consts::PI))
             {
                 empty[k] = true;
-                traced.crossings[span.to as usize].at = from;
+                moved_to[span.to as usize] = span.from;
             }
         }
+        // the end of a dropped span moves to its start (through chains of
+        // them), so that the pieces on either side still meet
+        for c in 0..moved_to.len() {
+            let mut at = c as u32;
+            for _ in 0..moved_to.len() {
+                if moved_to[at as usize] == at {
+                    break;
+                }
+                at = moved_to[at as usize];
+            }
+            traced.crossings[c].at = traced.crossings[at as usize].at;
+        }
+        // what the moves closed up is nothing too
+        for (k, span) in traced.spans.iter().enumerate() {
+            if !whole[k] && traced.crossings[span.from as usize].at == traced.crossings[span.to as usize].at {
+                empty[k] = true;
+            }
+        }
+
+        split_at_touching_points(&mut traced);
 
         // Follow the spans into loops; each loop's two regions (a leaf of
         // each merge tree) come from one of its spans.
@@ -257,12 +285,18 @@ impl Diagram {
                 }
                 k = traced.next[k as usize];
             }
-            if let Some((above, below)) = faces {
+            // a loop within rounding of one point is the trace of a part
+            // with no interior (the region touching itself there)
+            let tiny = pieces.iter().all(|p| matches!(p, OffsetPiece::Line { .. }) || p.from() != p.to())
+                && pieces
+                    .iter()
+                    .all(|p| p.from().distance(pieces[0].from()) <= near && p.to().distance(pieces[0].from()) <= near);
+            if let (Some((above, below)), false) = (faces, tiny) {
                 loops.push((pieces, above, below));
             }
         }
         // Whole circles in cells the level never leaves.
-        let first_circle = index.circles.partition_point(|c| side.in_band(c.0, r));
+        let first_circle = index.circles.partition_point(|c| side.in_band(c.0, threshold));
         for &(_, site, leaf) in &index.circles[first_circle..] {
             let centre = self.point_site(site).expect("a point site");
             let at = Point::new(centre.x + r, centre.y);
@@ -303,8 +337,9 @@ impl Diagram {
     /// region is reached from the root.
     fn nest(&self, index: &OffsetIndex, r: f64, loops: &[(Vec<OffsetPiece>, u32, u32)]) -> (Vec<Option<usize>>, Vec<usize>) {
         let side = index.side;
-        let above = |leaf: u32| index.above.component(leaf as usize, |l| !side.in_band(l, r));
-        let below = |leaf: u32| index.below.component(leaf as usize, |l| side.in_band(l, r));
+        let threshold = side.threshold(r);
+        let above = |leaf: u32| index.above.component(leaf as usize, |l| !side.in_band(l, threshold));
+        let below = |leaf: u32| index.below.component(leaf as usize, |l| side.in_band(l, threshold));
         let mut region_of: HashMap<(bool, usize), usize> = HashMap::new();
         let mut region = |key: (bool, usize)| {
             let n = region_of.len();
@@ -344,6 +379,66 @@ impl Diagram {
             }
         }
         (parent, depth)
+    }
+}
+
+/// Where parts of the region touch at one point, a loop may pass that
+/// point twice (the crossings there were placed at the same point: a
+/// tangency, or a vertex at the distance). Of the two ways to join the four
+/// ends of the two passes without crossing, take the one that makes two
+/// loops: exchange what follows the two spans ending there. (The ends
+/// alternate in and out around the point, so the exchange never makes the
+/// loops cross.)
+fn split_at_touching_points(traced: &mut trace::Traced) {
+    let n = traced.spans.len();
+    let mut end_of = vec![u32::MAX; traced.crossings.len()];
+    for (k, span) in traced.spans.iter().enumerate() {
+        end_of[span.to as usize] = k as u32;
+    }
+    let key = |c: usize| {
+        let p = traced.crossings[c].at;
+        ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits())
+    };
+    let mut by_point: Vec<usize> = (0..traced.crossings.len()).collect();
+    by_point.sort_unstable_by_key(|&c| key(c));
+    let groups: Vec<Vec<u32>> = by_point
+        .chunk_by(|&a, &b| key(a) == key(b))
+        .filter(|g| g.len() > 1)
+        .map(|g| g.iter().map(|&c| end_of[c]).filter(|&s| s != u32::MAX).collect())
+        .collect();
+    if groups.is_empty() {
+        return;
+    }
+    // the loop of every span
+    let mut loop_of = vec![u32::MAX; n];
+    let mut loops = 0u32;
+    let label = |from: u32, loop_of: &mut [u32], next: &[u32], id: u32| {
+        let mut k = from;
+        for _ in 0..n {
+            loop_of[k as usize] = id;
+            k = next[k as usize];
+            if k as usize >= n || k == from {
+                break;
+            }
+        }
+    };
+    for s in 0..n {
+        if loop_of[s] == u32::MAX {
+            label(s as u32, &mut loop_of, &traced.next, loops);
+            loops += 1;
+        }
+    }
+    for group in groups {
+        for i in 0..group.len() {
+            for j in i + 1..group.len() {
+                let (a, b) = (group[i] as usize, group[j] as usize);
+                if loop_of[a] == loop_of[b] {
+                    traced.next.swap(a, b);
+                    label(a as u32, &mut loop_of, &traced.next, loops);
+                    loops += 1;
+                }
+            }
+        }
     }
 }
 

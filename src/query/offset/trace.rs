@@ -51,11 +51,12 @@ pub(super) struct Span {
     pub(super) from: u32,
     pub(super) to: u32,
     /// The half-edge of the rising crossing (its target lies beyond the
-    /// band).
+    /// band), and of the falling one.
     pub(super) rising_on: HalfEdge,
-    /// Whether the boundary between the two crossings passes a whole edge
-    /// (so equal end points mean a whole circle, not nothing).
-    pub(super) long: bool,
+    pub(super) falling_on: HalfEdge,
+    /// Whether the falling crossing comes before the rising one on the same
+    /// half-edge (the span goes all the way round the cell).
+    pub(super) wraps: bool,
 }
 
 /// The crossings and spans at one distance, and how the spans follow each
@@ -74,8 +75,9 @@ impl Diagram {
     /// side.
     pub(super) fn trace(&self, index: &OffsetIndex, r: f64) -> Traced {
         let side = index.side;
+        let threshold = side.threshold(r);
         let mut hits = Vec::new();
-        index.edges.stab(r, |c| side.in_band(c, r), &mut hits);
+        index.edges.stab(threshold, |c| side.in_band(c, threshold), &mut hits);
         hits.sort_unstable();
         let mut crossings = Vec::new();
         let mut views = Vec::new();
@@ -110,7 +112,6 @@ impl Diagram {
         let mut spans = Vec::new();
         let mut start_of = vec![NONE; crossings.len()];
         for group in views.chunk_by(|a, b| a.cell == b.cell) {
-            let size = index.cell_size[group[0].cell as usize];
             for (i, up) in group.iter().enumerate().filter(|(_, v)| v.rising) {
                 let down = group[(i + 1) % group.len()];
                 if down.rising {
@@ -118,15 +119,14 @@ impl Diagram {
                     debug_assert!(false, "crossings of cell {} do not alternate", up.cell);
                     continue;
                 }
-                let wraps = down.rank < up.rank || (down.rank == up.rank && down.order <= up.order);
-                let steps = if wraps { down.rank + size - up.rank } else { down.rank - up.rank };
                 start_of[up.crossing as usize] = spans.len() as u32;
                 spans.push(Span {
                     site: SiteId::from_index(up.cell as usize),
                     from: up.crossing,
                     to: down.crossing,
                     rising_on: up.half_edge,
-                    long: steps >= 2,
+                    falling_on: down.half_edge,
+                    wraps: down.rank == up.rank && down.order < up.order,
                 });
             }
         }
@@ -138,13 +138,15 @@ impl Diagram {
     /// `ends[0] → ends[1]`, each with whether the clearance rises there.
     fn edge_crossings(&self, e: EdgeId, side: Side, r: f64) -> Vec<(Point, bool)> {
         let [c0, c1] = self.end_clearances(e);
-        let (b0, b1) = (side.in_band(c0, r), side.in_band(c1, r));
+        let threshold = side.threshold(r);
+        let (b0, b1) = (side.in_band(c0, threshold), side.in_band(c1, threshold));
         let track = self.edge_track(e);
         let kinds: &[bool] = match (b0, b1) {
             (true, false) => &[true],
             (false, true) => &[false],
             (false, false) => {
-                let dips = track.and_then(|t| t.interior_minimum()).is_some_and(|m| side.in_band(m * self.scale.to_input, r));
+                let dips =
+                    track.and_then(|t| t.interior_minimum()).is_some_and(|m| side.in_band(m * self.scale.to_input, threshold));
                 if dips {
                     &[false, true]
                 } else {
@@ -173,17 +175,21 @@ impl Diagram {
         kinds
             .iter()
             .map(|&rising| {
-                let t = match roots {
-                    Some((lo, hi)) => track.clamp(if rising { hi } else { lo }),
-                    None => lowest,
-                };
-                let at = if t - track.from <= snap && vertex_at(0).is_some() {
-                    vertex_at(0).expect("checked")
-                } else if track.to - t <= snap && vertex_at(1).is_some() {
-                    vertex_at(1).expect("checked")
+                let root = roots.map(|(lo, hi)| if rising { hi } else { lo });
+                let t = track.clamp(root.unwrap_or(lowest));
+                // A root beyond the edge (by rounding: the vertex is at the
+                // level) is that end vertex exactly; so is a root whose
+                // point lies next to one. Otherwise the point at the level.
+                let end = if root.is_some_and(|t| t <= track.from) {
+                    vertex_at(0)
+                } else if root.is_some_and(|t| t >= track.to) {
+                    vertex_at(1)
                 } else {
-                    track.point(t).scaled(self.scale.to_input)
+                    None
                 };
+                let at = track.point_at_distance(t, level).scaled(self.scale.to_input);
+                let near = |v: Option<Point>| v.filter(|v| v.distance(at) <= snap * self.scale.to_input);
+                let at = end.or(near(vertex_at(0))).or(near(vertex_at(1))).unwrap_or(at);
                 (at, rising)
             })
             .collect()
@@ -193,6 +199,28 @@ impl Diagram {
     /// of the index's `above` tree.
     pub(super) fn above_leaf(&self, h: HalfEdge, infinity: u32) -> u32 {
         self.target_vertex(h).map_or(infinity, |v| v.index() as u32)
+    }
+
+    /// Whether the cell boundary between the span's two crossings goes
+    /// anywhere farther than `tolerance` from `at` (or to infinity): so that
+    /// crossings at one point mean a whole circle, not nothing.
+    pub(super) fn span_leaves(&self, span: &Span, at: Point, tolerance: f64) -> bool {
+        if span.rising_on == span.falling_on {
+            return span.wraps;
+        }
+        let mut h = span.rising_on;
+        for _ in 0..self.edges.len() {
+            match self.target_vertex(h) {
+                None => return true,
+                Some(v) if self.store.position[v.index()].distance(at) > tolerance => return true,
+                Some(_) => {}
+            }
+            match self.next_half_edge(h) {
+                Some(next) if next != span.falling_on => h = next,
+                _ => return false,
+            }
+        }
+        true
     }
 
     /// Whether a site is a point (offset pieces there are arcs).
