@@ -534,3 +534,144 @@ fn filters_leave_the_middle_line_of_a_rectangle() {
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("--medial-axis or --svg"), "{}", stderr(&o));
 }
+
+/// The shoelace area of each closed ring of each polygon of each
+/// `MULTIPOLYGON` line (`None` for `EMPTY`).
+fn multipolygon_ring_areas(text: &str) -> Vec<Option<Vec<Vec<f64>>>> {
+    text.lines()
+        .map(|line| {
+            if line == "MULTIPOLYGON EMPTY" {
+                return None;
+            }
+            let body = line.strip_prefix("MULTIPOLYGON (((").and_then(|b| b.strip_suffix(")))")).expect(line);
+            let polygons = body.split(")), ((").map(|polygon| {
+                polygon
+                    .split("), (")
+                    .map(|ring| {
+                        let points: Vec<[f64; 2]> = ring
+                            .split(", ")
+                            .map(|p| {
+                                let v: Vec<f64> = p.split(' ').map(|w| w.parse().expect(p)).collect();
+                                [v[0], v[1]]
+                            })
+                            .collect();
+                        assert_eq!(points.first(), points.last(), "closed: {ring}");
+                        points.windows(2).map(|w| w[0][0] * w[1][1] - w[1][0] * w[0][1]).sum::<f64>() / 2.0
+                    })
+                    .collect()
+            });
+            Some(polygons.collect())
+        })
+        .collect()
+}
+
+#[test]
+fn offsets_wkt_one_multipolygon_per_distance_in_order() {
+    let input = input_file("offsets-input.wkt", HOLED);
+    let out = temp_path("offsets.wkt");
+    let o =
+        run(&[input.to_str().unwrap(), "--offset", "1", "--offset=-0.5", "--offset", "-6", "--offsets", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stdout(&o).is_empty(), "{}", stdout(&o));
+    let text = std::fs::read_to_string(&out).unwrap();
+    let areas = multipolygon_ring_areas(&text);
+    assert_eq!(areas.len(), 3, "{text}");
+    // grown by 1: the square rounded, the 3 × 3 hole shrunk to 1 × 1;
+    // the default tolerance is 1e-4 of the diagonal
+    let tolerance = 1e-4 * 10.0f64.hypot(10.0);
+    let grown = areas[0].as_ref().expect(&text);
+    assert_eq!((grown.len(), grown[0].len()), (1, 2), "{text}");
+    let (exact, perimeter) = (100.0 + 40.0 + std::f64::consts::PI, 40.0 + 2.0 * std::f64::consts::PI);
+    assert!(grown[0][0] <= exact && exact - grown[0][0] <= tolerance * perimeter, "{grown:?}");
+    assert!((grown[0][1] + 1.0).abs() < 1e-9, "{grown:?}");
+    // shrunk by 0.5: a 9 × 9 square with a rounded hole
+    let shrunk = areas[1].as_ref().expect(&text);
+    assert_eq!((shrunk.len(), shrunk[0].len()), (1, 2), "{text}");
+    assert!((shrunk[0][0] - 81.0).abs() < 1e-9, "{shrunk:?}");
+    // shrunk beyond the largest inscribed circle: nothing
+    assert!(areas[2].is_none(), "{text}");
+    // a finer tolerance: closer to the exact area
+    let o = run(&[input.to_str().unwrap(), "--offset", "1", "--offsets", out.to_str().unwrap(), "--tolerance", "1e-7"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let finer = multipolygon_ring_areas(&std::fs::read_to_string(&out).unwrap());
+    std::fs::remove_file(&out).unwrap();
+    std::fs::remove_file(&input).unwrap();
+    let finer = finer[0].as_ref().unwrap()[0][0];
+    assert!(exact - finer <= 1e-7 * perimeter && finer > grown[0][0], "{finer} vs {}", grown[0][0]);
+}
+
+#[test]
+fn offsets_json_is_valid_and_exact() {
+    let out = temp_path("offsets.json");
+    let o = run_with_stdin(&["-", "--offset", "-0.5", "--offset", "1", "--offsets", out.to_str().unwrap()], HOLED);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&out).unwrap();
+    let offsets = holed_diagram().offsets(&[-0.5, 1.0]).unwrap();
+    assert!(text.starts_with("{\"offsets\": [\n  {\"distance\": -0.5, \"area\": "), "{text}");
+    assert!(text.contains(&format!("{{\"distance\": 1, \"area\": {}, \"loops\": [", offsets[1].area())), "{text}");
+    let loops: usize = offsets.iter().map(|o| o.loops.len()).sum();
+    let pieces: usize = offsets.iter().flat_map(|o| &o.loops).map(|l| l.pieces.len()).sum();
+    assert_eq!(text.matches("\"parent\": ").count(), loops, "{text}");
+    assert_eq!(text.matches("\"kind\": ").count(), pieces, "{text}");
+    // the outer ring's corners grown: quarter circles around them
+    assert!(text.contains("\"centre\": [10, 10], \"radius\": 1, \"counter_clockwise\": true}"), "{text}");
+    // the hole's corners, shrunk: arcs the other way round
+    assert!(text.contains("\"centre\": [6, 7], \"radius\": 0.5, \"counter_clockwise\": false}"), "{text}");
+    assert!(text.contains("{\"parent\": 0, \"hole\": true, "), "{text}");
+    assert!(!text.contains("NaN") && !text.contains("inf"), "{text}");
+    assert_eq!(text.matches('{').count(), text.matches('}').count());
+    assert_eq!(text.matches('[').count(), text.matches(']').count());
+    match Command::new("python3").args(["-m", "json.tool", out.to_str().unwrap()]).output() {
+        Ok(check) => assert!(check.status.success(), "python3 -m json.tool: {}", String::from_utf8_lossy(&check.stderr)),
+        Err(e) => eprintln!("python3 not run ({e}): JSON validity checked by bracket balance only"),
+    }
+    std::fs::remove_file(&out).unwrap();
+}
+
+#[test]
+fn offsets_in_the_picture() {
+    let svg_path = temp_path("offsets.svg");
+    let o = run_with_stdin(
+        &["-", "--svg", svg_path.to_str().unwrap(), "--offset", "2", "--offsets", temp_path("o.wkt").to_str().unwrap()],
+        "2\n0 0\n10 0\n",
+    );
+    std::fs::remove_file(temp_path("o.wkt")).unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(&svg_path).unwrap();
+    std::fs::remove_file(&svg_path).unwrap();
+    assert!(svg.contains(r#"<g id="offsets""#) && !svg.contains("NaN"), "{svg}");
+    // two whole circles, each two half arcs
+    assert_eq!(svg.matches(r#"<path data-distance="2" d="M "#).count(), 2, "{svg}");
+    assert_eq!(svg.matches(" A ").count(), 4, "{svg}");
+}
+
+#[test]
+fn offset_usage_and_distance_errors() {
+    let out = temp_path("never-offsets.wkt");
+    // one option without the other: usage errors
+    let o = run(&["--offset", "1"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--offset D needs --offsets"), "{}", stderr(&o));
+    let o = run(&["--offsets", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--offsets needs at least one --offset"), "{}", stderr(&o));
+    let o = run(&["--offset", "x", "--offsets", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    // distances the library rejects: its message, status 1, nothing written
+    let cases: [(&str, &str, &str); 4] = [
+        ("nan", HOLED, "not a finite number"),
+        ("0", HOLED, "zero"),
+        ("inf", HOLED, "not a finite number"),
+        ("-1", "MULTIPOINT ((0 0), (3 1))", "negative, and there is no domain to shrink"),
+    ];
+    let svg = temp_path("never-offsets.svg");
+    for (distance, input, message) in cases {
+        let o = run_with_stdin(
+            &["-", "--offset", "1", "--offset", distance, "--offsets", out.to_str().unwrap(), "--svg", svg.to_str().unwrap()],
+            input,
+        );
+        assert_eq!(o.status.code(), Some(1), "{distance}: {}", stderr(&o));
+        assert!(stderr(&o).contains("offset distance") && stderr(&o).contains(message), "{distance}: {}", stderr(&o));
+        assert!(!out.exists() && !svg.exists(), "{distance}: a failed run writes nothing");
+    }
+}

@@ -1,5 +1,5 @@
-//! Command-line arguments, parsed by hand: the program has six flags, which
-//! does not justify a dependency.
+//! Command-line arguments, parsed by hand: the program has a dozen flags,
+//! which does not justify a dependency.
 
 use std::path::PathBuf;
 
@@ -8,6 +8,7 @@ pub const USAGE: &str = "\
 Usage: segvoronoi [INPUT] [--svg OUT.svg] [--topology] [--voronoi-pairs] [--stats]
                   [--medial-axis OUT.wkt|OUT.json] [--tolerance T]
                   [--corner-angle DEG] [--prune-spurs K] [--max-inscribed-circle]
+                  [--offset D]... [--offsets OUT.wkt|OUT.json]
 
 Builds the Voronoi diagram of the points and line segments in INPUT.
 
@@ -35,7 +36,8 @@ Options:
                      domain (lightly shaded, even-odd), the medial axis
                      (thick, coloured by clearance from teal at 0 to
                      magenta at the largest clearance, linear in RGB) and
-                     the largest inscribed circle (dashed)
+                     the largest inscribed circle (dashed); with --offset
+                     also the offset loops (exact lines and circular arcs)
   --topology         print the canonical topology text on standard output
   --voronoi-pairs    add the VPAIRS and VVERTICES sections (implies --topology)
   --stats            print key=value statistics on standard error
@@ -70,25 +72,47 @@ Options:
   --max-inscribed-circle
                      print the largest disk inside the domain, `x y r`, on
                      standard output (exit status 1 without polygons)
+  --offset D         an offset distance, for --offsets (and drawn by
+                     --svg); repeat it for more, kept in the order given.
+                     With polygons D < 0 shrinks the domain (the points
+                     inside at least -D from its boundary) and D > 0 grows
+                     it (the points at most D from it), as GEOS's buffer;
+                     without polygons only D > 0 (the points at most D
+                     from any site). Points and linestrings count as sites
+                     either way. D = 0, NaN or infinite: exit status 1
+  --offsets OUT      write the offsets at each --offset D (both options or
+                     neither). OUT.wkt: one line per D, in order, the region
+                     as one MULTIPOLYGON (EMPTY when there is none), each
+                     polygon an outer ring and its holes sampled within the
+                     tolerance, rings closed. OUT.json: the exact loops, per
+                     D its area and loops, each with its parent (the loop it
+                     lies directly inside, an index, or null), whether it
+                     bounds a hole, its signed area (counter-clockwise
+                     positive) and its pieces: kind (line or arc), site id,
+                     from and to, for an arc its centre, radius and
+                     direction (counter_clockwise; a whole circle has
+                     from = to)
   -h, --help         print this help
   -V, --version      print the version
 
-Example: segvoronoi glyph.wkt --medial-axis axis.wkt --svg axis.svg
+Examples: segvoronoi glyph.wkt --medial-axis axis.wkt --svg axis.svg
+          segvoronoi glyph.wkt --offset -0.1 --offset 0.2 --offsets o.wkt
 
 Exit status: 0 on success, 1 when the library rejects the input (a
 non-finite coordinate, segments that cross or overlap, a point inside a
 segment, rings that cross: the message names the input indices, polygons
-and rings) or an output cannot be written, 2 for usage errors and
-unreadable or malformed input (for WKT the message names the line and
-column).
+and rings) or an offset distance, or an output cannot be written, 2 for
+usage errors and unreadable or malformed input (for WKT the message names
+the line and column).
 ";
 
-/// The format of `--medial-axis`, from its file name.
+/// The format of `--medial-axis` and `--offsets`, from the file name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum AxisFormat {
-    /// Sampled: one `MULTILINESTRING Z`.
+pub enum Format {
+    /// Sampled within the tolerance: one `MULTILINESTRING Z` for the
+    /// axis, one `MULTIPOLYGON` per distance for offsets.
     Wkt,
-    /// The exact chains.
+    /// The exact pieces.
     Json,
 }
 
@@ -112,7 +136,7 @@ pub struct Options {
     pub voronoi_pairs: bool,
     pub stats: bool,
     /// `--medial-axis`: where and in which format.
-    pub medial_axis: Option<(PathBuf, AxisFormat)>,
+    pub medial_axis: Option<(PathBuf, Format)>,
     /// `--tolerance`: positive and finite.
     pub tolerance: Option<f64>,
     /// `--corner-angle`, in degrees.
@@ -120,6 +144,11 @@ pub struct Options {
     /// `--prune-spurs`.
     pub prune_spurs: Option<f64>,
     pub max_inscribed_circle: bool,
+    /// `--offset`, in the order given; checked by the library, not here.
+    pub offset_distances: Vec<f64>,
+    /// `--offsets`: where and in which format. Given exactly when
+    /// `offset_distances` is not empty.
+    pub offsets: Option<(PathBuf, Format)>,
 }
 
 /// The outcome of parsing: run, or answer `--help` / `--version` and stop.
@@ -144,6 +173,8 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
         corner_angle: None,
         prune_spurs: None,
         max_inscribed_circle: false,
+        offset_distances: Vec::new(),
+        offsets: None,
     };
     let mut input: Option<String> = None;
     let mut args = args.into_iter();
@@ -161,7 +192,10 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
             Some((flag, value)) if flag.starts_with("--") => (flag, Some(value.to_string())),
             _ => (arg.as_str(), None),
         };
-        let takes_value = matches!(flag, "--svg" | "--medial-axis" | "--tolerance" | "--corner-angle" | "--prune-spurs");
+        let takes_value = matches!(
+            flag,
+            "--svg" | "--medial-axis" | "--tolerance" | "--corner-angle" | "--prune-spurs" | "--offset" | "--offsets"
+        );
         let value = match inline {
             _ if !takes_value => {
                 if inline.is_some() {
@@ -175,7 +209,7 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
         if takes_value && value.is_empty() {
             return Err(format!(
                 "{flag} needs {}",
-                if flag == "--svg" || flag == "--medial-axis" { "a file name" } else { "a number" }
+                if matches!(flag, "--svg" | "--medial-axis" | "--offsets") { "a file name" } else { "a number" }
             ));
         }
         match flag {
@@ -190,7 +224,13 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
             "--stats" => options.stats = true,
             "--max-inscribed-circle" => options.max_inscribed_circle = true,
             "--svg" => options.svg = Some(PathBuf::from(value)),
-            "--medial-axis" => options.medial_axis = Some((PathBuf::from(&value), axis_format(&value)?)),
+            "--medial-axis" => options.medial_axis = Some((PathBuf::from(&value), format(flag, &value)?)),
+            "--offsets" => options.offsets = Some((PathBuf::from(&value), format(flag, &value)?)),
+            // Any number, NaN and infinities too: the library says what
+            // distances it takes, and why not.
+            "--offset" => {
+                options.offset_distances.push(value.parse().map_err(|_| format!("--offset needs a number, not {value:?}"))?)
+            }
             "--tolerance" => options.tolerance = Some(number(flag, &value, |t| t > 0.0, "a positive number")?),
             "--corner-angle" => {
                 options.corner_angle = Some(number(flag, &value, |a| (0.0..=180.0).contains(&a), "an angle from 0 to 180")?)
@@ -203,6 +243,11 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
     {
         return Err("--corner-angle and --prune-spurs filter the medial axis of --medial-axis or --svg; give one of them".into());
     }
+    match (options.offset_distances.is_empty(), options.offsets.is_some()) {
+        (true, true) => return Err("--offsets needs at least one --offset D (the distances to write)".into()),
+        (false, false) => return Err("--offset D needs --offsets OUT.wkt or OUT.json (where to write the offsets)".into()),
+        _ => {}
+    }
     options.source = match input.as_deref() {
         None => Source::Demo,
         Some("-") => Source::Stdin,
@@ -211,13 +256,13 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
     Ok(Command::Run(options))
 }
 
-/// The format of `--medial-axis`, by the file name's extension.
-fn axis_format(path: &str) -> Result<AxisFormat, String> {
+/// The format of the output of `flag`, by the file name's extension.
+fn format(flag: &str, path: &str) -> Result<Format, String> {
     let extension = std::path::Path::new(path).extension().map(|e| e.to_ascii_lowercase());
     match extension.as_ref().and_then(|e| e.to_str()) {
-        Some("wkt") => Ok(AxisFormat::Wkt),
-        Some("json") => Ok(AxisFormat::Json),
-        _ => Err(format!("--medial-axis writes .wkt or .json, not {path:?}")),
+        Some("wkt") => Ok(Format::Wkt),
+        Some("json") => Ok(Format::Json),
+        _ => Err(format!("{flag} writes .wkt or .json, not {path:?}")),
     }
 }
 
@@ -289,12 +334,35 @@ mod tests {
     #[test]
     fn medial_axis_options() {
         let o = run(&["g.wkt", "--medial-axis", "a.WKT", "--tolerance=0.01", "--max-inscribed-circle"]).unwrap();
-        assert_eq!(o.medial_axis, Some((PathBuf::from("a.WKT"), AxisFormat::Wkt)));
+        assert_eq!(o.medial_axis, Some((PathBuf::from("a.WKT"), Format::Wkt)));
         assert_eq!(o.tolerance, Some(0.01));
         assert!(o.max_inscribed_circle);
         let o = run(&["--medial-axis=a.json", "--corner-angle", "45", "--prune-spurs=1.5"]).unwrap();
-        assert_eq!(o.medial_axis, Some((PathBuf::from("a.json"), AxisFormat::Json)));
+        assert_eq!(o.medial_axis, Some((PathBuf::from("a.json"), Format::Json)));
         assert_eq!((o.corner_angle, o.prune_spurs), (Some(45.0), Some(1.5)));
+    }
+
+    #[test]
+    fn offsets_keep_their_order() {
+        let o = run(&["g.wkt", "--offset", "-0.5", "--offsets", "o.WKT", "--offset=2", "--offset", "1e-3"]).unwrap();
+        assert_eq!(o.offset_distances, [-0.5, 2.0, 1e-3]);
+        assert_eq!(o.offsets, Some((PathBuf::from("o.WKT"), Format::Wkt)));
+        let o = run(&["--offsets=o.json", "--offset", "1", "--offset", "1"]).unwrap();
+        assert_eq!((o.offset_distances, o.offsets), (vec![1.0, 1.0], Some((PathBuf::from("o.json"), Format::Json))));
+        // the library judges the distances
+        let o = run(&["--offset", "nan", "--offset", "0", "--offset", "-inf", "--offsets", "o.wkt"]).unwrap();
+        assert!(o.offset_distances[0].is_nan() && o.offset_distances[1..] == [0.0, f64::NEG_INFINITY]);
+        assert!(run(&[]).unwrap().offset_distances.is_empty() && run(&[]).unwrap().offsets.is_none());
+    }
+
+    #[test]
+    fn offset_mistakes_are_reported() {
+        assert!(run(&["--offset", "1"]).unwrap_err().contains("--offset D needs --offsets"));
+        assert!(run(&["--offsets", "o.wkt"]).unwrap_err().contains("--offsets needs at least one --offset"));
+        assert!(run(&["--offsets", "o.svg", "--offset", "1"]).unwrap_err().contains("--offsets writes .wkt or .json"));
+        assert!(run(&["--offset", "one", "--offsets", "o.wkt"]).unwrap_err().contains("--offset needs a number, not \"one\""));
+        assert!(run(&["--offset"]).unwrap_err().contains("--offset needs a number"));
+        assert!(run(&["--offset", "1", "--offsets"]).unwrap_err().contains("--offsets needs a file name"));
     }
 
     #[test]

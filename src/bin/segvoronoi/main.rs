@@ -1,13 +1,14 @@
 //! `segvoronoi`: builds the Voronoi diagram of the points and line segments
 //! in a Boost.Polygon voronoi text file or of the polygons, linestrings and
 //! points of a WKT file (or of a built-in demo) and writes an SVG picture,
-//! the canonical topology text, statistics, the medial axis and the largest
-//! inscribed circle. `segvoronoi --help` for usage.
+//! the canonical topology text, statistics, the medial axis, the largest
+//! inscribed circle and offsets. `segvoronoi --help` for usage.
 
 mod args;
 mod demo;
 mod input;
 mod medial_output;
+mod offset_output;
 mod stats;
 mod svg;
 mod wkt;
@@ -17,7 +18,7 @@ use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use args::{AxisFormat, Command, Options};
+use args::{Command, Format, Options};
 use segvoronoi::{Builder, Diagram, MedialAxis, MedialAxisFilter, TopologyOptions};
 
 /// Why the program stops early: an exit status and a message for the user.
@@ -68,6 +69,12 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     if options.max_inscribed_circle && !diagram.has_domain() {
         return Err(failed(format!("{name}: --max-inscribed-circle needs a polygon in the input, and there is none")));
     }
+    // A distance the library does not take (zero, not finite, negative
+    // without a domain) is its error: status 1 with its message.
+    let offsets = match options.offset_distances.as_slice() {
+        [] => Vec::new(),
+        distances => diagram.offsets(distances).map_err(|e| failed(format!("{name}: {e}")))?,
+    };
 
     let tolerance = options.tolerance.unwrap_or_else(|| default_tolerance(&diagram));
     // The axis is computed once, for the file and the picture alike.
@@ -76,12 +83,19 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     if let Some(path) = &options.svg {
         let rings = input.rings();
         let domain = svg::Domain { rings: &rings, axis: &axis, tolerance };
-        write_file(path, &svg::render(&diagram, diagram.has_domain().then_some(&domain)))?;
+        write_file(path, &svg::render(&diagram, diagram.has_domain().then_some(&domain), &offsets))?;
     }
     if let Some((path, format)) = &options.medial_axis {
         let text = match format {
-            AxisFormat::Wkt => medial_output::wkt(&diagram, &axis, tolerance),
-            AxisFormat::Json => medial_output::json(&diagram, &axis),
+            Format::Wkt => medial_output::wkt(&diagram, &axis, tolerance),
+            Format::Json => medial_output::json(&diagram, &axis),
+        };
+        write_file(path, &text)?;
+    }
+    if let Some((path, format)) = &options.offsets {
+        let text = match format {
+            Format::Wkt => offset_output::wkt(&offsets, tolerance),
+            Format::Json => offset_output::json(&offsets),
         };
         write_file(path, &text)?;
     }
@@ -102,7 +116,7 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     if !wants_output(&options) {
         // Nothing asked for: say what was built and how to see it.
         print(&format!(
-            "{name}: {} sites, {} vertices, {} edges (see --svg, --topology, --stats, --medial-axis)\n",
+            "{name}: {} sites, {} vertices, {} edges (see --svg, --topology, --stats, --medial-axis, --offset)\n",
             diagram.site_count(),
             diagram.vertex_count(),
             diagram.edge_count()
@@ -135,7 +149,12 @@ fn default_tolerance(diagram: &segvoronoi::Diagram) -> f64 {
 }
 
 fn wants_output(options: &Options) -> bool {
-    options.svg.is_some() || options.topology || options.stats || options.medial_axis.is_some() || options.max_inscribed_circle
+    options.svg.is_some()
+        || options.topology
+        || options.stats
+        || options.medial_axis.is_some()
+        || options.max_inscribed_circle
+        || options.offsets.is_some()
 }
 
 fn write_file(path: &Path, text: &str) -> Result<(), Failure> {

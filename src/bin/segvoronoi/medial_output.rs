@@ -88,7 +88,7 @@ pub fn json(diagram: &Diagram, axis: &MedialAxis) -> String {
 }
 
 /// A JSON number, `null` when not finite (JSON has no infinity).
-fn number(v: f64) -> String {
+pub fn number(v: f64) -> String {
     if v.is_finite() {
         v.to_string()
     } else {
@@ -96,7 +96,8 @@ fn number(v: f64) -> String {
     }
 }
 
-fn point(p: Point) -> String {
+/// A JSON point `[x, y]` (see [`number`]).
+pub fn point(p: Point) -> String {
     format!("[{}, {}]", number(p.x), number(p.y))
 }
 

@@ -8,7 +8,11 @@
 //! filled even-odd, as the library's domain), and above them the medial
 //! axis, thick, each sampled stretch coloured by its clearance (a linear
 //! ramp in RGB from teal at clearance 0 to magenta at the largest), and the
-//! largest inscribed circle, dashed.
+//! largest inscribed circle, dashed. Offsets (`--offset`), above those, as
+//! one path per loop, exact: `L` for line pieces, `A` for arcs. With a
+//! positive distance the picture grows by it on every side, so that the
+//! grown loops (whose bounding box is the sites' grown by the distance)
+//! are in it.
 //!
 //! All geometry is done in "normalised" coordinates, the input multiplied by
 //! an exact power of two that brings the largest magnitude near 1, so that
@@ -16,9 +20,10 @@
 //! the way to pixels. Anything that still is not finite is left out of the
 //! picture rather than written as `NaN`.
 
+use std::f64::consts::{PI, TAU};
 use std::fmt::Write;
 
-use segvoronoi::{Diagram, Edge, EdgeEnd, MedialAxis, Point, Site};
+use segvoronoi::{Diagram, Edge, EdgeEnd, MedialAxis, Offset, OffsetLoop, OffsetPiece, Point, Site};
 
 use crate::medial_output;
 
@@ -43,6 +48,9 @@ const RAMP: [[f64; 3]; 2] = [[0.0, 158.0, 158.0], [200.0, 0.0, 125.0]];
 /// Stroke width of the medial axis, in pixels.
 const AXIS_WIDTH: f64 = 3.5;
 const CIRCLE_COLOUR: &str = "#444444";
+const OFFSET_COLOUR: &str = "#2f9e44";
+/// Stroke width of the offset loops, in pixels.
+const OFFSET_WIDTH: f64 = 1.8;
 
 /// What the picture adds when the input has polygons.
 pub struct Domain<'a> {
@@ -212,8 +220,9 @@ fn site_middle(site: Site) -> Point {
     }
 }
 
-/// The SVG document for a diagram, with its domain when there is one.
-pub fn render(diagram: &Diagram, domain: Option<&Domain>) -> String {
+/// The SVG document for a diagram, with its domain when there is one and
+/// the offset loops of `offsets`.
+pub fn render(diagram: &Diagram, domain: Option<&Domain>, offsets: &[Offset]) -> String {
     // The picture frames every point site; segment endpoints are point sites.
     let points: Vec<Point> = diagram.site_ids().filter_map(|s| diagram.site(s)?.as_point()).collect();
     let segments: Vec<(Point, Point)> = diagram
@@ -223,7 +232,7 @@ pub fn render(diagram: &Diagram, domain: Option<&Domain>) -> String {
             _ => None,
         })
         .collect();
-    let frame = Frame::new(&points);
+    let frame = Frame::new(&grown_box(&points, offsets));
     let (width, height) = (frame.width(), frame.height());
     let mut out = String::new();
     let _ = writeln!(
@@ -264,6 +273,7 @@ pub fn render(diagram: &Diagram, domain: Option<&Domain>) -> String {
     if let Some(domain) = domain {
         write_axis(&mut out, &frame, diagram, domain);
     }
+    write_offsets(&mut out, &frame, offsets);
 
     let _ = writeln!(out, r#"<g id="vertices" fill="{VERTEX_COLOUR}">"#);
     for v in diagram.vertices() {
@@ -339,6 +349,98 @@ fn write_axis(out: &mut String, frame: &Frame, diagram: &Diagram, domain: &Domai
             );
         }
     }
+}
+
+/// The points to frame: the sites, and with a positive offset distance the
+/// corners of their bounding box grown by the largest (left out if they
+/// overflow).
+fn grown_box(points: &[Point], offsets: &[Offset]) -> Vec<Point> {
+    let mut framed = points.to_vec();
+    let grow = offsets.iter().map(|o| o.distance).filter(|&d| d > 0.0).fold(0.0f64, f64::max);
+    if let (Some(&first), true) = (points.first(), grow > 0.0) {
+        let (mut low, mut high) = (first, first);
+        for p in points {
+            (low.x, low.y, high.x, high.y) = (low.x.min(p.x), low.y.min(p.y), high.x.max(p.x), high.y.max(p.y));
+        }
+        let corners = [Point::new(low.x - grow, low.y - grow), Point::new(high.x + grow, high.y + grow)];
+        if corners.iter().all(|c| c.x.is_finite() && c.y.is_finite()) {
+            framed.extend(corners);
+        }
+    }
+    framed
+}
+
+/// The offset loops, a path each, tagged with their distance.
+fn write_offsets(out: &mut String, frame: &Frame, offsets: &[Offset]) {
+    if offsets.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        out,
+        r#"<g id="offsets" stroke="{OFFSET_COLOUR}" stroke-width="{OFFSET_WIDTH}" stroke-linejoin="round" fill="none">"#
+    );
+    for offset in offsets {
+        for l in &offset.loops {
+            if let Some(d) = loop_path(frame, l) {
+                let _ = writeln!(out, r#"<path data-distance="{}" d="{d}"/>"#, offset.distance);
+            }
+        }
+    }
+    let _ = writeln!(out, "</g>");
+}
+
+/// The angle an arc turns from `from` to `to` around `centre`, the given
+/// way round, in `(0, 2π]` (equal ends: a whole circle), as the library
+/// measures it.
+fn sweep(centre: Point, from: Point, to: Point, counter_clockwise: bool) -> f64 {
+    let angle = |p: Point| (p.y - centre.y).atan2(p.x - centre.x);
+    let turn = if counter_clockwise { angle(to) - angle(from) } else { angle(from) - angle(to) }.rem_euclid(TAU);
+    if turn == 0.0 || from == to {
+        TAU
+    } else {
+        turn
+    }
+}
+
+/// A loop as SVG path data: `M`, then `L` to the end of each line piece and
+/// `A` along each arc, then `Z`; `None` when a point is not finite.
+///
+/// The picture's y axis points down, so an arc counter-clockwise in the
+/// input is clockwise on the screen: sweep flag 0 (SVG's "negative
+/// angle" direction). The large-arc flag is set for an arc over more than
+/// half a turn. An arc whose ends fall on the same pixel coordinates
+/// (a whole circle, or nearly) would be dropped by SVG, which draws
+/// nothing between equal ends: over more than half a turn it is drawn as
+/// two half circles through the point opposite its start, and below that
+/// it is too small to see and left out.
+fn loop_path(frame: &Frame, l: &OffsetLoop) -> Option<String> {
+    let pixel = |p: Point| frame.pixel(frame.unit(p)).map(|(x, y)| format!("{x:.2} {y:.2}"));
+    let mut d = format!("M {}", pixel(l.pieces.first()?.from())?);
+    for piece in &l.pieces {
+        match *piece {
+            OffsetPiece::Arc { centre, radius, from, to, counter_clockwise, .. } => {
+                let r = radius * frame.to_unit * frame.px;
+                if !r.is_finite() {
+                    return None;
+                }
+                let turn = sweep(centre, from, to, counter_clockwise);
+                let (start, end) = (pixel(from)?, pixel(to)?);
+                let flag = u8::from(!counter_clockwise);
+                if start != end {
+                    let _ = write!(d, " A {r:.2} {r:.2} 0 {} {flag} {end}", u8::from(turn > PI));
+                } else if turn > PI {
+                    let opposite = pixel(Point::new(2.0 * centre.x - from.x, 2.0 * centre.y - from.y))?;
+                    let _ = write!(d, " A {r:.2} {r:.2} 0 0 {flag} {opposite} A {r:.2} {r:.2} 0 0 {flag} {end}");
+                }
+            }
+            // a line, or a piece of a kind not drawn yet: straight to its end
+            _ => {
+                let _ = write!(d, " L {}", pixel(piece.to())?);
+            }
+        }
+    }
+    d.push_str(" Z");
+    Some(d)
 }
 
 /// The colour at `t` in `[0, 1]` of the clearance ramp (`RAMP`).
@@ -432,7 +534,7 @@ mod tests {
         // vertical rays down from (0,2) and (4,2). A direction made up from
         // the sites' middles would tilt them.
         let d = with_segments(&[[2.0, 2.0]], &[[[0.0, 0.0], [4.0, 0.0]]]);
-        let svg = render(&d, None);
+        let svg = render(&d, None, &[]);
         check_numbers(&svg);
         let height: f64 = svg.split('"').nth(5).unwrap().parse().unwrap();
         let vertical: Vec<[f64; 4]> = lines(&svg).into_iter().filter(|l| (l[0] - l[2]).abs() < 1e-9).collect();
@@ -449,7 +551,7 @@ mod tests {
     #[test]
     fn parabolic_arcs_are_bezier_paths_from_vertex_to_vertex() {
         let d = with_segments(&[[2.0, 2.0], [6.0, 3.0]], &[[[0.0, 0.0], [4.0, 0.0]], [[1.0, 4.0], [3.0, 5.5]]]);
-        let svg = render(&d, None);
+        let svg = render(&d, None, &[]);
         check_numbers(&svg);
         let arcs: Vec<[Point; 3]> = d.edges().filter_map(|e| d.edge_bezier(e.id)).collect();
         assert!(arcs.len() >= 2);
@@ -471,7 +573,7 @@ mod tests {
 
     #[test]
     fn rays_reach_the_border_and_segments_stay_inside() {
-        let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0]]), None);
+        let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0]]), None, &[]);
         check_numbers(&svg);
         let (w, h) = (SIZE_PX, SIZE_PX);
         let on_border = |x: f64, y: f64| x.abs() < 0.01 || y.abs() < 0.01 || (x - w).abs() < 0.01 || (y - h).abs() < 0.01;
@@ -503,7 +605,7 @@ mod tests {
         ];
         for points in cases {
             let d = diagram(points);
-            let svg = render(&d, None);
+            let svg = render(&d, None, &[]);
             assert!(svg.starts_with("<svg"), "{svg}");
             check_numbers(&svg);
             assert_eq!(svg.matches("<circle").count(), d.site_count() + d.vertex_count(), "{points:?}: {svg}");
@@ -519,7 +621,7 @@ mod tests {
         b.add_polygon(&rings).unwrap();
         let d = b.build().unwrap();
         let axis = d.medial_axis();
-        let svg = render(&d, Some(&Domain { rings: &rings, axis: &axis, tolerance: 1e-3 }));
+        let svg = render(&d, Some(&Domain { rings: &rings, axis: &axis, tolerance: 1e-3 }), &[]);
         check_numbers(&svg);
         let path = svg.lines().find(|l| l.starts_with(r#"<path id="domain""#)).expect(&svg);
         assert!(path.contains(r#"fill-rule="evenodd""#) && path.matches('M').count() == 2 && path.matches('Z').count() == 2);
@@ -533,10 +635,139 @@ mod tests {
         assert_eq!((ramp(0.0), ramp(1.0), ramp(f64::NAN)), ("#009e9e".into(), "#c8007d".into(), "#c8007d".into()));
     }
 
+    /// The commands of each path of the offsets group: `(letter, numbers)`.
+    fn offset_paths(svg: &str) -> Vec<Vec<(char, Vec<f64>)>> {
+        group(svg, "offsets")
+            .lines()
+            .filter_map(|l| l.split(r#" d=""#).nth(1))
+            .map(|d| {
+                let mut commands: Vec<(char, Vec<f64>)> = Vec::new();
+                for word in d.trim_end_matches(r#""/>"#).split(' ') {
+                    match word.parse::<f64>() {
+                        Ok(v) => commands.last_mut().expect(d).1.push(v),
+                        Err(_) => commands.push((word.chars().next().unwrap(), Vec::new())),
+                    }
+                }
+                commands
+            })
+            .collect()
+    }
+
+    /// The centre and the turn (signed, y down) of an SVG arc of radius `r`
+    /// from `p` to `q` with these flags (the SVG spec's conversion, F.6.5,
+    /// for a circle).
+    fn svg_arc(p: [f64; 2], q: [f64; 2], r: f64, large: bool, sweep: bool) -> ([f64; 2], f64) {
+        let h = [(p[0] - q[0]) / 2.0, (p[1] - q[1]) / 2.0];
+        let h2 = h[0] * h[0] + h[1] * h[1];
+        let k = ((r * r - h2).max(0.0) / h2).sqrt() * if large != sweep { 1.0 } else { -1.0 };
+        let c = [k * h[1] + (p[0] + q[0]) / 2.0, -k * h[0] + (p[1] + q[1]) / 2.0];
+        let angle = |v: [f64; 2]| (v[1] - c[1]).atan2(v[0] - c[0]);
+        let turn = (angle(q) - angle(p)).rem_euclid(TAU);
+        (c, if sweep { turn } else { turn - TAU })
+    }
+
+    /// Checks every arc of the drawn loops against the loops: same centre,
+    /// same turn (counter-clockwise in the input is negative on screen).
+    fn check_arcs(frame: &Frame, svg: &str, loops: &[&OffsetLoop]) -> usize {
+        let paths = offset_paths(svg);
+        assert_eq!(paths.len(), loops.len(), "{svg}");
+        let mut arcs = 0;
+        for (commands, l) in paths.iter().zip(loops) {
+            assert_eq!((commands[0].0, commands.last().unwrap().0), ('M', 'Z'), "{commands:?}");
+            let pixel = |p: Point| frame.pixel(frame.unit(p)).unwrap();
+            let mut at = [commands[0].1[0], commands[0].1[1]];
+            let mut drawn = commands[1..commands.len() - 1].iter();
+            for piece in &l.pieces {
+                match *piece {
+                    OffsetPiece::Arc { centre, radius, from, to, counter_clockwise, .. } => {
+                        let turn = sweep(centre, from, to, counter_clockwise);
+                        let (mut total, c) = (0.0, pixel(centre));
+                        for _ in 0..if turn == TAU { 2 } else { 1 } {
+                            let (letter, v) = drawn.next().unwrap();
+                            assert_eq!((*letter, v.len()), ('A', 7), "{commands:?}");
+                            assert!((v[0] - radius * frame.to_unit * frame.px).abs() < 0.006 && v[0] == v[1] && v[2] == 0.0);
+                            let (centre_px, t) = svg_arc(at, [v[5], v[6]], v[0], v[3] == 1.0, v[4] == 1.0);
+                            assert!(
+                                (centre_px[0] - c.0).abs() < 0.05 && (centre_px[1] - c.1).abs() < 0.05,
+                                "{centre_px:?} vs {c:?}"
+                            );
+                            total += t;
+                            at = [v[5], v[6]];
+                        }
+                        let expected = if counter_clockwise { -turn } else { turn };
+                        assert!((total - expected).abs() < 1e-2, "turns {total} on screen, {expected} expected");
+                        arcs += 1;
+                    }
+                    _ => {
+                        let (letter, v) = drawn.next().unwrap();
+                        assert_eq!(*letter, 'L');
+                        at = [v[0], v[1]];
+                    }
+                }
+                let end = pixel(piece.to());
+                assert!((at[0] - end.0).abs() <= 0.005 && (at[1] - end.1).abs() <= 0.005, "{at:?} vs {end:?}");
+            }
+            assert!(drawn.next().is_none(), "{commands:?}");
+        }
+        arcs
+    }
+
+    #[test]
+    fn offsets_are_lines_and_arcs_with_their_flags() {
+        // A square with a square hole and a point obstacle: grown, the outer
+        // ring's corners are quarter arcs; shrunk, the hole's corners are
+        // quarter arcs turning the other way; and the point's circle.
+        let rings =
+            vec![vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]], vec![[2.0, 2.0], [5.0, 2.0], [5.0, 5.0], [2.0, 5.0]]];
+        let mut b = Builder::new();
+        b.add_polygon(&rings).unwrap();
+        b.add_point([7.5, 7.5]).unwrap();
+        let d = b.build().unwrap();
+        let offsets = d.offsets(&[1.0, -0.5, -1.0]).unwrap();
+        let axis = d.medial_axis();
+        let svg = render(&d, Some(&Domain { rings: &rings, axis: &axis, tolerance: 1e-3 }), &offsets);
+        check_numbers(&svg);
+        let frame = Frame::new(&grown_box(&d.site_ids().filter_map(|s| d.site(s)?.as_point()).collect::<Vec<_>>(), &offsets));
+        let loops: Vec<&OffsetLoop> = offsets.iter().flat_map(|o| &o.loops).collect();
+        assert_eq!(
+            check_arcs(&frame, &svg, &loops),
+            loops.iter().flat_map(|l| &l.pieces).filter(|p| matches!(p, OffsetPiece::Arc { .. })).count()
+        );
+        // both directions of arcs, and a whole circle (two half arcs), occur
+        let flags: Vec<&str> = svg.split(" A ").skip(1).map(|a| a.split(' ').nth(4).unwrap()).collect();
+        assert!(flags.contains(&"0") && flags.contains(&"1"), "{flags:?}");
+        // grown: the outer ring and the smaller hole (the point is inside)
+        assert_eq!(group(&svg, "offsets").matches(r#"data-distance="1""#).count(), 2, "{svg}");
+        // the grown loop is inside the picture: the box grows by 1
+        let (w, h) = (frame.width(), frame.height());
+        for commands in offset_paths(&svg) {
+            for (_, v) in commands {
+                for xy in v.chunks(2).filter(|c| c.len() == 2) {
+                    assert!((0.0..=w).contains(&xy[0]) && (0.0..=h).contains(&xy[1]), "{xy:?} outside {w} × {h}");
+                }
+            }
+        }
+        assert!(!render(&d, None, &[]).contains("offsets"));
+    }
+
+    #[test]
+    fn a_whole_circle_is_two_half_arcs() {
+        let d = diagram(&[[0.0, 0.0], [10.0, 0.0]]);
+        let offsets = d.offsets(&[1.0]).unwrap();
+        assert_eq!(offsets[0].loops.len(), 2);
+        let svg = render(&d, None, &offsets);
+        let frame = Frame::new(&grown_box(&[Point::new(0.0, 0.0), Point::new(10.0, 0.0)], &offsets));
+        let loops: Vec<&OffsetLoop> = offsets[0].loops.iter().collect();
+        assert_eq!(check_arcs(&frame, &svg, &loops), 2);
+        for path in offset_paths(&svg) {
+            assert_eq!(path.iter().map(|c| c.0).collect::<String>(), "MAAZ", "{svg}");
+        }
+    }
+
     #[test]
     fn collinear_bisectors_cross_the_whole_picture() {
         // Sites on the x axis: bisectors are vertical lines, top to bottom.
-        let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [6.0, 0.0]]), None);
+        let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [6.0, 0.0]]), None, &[]);
         let ls = lines(&svg);
         assert_eq!(ls.len(), 2);
         let height: f64 = svg.split('"').nth(5).unwrap().parse().unwrap();
