@@ -236,3 +236,37 @@ fn polylines_are_within_tolerance_and_areas_agree() {
         );
     }
 }
+
+/// No loop passes a point twice (the touching point of two parts).
+fn check_no_point_twice(o: &crate::Offset) {
+    for (k, l) in o.loops.iter().enumerate() {
+        let mut starts: Vec<(u64, u64)> = l.pieces.iter().map(|p| (p.from().x.to_bits(), p.from().y.to_bits())).collect();
+        starts.sort_unstable();
+        starts.dedup();
+        assert_eq!(starts.len(), l.pieces.len(), "loop {k} passes a point twice: {:?}", l.pieces);
+    }
+}
+
+#[test]
+fn holes_touching_at_a_point_are_two_loops() {
+    // two obstacles 2 apart: shrunk by 1 their holes touch at (5, 5)
+    let mut b = Builder::new();
+    b.add_polygon(&[vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]]]).unwrap();
+    b.add_points([[4.0, 5.0], [6.0, 5.0]]).unwrap();
+    let d = b.build().unwrap();
+    let o = d.offset(-1.0).unwrap();
+    check_closed(&o);
+    check_no_point_twice(&o);
+    assert_eq!(o.loops.len(), 3);
+    assert_eq!(o.loops.iter().filter(|l| l.hole).count(), 2);
+    assert!((o.area() - (64.0 - 2.0 * PI)).abs() < 1e-9);
+    // a hole's corner and a point 1 apart, shrunk by 0.5
+    let mut b = Builder::new();
+    b.add_polygon(&[vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]], vec![[3.0, 2.0], [5.0, 2.0], [5.0, 4.0], [3.0, 4.0]]]).unwrap();
+    b.add_point([6.0, 2.0]).unwrap();
+    let d = b.build().unwrap();
+    let o = d.offset(-0.5).unwrap();
+    check_closed(&o);
+    check_no_point_twice(&o);
+    assert_eq!(o.loops.iter().filter(|l| l.hole).count(), 2);
+}
