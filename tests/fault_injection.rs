@@ -377,3 +377,50 @@ fn medial_axis_of_polygons_with_lying_arithmetic() {
     }
     assert!(built > 0, "no build completed: the test proves nothing");
 }
+
+/// Offsets of diagrams built with lying arithmetic (vertex positions and
+/// clearances then lie too): every loop still closes, every piece names a
+/// site, the nesting is a forest with holes alternating, and nothing
+/// panics, at distances across the whole range.
+#[test]
+fn offsets_with_lying_arithmetic() {
+    let ring = |n: usize, r: f64, phase: f64| -> Vec<[f64; 2]> {
+        (0..n)
+            .map(|k| {
+                let t = phase + std::f64::consts::TAU * k as f64 / n as f64;
+                [r * t.cos(), r * t.sin()]
+            })
+            .collect()
+    };
+    let mut built = 0;
+    for (mode, seed) in [(FaultMode::Noise(1e-3), 4), (FaultMode::Random, 5), (FaultMode::Noise(1e-9), 6)] {
+        let mut b = Builder::new();
+        b.add_polygon(&[ring(40, 10.0, 0.0), ring(9, 3.0, 0.1)]).unwrap();
+        b.add_points([[6.0, 0.5], [-6.0, 0.2]]).unwrap();
+        let mut plain = Builder::new();
+        plain.add_points(lattice(6)).unwrap();
+        plain.add_segments([[[0.25, 0.6], [3.6, 1.3]], [[1.2, 3.3], [4.3, 3.6]]]).unwrap();
+        for builder in [&b, &plain] {
+            let Ok(d) = try_build_with(mode, seed, builder) else { continue };
+            built += 1;
+            let distances: Vec<f64> = [0.01, 0.3, 1.0, 2.5, 7.0, 40.0]
+                .into_iter()
+                .flat_map(|r| if d.has_domain() { vec![r, -r] } else { vec![r] })
+                .collect();
+            for o in d.offsets(&distances).unwrap() {
+                for (k, l) in o.loops.iter().enumerate() {
+                    for (i, p) in l.pieces.iter().enumerate() {
+                        assert_eq!(p.to(), l.pieces[(i + 1) % l.pieces.len()].from(), "{mode:?} {}: loop {k} open", o.distance);
+                        assert!(d.site(p.site()).is_some());
+                    }
+                    if let Some(p) = l.parent {
+                        assert!(p < k && o.loops[p].hole != l.hole, "{mode:?} {}: nesting", o.distance);
+                    }
+                    let _ = l.polyline(1e-3);
+                }
+                let _ = o.area();
+            }
+        }
+    }
+    assert!(built > 0, "no build completed: the test proves nothing");
+}

@@ -85,7 +85,7 @@ impl OffsetIndex {
             if !diagram.offset_may_cross(e, side) {
                 continue;
             }
-            let (lo, hi) = diagram.clearance_range(e);
+            let (lo, hi) = diagram.clearance_range(e, side);
             low[e.index()] = lo;
             intervals.push((lo, hi, e.index() as u32));
             let ends = diagram.end_vertices(e).map(|v| v.map_or(infinity, |v| v.index() as u32));
@@ -113,7 +113,8 @@ impl OffsetIndex {
         }
         circles.sort_by(|a, b| a.0.total_cmp(&b.0));
 
-        let mut vertex_levels: Vec<f64> = diagram.store.clearance[..diagram.finite_vertices].to_vec();
+        let mut vertex_levels: Vec<f64> =
+            (0..diagram.finite_vertices).map(|v| diagram.vertex_level(crate::diagram::VertexId::from_index(v), side)).collect();
         vertex_levels.push(f64::INFINITY);
         OffsetIndex {
             side,
@@ -180,15 +181,31 @@ impl Diagram {
 
     /// The lowest and highest clearance along edge `e` (input units;
     /// infinite at an end at infinity).
-    pub(super) fn clearance_range(&self, e: EdgeId) -> (f64, f64) {
-        let [c0, c1] = self.end_clearances(e);
+    pub(super) fn clearance_range(&self, e: EdgeId, side: Side) -> (f64, f64) {
+        let [c0, c1] = self.end_levels(e, side);
         let interior = self.edge_track(e).and_then(|t| t.interior_minimum()).map_or(f64::INFINITY, |m| m * self.scale.to_input);
         (c0.min(c1).min(interior), c0.max(c1))
     }
 
-    /// The clearance at both ends of `e`, as the vertices store it.
-    pub(super) fn end_clearances(&self, e: EdgeId) -> [f64; 2] {
-        self.end_vertices(e).map(|v| v.map_or(f64::INFINITY, |v| self.store.clearance[v.index()]))
+    /// The clearance at both ends of `e` as the offsets on `side` take it
+    /// (see `vertex_level`); infinite at infinity.
+    pub(super) fn end_levels(&self, e: EdgeId, side: Side) -> [f64; 2] {
+        self.end_vertices(e).map(|v| v.map_or(f64::INFINITY, |v| self.vertex_level(v, side)))
+    }
+
+    /// The clearance of vertex `v` as the vertices store it, but zero at a
+    /// vertex where an edge the offsets on `side` may cross meets one they
+    /// may not (a ring corner): so that around every cell the crossings
+    /// alternate whatever the stored numbers, the part of a cell boundary
+    /// the offsets do not cross counting as within the band.
+    pub(super) fn vertex_level(&self, v: crate::diagram::VertexId, side: Side) -> f64 {
+        let off_side = self.has_domain()
+            && self.vertex_half_edges(v).is_some_and(|out| out.iter().any(|h| !self.offset_may_cross(h.edge(), side)));
+        if off_side {
+            0.0
+        } else {
+            self.store.clearance[v.index()]
+        }
     }
 
     /// The track of edge `e` (internal coordinates) from `ends[0]` to

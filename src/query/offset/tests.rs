@@ -262,7 +262,11 @@ fn holes_touching_at_a_point_are_two_loops() {
     assert!((o.area() - (64.0 - 2.0 * PI)).abs() < 1e-9);
     // a hole's corner and a point 1 apart, shrunk by 0.5
     let mut b = Builder::new();
-    b.add_polygon(&[vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]], vec![[3.0, 2.0], [5.0, 2.0], [5.0, 4.0], [3.0, 4.0]]]).unwrap();
+    b.add_polygon(&[
+        vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]],
+        vec![[3.0, 2.0], [5.0, 2.0], [5.0, 4.0], [3.0, 4.0]],
+    ])
+    .unwrap();
     b.add_point([6.0, 2.0]).unwrap();
     let d = b.build().unwrap();
     let o = d.offset(-0.5).unwrap();

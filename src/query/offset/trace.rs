@@ -137,7 +137,7 @@ impl Diagram {
     /// Where edge `e` crosses the level `r`, in the order of its
     /// `ends[0] → ends[1]`, each with whether the clearance rises there.
     fn edge_crossings(&self, e: EdgeId, side: Side, r: f64) -> Vec<(Point, bool)> {
-        let [c0, c1] = self.end_clearances(e);
+        let [c0, c1] = self.end_levels(e, side);
         let threshold = side.threshold(r);
         let (b0, b1) = (side.in_band(c0, threshold), side.in_band(c1, threshold));
         let track = self.edge_track(e);
