@@ -111,8 +111,16 @@ fn regular_polygon_shrinks_to_a_smaller_one() {
         assert!((o.area() - want).abs() < 1e-9, "r {r}: {} vs {want}", o.area());
         assert!(o.loops[0].pieces.iter().all(|p| matches!(p, OffsetPiece::Line { .. })));
     }
-    // beyond the inscribed circle: nothing; at it exactly: nothing either
+    // beyond the inscribed circle: nothing; at it exactly (the clearance of
+    // the centre vertex, as stored): nothing either, the region is a point
     assert!(d.offset(-apothem - 0.1).unwrap().loops.is_empty());
+    let centre = d.vertices().max_by(|a, b| a.clearance.total_cmp(&b.clearance)).unwrap();
+    assert!((centre.clearance - apothem).abs() < 1e-12);
+    assert!(d.offset(-centre.clearance).unwrap().loops.is_empty());
+    // and a hair inside it, a tiny heptagon
+    let tiny = d.offset(-centre.clearance * (1.0 - 1e-6)).unwrap();
+    assert_eq!(tiny.loops.len(), 1);
+    assert_eq!(tiny.loops[0].pieces.len(), n);
 }
 
 #[test]
