@@ -138,7 +138,11 @@ impl Diagram {
     /// shrinks to a point or a line at that distance (a hole's inscribed
     /// circle) has no loop. Which side of the distance a vertex lies on is
     /// decided from its stored clearance, the same way for every edge, so
-    /// the loops always close.
+    /// the loops always close; a clearance within `1e-10 × |distance|` of
+    /// the distance counts as equal to it, so that a part of the region
+    /// thinner than that — which rounding alone would make or unmake, as in
+    /// a corridor between parallel segments exactly `2 × |distance|` wide —
+    /// is left out rather than traced as a sliver.
     ///
     /// Errors ([`ErrorKind::InvalidArgument`]): a distance that is NaN,
     /// infinite or zero, or not positive without a domain.
