@@ -9,7 +9,7 @@
 
 use crate::diagram::{Diagram, EdgeId, HalfEdgeId, SiteId, VertexId, NONE};
 use crate::geometry::Point;
-use crate::query::{EdgeEnd, HalfEdge, Location};
+use crate::query::{EdgeEnd, EdgeShape, HalfEdge, Location};
 
 /// One edge of the medial axis, walked in the chain's direction.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -146,8 +146,13 @@ impl Diagram {
                 continue;
             }
             for start in [HalfEdgeId::from_index(h), twin[h]] {
+                // both sides are taken at once: ask the side at hand, not
+                // the far one
+                if marks[h] & TAKEN != 0 {
+                    break;
+                }
                 let v = start.origin();
-                if marks[start.index()] & TAKEN != 0 || (v.index() < self.finite_vertices && marked_degree(marks, v) == 2) {
+                if v.index() < self.finite_vertices && marked_degree(marks, v) == 2 {
                     continue;
                 }
                 chains.push(self.walk_marks(start, marks, &mut scratch));
@@ -279,13 +284,21 @@ impl Diagram {
         // the edge's own sites in its own order: on its left first
         let sites = if piece.reversed { [piece.sites[1], piece.sites[0]] } else { piece.sites };
         let site = self.sites[sites[0].index()];
+        let with_clearance = |p: Point| [p.x, p.y, site.distance(p)];
+        let skip = usize::from(!out.is_empty());
+        let shape = self.shape_between(sites);
+        if shape == EdgeShape::Line {
+            // its two ends, as `polyline_into` gives them, without a buffer
+            let ends = if piece.reversed { [end, start] } else { [start, end] };
+            out.extend(ends.into_iter().skip(skip).map(with_clearance));
+            return Some(());
+        }
         scratch.clear();
-        self.polyline_into(self.shape_between(sites), start, end, tolerance, scratch);
+        self.polyline_into(shape, start, end, tolerance, scratch);
         if piece.reversed {
             scratch.reverse();
         }
-        let skip = usize::from(!out.is_empty());
-        out.extend(scratch.iter().skip(skip).map(|&p| [p.x, p.y, site.distance(p)]));
+        out.extend(scratch.iter().skip(skip).copied().map(with_clearance));
         Some(())
     }
 

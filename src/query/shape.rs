@@ -105,6 +105,11 @@ impl Diagram {
 
     /// The shape of the edge between two sites (in either order).
     pub(crate) fn shape_between(&self, sites: [SiteId; 2]) -> EdgeShape {
+        // two points or two segments (told apart by id): straight, without
+        // a look at either
+        if (sites[0].index() < self.point_sites) == (sites[1].index() < self.point_sites) {
+            return EdgeShape::Line;
+        }
         let [first, second] = sites.map(|s| self.sites[s.index()]);
         EdgeShape::between(first, second, self.scale.to_internal)
     }
