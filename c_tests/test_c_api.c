@@ -1155,6 +1155,11 @@ static void check_medial_axis(const segvoronoi_diagram *d, double max_r) {
             CHECK_STATUS(segvoronoi_medial_axis_piece(axis, c, k, &p), SEGVORONOI_STATUS_OK);
             CHECK(p.struct_size == sizeof p);
             if (k > 0) CHECK(previous.ends[1].vertex == p.ends[0].vertex);
+            { /* its sites are its edge's, in the chain's direction */
+                segvoronoi_edge edge = {.struct_size = sizeof edge};
+                CHECK_STATUS(segvoronoi_diagram_edge(d, p.edge, &edge), SEGVORONOI_STATUS_OK);
+                CHECK(p.sites[0] == edge.sites[p.reversed] && p.sites[1] == edge.sites[!p.reversed]);
+            }
             { /* the ends of the piece at t = 0 and 1, its clearance in between */
                 double at0[3], at1[3], mid[3];
                 CHECK_STATUS(segvoronoi_medial_axis_piece_at(axis, c, k, 0.0, at0), SEGVORONOI_STATUS_OK);

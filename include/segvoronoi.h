@@ -285,6 +285,9 @@ typedef struct segvoronoi_piece {
   struct segvoronoi_edge_end ends[2];
   // The clearance at both ends (infinite at an end at infinity).
   double clearance[2];
+  // The sites on its left and on its right, in the chain's direction
+  // (the edge's `sites`, swapped when `reversed`).
+  uint32_t sites[2];
 } segvoronoi_piece;
 
 // One loop of an offset. Versioned: set `struct_size` before the call.

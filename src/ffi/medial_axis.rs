@@ -31,8 +31,11 @@ pub struct segvoronoi_piece {
     pub ends: [segvoronoi_edge_end; 2],
     /// The clearance at both ends (infinite at an end at infinity).
     pub clearance: [f64; 2],
+    /// The sites on its left and on its right, in the chain's direction
+    /// (the edge's `sites`, swapped when `reversed`).
+    pub sites: [u32; 2],
 }
-versioned!(segvoronoi_piece, clearance: [f64; 2]);
+versioned!(segvoronoi_piece, sites: [u32; 2]);
 
 /// The medial axis of a diagram (the edges inside the domain that are not
 /// separators; without polygons, every edge that is not a separator) in
@@ -200,6 +203,7 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_piece(
             reversed: p.reversed,
             ends: p.ends.map(|end| edge_end(d, end)),
             clearance: p.clearance,
+            sites: p.sites.map(|s| s.index() as u32),
             ..Default::default()
         };
         write_versioned(out, value)

@@ -117,7 +117,15 @@ impl Parabola {
     /// `max_points` points (the tolerance is then not met; `max_points` is at
     /// least 2). A chord over a parameter step `d` strays at most
     /// `d^2 / (8 p)` from the arc, so steps of `sqrt(8 p tolerance)` suffice.
+    #[cfg(test)]
     pub(crate) fn sample(&self, s0: f64, s1: f64, tolerance: f64, max_points: usize) -> Vec<Point> {
+        let mut points = Vec::new();
+        self.sample_into(s0, s1, tolerance, max_points, |p| points.push(p));
+        points
+    }
+
+    /// The points of [`Parabola::sample`], in order, handed to `emit`.
+    pub(crate) fn sample_into(&self, s0: f64, s1: f64, tolerance: f64, max_points: usize, mut emit: impl FnMut(Point)) {
         let max_points = max_points.max(2);
         let step = (8.0 * self.focal_distance * tolerance.max(0.0)).sqrt();
         let span = (s1 - s0).abs();
@@ -125,7 +133,9 @@ impl Parabola {
         // `as` saturates, and NaN (from non-finite input) becomes 0.
         let pieces = if wanted.is_finite() { (wanted as usize).max(1) } else { max_points - 1 };
         let pieces = pieces.min(max_points - 1);
-        (0..=pieces).map(|k| self.point(s0 + (s1 - s0) * (k as f64 / pieces as f64))).collect()
+        for k in 0..=pieces {
+            emit(self.point(s0 + (s1 - s0) * (k as f64 / pieces as f64)));
+        }
     }
 }
 

@@ -288,7 +288,9 @@ impl Diagram {
         Some(Edge { id, sites: [self.store.left(h), self.store.right(h)], ends: [self.end_of(h), self.end_of(t)] })
     }
 
-    fn end_of(&self, h: HalfEdgeId) -> EdgeEnd {
+    /// Where half-edge `h` starts: its finite vertex, or the direction of
+    /// its vertex at infinity.
+    pub(super) fn end_of(&self, h: HalfEdgeId) -> EdgeEnd {
         let v = h.origin();
         if v.index() < self.finite_vertices {
             EdgeEnd::Vertex(v)

@@ -7,7 +7,7 @@
 //! is not a separator, rays included: the ordinary segment Voronoi diagram
 //! as a graph.
 
-use crate::diagram::{Diagram, EdgeId, VertexId};
+use crate::diagram::{Diagram, EdgeId, HalfEdgeId, SiteId, VertexId, NONE};
 use crate::geometry::Point;
 use crate::query::{EdgeEnd, EdgeShape, HalfEdge, Location};
 
@@ -23,9 +23,12 @@ pub struct Piece {
     /// The clearance (radius of the largest empty disk centred there) at
     /// both ends; infinite at an end at infinity.
     pub clearance: [f64; 2],
-    /// Its curve: a straight piece, or an arc of the parabola of a point
-    /// and a segment's line (the same shapes as [`Diagram::edge_shape`]).
-    pub shape: EdgeShape,
+    /// The sites on its left and on its right, in the chain's direction:
+    /// every point of the piece is as far from both, at its clearance.
+    /// Its curve, a straight piece or an arc of the parabola of a point and
+    /// a segment's line, is [`Diagram::edge_shape`] of `edge` (made on
+    /// demand: the medial axis of a large domain has millions of pieces).
+    pub sites: [SiteId; 2],
 }
 
 /// A maximal path of the medial axis through vertices of degree two: from
@@ -63,7 +66,7 @@ impl Diagram {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn medial_axis(&self) -> MedialAxis {
-        MedialAxis { chains: self.chains_of(&self.medial_axis_edges()) }
+        MedialAxis { chains: self.chains_of_marks(&mut self.axis_marks()) }
     }
 
     /// Which edges belong to the medial axis, by edge index.
@@ -99,26 +102,66 @@ impl Diagram {
     /// The edges marked in `in_axis` as chains: maximal paths through
     /// vertices where two of them meet.
     pub(super) fn chains_of(&self, in_axis: &[bool]) -> Vec<Chain> {
-        let degrees = self.axis_degrees(in_axis);
-        let degree = |end: EdgeEnd| degree_at(end, &degrees);
-        let mut used = vec![false; self.edges.len()];
+        let mut marks = vec![UNMARKED; self.store.twin.len()];
+        for (e, &h) in self.edges.iter().enumerate().filter(|&(e, _)| in_axis[e]) {
+            marks[h.index()] = e as u32;
+            marks[self.store.twin(h).index()] = e as u32;
+        }
+        self.chains_of_marks(&mut marks)
+    }
+
+    /// The marks (see `chains_of_marks`) of the edges of the medial axis.
+    fn axis_marks(&self) -> Vec<u32> {
+        let mut marks = vec![UNMARKED; self.store.twin.len()];
+        for (e, &h) in self.edges.iter().enumerate() {
+            if self.in_medial_axis(EdgeId::from_index(e)) {
+                marks[h.index()] = e as u32;
+                marks[self.store.twin(h).index()] = e as u32;
+            }
+        }
+        marks
+    }
+
+    /// The marked edges as chains (as `chains_of`). `marks` holds, per
+    /// half-edge of the store, the id of its public edge if that edge is to
+    /// be chained, else `UNMARKED`; the walk sets `TAKEN` in the marks of
+    /// the edges it has put in a chain.
+    ///
+    /// The chains come in the order of `chains_of`'s first description:
+    /// open chains from the marked edges by id (the store keeps an edge's
+    /// canonical half-edge, the lower of the two, in id order), each edge
+    /// from its `ends[0]` before its `ends[1]`; then the cycles, from the
+    /// `ends[0]` of their lowest edge. Working on the store's half-edges,
+    /// the degree of a vertex is read from its own three marks, and the walk
+    /// needs neither the public half-edge ids nor the edge records.
+    fn chains_of_marks(&self, marks: &mut [u32]) -> Vec<Chain> {
+        let twin = &self.store.twin;
+        let canonical_marked =
+            |marks: &[u32], h: usize| marks[h] != UNMARKED && h < twin[h].index();
         let mut chains = Vec::new();
+        let mut scratch = Vec::new();
         // Open chains first: from every end whose degree is not two.
-        let starts = (0..self.edges.len()).filter(|&e| in_axis[e]).flat_map(|e| {
-            let [h, t] = self.half_edges(EdgeId::from_index(e)).expect("in range");
-            [h, t]
-        });
-        for h in starts {
-            if used[h.edge().index()] || self.origin_vertex(h).is_some_and(|v| degrees[v.index()] == 2) {
+        for h in 0..marks.len() {
+            if !canonical_marked(marks, h) {
                 continue;
             }
-            chains.push(self.walk_chain(h, in_axis, &mut used, &degree));
+            for start in [HalfEdgeId::from_index(h), twin[h]] {
+                // both sides are taken at once: ask the side at hand, not
+                // the far one
+                if marks[h] & TAKEN != 0 {
+                    break;
+                }
+                let v = start.origin();
+                if v.index() < self.finite_vertices && marked_degree(marks, v) == 2 {
+                    continue;
+                }
+                chains.push(self.walk_marks(start, marks, &mut scratch));
+            }
         }
         // What is left are cycles through vertices of degree two.
-        for e in 0..self.edges.len() {
-            if in_axis[e] && !used[e] {
-                let [h, _] = self.half_edges(EdgeId::from_index(e)).expect("in range");
-                chains.push(self.walk_chain(h, in_axis, &mut used, &degree));
+        for h in 0..marks.len() {
+            if canonical_marked(marks, h) && marks[h] & TAKEN == 0 {
+                chains.push(self.walk_marks(HalfEdgeId::from_index(h), marks, &mut scratch));
             }
         }
         chains
@@ -133,54 +176,50 @@ impl Diagram {
         inside && self.is_separator(e) == Some(false)
     }
 
-    /// The chain that starts with half-edge `h`, through vertices of degree
-    /// two, until a vertex of another degree, infinity, or back at the start.
-    fn walk_chain(&self, first: HalfEdge, in_axis: &[bool], used: &mut [bool], degree: &impl Fn(EdgeEnd) -> usize) -> Chain {
-        let mut pieces = Vec::new();
+    /// The chain that starts with the store's half-edge `first` (marked),
+    /// through vertices of degree two, until a vertex of another degree,
+    /// infinity, or back at the start. `scratch` is an empty buffer, left
+    /// empty.
+    fn walk_marks(&self, first: HalfEdgeId, marks: &mut [u32], scratch: &mut Vec<Piece>) -> Chain {
         let mut h = first;
         let mut closed = false;
         loop {
-            used[h.edge().index()] = true;
-            let piece = self.piece(h);
-            let end = piece.ends[1];
-            pieces.push(piece);
-            let EdgeEnd::Vertex(v) = end else { break };
-            if degree(end) != 2 {
+            let t = self.store.twin(h);
+            let edge = marks[h.index()] & !TAKEN;
+            marks[h.index()] |= TAKEN;
+            marks[t.index()] |= TAKEN;
+            scratch.push(self.piece_of(h, t, EdgeId::from_index(edge as usize)));
+            let v = t.origin();
+            if v.index() >= self.finite_vertices || marked_degree(marks, v) != 2 {
                 break;
             }
-            let next = self.continue_at(v, h, in_axis);
+            // the other marked half-edge leaving v (not the edge arrived by)
+            let next = (0..3).map(|slot| v.half_edge(slot)).find(|&o| o != t && o != h && marks[o.index()] != UNMARKED);
             match next {
                 Some(n) if n == first => {
                     closed = true;
                     break;
                 }
-                Some(n) if !used[n.edge().index()] => h = n,
+                Some(n) if marks[n.index()] & TAKEN == 0 => h = n,
                 _ => break,
             }
         }
+        // exactly as long as it is: most chains have a piece or two
+        let pieces = scratch.to_vec();
+        scratch.clear();
         Chain { pieces, closed }
     }
 
-    /// The other medial-axis half-edge leaving `v` (of degree two), after
-    /// arriving by `h`.
-    fn continue_at(&self, v: VertexId, arrived: HalfEdge, in_axis: &[bool]) -> Option<HalfEdge> {
-        let out = self.vertex_half_edges(v)?;
-        out.into_iter().find(|o| in_axis[o.edge().index()] && o.edge() != arrived.edge())
-    }
-
-    /// The piece of half-edge `h`.
-    fn piece(&self, h: HalfEdge) -> Piece {
-        let edge = self.edge(h.edge()).expect("in range");
-        let mut ends = edge.ends;
-        if h.is_reversed() {
-            ends.reverse();
-        }
+    /// The piece of the store's half-edge `h` (twin `t`) of edge `edge`.
+    fn piece_of(&self, h: HalfEdgeId, t: HalfEdgeId, edge: EdgeId) -> Piece {
+        let ends = [self.end_of(h), self.end_of(t)];
         let clearance = ends.map(|end| match end {
             EdgeEnd::Vertex(v) => self.store.clearance[v.index()],
             EdgeEnd::Infinite { .. } => f64::INFINITY,
         });
-        let shape = self.shape_of(&edge);
-        Piece { edge: h.edge(), reversed: h.is_reversed(), ends, clearance, shape }
+        let sites = [self.store.left(h), self.store.right(h)];
+        // an edge's canonical half-edge is the lower of its two
+        Piece { edge, reversed: t < h, ends, clearance, sites }
     }
 
     /// The point of a finite piece at parameter `t` (0 at its start, 1 at
@@ -216,21 +255,50 @@ impl Diagram {
     /// tolerance that is not positive.
     pub fn sample_piece(&self, piece: &Piece, tolerance: f64) -> Option<Vec<[f64; 3]>> {
         let mut points = Vec::new();
-        self.append_piece(piece, tolerance, &mut points)?;
+        self.append_piece(piece, tolerance, &mut points, &mut Vec::new())?;
         Some(points)
     }
 
     /// Appends the points of `sample_piece` to `out`, but for its first
     /// when `out` already ends there (the end of the previous piece).
-    fn append_piece(&self, piece: &Piece, tolerance: f64, out: &mut Vec<[f64; 3]>) -> Option<()> {
-        let skip = usize::from(!out.is_empty());
-        let &canonical = self.edges.get(piece.edge.index())?;
-        let site = self.sites[self.store.left(canonical).index()];
-        let mut points = self.edge_polyline(piece.edge, tolerance)?;
-        if piece.reversed {
-            points.reverse();
+    /// `scratch` is a buffer for the polyline.
+    ///
+    /// The curve is the one of the piece's ends and sites (those of its
+    /// edge, for a piece of `medial_axis`: then the polyline is the edge's
+    /// `edge_polyline`), and the clearance is measured from the site on the
+    /// left of the edge, so that the edge itself is not looked up.
+    fn append_piece(&self, piece: &Piece, tolerance: f64, out: &mut Vec<[f64; 3]>, scratch: &mut Vec<Point>) -> Option<()> {
+        if tolerance.is_nan() || tolerance <= 0.0 || piece.edge.index() >= self.edges.len() {
+            return None;
         }
-        out.extend(points.into_iter().skip(skip).map(|p| [p.x, p.y, site.distance(p)]));
+        if piece.sites.iter().any(|s| s.index() >= self.sites.len()) {
+            return None;
+        }
+        let position = |end: EdgeEnd| match end {
+            EdgeEnd::Vertex(v) => self.store.position.get(v.index()).copied().filter(|_| v.index() < self.finite_vertices),
+            EdgeEnd::Infinite { .. } => None,
+        };
+        // the edge's own direction: the polyline of a parabola depends on it
+        let [start, end] = if piece.reversed { [piece.ends[1], piece.ends[0]] } else { piece.ends };
+        let (start, end) = (position(start)?, position(end)?);
+        // the edge's own sites in its own order: on its left first
+        let sites = if piece.reversed { [piece.sites[1], piece.sites[0]] } else { piece.sites };
+        let site = self.sites[sites[0].index()];
+        let with_clearance = |p: Point| [p.x, p.y, site.distance(p)];
+        let skip = usize::from(!out.is_empty());
+        let shape = self.shape_between(sites);
+        if shape == EdgeShape::Line {
+            // its two ends, as `polyline_into` gives them, without a buffer
+            let ends = if piece.reversed { [end, start] } else { [start, end] };
+            out.extend(ends.into_iter().skip(skip).map(with_clearance));
+            return Some(());
+        }
+        scratch.clear();
+        self.polyline_into(shape, start, end, tolerance, scratch);
+        if piece.reversed {
+            scratch.reverse();
+        }
+        out.extend(scratch.iter().skip(skip).copied().map(with_clearance));
         Some(())
     }
 
@@ -238,8 +306,9 @@ impl Diagram {
     /// shared ends once; `None` when a piece reaches infinity.
     pub fn sample_chain(&self, chain: &Chain, tolerance: f64) -> Option<Vec<[f64; 3]>> {
         let mut out: Vec<[f64; 3]> = Vec::with_capacity(chain.pieces.len() + 1);
+        let mut scratch = Vec::new();
         for piece in &chain.pieces {
-            self.append_piece(piece, tolerance, &mut out)?;
+            self.append_piece(piece, tolerance, &mut out, &mut scratch)?;
         }
         Some(out)
     }
@@ -298,6 +367,18 @@ impl Diagram {
         circles.sort_by(|a, b| b.1.total_cmp(&a.1));
         circles
     }
+}
+
+/// The mark of a half-edge whose edge is not to be chained (`chains_of_marks`).
+const UNMARKED: u32 = NONE;
+
+/// Set in the marks of both half-edges of an edge once a chain has it (edge
+/// ids stay below it: half-edge ids, twice as many, are `u32`).
+const TAKEN: u32 = 1 << 31;
+
+/// How many of the three half-edges leaving the finite vertex `v` are marked.
+fn marked_degree(marks: &[u32], v: VertexId) -> usize {
+    (0..3).filter(|&slot| marks[v.half_edge(slot).index()] != UNMARKED).count()
 }
 
 /// The degree of an end in the axis (`axis_degrees`): zero at infinity.

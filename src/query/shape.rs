@@ -24,7 +24,7 @@
 //! input's magnitude off the true parabola, except that the first and last
 //! points are the vertex positions themselves, so that drawings join up.
 
-use crate::diagram::{Diagram, EdgeId};
+use crate::diagram::{Diagram, EdgeId, SiteId};
 use crate::geometry::edge_curve::EdgeCurve;
 use crate::geometry::parabola::{focus_and_directrix, Parabola};
 use crate::geometry::predicates::{orientation, Orientation};
@@ -100,7 +100,17 @@ impl Diagram {
 
     /// The shape of an edge already looked up.
     pub(crate) fn shape_of(&self, e: &crate::query::Edge) -> EdgeShape {
-        let [first, second] = e.sites.map(|s| self.sites[s.index()]);
+        self.shape_between(e.sites)
+    }
+
+    /// The shape of the edge between two sites (in either order).
+    pub(crate) fn shape_between(&self, sites: [SiteId; 2]) -> EdgeShape {
+        // two points or two segments (told apart by id): straight, without
+        // a look at either
+        if (sites[0].index() < self.point_sites) == (sites[1].index() < self.point_sites) {
+            return EdgeShape::Line;
+        }
+        let [first, second] = sites.map(|s| self.sites[s.index()]);
         EdgeShape::between(first, second, self.scale.to_internal)
     }
 
@@ -144,17 +154,28 @@ impl Diagram {
         }
         let edge = self.edge(id)?;
         let (start, end) = self.finite_ends(&edge)?;
-        let Some((parabola, s0, s1)) = self.arc(&edge, start, end) else { return Some(vec![start, end]) };
-        // A tolerance beyond the scaled range becomes infinite: two points.
-        let mut points = parabola.sample(s0, s1, tolerance * self.scale.to_internal, MAX_POLYLINE_POINTS);
-        for p in points.iter_mut() {
-            *p = p.scaled(self.scale.to_input);
-        }
-        let last = points.len() - 1; // `sample` gives at least two points
-        (points[0], points[last]) = (start, end);
+        let mut points = Vec::new();
+        self.polyline_into(self.shape_of(&edge), start, end, tolerance, &mut points);
         Some(points)
     }
 
+    /// Appends to `out` the polyline of `edge_polyline` for an edge of shape
+    /// `shape` from `start` to `end` (the positions of its `ends[0]` and
+    /// `ends[1]`), for a positive `tolerance`. (The parabola of a
+    /// `Parabola` shape is the one of its edge's sites: the same focus and
+    /// directrix points.)
+    pub(crate) fn polyline_into(&self, shape: EdgeShape, start: Point, end: Point, tolerance: f64, out: &mut Vec<Point>) {
+        let Some((parabola, s0, s1)) = self.arc_of_shape(shape, start, end) else {
+            out.extend([start, end]);
+            return;
+        };
+        // A tolerance beyond the scaled range becomes infinite: two points.
+        let first = out.len();
+        let to_input = self.scale.to_input;
+        parabola.sample_into(s0, s1, tolerance * self.scale.to_internal, MAX_POLYLINE_POINTS, |p| out.push(p.scaled(to_input)));
+        let last = out.len() - 1; // `sample_into` gives at least two points
+        (out[first], out[last]) = (start, end);
+    }
     /// The quadratic Bézier curve `[start, control, end]` that is a finite
     /// parabolic edge: `start` and `end` are the positions of `ends[0]` and
     /// `ends[1]`, and `control` is where the parabola's tangents at them
@@ -204,11 +225,18 @@ impl Diagram {
     /// focus so close to the directrix that their distance rounds to zero;
     /// the arc is then a straight piece to within rounding).
     fn arc(&self, edge: &crate::query::Edge, start: Point, end: Point) -> Option<(Parabola, f64, f64)> {
-        let EdgeShape::Parabola { .. } = self.shape_of(edge) else { return None };
-        match self.curve_of(edge, start, end) {
-            EdgeCurve::Parabola { parabola, from, to } if from.is_finite() && to.is_finite() => Some((parabola, from, to)),
-            _ => None,
-        }
+        self.arc_of_shape(self.shape_of(edge), start, end)
+    }
+
+    /// As `arc`, for an edge of shape `shape`: its focus and directrix are
+    /// those of the edge's sites, so the parabola is the one `curve_of`
+    /// sets up.
+    fn arc_of_shape(&self, shape: EdgeShape, start: Point, end: Point) -> Option<(Parabola, f64, f64)> {
+        let EdgeShape::Parabola { focus, directrix: [a, b] } = shape else { return None };
+        let f = self.scale.to_internal;
+        let parabola = Parabola::new(focus.scaled(f), a.scaled(f), b.scaled(f))?;
+        let (from, to) = (parabola.parameter(start.scaled(f)), parabola.parameter(end.scaled(f)));
+        (from.is_finite() && to.is_finite()).then_some((parabola, from, to))
     }
 
     /// The curve of edge `id` from `start` to `end` (input coordinates, in

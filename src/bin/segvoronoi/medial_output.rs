@@ -61,7 +61,7 @@ pub fn json(diagram: &Diagram, axis: &MedialAxis) -> String {
                 }
                 EdgeEnd::Infinite { direction } => format!("{{\"direction\": {}}}", point(direction)),
             });
-            let kind = match piece.shape {
+            let kind = match diagram.edge_shape(piece.edge).unwrap_or(EdgeShape::Line) {
                 EdgeShape::Parabola { focus, directrix: [a, b] } => {
                     format!("\"parabola\", \"focus\": {}, \"directrix\": [{}, {}]", point(focus), point(a), point(b))
                 }
