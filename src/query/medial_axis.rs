@@ -136,8 +136,7 @@ impl Diagram {
     /// needs neither the public half-edge ids nor the edge records.
     fn chains_of_marks(&self, marks: &mut [u32]) -> Vec<Chain> {
         let twin = &self.store.twin;
-        let canonical_marked =
-            |marks: &[u32], h: usize| marks[h] != UNMARKED && h < twin[h].index();
+        let canonical_marked = |marks: &[u32], h: usize| marks[h] != UNMARKED && h < twin[h].index();
         let mut chains = Vec::new();
         let mut scratch = Vec::new();
         // Open chains first: from every end whose degree is not two.
