@@ -28,6 +28,10 @@ awk '/^### The medial axis in C/ { s = 1 } s && /^```c$/ { c = 1; next } c && /^
   >"$work/readme_medial_axis.c"
 diff -u "$work/readme_medial_axis.c" "$repo/examples/c/medial_axis.c" \
   || fail "the C block under '### The medial axis in C' in README.md and examples/c/medial_axis.c differ"
+awk '/^### Offsets in C/ { s = 1 } s && /^```c$/ { c = 1; next } c && /^```$/ { exit } c' "$repo/README.md" \
+  >"$work/readme_offsets.c"
+diff -u "$work/readme_offsets.c" "$repo/examples/c/offsets.c" \
+  || fail "the C block under '### Offsets in C' in README.md and examples/c/offsets.c differ"
 
 echo "--- package: configure, build, install with --strip, and the Runtime component alone"
 cmake -S "$repo" -B "$work/build" -DCMAKE_BUILD_TYPE=Release >"$work/configure.log" 2>&1 \
@@ -57,7 +61,7 @@ expected_runtime="$(printf '%s\n' "$(basename "$shared")" "$soname" | sort | tr 
 echo "stripped; Runtime component: $runtime_files"
 
 mkdir "$work/example"
-cp "$repo"/examples/c/{quickstart.c,medial_axis.c,CMakeLists.txt,Makefile} "$work/example/"
+cp "$repo"/examples/c/{quickstart.c,medial_axis.c,offsets.c,CMakeLists.txt,Makefile} "$work/example/"
 
 echo "--- examples/c through CMake: find_package(segvoronoi), shared and static"
 cmake -S "$work/example" -B "$work/example-cmake" -DCMAKE_BUILD_TYPE=Release \
@@ -86,6 +90,24 @@ done
 printf 'largest disk: r=1\nmedial axis: 5 pieces\npruned: 1 pieces\n' >"$work/expected_medial_axis.txt"
 "$work/example-cmake/medial_axis" | diff -u "$work/expected_medial_axis.txt" - \
   || fail "examples/c/medial_axis: unexpected output"
+# The 10 x 10 square with a 2 x 2 hole: shrunk by 1, the 8 x 8 square less the
+# hole grown by 1 (64 - (4 + 8 + pi)); by 2, four corners (4 x (4 - pi)), apart
+# although the hole grown by 2 touches the shrunk square along its sides;
+# grown by 1, the hole gone (100 + 40 + pi).
+cat >"$work/expected_offsets.txt" <<'EOF'
+d=-1: 2 loops, area 48.8584
+  loop 0: outer, 4 pieces (0 arcs), area 64.0000, polyline area 64.0
+  loop 1: hole, 8 pieces (4 arcs), area -15.1416, polyline area -15.1
+d=-2: 4 loops, area 3.4336
+  loop 0: outer, 3 pieces (1 arcs), area 0.8584, polyline area 0.9
+  loop 1: outer, 3 pieces (1 arcs), area 0.8584, polyline area 0.9
+  loop 2: outer, 3 pieces (1 arcs), area 0.8584, polyline area 0.9
+  loop 3: outer, 3 pieces (1 arcs), area 0.8584, polyline area 0.9
+d=1: 1 loops, area 143.1416
+  loop 0: outer, 8 pieces (4 arcs), area 143.1416, polyline area 143.1
+EOF
+"$work/example-cmake/offsets" | diff -u "$work/expected_offsets.txt" - \
+  || fail "examples/c/offsets: unexpected output"
 
 echo "--- the programs linked against the shared library, with only the Runtime component"
 mv "$work/prefix" "$work/prefix-gone"

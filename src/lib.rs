@@ -8,6 +8,14 @@
 //! here, the topology is the exact one; segment sites are newer and still
 //! have known gaps (see `ARCHITECTURE.md`).
 //!
+//! On top of the diagram: polygons bound a domain ([`Builder::add_polygon`],
+//! [`Diagram::locate_point`]); its medial axis ([`Diagram::medial_axis`],
+//! [`MedialAxisFilter`]) and largest inscribed disk; and offsets at any
+//! signed distance ([`Diagram::offset`], [`Diagram::offsets`]): closed,
+//! oriented and nested loops of exact line pieces and circular arcs
+//! ([`OffsetLoop`], [`OffsetPiece`]), with polylines within a tolerance and
+//! exact areas.
+//!
 //! ```
 //! use segvoronoi::{Builder, EdgeEnd};
 //!
@@ -33,7 +41,8 @@
 //!   ([`Diagram::validate`]); it never reads coordinates to decide anything.
 //! - `construct`: [`Builder`], input checking, insertion order, the
 //!   topology-oriented insertion of points and segments.
-//! - `query`: iteration over vertices, edges and cells, canonical topology.
+//! - `query`: iteration over vertices, edges and cells, canonical topology,
+//!   the domain, the medial axis, offsets.
 //! - `ffi`: the C API (`include/segvoronoi.h`), which only converts and
 //!   delegates.
 
