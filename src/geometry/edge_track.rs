@@ -208,7 +208,8 @@ impl EdgeTrack {
             Curve::Straight { origin, unit, far, gauge } => {
                 let t = gauge.lowest(origin, unit);
                 match far {
-                    Some(q) if !(t <= self.to / 2.0) => self.to + gauge.lowest(q, unit),
+                    // past the middle (or NaN): from the far end
+                    Some(q) if t > self.to / 2.0 || t.is_nan() => self.to + gauge.lowest(q, unit),
                     _ => t,
                 }
             }
@@ -308,7 +309,7 @@ fn line_of_sites(sites: [&Site; 2]) -> Option<(Point, Point)> {
 fn finite(track: EdgeTrack) -> Option<EdgeTrack> {
     let ok = match track.curve {
         Curve::Straight { origin, unit, far, gauge } => {
-            origin.is_finite() && unit.is_finite() && far.is_none_or(|q| q.is_finite()) && gauge.is_finite()
+            origin.is_finite() && unit.is_finite() && far.map_or(true, |q| q.is_finite()) && gauge.is_finite()
         }
         Curve::Parabolic { .. } => true,
     };

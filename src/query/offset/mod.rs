@@ -235,9 +235,7 @@ impl Diagram {
             let centre = self.point_site(span.site);
             whole[k] = centre.is_some() && self.span_leaves(span, from, near);
             let whole = whole[k];
-            if (from == to && !whole)
-                || (!whole && centre.is_some_and(|c| approximation::sweep(c, from, to, true) > std::f64::consts::PI))
-            {
+            if !whole && (from == to || centre.is_some_and(|c| approximation::sweep(c, from, to, true) > std::f64::consts::PI)) {
                 empty[k] = true;
                 moved_to[span.to as usize] = span.from;
             }

@@ -85,7 +85,7 @@ fn a_segment_is_a_stadium() {
 #[test]
 fn convex_polygon_grows_by_steiner() {
     let hexagon = regular(6, 2.0, 0.3, -0.1);
-    let d = polygon(&[hexagon.clone()]);
+    let d = polygon(std::slice::from_ref(&hexagon));
     let area = 6.0 * 0.5 * 4.0 * (PI / 3.0).sin();
     let perimeter = 6.0 * 2.0;
     for r in [0.1, 1.0, 7.5] {
