@@ -46,6 +46,8 @@
 //     integers up to 2^28 (where its arithmetic stays in 64 bits); left out
 //     for the 4096-gon shrunk by more than 0.9 of its radius, where it is
 //     quadratic.
+// And segvoronoi_diagram_offsets at all distances of an input at once gives
+// the same loop counts and areas as segvoronoi_diagram_offset at each.
 // Known library failures are named cases in main, skipped with a "KNOWN:"
 // line (none at present). Prints one line per failure and a summary
 // "geos_offsets: cases=..." (vertex counts of the three at the same
@@ -816,6 +818,28 @@ void run_input(const Input &in, const std::vector<Known> &known, Stats &st) {
     for (const Known &k : known)
       if (k.name == in.name && k.distance == d) skip = true;
     if (!skip) check_one(in.name, in.rings, diagram, input, size, d, d >= in.clipper_from, st);
+  }
+  // segvoronoi_diagram_offsets at all the distances at once (one shared
+  // index) must give what segvoronoi_diagram_offset gives at each.
+  std::vector<segvoronoi_offset *> batch(distances.size(), nullptr);
+  if (segvoronoi_diagram_offsets(diagram, distances.data(), distances.size(), batch.data()) != SEGVORONOI_STATUS_OK) {
+    ++st.failed;
+    std::printf("FAIL: %s: segvoronoi_diagram_offsets failed\n", in.name.c_str());
+  } else {
+    for (size_t k = 0; k < distances.size(); ++k) {
+      segvoronoi_offset *single = nullptr;
+      segvoronoi_diagram_offset(diagram, distances[k], &single);
+      if (segvoronoi_offset_loop_count(single) != segvoronoi_offset_loop_count(batch[k]) ||
+          segvoronoi_offset_area(single) != segvoronoi_offset_area(batch[k])) {
+        ++st.failed;
+        std::printf("FAIL: %s d=%.17g: segvoronoi_diagram_offsets gives %zu loops of area %.17g, "
+                    "segvoronoi_diagram_offset %zu of %.17g\n",
+                    in.name.c_str(), distances[k], segvoronoi_offset_loop_count(batch[k]),
+                    segvoronoi_offset_area(batch[k]), segvoronoi_offset_loop_count(single), segvoronoi_offset_area(single));
+      }
+      segvoronoi_offset_free(single);
+      segvoronoi_offset_free(batch[k]);
+    }
   }
   GEOSGeom_destroy_r(ctx, input);
   segvoronoi_diagram_free(diagram);
