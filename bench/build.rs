@@ -1,21 +1,52 @@
-//! Compiles Boost.Polygon's C++ Voronoi builder (header-only, Debian's
-//! `libboost-dev`) into the benchmark, so the C++ original runs in the same
-//! harness as the Rust contenders. Without the headers the contender
-//! `boost-cpp` is left out, with a warning.
+//! Compiles the C++ contenders into the benchmark, so they run in the same
+//! harness as the Rust ones: Boost.Polygon's Voronoi builder (header-only,
+//! Debian's `libboost-dev`), GEOS's buffer (`libgeos-dev`, linked to
+//! `geos_c`) and Clipper's offset (`libpolyclipping-dev`, linked to
+//! `polyclipping`). A contender whose headers are missing is left out, with
+//! a warning: `boost-cpp`, and `geos` / `clipper` of the offsets benchmark.
 
-fn main() {
-    println!("cargo:rerun-if-changed=cpp/boost_polygon.cpp");
-    println!("cargo::rustc-check-cfg=cfg(has_boost_cpp)");
+fn compile(file: &str, lib: &str, cfg: &str, link: Option<&str>, what: &str) {
+    println!("cargo:rerun-if-changed={file}");
+    println!("cargo::rustc-check-cfg=cfg({cfg})");
     let built = cc::Build::new()
         .cpp(true)
-        .file("cpp/boost_polygon.cpp")
+        .file(file)
         .flag_if_supported("-std=c++17")
         .opt_level(2)
         .define("NDEBUG", None)
         .warnings(false)
-        .try_compile("boost_polygon_bench");
+        .try_compile(lib);
     match built {
-        Ok(()) => println!("cargo:rustc-cfg=has_boost_cpp"),
-        Err(e) => println!("cargo:warning=boost-cpp contender left out (Boost headers missing?): {e}"),
+        Ok(()) => {
+            if let Some(link) = link {
+                println!("cargo:rustc-link-lib={link}");
+            }
+            println!("cargo:rustc-cfg={cfg}");
+        }
+        Err(e) => println!("cargo:warning={what}: {e}"),
     }
+}
+
+fn main() {
+    compile(
+        "cpp/boost_polygon.cpp",
+        "boost_polygon_bench",
+        "has_boost_cpp",
+        None,
+        "boost-cpp contender left out (Boost headers missing?)",
+    );
+    compile(
+        "cpp/geos_buffer.cpp",
+        "geos_buffer_bench",
+        "has_geos",
+        Some("geos_c"),
+        "geos contender left out (libgeos-dev missing?)",
+    );
+    compile(
+        "cpp/clipper_offset.cpp",
+        "clipper_offset_bench",
+        "has_clipper",
+        Some("polyclipping"),
+        "clipper contender left out (libpolyclipping-dev missing?)",
+    );
 }
