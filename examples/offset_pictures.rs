@@ -13,7 +13,7 @@
 //! The glyph's outline is on top.
 
 use segvoronoi::{Builder, OffsetLoop, OffsetPiece, Point};
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::PI;
 use std::fmt::Write;
 
 /// Inward distances, in font units (2048 per em), shallowest first.
@@ -48,18 +48,6 @@ impl Frame {
     }
 }
 
-/// The angle an arc turns from `from` to `to` around `centre`, the given
-/// way round, in `(0, 2π]` (equal ends: a whole circle).
-fn sweep(centre: Point, from: Point, to: Point, counter_clockwise: bool) -> f64 {
-    let angle = |p: Point| (p.y - centre.y).atan2(p.x - centre.x);
-    let turn = if counter_clockwise { angle(to) - angle(from) } else { angle(from) - angle(to) }.rem_euclid(TAU);
-    if turn == 0.0 || from == to {
-        TAU
-    } else {
-        turn
-    }
-}
-
 /// A loop as SVG path data: `M`, an `L` per line piece and an `A` per arc,
 /// `Z`. With y pointing down, an arc counter-clockwise in the input is
 /// clockwise on the screen: sweep flag 0. An arc whose ends fall on the
@@ -72,7 +60,7 @@ fn loop_path(frame: &Frame, l: &OffsetLoop) -> String {
         match *piece {
             OffsetPiece::Arc { centre, radius, from, to, counter_clockwise, .. } => {
                 let r = radius * frame.scale;
-                let turn = sweep(centre, from, to, counter_clockwise);
+                let turn = piece.sweep().expect("an arc");
                 let (start, end) = (frame.pixel(from), frame.pixel(to));
                 let flag = u8::from(!counter_clockwise);
                 if start != end {

@@ -44,6 +44,16 @@ fn build_under(mode: FaultMode, seed: u64, points: &[[f64; 2]]) -> Diagram {
     try_build_under(mode, seed, points, &[]).unwrap_or_else(|e| panic!("{mode:?} seed {seed}: {e}"))
 }
 
+/// A regular `n`-gon of radius `r`, turned by `phase`.
+fn ring(n: usize, r: f64, phase: f64) -> Vec<[f64; 2]> {
+    (0..n)
+        .map(|k| {
+            let t = phase + std::f64::consts::TAU * k as f64 / n as f64;
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect()
+}
+
 fn lattice(side: usize) -> Vec<[f64; 2]> {
     (0..side * side).map(|i| [(i % side) as f64, (i / side) as f64]).collect()
 }
@@ -320,14 +330,6 @@ fn exhausted_restarts_through_the_c_api() {
 /// pieces meeting, the largest disk an inside vertex — and nothing panics.
 #[test]
 fn medial_axis_of_polygons_with_lying_arithmetic() {
-    let ring = |n: usize, r: f64, phase: f64| -> Vec<[f64; 2]> {
-        (0..n)
-            .map(|k| {
-                let t = phase + std::f64::consts::TAU * k as f64 / n as f64;
-                [r * t.cos(), r * t.sin()]
-            })
-            .collect()
-    };
     let mut built = 0;
     for (mode, seed) in [(FaultMode::Noise(1e-3), 1), (FaultMode::Random, 2), (FaultMode::Noise(1e-9), 3)] {
         let mut b = Builder::new();
@@ -384,14 +386,6 @@ fn medial_axis_of_polygons_with_lying_arithmetic() {
 /// panics, at distances across the whole range.
 #[test]
 fn offsets_with_lying_arithmetic() {
-    let ring = |n: usize, r: f64, phase: f64| -> Vec<[f64; 2]> {
-        (0..n)
-            .map(|k| {
-                let t = phase + std::f64::consts::TAU * k as f64 / n as f64;
-                [r * t.cos(), r * t.sin()]
-            })
-            .collect()
-    };
     let mut built = 0;
     for (mode, seed) in [(FaultMode::Noise(1e-3), 4), (FaultMode::Random, 5), (FaultMode::Noise(1e-9), 6)] {
         let mut b = Builder::new();

@@ -20,7 +20,7 @@
 //! the way to pixels. Anything that still is not finite is left out of the
 //! picture rather than written as `NaN`.
 
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::PI;
 use std::fmt::Write;
 
 use segvoronoi::{Diagram, Edge, EdgeEnd, MedialAxis, Offset, OffsetLoop, OffsetPiece, Point, Site};
@@ -389,19 +389,6 @@ fn write_offsets(out: &mut String, frame: &Frame, offsets: &[Offset]) {
     let _ = writeln!(out, "</g>");
 }
 
-/// The angle an arc turns from `from` to `to` around `centre`, the given
-/// way round, in `(0, 2π]` (equal ends: a whole circle), as the library
-/// measures it.
-fn sweep(centre: Point, from: Point, to: Point, counter_clockwise: bool) -> f64 {
-    let angle = |p: Point| (p.y - centre.y).atan2(p.x - centre.x);
-    let turn = if counter_clockwise { angle(to) - angle(from) } else { angle(from) - angle(to) }.rem_euclid(TAU);
-    if turn == 0.0 || from == to {
-        TAU
-    } else {
-        turn
-    }
-}
-
 /// A loop as SVG path data: `M`, then `L` to the end of each line piece and
 /// `A` along each arc, then `Z`; `None` when a point is not finite.
 ///
@@ -423,7 +410,7 @@ fn loop_path(frame: &Frame, l: &OffsetLoop) -> Option<String> {
                 if !r.is_finite() {
                     return None;
                 }
-                let turn = sweep(centre, from, to, counter_clockwise);
+                let turn = piece.sweep().expect("an arc");
                 let (start, end) = (pixel(from)?, pixel(to)?);
                 let flag = u8::from(!counter_clockwise);
                 if start != end {
@@ -662,8 +649,8 @@ mod tests {
         let k = ((r * r - h2).max(0.0) / h2).sqrt() * if large != sweep { 1.0 } else { -1.0 };
         let c = [k * h[1] + (p[0] + q[0]) / 2.0, -k * h[0] + (p[1] + q[1]) / 2.0];
         let angle = |v: [f64; 2]| (v[1] - c[1]).atan2(v[0] - c[0]);
-        let turn = (angle(q) - angle(p)).rem_euclid(TAU);
-        (c, if sweep { turn } else { turn - TAU })
+        let turn = (angle(q) - angle(p)).rem_euclid(std::f64::consts::TAU);
+        (c, if sweep { turn } else { turn - std::f64::consts::TAU })
     }
 
     /// Checks every arc of the drawn loops against the loops: same centre,
@@ -679,10 +666,10 @@ mod tests {
             let mut drawn = commands[1..commands.len() - 1].iter();
             for piece in &l.pieces {
                 match *piece {
-                    OffsetPiece::Arc { centre, radius, from, to, counter_clockwise, .. } => {
-                        let turn = sweep(centre, from, to, counter_clockwise);
+                    OffsetPiece::Arc { centre, radius, counter_clockwise, .. } => {
+                        let turn = piece.sweep().expect("an arc");
                         let (mut total, c) = (0.0, pixel(centre));
-                        for _ in 0..if turn == TAU { 2 } else { 1 } {
+                        for _ in 0..if turn == std::f64::consts::TAU { 2 } else { 1 } {
                             let (letter, v) = drawn.next().unwrap();
                             assert_eq!((*letter, v.len()), ('A', 7), "{commands:?}");
                             assert!((v[0] - radius * frame.to_unit * frame.px).abs() < 0.006 && v[0] == v[1] && v[2] == 0.0);

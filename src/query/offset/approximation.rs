@@ -36,6 +36,25 @@ pub(super) fn sweep(centre: Point, from: Point, to: Point, counter_clockwise: bo
 }
 
 impl OffsetPiece {
+    /// The angle an arc turns from its start to its end the way it runs, in
+    /// `(0, 2π]` (`2π` for a whole circle, whose ends are equal); `None`
+    /// for a line.
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, OffsetPiece};
+    /// let mut b = Builder::new();
+    /// b.add_point([0.0, 0.0])?;
+    /// let circle = b.build()?.offset(1.0)?;
+    /// assert_eq!(circle.loops[0].pieces[0].sweep(), Some(std::f64::consts::TAU));
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn sweep(&self) -> Option<f64> {
+        match *self {
+            OffsetPiece::Arc { centre, from, to, counter_clockwise, .. } => Some(sweep(centre, from, to, counter_clockwise)),
+            _ => None,
+        }
+    }
+
     /// The points of the piece within `tolerance` of it, from its start up
     /// to but not including its end (the next piece's start). `None` when
     /// `tolerance` is not positive.
