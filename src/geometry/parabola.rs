@@ -139,8 +139,16 @@ impl Parabola {
     }
 }
 
-/// `(b − a) × (c − a)`, in double-double from the exact coordinates.
+/// `(b − a) × (c − a)` to nearly full relative precision: in `f64` when
+/// that is already within 2^-40 of its value (the differences and products
+/// each round by half an ulp, so the error is below 2^-50 of the terms'
+/// magnitude), else again in double-double from the exact coordinates.
 fn cross_accurately(a: Point, b: Point, c: Point) -> f64 {
+    let (l, r) = ((b.x - a.x) * (c.y - a.y), (b.y - a.y) * (c.x - a.x));
+    let cross = l - r;
+    if cross.abs() >= (l.abs() + r.abs()) * 2f64.powi(-10) {
+        return cross;
+    }
     use super::double_double::DoubleDouble as Dd;
     let d = |p: f64, q: f64| Dd::from_f64(p).sub(Dd::from_f64(q));
     d(b.x, a.x).mul(d(c.y, a.y)).sub(d(b.y, a.y).mul(d(c.x, a.x))).to_f64()
