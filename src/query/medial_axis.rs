@@ -273,23 +273,29 @@ impl Diagram {
         if piece.sites.iter().any(|s| s.index() >= self.sites.len()) {
             return None;
         }
-        let position = |end: EdgeEnd| match end {
-            EdgeEnd::Vertex(v) => self.store.position.get(v.index()).copied().filter(|_| v.index() < self.finite_vertices),
-            EdgeEnd::Infinite { .. } => None,
+        let vertex = |end: EdgeEnd| match end {
+            EdgeEnd::Vertex(v) if v.index() < self.finite_vertices => Some(v.index()),
+            _ => None,
         };
         // the edge's own direction: the polyline of a parabola depends on it
         let [start, end] = if piece.reversed { [piece.ends[1], piece.ends[0]] } else { piece.ends };
-        let (start, end) = (position(start)?, position(end)?);
+        let (first, last) = (vertex(start)?, vertex(end)?);
+        let (start, end) = (self.store.position[first], self.store.position[last]);
         // the edge's own sites in its own order: on its left first
         let sites = if piece.reversed { [piece.sites[1], piece.sites[0]] } else { piece.sites };
         let site = self.sites[sites[0].index()];
         let with_clearance = |p: Point| [p.x, p.y, site.distance(p)];
         let skip = usize::from(!out.is_empty());
         let shape = self.shape_between(sites);
+        // the ends are vertices: their stored clearance
+        let at_vertex = |v: usize| {
+            let p = self.store.position[v];
+            [p.x, p.y, self.store.clearance[v]]
+        };
         if shape == EdgeShape::Line {
             // its two ends, as `polyline_into` gives them, without a buffer
-            let ends = if piece.reversed { [end, start] } else { [start, end] };
-            out.extend(ends.into_iter().skip(skip).map(with_clearance));
+            let ends = if piece.reversed { [last, first] } else { [first, last] };
+            out.extend(ends.into_iter().skip(skip).map(at_vertex));
             return Some(());
         }
         scratch.clear();
@@ -297,7 +303,13 @@ impl Diagram {
         if piece.reversed {
             scratch.reverse();
         }
-        out.extend(scratch.iter().skip(skip).copied().map(with_clearance));
+        let (head, tail) = if piece.reversed { (last, first) } else { (first, last) };
+        let n = scratch.len();
+        out.extend(scratch.iter().enumerate().skip(skip).map(|(k, &p)| match k {
+            0 => at_vertex(head),
+            k if k + 1 == n => at_vertex(tail),
+            _ => with_clearance(p),
+        }));
         Some(())
     }
 
