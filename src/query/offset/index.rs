@@ -64,6 +64,9 @@ pub(super) struct OffsetIndex {
     /// clearance on the cell's boundary, the site, and a leaf of `above`
     /// on that boundary; by that clearance.
     pub(super) circles: Vec<(f64, SiteId, u32)>,
+    /// Per finite vertex, then infinity, the clearance the offsets take
+    /// there (`Diagram::vertex_level`), computed once.
+    pub(super) levels: Vec<f64>,
     /// The components of what lies above a level: leaves are the finite
     /// vertices, then infinity.
     pub(super) above: LevelTree,
@@ -77,6 +80,9 @@ impl OffsetIndex {
         let edge_count = diagram.edges.len();
         let infinity = diagram.finite_vertices as u32;
         let outside = diagram.sites.len() as u32;
+        let mut levels: Vec<f64> =
+            (0..diagram.finite_vertices).map(|v| diagram.vertex_level(crate::diagram::VertexId::from_index(v), side)).collect();
+        levels.push(f64::INFINITY);
         let mut low = vec![f64::INFINITY; edge_count];
         let mut intervals = Vec::new();
         let mut above_links = Vec::new();
@@ -85,7 +91,7 @@ impl OffsetIndex {
             if !diagram.offset_may_cross(e, side) {
                 continue;
             }
-            let (lo, hi) = diagram.clearance_range(e, side);
+            let (lo, hi) = diagram.clearance_range(e, &levels);
             low[e.index()] = lo;
             intervals.push((lo, hi, e.index() as u32));
             let ends = diagram.end_vertices(e).map(|v| v.map_or(infinity, |v| v.index() as u32));
@@ -113,15 +119,13 @@ impl OffsetIndex {
         }
         circles.sort_by(|a, b| a.0.total_cmp(&b.0));
 
-        let mut vertex_levels: Vec<f64> =
-            (0..diagram.finite_vertices).map(|v| diagram.vertex_level(crate::diagram::VertexId::from_index(v), side)).collect();
-        vertex_levels.push(f64::INFINITY);
         OffsetIndex {
             side,
             edges: IntervalTree::new(intervals),
             rank,
             circles,
-            above: LevelTree::new(vertex_levels, above_links, true),
+            above: LevelTree::new(levels.clone(), above_links, true),
+            levels,
             below: LevelTree::new(vec![f64::NEG_INFINITY; diagram.sites.len() + 1], below_links, false),
         }
     }
@@ -181,16 +185,16 @@ impl Diagram {
 
     /// The lowest and highest clearance along edge `e` (input units;
     /// infinite at an end at infinity).
-    pub(super) fn clearance_range(&self, e: EdgeId, side: Side) -> (f64, f64) {
-        let [c0, c1] = self.end_levels(e, side);
+    pub(super) fn clearance_range(&self, e: EdgeId, levels: &[f64]) -> (f64, f64) {
+        let [c0, c1] = self.end_levels(e, levels);
         let interior = self.edge_track(e).and_then(|t| t.interior_minimum()).map_or(f64::INFINITY, |m| m * self.scale.to_input);
         (c0.min(c1).min(interior), c0.max(c1))
     }
 
     /// The clearance at both ends of `e` as the offsets on `side` take it
-    /// (see `vertex_level`); infinite at infinity.
-    pub(super) fn end_levels(&self, e: EdgeId, side: Side) -> [f64; 2] {
-        self.end_vertices(e).map(|v| v.map_or(f64::INFINITY, |v| self.vertex_level(v, side)))
+    /// (`levels`: see `OffsetIndex::levels`); infinite at infinity.
+    pub(super) fn end_levels(&self, e: EdgeId, levels: &[f64]) -> [f64; 2] {
+        self.end_vertices(e).map(|v| v.map_or(f64::INFINITY, |v| levels[v.index()]))
     }
 
     /// The clearance of vertex `v` as the vertices store it, but zero at a
@@ -198,7 +202,7 @@ impl Diagram {
     /// may not (a ring corner): so that around every cell the crossings
     /// alternate whatever the stored numbers, the part of a cell boundary
     /// the offsets do not cross counting as within the band.
-    pub(super) fn vertex_level(&self, v: crate::diagram::VertexId, side: Side) -> f64 {
+    fn vertex_level(&self, v: crate::diagram::VertexId, side: Side) -> f64 {
         let off_side = self.has_domain()
             && self.vertex_half_edges(v).is_some_and(|out| out.iter().any(|h| !self.offset_may_cross(h.edge(), side)));
         if off_side {

@@ -232,7 +232,7 @@ impl Diagram {
             if from.distance(to) > near {
                 continue;
             }
-            let centre = self.point_site(span.site);
+            let centre = self.sites[span.site.index()].as_point();
             whole[k] = centre.is_some() && self.span_leaves(span, from, near);
             let whole = whole[k];
             if !whole && (from == to || centre.is_some_and(|c| approximation::sweep(c, from, to, true) > std::f64::consts::PI)) {
@@ -278,7 +278,7 @@ impl Diagram {
                 if !empty[k as usize] {
                     faces.get_or_insert((self.above_leaf(span.rising_on, infinity), span.site.index() as u32));
                     let (from, to) = (traced.crossings[span.from as usize].at, traced.crossings[span.to as usize].at);
-                    pieces.push(match self.point_site(span.site) {
+                    pieces.push(match self.sites[span.site.index()].as_point() {
                         Some(centre) => {
                             OffsetPiece::Arc { centre, radius: r, from, to, counter_clockwise: true, site: span.site }
                         }
@@ -300,7 +300,7 @@ impl Diagram {
         // Whole circles in cells the level never leaves.
         let first_circle = index.circles.partition_point(|c| side.in_band(c.0, threshold));
         for &(_, site, leaf) in &index.circles[first_circle..] {
-            let centre = self.point_site(site).expect("a point site");
+            let centre = self.sites[site.index()].as_point().expect("a point site");
             let at = Point::new(centre.x + r, centre.y);
             loops.push((
                 vec![OffsetPiece::Arc { centre, radius: r, from: at, to: at, counter_clockwise: true, site }],

@@ -13,9 +13,9 @@
 //! segment site, with the band on its left). The falling crossing is the
 //! rising crossing of the cell across the edge, where the loop goes on.
 
-use super::index::{OffsetIndex, Side};
+use super::index::OffsetIndex;
 use crate::diagram::{Diagram, EdgeId, SiteId};
-use crate::geometry::{Point, Site};
+use crate::geometry::Point;
 use crate::query::HalfEdge;
 
 /// Within this fraction of the distance a crossing is taken to be at the
@@ -83,7 +83,7 @@ impl Diagram {
         let mut views = Vec::new();
         for &e in &hits {
             let e = EdgeId::from_index(e as usize);
-            let placed = self.edge_crossings(e, side, r);
+            let placed = self.edge_crossings(e, index, r);
             let n = placed.len();
             let [h, t] = self.half_edges(e).expect("in range");
             let cells = [h, t].map(|h| self.half_edge_cell(h).expect("in range").index() as u32);
@@ -136,8 +136,9 @@ impl Diagram {
 
     /// Where edge `e` crosses the level `r`, in the order of its
     /// `ends[0] → ends[1]`, each with whether the clearance rises there.
-    fn edge_crossings(&self, e: EdgeId, side: Side, r: f64) -> Vec<(Point, bool)> {
-        let [c0, c1] = self.end_levels(e, side);
+    fn edge_crossings(&self, e: EdgeId, index: &OffsetIndex, r: f64) -> Vec<(Point, bool)> {
+        let side = index.side;
+        let [c0, c1] = self.end_levels(e, &index.levels);
         let threshold = side.threshold(r);
         let (b0, b1) = (side.in_band(c0, threshold), side.in_band(c1, threshold));
         let track = self.edge_track(e);
@@ -221,13 +222,5 @@ impl Diagram {
             }
         }
         true
-    }
-
-    /// Whether a site is a point (offset pieces there are arcs).
-    pub(super) fn point_site(&self, s: SiteId) -> Option<Point> {
-        match self.sites[s.index()] {
-            Site::Point(p) => Some(p),
-            _ => None,
-        }
     }
 }
