@@ -22,6 +22,11 @@ use crate::error::{Error, ErrorKind};
 use crate::geometry::Point;
 use index::{OffsetIndex, Side};
 
+/// Points of an offset at distance `r` closer than `COINCIDENT × r` are one
+/// point: the ends of a span that goes nowhere, a loop that is the trace of
+/// a part with no interior.
+const COINCIDENT: f64 = 1e-9;
+
 /// One piece of an offset loop, in the loop's direction. Every piece lies
 /// in the cell of one site and is at the offset's distance from it. More
 /// kinds may come with more site kinds, so a `match` outside this crate
@@ -220,45 +225,8 @@ impl Diagram {
         let mut traced = self.trace(index, r);
         let infinity = self.finite_vertices as u32;
 
-        // A span whose ends meet, with the cell boundary between them
-        // going nowhere, is nothing (a whole circle if it goes round); one
-        // that rounding left the wrong way round is nothing too.
-        let near = 1e-9 * r;
-        let mut empty = vec![false; traced.spans.len()];
-        let mut whole = vec![false; traced.spans.len()];
-        let mut moved_to: Vec<u32> = (0..traced.crossings.len() as u32).collect();
-        for (k, span) in traced.spans.iter().enumerate() {
-            let (from, to) = (traced.crossings[span.from as usize].at, traced.crossings[span.to as usize].at);
-            if from.distance(to) > near {
-                continue;
-            }
-            let centre = self.sites[span.site.index()].as_point();
-            whole[k] = centre.is_some() && self.span_leaves(span, from, near);
-            let whole = whole[k];
-            if !whole && (from == to || centre.is_some_and(|c| approximation::sweep(c, from, to, true) > std::f64::consts::PI)) {
-                empty[k] = true;
-                moved_to[span.to as usize] = span.from;
-            }
-        }
-        // the end of a dropped span moves to its start (through chains of
-        // them), so that the pieces on either side still meet
-        for c in 0..moved_to.len() {
-            let mut at = c as u32;
-            for _ in 0..moved_to.len() {
-                if moved_to[at as usize] == at {
-                    break;
-                }
-                at = moved_to[at as usize];
-            }
-            traced.crossings[c].at = traced.crossings[at as usize].at;
-        }
-        // what the moves closed up is nothing too
-        for (k, span) in traced.spans.iter().enumerate() {
-            if !whole[k] && traced.crossings[span.from as usize].at == traced.crossings[span.to as usize].at {
-                empty[k] = true;
-            }
-        }
-
+        let empty = self.drop_empty_spans(&mut traced, r);
+        let near = COINCIDENT * r;
         split_at_touching_points(&mut traced);
 
         // Follow the spans into loops; each loop's two regions (a leaf of
@@ -330,6 +298,51 @@ impl Diagram {
             })
             .collect();
         Offset { distance, loops }
+    }
+
+    /// Which spans are nothing: a span whose ends meet, with the cell
+    /// boundary between them going nowhere (a whole circle if it goes
+    /// round), or one that rounding left the wrong way round. The end of a
+    /// dropped span moves to its start, so the pieces either side still
+    /// meet.
+    fn drop_empty_spans(&self, traced: &mut trace::Traced, r: f64) -> Vec<bool> {
+        let near = COINCIDENT * r;
+        let mut empty = vec![false; traced.spans.len()];
+        let mut whole = vec![false; traced.spans.len()];
+        let mut moved_to: Vec<u32> = (0..traced.crossings.len() as u32).collect();
+        for (k, span) in traced.spans.iter().enumerate() {
+            let (from, to) = (traced.crossings[span.from as usize].at, traced.crossings[span.to as usize].at);
+            if from.distance(to) > near {
+                continue;
+            }
+            let centre = self.sites[span.site.index()].as_point();
+            whole[k] = centre.is_some() && self.span_leaves(span, from, near);
+            let whole = whole[k];
+            if !whole && (from == to || centre.is_some_and(|c| approximation::sweep(c, from, to, true) > std::f64::consts::PI)) {
+                empty[k] = true;
+                moved_to[span.to as usize] = span.from;
+            }
+        }
+        // the end of a dropped span moves to its start (through chains of
+        // them), so that the pieces on either side still meet
+        for c in 0..moved_to.len() {
+            let mut at = c as u32;
+            for _ in 0..moved_to.len() {
+                if moved_to[at as usize] == at {
+                    break;
+                }
+                at = moved_to[at as usize];
+            }
+            traced.crossings[c].at = traced.crossings[at as usize].at;
+        }
+        // what the moves closed up is nothing too
+        for (k, span) in traced.spans.iter().enumerate() {
+            if !whole[k] && traced.crossings[span.from as usize].at == traced.crossings[span.to as usize].at {
+                empty[k] = true;
+            }
+        }
+
+        empty
     }
 
     /// The parent and depth of each loop. Each loop separates one region
