@@ -119,6 +119,49 @@ impl Grid {
     }
 }
 
+/// Each segment's cells, sorted, in one flat array.
+pub(crate) struct SegmentCells {
+    pub(crate) cells: Vec<u64>,
+    /// Segment `i` owns `cells[start[i]..start[i + 1]]`.
+    start: Vec<usize>,
+}
+
+impl SegmentCells {
+    pub(crate) fn new(grid: &Grid, segments: &[(usize, [Point; 2])]) -> SegmentCells {
+        let mut cells = Vec::with_capacity(4 * segments.len());
+        let mut start = Vec::with_capacity(segments.len() + 1);
+        start.push(0);
+        for (_, [a, b]) in segments {
+            let from = cells.len();
+            grid.cover(*a, *b, &mut cells);
+            cells[from..].sort_unstable();
+            start.push(cells.len());
+        }
+        SegmentCells { cells, start }
+    }
+
+    pub(crate) fn of(&self, i: u32) -> &[u64] {
+        &self.cells[self.start[i as usize]..self.start[i as usize + 1]]
+    }
+
+    /// The smallest cell of both segments (a merge of two sorted lists).
+    pub(crate) fn first_common(&self, i: u32, j: u32) -> Option<u64> {
+        let (mut x, mut y) = (self.of(i).iter().peekable(), self.of(j).iter().peekable());
+        while let (Some(&&p), Some(&&q)) = (x.peek(), y.peek()) {
+            match p.cmp(&q) {
+                std::cmp::Ordering::Less => {
+                    x.next();
+                }
+                std::cmp::Ordering::Greater => {
+                    y.next();
+                }
+                std::cmp::Ordering::Equal => return Some(p),
+            }
+        }
+        None
+    }
+}
+
 /// The smallest box holding every segment.
 pub(crate) fn bounding_box(segments: &[(usize, [Point; 2])]) -> (Point, Point) {
     let mut lo = Point::new(f64::INFINITY, f64::INFINITY);

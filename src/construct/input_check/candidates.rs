@@ -24,8 +24,7 @@
 use super::classify::{point_conflict, segment_conflict};
 use super::normalise::Normalised;
 use super::Conflict;
-use crate::construct::grid::{bounding_box, Grid};
-use crate::geometry::Point;
+use crate::construct::grid::{bounding_box, Grid, SegmentCells};
 
 /// The first conflict (segment pairs in input order first, then
 /// (point, segment) pairs), found through the grid.
@@ -71,49 +70,6 @@ pub(super) fn find_conflict(norm: &Normalised) -> Option<Conflict> {
         return segment_conflict(norm, i as usize, j as usize);
     }
     best_point.and_then(|(p, s)| point_conflict(norm, p as usize, s as usize))
-}
-
-/// Each segment's cells, sorted, in one flat array.
-struct SegmentCells {
-    cells: Vec<u64>,
-    /// Segment `i` owns `cells[start[i]..start[i + 1]]`.
-    start: Vec<usize>,
-}
-
-impl SegmentCells {
-    fn new(grid: &Grid, segments: &[(usize, [Point; 2])]) -> SegmentCells {
-        let mut cells = Vec::with_capacity(4 * segments.len());
-        let mut start = Vec::with_capacity(segments.len() + 1);
-        start.push(0);
-        for (_, [a, b]) in segments {
-            let from = cells.len();
-            grid.cover(*a, *b, &mut cells);
-            cells[from..].sort_unstable();
-            start.push(cells.len());
-        }
-        SegmentCells { cells, start }
-    }
-
-    fn of(&self, i: u32) -> &[u64] {
-        &self.cells[self.start[i as usize]..self.start[i as usize + 1]]
-    }
-
-    /// The smallest cell of both segments (a merge of two sorted lists).
-    fn first_common(&self, i: u32, j: u32) -> Option<u64> {
-        let (mut x, mut y) = (self.of(i).iter().peekable(), self.of(j).iter().peekable());
-        while let (Some(&&p), Some(&&q)) = (x.peek(), y.peek()) {
-            match p.cmp(&q) {
-                std::cmp::Ordering::Less => {
-                    x.next();
-                }
-                std::cmp::Ordering::Greater => {
-                    y.next();
-                }
-                std::cmp::Ordering::Equal => return Some(p),
-            }
-        }
-        None
-    }
 }
 
 /// All `(cell, item)` pairs sorted, where items `0..m` are the kept segments
