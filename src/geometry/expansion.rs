@@ -79,6 +79,13 @@ impl Expansion {
         }
     }
 
+    /// The number rounded to a double, within an ulp or so: the components
+    /// do not overlap, so summing from the smallest loses at most the last
+    /// bits.
+    pub(crate) fn approximate(&self) -> f64 {
+        self.components.iter().sum()
+    }
+
     /// Negates the number.
     pub(crate) fn negate(&mut self) {
         self.components.iter_mut().for_each(|c| *c = -*c);

@@ -28,6 +28,7 @@ pub(crate) mod segment_contact;
 pub(crate) mod segment_predicates;
 pub(crate) mod segment_solvers;
 pub mod site;
+pub(crate) mod snap;
 pub mod solvers;
 pub(crate) mod vertex_placement;
 

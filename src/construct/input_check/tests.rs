@@ -1,7 +1,8 @@
 //! Tests of the input check: normalisation, conflicts, exactness, the grid
 //! against brute force, and a large input.
 
-use super::candidates::{find_conflict, Grid};
+use super::candidates::find_conflict;
+use crate::construct::grid::Grid;
 use super::classify::{point_conflict, segment_conflict};
 use super::normalise::{normalise, Normalised};
 use super::*;

@@ -1,0 +1,168 @@
+//! The geometry of snap rounding (used by `construct::split` to make an
+//! input that crosses itself into one that does not): a grid of square
+//! *pixels* whose centres are exactly representable, the pixel of a point,
+//! the exact test "does this closed segment meet this closed pixel", and an
+//! accurate crossing point of two segments.
+//!
+//! # The pixel size
+//! For coordinates of magnitude below 2^e the pixel side is δ = 2^(e − 46).
+//! Centres are the multiples m·δ (|m| ≤ 2^46) and corners the odd multiples
+//! of δ/2, so both are exact doubles: at magnitude 2^e an ulp is 2^(e − 52),
+//! and δ/2 is 32 of them. A crossing point computed by [`crossing_point`] is
+//! within 2^(e − 50) of the true one (see there), an eighth of δ; the pixels
+//! within that radius ([`PixelGrid::pixels_near`]) hold the true crossing.
+
+use super::expansion::Expansion;
+use super::predicates::{exact_orientation, Orientation};
+use super::Point;
+
+/// A pixel by its integer centre coordinates: the centre is `m · size`.
+pub(crate) type Pixel = [i64; 2];
+
+/// The grid of pixels for one input.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PixelGrid {
+    /// The pixel side δ, a power of two.
+    size: f64,
+    /// 1 / δ, also a power of two.
+    inverse: f64,
+}
+
+/// log2 of (the power of two above the largest coordinate) / δ.
+const PIXELS_PER_MAGNITUDE_LOG2: i32 = 46;
+
+impl PixelGrid {
+    /// The grid for coordinates of magnitude at most `max_abs` (finite).
+    pub(crate) fn for_magnitude(max_abs: f64) -> PixelGrid {
+        // the power of two 2^e > max_abs (at least the smallest normal, so
+        // that the pixel stays a normal number)
+        let mut top = f64::MIN_POSITIVE * 2f64.powi(PIXELS_PER_MAGNITUDE_LOG2 + 2);
+        while top <= max_abs {
+            top *= 2.0;
+        }
+        let size = top * 2f64.powi(-PIXELS_PER_MAGNITUDE_LOG2);
+        PixelGrid { size, inverse: 1.0 / size }
+    }
+
+    /// The pixel side δ.
+    pub(crate) fn size(&self) -> f64 {
+        self.size
+    }
+
+    /// The pixel holding `p`: the nearest centre (ties away from zero; a
+    /// point on a pixel's side belongs to both, and this picks one).
+    pub(crate) fn pixel_of(&self, p: Point) -> Pixel {
+        // x / δ is exact (a power of two) and below 2^47 in magnitude.
+        [(p.x * self.inverse).round() as i64, (p.y * self.inverse).round() as i64]
+    }
+
+    /// The centre of a pixel, exactly.
+    pub(crate) fn centre(&self, pixel: Pixel) -> Point {
+        Point::new(pixel[0] as f64 * self.size, pixel[1] as f64 * self.size)
+    }
+
+    /// Every pixel that meets the square of half-side δ/8 around `p` (one,
+    /// two or four): where a computed crossing point may be, the true one
+    /// is in one of them.
+    pub(crate) fn pixels_near(&self, p: Point, out: &mut Vec<Pixel>) {
+        let r = self.size / 8.0;
+        let [x0, y0] = self.pixel_of(Point::new(p.x - r, p.y - r));
+        let [x1, y1] = self.pixel_of(Point::new(p.x + r, p.y + r));
+        for x in x0..=x1 {
+            for y in y0..=y1 {
+                out.push([x, y]);
+            }
+        }
+    }
+
+    /// Whether the closed segment `ab` meets the closed pixel, decided
+    /// exactly: the corners are exact doubles, and the segment meets the
+    /// square when their bounding boxes overlap and the square's corners
+    /// are not all strictly on one side of the segment's line.
+    pub(crate) fn meets(&self, pixel: Pixel, a: Point, b: Point) -> bool {
+        let half = self.size / 2.0;
+        let c = self.centre(pixel);
+        let (x0, x1, y0, y1) = (c.x - half, c.x + half, c.y - half, c.y + half);
+        if a.x.max(b.x) < x0 || a.x.min(b.x) > x1 || a.y.max(b.y) < y0 || a.y.min(b.y) > y1 {
+            return false;
+        }
+        let corners = [Point::new(x0, y0), Point::new(x1, y0), Point::new(x1, y1), Point::new(x0, y1)];
+        let sides = corners.map(|q| exact_orientation(a, b, q));
+        !(sides.iter().all(|&s| s == Orientation::Clockwise) || sides.iter().all(|&s| s == Orientation::CounterClockwise))
+    }
+}
+
+/// The point where segments `s` and `t` cross (they cross properly: each
+/// has its endpoints strictly on both sides of the other's line).
+///
+/// With `o_a`, `o_b` the orientations of `a` and `b` against `t`'s line,
+/// the crossing is `a + (o_a / (o_a − o_b)) (b − a)`. The orientations are
+/// evaluated exactly and rounded once, and as they have opposite signs the
+/// difference does not cancel: the parameter is within 3 ulps, and the point
+/// within about 6 ulps of the largest coordinate, however small the angle
+/// between the segments.
+pub(crate) fn crossing_point(s: [Point; 2], t: [Point; 2]) -> Point {
+    let [a, b] = s;
+    let (oa, ob) = (orientation_value(t[0], t[1], a), orientation_value(t[0], t[1], b));
+    let u = oa / (oa - ob);
+    if !u.is_finite() {
+        return a; // not a proper crossing; the caller never asks this
+    }
+    Point::new(a.x + u * (b.x - a.x), a.y + u * (b.y - a.y))
+}
+
+/// `(b − a) × (c − a)`, computed exactly and then rounded.
+fn orientation_value(a: Point, b: Point, c: Point) -> f64 {
+    let mut e = Expansion::default();
+    e.add_product_of_differences((b.x, a.x), (c.y, a.y));
+    e.add_product_of_differences((b.y, a.y), (a.x, c.x));
+    e.approximate()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    #[test]
+    fn pixel_centres_and_corners_are_exact() {
+        let grid = PixelGrid::for_magnitude(1000.0);
+        assert_eq!(grid.size(), 1024.0 * 2f64.powi(-46));
+        let q = p(999.123456789, -0.000123);
+        let c = grid.centre(grid.pixel_of(q));
+        assert!((c.x - q.x).abs() <= grid.size() / 2.0 && (c.y - q.y).abs() <= grid.size() / 2.0);
+        assert_eq!(grid.pixel_of(c), grid.pixel_of(q));
+    }
+
+    #[test]
+    fn a_segment_meets_the_pixels_it_passes_through() {
+        let grid = PixelGrid::for_magnitude(10.0);
+        let (a, b) = (p(0.0, 0.0), p(7.0, 3.0));
+        for k in 0..100 {
+            let on = p(7.0 * k as f64 / 99.0, 3.0 * k as f64 / 99.0);
+            assert!(grid.meets(grid.pixel_of(on), a, b));
+        }
+        let off = p(3.5, 1.5 + 4.0 * grid.size());
+        assert!(!grid.meets(grid.pixel_of(off), a, b));
+        // touching a corner only counts: the square is closed
+        let pixel = [3, 0];
+        let corner = p(3.5 * grid.size(), 0.5 * grid.size());
+        assert!(grid.meets(pixel, corner, p(5.0, 5.0)));
+    }
+
+    #[test]
+    fn crossing_points_are_accurate_at_tiny_angles() {
+        let s = [p(0.0, 0.0), p(1.0, 1e-12)];
+        let t = [p(0.0, 1e-12), p(1.0, -3e-12)];
+        let x = crossing_point(s, t);
+        // exact: 1e-12 x = 1e-12 - 4e-12 x, so x = 0.2
+        assert!((x.x - 0.2).abs() < 1e-15, "{x:?}");
+        let grid = PixelGrid::for_magnitude(1.0);
+        let mut near = Vec::new();
+        grid.pixels_near(x, &mut near);
+        assert!(near.contains(&grid.pixel_of(p(0.2, 0.2e-12))));
+    }
+}
