@@ -34,6 +34,7 @@ mod insertion_order;
 pub(crate) mod polygon_input;
 mod renumber;
 mod restart;
+mod split;
 mod state;
 
 pub use builder::{Builder, MAX_POINTS};

@@ -49,11 +49,18 @@ impl PixelGrid {
         self.size
     }
 
-    /// The pixel holding `p`: the nearest centre (ties away from zero; a
-    /// point on a pixel's side belongs to both, and this picks one).
+    /// The pixel holding `p`. Pixels are half-open, `[m − ½, m + ½) δ` on
+    /// each axis, so they tile the plane and every point is in exactly one.
     pub(crate) fn pixel_of(&self, p: Point) -> Pixel {
-        // x / δ is exact (a power of two) and below 2^47 in magnitude.
-        [(p.x * self.inverse).round() as i64, (p.y * self.inverse).round() as i64]
+        [self.index(p.x), self.index(p.y)]
+    }
+
+    /// `floor(x / δ + ½)`, exactly: x / δ is exact (a power of two) and
+    /// below 2^47 in magnitude, and so is its distance to its floor.
+    fn index(&self, x: f64) -> i64 {
+        let v = x * self.inverse;
+        let floor = v.floor();
+        floor as i64 + i64::from(v - floor >= 0.5)
     }
 
     /// The centre of a pixel, exactly.
@@ -75,20 +82,55 @@ impl PixelGrid {
         }
     }
 
-    /// Whether the closed segment `ab` meets the closed pixel, decided
-    /// exactly: the corners are exact doubles, and the segment meets the
-    /// square when their bounding boxes overlap and the square's corners
-    /// are not all strictly on one side of the segment's line.
+    /// Whether the closed segment `ab` meets the half-open pixel, decided
+    /// exactly.
+    ///
+    /// The half-open square `[x0, x1) × [y0, y1)` is met when the closed
+    /// square `[x0, x1 − ε] × [y0, y1 − ε']` is, for infinitesimal
+    /// `0 < ε' ≪ ε`: their bounding boxes overlap, and the (symbolically
+    /// moved) corners are not all strictly on one side of the segment's
+    /// line. The corners are exact doubles, so each side is an exact sign,
+    /// and where it is zero the moved corner's side is the sign of the
+    /// first nonzero derivative.
     pub(crate) fn meets(&self, pixel: Pixel, a: Point, b: Point) -> bool {
         let half = self.size / 2.0;
         let c = self.centre(pixel);
         let (x0, x1, y0, y1) = (c.x - half, c.x + half, c.y - half, c.y + half);
-        if a.x.max(b.x) < x0 || a.x.min(b.x) > x1 || a.y.max(b.y) < y0 || a.y.min(b.y) > y1 {
+        if a.x.max(b.x) < x0 || a.x.min(b.x) >= x1 || a.y.max(b.y) < y0 || a.y.min(b.y) >= y1 {
             return false;
         }
-        let corners = [Point::new(x0, y0), Point::new(x1, y0), Point::new(x1, y1), Point::new(x0, y1)];
-        let sides = corners.map(|q| exact_orientation(a, b, q));
-        !(sides.iter().all(|&s| s == Orientation::Clockwise) || sides.iter().all(|&s| s == Orientation::CounterClockwise))
+        // Moving a point by −ε along x changes (b − a) × (q − a) by
+        // ε (b.y − a.y); by −ε' along y, by −ε' (b.x − a.x).
+        let along_x = sign(b.y - a.y);
+        let along_y = -sign(b.x - a.x);
+        let side = |q: Point, moved_x: bool, moved_y: bool| {
+            let exact = match exact_orientation(a, b, q) {
+                Orientation::CounterClockwise => 1,
+                Orientation::Clockwise => -1,
+                Orientation::Collinear => 0,
+            };
+            [exact, if moved_x { along_x } else { 0 }, if moved_y { along_y } else { 0 }]
+                .into_iter()
+                .find(|&s| s != 0)
+                .unwrap_or(0)
+        };
+        let sides = [
+            side(Point::new(x0, y0), false, false),
+            side(Point::new(x1, y0), true, false),
+            side(Point::new(x1, y1), true, true),
+            side(Point::new(x0, y1), false, true),
+        ];
+        !(sides.iter().all(|&s| s < 0) || sides.iter().all(|&s| s > 0))
+    }
+}
+
+fn sign(x: f64) -> i8 {
+    if x > 0.0 {
+        1
+    } else if x < 0.0 {
+        -1
+    } else {
+        0
     }
 }
 
@@ -147,10 +189,17 @@ mod tests {
         }
         let off = p(3.5, 1.5 + 4.0 * grid.size());
         assert!(!grid.meets(grid.pixel_of(off), a, b));
-        // touching a corner only counts: the square is closed
-        let pixel = [3, 0];
-        let corner = p(3.5 * grid.size(), 0.5 * grid.size());
-        assert!(grid.meets(pixel, corner, p(5.0, 5.0)));
+        // pixels are half-open: of the four around a corner, a segment
+        // through it only meets the one whose lower-left corner it is
+        let d = grid.size();
+        let corner = p(3.5 * d, 0.5 * d);
+        let (from, to) = (p(corner.x - d, corner.y - d), p(corner.x + d, corner.y + d));
+        let met: Vec<bool> = [[3, 0], [4, 0], [3, 1], [4, 1]].iter().map(|&q| grid.meets(q, from, to)).collect();
+        assert_eq!(met, [true, false, false, true]);
+        let (from, to) = (p(corner.x - d, corner.y + d), p(corner.x + d, corner.y - d));
+        let met: Vec<bool> = [[3, 0], [4, 0], [3, 1], [4, 1]].iter().map(|&q| grid.meets(q, from, to)).collect();
+        assert_eq!(met, [false, true, true, true]);
+        assert_eq!(grid.pixel_of(corner), [4, 1]);
     }
 
     #[test]

@@ -1,0 +1,205 @@
+use super::*;
+use crate::geometry::segment_contact::{inside_segment, segment_contact};
+use crate::splitmix::SplitMix64;
+
+fn p(x: f64, y: f64) -> Point {
+    Point::new(x, y)
+}
+
+/// Every pair, by brute force: whether anything meets other than at a
+/// common endpoint.
+/// (In the builder's coordinates, as the strict check works: a power of
+/// two away from tiny inputs' subnormal numbers.)
+fn contacts_by_brute_force(out: &SplitInput) -> usize {
+    let scale = Scale::for_coordinates(out.points.iter().chain(out.pieces.iter().flat_map(|p| &p.ends)).flat_map(|p| [p.x, p.y]));
+    let internal = |p: Point| p.scaled(scale.to_internal);
+    let proper: Vec<[Point; 2]> = out.pieces.iter().map(|p| p.ends.map(internal)).filter(|e| e[0] != e[1]).collect();
+    let mut lone: Vec<Point> = out.points.iter().map(|&p| internal(p)).collect();
+    lone.extend(out.pieces.iter().filter(|p| p.ends[0] == p.ends[1]).map(|p| internal(p.ends[0])));
+    let mut n = 0;
+    for i in 0..proper.len() {
+        for j in i + 1..proper.len() {
+            n += usize::from(segment_contact(proper[i], proper[j]).is_some());
+        }
+        n += lone.iter().filter(|&&q| inside_segment(q, proper[i])).count();
+    }
+    n
+}
+
+fn distance_to_segment(q: Point, [a, b]: [Point; 2]) -> f64 {
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 == 0.0 { 0.0 } else { (((q.x - a.x) * dx + (q.y - a.y) * dy) / len2).clamp(0.0, 1.0) };
+    q.distance(p(a.x + t * dx, a.y + t * dy))
+}
+
+/// The guarantees of the module documentation, checked by brute force.
+fn check(points: &[Point], segments: &[[Point; 2]]) -> SplitInput {
+    let out = split(points, segments).expect("splitting converges");
+    assert_eq!(contacts_by_brute_force(&out), 0, "pieces still meet: {segments:?}");
+    // measured in the builder's coordinates (tiny inputs' products underflow)
+    let scale = Scale::for_coordinates(points.iter().chain(segments.iter().flatten()).flat_map(|p| [p.x, p.y]));
+    let segments: Vec<[Point; 2]> = segments.iter().map(|s| s.map(|q| q.scaled(scale.to_internal))).collect();
+    let mut scaled = out.clone();
+    scaled.pieces.iter_mut().for_each(|p| p.ends = p.ends.map(|q| q.scaled(scale.to_internal)));
+    scaled.pixel *= scale.to_internal;
+    check_distances(&segments, &scaled);
+    out
+}
+
+fn check_distances(segments: &[[Point; 2]], out: &SplitInput) {
+    // (plus the rounding of the distances themselves)
+    let extent = segments.iter().flatten().map(|q| q.x.abs().max(q.y.abs())).fold(0.0, f64::max);
+    let bound = (out.rounds as f64) * out.pixel * std::f64::consts::FRAC_1_SQRT_2 * 1.000001 + 1e-14 * extent;
+    let mut pieces_of = vec![Vec::new(); segments.len()];
+    for (k, piece) in out.pieces.iter().enumerate() {
+        assert!(!piece.origins.is_empty() && piece.origins.windows(2).all(|w| w[0] < w[1]));
+        for &i in &piece.origins {
+            pieces_of[i as usize].push(k);
+            for q in piece.ends {
+                let d = distance_to_segment(q, segments[i as usize]);
+                assert!(d <= bound, "piece {k} is {d} from segment {i} (bound {bound})");
+            }
+        }
+    }
+    // the pieces cover each input segment up to the bound
+    for (i, s) in segments.iter().enumerate() {
+        let length = s[0].distance(s[1]);
+        if length <= 2.0 * bound {
+            continue; // may have become a point
+        }
+        for k in 0..=16 {
+            let t = k as f64 / 16.0;
+            let q = p(s[0].x + t * (s[1].x - s[0].x), s[0].y + t * (s[1].y - s[0].y));
+            let d = pieces_of[i].iter().map(|&k| distance_to_segment(q, out.pieces[k].ends)).fold(f64::INFINITY, f64::min);
+            assert!(d <= bound, "segment {i} not covered at {q:?}: {d} (bound {bound})");
+        }
+    }
+    // a segment that meets nothing is kept exactly
+    if out.rounds == 0 {
+        assert_eq!(out.pieces.len(), segments.len());
+        for (piece, s) in out.pieces.iter().zip(segments) {
+            assert_eq!(piece.ends, *s);
+        }
+    }
+}
+
+#[test]
+fn two_crossing_segments_become_four_pieces() {
+    let out = check(&[], &[[p(0.0, 0.0), p(2.0, 2.0)], [p(0.0, 2.0), p(2.0, 0.0)]]);
+    assert_eq!((out.crossings, out.pieces.len(), out.rounds), (1, 4, 1));
+    // (1, 1) is a pixel centre: the crossing is exact
+    assert!(out.pieces.iter().all(|piece| piece.ends.contains(&p(1.0, 1.0))));
+}
+
+#[test]
+fn an_irrational_crossing_is_snapped_within_a_pixel() {
+    let out = check(&[], &[[p(0.0, 0.0), p(3.0, 1.0)], [p(1.0, 1.0), p(2.0, -1.0)]]);
+    assert_eq!((out.crossings, out.pieces.len()), (1, 4));
+}
+
+#[test]
+fn overlaps_share_their_common_part() {
+    let out = check(&[], &[[p(0.0, 0.0), p(10.0, 0.0)], [p(5.0, 0.0), p(15.0, 0.0)], [p(2.0, 0.0), p(3.0, 0.0)]]);
+    assert_eq!(out.overlaps, 2);
+    let shared: Vec<&Piece> = out.pieces.iter().filter(|p| p.origins.len() > 1).collect();
+    assert_eq!(shared.len(), 2, "{:?}", out.pieces);
+    assert!(shared.iter().any(|p| p.origins == [0, 1]) && shared.iter().any(|p| p.origins == [0, 2]));
+}
+
+#[test]
+fn t_junctions_and_points_inside_segments_become_endpoints() {
+    let out = check(&[p(7.0, 0.0), p(50.0, 50.0)], &[[p(0.0, 0.0), p(10.0, 0.0)], [p(3.0, 0.0), p(3.0, 5.0)]]);
+    assert_eq!(out.touchings, 2);
+    assert_eq!(out.pieces.len(), 4);
+    assert_eq!(out.points, vec![p(7.0, 0.0), p(50.0, 50.0)]);
+}
+
+#[test]
+fn an_input_without_contacts_is_kept_exactly() {
+    let s = [[p(0.1, 0.2), p(0.3, 0.7)], [p(0.3, 0.7), p(1.0 / 3.0, -5.0)]];
+    let out = check(&[p(0.5, 0.5)], &s);
+    assert_eq!(out.rounds, 0);
+}
+
+#[test]
+fn many_lines_through_one_point_and_a_grid_of_crossings() {
+    let mut segments = Vec::new();
+    for k in 0..24 {
+        let angle = k as f64 * std::f64::consts::PI / 24.0;
+        let (c, s) = (angle.cos(), angle.sin());
+        segments.push([p(0.3 - c, 0.7 - s), p(0.3 + c, 0.7 + s)]);
+    }
+    check(&[], &segments);
+    let mut grid = Vec::new();
+    for k in 0..20 {
+        let t = k as f64 * 0.1 + 0.013;
+        grid.push([p(t, -0.1), p(t + 0.001, 2.1)]);
+        grid.push([p(-0.1, t), p(2.1, t - 0.0007)]);
+    }
+    let out = check(&[], &grid);
+    assert_eq!(out.crossings, 400);
+}
+
+#[test]
+fn nearly_parallel_crossings_and_huge_or_tiny_coordinates() {
+    for scale in [1.0, 1e-300, 1e300, 3.0e-7] {
+        let s = [
+            [p(0.0, 0.0), p(scale, scale * 1e-13)],
+            [p(0.0, scale * 1e-13), p(scale, -scale * 3e-13)],
+            [p(0.0, scale * 2e-13), p(scale, -scale * 1e-13)],
+        ];
+        let out = check(&[], &s);
+        assert!(out.crossings >= 2, "{scale}: {}", out.crossings);
+    }
+}
+
+#[test]
+fn random_segments_crossing_everywhere() {
+    let mut rng = SplitMix64(11);
+    for round in 0..300 {
+        let n = 2 + (round % 25);
+        let integer = round % 3 == 0;
+        let coordinate = |rng: &mut SplitMix64| {
+            let u = rng.unit();
+            if integer {
+                (u * 6.0).floor()
+            } else {
+                u * 10.0 - 3.0
+            }
+        };
+        let segments: Vec<[Point; 2]> = (0..n)
+            .map(|_| {
+                let a = p(coordinate(&mut rng), coordinate(&mut rng));
+                [a, p(coordinate(&mut rng), coordinate(&mut rng))]
+            })
+            .collect();
+        let points: Vec<Point> = (0..round % 4).map(|_| p(coordinate(&mut rng), coordinate(&mut rng))).collect();
+        check(&points, &segments);
+        // the same input mirrored and reversed splits as well
+        let mirrored: Vec<[Point; 2]> = segments.iter().rev().map(|[a, b]| [p(-b.x, b.y), p(-a.x, a.y)]).collect();
+        check(&points, &mirrored);
+    }
+}
+
+#[test]
+fn long_segments_crossing_at_tiny_angles_and_in_one_spot() {
+    let mut rng = SplitMix64(5);
+    for case in 0..12 {
+        let n = 10 + case * 4;
+        let segments: Vec<[Point; 2]> = (0..n)
+            .map(|k| {
+                if case % 2 == 0 {
+                    let a = p(rng.unit() * 100.0, rng.unit() * 100.0);
+                    [a, p(rng.unit() * 100.0, rng.unit() * 100.0)]
+                } else {
+                    // every pair crosses within 1e-9 of (500, 0.5)
+                    let y0 = k as f64 * 0.01;
+                    [p(0.0, y0 + rng.unit() * 1e-9), p(1000.0, 1.0 - y0 + rng.unit() * 1e-9)]
+                }
+            })
+            .collect();
+        let out = check(&[], &segments);
+        assert!(out.rounds <= 3, "case {case}: {} rounds", out.rounds);
+    }
+}
