@@ -66,8 +66,8 @@ pub use error::{Error, ErrorKind};
 pub use geometry::{Point, Site};
 pub use query::EdgeShape;
 pub use query::{
-    Cell, Chain, Edge, EdgeEnd, HalfEdge, Location, MedialAxis, MedialAxisFilter, Offset, OffsetLoop, OffsetPiece, Piece,
-    TopologyOptions, Vertex, ZERO_LENGTH,
+    Cell, Chain, Edge, EdgeEnd, HalfEdge, Indices, Location, MedialAxis, MedialAxisFilter, Offset, OffsetLoop, OffsetPiece,
+    Piece, TopologyOptions, Vertex, ZERO_LENGTH,
 };
 
 /// Fault injection for tests: make the floating-point decisions lie and watch

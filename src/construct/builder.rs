@@ -39,6 +39,8 @@ pub struct Builder {
     /// Points of polygons and polylines dropped because they repeated the
     /// point before them (`BuildStats::dropped_chain_points`).
     pub(super) dropped_chain_points: usize,
+    /// Whether `build` splits crossings first (`split_crossings`).
+    split_crossings: bool,
 }
 
 impl Builder {
@@ -144,6 +146,49 @@ impl Builder {
         Ok(())
     }
 
+    /// Whether [`Builder::build`] splits the input where it crosses itself
+    /// (off by default: crossings are then an error, naming both segments).
+    ///
+    /// When on, crossings, collinear overlaps, endpoints inside segments
+    /// (T-junctions) and points inside segments are made shared endpoints
+    /// before the build, by iterated snap rounding to a grid of pixels
+    /// 2^-46 of the largest coordinate's power of two wide. The diagram is
+    /// then that of the *pieces*: each a part of one or more input segments,
+    /// within [`Diagram::max_split_displacement`] of each of them (at most
+    /// a pixel per round of snapping, [`BuildStats::snap_rounds`]).
+    /// Segments and points that meet nothing keep their exact coordinates.
+    /// [`Diagram::pieces_of_input`] and [`Diagram::inputs_of_piece`] map
+    /// between the two, so attributes of the input segments can be carried
+    /// to the pieces' cells; [`Diagram::site_of_segment`] and
+    /// [`Diagram::segment_input_index`] then speak of piece indices.
+    /// Polygons split the same way: the domain is the even-odd region of
+    /// the split rings. [`BuildStats`] counts the crossings, overlaps and
+    /// touchings found and the pieces.
+    ///
+    /// ```
+    /// use segvoronoi::Builder;
+    /// let mut b = Builder::new();
+    /// b.add_segments([[[0.0, 0.0], [2.0, 2.0]], [[0.0, 2.0], [2.0, 0.0]]])?;
+    /// assert!(b.build().is_err()); // they cross
+    /// let d = b.split_crossings(true).build()?;
+    /// assert_eq!((d.stats().crossings, d.piece_count()), (1, 4));
+    /// assert_eq!(d.pieces_of_input(0).collect::<Vec<_>>(), vec![0, 1]);
+    /// assert_eq!(d.inputs_of_piece(3).collect::<Vec<_>>(), vec![1]);
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    ///
+    /// [`Diagram::max_split_displacement`]: crate::Diagram::max_split_displacement
+    /// [`Diagram::pieces_of_input`]: crate::Diagram::pieces_of_input
+    /// [`Diagram::inputs_of_piece`]: crate::Diagram::inputs_of_piece
+    /// [`Diagram::site_of_segment`]: crate::Diagram::site_of_segment
+    /// [`Diagram::segment_input_index`]: crate::Diagram::segment_input_index
+    /// [`BuildStats`]: crate::BuildStats
+    /// [`BuildStats::snap_rounds`]: crate::BuildStats::snap_rounds
+    pub fn split_crossings(&mut self, on: bool) -> &mut Builder {
+        self.split_crossings = on;
+        self
+    }
+
     /// Builds the diagram. The builder is not consumed: more points may be
     /// added and the diagram built again.
     ///
@@ -159,6 +204,11 @@ impl Builder {
     /// sound arithmetic it does not happen), with a message saying what
     /// failed. The builder stays as it was.
     pub fn build(&self) -> Result<Diagram, Error> {
+        if self.split_crossings && !self.segments.is_empty() {
+            let mut diagram = super::split::diagram_of_split(&self.points, &self.segments, &self.rings)?;
+            diagram.stats.dropped_chain_points = self.dropped_chain_points;
+            return Ok(diagram);
+        }
         let mut diagram =
             super::diagram_of(&self.points, &self.segments).map_err(|e| super::polygon_input::name_rings(e, &self.rings))?;
         if let Some(e) = super::polygon_input::shared_ring_edge(&diagram, &self.rings) {

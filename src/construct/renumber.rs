@@ -114,6 +114,7 @@ pub(super) fn renumber(
         vertices: finite_vertices,
         edges: edges.len(),
         dropped_chain_points: 0,
+        ..BuildStats::default()
     };
     Diagram {
         store,
@@ -130,6 +131,7 @@ pub(super) fn renumber(
         extent,
         scale,
         domain: None,
+        split: None,
     }
 }
 
@@ -162,6 +164,7 @@ pub(super) fn number_segment_inputs(diagram: &mut Diagram, checked: &CheckedInpu
     diagram.input_site.truncate(points);
     diagram.stats.input_points = points;
     diagram.stats.input_segments = segments;
+    diagram.stats.pieces = segments;
     diagram.stats.duplicate_points = checked.duplicate_points;
     diagram.stats.duplicate_segments = checked.duplicate_segments;
     diagram.stats.zero_length_segments = checked.degenerate_segments;

@@ -34,6 +34,21 @@ pub struct BuildStats {
     pub vertices: usize,
     /// Voronoi edges between two sites, rays and lines included.
     pub edges: usize,
+    /// Segments the diagram was built from: the input segments, or with
+    /// [`Builder::split_crossings`](crate::Builder::split_crossings) the
+    /// pieces they were split into.
+    pub pieces: usize,
+    /// With `split_crossings`: pairs of input segments that crossed (at a
+    /// point inside both).
+    pub crossings: usize,
+    /// With `split_crossings`: pairs of collinear input segments that
+    /// shared more than a point.
+    pub overlaps: usize,
+    /// With `split_crossings`: endpoints and isolated points that lay inside
+    /// a segment (T-junctions), counted per (point, segment) pair.
+    pub touchings: usize,
+    /// With `split_crossings`: rounds of snapping run (0 when nothing met).
+    pub snap_rounds: usize,
 }
 
 /// A Voronoi diagram. Immutable; reading it from many threads at once is safe.
@@ -78,4 +93,6 @@ pub struct Diagram {
     /// Where each vertex, edge and cell lies against the polygons' rings,
     /// when polygons were added (`query::domain`).
     pub(crate) domain: Option<crate::query::Domain>,
+    /// With `split_crossings`: the pieces' input segments.
+    pub(crate) split: Option<Box<super::pieces::SplitPieces>>,
 }

@@ -20,11 +20,13 @@
 
 mod built;
 mod ids;
+mod pieces;
 mod store;
 mod validate;
 
 pub use built::{BuildStats, Diagram};
 pub(crate) use ids::NONE;
 pub use ids::{EdgeId, HalfEdgeId, SiteId, VertexId};
+pub(crate) use pieces::SplitPieces;
 pub(crate) use store::Store;
 pub use validate::ValidationError;

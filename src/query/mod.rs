@@ -10,6 +10,7 @@ mod medial_axis_filter;
 mod navigation;
 mod offset;
 mod partition;
+mod pieces;
 mod shape;
 mod topology;
 
@@ -20,5 +21,6 @@ pub use medial_axis::{Chain, MedialAxis, Piece};
 pub use medial_axis_filter::MedialAxisFilter;
 pub use navigation::HalfEdge;
 pub use offset::{Offset, OffsetLoop, OffsetPiece};
+pub use pieces::Indices;
 pub use shape::EdgeShape;
 pub use topology::{TopologyOptions, ZERO_LENGTH};

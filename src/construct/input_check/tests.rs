@@ -2,10 +2,10 @@
 //! against brute force, and a large input.
 
 use super::candidates::find_conflict;
-use crate::construct::grid::Grid;
 use super::classify::{point_conflict, segment_conflict};
 use super::normalise::{normalise, Normalised};
 use super::*;
+use crate::construct::grid::Grid;
 use crate::construct::input_scale;
 use proptest::prelude::*;
 

@@ -30,7 +30,12 @@ impl ContactCounts {
 /// The pixels where `segments` (non-degenerate) and `points` meet other
 /// than at common endpoints, appended to `hot` (with repeats), and the
 /// counts.
-pub(super) fn contact_pixels(segments: &[[Point; 2]], points: &[Point], pixels: &PixelGrid, hot: &mut Vec<Pixel>) -> ContactCounts {
+pub(super) fn contact_pixels(
+    segments: &[[Point; 2]],
+    points: &[Point],
+    pixels: &PixelGrid,
+    hot: &mut Vec<Pixel>,
+) -> ContactCounts {
     let mut counts = ContactCounts::default();
     if segments.is_empty() {
         return counts;

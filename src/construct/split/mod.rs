@@ -42,13 +42,16 @@
 //! - Each piece keeps the sorted input indices of every segment it came
 //!   from.
 
+mod build;
 mod contacts;
+mod rings;
 mod route;
 
 use crate::error::{Error, ErrorKind};
 use crate::geometry::scale::Scale;
 use crate::geometry::snap::PixelGrid;
 use crate::geometry::Point;
+pub(crate) use build::diagram_of_split;
 use contacts::{contact_pixels, ContactCounts};
 use route::{route, HotPixels};
 
@@ -88,7 +91,8 @@ pub(crate) struct SplitInput {
 pub(crate) fn split(points: &[Point], segments: &[[Point; 2]]) -> Result<SplitInput, Error> {
     let scale = Scale::for_coordinates(points.iter().chain(segments.iter().flatten()).flat_map(|p| [p.x, p.y]));
     let internal = |p: Point| p.scaled(scale.to_internal).canonical_zero();
-    let max_abs = points.iter().chain(segments.iter().flatten()).map(|p| internal(*p)).fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+    let max_abs =
+        points.iter().chain(segments.iter().flatten()).map(|p| internal(*p)).fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
     let pixels = PixelGrid::for_magnitude(max_abs);
     let mut pieces: Vec<Piece> =
         segments.iter().enumerate().map(|(i, s)| Piece { ends: s.map(internal), origins: vec![i as u32] }).collect();

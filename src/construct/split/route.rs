@@ -25,10 +25,6 @@ impl HotPixels {
         pixels.into_iter().filter(|&p| self.set.insert(p)).count()
     }
 
-    pub(super) fn len(&self) -> usize {
-        self.set.len()
-    }
-
     /// `p` moved to its pixel's centre if that pixel is hot.
     pub(super) fn snap(&self, pixels: &PixelGrid, p: Point) -> Point {
         let pixel = pixels.pixel_of(p);

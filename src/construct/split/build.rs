@@ -1,0 +1,79 @@
+//! The build in splitting mode: split, reassemble the rings, build the
+//! pieces' diagram, and record which input segments each piece came from.
+
+use super::rings::split_rings;
+use super::{split, SplitInput};
+use crate::construct::polygon_input::RingInput;
+use crate::diagram::{Diagram, SplitPieces};
+use crate::error::{Error, ErrorKind};
+use crate::geometry::Point;
+
+/// The diagram of `points` and `segments` split where they meet; `rings`
+/// are the polygons' rings over the input segments.
+pub(crate) fn diagram_of_split(points: &[Point], segments: &[[Point; 2]], rings: &[RingInput]) -> Result<Diagram, Error> {
+    let mut split = split(points, segments)?;
+    let mut split_rings_over_pieces = Vec::new();
+    if !rings.is_empty() {
+        let (pieces, new_rings) = split_rings(std::mem::take(&mut split.pieces), rings, segments.len());
+        split.pieces = pieces;
+        split_rings_over_pieces = new_rings;
+    }
+    let ends: Vec<[Point; 2]> = split.pieces.iter().map(|p| p.ends).collect();
+    let mut diagram = crate::construct::diagram_of(&split.points, &ends).map_err(|e| in_input_terms(e, &split))?;
+    if !rings.is_empty() {
+        diagram.set_domain(&split_rings_over_pieces);
+    }
+    let origins: Vec<Vec<u32>> = split.pieces.iter().map(|p| p.origins.clone()).collect();
+    let displacement = max_displacement(&split, segments);
+    diagram.split = Some(Box::new(SplitPieces::new(&origins, segments.len(), displacement, split.pixel)));
+    let stats = &mut diagram.stats;
+    stats.input_segments = segments.len();
+    stats.pieces = split.pieces.len();
+    stats.crossings = split.crossings;
+    stats.overlaps = split.overlaps;
+    stats.touchings = split.touchings;
+    stats.snap_rounds = split.rounds;
+    Ok(diagram)
+}
+
+/// The largest distance from a piece's endpoint to an input segment it
+/// came from: the distance to a segment is convex, so no point of the
+/// piece is farther.
+fn max_displacement(split: &SplitInput, segments: &[[Point; 2]]) -> f64 {
+    let mut worst = 0.0f64;
+    for piece in &split.pieces {
+        for &i in &piece.origins {
+            for q in piece.ends {
+                worst = worst.max(distance_to_segment(q, segments[i as usize]));
+            }
+        }
+    }
+    worst
+}
+
+fn distance_to_segment(q: Point, [a, b]: [Point; 2]) -> f64 {
+    // in the segment's own frame, scaled to its length so that neither
+    // huge nor tiny coordinates overflow
+    let scale = (b.x - a.x).abs().max((b.y - a.y).abs()).max((q.x - a.x).abs()).max((q.y - a.y).abs());
+    if scale == 0.0 {
+        return 0.0;
+    }
+    let (dx, dy) = ((b.x - a.x) / scale, (b.y - a.y) / scale);
+    let (qx, qy) = ((q.x - a.x) / scale, (q.y - a.y) / scale);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 == 0.0 { 0.0 } else { ((qx * dx + qy * dy) / len2).clamp(0.0, 1.0) };
+    scale * (qx - t * dx).hypot(qy - t * dy)
+}
+
+/// A build error about pieces, told in terms of the input segments they
+/// came from (none is expected: the split input passed the same check).
+fn in_input_terms(error: Error, split: &SplitInput) -> Error {
+    if error.kind() != ErrorKind::Intersecting && error.kind() != ErrorKind::Internal {
+        return error;
+    }
+    let inputs: Vec<usize> =
+        error.indices().iter().filter_map(|&k| split.pieces.get(k)).flat_map(|p| p.origins.iter().map(|&i| i as usize)).collect();
+    let message =
+        format!("after splitting crossings: {} (pieces of input segments {inputs:?}); please report this input", error.message());
+    Error::new(ErrorKind::Internal, message, inputs)
+}

@@ -1,0 +1,191 @@
+//! Splitting mode (`Builder::split_crossings`) on inputs that cross
+//! themselves, checked by brute force: the diagram is valid, the piece map
+//! is consistent both ways, every piece lies within the reported distance
+//! of each input segment it came from (and that within the stated bound),
+//! the pieces cover each input segment, and a self-crossing polygon's domain
+//! is the even-odd region of its rings. Each input also mirrored, reversed
+//! and scaled.
+
+use segvoronoi::{Builder, Diagram, Location, Point};
+use segvoronoi_testgen::rings::even_odd;
+use segvoronoi_testgen::Rng;
+
+type Segment = [[f64; 2]; 2];
+
+/// (In units of the largest difference, so that 1e-200 does not underflow.)
+fn distance_to_segment(q: Point, [a, b]: Segment) -> f64 {
+    let unit = (b[0] - a[0]).abs().max((b[1] - a[1]).abs()).max((q.x - a[0]).abs()).max((q.y - a[1]).abs());
+    if unit == 0.0 {
+        return 0.0;
+    }
+    let (dx, dy) = ((b[0] - a[0]) / unit, (b[1] - a[1]) / unit);
+    let (qx, qy) = ((q.x - a[0]) / unit, (q.y - a[1]) / unit);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 == 0.0 { 0.0 } else { ((qx * dx + qy * dy) / len2).clamp(0.0, 1.0) };
+    unit * (qx - t * dx).hypot(qy - t * dy)
+}
+
+fn piece_distance(q: Point, [a, b]: [Point; 2]) -> f64 {
+    distance_to_segment(q, [[a.x, a.y], [b.x, b.y]])
+}
+
+/// Builds `segments` (and `points`) in splitting mode and checks the
+/// guarantees; returns the diagram.
+fn check(points: &[[f64; 2]], segments: &[Segment]) -> Diagram {
+    let mut b = Builder::new();
+    b.add_points(points.iter().copied()).unwrap();
+    b.add_segments(segments.iter().copied()).unwrap();
+    let d = b.split_crossings(true).build().unwrap_or_else(|e| panic!("{e}: {segments:?}"));
+    check_pieces(&d, segments);
+    d
+}
+
+fn check_pieces(d: &Diagram, segments: &[Segment]) {
+    d.validate().unwrap_or_else(|e| panic!("{e}"));
+    let stats = d.stats();
+    assert_eq!(stats.input_segments, segments.len());
+    assert_eq!(stats.pieces, d.piece_count());
+    let extent = segments.iter().flatten().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    let slack = 1e-13 * extent;
+    let bound = stats.snap_rounds as f64 * d.split_pixel_size() * std::f64::consts::FRAC_1_SQRT_2;
+    assert!(d.max_split_displacement() <= bound * (1.0 + 1e-9) + slack, "{} > {bound}", d.max_split_displacement());
+    let reach = d.max_split_displacement() * (1.0 + 1e-9) + slack;
+    for (i, &s) in segments.iter().enumerate() {
+        let pieces: Vec<usize> = d.pieces_of_input(i).collect();
+        assert!(pieces.windows(2).all(|w| w[0] < w[1]));
+        for &p in &pieces {
+            assert!(d.inputs_of_piece(p).any(|j| j == i), "piece {p} of {i} does not name it");
+            let ends = d.piece(p).unwrap();
+            for q in ends {
+                let off = distance_to_segment(q, s);
+                assert!(off <= reach, "piece {p} is {off} from input {i} (reported {})", d.max_split_displacement());
+            }
+        }
+        // covered: every point of the input is near one of its pieces
+        let length = (s[1][0] - s[0][0]).hypot(s[1][1] - s[0][1]);
+        if length <= 2.0 * bound + slack {
+            continue;
+        }
+        for k in 0..=20 {
+            let t = k as f64 / 20.0;
+            let q = Point::new(s[0][0] + t * (s[1][0] - s[0][0]), s[0][1] + t * (s[1][1] - s[0][1]));
+            let near = pieces.iter().map(|&p| piece_distance(q, d.piece(p).unwrap())).fold(f64::INFINITY, f64::min);
+            assert!(near <= bound + slack, "input {i} not covered at {q:?} ({near} > {bound})");
+        }
+    }
+    for p in 0..d.piece_count() {
+        assert!(d.inputs_of_piece(p).len() >= 1);
+        for i in d.inputs_of_piece(p) {
+            assert!(d.pieces_of_input(i).any(|q| q == p));
+        }
+    }
+}
+
+/// The same input mirrored, reversed (order and direction) and scaled.
+fn variants(segments: &[Segment]) -> Vec<Vec<Segment>> {
+    let mirrored = segments.iter().map(|s| s.map(|p| [-p[0], p[1]])).collect();
+    let reversed = segments.iter().rev().map(|&[a, b]| [b, a]).collect();
+    let tiny = segments.iter().map(|s| s.map(|p| [p[0] * 1e-200, p[1] * 1e-200])).collect();
+    let huge = segments.iter().map(|s| s.map(|p| [p[0] * 3e250 + 1e260, p[1] * 3e250])).collect();
+    vec![segments.to_vec(), mirrored, reversed, tiny, huge]
+}
+
+fn random_segments(rng: &mut Rng, n: usize, integer: bool) -> Vec<Segment> {
+    let c = |rng: &mut Rng| if integer { (rng.unit() * 8.0).floor() } else { rng.unit() * 100.0 - 30.0 };
+    (0..n).map(|_| [[c(rng), c(rng)], [c(rng), c(rng)]]).collect()
+}
+
+#[test]
+fn random_long_segments_crossing_each_other() {
+    let mut rng = Rng(7);
+    for case in 0..80 {
+        let n = 2 + case % 30;
+        let segments = random_segments(&mut rng, n, case % 2 == 0);
+        for variant in variants(&segments) {
+            check(&[], &variant);
+        }
+    }
+}
+
+#[test]
+fn points_on_segments_and_t_junctions() {
+    let d = check(
+        &[[1.0, 0.0], [5.0, 5.0], [2.0, 0.0]],
+        &[[[0.0, 0.0], [4.0, 0.0]], [[2.0, 0.0], [2.0, 3.0]], [[3.0, -1.0], [3.0, 0.0]]],
+    );
+    assert_eq!(d.stats().touchings, 4); // two points, two endpoints inside segment 0
+    assert_eq!(d.pieces_of_input(0).len(), 4);
+}
+
+#[test]
+fn an_input_that_meets_nothing_builds_as_without_splitting() {
+    let segments = [[[0.1, 0.2], [0.3, 0.7]], [[0.3, 0.7], [1.0 / 3.0, -5.0]], [[2.0, 2.0], [3.0, 2.5]]];
+    let d = check(&[[0.5, 0.5]], &segments);
+    let mut b = Builder::new();
+    b.add_points([[0.5, 0.5]]).unwrap();
+    b.add_segments(segments).unwrap();
+    let strict = b.build().unwrap();
+    assert_eq!(d.topology(Default::default()), strict.topology(Default::default()));
+    assert_eq!((d.stats().snap_rounds, d.max_split_displacement()), (0, 0.0));
+}
+
+/// Random rings of random points: polygons that cross themselves and each
+/// other. The domain is the even-odd region of the rings as given.
+#[test]
+fn self_crossing_polygons_bound_their_even_odd_region() {
+    let mut rng = Rng(3);
+    for case in 0..40 {
+        let rings: Vec<Vec<[f64; 2]>> = (0..1 + case % 3)
+            .map(|_| {
+                (0..3 + rng.below(8)).map(|_| [(rng.unit() * 20.0).round() / 2.0, (rng.unit() * 20.0).round() / 2.0]).collect()
+            })
+            .collect();
+        let mut b = Builder::new();
+        for ring in &rings {
+            if b.add_polygon(&[ring.clone()]).is_err() {
+                continue; // fewer than three distinct points
+            }
+        }
+        let segments: Vec<Segment> = segvoronoi_testgen::rings::ring_segments(&rings);
+        let d = match b.split_crossings(true).build() {
+            Ok(d) => d,
+            Err(e) => panic!("case {case}: {e}"),
+        };
+        d.validate().unwrap();
+        if b.segment_count() != segments.len() {
+            continue; // a ring was refused or lost repeated points: indices differ
+        }
+        check_pieces(&d, &segments);
+        let kept: Vec<Vec<[f64; 2]>> = rings.iter().filter(|r| r.len() >= 3).cloned().collect();
+        for gx in 0..41 {
+            for gy in 0..41 {
+                let q = [gx as f64 * 0.25 + 0.01, gy as f64 * 0.25 + 0.003];
+                if segments.iter().any(|&s| distance_to_segment(Point::new(q[0], q[1]), s) < 1e-6) {
+                    continue;
+                }
+                let expected = if even_odd(&kept, q) { Location::Inside } else { Location::Outside };
+                assert_eq!(d.locate_point(Point::new(q[0], q[1])), Some(expected), "case {case} at {q:?}: {rings:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn polygons_sharing_an_edge_merge_and_a_bow_tie_is_two_triangles() {
+    let mut b = Builder::new();
+    b.add_polygon(&[vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]]]).unwrap();
+    b.add_polygon(&[vec![[2.0, 0.0], [4.0, 0.0], [4.0, 2.0], [2.0, 2.0]]]).unwrap();
+    assert!(b.build().is_err(), "strict mode refuses the shared edge");
+    let d = b.split_crossings(true).build().unwrap();
+    for (x, y) in [(1.9, 1.0), (2.1, 1.0), (0.5, 0.5), (3.5, 1.5)] {
+        assert_eq!(d.locate_point(Point::new(x, y)), Some(Location::Inside), "({x}, {y})");
+    }
+    let mut b = Builder::new();
+    b.add_polygon(&[vec![[0.0, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0]]]).unwrap();
+    let d = b.split_crossings(true).build().unwrap();
+    assert_eq!(d.stats().crossings, 1);
+    for (x, y, inside) in [(0.3, 1.0, true), (1.7, 1.0, true), (1.0, 0.3, false), (1.0, 1.7, false)] {
+        let expected = if inside { Location::Inside } else { Location::Outside };
+        assert_eq!(d.locate_point(Point::new(x, y)), Some(expected), "({x}, {y})");
+    }
+}
