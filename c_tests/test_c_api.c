@@ -1385,6 +1385,52 @@ static void test_versioned_structs(void) {
  * with rounded corners); grown by 1, the 12 x 12 rounded square with a hole
  * of 0 x 0 (gone). Loops close, holes run clockwise, pieces say their kind,
  * polylines stay within the tolerance of the exact area, bad calls fail. */
+/* Splitting mode: two crossing segments and a collinear overlap are refused
+ * by default and split when asked; the piece map both ways, the stats, the
+ * pieces' coordinates and the displacement. */
+static void test_split_crossings(void) {
+    /* 0 and 1 cross at (1, 1); 2 overlaps 3 on y = 5 over [2, 3] */
+    const double xy[16] = {0, 0, 2, 2, 0, 2, 2, 0, 0, 5, 3, 5, 2, 5, 6, 5};
+    segvoronoi_builder *b = segvoronoi_builder_new();
+    segvoronoi_diagram *d = NULL;
+    segvoronoi_stats stats = {.struct_size = sizeof stats};
+    uint32_t list[8];
+    size_t n = 0, p, shared = 0;
+    double ends[4], moved = -1.0;
+    CHECK_STATUS(segvoronoi_builder_add_segments(b, xy, 4), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_build(b, &d), SEGVORONOI_STATUS_INTERSECTING);
+    CHECK_STATUS(segvoronoi_builder_set_split_crossings(NULL, 1), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_builder_set_split_crossings(b, 1), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_build(b, &d), SEGVORONOI_STATUS_OK);
+    segvoronoi_builder_free(b);
+    CHECK_STATUS(segvoronoi_diagram_validate(d), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_diagram_stats(d, &stats), SEGVORONOI_STATUS_OK);
+    CHECK(stats.input_segments == 4 && stats.crossings == 1 && stats.overlaps == 1 && stats.touchings == 0);
+    /* 4 pieces of the cross; [0, 2], [2, 3] (shared), [3, 6] on y = 5 */
+    CHECK(segvoronoi_diagram_piece_count(d) == 7 && stats.pieces == 7);
+    CHECK_STATUS(segvoronoi_diagram_pieces_of_input(d, 0, NULL, 0, &n), SEGVORONOI_STATUS_OK);
+    CHECK(n == 2);
+    CHECK_STATUS(segvoronoi_diagram_pieces_of_input(d, 0, list, 1, &n), SEGVORONOI_STATUS_BUFFER_TOO_SMALL);
+    CHECK_STATUS(segvoronoi_diagram_pieces_of_input(d, 4, list, 8, &n), SEGVORONOI_STATUS_OUT_OF_RANGE);
+    CHECK_STATUS(segvoronoi_diagram_pieces_of_input(d, 2, list, 8, &n), SEGVORONOI_STATUS_OK);
+    CHECK(n == 2);
+    for (p = 0; p < segvoronoi_diagram_piece_count(d); ++p) {
+        CHECK_STATUS(segvoronoi_diagram_inputs_of_piece(d, p, list, 8, &n), SEGVORONOI_STATUS_OK);
+        if (n == 2) {
+            ++shared;
+            CHECK(list[0] == 2 && list[1] == 3);
+            CHECK_STATUS(segvoronoi_diagram_piece(d, p, ends), SEGVORONOI_STATUS_OK);
+            CHECK(fmin(ends[0], ends[2]) == 2.0 && fmax(ends[0], ends[2]) == 3.0 && ends[1] == 5.0 && ends[3] == 5.0);
+        }
+    }
+    CHECK(shared == 1);
+    CHECK_STATUS(segvoronoi_diagram_inputs_of_piece(d, 7, list, 8, &n), SEGVORONOI_STATUS_OUT_OF_RANGE);
+    CHECK_STATUS(segvoronoi_diagram_piece(d, 7, ends), SEGVORONOI_STATUS_OUT_OF_RANGE);
+    CHECK_STATUS(segvoronoi_diagram_max_split_displacement(d, &moved), SEGVORONOI_STATUS_OK);
+    CHECK(moved == 0.0); /* (1, 1) and the overlap's ends are pixel centres */
+    segvoronoi_diagram_free(d);
+}
+
 static void test_offsets(void) {
     const double xy[] = {0, 0, 10, 0, 10, 10, 0, 10, 4, 4, 4, 6, 6, 6, 6, 4};
     const size_t lengths[] = {4, 4};
@@ -1480,6 +1526,7 @@ int segvoronoi_run_c_tests(void) {
     test_versioned_structs();
     test_polygon_domain();
     test_offsets();
+    test_split_crossings();
     fprintf(stderr, "segvoronoi C API tests: %d checks, %d failed\n", checks, failures);
     return failures;
 }

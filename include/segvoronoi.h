@@ -251,6 +251,17 @@ typedef struct segvoronoi_stats {
   // Points of polygons and polylines dropped because they repeated the
   // point before them (a ring's repeated closing point is not counted).
   size_t dropped_chain_points;
+  // Segments the diagram was built from: the input segments, or with
+  // splitting the pieces.
+  size_t pieces;
+  // With splitting: pairs of input segments that crossed.
+  size_t crossings;
+  // With splitting: pairs of collinear input segments that overlapped.
+  size_t overlaps;
+  // With splitting: endpoints and points that lay inside a segment.
+  size_t touchings;
+  // With splitting: rounds of snapping run.
+  size_t snap_rounds;
 } segvoronoi_stats;
 
 // Which branches `segvoronoi_diagram_medial_axis_filtered` leaves out
@@ -468,6 +479,20 @@ size_t segvoronoi_builder_point_count(const struct segvoronoi_builder *builder);
 enum segvoronoi_status segvoronoi_builder_build(struct segvoronoi_builder *builder,
                                                 struct segvoronoi_diagram **out);
 
+// Whether `segvoronoi_builder_build` splits the input where it crosses
+// itself (`on` nonzero) or refuses crossings with
+// `SEGVORONOI_STATUS_INTERSECTING` (0, the default). Splitting cuts
+// crossings, overlaps, T-junctions and points inside segments into shared
+// endpoints by snap rounding; the diagram is then that of the pieces
+// (`segvoronoi_diagram_pieces_of_input`, `_inputs_of_piece`), each within
+// `segvoronoi_diagram_max_split_displacement` of its input segments, and
+// polygons bound the even-odd region of their split rings (see
+// `Builder::split_crossings` in the Rust documentation).
+//
+// Errors: `NULL_ARGUMENT`.
+enum segvoronoi_status segvoronoi_builder_set_split_crossings(struct segvoronoi_builder *builder,
+                                                              int32_t on);
+
 // The message of the last failed call on this builder (naming the offending
 // input indices), or `""` if the last call succeeded. Never NULL.
 //
@@ -550,7 +575,9 @@ enum segvoronoi_status segvoronoi_diagram_site_of_input(const struct segvoronoi_
 
 // The site that input segment `input_index` became: its open segment (a
 // repeated segment shares the first one's), or for a zero-length segment
-// the point site it is. Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.
+// the point site it is. With splitting (`segvoronoi_builder_set_split_crossings`)
+// the index is a piece's (see `segvoronoi_diagram_pieces_of_input`).
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.
 enum segvoronoi_status segvoronoi_diagram_site_of_segment(const struct segvoronoi_diagram *diagram,
                                                           size_t input_index,
                                                           uint32_t *out_site);
@@ -900,6 +927,53 @@ enum segvoronoi_status segvoronoi_offset_loop_polyline(const struct segvoronoi_o
                                                        double *xy,
                                                        size_t capacity,
                                                        size_t *count);
+
+// The number of segments the diagram was built from: the pieces of a split
+// input, else the input segments. 0 for NULL.
+size_t segvoronoi_diagram_piece_count(const struct segvoronoi_diagram *diagram);
+
+// The pieces (ascending indices below `segvoronoi_diagram_piece_count`)
+// that input segment `input` became: none (it shrank below a snapping
+// pixel) or more with splitting, else `input` itself. Writes up to
+// `capacity` to `pieces` and their number to `*count`; `pieces = NULL,
+// capacity = 0` only counts.
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`input` is not an input
+// segment), `BUFFER_TOO_SMALL` (then `*count` holds the number and the
+// first `capacity` are written).
+// Thread safety: reads the diagram only; safe from many threads at once.
+enum segvoronoi_status segvoronoi_diagram_pieces_of_input(const struct segvoronoi_diagram *diagram,
+                                                          size_t input,
+                                                          uint32_t *pieces,
+                                                          size_t capacity,
+                                                          size_t *count);
+
+// The input segments (ascending) that piece `piece` came from: one, or
+// several where collinear input segments overlapped. Buffer rules as for
+// `segvoronoi_diagram_pieces_of_input`.
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`piece >= piece_count`),
+// `BUFFER_TOO_SMALL`.
+enum segvoronoi_status segvoronoi_diagram_inputs_of_piece(const struct segvoronoi_diagram *diagram,
+                                                          size_t piece,
+                                                          uint32_t *inputs,
+                                                          size_t capacity,
+                                                          size_t *count);
+
+// The endpoints of piece `piece` in `out[0..4]` as `x0, y0, x1, y1`
+// (input coordinates, as built).
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`; then nothing is written.
+enum segvoronoi_status segvoronoi_diagram_piece(const struct segvoronoi_diagram *diagram,
+                                                size_t piece,
+                                                double *out);
+
+// With splitting: the largest distance from a piece to an input segment it
+// came from, in `*out` (0 when nothing was split, and without splitting).
+//
+// Errors: `NULL_ARGUMENT`.
+enum segvoronoi_status segvoronoi_diagram_max_split_displacement(const struct segvoronoi_diagram *diagram,
+                                                                 double *out);
 
 // Static text for a status code (a `segvoronoi_status` value); never NULL,
 // valid forever. Numbers that are no status give `"unknown status"`.

@@ -305,6 +305,28 @@ pub unsafe extern "C" fn segvoronoi_builder_build(
     })
 }
 
+/// Whether `segvoronoi_builder_build` splits the input where it crosses
+/// itself (`on` nonzero) or refuses crossings with
+/// `SEGVORONOI_STATUS_INTERSECTING` (0, the default). Splitting cuts
+/// crossings, overlaps, T-junctions and points inside segments into shared
+/// endpoints by snap rounding; the diagram is then that of the pieces
+/// (`segvoronoi_diagram_pieces_of_input`, `_inputs_of_piece`), each within
+/// `segvoronoi_diagram_max_split_displacement` of its input segments, and
+/// polygons bound the even-odd region of their split rings (see
+/// `Builder::split_crossings` in the Rust documentation).
+///
+/// Errors: `NULL_ARGUMENT`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_set_split_crossings(builder: *mut segvoronoi_builder, on: i32) -> segvoronoi_status {
+    require_non_null!(builder);
+    guard(|| {
+        // SAFETY: non-null live builder, exclusive to this thread.
+        let b = unsafe { &mut *builder };
+        b.inner.split_crossings(on != 0);
+        b.record(Ok(()))
+    })
+}
+
 /// The message of the last failed call on this builder (naming the offending
 /// input indices), or `""` if the last call succeeded. Never NULL.
 ///

@@ -148,6 +148,17 @@ pub struct segvoronoi_stats {
     /// Points of polygons and polylines dropped because they repeated the
     /// point before them (a ring's repeated closing point is not counted).
     pub dropped_chain_points: usize,
+    /// Segments the diagram was built from: the input segments, or with
+    /// splitting the pieces.
+    pub pieces: usize,
+    /// With splitting: pairs of input segments that crossed.
+    pub crossings: usize,
+    /// With splitting: pairs of collinear input segments that overlapped.
+    pub overlaps: usize,
+    /// With splitting: endpoints and points that lay inside a segment.
+    pub touchings: usize,
+    /// With splitting: rounds of snapping run.
+    pub snap_rounds: usize,
 }
 versioned!(segvoronoi_stats, edges: usize);
 
@@ -158,7 +169,7 @@ pub(super) fn with_diagram(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram
     guard(|| f(&unsafe { &*d }.inner))
 }
 
-fn count(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> usize) -> usize {
+pub(super) fn count(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> usize) -> usize {
     if d.is_null() {
         return 0;
     }
@@ -333,7 +344,9 @@ pub unsafe extern "C" fn segvoronoi_diagram_site_of_input(
 
 /// The site that input segment `input_index` became: its open segment (a
 /// repeated segment shares the first one's), or for a zero-length segment
-/// the point site it is. Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.
+/// the point site it is. With splitting (`segvoronoi_builder_set_split_crossings`)
+/// the index is a piece's (see `segvoronoi_diagram_pieces_of_input`).
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_site_of_segment(
     diagram: *const segvoronoi_diagram,
@@ -504,6 +517,11 @@ pub unsafe extern "C" fn segvoronoi_diagram_stats(
                 vertices: s.vertices,
                 edges: s.edges,
                 dropped_chain_points: s.dropped_chain_points,
+                pieces: s.pieces,
+                crossings: s.crossings,
+                overlaps: s.overlaps,
+                touchings: s.touchings,
+                snap_rounds: s.snap_rounds,
             },
         )
     })

@@ -30,6 +30,7 @@ mod medial_axis;
 mod navigation;
 mod offset;
 mod out;
+mod pieces;
 mod plumbing;
 mod shape;
 
@@ -38,6 +39,7 @@ pub use diagram::*;
 pub use domain::*;
 pub use medial_axis::*;
 pub use navigation::*;
+pub use pieces::*;
 pub use offset::*;
 pub use plumbing::{
     segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version, segvoronoi_version_number,

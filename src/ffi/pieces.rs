@@ -1,0 +1,101 @@
+//! The pieces a diagram was built from and the input segments they came
+//! from (`Builder::split_crossings`; without splitting, piece `i` is input
+//! segment `i`).
+
+use super::diagram::{count, segvoronoi_diagram, with_diagram};
+use super::out::{require_buffer, write_buffer, write_out};
+use super::plumbing::{require_non_null, segvoronoi_status};
+use crate::Diagram;
+
+/// The number of segments the diagram was built from: the pieces of a split
+/// input, else the input segments. 0 for NULL.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_piece_count(diagram: *const segvoronoi_diagram) -> usize {
+    count(diagram, Diagram::piece_count)
+}
+
+/// The pieces (ascending indices below `segvoronoi_diagram_piece_count`)
+/// that input segment `input` became: none (it shrank below a snapping
+/// pixel) or more with splitting, else `input` itself. Writes up to
+/// `capacity` to `pieces` and their number to `*count`; `pieces = NULL,
+/// capacity = 0` only counts.
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`input` is not an input
+/// segment), `BUFFER_TOO_SMALL` (then `*count` holds the number and the
+/// first `capacity` are written).
+/// Thread safety: reads the diagram only; safe from many threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_pieces_of_input(
+    diagram: *const segvoronoi_diagram,
+    input: usize,
+    pieces: *mut u32,
+    capacity: usize,
+    count: *mut usize,
+) -> segvoronoi_status {
+    require_buffer!(pieces, capacity, count);
+    with_diagram(diagram, |d| {
+        if input >= d.stats().input_segments {
+            return segvoronoi_status::OutOfRange;
+        }
+        write_buffer(d.pieces_of_input(input).map(|p| p as u32), pieces, capacity, count)
+    })
+}
+
+/// The input segments (ascending) that piece `piece` came from: one, or
+/// several where collinear input segments overlapped. Buffer rules as for
+/// `segvoronoi_diagram_pieces_of_input`.
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`piece >= piece_count`),
+/// `BUFFER_TOO_SMALL`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_inputs_of_piece(
+    diagram: *const segvoronoi_diagram,
+    piece: usize,
+    inputs: *mut u32,
+    capacity: usize,
+    count: *mut usize,
+) -> segvoronoi_status {
+    require_buffer!(inputs, capacity, count);
+    with_diagram(diagram, |d| {
+        if piece >= d.piece_count() {
+            return segvoronoi_status::OutOfRange;
+        }
+        write_buffer(d.inputs_of_piece(piece).map(|i| i as u32), inputs, capacity, count)
+    })
+}
+
+/// The endpoints of piece `piece` in `out[0..4]` as `x0, y0, x1, y1`
+/// (input coordinates, as built).
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`; then nothing is written.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_piece(
+    diagram: *const segvoronoi_diagram,
+    piece: usize,
+    out: *mut f64,
+) -> segvoronoi_status {
+    require_non_null!(out);
+    with_diagram(diagram, |d| match d.piece(piece) {
+        Some([a, b]) => {
+            for (k, v) in [a.x, a.y, b.x, b.y].into_iter().enumerate() {
+                // SAFETY: the caller passes room for four doubles.
+                unsafe { out.add(k).write(v) };
+            }
+            segvoronoi_status::Ok
+        }
+        None => segvoronoi_status::OutOfRange,
+    })
+}
+
+/// With splitting: the largest distance from a piece to an input segment it
+/// came from, in `*out` (0 when nothing was split, and without splitting).
+///
+/// Errors: `NULL_ARGUMENT`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_max_split_displacement(
+    diagram: *const segvoronoi_diagram,
+    out: *mut f64,
+) -> segvoronoi_status {
+    require_non_null!(out);
+    with_diagram(diagram, |d| write_out(out, d.max_split_displacement()))
+}
