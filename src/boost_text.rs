@@ -24,6 +24,27 @@ pub struct Input {
     pub points: Vec<[f64; 2]>,
     /// The segments, `[x1, y1, x2, y2]`, in input order.
     pub segments: Vec<[f64; 4]>,
+    /// The 1-based line of each point's first coordinate (empty for an
+    /// input made in code), for messages.
+    pub point_lines: Vec<usize>,
+    /// The 1-based line of each segment's first coordinate, likewise.
+    pub segment_lines: Vec<usize>,
+}
+
+/// Writes points and segments in this format, each coordinate as the
+/// shortest decimal that reads back as the same `f64`.
+pub fn write(points: &[[f64; 2]], segments: &[[f64; 4]]) -> String {
+    use std::fmt::Write;
+    let mut out = String::with_capacity(24 * (points.len() + 2 * segments.len()) + 16);
+    let _ = writeln!(out, "{}", points.len());
+    for [x, y] in points {
+        let _ = writeln!(out, "{x:?} {y:?}");
+    }
+    let _ = writeln!(out, "{}", segments.len());
+    for [x1, y1, x2, y2] in segments {
+        let _ = writeln!(out, "{x1:?} {y1:?} {x2:?} {y2:?}");
+    }
+    out
 }
 
 /// A token and the 1-based line it is on.
@@ -62,8 +83,13 @@ impl<'a> Tokens<'a> {
     }
 
     fn number(&mut self, what: &dyn Fn() -> String) -> Result<f64, String> {
+        self.number_on_line(what).map(|(_, x)| x)
+    }
+
+    /// A number and its line.
+    fn number_on_line(&mut self, what: &dyn Fn() -> String) -> Result<(usize, f64), String> {
         let (line, token) = self.expect(what)?;
-        token.parse::<f64>().map_err(|_| format!("line {line}: expected {}, found {token:?}", what()))
+        token.parse::<f64>().map(|x| (line, x)).map_err(|_| format!("line {line}: expected {}, found {token:?}", what()))
     }
 }
 
@@ -76,9 +102,10 @@ pub fn parse(text: &str) -> Result<Input, String> {
     // A wrong count must not allocate gigabytes before the text runs out.
     input.points.reserve(point_count.min(1 << 20));
     for i in 0..point_count {
-        let x = tokens.number(&|| format!("the x coordinate of point {i}"))?;
+        let (line, x) = tokens.number_on_line(&|| format!("the x coordinate of point {i}"))?;
         let y = tokens.number(&|| format!("the y coordinate of point {i}"))?;
         input.points.push([x, y]);
+        input.point_lines.push(line);
     }
     // The segment count may be left out altogether.
     let segment_count = match tokens.next() {
@@ -89,7 +116,11 @@ pub fn parse(text: &str) -> Result<Input, String> {
     for i in 0..segment_count {
         let mut s = [0.0; 4];
         for (k, name) in ["x1", "y1", "x2", "y2"].iter().enumerate() {
-            s[k] = tokens.number(&|| format!("coordinate {name} of segment {i}"))?;
+            let (line, x) = tokens.number_on_line(&|| format!("coordinate {name} of segment {i}"))?;
+            if k == 0 {
+                input.segment_lines.push(line);
+            }
+            s[k] = x;
         }
         input.segments.push(s);
     }
@@ -140,5 +171,13 @@ mod tests {
         assert!(err.starts_with("line 4:") && err.contains("y2 of segment 0"), "{err}");
         let err = parse(" \n\n").unwrap_err();
         assert!(err.starts_with("line 2:") && err.contains("number of points"), "{err}");
+    }
+
+    #[test]
+    fn lines_are_kept_and_what_is_written_reads_back() {
+        let input = parse("2\n0 0\n\n0.1 1e-300\n2\n0 0\n1 1\n5 5 6 6\n").unwrap();
+        assert_eq!((input.point_lines.clone(), input.segment_lines.clone()), (vec![2, 4], vec![6, 8]));
+        let again = parse(&write(&input.points, &input.segments)).unwrap();
+        assert_eq!((again.points, again.segments), (input.points, input.segments));
     }
 }

@@ -59,6 +59,18 @@ impl Builder {
         self.segments.len()
     }
 
+    /// The point with input index `index`, as added; `None` past the end.
+    pub fn point(&self, index: usize) -> Option<Point> {
+        self.points.get(index).copied()
+    }
+
+    /// The segment with input index `index` (also those that polygons and
+    /// polylines made), as added; `None` past the end. With the indices an
+    /// error names, this says where the offending segments are.
+    pub fn segment(&self, index: usize) -> Option<[Point; 2]> {
+        self.segments.get(index).copied()
+    }
+
     /// Adds one point and returns its input index (the number of points
     /// added before it). A point is anything that converts into a
     /// [`Point`]: `[x, y]`, `(x, y)` or a `Point`, as for

@@ -39,8 +39,8 @@ pub use diagram::*;
 pub use domain::*;
 pub use medial_axis::*;
 pub use navigation::*;
-pub use pieces::*;
 pub use offset::*;
+pub use pieces::*;
 pub use plumbing::{
     segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version, segvoronoi_version_number,
     SEGVORONOI_VERSION_MAJOR, SEGVORONOI_VERSION_MINOR, SEGVORONOI_VERSION_NUMBER, SEGVORONOI_VERSION_PATCH,

@@ -9,6 +9,7 @@ Usage: segvoronoi [INPUT] [--svg OUT.svg] [--topology] [--voronoi-pairs] [--stat
                   [--medial-axis OUT.wkt|OUT.json] [--tolerance T]
                   [--corner-angle DEG] [--prune-spurs K] [--max-inscribed-circle]
                   [--offset D]... [--offsets OUT.wkt|OUT.json]
+                  [--split-crossings] [--write-sites OUT.txt]
 
 Builds the Voronoi diagram of the points and line segments in INPUT.
 
@@ -16,7 +17,7 @@ INPUT is Boost.Polygon's voronoi text format: a count P, then P lines `x y`,
 then a count S and S lines `x1 y1 x2 y2` (line segments; a missing S means
 0). Tokens are separated by any whitespace. `-` reads standard input.
 Segments may share endpoints but must not cross, overlap or pass through a
-point. Without INPUT a built-in demo (a jittered ring, a cluster, collinear
+point (unless --split-crossings). Without INPUT a built-in demo (a jittered ring, a cluster, collinear
 points, a grid of cocircular points, a repeated point, short segments and a
 polyline) is used.
 
@@ -92,6 +93,17 @@ Options:
                      from and to, for an arc its centre, radius and
                      direction (counter_clockwise; a whole circle has
                      from = to)
+  --split-crossings  split the input where it crosses itself instead of
+                     refusing it: crossings, overlaps, T-junctions and
+                     points inside segments become shared endpoints, by
+                     snap rounding to pixels 2^-46 of the largest
+                     coordinate wide (segments that meet nothing keep their
+                     coordinates; --stats reports the crossings, pieces and
+                     the largest displacement). Polygons bound the even-odd
+                     region of their split rings
+  --write-sites OUT  write the points and segments actually built (after
+                     --split-crossings, the pieces) in Boost.Polygon's text
+                     format, each coordinate exactly
   -h, --help         print this help
   -V, --version      print the version
 
@@ -100,8 +112,8 @@ Examples: segvoronoi glyph.wkt --medial-axis axis.wkt --svg axis.svg
 
 Exit status: 0 on success, 1 when the library rejects the input (a
 non-finite coordinate, segments that cross or overlap, a point inside a
-segment, rings that cross: the message names the input indices, polygons
-and rings) or an offset distance, or an output cannot be written, 2 for
+segment, rings that cross: the message names the input indices, their
+lines in a Boost.Polygon text input, their coordinates, polygons and rings) or an offset distance, or an output cannot be written, 2 for
 usage errors and unreadable or malformed input (for WKT the message names
 the line and column).
 ";
@@ -149,6 +161,10 @@ pub struct Options {
     /// `--offsets`: where and in which format. Given exactly when
     /// `offset_distances` is not empty.
     pub offsets: Option<(PathBuf, Format)>,
+    /// `--split-crossings`.
+    pub split_crossings: bool,
+    /// `--write-sites`: where to write the input as built.
+    pub write_sites: Option<PathBuf>,
 }
 
 /// The outcome of parsing: run, or answer `--help` / `--version` and stop.
@@ -175,6 +191,8 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
         max_inscribed_circle: false,
         offset_distances: Vec::new(),
         offsets: None,
+        split_crossings: false,
+        write_sites: None,
     };
     let mut input: Option<String> = None;
     let mut args = args.into_iter();
@@ -194,7 +212,14 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
         };
         let takes_value = matches!(
             flag,
-            "--svg" | "--medial-axis" | "--tolerance" | "--corner-angle" | "--prune-spurs" | "--offset" | "--offsets"
+            "--svg"
+                | "--medial-axis"
+                | "--tolerance"
+                | "--corner-angle"
+                | "--prune-spurs"
+                | "--offset"
+                | "--offsets"
+                | "--write-sites"
         );
         let value = match inline {
             _ if !takes_value => {
@@ -209,7 +234,11 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
         if takes_value && value.is_empty() {
             return Err(format!(
                 "{flag} needs {}",
-                if matches!(flag, "--svg" | "--medial-axis" | "--offsets") { "a file name" } else { "a number" }
+                if matches!(flag, "--svg" | "--medial-axis" | "--offsets" | "--write-sites") {
+                    "a file name"
+                } else {
+                    "a number"
+                }
             ));
         }
         match flag {
@@ -222,6 +251,8 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
                 options.voronoi_pairs = true;
             }
             "--stats" => options.stats = true,
+            "--split-crossings" => options.split_crossings = true,
+            "--write-sites" => options.write_sites = Some(PathBuf::from(value)),
             "--max-inscribed-circle" => options.max_inscribed_circle = true,
             "--svg" => options.svg = Some(PathBuf::from(value)),
             "--medial-axis" => options.medial_axis = Some((PathBuf::from(&value), format(flag, &value)?)),

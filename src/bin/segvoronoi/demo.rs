@@ -39,7 +39,7 @@ pub fn input() -> Input {
             segments.push([centre[0] - dx, centre[1] - dy, centre[0] + dx, centre[1] + dy]);
         }
     }
-    Input { points: points(), segments }
+    Input { points: points(), segments, ..Input::default() }
 }
 
 /// About sixty points: a jittered ring, a tight cluster inside it, a row of

@@ -10,6 +10,65 @@ use crate::args::Source;
 use crate::wkt::{self, Shape, Xy};
 use crate::{bad_input, demo, Failure};
 
+/// Where the builder's input indices came from: lines of a Boost.Polygon
+/// text file, or WKT geometries (0-based, in file order) and rings.
+#[derive(Clone, Debug, Default)]
+pub struct Origins {
+    point_lines: Vec<usize>,
+    segment_lines: Vec<usize>,
+    /// (point index, geometry)
+    wkt_points: Vec<(usize, usize)>,
+    /// (segment indices, geometry, ring of a polygon)
+    wkt_segments: Vec<(std::ops::Range<usize>, usize, Option<usize>)>,
+}
+
+impl Origins {
+    /// Where input segment `j` is, e.g. `line 7` or `geometry 2, ring 0`.
+    fn of_segment(&self, j: usize) -> Option<String> {
+        if let Some(line) = self.segment_lines.get(j) {
+            return Some(format!("line {line}"));
+        }
+        let (_, k, ring) = self.wkt_segments.iter().find(|(range, _, _)| range.contains(&j))?;
+        Some(match ring {
+            Some(r) => format!("geometry {k} (a polygon), ring {r}"),
+            None => format!("geometry {k} (a linestring)"),
+        })
+    }
+
+    fn of_point(&self, i: usize) -> Option<String> {
+        if let Some(line) = self.point_lines.get(i) {
+            return Some(format!("line {line}"));
+        }
+        self.wkt_points.iter().find(|&&(p, _)| p == i).map(|(_, k)| format!("geometry {k} (a point)"))
+    }
+
+    /// The library's error, and for crossing input each offending point or
+    /// segment on a line of its own: where it is in the file and its
+    /// coordinates.
+    pub fn describe(&self, error: &Error, builder: &Builder) -> String {
+        let mut text = error.to_string();
+        if error.kind() != segvoronoi::ErrorKind::Intersecting {
+            return text;
+        }
+        // A point inside a segment names the point first, then the segment;
+        // every other conflict names two segments.
+        let point_first = error.message().starts_with("point ");
+        for (n, &index) in error.indices().iter().enumerate() {
+            let (what, place, coordinates) = if n == 0 && point_first {
+                let p = builder.point(index);
+                ("point", self.of_point(index), p.map(|p| format!("({}, {})", p.x, p.y)))
+            } else {
+                let s = builder.segment(index);
+                ("segment", self.of_segment(index), s.map(|[a, b]| format!("({}, {}) - ({}, {})", a.x, a.y, b.x, b.y)))
+            };
+            let place = place.map(|p| format!(", {p}")).unwrap_or_default();
+            text.push_str(&format!("\n  {what} {index}{place}: {}", coordinates.unwrap_or_default()));
+        }
+        text.push_str("\n  (--split-crossings splits such input instead of refusing it)");
+        text
+    }
+}
+
 /// The input in either format.
 pub enum Input {
     Boost(boost_text::Input),
@@ -46,30 +105,38 @@ pub fn read(source: &Source) -> Result<(String, Input), Failure> {
 
 impl Input {
     /// Adds everything to `builder`: WKT polygons one `add_polygon` each
-    /// (so that the domain is theirs), linestrings as polylines.
-    pub fn add_to(&self, builder: &mut Builder) -> Result<(), Error> {
+    /// (so that the domain is theirs), linestrings as polylines. Returns
+    /// where each input index came from, for messages.
+    pub fn add_to(&self, builder: &mut Builder) -> Result<Origins, Error> {
+        let mut origins = Origins::default();
         match self {
             Input::Boost(input) => {
                 builder.add_points(input.points.iter().copied())?;
                 builder.add_segments(input.segments.iter().map(|&[x1, y1, x2, y2]| [[x1, y1], [x2, y2]]))?;
+                origins.point_lines.clone_from(&input.point_lines);
+                origins.segment_lines.clone_from(&input.segment_lines);
             }
             Input::Wkt(shapes) => {
-                for shape in shapes {
+                for (k, shape) in shapes.iter().enumerate() {
                     match shape {
                         Shape::Point(p) => {
-                            builder.add_point(*p)?;
+                            let i = builder.add_point(*p)?;
+                            origins.wkt_points.push((i, k));
                         }
                         Shape::LineString(points) => {
-                            builder.add_polyline(points)?;
+                            let made = builder.add_polyline(points)?;
+                            origins.wkt_segments.push((made, k, None));
                         }
                         Shape::Polygon(rings) => {
-                            builder.add_polygon(rings)?;
+                            for (r, made) in builder.add_polygon(rings)?.into_iter().enumerate() {
+                                origins.wkt_segments.push((made, k, Some(r)));
+                            }
                         }
                     }
                 }
             }
         }
-        Ok(())
+        Ok(origins)
     }
 
     /// Every ring of every polygon (none in Boost.Polygon's format): the

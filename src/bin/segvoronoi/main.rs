@@ -60,10 +60,11 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     // a ring of fewer than three points) name the input indices: exit
     // status 1 with that message.
     let mut builder = Builder::new();
-    input.add_to(&mut builder).map_err(|e| failed(format!("{name}: {e}")))?;
+    let origins = input.add_to(&mut builder).map_err(|e| failed(format!("{name}: {e}")))?;
+    builder.split_crossings(options.split_crossings);
     // Only the construction is timed: not reading, not writing.
     let start = Instant::now();
-    let diagram = builder.build().map_err(|e| failed(format!("{name}: {e}")))?;
+    let diagram = builder.build().map_err(|e| failed(format!("{name}: {}", origins.describe(&e, &builder))))?;
     let build_s = start.elapsed().as_secs_f64();
     // Before any output, so that a failed run writes nothing.
     if options.max_inscribed_circle && !diagram.has_domain() {
@@ -99,6 +100,9 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
         };
         write_file(path, &text)?;
     }
+    if let Some(path) = &options.write_sites {
+        write_file(path, &sites_as_built(&diagram, builder.point_count()))?;
+    }
     if options.topology {
         print(&diagram.topology(TopologyOptions::default().with_voronoi_pairs(options.voronoi_pairs)))?;
     }
@@ -123,6 +127,20 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
         ))?;
     }
     Ok(())
+}
+
+/// The input points (same indices) and the segments the diagram was built
+/// from (the pieces, with `--split-crossings`), in Boost.Polygon's format.
+fn sites_as_built(diagram: &Diagram, points: usize) -> String {
+    let points: Vec<[f64; 2]> = (0..points)
+        .filter_map(|i| match diagram.site(diagram.site_of_input(i)?) {
+            Some(segvoronoi::Site::Point(p)) => Some([p.x, p.y]),
+            _ => None,
+        })
+        .collect();
+    let segments: Vec<[f64; 4]> =
+        (0..diagram.piece_count()).filter_map(|p| diagram.piece(p)).map(|[a, b]| [a.x, a.y, b.x, b.y]).collect();
+    segvoronoi::boost_text::write(&points, &segments)
 }
 
 /// The medial axis, filtered as the options ask (no option: no filter).
@@ -155,6 +173,7 @@ fn wants_output(options: &Options) -> bool {
         || options.medial_axis.is_some()
         || options.max_inscribed_circle
         || options.offsets.is_some()
+        || options.write_sites.is_some()
 }
 
 fn write_file(path: &Path, text: &str) -> Result<(), Failure> {

@@ -21,7 +21,7 @@ pub fn report(diagram: &Diagram, build_s: f64) -> String {
     }
     let segment_sites = diagram.site_count() - diagram.point_site_count();
     let mut out = String::new();
-    let figures: [(&str, &dyn std::fmt::Display); 15] = [
+    let figures: [(&str, &dyn std::fmt::Display); 21] = [
         ("input_points", &stats.input_points),
         ("input_segments", &stats.input_segments),
         ("sites", &stats.sites),
@@ -36,6 +36,12 @@ pub fn report(diagram: &Diagram, build_s: f64) -> String {
         ("rays", &rays),
         ("lines", &lines),
         ("parabolic_edges", &arcs),
+        ("pieces", &stats.pieces),
+        ("crossings", &stats.crossings),
+        ("overlaps", &stats.overlaps),
+        ("touchings", &stats.touchings),
+        ("snap_rounds", &stats.snap_rounds),
+        ("max_split_displacement", &diagram.max_split_displacement()),
         ("build_s", &format_args!("{build_s:.6}")),
     ];
     for (key, value) in figures {
