@@ -189,3 +189,45 @@ fn polygons_sharing_an_edge_merge_and_a_bow_tie_is_two_triangles() {
         assert_eq!(d.locate_point(Point::new(x, y)), Some(expected), "({x}, {y})");
     }
 }
+
+/// Real outlines that cross themselves (DejaVu Sans Bold: composite glyphs
+/// whose accent or cedilla is drawn into the letter, and a word set so
+/// tightly that its letters overlap; scripts/overlapping_glyphs.py): the
+/// strict build refuses them, the split one bounds their even-odd region.
+#[test]
+fn overlapping_glyph_outlines() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data");
+    let mut seen = 0;
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_str().unwrap().to_string();
+        if !name.starts_with("overlap_") {
+            continue;
+        }
+        seen += 1;
+        let rings = segvoronoi_testgen::rings::read_rings(&std::fs::read_to_string(&path).unwrap()).unwrap();
+        let mut b = Builder::new();
+        b.add_polygon(&rings).unwrap();
+        let refused = b.build().expect_err(&name);
+        assert_eq!(refused.kind(), segvoronoi::ErrorKind::Intersecting, "{name}");
+        let d = b.split_crossings(true).build().unwrap_or_else(|e| panic!("{name}: {e}"));
+        let segments = segvoronoi_testgen::rings::ring_segments(&rings);
+        check_pieces(&d, &segments);
+        assert!(d.stats().crossings + d.stats().touchings > 0, "{name}");
+        let (lo, hi) = segments.iter().flatten().fold(([f64::MAX; 2], [f64::MIN; 2]), |(lo, hi), p| {
+            ([lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])])
+        });
+        for gx in 0..60 {
+            for gy in 0..60 {
+                let q =
+                    [lo[0] + (hi[0] - lo[0]) * (gx as f64 + 0.37) / 60.0, lo[1] + (hi[1] - lo[1]) * (gy as f64 + 0.61) / 60.0];
+                if segments.iter().any(|&s| distance_to_segment(Point::new(q[0], q[1]), s) < 1e-6) {
+                    continue;
+                }
+                let expected = if even_odd(&rings, q) { Location::Inside } else { Location::Outside };
+                assert_eq!(d.locate_point(Point::new(q[0], q[1])), Some(expected), "{name} at {q:?}");
+            }
+        }
+    }
+    assert!(seen >= 5, "the overlapping glyph fixtures are missing");
+}
