@@ -418,3 +418,26 @@ fn offsets_with_lying_arithmetic() {
     }
     assert!(built > 0, "no build completed: the test proves nothing");
 }
+
+/// Splitting decides by exact signs only (fault injection never perturbs
+/// them), so under lying arithmetic a crossing input still splits into the
+/// same pieces, and the pieces' build keeps the contract.
+#[test]
+fn split_crossings_under_lying_arithmetic() {
+    let mut rng = Rng(21);
+    for (k, mode) in [FaultMode::Noise(1e-3), FaultMode::Random].into_iter().cycle().take(8).enumerate() {
+        let segments: Vec<[[f64; 2]; 2]> =
+            (0..30).map(|_| [[rng.unit() * 10.0, rng.unit() * 10.0], [rng.unit() * 10.0, rng.unit() * 10.0]]).collect();
+        let mut b = Builder::new();
+        b.add_segments(segments.iter().copied()).unwrap();
+        b.split_crossings(true);
+        let exact = b.build().unwrap();
+        if let Ok(d) = try_build_with(mode, k as u64, &b) {
+            assert_eq!(d.stats().pieces, exact.stats().pieces);
+            assert_eq!(d.stats().crossings, exact.stats().crossings);
+            for p in 0..d.piece_count() {
+                assert_eq!(d.piece(p), exact.piece(p));
+            }
+        }
+    }
+}

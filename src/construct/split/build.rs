@@ -65,15 +65,24 @@ fn distance_to_segment(q: Point, [a, b]: [Point; 2]) -> f64 {
     scale * (qx - t * dx).hypot(qy - t * dy)
 }
 
-/// A build error about pieces, told in terms of the input segments they
-/// came from (none is expected: the split input passed the same check).
+/// A build error about pieces, its indices turned into the input segments
+/// the pieces came from. An internal error keeps its message; a conflict
+/// (none is expected: the split input passed the same exact test) becomes
+/// an internal error.
 fn in_input_terms(error: Error, split: &SplitInput) -> Error {
     if error.kind() != ErrorKind::Intersecting && error.kind() != ErrorKind::Internal {
         return error;
     }
-    let inputs: Vec<usize> =
+    let mut inputs: Vec<usize> =
         error.indices().iter().filter_map(|&k| split.pieces.get(k)).flat_map(|p| p.origins.iter().map(|&i| i as usize)).collect();
-    let message =
-        format!("after splitting crossings: {} (pieces of input segments {inputs:?}); please report this input", error.message());
+    inputs.sort_unstable();
+    inputs.dedup();
+    let message = match error.kind() {
+        ErrorKind::Internal => error.message().to_string(),
+        _ => format!(
+            "construction could not complete: after splitting crossings, {} (pieces of input segments {inputs:?}); please report this input",
+            error.message()
+        ),
+    };
     Error::new(ErrorKind::Internal, message, inputs)
 }
