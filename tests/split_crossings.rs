@@ -142,7 +142,7 @@ fn self_crossing_polygons_bound_their_even_odd_region() {
             .collect();
         let mut b = Builder::new();
         for ring in &rings {
-            if b.add_polygon(&[ring.clone()]).is_err() {
+            if b.add_polygon(std::slice::from_ref(ring)).is_err() {
                 continue; // fewer than three distinct points
             }
         }

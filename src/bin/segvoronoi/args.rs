@@ -170,7 +170,7 @@ pub struct Options {
 /// The outcome of parsing: run, or answer `--help` / `--version` and stop.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Command {
-    Run(Options),
+    Run(Box<Options>),
     Help,
     Version,
 }
@@ -284,7 +284,7 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Command, String>
         Some("-") => Source::Stdin,
         Some(path) => Source::File(PathBuf::from(path)),
     };
-    Ok(Command::Run(options))
+    Ok(Command::Run(Box::new(options)))
 }
 
 /// The format of the output of `flag`, by the file name's extension.
@@ -311,7 +311,7 @@ mod tests {
 
     fn run(args: &[&str]) -> Result<Options, String> {
         match parse(args.iter().map(|s| s.to_string()))? {
-            Command::Run(o) => Ok(o),
+            Command::Run(o) => Ok(*o),
             other => panic!("expected a run, got {other:?}"),
         }
     }
