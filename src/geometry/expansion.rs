@@ -22,7 +22,7 @@ fn two_product(a: f64, b: f64) -> (f64, f64) {
 }
 
 /// A number held exactly as a sum of doubles.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub(crate) struct Expansion {
     components: Vec<f64>,
 }
@@ -76,6 +76,22 @@ impl Expansion {
             Some(&c) if c > 0.0 => 1,
             Some(&c) if c < 0.0 => -1,
             _ => 0,
+        }
+    }
+
+    /// Adds `other · (x.0 − x.1)` exactly.
+    pub(crate) fn add_product_with_difference(&mut self, other: &Expansion, x: (f64, f64)) {
+        let (h, l) = two_sum(x.0, -x.1);
+        for &c in &other.components {
+            self.add_product(c, h);
+            self.add_product(c, l);
+        }
+    }
+
+    /// Subtracts `other` exactly.
+    pub(crate) fn subtract(&mut self, other: &Expansion) {
+        for &c in &other.components {
+            self.add(-c);
         }
     }
 

@@ -9,8 +9,9 @@
 //! Centres are the multiples m·δ (|m| ≤ 2^46) and corners the odd multiples
 //! of δ/2, so both are exact doubles: at magnitude 2^e an ulp is 2^(e − 52),
 //! and δ/2 is 32 of them. A crossing point computed by [`crossing_point`] is
-//! within 2^(e − 50) of the true one (see there), an eighth of δ; the pixels
-//! within that radius ([`PixelGrid::pixels_near`]) hold the true crossing.
+//! within 2^(e − 50) of the true one (see there), an eighth of δ, and the
+//! pixel that holds the true one is then decided exactly
+//! ([`PixelGrid::crossing_pixel`]).
 
 use super::expansion::Expansion;
 use super::predicates::{exact_orientation, Orientation};
@@ -68,18 +69,36 @@ impl PixelGrid {
         Point::new(pixel[0] as f64 * self.size, pixel[1] as f64 * self.size)
     }
 
-    /// Every pixel that meets the square of half-side δ/8 around `p` (one,
-    /// two or four): where a computed crossing point may be, the true one
-    /// is in one of them.
-    pub(crate) fn pixels_near(&self, p: Point, out: &mut Vec<Pixel>) {
-        let r = self.size / 8.0;
-        let [x0, y0] = self.pixel_of(Point::new(p.x - r, p.y - r));
-        let [x1, y1] = self.pixel_of(Point::new(p.x + r, p.y + r));
-        for x in x0..=x1 {
-            for y in y0..=y1 {
-                out.push([x, y]);
+    /// The pixel holding the point where `s` and `t` cross (properly),
+    /// decided exactly: [`crossing_point`] is within δ/8 of it, and which
+    /// side of a pixel's edge the true point lies on is the sign of an
+    /// exact expansion (see [`side_of_crossing`]).
+    pub(crate) fn crossing_pixel(&self, s: [Point; 2], t: [Point; 2]) -> Pixel {
+        let guess = self.pixel_of(crossing_point(s, t));
+        let (oa, ob) = (orientation_expansion(t[0], t[1], s[0]), orientation_expansion(t[0], t[1], s[1]));
+        let mut denominator = oa.clone();
+        denominator.subtract(&ob);
+        let [a, b] = s;
+        let axes = [(a.x, b.x), (a.y, b.y)];
+        let mut pixel = guess;
+        for (k, &(from, to)) in axes.iter().enumerate() {
+            // the crossing is at or beyond the lower edge of pixel m when
+            // it is not strictly below (m − ½) δ
+            let at_or_above = |m: i64| side_of_crossing(from, to, &oa, &denominator, (m as f64 - 0.5) * self.size) >= 0;
+            let mut m = guess[k];
+            // at most a step or two: the guess is within δ/8 of the truth
+            for _ in 0..4 {
+                if !at_or_above(m) {
+                    m -= 1;
+                } else if at_or_above(m + 1) {
+                    m += 1;
+                } else {
+                    break;
+                }
             }
+            pixel[k] = m;
         }
+        pixel
     }
 
     /// Whether the closed segment `ab` meets the half-open pixel, decided
@@ -143,7 +162,7 @@ fn sign(x: f64) -> i8 {
 /// difference does not cancel: the parameter is within 3 ulps, and the point
 /// within about 6 ulps of the largest coordinate, however small the angle
 /// between the segments.
-pub(crate) fn crossing_point(s: [Point; 2], t: [Point; 2]) -> Point {
+fn crossing_point(s: [Point; 2], t: [Point; 2]) -> Point {
     let [a, b] = s;
     let (oa, ob) = (orientation_value(t[0], t[1], a), orientation_value(t[0], t[1], b));
     let u = oa / (oa - ob);
@@ -155,10 +174,25 @@ pub(crate) fn crossing_point(s: [Point; 2], t: [Point; 2]) -> Point {
 
 /// `(b − a) × (c − a)`, computed exactly and then rounded.
 fn orientation_value(a: Point, b: Point, c: Point) -> f64 {
+    orientation_expansion(a, b, c).approximate()
+}
+
+/// `(b − a) × (c − a)`, exactly.
+fn orientation_expansion(a: Point, b: Point, c: Point) -> Expansion {
     let mut e = Expansion::default();
     e.add_product_of_differences((b.x, a.x), (c.y, a.y));
     e.add_product_of_differences((b.y, a.y), (a.x, c.x));
-    e.approximate()
+    e
+}
+
+/// The sign of `X − edge` along one axis, for the crossing
+/// `X = from + (o_a / D) (to − from)` (`D = o_a − o_b`): the sign of
+/// `(from − edge) D + o_a (to − from)`, times the sign of `D`, exactly.
+fn side_of_crossing(from: f64, to: f64, oa: &Expansion, denominator: &Expansion, edge: f64) -> i8 {
+    let mut numerator = Expansion::default();
+    numerator.add_product_with_difference(denominator, (from, edge));
+    numerator.add_product_with_difference(oa, (to, from));
+    numerator.sign() * denominator.sign()
 }
 
 #[cfg(test)]
@@ -210,8 +244,6 @@ mod tests {
         // exact: 1e-12 x = 1e-12 - 4e-12 x, so x = 0.2
         assert!((x.x - 0.2).abs() < 1e-15, "{x:?}");
         let grid = PixelGrid::for_magnitude(1.0);
-        let mut near = Vec::new();
-        grid.pixels_near(x, &mut near);
-        assert!(near.contains(&grid.pixel_of(p(0.2, 0.2e-12))));
+        assert_eq!(grid.crossing_pixel(s, t), grid.pixel_of(p(0.2, 0.2e-12)));
     }
 }

@@ -9,7 +9,7 @@
 
 use crate::construct::grid::{bounding_box, Grid, SegmentCells};
 use crate::geometry::segment_contact::{inside_segment, segment_contact, SegmentContact};
-use crate::geometry::snap::{crossing_point, Pixel, PixelGrid};
+use crate::geometry::snap::{Pixel, PixelGrid};
 use crate::geometry::Point;
 
 /// How many contacts of each kind one search found.
@@ -86,7 +86,7 @@ fn pair_pixels(s: [Point; 2], t: [Point; 2], pixels: &PixelGrid, hot: &mut Vec<P
     match contact {
         SegmentContact::Cross => {
             counts.crossings += 1;
-            pixels.pixels_near(crossing_point(s, t), hot);
+            hot.push(pixels.crossing_pixel(s, t));
             return;
         }
         SegmentContact::Overlap => counts.overlaps += 1,

@@ -7,9 +7,9 @@
 //! The plane is cut into square pixels of side δ (`geometry::snap`: δ is
 //! 2^-46 of the power of two above the largest coordinate, so that centres
 //! are exact doubles). A pixel is *hot* when two items meet inside it other
-//! than at a common endpoint: the pixels round a computed crossing point
-//! (which hold the true one), and the pixel of an endpoint or a point that
-//! lies inside a segment. A round of snapping moves every endpoint and
+//! than at a common endpoint: the pixel holding a crossing point (decided
+//! exactly, though the point itself is not a double), and the pixel of an
+//! endpoint or a point that lies inside a segment. A round of snapping moves every endpoint and
 //! point in a hot pixel to its centre, and cuts every piece that meets a
 //! hot pixel (exactly: the closed segment against the closed square) and
 //! bends it through the centre. Pieces that come out equal merge (so
