@@ -1,12 +1,15 @@
-//! Tests of the input check: normalisation, conflicts, exactness, the grid
-//! against brute force, and a large input.
+//! Tests of the input check: normalisation, conflicts, exactness, the
+//! degenerate cases of the sweep, the sweep against brute force, and a large
+//! input.
 
-use super::candidates::{find_conflict, Grid};
-use super::classify::{point_conflict, segment_conflict};
+use super::classify::{point_conflict_at, segment_conflict_at};
 use super::normalise::{normalise, Normalised};
+use super::sweep::{find_conflict, find_conflict_at};
 use super::*;
 use crate::construct::input_scale;
+use crate::geometry::segment_contact::ContactPoint;
 use proptest::prelude::*;
+use std::cmp::Ordering;
 
 /// The check as the builder calls it, with the build's one scale.
 fn check_segments(points: &[Point], segments: &[[Point; 2]]) -> Result<CheckedInput, Conflict> {
@@ -135,13 +138,56 @@ fn point_inside_segment() {
 }
 
 #[test]
-fn first_conflict_in_input_order_is_reported() {
-    // Pairs (1,2) and (0,3) both cross; (0,3) comes first.
+fn leftmost_conflict_is_reported() {
+    // Pairs (1,2) and (0,3) both cross, at (1,1) and (1,11): the lower
+    // one is lexicographically first, whatever the input order.
     let segments = [s(0., 10., 2., 12.), s(0., 0., 2., 2.), s(0., 2., 2., 0.), s(0., 12., 2., 10.)];
-    assert_eq!(check(&segments), Err(Conflict::SegmentsCross { first: 0, second: 3 }));
-    // A segment conflict wins over an earlier point conflict.
-    let r = check_segments(&[p(1., 11.)], &[s(0., 11., 2., 11.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)]);
+    assert_eq!(check(&segments), Err(Conflict::SegmentsCross { first: 1, second: 2 }));
+    let reversed: Vec<[Point; 2]> = segments.iter().rev().copied().collect();
+    assert_eq!(check(&reversed), Err(Conflict::SegmentsCross { first: 1, second: 2 }));
+    // A point conflict left of a crossing wins over it; right of it, not.
+    let r = check_segments(&[p(0.5, 11.)], &[s(0., 11., 2., 11.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)]);
+    assert_eq!(r, Err(Conflict::PointOnSegment { point: 0, segment: 0 }));
+    let r = check_segments(&[p(1.5, 11.)], &[s(0., 11., 2., 11.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)]);
     assert_eq!(r, Err(Conflict::SegmentsCross { first: 1, second: 2 }));
+    // At one x the lower contact point wins: a crossing at (1, 1) against a
+    // T-junction at (1, 5) and an overlap starting at (1, 7).
+    let segments =
+        [s(1., 7., 3., 7.), s(0., 7., 2., 7.), s(0., 5., 2., 5.), s(1., 5., 1., 6.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)];
+    assert_eq!(check(&segments), Err(Conflict::SegmentsCross { first: 4, second: 5 }));
+    assert_eq!(check(&segments[..4]), Err(Conflict::EndpointOnSegment { segment: 2, endpoint_of: 3 }));
+    assert_eq!(check(&segments[..2]), Err(Conflict::SegmentsOverlap { first: 0, second: 1 }));
+}
+
+#[test]
+fn crossing_point_is_compared_exactly() {
+    // Segments 0 and 1 cross at (1/3, 1/3) exactly. Segment 3 ends inside
+    // the vertical bar 2 at x: the double nearest 1/3 lies below 1/3, so
+    // that T-junction is further left than the crossing; one ulp up, it
+    // is further right.
+    let third = 1.0 / 3.0;
+    let cross = [s(0., 0., 1., 1.), s(0., 1., 0.5, 0.)];
+    let at = ContactPoint::crossing(cross[0], cross[1]);
+    assert_eq!(ContactPoint::At(p(third, 9.0)).cmp(&at), Ordering::Less);
+    assert_eq!(ContactPoint::At(p(up(third), -9.0)).cmp(&at), Ordering::Greater);
+    let with_t = |x: f64| {
+        let mut v = cross.to_vec();
+        v.extend([s(x, -6., x, -3.), s(x, -4., x + 1., -3.)]);
+        v
+    };
+    assert_eq!(check(&with_t(third)), Err(Conflict::EndpointOnSegment { segment: 2, endpoint_of: 3 }));
+    assert_eq!(check(&with_t(up(third))), Err(Conflict::SegmentsCross { first: 0, second: 1 }));
+    // Exactly on a crossing: (1/2, 1/2) for the diagonals of a square.
+    let y = ContactPoint::crossing(s(0., 0., 1., 1.), s(0., 1., 1., 0.));
+    assert_eq!(ContactPoint::At(p(0.5, 0.5)).cmp(&y), Ordering::Equal);
+    assert_eq!(ContactPoint::At(p(0.5, up(0.5))).cmp(&y), Ordering::Greater);
+    assert_eq!(ContactPoint::At(p(down(0.5), 7.0)).cmp(&y), Ordering::Less);
+    // Two crossings one ulp apart in y at the same x.
+    let z = ContactPoint::crossing(s(0., 0., 1., 2.), s(0., 2., 1., 0.)); // (1/2, 1)
+    let w = ContactPoint::crossing(s(0., up(0.), 1., 2.), s(0., 2., 1., up(0.)));
+    assert_eq!(z.cmp(&w), Ordering::Less);
+    assert_eq!(w.cmp(&z), Ordering::Greater);
+    assert_eq!(z.cmp(&z.clone()), Ordering::Equal);
 }
 
 // ---- allowed shared endpoints ----
@@ -231,28 +277,47 @@ fn huge_and_tiny_coordinates() {
 }
 
 #[test]
-fn tiny_extent_next_to_a_far_point_uses_one_cell() {
+fn tiny_extent_next_to_a_far_point() {
     // The far point sets the scale, so the segments' extent stays near
-    // 1e-300: the grid falls back to one cell. (The orientations there
-    // underflow, beyond the predicates' documented exact range, so only
-    // "no panic, an answer" is asserted.)
+    // 1e-300. (The orientations there underflow, beyond the predicates'
+    // documented exact range, so only "no panic, an answer" is asserted.)
     let t = 1e-300;
     let segments = [s(0., 0., t, 0.), s(t, 0., t, t), s(0., t, 0.5 * t, 2. * t)];
-    let grid = Grid::for_segments(&segments.map(|q| (0, q)));
-    assert!(grid.single);
-    let mut cells = Vec::new();
-    grid.cover(segments[2][0], segments[2][1], &mut cells);
-    assert_eq!((cells, grid.cell_of(p(t, t))), (vec![0], 0));
     let _ = check_segments(&[p(1.0, 1.0)], &segments);
 }
 
-// ---- the grid against brute force ----
+// ---- the sweep against brute force ----
 
-/// All pairs, in the order `find_conflict` promises.
-fn brute_force(norm: &Normalised) -> Option<Conflict> {
+/// Every conflict of every pair, with its contact point: O(n²).
+fn all_conflicts(norm: &Normalised) -> Vec<(Conflict, ContactPoint)> {
     let m = norm.segments.len();
-    let seg = (0..m).flat_map(|i| (i + 1..m).map(move |j| (i, j))).find_map(|(i, j)| segment_conflict(norm, i, j));
-    seg.or_else(|| (0..norm.points.len()).flat_map(|q| (0..m).map(move |s| (q, s))).find_map(|(q, s)| point_conflict(norm, q, s)))
+    let segments = (0..m).flat_map(|i| (i + 1..m).map(move |j| (i, j))).filter_map(|(i, j)| segment_conflict_at(norm, i, j));
+    let points =
+        (0..norm.points.len()).flat_map(|q| (0..m).map(move |s| (q, s))).filter_map(|(q, s)| point_conflict_at(norm, q, s));
+    segments.chain(points).collect()
+}
+
+/// The smallest contact point of all conflicts, by brute force.
+fn brute_force(norm: &Normalised) -> Option<ContactPoint> {
+    all_conflicts(norm).into_iter().map(|(_, at)| at).min_by(|a, b| a.cmp(b))
+}
+
+/// The sweep's answer agrees with brute force: both find nothing, or the
+/// sweep's conflict is one of the pairs' conflicts, at its contact point,
+/// and that point is the smallest of all. Returns the sweep's answer.
+fn sweep_agrees(norm: &Normalised) -> Result<Option<(Conflict, ContactPoint)>, TestCaseError> {
+    let found = find_conflict_at(norm);
+    let all = all_conflicts(norm);
+    match (&found, brute_force(norm)) {
+        (None, None) => {}
+        (Some((c, at)), Some(min)) => {
+            prop_assert_eq!(at.cmp(&min), Ordering::Equal, "{:?} at {:?}, min {:?}", c, at, min);
+            prop_assert!(all.iter().any(|(d, e)| d == c && e.cmp(at) == Ordering::Equal), "{:?} is no conflict", c);
+        }
+        (f, b) => prop_assert!(false, "sweep {:?}, brute force {:?}", f, b),
+    }
+    prop_assert_eq!(found.as_ref().map(|f| f.0), find_conflict(norm));
+    Ok(found)
 }
 
 /// Whether integer input breaks the rules, decided independently of
@@ -342,15 +407,85 @@ fn polyline_input() -> impl Strategy<Value = IntInput> {
     })
 }
 
-fn run(input: &IntInput, f: (f64, f64)) -> Result<(), TestCaseError> {
+/// Shared endpoints galore: spokes from one or two centres to points of a
+/// small grid (collinear spokes, overlapping spokes), plus a few segments
+/// and points.
+fn star_input() -> impl Strategy<Value = IntInput> {
+    let v = (0i64..7, 0i64..7);
+    let centres = prop::collection::vec(v.clone(), 1..3);
+    let tips = prop::collection::vec((0usize..2, v.clone()), 1..16);
+    let extra = prop::collection::vec([v.clone(), v.clone()], 0..4);
+    (centres, tips, extra, prop::collection::vec(v, 0..3)).prop_map(|(centres, tips, extra, points)| {
+        let mut segments: Vec<[(i64, i64); 2]> = tips.into_iter().map(|(c, t)| [centres[c % centres.len()], t]).collect();
+        segments.extend(extra);
+        (points, segments)
+    })
+}
+
+/// Normalised as the builder does it, at placement `f`.
+fn normalised(input: &IntInput, f: (f64, f64)) -> (Vec<Point>, Vec<[Point; 2]>, Normalised) {
     let (points, segments) = input;
     let fp: Vec<Point> = points.iter().map(|&v| to_f64(v, f)).collect();
     let fs: Vec<[Point; 2]> = segments.iter().map(|s| s.map(|v| to_f64(v, f))).collect();
     let norm = normalise(&fp, &fs, |q| q.scaled(input_scale(&fp, &fs).to_internal).canonical_zero());
-    let grid_answer = find_conflict(&norm);
-    prop_assert_eq!(grid_answer, brute_force(&norm));
-    prop_assert_eq!(grid_answer.is_some(), integer_oracle(points, segments));
-    prop_assert_eq!(check_segments(&fp, &fs).err(), grid_answer);
+    (fp, fs, norm)
+}
+
+fn run(input: &IntInput, f: (f64, f64)) -> Result<(), TestCaseError> {
+    let (fp, fs, norm) = normalised(input, f);
+    let found = sweep_agrees(&norm)?;
+    prop_assert_eq!(found.is_some(), integer_oracle(&input.0, &input.1));
+    prop_assert_eq!(check_segments(&fp, &fs).err(), found.map(|f| f.0));
+    Ok(())
+}
+
+/// The same input in another order or another placement: the same
+/// verdict, and the same contact point where the order of points is kept.
+fn invariance(input: &IntInput, seed: u64) -> Result<(), TestCaseError> {
+    let (_, _, norm) = normalised(input, (1.0, 0.0));
+    let found = sweep_agrees(&norm)?;
+    let (points, segments) = input;
+    // Reversed: both lists, and each segment's ends.
+    let reversed: IntInput = (points.iter().rev().copied().collect(), segments.iter().rev().map(|&[a, b]| [b, a]).collect());
+    // Shuffled, by a seeded Fisher–Yates.
+    let mut rng = Rng(seed | 1);
+    let mut shuffled = input.clone();
+    for k in (1..shuffled.1.len()).rev() {
+        shuffled.1.swap(k, (rng.unit() * (k + 1) as f64) as usize % (k + 1));
+    }
+    for k in (1..shuffled.0.len()).rev() {
+        shuffled.0.swap(k, (rng.unit() * (k + 1) as f64) as usize % (k + 1));
+    }
+    for other in [reversed, shuffled] {
+        let (_, _, other_norm) = normalised(&other, (1.0, 0.0));
+        let again = sweep_agrees(&other_norm)?;
+        prop_assert_eq!(again.is_some(), found.is_some());
+        if let (Some((_, a)), Some((_, b))) = (&found, &again) {
+            prop_assert_eq!(a.cmp(b), Ordering::Equal);
+        }
+    }
+    // Mirrored: the same verdict (the leftmost contact is another one).
+    let mirrored: IntInput =
+        (points.iter().map(|&(x, y)| (-x, y)).collect(), segments.iter().map(|s| s.map(|(x, y)| (-x, y))).collect());
+    let (_, _, mirrored_norm) = normalised(&mirrored, (1.0, 0.0));
+    prop_assert_eq!(sweep_agrees(&mirrored_norm)?.is_some(), found.is_some());
+    // Scaled by powers of two: every decision is the same, so the same
+    // conflict, and the same contact point in input coordinates.
+    let input_contact = |f: (f64, f64), found: &Option<(Conflict, ContactPoint)>| {
+        let (fp, fs, _) = normalised(input, f);
+        match found {
+            Some((_, ContactPoint::At(q))) => Some(q.scaled(input_scale(&fp, &fs).to_input)),
+            _ => None,
+        }
+    };
+    for k in [-1000, -60, -1, 1, 61, 1000] {
+        let f = (2f64.powi(k), 0.0);
+        let (_, _, scaled_norm) = normalised(input, f);
+        let again = sweep_agrees(&scaled_norm)?;
+        prop_assert_eq!(again.as_ref().map(|f| f.0), found.as_ref().map(|f| f.0));
+        let expected = input_contact((1.0, 0.0), &found).map(|q| q.scaled(f.0));
+        prop_assert_eq!(input_contact(f, &again), expected);
+    }
     Ok(())
 }
 
@@ -381,52 +516,41 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
 
     #[test]
-    fn grid_agrees_with_brute_force_small_grid(input in small_grid_input(), f in placement()) {
+    fn sweep_agrees_with_brute_force_small_grid(input in small_grid_input(), f in placement()) {
         run(&input, f)?;
     }
 
     #[test]
-    fn grid_agrees_with_brute_force_spread(input in spread_input(), f in placement()) {
+    fn sweep_agrees_with_brute_force_spread(input in spread_input(), f in placement()) {
         run(&input, f)?;
     }
 
     #[test]
-    fn grid_agrees_with_brute_force_polyline(input in polyline_input(), f in placement()) {
+    fn sweep_agrees_with_brute_force_polyline(input in polyline_input(), f in placement()) {
         run(&input, f)?;
     }
 
-    /// Random real coordinates: crossings are common, collinearity not.
     #[test]
-    fn grid_agrees_with_brute_force_reals(
+    fn sweep_agrees_with_brute_force_stars(input in star_input(), f in placement()) {
+        run(&input, f)?;
+    }
+
+    /// Reversed, shuffled, mirrored and scaled inputs: the same verdict
+    /// and the same leftmost contact point.
+    #[test]
+    fn sweep_is_invariant(input in prop_oneof![small_grid_input(), star_input(), polyline_input()], seed in any::<u64>()) {
+        invariance(&input, seed)?;
+    }
+
+    /// Random real coordinates: crossings are common, collinearity not;
+    /// the leftmost crossing is compared exactly with the others.
+    #[test]
+    fn sweep_agrees_with_brute_force_reals(
         segments in real_segments(100.0, 0..40),
     ) {
         let fs: Vec<[Point; 2]> = segments.iter().map(|s| s.map(|(x, y)| p(x, y))).collect();
         let norm = normalise(&[], &fs, |q| q.canonical_zero());
-        prop_assert_eq!(find_conflict(&norm), brute_force(&norm));
-    }
-
-    /// Points computed along a segment land in cells it registered.
-    #[test]
-    fn cover_is_conservative(
-        segments in real_segments(1e3, 1..30),
-    ) {
-        let kept: Vec<(usize, [Point; 2])> = segments
-            .iter()
-            .map(|s| s.map(|(x, y)| p(x, y)))
-            .filter(|[a, b]| a != b)
-            .enumerate()
-            .collect();
-        prop_assume!(!kept.is_empty());
-        let grid = Grid::for_segments(&kept);
-        for (_, [a, b]) in &kept {
-            let mut cells = Vec::new();
-            grid.cover(*a, *b, &mut cells);
-            for k in 0..=64 {
-                let t = k as f64 / 64.0;
-                let q = p(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
-                prop_assert!(cells.contains(&grid.cell_of(q)), "{:?} {:?} t={}", a, b, t);
-            }
-        }
+        sweep_agrees(&norm)?;
     }
 }
 

@@ -1,0 +1,373 @@
+//! # Which conflict is found: a Shamos–Hoey sweep
+//! The kept segments and isolated points are swept in lexicographic order
+//! of their points (by `x`, then by `y`): think of a vertical sweep line
+//! tilted by an infinitesimal clockwise angle, so that no two distinct
+//! points are ever met at once and a vertical segment runs, like any
+//! other, from its first point (the lower end) to its last. A shear does
+//! not change orientations, so every decision below is an exact
+//! orientation sign of input points ([`exact_orientation`], never perturbed
+//! by fault injection) or an exact coordinate comparison.
+//!
+//! Each segment is oriented from its lexicographically smaller end (its
+//! *first* point) to its larger (*last*). The *status* holds the segments
+//! the sweep line currently crosses, ordered from below to above, in a treap
+//! (split and merge by a predicate; the node of a segment is its index).
+//! An *event* is one distinct point with everything there: the segments
+//! starting there, those ending there, or one isolated point (normalisation
+//! has made isolated points distinct from all endpoints). At event `q`:
+//! 1. the status is split by the sign of `orientation(first, last, q)` into
+//!    the segments below `q`, those through `q` (ending there, or with `q`
+//!    in their open interior) and those above it;
+//! 2. a segment with `q` in its interior is a conflict at `q` with an item
+//!    there (the isolated point, or the segment with the smallest index
+//!    among those starting or ending there);
+//! 3. the segments through `q` leave the status; those starting at `q`,
+//!    sorted by direction (`orientation(q, last_i, last_j)`, exact; ties,
+//!    which are overlaps, by index), enter between the parts below and
+//!    above;
+//! 4. every pair of segments that has just become adjacent is classified
+//!    (`classify.rs`): the highest below with the lowest new one, each new
+//!    one with the next, the highest new one with the lowest above; or,
+//!    when nothing starts at `q`, the highest below with the lowest above.
+//!
+//! # Which conflict is reported, and why it is seen
+//! Every conflict found is ranked by its *contact point*, the
+//! lexicographically smallest point the two items share
+//! (`geometry::segment_contact::first_contact`; a crossing point is a
+//! rational point, compared exactly); the smallest contact point wins, and
+//! among conflicts found at the same contact point, segment pairs before
+//! (point, segment) pairs, then the smaller pair of input indices
+//! (smaller index first). The sweep stops at the first event
+//! lexicographically past the best contact point found so far.
+//!
+//! Let `p*` be the smallest contact point of all conflicts. Before the
+//! sweep reaches `p*`, no two active segments share a point left of the
+//! sweep line other than a common endpoint, so the status order is the
+//! true order along the sweep line, and "below `q`", "through `q`",
+//! "above `q`" split it into three runs. Two cases:
+//! - `p*` is an event point. Some item has `p*` as an endpoint (or is the
+//!   isolated point `p*`); its partner of the conflict either has `p*` in
+//!   its open interior (it is active and through `p*`: step 2 sees it) or
+//!   starts at `p*` too (an overlap in one direction: the two are
+//!   neighbours in the sorted start list, step 4 sees it). A proper
+//!   crossing at an event point is also a T-junction there, seen so.
+//! - `p*` is not an event point: two segments cross there properly. All
+//!   segments through `p*` are active just left of it and, by continuity,
+//!   contiguous in the status; any two of them cross at `p*` (an overlap
+//!   would meet further left), so the lowest two, `g` and `h`, do. Between
+//!   the last event before `p*` and `p*` the order does not change, so `g`
+//!   and `h` became adjacent at some event before `p*`, and every new
+//!   adjacency is classified (step 4).
+//!
+//! So a conflict at `p*` is found by the time the sweep has handled the
+//! event `p*`, or the last event before it; the sweep never handles an event
+//! past `p*`, and so it always works on a status whose order is right
+//! (only the last event handled may leave it wrong, and the sweep stops
+//! after it). Events past the best contact found so far are not needed:
+//! a conflict with a smaller contact point `p` would be found at an event
+//! no later than `p`.
+//!
+//! # Cost
+//! Sorting the `2 m + p` event entries, O(n log n). Each event costs two
+//! splits and two merges of the treap, O(log n) expected, plus O(log n)
+//! per segment starting there (sorting them, and merging them in), plus
+//! O(1) per segment ending there, and at most four classifications; so
+//! O(n log n) in all, for every input: a star of k spokes costs one sort
+//! of k directions, long parallel bundles cost the same as short segments.
+//! The expectation is over the treap's priorities (a fixed pseudo-random
+//! sequence, independent of the geometry). Comparing the best contact
+//! point with each later event is O(1): an `f64` approximation with an
+//! error bound decides unless they are within a few ulps, then big
+//! numbers of fixed size.
+
+use std::cmp::Ordering;
+
+use super::classify::{point_conflict_at, segment_conflict_at};
+use super::normalise::Normalised;
+use super::Conflict;
+use crate::geometry::predicates::{exact_orientation, Orientation};
+use crate::geometry::segment_contact::{lex_cmp, ContactPoint};
+use crate::geometry::Point;
+
+/// The conflict whose contact point is lexicographically smallest (see
+/// the module documentation for ties), or `None` when there is none.
+pub(super) fn find_conflict(norm: &Normalised) -> Option<Conflict> {
+    find_conflict_at(norm).map(|(c, _)| c)
+}
+
+/// [`find_conflict`] with the conflict's contact point.
+pub(super) fn find_conflict_at(norm: &Normalised) -> Option<(Conflict, ContactPoint)> {
+    if norm.segments.is_empty() {
+        return None; // distinct points never conflict
+    }
+    let m = norm.segments.len();
+    assert!(2 * m + norm.points.len() < NIL as usize, "item ids are 32-bit");
+    let segments: Vec<[Point; 2]> =
+        norm.segments.iter().map(|&(_, [a, b])| if lex_cmp(a, b) == Ordering::Greater { [b, a] } else { [a, b] }).collect();
+    let mut events: Vec<(Point, Item)> = Vec::with_capacity(2 * m + norm.points.len());
+    for (i, [a, b]) in segments.iter().enumerate() {
+        events.push((*a, Item::Start(i as u32)));
+        events.push((*b, Item::End(i as u32)));
+    }
+    events.extend(norm.points.iter().enumerate().map(|(k, &(_, q))| (q, Item::Lone(k as u32))));
+    events.sort_unstable_by(|a, b| lex_cmp(a.0, b.0));
+
+    let mut sweep = Sweep { norm, status: Treap::new(m), segments, best: None };
+    let mut group = Group::default();
+    let mut k = 0;
+    while k < events.len() {
+        let q = events[k].0;
+        if sweep.best.as_ref().is_some_and(|best| best.1.cmp(&ContactPoint::At(q)) == Ordering::Less) {
+            break; // past the best contact point
+        }
+        group.clear();
+        while k < events.len() && lex_cmp(events[k].0, q) == Ordering::Equal {
+            match events[k].1 {
+                Item::Start(i) => group.starts.push(i),
+                Item::End(i) => group.ends.push(i),
+                Item::Lone(p) => group.lone = Some(p),
+            }
+            k += 1;
+        }
+        sweep.event(q, &mut group);
+    }
+    sweep.best
+}
+
+/// What an event entry is.
+#[derive(Clone, Copy, Debug)]
+enum Item {
+    /// Kept segment `i` starts here (its first point).
+    Start(u32),
+    /// Kept segment `i` ends here (its last point).
+    End(u32),
+    /// Kept point `p`.
+    Lone(u32),
+}
+
+/// Everything at one event point.
+#[derive(Default)]
+struct Group {
+    starts: Vec<u32>,
+    ends: Vec<u32>,
+    lone: Option<u32>,
+}
+
+impl Group {
+    fn clear(&mut self) {
+        self.starts.clear();
+        self.ends.clear();
+        self.lone = None;
+    }
+}
+
+struct Sweep<'a> {
+    norm: &'a Normalised,
+    status: Treap,
+    /// The kept segments, first point first.
+    segments: Vec<[Point; 2]>,
+    best: Option<(Conflict, ContactPoint)>,
+}
+
+impl Sweep<'_> {
+    /// Handles the event at `q` (steps 1 to 4 of the module documentation).
+    fn event(&mut self, q: Point, group: &mut Group) {
+        let segments = &self.segments;
+        let side = |i: u32| {
+            let [a, b] = segments[i as usize];
+            exact_orientation(a, b, q)
+        };
+        let root = self.status.root;
+        let (below, rest) = self.status.split(root, &|i| side(i) == Orientation::CounterClockwise);
+        let (through, above) = self.status.split(rest, &|i| side(i) != Orientation::Clockwise);
+
+        let mut interior: Option<u32> = None;
+        self.status.for_each(through, &mut |i| {
+            if segments[i as usize][1] != q {
+                interior = Some(interior.map_or(i, |j| j.min(i)));
+            }
+        });
+        if let Some(t) = interior {
+            let found = match group.lone {
+                Some(p) => point_conflict_at(self.norm, p as usize, t as usize),
+                None => {
+                    let u = group.starts.iter().chain(&group.ends).copied().min().expect("an event has an item");
+                    self.pair(t, u)
+                }
+            };
+            self.offer(found);
+        }
+        if group.lone.is_some() {
+            // Nothing starts or ends at an isolated point: the status is
+            // as it was.
+            let joined = self.status.merge(below, through);
+            self.status.root = self.status.merge(joined, above);
+            return;
+        }
+
+        let segments = &self.segments;
+        group.starts.sort_unstable_by(|&i, &j| {
+            let direction = exact_orientation(q, segments[i as usize][1], segments[j as usize][1]);
+            match direction {
+                Orientation::CounterClockwise => Ordering::Less,
+                Orientation::Clockwise => Ordering::Greater,
+                Orientation::Collinear => i.cmp(&j),
+            }
+        });
+        let (low, high) = (self.status.last(below), self.status.first(above));
+        let mut adjacent = Vec::with_capacity(group.starts.len() + 1);
+        let mut previous = low;
+        let mut inserted = NIL;
+        for &s in &group.starts {
+            adjacent.push((previous, s));
+            previous = s;
+            let node = self.status.node(s);
+            inserted = self.status.merge(inserted, node);
+        }
+        adjacent.push((previous, high));
+        let joined = self.status.merge(below, inserted);
+        self.status.root = self.status.merge(joined, above);
+        for (i, j) in adjacent {
+            if i != NIL && j != NIL {
+                let found = self.pair(i, j);
+                self.offer(found);
+            }
+        }
+    }
+
+    /// The conflict of kept segments `i` and `j`, with its contact point.
+    fn pair(&self, i: u32, j: u32) -> Option<(Conflict, ContactPoint)> {
+        let (i, j) = (i.min(j) as usize, i.max(j) as usize);
+        segment_conflict_at(self.norm, i, j)
+    }
+
+    /// Keeps `found` if it beats the best so far.
+    fn offer(&mut self, found: Option<(Conflict, ContactPoint)>) {
+        let Some((conflict, contact)) = found else { return };
+        let better = match &self.best {
+            None => true,
+            Some((best, at)) => match contact.cmp(at) {
+                Ordering::Less => true,
+                Ordering::Equal => rank(&conflict) < rank(best),
+                Ordering::Greater => false,
+            },
+        };
+        if better {
+            self.best = Some((conflict, contact));
+        }
+    }
+}
+
+/// The order among conflicts at one contact point: segment pairs first,
+/// then the smaller pair of input indices, smaller index first.
+fn rank(conflict: &Conflict) -> (u8, usize, usize) {
+    let pair = |a: usize, b: usize| (a.min(b), a.max(b));
+    match *conflict {
+        Conflict::SegmentsCross { first, second } | Conflict::SegmentsOverlap { first, second } => {
+            let (a, b) = pair(first, second);
+            (0, a, b)
+        }
+        Conflict::EndpointOnSegment { segment, endpoint_of } => {
+            let (a, b) = pair(segment, endpoint_of);
+            (0, a, b)
+        }
+        Conflict::PointOnSegment { point, segment } => (1, point, segment),
+    }
+}
+
+/// No node.
+const NIL: u32 = u32::MAX;
+
+/// A treap over the kept segments, split and merged by position only:
+/// node `i` is kept segment `i`, each inserted at most once. The order is
+/// the caller's: [`Treap::split`] takes a predicate that holds for a prefix.
+struct Treap {
+    left: Vec<u32>,
+    right: Vec<u32>,
+    priority: Vec<u32>,
+    root: u32,
+    /// xorshift state for the priorities.
+    state: u32,
+}
+
+impl Treap {
+    fn new(m: usize) -> Treap {
+        Treap { left: vec![NIL; m], right: vec![NIL; m], priority: vec![0; m], root: NIL, state: 0x9e37_79b9 }
+    }
+
+    /// Node `i` alone, with a fresh priority.
+    fn node(&mut self, i: u32) -> u32 {
+        self.state ^= self.state << 13;
+        self.state ^= self.state >> 17;
+        self.state ^= self.state << 5;
+        let i_ = i as usize;
+        (self.left[i_], self.right[i_], self.priority[i_]) = (NIL, NIL, self.state);
+        i
+    }
+
+    /// Splits `t` into the longest prefix whose nodes satisfy `pred` and
+    /// the rest (a prefix when `pred` holds for one, else some split).
+    fn split(&mut self, t: u32, pred: &dyn Fn(u32) -> bool) -> (u32, u32) {
+        if t == NIL {
+            return (NIL, NIL);
+        }
+        let n = t as usize;
+        if pred(t) {
+            let (l, r) = self.split(self.right[n], pred);
+            self.right[n] = l;
+            (t, r)
+        } else {
+            let (l, r) = self.split(self.left[n], pred);
+            self.left[n] = r;
+            (l, t)
+        }
+    }
+
+    /// `a` followed by `b`.
+    fn merge(&mut self, a: u32, b: u32) -> u32 {
+        if a == NIL {
+            return b;
+        }
+        if b == NIL {
+            return a;
+        }
+        if self.priority[a as usize] > self.priority[b as usize] {
+            let r = self.merge(self.right[a as usize], b);
+            self.right[a as usize] = r;
+            a
+        } else {
+            let l = self.merge(a, self.left[b as usize]);
+            self.left[b as usize] = l;
+            b
+        }
+    }
+
+    fn first(&self, mut t: u32) -> u32 {
+        while t != NIL && self.left[t as usize] != NIL {
+            t = self.left[t as usize];
+        }
+        t
+    }
+
+    fn last(&self, mut t: u32) -> u32 {
+        while t != NIL && self.right[t as usize] != NIL {
+            t = self.right[t as usize];
+        }
+        t
+    }
+
+    /// Every node of `t` (in no particular order).
+    fn for_each(&self, t: u32, f: &mut impl FnMut(u32)) {
+        if t == NIL {
+            return;
+        }
+        let mut stack = vec![t];
+        while let Some(n) = stack.pop() {
+            if n != NIL {
+                f(n);
+                stack.push(self.left[n as usize]);
+                stack.push(self.right[n as usize]);
+            }
+        }
+    }
+}
