@@ -286,6 +286,161 @@ fn tiny_extent_next_to_a_far_point() {
     let _ = check_segments(&[p(1.0, 1.0)], &segments);
 }
 
+// ---- degenerate cases of the sweep ----
+
+/// The factors the degenerate cases are tried at: ordinary, huge, tiny.
+const FACTORS: [f64; 3] = [1.0, 1e300, 1e-300];
+
+#[test]
+fn star_of_1000_spokes() {
+    for f in FACTORS {
+        // Spokes both start and end at the centre (those pointing left end
+        // there): 1000 segments sharing one point, no conflict.
+        let centre = p(0.5 * f, -0.25 * f);
+        let star: Vec<[Point; 2]> = (0..1000)
+            .map(|k| {
+                let t = k as f64 * std::f64::consts::TAU / 1000.0;
+                [centre, p(centre.x + t.cos() * f, centre.y + t.sin() * f)]
+            })
+            .collect();
+        assert!(check(&star).is_ok(), "{f}");
+        // With an isolated point near the centre, and one on a spoke's
+        // line but beyond its tip: still fine.
+        assert!(check_segments(&[p(centre.x, centre.y + 1e-3 * f), p(centre.x + 2.0 * f, centre.y)], &star).is_ok());
+    }
+}
+
+#[test]
+fn star_with_a_spoke_overlapping_another() {
+    for f in FACTORS {
+        // Tips on the boundary of a square: all directions distinct.
+        let mut tips: Vec<(f64, f64)> = Vec::new();
+        for k in -10..10 {
+            let k = f64::from(k);
+            tips.extend([(k, -10.), (10., k), (-k, 10.), (-10., -k)]);
+        }
+        let star: Vec<[Point; 2]> = tips.iter().map(|&(x, y)| [p(0., 0.), p(x * f, y * f)]).collect();
+        assert!(check(&star).is_ok(), "{f}");
+        let index_of = |x: f64, y: f64| tips.iter().position(|&t| t == (x, y)).unwrap();
+        let n = star.len();
+        // Half the spoke to (10, 4), from the centre: overlaps it there.
+        let mut bad = star.clone();
+        bad.push([p(0., 0.), p(5. * f, 2. * f)]);
+        assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: index_of(10., 4.), second: n }), "{f}");
+        // Twice the spoke to (-10, -4), ending at the centre: the overlap
+        // starts at (-10, -4), left of the centre, so it is reported.
+        bad.push([p(-20. * f, -8. * f), p(0., 0.)]);
+        assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: index_of(-10., -4.), second: n + 1 }), "{f}");
+        // Through the centre, along a spoke: the centre is inside it.
+        let mut through = star.clone();
+        through.push([p(-3. * f, 0.), p(3. * f, 0.)]);
+        assert!(matches!(check(&through), Err(Conflict::SegmentsOverlap { .. } | Conflict::EndpointOnSegment { .. })));
+    }
+}
+
+#[test]
+fn stacked_vertical_segments() {
+    for f in FACTORS {
+        let stack: Vec<[Point; 2]> = (0..100).map(|i| s(0., f64::from(i) * f, 0., f64::from(i + 1) * f)).collect();
+        assert!(check(&stack).is_ok(), "{f}");
+        // Reversed ends, and a second stack with gaps beside it.
+        let mut two: Vec<[Point; 2]> = stack.iter().map(|&[a, b]| [b, a]).collect();
+        two.extend((0..50).map(|i| s(f, f64::from(2 * i) * f, f, f64::from(2 * i + 1) * f)));
+        assert!(check(&two).is_ok(), "{f}");
+        // Shifted by half: overlaps segment 50 from (0, 50.5) on.
+        let mut bad = stack.clone();
+        bad.push(s(0., 50.5 * f, 0., 51.5 * f));
+        assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: 50, second: 100 }), "{f}");
+        // Contained in one, with no common end.
+        let mut bad = stack.clone();
+        bad.push(s(0., 70.25 * f, 0., 70.75 * f));
+        assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: 70, second: 100 }), "{f}");
+        // A horizontal crossing one, and one ending on one.
+        let mut bad = stack.clone();
+        bad.push(s(-f, 30.25 * f, f, 30.25 * f));
+        assert_eq!(check(&bad), Err(Conflict::SegmentsCross { first: 30, second: 100 }), "{f}");
+        let mut bad = stack.clone();
+        bad.push(s(-f, 30.25 * f, 0., 30.25 * f));
+        assert_eq!(check(&bad), Err(Conflict::EndpointOnSegment { segment: 30, endpoint_of: 100 }), "{f}");
+        // Touching the stack at a shared end from the side: fine.
+        let mut fine = stack.clone();
+        fine.push(s(-f, 30. * f, 0., 30. * f));
+        fine.push(s(0., 30. * f, f, 31. * f));
+        assert!(check(&fine).is_ok(), "{f}");
+    }
+}
+
+#[test]
+fn point_inside_a_vertical_segment() {
+    for f in FACTORS {
+        let segments = [s(0., 0., 0., f), s(0., f, 0., 2. * f), s(-f, f, 0., f), s(0., 3. * f, 0., 4. * f)];
+        // Points at the same x as many events: between the segments, and
+        // on their ends (merged), are fine.
+        let fine = [p(0., 2.5 * f), p(0., -f), p(0., 5. * f), p(0., 0.)];
+        assert!(check_segments(&fine, &segments).is_ok(), "{f}");
+        let r = check_segments(&[p(0., 2.5 * f), p(0., 1.5 * f)], &segments);
+        assert_eq!(r, Err(Conflict::PointOnSegment { point: 1, segment: 1 }), "{f}");
+        // As a zero-length segment.
+        let mut with = segments.to_vec();
+        with.push(s(0., 3.5 * f, 0., 3.5 * f));
+        assert_eq!(check(&with), Err(Conflict::EndpointOnSegment { segment: 3, endpoint_of: 4 }), "{f}");
+    }
+}
+
+#[test]
+fn collinear_chain() {
+    for f in FACTORS {
+        // Ends alternately reversed; all on the line y = 2x.
+        let chain: Vec<[Point; 2]> = (0..1000)
+            .map(|i| {
+                let (a, b) = (f64::from(i), f64::from(i + 1));
+                let seg = s(a * f, 2. * a * f, b * f, 2. * b * f);
+                if i % 2 == 0 {
+                    seg
+                } else {
+                    [seg[1], seg[0]]
+                }
+            })
+            .collect();
+        assert!(check(&chain).is_ok(), "{f}");
+        let mut bad = chain.clone();
+        bad.push(s(500.5 * f, 1001. * f, 600. * f, 1200. * f));
+        assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: 500, second: 1000 }), "{f}");
+        // The same line continued past the end: fine.
+        let mut fine = chain.clone();
+        fine.push(s(1000. * f, 2000. * f, 1500. * f, 3000. * f));
+        assert!(check(&fine).is_ok(), "{f}");
+    }
+}
+
+#[test]
+fn t_junction_at_an_x_shared_with_many_events() {
+    for f in FACTORS {
+        // 400 segments start or end at x = 5, at y = 0..400; a diagonal
+        // passes x = 5 at y = 500, a vertical bar spans y = 1000..2000.
+        let mut segments: Vec<[Point; 2]> = Vec::new();
+        for k in 0..200 {
+            let k = f64::from(k);
+            segments.push(s(5. * f, 2. * k * f, 6. * f, 2. * k * f));
+            segments.push(s(4. * f, (2. * k + 1.) * f, 5. * f, (2. * k + 1.) * f));
+        }
+        segments.push(s(0., 0., 10. * f, 1000. * f)); // 400
+        segments.push(s(5. * f, 1000. * f, 5. * f, 2000. * f)); // 401
+        segments.push(s(5. * f, 490. * f, 7. * f, 490. * f)); // 402, just below it
+        assert!(check(&segments).is_ok(), "{f}");
+        // Starting on the diagonal at x = 5, and ending on the bar there.
+        let mut bad = segments.clone();
+        bad.push(s(5. * f, 500. * f, 6. * f, 500. * f));
+        assert_eq!(check(&bad), Err(Conflict::EndpointOnSegment { segment: 400, endpoint_of: 403 }), "{f}");
+        let mut bad = segments.clone();
+        bad.push(s(4. * f, 1500. * f, 5. * f, 1500. * f));
+        assert_eq!(check(&bad), Err(Conflict::EndpointOnSegment { segment: 401, endpoint_of: 403 }), "{f}");
+        // Both: the lower contact point, on the diagonal, is reported.
+        bad.push(s(5. * f, 500. * f, 6. * f, 500. * f));
+        assert_eq!(check(&bad), Err(Conflict::EndpointOnSegment { segment: 400, endpoint_of: 404 }), "{f}");
+    }
+}
+
 // ---- the sweep against brute force ----
 
 /// Every conflict of every pair, with its contact point: O(n²).
