@@ -73,6 +73,22 @@ pub(crate) fn lex_cmp(a: Point, b: Point) -> Ordering {
     cmp_f64(a.x, b.x).then_with(|| cmp_f64(a.y, b.y))
 }
 
+/// A key whose order is [`lex_cmp`]'s, for sorting (`-0.0` and `+0.0`
+/// alike; no NaN).
+pub(crate) fn lex_key(p: Point) -> (u64, u64) {
+    (ordered_bits(p.x), ordered_bits(p.y))
+}
+
+/// The bits of `v` turned so that unsigned order is numeric order.
+fn ordered_bits(v: f64) -> u64 {
+    let bits = (v + 0.0).to_bits(); // -0.0 + 0.0 is +0.0
+    if bits >> 63 == 1 {
+        !bits
+    } else {
+        bits | (1 << 63)
+    }
+}
+
 fn cmp_f64(a: f64, b: f64) -> Ordering {
     if a < b {
         Ordering::Less

@@ -86,7 +86,7 @@ use super::classify::{point_conflict_at, segment_conflict_at};
 use super::normalise::Normalised;
 use super::Conflict;
 use crate::geometry::predicates::{exact_orientation, Orientation};
-use crate::geometry::segment_contact::{lex_cmp, ContactPoint};
+use crate::geometry::segment_contact::{lex_cmp, lex_key, ContactPoint};
 use crate::geometry::Point;
 
 /// The conflict whose contact point is lexicographically smallest (see
@@ -101,51 +101,72 @@ pub(super) fn find_conflict_at(norm: &Normalised) -> Option<(Conflict, ContactPo
         return None; // distinct points never conflict
     }
     let m = norm.segments.len();
-    assert!(2 * m + norm.points.len() < NIL as usize, "item ids are 32-bit");
-    let segments: Vec<[Point; 2]> =
-        norm.segments.iter().map(|&(_, [a, b])| if lex_cmp(a, b) == Ordering::Greater { [b, a] } else { [a, b] }).collect();
-    let mut events: Vec<(Point, Item)> = Vec::with_capacity(2 * m + norm.points.len());
-    for (i, [a, b]) in segments.iter().enumerate() {
-        events.push((*a, Item::Start(i as u32)));
-        events.push((*b, Item::End(i as u32)));
-    }
-    events.extend(norm.points.iter().enumerate().map(|(k, &(_, q))| (q, Item::Lone(k as u32))));
-    events.sort_unstable_by(|a, b| lex_cmp(a.0, b.0));
+    assert!(m < NIL as usize && norm.points.len() < NIL as usize, "item ids are 32-bit");
+    let oriented = |[a, b]: [Point; 2]| if lex_cmp(a, b) == Ordering::Greater { [b, a] } else { [a, b] };
+    // Node ids in the order of the first points: the start events come in
+    // that order, and the segments in the status at one time lie close
+    // together in memory.
+    let mut starts: Vec<(Key, u32)> =
+        norm.segments.iter().enumerate().map(|(i, &(_, s))| (lex_key(oriented(s)[0]), i as u32)).collect();
+    starts.sort_unstable();
+    let kept: Vec<u32> = starts.iter().map(|&(_, i)| i).collect();
+    drop(starts);
+    let segments: Vec<[Point; 2]> = kept.iter().map(|&i| oriented(norm.segments[i as usize].1)).collect();
+    let mut ends: Vec<(Key, u32)> = segments.iter().enumerate().map(|(k, s)| (lex_key(s[1]), k as u32)).collect();
+    ends.sort_unstable();
+    let mut lone: Vec<(Key, u32)> = norm.points.iter().enumerate().map(|(k, &(_, q))| (lex_key(q), k as u32)).collect();
+    lone.sort_unstable();
 
-    let mut sweep = Sweep { norm, status: Treap::new(m), segments, best: None };
-    let mut group = Group::default();
-    let mut k = 0;
-    while k < events.len() {
-        let q = events[k].0;
+    let mut sweep = Sweep {
+        norm,
+        status: Treap::new(m),
+        kept,
+        segments,
+        best: None,
+        group: Group::default(),
+        adjacent: Vec::new(),
+        stack: Vec::new(),
+    };
+    let (mut next_start, mut next_end, mut next_lone) = (0, 0, 0);
+    loop {
+        // The next event: the smallest of the three streams' heads.
+        let start_key = sweep.segments.get(next_start).map(|s| lex_key(s[0]));
+        let end_key = ends.get(next_end).map(|e| e.0);
+        let lone_key = lone.get(next_lone).map(|e| e.0);
+        let Some(key) = [start_key, end_key, lone_key].into_iter().flatten().min() else { break };
+        let q = if start_key == Some(key) {
+            sweep.segments[next_start][0]
+        } else if end_key == Some(key) {
+            sweep.segments[ends[next_end].1 as usize][1]
+        } else {
+            norm.points[lone[next_lone].1 as usize].1
+        };
         if sweep.best.as_ref().is_some_and(|best| best.1.cmp(&ContactPoint::At(q)) == Ordering::Less) {
             break; // past the best contact point
         }
-        group.clear();
-        while k < events.len() && lex_cmp(events[k].0, q) == Ordering::Equal {
-            match events[k].1 {
-                Item::Start(i) => group.starts.push(i),
-                Item::End(i) => group.ends.push(i),
-                Item::Lone(p) => group.lone = Some(p),
-            }
-            k += 1;
+        sweep.group.clear();
+        while next_start < m && lex_key(sweep.segments[next_start][0]) == key {
+            sweep.group.starts.push(next_start as u32);
+            next_start += 1;
         }
-        sweep.event(q, &mut group);
+        while next_end < m && ends[next_end].0 == key {
+            sweep.group.ends.push(ends[next_end].1);
+            next_end += 1;
+        }
+        if next_lone < lone.len() && lone[next_lone].0 == key {
+            sweep.group.lone = Some(lone[next_lone].1);
+            next_lone += 1;
+        }
+        sweep.event(q);
     }
     sweep.best
 }
 
-/// What an event entry is.
-#[derive(Clone, Copy, Debug)]
-enum Item {
-    /// Kept segment `i` starts here (its first point).
-    Start(u32),
-    /// Kept segment `i` ends here (its last point).
-    End(u32),
-    /// Kept point `p`.
-    Lone(u32),
-}
+/// A point's sort key ([`lex_key`]).
+type Key = (u64, u64);
 
-/// Everything at one event point.
+/// Everything at one event point: node ids of the segments starting and
+/// ending there, or the isolated point.
 #[derive(Default)]
 struct Group {
     starts: Vec<u32>,
@@ -164,14 +185,21 @@ impl Group {
 struct Sweep<'a> {
     norm: &'a Normalised,
     status: Treap,
-    /// The kept segments, first point first.
+    /// Per node, its kept segment (position in `norm.segments`).
+    kept: Vec<u32>,
+    /// Per node, its segment, first point first.
     segments: Vec<[Point; 2]>,
     best: Option<(Conflict, ContactPoint)>,
+    /// Scratch space, kept from event to event.
+    group: Group,
+    adjacent: Vec<(u32, u32)>,
+    stack: Vec<u32>,
 }
 
 impl Sweep<'_> {
-    /// Handles the event at `q` (steps 1 to 4 of the module documentation).
-    fn event(&mut self, q: Point, group: &mut Group) {
+    /// Handles the event at `q` (steps 1 to 4 of the module documentation)
+    /// with what `self.group` holds.
+    fn event(&mut self, q: Point) {
         let segments = &self.segments;
         let side = |i: u32| {
             let [a, b] = segments[i as usize];
@@ -181,23 +209,26 @@ impl Sweep<'_> {
         let (below, rest) = self.status.split(root, &|i| side(i) == Orientation::CounterClockwise);
         let (through, above) = self.status.split(rest, &|i| side(i) != Orientation::Clockwise);
 
+        // Step 2: a segment through q that does not end there.
+        let kept = &self.kept;
         let mut interior: Option<u32> = None;
-        self.status.for_each(through, &mut |i| {
-            if segments[i as usize][1] != q {
-                interior = Some(interior.map_or(i, |j| j.min(i)));
+        self.status.for_each(through, &mut self.stack, &mut |i| {
+            if segments[i as usize][1] != q && interior.map_or(true, |j| kept[i as usize] < kept[j as usize]) {
+                interior = Some(i);
             }
         });
         if let Some(t) = interior {
-            let found = match group.lone {
-                Some(p) => point_conflict_at(self.norm, p as usize, t as usize),
+            let found = match self.group.lone {
+                Some(p) => point_conflict_at(self.norm, p as usize, kept[t as usize] as usize),
                 None => {
-                    let u = group.starts.iter().chain(&group.ends).copied().min().expect("an event has an item");
+                    let items = self.group.starts.iter().chain(&self.group.ends);
+                    let u = items.copied().min_by_key(|&i| kept[i as usize]).expect("an event has an item");
                     self.pair(t, u)
                 }
             };
             self.offer(found);
         }
-        if group.lone.is_some() {
+        if self.group.lone.is_some() {
             // Nothing starts or ends at an isolated point: the status is
             // as it was.
             let joined = self.status.merge(below, through);
@@ -205,29 +236,32 @@ impl Sweep<'_> {
             return;
         }
 
-        let segments = &self.segments;
-        group.starts.sort_unstable_by(|&i, &j| {
-            let direction = exact_orientation(q, segments[i as usize][1], segments[j as usize][1]);
-            match direction {
+        // Step 3: the segments through q leave, those starting at q enter.
+        let (segments, kept) = (&self.segments, &self.kept);
+        self.group.starts.sort_unstable_by(|&i, &j| {
+            match exact_orientation(q, segments[i as usize][1], segments[j as usize][1]) {
                 Orientation::CounterClockwise => Ordering::Less,
                 Orientation::Clockwise => Ordering::Greater,
-                Orientation::Collinear => i.cmp(&j),
+                Orientation::Collinear => kept[i as usize].cmp(&kept[j as usize]),
             }
         });
         let (low, high) = (self.status.last(below), self.status.first(above));
-        let mut adjacent = Vec::with_capacity(group.starts.len() + 1);
+        self.adjacent.clear();
         let mut previous = low;
         let mut inserted = NIL;
-        for &s in &group.starts {
-            adjacent.push((previous, s));
+        for &s in &self.group.starts {
+            self.adjacent.push((previous, s));
             previous = s;
             let node = self.status.node(s);
             inserted = self.status.merge(inserted, node);
         }
-        adjacent.push((previous, high));
+        self.adjacent.push((previous, high));
         let joined = self.status.merge(below, inserted);
         self.status.root = self.status.merge(joined, above);
-        for (i, j) in adjacent {
+
+        // Step 4: the new neighbours.
+        for k in 0..self.adjacent.len() {
+            let (i, j) = self.adjacent[k];
             if i != NIL && j != NIL {
                 let found = self.pair(i, j);
                 self.offer(found);
@@ -235,10 +269,11 @@ impl Sweep<'_> {
         }
     }
 
-    /// The conflict of kept segments `i` and `j`, with its contact point.
+    /// The conflict of the segments of nodes `i` and `j`, with its contact
+    /// point.
     fn pair(&self, i: u32, j: u32) -> Option<(Conflict, ContactPoint)> {
-        let (i, j) = (i.min(j) as usize, i.max(j) as usize);
-        segment_conflict_at(self.norm, i, j)
+        let (i, j) = (self.kept[i as usize], self.kept[j as usize]);
+        segment_conflict_at(self.norm, i.min(j) as usize, i.max(j) as usize)
     }
 
     /// Keeps `found` if it beats the best so far.
@@ -356,12 +391,11 @@ impl Treap {
         t
     }
 
-    /// Every node of `t` (in no particular order).
-    fn for_each(&self, t: u32, f: &mut impl FnMut(u32)) {
-        if t == NIL {
-            return;
-        }
-        let mut stack = vec![t];
+    /// Every node of `t` (in no particular order), with `stack` as
+    /// scratch space.
+    fn for_each(&self, t: u32, stack: &mut Vec<u32>, f: &mut impl FnMut(u32)) {
+        stack.clear();
+        stack.push(t);
         while let Some(n) = stack.pop() {
             if n != NIL {
                 f(n);
