@@ -2,7 +2,7 @@
 //! crossing-free families at 10k, 100k and 1M segments, with the exponent
 //! fitted from the smallest size to the largest.
 //!
-//! `cargo run --release --bin check -- [--sizes 10000,100000,1000000] [--runs 3] [--budget 120]`
+//! `cargo run --release --bin check -- [--sizes 10000,100000,1000000] [--runs 3] [--budget 120] [--families parallel,star,short,roads]`
 //!
 //! The families (n segments each, none crossing, so the check runs to the
 //! end):
@@ -107,8 +107,10 @@ fn main() {
         .unwrap_or_else(|| vec![10_000, 100_000, 1_000_000]);
     let runs: usize = value("--runs").map_or(3, |s| s.parse().expect("--runs: a number"));
     let budget: f64 = value("--budget").map_or(120.0, |s| s.parse().expect("--budget: seconds"));
-    let families: [(&str, fn(usize, u64) -> Vec<Segment>); 4] =
+    let all: [(&str, fn(usize, u64) -> Vec<Segment>); 4] =
         [("parallel", parallel), ("star", star), ("short", short), ("roads", roads)];
+    let chosen: Option<Vec<String>> = value("--families").map(|s| s.split(',').map(String::from).collect());
+    let families = all.into_iter().filter(|(name, _)| chosen.as_ref().map_or(true, |c| c.iter().any(|x| x == name)));
 
     print!("| family   |");
     for n in &sizes {

@@ -11,24 +11,32 @@
 //! Each segment is oriented from its lexicographically smaller end (its
 //! *first* point) to its larger (*last*). The *status* holds the segments
 //! the sweep line currently crosses, ordered from below to above, in a treap
-//! (split and merge by a predicate; the node of a segment is its index).
-//! An *event* is one distinct point with everything there: the segments
-//! starting there, those ending there, or one isolated point (normalisation
-//! has made isolated points distinct from all endpoints). At event `q`:
-//! 1. the status is split by the sign of `orientation(first, last, q)` into
-//!    the segments below `q`, those through `q` (ending there, or with `q`
-//!    in their open interior) and those above it;
-//! 2. a segment with `q` in its interior is a conflict at `q` with an item
-//!    there (the isolated point, or the segment with the smallest index
-//!    among those starting or ending there);
-//! 3. the segments through `q` leave the status; those starting at `q`,
-//!    sorted by direction (`orientation(q, last_i, last_j)`, exact; ties,
-//!    which are overlaps, by index), enter between the parts below and
-//!    above;
+//! with parent links (a node is a segment, numbered in the order of the
+//! first points, so that the segments in the status at one time mostly lie
+//! close together in memory). An *event* is one distinct point with
+//! everything there: the segments starting there, those ending there, or one
+//! isolated point (normalisation has made isolated points distinct from all
+//! endpoints). At event `q`:
+//! 1. the neighbours of `q` in the status. When segments end at `q`, they
+//!    are taken out by their nodes (no comparison), and the neighbours are
+//!    the nodes next to them that do not end at `q`. Otherwise the treap is
+//!    descended by the sign of `orientation(first, last, q)` (`q` above,
+//!    below or on the segment): the last node passed below `q` and the last
+//!    passed above it;
+//! 2. a segment with `q` in its open interior is a conflict at `q` with an
+//!    item there (the isolated point, or the segment with the smallest index
+//!    among those starting or ending there). The segments ending at `q` and
+//!    those with `q` inside form one run of the status, so one of the
+//!    latter, if any, is a neighbour of one of the former, where step 1
+//!    looks; when nothing ends at `q`, the descent meets one (a search in a
+//!    binary tree meets an equal key when there is one);
+//! 3. the segments starting at `q`, sorted by direction
+//!    (`orientation(q, last_i, last_j)`, exact; ties, which are overlaps, by
+//!    index), enter between the neighbours;
 //! 4. every pair of segments that has just become adjacent is classified
-//!    (`classify.rs`): the highest below with the lowest new one, each new
-//!    one with the next, the highest new one with the lowest above; or,
-//!    when nothing starts at `q`, the highest below with the lowest above.
+//!    (`classify.rs`): the neighbour below with the lowest new one, each new
+//!    one with the next, the highest new one with the neighbour above; or,
+//!    when nothing starts at `q`, the two neighbours.
 //!
 //! # Which conflict is reported, and why it is seen
 //! Every conflict found is ranked by its *contact point*, the
@@ -68,14 +76,17 @@
 //! no later than `p`.
 //!
 //! # Cost
-//! Sorting the `2 m + p` event entries, O(n log n). Each event costs two
-//! splits and two merges of the treap, O(log n) expected, plus O(log n)
-//! per segment starting there (sorting them, and merging them in), plus
-//! O(1) per segment ending there, and at most four classifications; so
-//! O(n log n) in all, for every input: a star of k spokes costs one sort
-//! of k directions, long parallel bundles cost the same as short segments.
-//! The expectation is over the treap's priorities (a fixed pseudo-random
-//! sequence, independent of the geometry). Comparing the best contact
+//! Sorting the segments by first point, their last points and the isolated
+//! points, O(n log n). Each event costs at most one descent of the treap,
+//! plus, per segment starting there, its share of sorting them and an
+//! insertion, and per segment ending there, two neighbour steps and a
+//! removal, all O(log n) expected; plus one classification per segment
+//! starting there and one more per event. So O(n log n) in all, for every input: a star
+//! of k spokes costs one sort of k directions, long parallel bundles cost
+//! what short segments cost. The expectation is over the treap's
+//! priorities, a fixed pseudo-random sequence that the geometry does not
+//! influence (a search tree balanced in the worst case, AVL or red-black,
+//! would make the bound deterministic). Comparing the best contact
 //! point with each later event is O(1): an `f64` approximation with an
 //! error bound decides unless they are within a few ulps, then big
 //! numbers of fixed size.
@@ -119,25 +130,24 @@ pub(super) fn find_conflict_at(norm: &Normalised) -> Option<(Conflict, ContactPo
 
     let mut sweep = Sweep {
         norm,
-        status: Treap::new(m),
+        status: Treap::new(segments.iter().copied()),
         kept,
-        segments,
+        ending: vec![false; m],
         best: None,
         group: Group::default(),
         adjacent: Vec::new(),
-        stack: Vec::new(),
     };
     let (mut next_start, mut next_end, mut next_lone) = (0, 0, 0);
     loop {
         // The next event: the smallest of the three streams' heads.
-        let start_key = sweep.segments.get(next_start).map(|s| lex_key(s[0]));
+        let start_key = segments.get(next_start).map(|s| lex_key(s[0]));
         let end_key = ends.get(next_end).map(|e| e.0);
         let lone_key = lone.get(next_lone).map(|e| e.0);
         let Some(key) = [start_key, end_key, lone_key].into_iter().flatten().min() else { break };
         let q = if start_key == Some(key) {
-            sweep.segments[next_start][0]
+            segments[next_start][0]
         } else if end_key == Some(key) {
-            sweep.segments[ends[next_end].1 as usize][1]
+            segments[ends[next_end].1 as usize][1]
         } else {
             norm.points[lone[next_lone].1 as usize].1
         };
@@ -145,7 +155,7 @@ pub(super) fn find_conflict_at(norm: &Normalised) -> Option<(Conflict, ContactPo
             break; // past the best contact point
         }
         sweep.group.clear();
-        while next_start < m && lex_key(sweep.segments[next_start][0]) == key {
+        while next_start < m && lex_key(segments[next_start][0]) == key {
             sweep.group.starts.push(next_start as u32);
             next_start += 1;
         }
@@ -184,80 +194,83 @@ impl Group {
 
 struct Sweep<'a> {
     norm: &'a Normalised,
+    /// The segments the sweep line crosses, from below to above.
     status: Treap,
     /// Per node, its kept segment (position in `norm.segments`).
     kept: Vec<u32>,
-    /// Per node, its segment, first point first.
-    segments: Vec<[Point; 2]>,
+    /// Per node: it ends at the current event.
+    ending: Vec<bool>,
     best: Option<(Conflict, ContactPoint)>,
     /// Scratch space, kept from event to event.
     group: Group,
     adjacent: Vec<(u32, u32)>,
-    stack: Vec<u32>,
 }
 
 impl Sweep<'_> {
     /// Handles the event at `q` (steps 1 to 4 of the module documentation)
     /// with what `self.group` holds.
     fn event(&mut self, q: Point) {
-        let segments = &self.segments;
-        let side = |i: u32| {
-            let [a, b] = segments[i as usize];
-            exact_orientation(a, b, q)
-        };
-        let root = self.status.root;
-        let (below, rest) = self.status.split(root, &|i| side(i) == Orientation::CounterClockwise);
-        let (through, above) = self.status.split(rest, &|i| side(i) != Orientation::Clockwise);
-
-        // Step 2: a segment through q that does not end there.
-        let kept = &self.kept;
-        let mut interior: Option<u32> = None;
-        self.status.for_each(through, &mut self.stack, &mut |i| {
-            if segments[i as usize][1] != q && interior.map_or(true, |j| kept[i as usize] < kept[j as usize]) {
-                interior = Some(i);
+        let side = |[a, b]: [Point; 2]| exact_orientation(a, b, q);
+        // Steps 1 and 2: the neighbours of q, and a segment through q that
+        // does not end there. The segments ending at q and those with q in
+        // their interior are one run, so one of the latter, if any, is next
+        // to one of the former; without the former, the descent meets one.
+        let (mut below, mut above, mut interior) = (NIL, NIL, NIL);
+        if self.group.ends.is_empty() {
+            (below, above, interior) = self.status.locate(side);
+        } else {
+            for &e in &self.group.ends {
+                self.ending[e as usize] = true;
             }
-        });
-        if let Some(t) = interior {
+            for &e in &self.group.ends {
+                let (p, n) = (self.status.previous(e), self.status.next(e));
+                for (neighbour, slot) in [(p, &mut below), (n, &mut above)] {
+                    if neighbour != NIL && !self.ending[neighbour as usize] {
+                        *slot = neighbour;
+                        if side(self.status.segment(neighbour)) == Orientation::Collinear {
+                            interior = neighbour;
+                        }
+                    }
+                }
+            }
+            for &e in &self.group.ends {
+                self.ending[e as usize] = false;
+                self.status.remove(e);
+            }
+        }
+        if interior != NIL {
+            let kept = &self.kept;
+            let t = kept[interior as usize] as usize;
             let found = match self.group.lone {
-                Some(p) => point_conflict_at(self.norm, p as usize, kept[t as usize] as usize),
+                Some(p) => point_conflict_at(self.norm, p as usize, t),
                 None => {
                     let items = self.group.starts.iter().chain(&self.group.ends);
                     let u = items.copied().min_by_key(|&i| kept[i as usize]).expect("an event has an item");
-                    self.pair(t, u)
+                    let u = kept[u as usize] as usize;
+                    segment_conflict_at(self.norm, t.min(u), t.max(u))
                 }
             };
             self.offer(found);
         }
         if self.group.lone.is_some() {
-            // Nothing starts or ends at an isolated point: the status is
-            // as it was.
-            let joined = self.status.merge(below, through);
-            self.status.root = self.status.merge(joined, above);
-            return;
+            return; // nothing starts or ends at an isolated point
         }
 
-        // Step 3: the segments through q leave, those starting at q enter.
-        let (segments, kept) = (&self.segments, &self.kept);
-        self.group.starts.sort_unstable_by(|&i, &j| {
-            match exact_orientation(q, segments[i as usize][1], segments[j as usize][1]) {
-                Orientation::CounterClockwise => Ordering::Less,
-                Orientation::Clockwise => Ordering::Greater,
-                Orientation::Collinear => kept[i as usize].cmp(&kept[j as usize]),
-            }
+        // Step 3: those starting at q enter, by direction.
+        let (status, kept) = (&self.status, &self.kept);
+        self.group.starts.sort_unstable_by(|&i, &j| match exact_orientation(q, status.segment(i)[1], status.segment(j)[1]) {
+            Orientation::CounterClockwise => Ordering::Less,
+            Orientation::Clockwise => Ordering::Greater,
+            Orientation::Collinear => kept[i as usize].cmp(&kept[j as usize]),
         });
-        let (low, high) = (self.status.last(below), self.status.first(above));
         self.adjacent.clear();
-        let mut previous = low;
-        let mut inserted = NIL;
+        let mut previous = below;
         for &s in &self.group.starts {
             self.adjacent.push((previous, s));
+            self.status.insert_after(previous, s);
             previous = s;
-            let node = self.status.node(s);
-            inserted = self.status.merge(inserted, node);
         }
-        self.adjacent.push((previous, high));
-        let joined = self.status.merge(below, inserted);
-        self.status.root = self.status.merge(joined, above);
+        self.adjacent.push((previous, above));
 
         // Step 4: the new neighbours.
         for k in 0..self.adjacent.len() {
@@ -313,95 +326,196 @@ fn rank(conflict: &Conflict) -> (u8, usize, usize) {
 /// No node.
 const NIL: u32 = u32::MAX;
 
-/// A treap over the kept segments, split and merged by position only:
-/// node `i` is kept segment `i`, each inserted at most once. The order is
-/// the caller's: [`Treap::split`] takes a predicate that holds for a prefix.
+/// A node of the status: a segment (first point first) and its links.
+#[derive(Clone, Copy)]
+struct Node {
+    segment: [Point; 2],
+    left: u32,
+    right: u32,
+    parent: u32,
+    priority: u32,
+}
+
+/// A treap with parent links over the kept segments: node `i` is the
+/// segment of node id `i`, in the status at most once. Positions are the
+/// caller's: a node goes in right after another ([`Treap::insert_after`]),
+/// and leaves by its id ([`Treap::remove`]), with no comparison; only
+/// [`Treap::locate`] compares, through the caller's side function.
 struct Treap {
-    left: Vec<u32>,
-    right: Vec<u32>,
-    priority: Vec<u32>,
+    nodes: Vec<Node>,
     root: u32,
     /// xorshift state for the priorities.
     state: u32,
 }
 
 impl Treap {
-    fn new(m: usize) -> Treap {
-        Treap { left: vec![NIL; m], right: vec![NIL; m], priority: vec![0; m], root: NIL, state: 0x9e37_79b9 }
+    fn new(segments: impl Iterator<Item = [Point; 2]>) -> Treap {
+        let nodes = segments.map(|segment| Node { segment, left: NIL, right: NIL, parent: NIL, priority: 0 }).collect();
+        Treap { nodes, root: NIL, state: 0x9e37_79b9 }
     }
 
-    /// Node `i` alone, with a fresh priority.
-    fn node(&mut self, i: u32) -> u32 {
+    fn segment(&self, i: u32) -> [Point; 2] {
+        self.nodes[i as usize].segment
+    }
+
+    fn left(&self, i: u32) -> u32 {
+        self.nodes[i as usize].left
+    }
+
+    fn right(&self, i: u32) -> u32 {
+        self.nodes[i as usize].right
+    }
+
+    fn parent(&self, i: u32) -> u32 {
+        self.nodes[i as usize].parent
+    }
+
+    fn leftmost(&self, mut t: u32) -> u32 {
+        while self.left(t) != NIL {
+            t = self.left(t);
+        }
+        t
+    }
+
+    fn rightmost(&self, mut t: u32) -> u32 {
+        while self.right(t) != NIL {
+            t = self.right(t);
+        }
+        t
+    }
+
+    /// The node before `i` in the order, or `NIL`.
+    fn previous(&self, mut i: u32) -> u32 {
+        if self.left(i) != NIL {
+            return self.rightmost(self.left(i));
+        }
+        while self.parent(i) != NIL && self.left(self.parent(i)) == i {
+            i = self.parent(i);
+        }
+        self.parent(i)
+    }
+
+    /// The node after `i` in the order, or `NIL`.
+    fn next(&self, mut i: u32) -> u32 {
+        if self.right(i) != NIL {
+            return self.leftmost(self.right(i));
+        }
+        while self.parent(i) != NIL && self.right(self.parent(i)) == i {
+            i = self.parent(i);
+        }
+        self.parent(i)
+    }
+
+    /// Where a query falls: descends by `side` (the query is above the
+    /// node's segment: `CounterClockwise`; below: `Clockwise`; on it:
+    /// `Collinear`) and returns the last node passed below the query, the
+    /// last passed above it, and the first found on it (`NIL` for none).
+    /// When the nodes below the query, on it and above it are runs in that
+    /// order, these are the node before the query, the node after it, and
+    /// one on it if any is.
+    fn locate(&self, side: impl Fn([Point; 2]) -> Orientation) -> (u32, u32, u32) {
+        let (mut below, mut above, mut on) = (NIL, NIL, NIL);
+        let mut t = self.root;
+        while t != NIL {
+            match side(self.segment(t)) {
+                Orientation::CounterClockwise => {
+                    below = t;
+                    t = self.right(t);
+                }
+                Orientation::Clockwise => {
+                    above = t;
+                    t = self.left(t);
+                }
+                Orientation::Collinear => {
+                    if on == NIL {
+                        on = t;
+                    }
+                    below = t;
+                    t = self.right(t);
+                }
+            }
+        }
+        (below, above, on)
+    }
+
+    /// Links `child` where `old` was below `parent` (or as the root).
+    fn replace_child(&mut self, parent: u32, old: u32, child: u32) {
+        if parent == NIL {
+            self.root = child;
+        } else if self.left(parent) == old {
+            self.nodes[parent as usize].left = child;
+        } else {
+            self.nodes[parent as usize].right = child;
+        }
+        if child != NIL {
+            self.nodes[child as usize].parent = parent;
+        }
+    }
+
+    /// Rotates `x` above its parent.
+    fn rotate_up(&mut self, x: u32) {
+        let p = self.parent(x);
+        let g = self.parent(p);
+        if self.left(p) == x {
+            let b = self.right(x);
+            self.nodes[p as usize].left = b;
+            if b != NIL {
+                self.nodes[b as usize].parent = p;
+            }
+            self.nodes[x as usize].right = p;
+        } else {
+            let b = self.left(x);
+            self.nodes[p as usize].right = b;
+            if b != NIL {
+                self.nodes[b as usize].parent = p;
+            }
+            self.nodes[x as usize].left = p;
+        }
+        self.nodes[p as usize].parent = x;
+        self.replace_child(g, p, x);
+    }
+
+    /// Puts node `n` (not in the tree) right after `anchor`, or first when
+    /// `anchor` is `NIL`.
+    fn insert_after(&mut self, anchor: u32, n: u32) {
         self.state ^= self.state << 13;
         self.state ^= self.state >> 17;
         self.state ^= self.state << 5;
-        let i_ = i as usize;
-        (self.left[i_], self.right[i_], self.priority[i_]) = (NIL, NIL, self.state);
-        i
-    }
-
-    /// Splits `t` into the longest prefix whose nodes satisfy `pred` and
-    /// the rest (a prefix when `pred` holds for one, else some split).
-    fn split(&mut self, t: u32, pred: &dyn Fn(u32) -> bool) -> (u32, u32) {
-        if t == NIL {
-            return (NIL, NIL);
+        let node = &mut self.nodes[n as usize];
+        (node.left, node.right, node.parent, node.priority) = (NIL, NIL, NIL, self.state);
+        if self.root == NIL {
+            self.root = n;
+            return;
         }
-        let n = t as usize;
-        if pred(t) {
-            let (l, r) = self.split(self.right[n], pred);
-            self.right[n] = l;
-            (t, r)
+        let (parent, as_left) = if anchor == NIL {
+            (self.leftmost(self.root), true)
+        } else if self.right(anchor) == NIL {
+            (anchor, false)
         } else {
-            let (l, r) = self.split(self.left[n], pred);
-            self.left[n] = r;
-            (l, t)
-        }
-    }
-
-    /// `a` followed by `b`.
-    fn merge(&mut self, a: u32, b: u32) -> u32 {
-        if a == NIL {
-            return b;
-        }
-        if b == NIL {
-            return a;
-        }
-        if self.priority[a as usize] > self.priority[b as usize] {
-            let r = self.merge(self.right[a as usize], b);
-            self.right[a as usize] = r;
-            a
+            (self.leftmost(self.right(anchor)), true)
+        };
+        if as_left {
+            self.nodes[parent as usize].left = n;
         } else {
-            let l = self.merge(a, self.left[b as usize]);
-            self.left[b as usize] = l;
-            b
+            self.nodes[parent as usize].right = n;
+        }
+        self.nodes[n as usize].parent = parent;
+        while self.parent(n) != NIL && self.nodes[n as usize].priority > self.nodes[self.parent(n) as usize].priority {
+            self.rotate_up(n);
         }
     }
 
-    fn first(&self, mut t: u32) -> u32 {
-        while t != NIL && self.left[t as usize] != NIL {
-            t = self.left[t as usize];
-        }
-        t
-    }
-
-    fn last(&self, mut t: u32) -> u32 {
-        while t != NIL && self.right[t as usize] != NIL {
-            t = self.right[t as usize];
-        }
-        t
-    }
-
-    /// Every node of `t` (in no particular order), with `stack` as
-    /// scratch space.
-    fn for_each(&self, t: u32, stack: &mut Vec<u32>, f: &mut impl FnMut(u32)) {
-        stack.clear();
-        stack.push(t);
-        while let Some(n) = stack.pop() {
-            if n != NIL {
-                f(n);
-                stack.push(self.left[n as usize]);
-                stack.push(self.right[n as usize]);
+    /// Takes node `n` out of the tree.
+    fn remove(&mut self, n: u32) {
+        loop {
+            let (l, r) = (self.left(n), self.right(n));
+            if l == NIL || r == NIL {
+                let child = if l == NIL { r } else { l };
+                self.replace_child(self.parent(n), n, child);
+                return;
             }
+            let up = if self.nodes[l as usize].priority > self.nodes[r as usize].priority { l } else { r };
+            self.rotate_up(up);
         }
     }
 }
