@@ -97,7 +97,7 @@ use super::classify::{point_conflict_at, segment_conflict_at};
 use super::normalise::Normalised;
 use super::Conflict;
 use crate::geometry::predicates::{exact_orientation, Orientation};
-use crate::geometry::segment_contact::{lex_cmp, lex_key, ContactPoint};
+use crate::geometry::segment_contact::{lex_cmp, lex_key, segment_contact, ContactPoint};
 use crate::geometry::Point;
 
 /// The conflict whose contact point is lexicographically smallest (see
@@ -285,6 +285,10 @@ impl Sweep<'_> {
     /// The conflict of the segments of nodes `i` and `j`, with its contact
     /// point.
     fn pair(&self, i: u32, j: u32) -> Option<(Conflict, ContactPoint)> {
+        // Asked first of the nodes' own copies, which the sweep has just
+        // read (the kept segments lie elsewhere in memory); the answer is
+        // the same for either orientation of each segment.
+        segment_contact(self.status.segment(i), self.status.segment(j))?;
         let (i, j) = (self.kept[i as usize], self.kept[j as usize]);
         segment_conflict_at(self.norm, i.min(j) as usize, i.max(j) as usize)
     }
