@@ -17,8 +17,10 @@
 //!   (i, j) moved by up to 0.25 on each axis, an edge to the right and one
 //!   up from each: every segment shares its ends with up to three others.
 //!
-//! Each figure is the median of `--runs` runs of `check` (the builder is
-//! filled before the clock starts). A size is skipped, and marked so, once
+//! Each figure is the median of `--runs` runs of `check` (at least 11 up to
+//! 100k segments; the builder is filled before the clock starts). The
+//! exponent is the least-squares slope of log t against log n over the
+//! sizes timed (n log n alone gives 1.09 from 10k to 1M). A size is skipped, and marked so, once
 //! the size before it took more than `--budget` / 100 seconds a run (to let
 //! the old grid check, whose cost is quadratic on stars, run at all).
 
@@ -133,18 +135,23 @@ fn main() {
                 continue;
             }
             let segments = make(n, 0x5eed ^ n as u64);
-            let t = time_check(&segments, runs);
+            let t = time_check(&segments, if n <= 100_000 { runs.max(11) } else { runs });
             print!(" {:>11.4} s |", t);
             times.push(Some(t));
             use std::io::Write;
             std::io::stdout().flush().ok();
         }
-        let (first, last) = (sizes.first().copied(), sizes.last().copied());
-        match (times.first().copied().flatten(), times.last().copied().flatten(), first, last) {
-            (Some(a), Some(b), Some(n0), Some(n1)) if n1 > n0 => {
-                println!(" {:>8.2} |", (b / a).ln() / (n1 as f64 / n0 as f64).ln())
-            }
-            _ => println!(" {:>8} |", "-"),
+        // Least squares of log t against log n over the sizes timed.
+        let fitted: Vec<(f64, f64)> =
+            sizes.iter().zip(&times).filter_map(|(&n, t)| t.map(|t| ((n as f64).ln(), t.ln()))).collect();
+        if fitted.len() >= 2 {
+            let k = fitted.len() as f64;
+            let (mx, my) = (fitted.iter().map(|p| p.0).sum::<f64>() / k, fitted.iter().map(|p| p.1).sum::<f64>() / k);
+            let sxy: f64 = fitted.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+            let sxx: f64 = fitted.iter().map(|p| (p.0 - mx) * (p.0 - mx)).sum();
+            println!(" {:>8.2} |", sxy / sxx);
+        } else {
+            println!(" {:>8} |", "-");
         }
     }
 }
