@@ -31,6 +31,9 @@ use std::time::Instant;
 
 type Segment = [[f64; 2]; 2];
 
+/// A family's name and its generator (`n`, seed).
+type Family = (&'static str, fn(usize, u64) -> Vec<Segment>);
+
 fn parallel(n: usize, seed: u64) -> Vec<Segment> {
     let mut rng = Rng(seed);
     (0..n)
@@ -109,10 +112,9 @@ fn main() {
         .unwrap_or_else(|| vec![10_000, 100_000, 1_000_000]);
     let runs: usize = value("--runs").map_or(3, |s| s.parse().expect("--runs: a number"));
     let budget: f64 = value("--budget").map_or(120.0, |s| s.parse().expect("--budget: seconds"));
-    let all: [(&str, fn(usize, u64) -> Vec<Segment>); 4] =
-        [("parallel", parallel), ("star", star), ("short", short), ("roads", roads)];
+    let all: [Family; 4] = [("parallel", parallel), ("star", star), ("short", short), ("roads", roads)];
     let chosen: Option<Vec<String>> = value("--families").map(|s| s.split(',').map(String::from).collect());
-    let families = all.into_iter().filter(|(name, _)| chosen.as_ref().map_or(true, |c| c.iter().any(|x| x == name)));
+    let families = all.into_iter().filter(|(name, _)| chosen.as_ref().map(|c| c.iter().any(|x| x == name)).unwrap_or(true));
 
     print!("| family   |");
     for n in &sizes {
