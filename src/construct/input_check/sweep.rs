@@ -330,8 +330,10 @@ fn rank(conflict: &Conflict) -> (u8, usize, usize) {
 /// No node.
 const NIL: u32 = u32::MAX;
 
-/// A node of the status: a segment (first point first) and its links.
+/// A node of the status: a segment (first point first) and its links, one
+/// cache line (a descent reads one line per level).
 #[derive(Clone, Copy)]
+#[repr(align(64))]
 struct Node {
     segment: [Point; 2],
     left: u32,
