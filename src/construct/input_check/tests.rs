@@ -441,6 +441,37 @@ fn t_junction_at_an_x_shared_with_many_events() {
     }
 }
 
+/// The check asks only exact predicates: lying ones change nothing.
+#[cfg(feature = "fault-injection")]
+#[test]
+fn fault_injection_does_not_reach_the_check() {
+    use crate::geometry::fault::{set_fault_mode, FaultMode};
+    let star = |extra: Option<[Point; 2]>| {
+        let mut v: Vec<[Point; 2]> = (0..64)
+            .map(|k| {
+                let t = k as f64 * std::f64::consts::TAU / 64.0;
+                [p(0., 0.), p(t.cos(), t.sin())]
+            })
+            .collect();
+        v.extend(extra);
+        v
+    };
+    let inputs = [
+        star(None),
+        star(Some(s(0.2, -0.5, 0.2, 0.5))),
+        star(Some(s(-2., 0., -1., 0.))),
+        vec![s(0., 0., 2., 2.), s(0., 2., 2., 0.), s(5., 5., 6., 6.)],
+        vec![s(0., 0., 4., 0.), s(2., 0., 2., 3.), s(0., 1., 0., 2.)],
+    ];
+    let expected: Vec<_> = inputs.iter().map(|i| check(i).err()).collect();
+    for mode in [FaultMode::Random, FaultMode::Noise(1e-3)] {
+        set_fault_mode(mode, 7);
+        let got: Vec<_> = inputs.iter().map(|i| check(i).err()).collect();
+        set_fault_mode(FaultMode::Off, 0);
+        assert_eq!(got, expected, "{mode:?}");
+    }
+}
+
 // ---- the sweep against brute force ----
 
 /// Every conflict of every pair, with its contact point: O(n²).
