@@ -471,7 +471,7 @@ enum segvoronoi_status segvoronoi_builder_build(struct segvoronoi_builder *build
 // Checks everything added so far as `segvoronoi_builder_build` does first,
 // without building: `SEGVORONOI_STATUS_OK` when no two segments cross or
 // overlap and no point lies inside a segment (shared endpoints are fine).
-// Exact, O(n log n) for n points and segments.
+// Exact, O(n log n) expected time for n points and segments.
 //
 // Errors: `SEGVORONOI_STATUS_INTERSECTING` with the same message and
 // indices `_build` would give (`segvoronoi_builder_last_error`,

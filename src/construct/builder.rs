@@ -179,8 +179,8 @@ impl Builder {
     /// one whose first common point (by `x`, then `y`) is lexicographically
     /// smallest, whatever the input order.
     ///
-    /// The check is exact and takes O(n log n) time for n segments and
-    /// points, whatever their shape (a sweep). It does not see what only the
+    /// The check is exact and takes O(n log n) expected time for n segments
+    /// and points, whatever their shape (a sweep). It does not see what only the
     /// diagram shows: two polygon rings sharing an edge pass here and fail
     /// in `build`.
     ///

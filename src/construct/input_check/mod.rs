@@ -37,7 +37,7 @@
 //!
 //! # Where
 //! `normalise.rs` (zero-length, repeated), `sweep.rs` (the pairs worth
-//! testing and the conflict reported: a Shamos–Hoey sweep, O(n log n) for
+//! testing and the conflict reported: a Shamos–Hoey sweep, O(n log n) expected for
 //! every input), `classify.rs` (a pair's conflict, named by input indices,
 //! and its contact point); the contact test itself is
 //! `geometry::segment_contact`.
