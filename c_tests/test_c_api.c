@@ -406,6 +406,7 @@ static void test_free_rules_and_nulls(void) {
     CHECK(segvoronoi_builder_point_count(NULL) == 0);
     CHECK(segvoronoi_builder_last_error(NULL) != NULL);
     CHECK_STATUS(segvoronoi_builder_build(NULL, &diagram), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    CHECK_STATUS(segvoronoi_builder_check(NULL), SEGVORONOI_STATUS_NULL_ARGUMENT);
     CHECK(diagram == NULL); /* *out is cleared on every error */
     CHECK(segvoronoi_diagram_site_count(NULL) == 0);
     CHECK(segvoronoi_diagram_vertex_count(NULL) == 0);
@@ -861,6 +862,17 @@ static void expect_intersecting(const double *xy, size_t np, const double *seg, 
         CHECK((indices[0] == first && indices[1] == second) || (indices[0] == second && indices[1] == first));
     }
     CHECK(segvoronoi_builder_point_count(builder) == np && segvoronoi_builder_segment_count(builder) == ns);
+    {
+        /* The check alone gives the same status, message and indices. */
+        char built[256];
+        size_t indices[2] = {SIZE_MAX, SIZE_MAX}, n = 0;
+        snprintf(built, sizeof built, "%s", segvoronoi_builder_last_error(builder));
+        CHECK_STATUS(segvoronoi_builder_check(builder), SEGVORONOI_STATUS_INTERSECTING);
+        CHECK(strcmp(segvoronoi_builder_last_error(builder), built) == 0);
+        CHECK_STATUS(segvoronoi_builder_last_error_indices(builder, indices, 2, &n), SEGVORONOI_STATUS_OK);
+        CHECK(n == 2);
+        CHECK((indices[0] == first && indices[1] == second) || (indices[0] == second && indices[1] == first));
+    }
     /* Same again: the builder kept its input. */
     CHECK_STATUS(segvoronoi_builder_build(builder, &diagram), SEGVORONOI_STATUS_INTERSECTING);
     segvoronoi_builder_free(builder);
@@ -880,6 +892,23 @@ static void test_intersecting_segments(void) {
     expect_intersecting(NULL, 0, tee, 3, 0, 2);
     expect_intersecting(NULL, 0, overlap, 2, 0, 1);
     expect_intersecting(points, 4, lines, 2, 3, 1);
+    {
+        /* A star and a path sharing endpoints: the check passes and clears
+         * the last error; the builder still builds. */
+        const double fine[16] = {0, 0, 1, 0, 0, 0, 0, 1, -1, -1, 0, 0, 1, 0, 1, 1};
+        segvoronoi_builder *builder = segvoronoi_builder_new();
+        segvoronoi_diagram *diagram = NULL;
+        CHECK(builder != NULL);
+        if (builder == NULL) return;
+        CHECK_STATUS(segvoronoi_builder_check(builder), SEGVORONOI_STATUS_OK); /* empty */
+        CHECK_STATUS(segvoronoi_builder_add_segments(builder, fine, 4), SEGVORONOI_STATUS_OK);
+        CHECK_STATUS(segvoronoi_builder_add_point(builder, NAN, 0.0), SEGVORONOI_STATUS_INVALID_COORDINATE);
+        CHECK_STATUS(segvoronoi_builder_check(builder), SEGVORONOI_STATUS_OK);
+        CHECK(segvoronoi_builder_last_error(builder)[0] == '\0');
+        CHECK_STATUS(segvoronoi_builder_build(builder, &diagram), SEGVORONOI_STATUS_OK);
+        segvoronoi_diagram_free(diagram);
+        segvoronoi_builder_free(builder);
+    }
 }
 
 /* One segment, points around it, a repeated segment (reversed), a

@@ -493,6 +493,23 @@ enum segvoronoi_status segvoronoi_builder_build(struct segvoronoi_builder *build
 enum segvoronoi_status segvoronoi_builder_set_split_crossings(struct segvoronoi_builder *builder,
                                                               int32_t on);
 
+// Checks everything added so far as `segvoronoi_builder_build` does first,
+// without building: `SEGVORONOI_STATUS_OK` when no two segments cross or
+// overlap and no point lies inside a segment (shared endpoints are fine).
+// Exact, O(n log n) expected time for n points and segments.
+//
+// Errors: `SEGVORONOI_STATUS_INTERSECTING` with the same message and
+// indices `_build` would give (`segvoronoi_builder_last_error`,
+// `_last_error_indices`): the conflict whose first common point (by x,
+// then y) is smallest. `NULL_ARGUMENT` for a NULL builder;
+// `INTERNAL` if the check panicked (a bug; please report the input).
+//
+// Ownership: nothing is allocated for the caller; the builder stays as it
+// was apart from its last error.
+//
+// Thread safety: one builder must not be used from two threads at once.
+enum segvoronoi_status segvoronoi_builder_check(struct segvoronoi_builder *builder);
+
 // The message of the last failed call on this builder (naming the offending
 // input indices), or `""` if the last call succeeded. Never NULL.
 //

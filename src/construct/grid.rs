@@ -172,3 +172,49 @@ pub(crate) fn bounding_box(segments: &[(usize, [Point; 2])]) -> (Point, Point) {
     }
     (lo, hi)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    #[test]
+    fn a_tiny_extent_uses_one_cell() {
+        let t = 1e-300;
+        let segments = [[p(0., 0.), p(t, 0.)], [p(t, 0.), p(t, t)], [p(0., t), p(0.5 * t, 2. * t)]];
+        let grid = Grid::for_segments(&segments.map(|q| (0, q)));
+        assert!(grid.single);
+        let mut cells = Vec::new();
+        grid.cover(segments[2][0], segments[2][1], &mut cells);
+        assert_eq!((cells, grid.cell_of(p(t, t))), (vec![0], 0));
+    }
+
+    proptest! {
+        /// Points computed along a segment land in cells it registered.
+        #[test]
+        fn cover_is_conservative(
+            segments in prop::collection::vec(((-1e3..1e3f64, -1e3..1e3f64), (-1e3..1e3f64, -1e3..1e3f64)), 1..30),
+        ) {
+            let kept: Vec<(usize, [Point; 2])> = segments
+                .iter()
+                .map(|&((ax, ay), (bx, by))| [p(ax, ay), p(bx, by)])
+                .filter(|[a, b]| a != b)
+                .enumerate()
+                .collect();
+            prop_assume!(!kept.is_empty());
+            let grid = Grid::for_segments(&kept);
+            let cells = SegmentCells::new(&grid, &kept);
+            for (k, (_, [a, b])) in kept.iter().enumerate() {
+                for step in 0..=64 {
+                    let t = step as f64 / 64.0;
+                    let q = p(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
+                    prop_assert!(cells.of(k as u32).contains(&grid.cell_of(q)), "{:?} {:?} t={}", a, b, t);
+                }
+            }
+        }
+    }
+}

@@ -57,6 +57,16 @@ pub(super) fn diagram_of(points: &[Point], segments: &[[Point; 2]]) -> Result<Di
     accept(diagram, outcome, points, segments)
 }
 
+/// The input check of [`diagram_of`] alone (scale, normalise, search for a
+/// conflict): the [`ErrorKind::Intersecting`] error the build would give,
+/// without building.
+pub(super) fn check_input(points: &[Point], segments: &[[Point; 2]]) -> Result<(), Error> {
+    if segments.is_empty() {
+        return Ok(()); // distinct or repeated points never conflict
+    }
+    check_segments(points, segments, input_scale(points, segments)).map(|_| ()).map_err(|c| conflict_error(&c))
+}
+
 /// The Voronoi diagram of finite points, and how its construction ended
 /// (checked by [`accept`]).
 fn build_points(input: &[Point]) -> (Diagram, Outcome) {

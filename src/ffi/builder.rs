@@ -327,6 +327,37 @@ pub unsafe extern "C" fn segvoronoi_builder_set_split_crossings(builder: *mut se
     })
 }
 
+/// Checks everything added so far as `segvoronoi_builder_build` does first,
+/// without building: `SEGVORONOI_STATUS_OK` when no two segments cross or
+/// overlap and no point lies inside a segment (shared endpoints are fine).
+/// Exact, O(n log n) expected time for n points and segments.
+///
+/// Errors: `SEGVORONOI_STATUS_INTERSECTING` with the same message and
+/// indices `_build` would give (`segvoronoi_builder_last_error`,
+/// `_last_error_indices`): the conflict whose first common point (by x,
+/// then y) is smallest. `NULL_ARGUMENT` for a NULL builder;
+/// `INTERNAL` if the check panicked (a bug; please report the input).
+///
+/// Ownership: nothing is allocated for the caller; the builder stays as it
+/// was apart from its last error.
+///
+/// Thread safety: one builder must not be used from two threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_check(builder: *mut segvoronoi_builder) -> segvoronoi_status {
+    require_non_null!(builder);
+    guard(|| {
+        // SAFETY: non-null live builder, exclusive to this thread.
+        let b = unsafe { &mut *builder };
+        match guard_or(None, || Some(b.inner.check())) {
+            Some(r) => b.record(r),
+            None => {
+                b.set_error(c"internal error: the check panicked; please report this input".into(), Vec::new());
+                segvoronoi_status::Internal
+            }
+        }
+    })
+}
+
 /// The message of the last failed call on this builder (naming the offending
 /// input indices), or `""` if the last call succeeded. Never NULL.
 ///

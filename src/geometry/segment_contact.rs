@@ -4,6 +4,9 @@
 //! injection) and coordinate comparisons ([`strictly_between`]), no epsilon
 //! anywhere. The input check (`construct/input_check/`) asks these.
 
+use std::cmp::Ordering;
+
+use super::bigfloat::BigFloat;
 use super::predicates::{exact_orientation as orientation, strictly_between, Orientation};
 use super::Point;
 
@@ -62,4 +65,167 @@ fn opposite(p: Orientation, q: Orientation) -> bool {
 /// Whether the point lies in the open interior of the segment.
 pub(crate) fn inside_segment(p: Point, s: [Point; 2]) -> bool {
     orientation(s[0], s[1], p) == Orientation::Collinear && strictly_between(s[0], s[1], p)
+}
+
+/// The lexicographic order of points: by `x`, then by `y` (`-0.0` equals
+/// `+0.0`; no NaN here). The order in which the input check sweeps.
+pub(crate) fn lex_cmp(a: Point, b: Point) -> Ordering {
+    cmp_f64(a.x, b.x).then_with(|| cmp_f64(a.y, b.y))
+}
+
+/// A key whose order is [`lex_cmp`]'s, for sorting (`-0.0` and `+0.0`
+/// alike; no NaN).
+pub(crate) fn lex_key(p: Point) -> (u64, u64) {
+    (ordered_bits(p.x), ordered_bits(p.y))
+}
+
+/// The bits of `v` turned so that unsigned order is numeric order.
+fn ordered_bits(v: f64) -> u64 {
+    let bits = (v + 0.0).to_bits(); // -0.0 + 0.0 is +0.0
+    if bits >> 63 == 1 {
+        !bits
+    } else {
+        bits | (1 << 63)
+    }
+}
+
+fn cmp_f64(a: f64, b: f64) -> Ordering {
+    if a < b {
+        Ordering::Less
+    } else if a > b {
+        Ordering::Greater
+    } else {
+        Ordering::Equal
+    }
+}
+
+/// Where two input items first meet: the lexicographically smallest point
+/// they share. Either a point of the input (an endpoint or an isolated
+/// point), or the crossing of two segments, a rational point kept exactly.
+/// Compared exactly with [`ContactPoint::cmp`].
+#[derive(Clone, Debug)]
+pub(crate) enum ContactPoint {
+    /// An input point.
+    At(Point),
+    /// The crossing point of two segments.
+    Crossing(Box<Crossing>),
+}
+
+/// The crossing point of two non-parallel segments: `(x, y) / den` exactly
+/// (`den > 0`), and an `f64` approximation with a bound on its error in
+/// each coordinate, which decides most comparisons without the big numbers.
+#[derive(Clone, Debug)]
+pub(crate) struct Crossing {
+    approx: Point,
+    /// `|approx - exact|` is below this in each coordinate (infinite when
+    /// the approximation is not trusted).
+    error: f64,
+    num: [BigFloat; 2],
+    den: BigFloat,
+}
+
+/// Enough bits that the sums and products of degree 3 in `f64`s here are
+/// never truncated: their exponents span less than `3 · 2100` bits.
+const EXACT_BITS: u64 = 1 << 14;
+
+fn big(x: f64) -> BigFloat {
+    BigFloat::from_f64(x, EXACT_BITS)
+}
+
+impl ContactPoint {
+    /// The crossing point of the lines through `s` and `t` (not parallel).
+    pub(crate) fn crossing(s: [Point; 2], t: [Point; 2]) -> ContactPoint {
+        let [a, b] = s.map(|p| [big(p.x), big(p.y)]);
+        let [c, d] = t.map(|p| [big(p.x), big(p.y)]);
+        let sub = |u: &[BigFloat; 2], v: &[BigFloat; 2]| [&u[0] - &v[0], &u[1] - &v[1]];
+        let cross = |u: &[BigFloat; 2], v: &[BigFloat; 2]| &(&u[0] * &v[1]) - &(&u[1] * &v[0]);
+        // a + (b - a) · u / den, with den = cross(b - a, d - c) and
+        // u = cross(c - a, d - c).
+        let (r, q) = (sub(&b, &a), sub(&d, &c));
+        let mut den = cross(&r, &q);
+        let mut u = cross(&sub(&c, &a), &q);
+        if den.signum() < 0 {
+            den = -&den;
+            u = -&u;
+        }
+        let num = [&(&a[0] * &den) + &(&r[0] * &u), &(&a[1] * &den) + &(&r[1] * &u)];
+        let (x, y, w) = (num[0].to_f64(), num[1].to_f64(), den.to_f64());
+        let approx = Point::new(x / w, y / w);
+        // Each conversion is within 2^-52 relative when its result is a
+        // normal number, the quotient within 2^-53: 8 ulps cover it all.
+        let trusted = |v: f64, exact: &BigFloat| (v.is_normal() && v.abs() < f64::MAX / 4.0) || exact.signum() == 0;
+        let error = if trusted(x, &num[0])
+            && trusted(y, &num[1])
+            && trusted(w, &den)
+            && trusted(approx.x, &num[0])
+            && trusted(approx.y, &num[1])
+        {
+            8.0 * f64::EPSILON * approx.x.abs().max(approx.y.abs())
+        } else {
+            f64::INFINITY
+        };
+        ContactPoint::Crossing(Box::new(Crossing { approx, error, num, den }))
+    }
+
+    /// The approximation and its error bound.
+    fn approx(&self) -> (Point, f64) {
+        match self {
+            ContactPoint::At(p) => (*p, 0.0),
+            ContactPoint::Crossing(c) => (c.approx, c.error),
+        }
+    }
+
+    /// Coordinate `axis` as `(numerator, denominator)`, exactly.
+    fn exact(&self, axis: usize) -> (BigFloat, BigFloat) {
+        match self {
+            ContactPoint::At(p) => (big(if axis == 0 { p.x } else { p.y }), big(1.0)),
+            ContactPoint::Crossing(c) => (c.num[axis].clone(), c.den.clone()),
+        }
+    }
+
+    /// The lexicographic order ([`lex_cmp`]) of two contact points, exact.
+    pub(crate) fn cmp(&self, other: &ContactPoint) -> Ordering {
+        if let (ContactPoint::At(p), ContactPoint::At(q)) = (self, other) {
+            return lex_cmp(*p, *q);
+        }
+        self.cmp_axis(other, 0).then_with(|| self.cmp_axis(other, 1))
+    }
+
+    fn cmp_axis(&self, other: &ContactPoint, axis: usize) -> Ordering {
+        let ((p, e), (q, f)) = (self.approx(), other.approx());
+        let (u, v) = if axis == 0 { (p.x, q.x) } else { (p.y, q.y) };
+        // A correctly rounded difference keeps the sign of the exact one.
+        let d = u - v;
+        if d.abs() > 2.0 * (e + f) {
+            return cmp_f64(d, 0.0);
+        }
+        if e == 0.0 && f == 0.0 {
+            return cmp_f64(u, v);
+        }
+        let ((a, b), (c, w)) = (self.exact(axis), other.exact(axis));
+        // a / b against c / w, both denominators positive.
+        match (&(&a * &w) - &(&c * &b)).signum() {
+            s if s < 0 => Ordering::Less,
+            0 => Ordering::Equal,
+            _ => Ordering::Greater,
+        }
+    }
+}
+
+/// The lexicographically smallest point that `s` and `t` share, given
+/// how they meet (`segment_contact(s, t)`).
+pub(crate) fn first_contact(s: [Point; 2], t: [Point; 2], contact: SegmentContact) -> ContactPoint {
+    let min = |[a, b]: [Point; 2]| if lex_cmp(a, b) == Ordering::Greater { b } else { a };
+    let inside_of = |[a, b]: [Point; 2], other: [Point; 2]| if inside_segment(a, other) { a } else { b };
+    match contact {
+        SegmentContact::Cross => ContactPoint::crossing(s, t),
+        // On one line the common part starts at the later of the two
+        // first ends.
+        SegmentContact::Overlap => {
+            let (a, b) = (min(s), min(t));
+            ContactPoint::At(if lex_cmp(a, b) == Ordering::Less { b } else { a })
+        }
+        SegmentContact::EndpointOfSecondOnFirst => ContactPoint::At(inside_of(t, s)),
+        SegmentContact::EndpointOfFirstOnSecond => ContactPoint::At(inside_of(s, t)),
+    }
 }

@@ -12,14 +12,19 @@
 //!   [`Conflict`] naming both input indices: a proper crossing, an endpoint in
 //!   the open interior of another segment (T-junction), two collinear segments
 //!   sharing more than a point, an isolated point in the open interior of a
-//!   segment. When several conflicts exist, the one reported is always the same
-//!   whatever the grid: the first segment pair in input order, else the first
-//!   (point, segment) pair.
+//!   segment. When several conflicts exist, the one reported is the one whose
+//!   *contact point* (the lexicographically smallest point, by `x` then `y`,
+//!   that the two items share) is smallest, whatever the input order; among
+//!   conflicts at the same contact point, segment pairs come before
+//!   (point, segment) pairs, then the smaller pair of input indices, among
+//!   those the sweep meets there (`sweep.rs`).
 //!
 //! # Exactness
 //! Every decision is an exact orientation sign (never perturbed by fault
-//! injection) or a coordinate comparison, made by
-//! `geometry::segment_contact`; no epsilon anywhere. The checker works in
+//! injection) or a coordinate comparison, made by `geometry::predicates`
+//! and `geometry::segment_contact`; no epsilon anywhere. Crossing points
+//! (to rank conflicts) are rational points compared exactly, in big
+//! numbers wide enough never to round (`segment_contact::ContactPoint`). The checker works in
 //! the builder's coordinates: the input multiplied by the build's one power
 //! of two ([`Scale`], computed by `construct::input_scale`) so that 1e300
 //! does not overflow and
@@ -31,20 +36,22 @@
 //! magnitude loses its tiniest differences in the scaling.
 //!
 //! # Where
-//! `normalise.rs` (zero-length, repeated), `candidates.rs` (the pairs worth
-//! testing, through a grid), `classify.rs` (a pair's conflict, named by
-//! input indices); the contact test itself is `geometry::segment_contact`.
+//! `normalise.rs` (zero-length, repeated), `sweep.rs` (the pairs worth
+//! testing and the conflict reported: a Shamos–Hoey sweep, O(n log n) expected for
+//! every input), `classify.rs` (a pair's conflict, named by input indices,
+//! and its contact point); the contact test itself is
+//! `geometry::segment_contact`.
 
-mod candidates;
 mod classify;
 mod normalise;
+mod sweep;
 #[cfg(test)]
 mod tests;
 
 use crate::geometry::scale::Scale;
 use crate::geometry::Point;
-use candidates::find_conflict;
 use normalise::normalise;
+use sweep::find_conflict;
 
 /// Where a point of the checked input came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -1,7 +1,7 @@
 //! Normalisation of the input: zero-length segments become points, repeated
 //! segments and points are dropped and counted (the first one is kept).
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 
 use super::PointSource;
 use crate::geometry::Point;
@@ -35,31 +35,56 @@ fn segment_key(a: Point, b: Point) -> [u64; 4] {
 pub(super) fn normalise(points: &[Point], segments: &[[Point; 2]], internal: impl Fn(Point) -> Point) -> Normalised {
     let mut out = Normalised::default();
     let mut degenerate = Vec::new();
-    let mut kept_by_key: HashMap<[u64; 4], usize> = HashMap::with_capacity(segments.len());
+    // Repeats found by sorting the keys (with the input index, so the first
+    // of equal keys is the earliest): O(n log n) on sequential memory,
+    // where a hash map of a million segments spends most of its time
+    // waiting for memory.
+    let mut ends: Vec<Option<[Point; 2]>> = Vec::with_capacity(segments.len());
+    let mut keyed: Vec<([u64; 4], u32)> = Vec::with_capacity(segments.len());
     for (i, s) in segments.iter().enumerate() {
         let (a, b) = (internal(s[0]), internal(s[1]));
         if a == b {
             out.degenerate_segments += 1;
             degenerate.push((PointSource::Segment(i), a));
+            ends.push(None);
+        } else {
+            keyed.push((segment_key(a, b), i as u32));
+            ends.push(Some([a, b]));
+        }
+    }
+    keyed.sort_unstable();
+    // Per input segment, the earliest with its key (itself if none is
+    // earlier); then, once kept, that one's position among the kept.
+    let mut first = vec![u32::MAX; segments.len()];
+    for group in keyed.chunk_by(|x, y| x.0 == y.0) {
+        for &(_, i) in group {
+            first[i as usize] = group[0].1;
+        }
+    }
+    drop(keyed);
+    for (i, e) in ends.into_iter().enumerate() {
+        let Some([a, b]) = e else {
             out.kept_of_input.push(None);
             continue;
-        }
-        let kept = *kept_by_key.entry(segment_key(a, b)).or_insert_with(|| {
+        };
+        let earliest = first[i] as usize;
+        let kept = if earliest == i {
             out.segments.push((i, [a, b]));
+            first[i] = (out.segments.len() - 1) as u32;
             out.segments.len() - 1
-        });
-        if out.segments[kept].0 != i {
+        } else {
             out.duplicate_segments += 1;
-        }
+            first[earliest] as usize // already its position among the kept
+        };
         out.kept_of_input.push(Some(kept));
     }
-    drop(kept_by_key);
+    drop(first);
     if points.is_empty() && degenerate.is_empty() {
         // Nothing to compare with the endpoints: no set of them needed.
-        // (The keys are the caller's coordinates: the default hasher's
-        // random keys keep crafted input from colliding them.)
         return out;
     }
+    // (The keys are the caller's coordinates: the default hasher's random
+    // keys keep crafted input from colliding them.)
     let mut seen_points: HashSet<[u64; 2]> = out.segments.iter().flat_map(|(_, s)| s.map(point_key)).collect();
     let isolated = points.iter().enumerate().map(|(i, &p)| (PointSource::Point(i), internal(p)));
     for (src, p) in isolated.chain(degenerate) {

@@ -1,13 +1,15 @@
-//! Tests of the input check: normalisation, conflicts, exactness, the grid
-//! against brute force, and a large input.
+//! Tests of the input check: normalisation, conflicts, exactness, the
+//! degenerate cases of the sweep, the sweep against brute force, and a large
+//! input.
 
-use super::candidates::find_conflict;
-use super::classify::{point_conflict, segment_conflict};
+use super::classify::{point_conflict_at, segment_conflict_at};
 use super::normalise::{normalise, Normalised};
+use super::sweep::{find_conflict, find_conflict_at};
 use super::*;
-use crate::construct::grid::Grid;
 use crate::construct::input_scale;
+use crate::geometry::segment_contact::ContactPoint;
 use proptest::prelude::*;
+use std::cmp::Ordering;
 
 /// The check as the builder calls it, with the build's one scale.
 fn check_segments(points: &[Point], segments: &[[Point; 2]]) -> Result<CheckedInput, Conflict> {
@@ -136,13 +138,56 @@ fn point_inside_segment() {
 }
 
 #[test]
-fn first_conflict_in_input_order_is_reported() {
-    // Pairs (1,2) and (0,3) both cross; (0,3) comes first.
+fn leftmost_conflict_is_reported() {
+    // Pairs (1,2) and (0,3) both cross, at (1,1) and (1,11): the lower
+    // one is lexicographically first, whatever the input order.
     let segments = [s(0., 10., 2., 12.), s(0., 0., 2., 2.), s(0., 2., 2., 0.), s(0., 12., 2., 10.)];
-    assert_eq!(check(&segments), Err(Conflict::SegmentsCross { first: 0, second: 3 }));
-    // A segment conflict wins over an earlier point conflict.
-    let r = check_segments(&[p(1., 11.)], &[s(0., 11., 2., 11.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)]);
+    assert_eq!(check(&segments), Err(Conflict::SegmentsCross { first: 1, second: 2 }));
+    let reversed: Vec<[Point; 2]> = segments.iter().rev().copied().collect();
+    assert_eq!(check(&reversed), Err(Conflict::SegmentsCross { first: 1, second: 2 }));
+    // A point conflict left of a crossing wins over it; right of it, not.
+    let r = check_segments(&[p(0.5, 11.)], &[s(0., 11., 2., 11.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)]);
+    assert_eq!(r, Err(Conflict::PointOnSegment { point: 0, segment: 0 }));
+    let r = check_segments(&[p(1.5, 11.)], &[s(0., 11., 2., 11.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)]);
     assert_eq!(r, Err(Conflict::SegmentsCross { first: 1, second: 2 }));
+    // At one x the lower contact point wins: a crossing at (1, 1) against a
+    // T-junction at (1, 5) and an overlap starting at (1, 7).
+    let segments =
+        [s(1., 7., 3., 7.), s(0., 7., 2., 7.), s(0., 5., 2., 5.), s(1., 5., 1., 6.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)];
+    assert_eq!(check(&segments), Err(Conflict::SegmentsCross { first: 4, second: 5 }));
+    assert_eq!(check(&segments[..4]), Err(Conflict::EndpointOnSegment { segment: 2, endpoint_of: 3 }));
+    assert_eq!(check(&segments[..2]), Err(Conflict::SegmentsOverlap { first: 0, second: 1 }));
+}
+
+#[test]
+fn crossing_point_is_compared_exactly() {
+    // Segments 0 and 1 cross at (1/3, 1/3) exactly. Segment 3 ends inside
+    // the vertical bar 2 at x: the double nearest 1/3 lies below 1/3, so
+    // that T-junction is further left than the crossing; one ulp up, it
+    // is further right.
+    let third = 1.0 / 3.0;
+    let cross = [s(0., 0., 1., 1.), s(0., 1., 0.5, 0.)];
+    let at = ContactPoint::crossing(cross[0], cross[1]);
+    assert_eq!(ContactPoint::At(p(third, 9.0)).cmp(&at), Ordering::Less);
+    assert_eq!(ContactPoint::At(p(up(third), -9.0)).cmp(&at), Ordering::Greater);
+    let with_t = |x: f64| {
+        let mut v = cross.to_vec();
+        v.extend([s(x, -6., x, -3.), s(x, -4., x + 1., -3.)]);
+        v
+    };
+    assert_eq!(check(&with_t(third)), Err(Conflict::EndpointOnSegment { segment: 2, endpoint_of: 3 }));
+    assert_eq!(check(&with_t(up(third))), Err(Conflict::SegmentsCross { first: 0, second: 1 }));
+    // Exactly on a crossing: (1/2, 1/2) for the diagonals of a square.
+    let y = ContactPoint::crossing(s(0., 0., 1., 1.), s(0., 1., 1., 0.));
+    assert_eq!(ContactPoint::At(p(0.5, 0.5)).cmp(&y), Ordering::Equal);
+    assert_eq!(ContactPoint::At(p(0.5, up(0.5))).cmp(&y), Ordering::Greater);
+    assert_eq!(ContactPoint::At(p(down(0.5), 7.0)).cmp(&y), Ordering::Less);
+    // Two crossings one ulp apart in y at the same x.
+    let z = ContactPoint::crossing(s(0., 0., 1., 2.), s(0., 2., 1., 0.)); // (1/2, 1)
+    let w = ContactPoint::crossing(s(0., up(0.), 1., 2.), s(0., 2., 1., up(0.)));
+    assert_eq!(z.cmp(&w), Ordering::Less);
+    assert_eq!(w.cmp(&z), Ordering::Greater);
+    assert_eq!(z.cmp(&z.clone()), Ordering::Equal);
 }
 
 // ---- allowed shared endpoints ----
@@ -232,28 +277,233 @@ fn huge_and_tiny_coordinates() {
 }
 
 #[test]
-fn tiny_extent_next_to_a_far_point_uses_one_cell() {
+fn tiny_extent_next_to_a_far_point() {
     // The far point sets the scale, so the segments' extent stays near
-    // 1e-300: the grid falls back to one cell. (The orientations there
-    // underflow, beyond the predicates' documented exact range, so only
-    // "no panic, an answer" is asserted.)
+    // 1e-300. (The orientations there underflow, beyond the predicates'
+    // documented exact range, so only "no panic, an answer" is asserted.)
     let t = 1e-300;
     let segments = [s(0., 0., t, 0.), s(t, 0., t, t), s(0., t, 0.5 * t, 2. * t)];
-    let grid = Grid::for_segments(&segments.map(|q| (0, q)));
-    assert!(grid.single);
-    let mut cells = Vec::new();
-    grid.cover(segments[2][0], segments[2][1], &mut cells);
-    assert_eq!((cells, grid.cell_of(p(t, t))), (vec![0], 0));
     let _ = check_segments(&[p(1.0, 1.0)], &segments);
 }
 
-// ---- the grid against brute force ----
+// ---- degenerate cases of the sweep ----
 
-/// All pairs, in the order `find_conflict` promises.
-fn brute_force(norm: &Normalised) -> Option<Conflict> {
+/// The factors the degenerate cases are tried at: ordinary, huge, tiny.
+const FACTORS: [f64; 3] = [1.0, 1e300, 1e-300];
+
+#[test]
+fn star_of_1000_spokes() {
+    for f in FACTORS {
+        // Spokes both start and end at the centre (those pointing left end
+        // there): 1000 segments sharing one point, no conflict.
+        let centre = p(0.5 * f, -0.25 * f);
+        let star: Vec<[Point; 2]> = (0..1000)
+            .map(|k| {
+                let t = k as f64 * std::f64::consts::TAU / 1000.0;
+                [centre, p(centre.x + t.cos() * f, centre.y + t.sin() * f)]
+            })
+            .collect();
+        assert!(check(&star).is_ok(), "{f}");
+        // With an isolated point near the centre, and one on a spoke's
+        // line but beyond its tip: still fine.
+        assert!(check_segments(&[p(centre.x, centre.y + 1e-3 * f), p(centre.x + 2.0 * f, centre.y)], &star).is_ok());
+    }
+}
+
+#[test]
+fn star_with_a_spoke_overlapping_another() {
+    for f in FACTORS {
+        // Tips on the boundary of a square: all directions distinct.
+        let mut tips: Vec<(f64, f64)> = Vec::new();
+        for k in -10..10 {
+            let k = f64::from(k);
+            tips.extend([(k, -10.), (10., k), (-k, 10.), (-10., -k)]);
+        }
+        let star: Vec<[Point; 2]> = tips.iter().map(|&(x, y)| [p(0., 0.), p(x * f, y * f)]).collect();
+        assert!(check(&star).is_ok(), "{f}");
+        let index_of = |x: f64, y: f64| tips.iter().position(|&t| t == (x, y)).unwrap();
+        let n = star.len();
+        // Half the spoke to (10, 4), from the centre: overlaps it there.
+        let mut bad = star.clone();
+        bad.push([p(0., 0.), p(5. * f, 2. * f)]);
+        assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: index_of(10., 4.), second: n }), "{f}");
+        // Twice the spoke to (-10, -4), ending at the centre: the overlap
+        // starts at (-10, -4), left of the centre, so it is reported.
+        bad.push([p(-20. * f, -8. * f), p(0., 0.)]);
+        assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: index_of(-10., -4.), second: n + 1 }), "{f}");
+        // Through the centre, along a spoke: the centre is inside it.
+        let mut through = star.clone();
+        through.push([p(-3. * f, 0.), p(3. * f, 0.)]);
+        assert!(matches!(check(&through), Err(Conflict::SegmentsOverlap { .. } | Conflict::EndpointOnSegment { .. })));
+    }
+}
+
+#[test]
+fn stacked_vertical_segments() {
+    for f in FACTORS {
+        let stack: Vec<[Point; 2]> = (0..100).map(|i| s(0., f64::from(i) * f, 0., f64::from(i + 1) * f)).collect();
+        assert!(check(&stack).is_ok(), "{f}");
+        // Reversed ends, and a second stack with gaps beside it.
+        let mut two: Vec<[Point; 2]> = stack.iter().map(|&[a, b]| [b, a]).collect();
+        two.extend((0..50).map(|i| s(f, f64::from(2 * i) * f, f, f64::from(2 * i + 1) * f)));
+        assert!(check(&two).is_ok(), "{f}");
+        // Shifted by half: overlaps segment 50 from (0, 50.5) on.
+        let mut bad = stack.clone();
+        bad.push(s(0., 50.5 * f, 0., 51.5 * f));
+        assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: 50, second: 100 }), "{f}");
+        // Contained in one, with no common end.
+        let mut bad = stack.clone();
+        bad.push(s(0., 70.25 * f, 0., 70.75 * f));
+        assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: 70, second: 100 }), "{f}");
+        // A horizontal crossing one, and one ending on one.
+        let mut bad = stack.clone();
+        bad.push(s(-f, 30.25 * f, f, 30.25 * f));
+        assert_eq!(check(&bad), Err(Conflict::SegmentsCross { first: 30, second: 100 }), "{f}");
+        let mut bad = stack.clone();
+        bad.push(s(-f, 30.25 * f, 0., 30.25 * f));
+        assert_eq!(check(&bad), Err(Conflict::EndpointOnSegment { segment: 30, endpoint_of: 100 }), "{f}");
+        // Touching the stack at a shared end from the side: fine.
+        let mut fine = stack.clone();
+        fine.push(s(-f, 30. * f, 0., 30. * f));
+        fine.push(s(0., 30. * f, f, 31. * f));
+        assert!(check(&fine).is_ok(), "{f}");
+    }
+}
+
+#[test]
+fn point_inside_a_vertical_segment() {
+    for f in FACTORS {
+        let segments = [s(0., 0., 0., f), s(0., f, 0., 2. * f), s(-f, f, 0., f), s(0., 3. * f, 0., 4. * f)];
+        // Points at the same x as many events: between the segments, and
+        // on their ends (merged), are fine.
+        let fine = [p(0., 2.5 * f), p(0., -f), p(0., 5. * f), p(0., 0.)];
+        assert!(check_segments(&fine, &segments).is_ok(), "{f}");
+        let r = check_segments(&[p(0., 2.5 * f), p(0., 1.5 * f)], &segments);
+        assert_eq!(r, Err(Conflict::PointOnSegment { point: 1, segment: 1 }), "{f}");
+        // As a zero-length segment.
+        let mut with = segments.to_vec();
+        with.push(s(0., 3.5 * f, 0., 3.5 * f));
+        assert_eq!(check(&with), Err(Conflict::EndpointOnSegment { segment: 3, endpoint_of: 4 }), "{f}");
+    }
+}
+
+#[test]
+fn collinear_chain() {
+    for f in FACTORS {
+        // Ends alternately reversed; all on the line y = 2x.
+        let chain: Vec<[Point; 2]> = (0..1000)
+            .map(|i| {
+                let (a, b) = (f64::from(i), f64::from(i + 1));
+                let seg = s(a * f, 2. * a * f, b * f, 2. * b * f);
+                if i % 2 == 0 {
+                    seg
+                } else {
+                    [seg[1], seg[0]]
+                }
+            })
+            .collect();
+        assert!(check(&chain).is_ok(), "{f}");
+        let mut bad = chain.clone();
+        bad.push(s(500.5 * f, 1001. * f, 600. * f, 1200. * f));
+        assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: 500, second: 1000 }), "{f}");
+        // The same line continued past the end: fine.
+        let mut fine = chain.clone();
+        fine.push(s(1000. * f, 2000. * f, 1500. * f, 3000. * f));
+        assert!(check(&fine).is_ok(), "{f}");
+    }
+}
+
+#[test]
+fn t_junction_at_an_x_shared_with_many_events() {
+    for f in FACTORS {
+        // 400 segments start or end at x = 5, at y = 0..400; a diagonal
+        // passes x = 5 at y = 500, a vertical bar spans y = 1000..2000.
+        let mut segments: Vec<[Point; 2]> = Vec::new();
+        for k in 0..200 {
+            let k = f64::from(k);
+            segments.push(s(5. * f, 2. * k * f, 6. * f, 2. * k * f));
+            segments.push(s(4. * f, (2. * k + 1.) * f, 5. * f, (2. * k + 1.) * f));
+        }
+        segments.push(s(0., 0., 10. * f, 1000. * f)); // 400
+        segments.push(s(5. * f, 1000. * f, 5. * f, 2000. * f)); // 401
+        segments.push(s(5. * f, 490. * f, 7. * f, 490. * f)); // 402, just below it
+        assert!(check(&segments).is_ok(), "{f}");
+        // Starting on the diagonal at x = 5, and ending on the bar there.
+        let mut bad = segments.clone();
+        bad.push(s(5. * f, 500. * f, 6. * f, 500. * f));
+        assert_eq!(check(&bad), Err(Conflict::EndpointOnSegment { segment: 400, endpoint_of: 403 }), "{f}");
+        let mut bad = segments.clone();
+        bad.push(s(4. * f, 1500. * f, 5. * f, 1500. * f));
+        assert_eq!(check(&bad), Err(Conflict::EndpointOnSegment { segment: 401, endpoint_of: 403 }), "{f}");
+        // Both: the lower contact point, on the diagonal, is reported.
+        bad.push(s(5. * f, 500. * f, 6. * f, 500. * f));
+        assert_eq!(check(&bad), Err(Conflict::EndpointOnSegment { segment: 400, endpoint_of: 404 }), "{f}");
+    }
+}
+
+/// The check asks only exact predicates: lying ones change nothing.
+#[cfg(feature = "fault-injection")]
+#[test]
+fn fault_injection_does_not_reach_the_check() {
+    use crate::geometry::fault::{set_fault_mode, FaultMode};
+    let star = |extra: Option<[Point; 2]>| {
+        let mut v: Vec<[Point; 2]> = (0..64)
+            .map(|k| {
+                let t = k as f64 * std::f64::consts::TAU / 64.0;
+                [p(0., 0.), p(t.cos(), t.sin())]
+            })
+            .collect();
+        v.extend(extra);
+        v
+    };
+    let inputs = [
+        star(None),
+        star(Some(s(0.2, -0.5, 0.2, 0.5))),
+        star(Some(s(-2., 0., -1., 0.))),
+        vec![s(0., 0., 2., 2.), s(0., 2., 2., 0.), s(5., 5., 6., 6.)],
+        vec![s(0., 0., 4., 0.), s(2., 0., 2., 3.), s(0., 1., 0., 2.)],
+    ];
+    let expected: Vec<_> = inputs.iter().map(|i| check(i).err()).collect();
+    for mode in [FaultMode::Random, FaultMode::Noise(1e-3)] {
+        set_fault_mode(mode, 7);
+        let got: Vec<_> = inputs.iter().map(|i| check(i).err()).collect();
+        set_fault_mode(FaultMode::Off, 0);
+        assert_eq!(got, expected, "{mode:?}");
+    }
+}
+
+// ---- the sweep against brute force ----
+
+/// Every conflict of every pair, with its contact point: O(n²).
+fn all_conflicts(norm: &Normalised) -> Vec<(Conflict, ContactPoint)> {
     let m = norm.segments.len();
-    let seg = (0..m).flat_map(|i| (i + 1..m).map(move |j| (i, j))).find_map(|(i, j)| segment_conflict(norm, i, j));
-    seg.or_else(|| (0..norm.points.len()).flat_map(|q| (0..m).map(move |s| (q, s))).find_map(|(q, s)| point_conflict(norm, q, s)))
+    let segments = (0..m).flat_map(|i| (i + 1..m).map(move |j| (i, j))).filter_map(|(i, j)| segment_conflict_at(norm, i, j));
+    let points =
+        (0..norm.points.len()).flat_map(|q| (0..m).map(move |s| (q, s))).filter_map(|(q, s)| point_conflict_at(norm, q, s));
+    segments.chain(points).collect()
+}
+
+/// The smallest contact point of all conflicts, by brute force.
+fn brute_force(norm: &Normalised) -> Option<ContactPoint> {
+    all_conflicts(norm).into_iter().map(|(_, at)| at).min_by(|a, b| a.cmp(b))
+}
+
+/// The sweep's answer agrees with brute force: both find nothing, or the
+/// sweep's conflict is one of the pairs' conflicts, at its contact point,
+/// and that point is the smallest of all. Returns the sweep's answer.
+fn sweep_agrees(norm: &Normalised) -> Result<Option<(Conflict, ContactPoint)>, TestCaseError> {
+    let found = find_conflict_at(norm);
+    let all = all_conflicts(norm);
+    match (&found, brute_force(norm)) {
+        (None, None) => {}
+        (Some((c, at)), Some(min)) => {
+            prop_assert_eq!(at.cmp(&min), Ordering::Equal, "{:?} at {:?}, min {:?}", c, at, min);
+            prop_assert!(all.iter().any(|(d, e)| d == c && e.cmp(at) == Ordering::Equal), "{:?} is no conflict", c);
+        }
+        (f, b) => prop_assert!(false, "sweep {:?}, brute force {:?}", f, b),
+    }
+    prop_assert_eq!(found.as_ref().map(|f| f.0), find_conflict(norm));
+    Ok(found)
 }
 
 /// Whether integer input breaks the rules, decided independently of
@@ -343,15 +593,85 @@ fn polyline_input() -> impl Strategy<Value = IntInput> {
     })
 }
 
-fn run(input: &IntInput, f: (f64, f64)) -> Result<(), TestCaseError> {
+/// Shared endpoints galore: spokes from one or two centres to points of a
+/// small grid (collinear spokes, overlapping spokes), plus a few segments
+/// and points.
+fn star_input() -> impl Strategy<Value = IntInput> {
+    let v = (0i64..7, 0i64..7);
+    let centres = prop::collection::vec(v.clone(), 1..3);
+    let tips = prop::collection::vec((0usize..2, v.clone()), 1..16);
+    let extra = prop::collection::vec([v.clone(), v.clone()], 0..4);
+    (centres, tips, extra, prop::collection::vec(v, 0..3)).prop_map(|(centres, tips, extra, points)| {
+        let mut segments: Vec<[(i64, i64); 2]> = tips.into_iter().map(|(c, t)| [centres[c % centres.len()], t]).collect();
+        segments.extend(extra);
+        (points, segments)
+    })
+}
+
+/// Normalised as the builder does it, at placement `f`.
+fn normalised(input: &IntInput, f: (f64, f64)) -> (Vec<Point>, Vec<[Point; 2]>, Normalised) {
     let (points, segments) = input;
     let fp: Vec<Point> = points.iter().map(|&v| to_f64(v, f)).collect();
     let fs: Vec<[Point; 2]> = segments.iter().map(|s| s.map(|v| to_f64(v, f))).collect();
     let norm = normalise(&fp, &fs, |q| q.scaled(input_scale(&fp, &fs).to_internal).canonical_zero());
-    let grid_answer = find_conflict(&norm);
-    prop_assert_eq!(grid_answer, brute_force(&norm));
-    prop_assert_eq!(grid_answer.is_some(), integer_oracle(points, segments));
-    prop_assert_eq!(check_segments(&fp, &fs).err(), grid_answer);
+    (fp, fs, norm)
+}
+
+fn run(input: &IntInput, f: (f64, f64)) -> Result<(), TestCaseError> {
+    let (fp, fs, norm) = normalised(input, f);
+    let found = sweep_agrees(&norm)?;
+    prop_assert_eq!(found.is_some(), integer_oracle(&input.0, &input.1));
+    prop_assert_eq!(check_segments(&fp, &fs).err(), found.map(|f| f.0));
+    Ok(())
+}
+
+/// The same input in another order or another placement: the same
+/// verdict, and the same contact point where the order of points is kept.
+fn invariance(input: &IntInput, seed: u64) -> Result<(), TestCaseError> {
+    let (_, _, norm) = normalised(input, (1.0, 0.0));
+    let found = sweep_agrees(&norm)?;
+    let (points, segments) = input;
+    // Reversed: both lists, and each segment's ends.
+    let reversed: IntInput = (points.iter().rev().copied().collect(), segments.iter().rev().map(|&[a, b]| [b, a]).collect());
+    // Shuffled, by a seeded Fisher–Yates.
+    let mut rng = Rng(seed | 1);
+    let mut shuffled = input.clone();
+    for k in (1..shuffled.1.len()).rev() {
+        shuffled.1.swap(k, (rng.unit() * (k + 1) as f64) as usize % (k + 1));
+    }
+    for k in (1..shuffled.0.len()).rev() {
+        shuffled.0.swap(k, (rng.unit() * (k + 1) as f64) as usize % (k + 1));
+    }
+    for other in [reversed, shuffled] {
+        let (_, _, other_norm) = normalised(&other, (1.0, 0.0));
+        let again = sweep_agrees(&other_norm)?;
+        prop_assert_eq!(again.is_some(), found.is_some());
+        if let (Some((_, a)), Some((_, b))) = (&found, &again) {
+            prop_assert_eq!(a.cmp(b), Ordering::Equal);
+        }
+    }
+    // Mirrored: the same verdict (the leftmost contact is another one).
+    let mirrored: IntInput =
+        (points.iter().map(|&(x, y)| (-x, y)).collect(), segments.iter().map(|s| s.map(|(x, y)| (-x, y))).collect());
+    let (_, _, mirrored_norm) = normalised(&mirrored, (1.0, 0.0));
+    prop_assert_eq!(sweep_agrees(&mirrored_norm)?.is_some(), found.is_some());
+    // Scaled by powers of two: every decision is the same, so the same
+    // conflict, and the same contact point in input coordinates.
+    let input_contact = |f: (f64, f64), found: &Option<(Conflict, ContactPoint)>| {
+        let (fp, fs, _) = normalised(input, f);
+        match found {
+            Some((_, ContactPoint::At(q))) => Some(q.scaled(input_scale(&fp, &fs).to_input)),
+            _ => None,
+        }
+    };
+    for k in [-1000, -60, -1, 1, 61, 1000] {
+        let f = (2f64.powi(k), 0.0);
+        let (_, _, scaled_norm) = normalised(input, f);
+        let again = sweep_agrees(&scaled_norm)?;
+        prop_assert_eq!(again.as_ref().map(|f| f.0), found.as_ref().map(|f| f.0));
+        let expected = input_contact((1.0, 0.0), &found).map(|q| q.scaled(f.0));
+        prop_assert_eq!(input_contact(f, &again), expected);
+    }
     Ok(())
 }
 
@@ -382,52 +702,41 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
 
     #[test]
-    fn grid_agrees_with_brute_force_small_grid(input in small_grid_input(), f in placement()) {
+    fn sweep_agrees_with_brute_force_small_grid(input in small_grid_input(), f in placement()) {
         run(&input, f)?;
     }
 
     #[test]
-    fn grid_agrees_with_brute_force_spread(input in spread_input(), f in placement()) {
+    fn sweep_agrees_with_brute_force_spread(input in spread_input(), f in placement()) {
         run(&input, f)?;
     }
 
     #[test]
-    fn grid_agrees_with_brute_force_polyline(input in polyline_input(), f in placement()) {
+    fn sweep_agrees_with_brute_force_polyline(input in polyline_input(), f in placement()) {
         run(&input, f)?;
     }
 
-    /// Random real coordinates: crossings are common, collinearity not.
     #[test]
-    fn grid_agrees_with_brute_force_reals(
+    fn sweep_agrees_with_brute_force_stars(input in star_input(), f in placement()) {
+        run(&input, f)?;
+    }
+
+    /// Reversed, shuffled, mirrored and scaled inputs: the same verdict
+    /// and the same leftmost contact point.
+    #[test]
+    fn sweep_is_invariant(input in prop_oneof![small_grid_input(), star_input(), polyline_input()], seed in any::<u64>()) {
+        invariance(&input, seed)?;
+    }
+
+    /// Random real coordinates: crossings are common, collinearity not;
+    /// the leftmost crossing is compared exactly with the others.
+    #[test]
+    fn sweep_agrees_with_brute_force_reals(
         segments in real_segments(100.0, 0..40),
     ) {
         let fs: Vec<[Point; 2]> = segments.iter().map(|s| s.map(|(x, y)| p(x, y))).collect();
         let norm = normalise(&[], &fs, |q| q.canonical_zero());
-        prop_assert_eq!(find_conflict(&norm), brute_force(&norm));
-    }
-
-    /// Points computed along a segment land in cells it registered.
-    #[test]
-    fn cover_is_conservative(
-        segments in real_segments(1e3, 1..30),
-    ) {
-        let kept: Vec<(usize, [Point; 2])> = segments
-            .iter()
-            .map(|s| s.map(|(x, y)| p(x, y)))
-            .filter(|[a, b]| a != b)
-            .enumerate()
-            .collect();
-        prop_assume!(!kept.is_empty());
-        let grid = Grid::for_segments(&kept);
-        for (_, [a, b]) in &kept {
-            let mut cells = Vec::new();
-            grid.cover(*a, *b, &mut cells);
-            for k in 0..=64 {
-                let t = k as f64 / 64.0;
-                let q = p(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
-                prop_assert!(cells.contains(&grid.cell_of(q)), "{:?} {:?} t={}", a, b, t);
-            }
-        }
+        sweep_agrees(&norm)?;
     }
 }
 

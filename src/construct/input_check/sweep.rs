@@ -1,0 +1,527 @@
+//! # Which conflict is found: a Shamos–Hoey sweep
+//! The kept segments and isolated points are swept in lexicographic order
+//! of their points (by `x`, then by `y`): think of a vertical sweep line
+//! tilted by an infinitesimal clockwise angle, so that no two distinct
+//! points are ever met at once and a vertical segment runs, like any
+//! other, from its first point (the lower end) to its last. A shear does
+//! not change orientations, so every decision below is an exact
+//! orientation sign of input points ([`exact_orientation`], never perturbed
+//! by fault injection) or an exact coordinate comparison.
+//!
+//! Each segment is oriented from its lexicographically smaller end (its
+//! *first* point) to its larger (*last*). The *status* holds the segments
+//! the sweep line currently crosses, ordered from below to above, in a treap
+//! with parent links (a node is a segment, numbered in the order of the
+//! first points, so that the segments in the status at one time mostly lie
+//! close together in memory). An *event* is one distinct point with
+//! everything there: the segments starting there, those ending there, or one
+//! isolated point (normalisation has made isolated points distinct from all
+//! endpoints). At event `q`:
+//! 1. the neighbours of `q` in the status. When segments end at `q`, they
+//!    are taken out by their nodes (no comparison), and the neighbours are
+//!    the nodes next to them that do not end at `q`. Otherwise the treap is
+//!    descended by the sign of `orientation(first, last, q)` (`q` above,
+//!    below or on the segment): the last node passed below `q` and the last
+//!    passed above it;
+//! 2. a segment with `q` in its open interior is a conflict at `q` with an
+//!    item there (the isolated point, or the segment with the smallest index
+//!    among those starting or ending there). The segments ending at `q` and
+//!    those with `q` inside form one run of the status, so one of the
+//!    latter, if any, is a neighbour of one of the former, where step 1
+//!    looks; when nothing ends at `q`, the descent meets one (a search in a
+//!    binary tree meets an equal key when there is one);
+//! 3. the segments starting at `q`, sorted by direction
+//!    (`orientation(q, last_i, last_j)`, exact; ties, which are overlaps, by
+//!    index), enter between the neighbours;
+//! 4. every pair of segments that has just become adjacent is classified
+//!    (`classify.rs`): the neighbour below with the lowest new one, each new
+//!    one with the next, the highest new one with the neighbour above; or,
+//!    when nothing starts at `q`, the two neighbours.
+//!
+//! # Which conflict is reported, and why it is seen
+//! Every conflict found is ranked by its *contact point*, the
+//! lexicographically smallest point the two items share
+//! (`geometry::segment_contact::first_contact`; a crossing point is a
+//! rational point, compared exactly); the smallest contact point wins, and
+//! among conflicts found at the same contact point, segment pairs before
+//! (point, segment) pairs, then the smaller pair of input indices
+//! (smaller index first). The sweep stops at the first event
+//! lexicographically past the best contact point found so far.
+//!
+//! Let `p*` be the smallest contact point of all conflicts. Before the
+//! sweep reaches `p*`, no two active segments share a point left of the
+//! sweep line other than a common endpoint, so the status order is the
+//! true order along the sweep line, and "below `q`", "through `q`",
+//! "above `q`" split it into three runs. Two cases:
+//! - `p*` is an event point. Some item has `p*` as an endpoint (or is the
+//!   isolated point `p*`); its partner of the conflict either has `p*` in
+//!   its open interior (it is active and through `p*`: step 2 sees it) or
+//!   starts at `p*` too (an overlap in one direction: the two are
+//!   neighbours in the sorted start list, step 4 sees it). A proper
+//!   crossing at an event point is also a T-junction there, seen so.
+//! - `p*` is not an event point: two segments cross there properly. All
+//!   segments through `p*` are active just left of it and, by continuity,
+//!   contiguous in the status; any two of them cross at `p*` (an overlap
+//!   would meet further left), so the lowest two, `g` and `h`, do. Between
+//!   the last event before `p*` and `p*` the order does not change, so `g`
+//!   and `h` became adjacent at some event before `p*`, and every new
+//!   adjacency is classified (step 4).
+//!
+//! So a conflict at `p*` is found by the time the sweep has handled the
+//! event `p*`, or the last event before it; the sweep never handles an event
+//! past `p*`, and so it always works on a status whose order is right
+//! (only the last event handled may leave it wrong, and the sweep stops
+//! after it). Events past the best contact found so far are not needed:
+//! a conflict with a smaller contact point `p` would be found at an event
+//! no later than `p`.
+//!
+//! # Cost
+//! Sorting the segments by first point, their last points and the isolated
+//! points, O(n log n). Each event costs at most one descent of the treap,
+//! plus, per segment starting there, its share of sorting them and an
+//! insertion, and per segment ending there, two neighbour steps and a
+//! removal, all O(log n) expected; plus one classification per segment
+//! starting there and one more per event. So O(n log n) in all, for every input: a star
+//! of k spokes costs one sort of k directions, long parallel bundles cost
+//! what short segments cost. The expectation is over the treap's
+//! priorities, a fixed pseudo-random sequence that the geometry does not
+//! influence (a search tree balanced in the worst case, AVL or red-black,
+//! would make the bound deterministic). Comparing the best contact
+//! point with each later event is O(1): an `f64` approximation with an
+//! error bound decides unless they are within a few ulps, then big
+//! numbers of fixed size.
+
+use std::cmp::Ordering;
+
+use super::classify::{point_conflict_at, segment_conflict_at};
+use super::normalise::Normalised;
+use super::Conflict;
+use crate::geometry::predicates::{exact_orientation, Orientation};
+use crate::geometry::segment_contact::{lex_cmp, lex_key, segment_contact, ContactPoint};
+use crate::geometry::Point;
+
+/// The conflict whose contact point is lexicographically smallest (see
+/// the module documentation for ties), or `None` when there is none.
+pub(super) fn find_conflict(norm: &Normalised) -> Option<Conflict> {
+    find_conflict_at(norm).map(|(c, _)| c)
+}
+
+/// [`find_conflict`] with the conflict's contact point.
+pub(super) fn find_conflict_at(norm: &Normalised) -> Option<(Conflict, ContactPoint)> {
+    if norm.segments.is_empty() {
+        return None; // distinct points never conflict
+    }
+    let m = norm.segments.len();
+    assert!(m < NIL as usize && norm.points.len() < NIL as usize, "item ids are 32-bit");
+    let oriented = |[a, b]: [Point; 2]| if lex_cmp(a, b) == Ordering::Greater { [b, a] } else { [a, b] };
+    // Node ids in the order of the first points: the start events come in
+    // that order, and the segments in the status at one time lie close
+    // together in memory.
+    let mut starts: Vec<(Key, u32)> =
+        norm.segments.iter().enumerate().map(|(i, &(_, s))| (lex_key(oriented(s)[0]), i as u32)).collect();
+    starts.sort_unstable();
+    let kept: Vec<u32> = starts.iter().map(|&(_, i)| i).collect();
+    drop(starts);
+    let segments: Vec<[Point; 2]> = kept.iter().map(|&i| oriented(norm.segments[i as usize].1)).collect();
+    let mut ends: Vec<(Key, u32)> = segments.iter().enumerate().map(|(k, s)| (lex_key(s[1]), k as u32)).collect();
+    ends.sort_unstable();
+    let mut lone: Vec<(Key, u32)> = norm.points.iter().enumerate().map(|(k, &(_, q))| (lex_key(q), k as u32)).collect();
+    lone.sort_unstable();
+
+    let mut sweep = Sweep {
+        norm,
+        status: Treap::new(segments.iter().copied()),
+        kept,
+        ending: vec![false; m],
+        best: None,
+        group: Group::default(),
+        adjacent: Vec::new(),
+    };
+    let (mut next_start, mut next_end, mut next_lone) = (0, 0, 0);
+    loop {
+        // The next event: the smallest of the three streams' heads.
+        let start_key = segments.get(next_start).map(|s| lex_key(s[0]));
+        let end_key = ends.get(next_end).map(|e| e.0);
+        let lone_key = lone.get(next_lone).map(|e| e.0);
+        let Some(key) = [start_key, end_key, lone_key].into_iter().flatten().min() else { break };
+        let q = if start_key == Some(key) {
+            segments[next_start][0]
+        } else if end_key == Some(key) {
+            segments[ends[next_end].1 as usize][1]
+        } else {
+            norm.points[lone[next_lone].1 as usize].1
+        };
+        if sweep.best.as_ref().is_some_and(|best| best.1.cmp(&ContactPoint::At(q)) == Ordering::Less) {
+            break; // past the best contact point
+        }
+        sweep.group.clear();
+        while next_start < m && lex_key(segments[next_start][0]) == key {
+            sweep.group.starts.push(next_start as u32);
+            next_start += 1;
+        }
+        while next_end < m && ends[next_end].0 == key {
+            sweep.group.ends.push(ends[next_end].1);
+            next_end += 1;
+        }
+        if next_lone < lone.len() && lone[next_lone].0 == key {
+            sweep.group.lone = Some(lone[next_lone].1);
+            next_lone += 1;
+        }
+        sweep.event(q);
+    }
+    sweep.best
+}
+
+/// A point's sort key ([`lex_key`]).
+type Key = (u64, u64);
+
+/// Everything at one event point: node ids of the segments starting and
+/// ending there, or the isolated point.
+#[derive(Default)]
+struct Group {
+    starts: Vec<u32>,
+    ends: Vec<u32>,
+    lone: Option<u32>,
+}
+
+impl Group {
+    fn clear(&mut self) {
+        self.starts.clear();
+        self.ends.clear();
+        self.lone = None;
+    }
+}
+
+struct Sweep<'a> {
+    norm: &'a Normalised,
+    /// The segments the sweep line crosses, from below to above.
+    status: Treap,
+    /// Per node, its kept segment (position in `norm.segments`).
+    kept: Vec<u32>,
+    /// Per node: it ends at the current event.
+    ending: Vec<bool>,
+    best: Option<(Conflict, ContactPoint)>,
+    /// Scratch space, kept from event to event.
+    group: Group,
+    adjacent: Vec<(u32, u32)>,
+}
+
+impl Sweep<'_> {
+    /// Handles the event at `q` (steps 1 to 4 of the module documentation)
+    /// with what `self.group` holds.
+    fn event(&mut self, q: Point) {
+        let side = |[a, b]: [Point; 2]| exact_orientation(a, b, q);
+        // Steps 1 and 2: the neighbours of q, and a segment through q that
+        // does not end there. The segments ending at q and those with q in
+        // their interior are one run, so one of the latter, if any, is next
+        // to one of the former; without the former, the descent meets one.
+        let (mut below, mut above, mut interior) = (NIL, NIL, NIL);
+        if self.group.ends.is_empty() {
+            (below, above, interior) = self.status.locate(side);
+        } else {
+            for &e in &self.group.ends {
+                self.ending[e as usize] = true;
+            }
+            for &e in &self.group.ends {
+                let (p, n) = (self.status.previous(e), self.status.next(e));
+                for (neighbour, slot) in [(p, &mut below), (n, &mut above)] {
+                    if neighbour != NIL && !self.ending[neighbour as usize] {
+                        *slot = neighbour;
+                        if side(self.status.segment(neighbour)) == Orientation::Collinear {
+                            interior = neighbour;
+                        }
+                    }
+                }
+            }
+            for &e in &self.group.ends {
+                self.ending[e as usize] = false;
+                self.status.remove(e);
+            }
+        }
+        if interior != NIL {
+            let kept = &self.kept;
+            let t = kept[interior as usize] as usize;
+            let found = match self.group.lone {
+                Some(p) => point_conflict_at(self.norm, p as usize, t),
+                None => {
+                    let items = self.group.starts.iter().chain(&self.group.ends);
+                    let u = items.copied().min_by_key(|&i| kept[i as usize]).expect("an event has an item");
+                    let u = kept[u as usize] as usize;
+                    segment_conflict_at(self.norm, t.min(u), t.max(u))
+                }
+            };
+            self.offer(found);
+        }
+        if self.group.lone.is_some() {
+            return; // nothing starts or ends at an isolated point
+        }
+
+        // Step 3: those starting at q enter, by direction.
+        let (status, kept) = (&self.status, &self.kept);
+        self.group.starts.sort_unstable_by(|&i, &j| match exact_orientation(q, status.segment(i)[1], status.segment(j)[1]) {
+            Orientation::CounterClockwise => Ordering::Less,
+            Orientation::Clockwise => Ordering::Greater,
+            Orientation::Collinear => kept[i as usize].cmp(&kept[j as usize]),
+        });
+        self.adjacent.clear();
+        let mut previous = below;
+        for &s in &self.group.starts {
+            self.adjacent.push((previous, s));
+            self.status.insert_after(previous, s);
+            previous = s;
+        }
+        self.adjacent.push((previous, above));
+
+        // Step 4: the new neighbours.
+        for k in 0..self.adjacent.len() {
+            let (i, j) = self.adjacent[k];
+            if i != NIL && j != NIL {
+                let found = self.pair(i, j);
+                self.offer(found);
+            }
+        }
+    }
+
+    /// The conflict of the segments of nodes `i` and `j`, with its contact
+    /// point.
+    fn pair(&self, i: u32, j: u32) -> Option<(Conflict, ContactPoint)> {
+        // Asked first of the nodes' own copies, which the sweep has just
+        // read (the kept segments lie elsewhere in memory); the answer is
+        // the same for either orientation of each segment.
+        segment_contact(self.status.segment(i), self.status.segment(j))?;
+        let (i, j) = (self.kept[i as usize], self.kept[j as usize]);
+        segment_conflict_at(self.norm, i.min(j) as usize, i.max(j) as usize)
+    }
+
+    /// Keeps `found` if it beats the best so far.
+    fn offer(&mut self, found: Option<(Conflict, ContactPoint)>) {
+        let Some((conflict, contact)) = found else { return };
+        let better = match &self.best {
+            None => true,
+            Some((best, at)) => match contact.cmp(at) {
+                Ordering::Less => true,
+                Ordering::Equal => rank(&conflict) < rank(best),
+                Ordering::Greater => false,
+            },
+        };
+        if better {
+            self.best = Some((conflict, contact));
+        }
+    }
+}
+
+/// The order among conflicts at one contact point: segment pairs first,
+/// then the smaller pair of input indices, smaller index first.
+fn rank(conflict: &Conflict) -> (u8, usize, usize) {
+    let pair = |a: usize, b: usize| (a.min(b), a.max(b));
+    match *conflict {
+        Conflict::SegmentsCross { first, second } | Conflict::SegmentsOverlap { first, second } => {
+            let (a, b) = pair(first, second);
+            (0, a, b)
+        }
+        Conflict::EndpointOnSegment { segment, endpoint_of } => {
+            let (a, b) = pair(segment, endpoint_of);
+            (0, a, b)
+        }
+        Conflict::PointOnSegment { point, segment } => (1, point, segment),
+    }
+}
+
+/// No node.
+const NIL: u32 = u32::MAX;
+
+/// A node of the status: a segment (first point first) and its links, one
+/// cache line (a descent reads one line per level).
+#[derive(Clone, Copy)]
+#[repr(align(64))]
+struct Node {
+    segment: [Point; 2],
+    left: u32,
+    right: u32,
+    parent: u32,
+    priority: u32,
+}
+
+/// A treap with parent links over the kept segments: node `i` is the
+/// segment of node id `i`, in the status at most once. Positions are the
+/// caller's: a node goes in right after another ([`Treap::insert_after`]),
+/// and leaves by its id ([`Treap::remove`]), with no comparison; only
+/// [`Treap::locate`] compares, through the caller's side function.
+struct Treap {
+    nodes: Vec<Node>,
+    root: u32,
+    /// xorshift state for the priorities.
+    state: u32,
+}
+
+impl Treap {
+    fn new(segments: impl Iterator<Item = [Point; 2]>) -> Treap {
+        let nodes = segments.map(|segment| Node { segment, left: NIL, right: NIL, parent: NIL, priority: 0 }).collect();
+        Treap { nodes, root: NIL, state: 0x9e37_79b9 }
+    }
+
+    fn segment(&self, i: u32) -> [Point; 2] {
+        self.nodes[i as usize].segment
+    }
+
+    fn left(&self, i: u32) -> u32 {
+        self.nodes[i as usize].left
+    }
+
+    fn right(&self, i: u32) -> u32 {
+        self.nodes[i as usize].right
+    }
+
+    fn parent(&self, i: u32) -> u32 {
+        self.nodes[i as usize].parent
+    }
+
+    fn leftmost(&self, mut t: u32) -> u32 {
+        while self.left(t) != NIL {
+            t = self.left(t);
+        }
+        t
+    }
+
+    fn rightmost(&self, mut t: u32) -> u32 {
+        while self.right(t) != NIL {
+            t = self.right(t);
+        }
+        t
+    }
+
+    /// The node before `i` in the order, or `NIL`.
+    fn previous(&self, mut i: u32) -> u32 {
+        if self.left(i) != NIL {
+            return self.rightmost(self.left(i));
+        }
+        while self.parent(i) != NIL && self.left(self.parent(i)) == i {
+            i = self.parent(i);
+        }
+        self.parent(i)
+    }
+
+    /// The node after `i` in the order, or `NIL`.
+    fn next(&self, mut i: u32) -> u32 {
+        if self.right(i) != NIL {
+            return self.leftmost(self.right(i));
+        }
+        while self.parent(i) != NIL && self.right(self.parent(i)) == i {
+            i = self.parent(i);
+        }
+        self.parent(i)
+    }
+
+    /// Where a query falls: descends by `side` (the query is above the
+    /// node's segment: `CounterClockwise`; below: `Clockwise`; on it:
+    /// `Collinear`) and returns the last node passed below the query, the
+    /// last passed above it, and the first found on it (`NIL` for none).
+    /// When the nodes below the query, on it and above it are runs in that
+    /// order, these are the node before the query, the node after it, and
+    /// one on it if any is.
+    fn locate(&self, side: impl Fn([Point; 2]) -> Orientation) -> (u32, u32, u32) {
+        let (mut below, mut above, mut on) = (NIL, NIL, NIL);
+        let mut t = self.root;
+        while t != NIL {
+            match side(self.segment(t)) {
+                Orientation::CounterClockwise => {
+                    below = t;
+                    t = self.right(t);
+                }
+                Orientation::Clockwise => {
+                    above = t;
+                    t = self.left(t);
+                }
+                Orientation::Collinear => {
+                    if on == NIL {
+                        on = t;
+                    }
+                    below = t;
+                    t = self.right(t);
+                }
+            }
+        }
+        (below, above, on)
+    }
+
+    /// Links `child` where `old` was below `parent` (or as the root).
+    fn replace_child(&mut self, parent: u32, old: u32, child: u32) {
+        if parent == NIL {
+            self.root = child;
+        } else if self.left(parent) == old {
+            self.nodes[parent as usize].left = child;
+        } else {
+            self.nodes[parent as usize].right = child;
+        }
+        if child != NIL {
+            self.nodes[child as usize].parent = parent;
+        }
+    }
+
+    /// Rotates `x` above its parent.
+    fn rotate_up(&mut self, x: u32) {
+        let p = self.parent(x);
+        let g = self.parent(p);
+        if self.left(p) == x {
+            let b = self.right(x);
+            self.nodes[p as usize].left = b;
+            if b != NIL {
+                self.nodes[b as usize].parent = p;
+            }
+            self.nodes[x as usize].right = p;
+        } else {
+            let b = self.left(x);
+            self.nodes[p as usize].right = b;
+            if b != NIL {
+                self.nodes[b as usize].parent = p;
+            }
+            self.nodes[x as usize].left = p;
+        }
+        self.nodes[p as usize].parent = x;
+        self.replace_child(g, p, x);
+    }
+
+    /// Puts node `n` (not in the tree) right after `anchor`, or first when
+    /// `anchor` is `NIL`.
+    fn insert_after(&mut self, anchor: u32, n: u32) {
+        self.state ^= self.state << 13;
+        self.state ^= self.state >> 17;
+        self.state ^= self.state << 5;
+        let node = &mut self.nodes[n as usize];
+        (node.left, node.right, node.parent, node.priority) = (NIL, NIL, NIL, self.state);
+        if self.root == NIL {
+            self.root = n;
+            return;
+        }
+        let (parent, as_left) = if anchor == NIL {
+            (self.leftmost(self.root), true)
+        } else if self.right(anchor) == NIL {
+            (anchor, false)
+        } else {
+            (self.leftmost(self.right(anchor)), true)
+        };
+        if as_left {
+            self.nodes[parent as usize].left = n;
+        } else {
+            self.nodes[parent as usize].right = n;
+        }
+        self.nodes[n as usize].parent = parent;
+        while self.parent(n) != NIL && self.nodes[n as usize].priority > self.nodes[self.parent(n) as usize].priority {
+            self.rotate_up(n);
+        }
+    }
+
+    /// Takes node `n` out of the tree.
+    fn remove(&mut self, n: u32) {
+        loop {
+            let (l, r) = (self.left(n), self.right(n));
+            if l == NIL || r == NIL {
+                let child = if l == NIL { r } else { l };
+                self.replace_child(self.parent(n), n, child);
+                return;
+            }
+            let up = if self.nodes[l as usize].priority > self.nodes[r as usize].priority { l } else { r };
+            self.rotate_up(up);
+        }
+    }
+}
