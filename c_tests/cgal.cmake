@@ -38,6 +38,40 @@ endif()
 target_link_libraries(segvoronoi_cgal_check PRIVATE
   segvoronoi::segvoronoi ${SEGVORONOI_MPFR_LIBRARY} ${SEGVORONOI_GMP_LIBRARY})
 
+# Splitting mode (issue 11) against CGAL's own splitting: segvoronoi_cgal_split
+# builds crossing inputs it generates itself with split_crossings on and in
+# CGAL's segment Delaunay graph with intersections, and compares the pairs of
+# sites of positive-length Voronoi edges (see the top of cgal_split.cpp).
+# Same include and link setup as segvoronoi_cgal_check; no generator needed.
+add_executable(segvoronoi_cgal_split ${CMAKE_CURRENT_LIST_DIR}/cgal_split.cpp)
+set_target_properties(segvoronoi_cgal_split PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON CXX_EXTENSIONS OFF)
+target_include_directories(segvoronoi_cgal_split SYSTEM PRIVATE
+  ${SEGVORONOI_CGAL_INCLUDE_DIR} ${SEGVORONOI_BOOST_INCLUDE_DIR})
+target_compile_options(segvoronoi_cgal_split PRIVATE -O2)
+if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+  target_compile_options(segvoronoi_cgal_split PRIVATE -frounding-math)
+endif()
+target_link_libraries(segvoronoi_cgal_split PRIVATE
+  segvoronoi::segvoronoi ${SEGVORONOI_MPFR_LIBRARY} ${SEGVORONOI_GMP_LIBRARY})
+
+# The test cgal_split_<family>_<n>: family, segment count, seed, and for the
+# general families the least agreement required (see the measurements there).
+function(segvoronoi_cgal_split_test family count seed)
+  add_test(NAME cgal_split_${family}_${count}_seed${seed}
+           COMMAND segvoronoi_cgal_split --family ${family} --n ${count} --seed ${seed} ${ARGN})
+  set_tests_properties(cgal_split_${family}_${count}_seed${seed} PROPERTIES TIMEOUT 60 LABELS "cgal;split")
+endfunction()
+# Exact families (every crossing an integer or a half): all must AGREE.
+foreach(_run "grid 20 1" "grid 200 2" "grid 500 3" "diagonal-grid 20 1" "diagonal-grid 200 2"
+             "diagonal-grid 500 3" "star 8 1" "star 64 2" "star 200 3" "collinear 20 1" "collinear 100 2"
+             "collinear 300 3" "t-junction 40 1" "t-junction 300 2")
+  separate_arguments(_run)
+  segvoronoi_cgal_split_test(${_run})
+endforeach()
+# General families: measured agreement below.
+SPLIT_GENERAL_PLACEHOLDER
+unset(_run)
+
 # The input generator: cargo builds it into CARGO_TARGET_DIR when that is
 # set (shared with the package's build), else into this build directory.
 set(SEGVORONOI_TESTGEN "" CACHE FILEPATH

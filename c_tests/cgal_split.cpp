@@ -1,0 +1,677 @@
+// segvoronoi_cgal_split: cross-checks splitting mode (issue 11) against
+// CGAL's own handling of crossings. For one generated input that crosses
+// itself it builds
+//   ours:   the original segments and points through the C API with
+//           segvoronoi_builder_set_split_crossings(b, 1) (snap rounding to
+//           pixels of side 2^-46 of the power of two above the largest
+//           coordinate);
+//   CGAL's: the same original segments and points in the segment Delaunay
+//           graph with intersection-capable traits
+//           (Segment_Delaunay_graph_filtered_traits_2, exact predicates),
+//           which splits at crossings itself with exact intersection points;
+// and compares the Voronoi adjacency: the multiset of pairs of sites of the
+// Voronoi edges of positive length (VPAIRS of the canonical topology, zero
+// length decided exactly on both sides; the Delaunay graph itself is not
+// unique at a crossing, where five sites share one vertex of radius 0).
+//
+//   segvoronoi_cgal_split --family NAME --n N [--seed S] [--min-agreement F] [--verbose]
+//   segvoronoi_cgal_split --list
+//
+// Each CGAL site is mapped to one of ours: a point site (an input point or
+// endpoint, or an intersection point: its exact rational coordinates
+// rounded to double) to our point site nearest to it within 2 pixels, a
+// segment site (a subsegment) to our piece whose two endpoint sites are
+// the images of its two endpoints. A CGAL site with no counterpart is
+// "unmapped" (two crossings closer than a pixel that our snapping merged, a
+// subsegment that our snapping bent through a nearby hot pixel), and so are
+// its edges. Edges are compared where both sites are mapped:
+// edges_agree = sum over pairs of min(count in CGAL, count in ours).
+//
+// Each input is run three times: as generated, every segment reversed, and
+// with segments and points shuffled; one summary line each
+//   family=... variant=... inputs=... sites_cgal=... sites_ours=... mapped=...
+//   edges_cgal=... edges_ours=... edges_agree=... only_cgal=... only_ours=...
+//   agreement=... verdict=AGREE|DIFFER
+// agreement = edges_agree / max(edges_cgal, edges_ours). Without
+// --min-agreement (the exact families, whose crossings are integers or
+// dyadic so that our snapped points are CGAL's exact ones) a variant AGREEs
+// when every CGAL site is mapped and no edge is only on one side; with it,
+// when agreement >= F. --verbose prints each difference and the unmapped
+// sites near it. Exit status: 0 all variants agree, 1 a difference, 2 bad
+// usage, 3 a library error.
+
+#include <CGAL/Gmpq.h>
+#include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
+#include <CGAL/Segment_Delaunay_graph_hierarchy_2.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "segvoronoi.h"
+
+namespace {
+
+struct Point {
+    double x;
+    double y;
+};
+
+struct Segment {
+    Point a;
+    Point b;
+};
+
+struct Input {
+    std::vector<Point> points;
+    std::vector<Segment> segments;
+};
+
+// ---------------------------------------------------------------------------
+// Inputs
+// ---------------------------------------------------------------------------
+
+using Rng = std::mt19937_64;
+
+long uniform_int(Rng& rng, long lo, long hi) { return std::uniform_int_distribution<long>(lo, hi)(rng); }
+
+double uniform_real(Rng& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+
+// n axis-parallel segments with integer ends in [0, side]: every crossing,
+// overlap and T-junction is at integers; a few integer points, some on
+// segments.
+Input grid(std::size_t n, Rng& rng) {
+    const long side = 64;
+    Input in;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double c = double(uniform_int(rng, 0, side));
+        double lo = double(uniform_int(rng, 0, side - 1));
+        double hi = double(uniform_int(rng, long(lo) + 1, side));
+        if (i % 2 == 0) {
+            in.segments.push_back({{lo, c}, {hi, c}});
+        } else {
+            in.segments.push_back({{c, lo}, {c, hi}});
+        }
+    }
+    for (std::size_t i = 0; i < n / 10; ++i) {
+        in.points.push_back({double(uniform_int(rng, 0, side)), double(uniform_int(rng, 0, side))});
+    }
+    return in;
+}
+
+// Road-network-like and exact: long segments of slopes 0, infinite, 1 and
+// -1 with integer ends, so every crossing is at integers or half-integers.
+Input diagonal_grid(std::size_t n, Rng& rng) {
+    const long side = 256;
+    Input in;
+    for (std::size_t i = 0; i < n; ++i) {
+        const long x = uniform_int(rng, 0, side), y = uniform_int(rng, 0, side);
+        const long len = uniform_int(rng, side / 8, side / 2);
+        const int kind = int(i % 4);
+        const long dx = kind == 1 ? 0 : len, dy = kind == 0 ? 0 : (kind == 3 ? -len : len);
+        in.segments.push_back({{double(x), double(y)}, {double(x + dx), double(y + dy)}});
+    }
+    return in;
+}
+
+// n segments through the integer point (7, -3), each from c - d to c + k d
+// with integer d and k in 1..3 (both ends integers): every crossing is the
+// centre, and spokes of one direction overlap.
+Input star(std::size_t n, Rng& rng) {
+    Input in;
+    const Point c{7.0, -3.0};
+    for (std::size_t i = 0; i < n; ++i) {
+        long dx, dy;
+        do {
+            dx = uniform_int(rng, -40, 40);
+            dy = uniform_int(rng, -40, 40);
+        } while (dx == 0 && dy == 0);
+        const long k = uniform_int(rng, 1, 3);
+        in.segments.push_back({{c.x - double(dx), c.y - double(dy)}, {c.x + double(k * dx), c.y + double(k * dy)}});
+    }
+    return in;
+}
+
+// Overlapping collinear segments on a few lines (horizontal, vertical,
+// diagonal, and slope 1/2 through integer points), integer ends.
+Input collinear(std::size_t n, Rng& rng) {
+    Input in;
+    const long lines[][4] = {{0, 5, 1, 0}, {3, 0, 0, 1}, {0, 0, 1, 1}, {0, 40, 2, -1}, {0, 20, 2, 1}};
+    for (std::size_t i = 0; i < n; ++i) {
+        const long* l = lines[i % 5];
+        long t0 = uniform_int(rng, 0, 30), t1 = uniform_int(rng, 0, 30);
+        if (t0 == t1) t1 = t0 + 1;
+        in.segments.push_back({{double(l[0] + t0 * l[2]), double(l[1] + t0 * l[3])},
+                               {double(l[0] + t1 * l[2]), double(l[1] + t1 * l[3])}});
+    }
+    return in;
+}
+
+// T-junctions: horizontal segments at integer heights, and vertical ones
+// that start on a horizontal one (inside it) and end below the next.
+Input t_junctions(std::size_t n, Rng& rng) {
+    Input in;
+    const std::size_t rows = std::max<std::size_t>(2, n / 4);
+    for (std::size_t r = 0; r < rows; ++r) {
+        in.segments.push_back({{0.0, double(10 * r)}, {1000.0, double(10 * r)}});
+    }
+    for (std::size_t i = rows; i < n; ++i) {
+        const long r = uniform_int(rng, 0, long(rows) - 1);
+        const double x = double(uniform_int(rng, 1, 999));
+        in.segments.push_back({{x, double(10 * r)}, {x, double(10 * r) + double(uniform_int(rng, 1, 9))}});
+    }
+    for (std::size_t i = 0; i < n / 8; ++i) {
+        // points inside the horizontal segments
+        in.points.push_back({double(uniform_int(rng, 1, 999)), double(10 * uniform_int(rng, 0, long(rows) - 1))});
+    }
+    return in;
+}
+
+// Random long segments with integer ends in [0, 1000]^2 (general rational
+// crossings).
+Input roads_int(std::size_t n, Rng& rng) {
+    Input in;
+    const double len = 2000.0 / std::sqrt(double(n));
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = uniform_real(rng, 0, 1000), y = uniform_real(rng, 0, 1000);
+        const double a = uniform_real(rng, 0, 2 * M_PI);
+        Segment s{{std::round(x), std::round(y)},
+                  {std::round(std::clamp(x + len * std::cos(a), 0.0, 1000.0)),
+                   std::round(std::clamp(y + len * std::sin(a), 0.0, 1000.0))}};
+        if (s.a.x == s.b.x && s.a.y == s.b.y) s.b.x += 1.0;
+        in.segments.push_back(s);
+    }
+    return in;
+}
+
+// The same with real coordinates in the unit square.
+Input roads_real(std::size_t n, Rng& rng) {
+    Input in;
+    const double len = 2.0 / std::sqrt(double(n));
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = uniform_real(rng, 0, 1), y = uniform_real(rng, 0, 1);
+        const double a = uniform_real(rng, 0, 2 * M_PI);
+        in.segments.push_back({{x, y}, {x + len * std::cos(a), y + len * std::sin(a)}});
+    }
+    return in;
+}
+
+// A closed ring of n integer vertices in [0, 1000]^2, a random walk with
+// steps up to 3000/sqrt(n) on each axis: long and tangled, it crosses itself
+// a few times per side.
+Input polygon_cross(std::size_t n, Rng& rng) {
+    Input in;
+    std::vector<Point> ring;
+    double x = 500, y = 500;
+    const double step = 3000.0 / std::sqrt(double(n));
+    for (std::size_t i = 0; i < n; ++i) {
+        x = std::clamp(x + uniform_real(rng, -step, step), 0.0, 1000.0);
+        y = std::clamp(y + uniform_real(rng, -step, step), 0.0, 1000.0);
+        const Point p{std::round(x), std::round(y)};
+        if (!ring.empty() && ring.back().x == p.x && ring.back().y == p.y) continue;
+        ring.push_back(p);
+    }
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+        in.segments.push_back({ring[i], ring[(i + 1) % ring.size()]});
+    }
+    return in;
+}
+
+// The same with real coordinates.
+Input polygon_cross_real(std::size_t n, Rng& rng) {
+    Input in;
+    std::vector<Point> ring;
+    double x = 0.5, y = 0.5;
+    const double step = 3.0 / std::sqrt(double(n));
+    for (std::size_t i = 0; i < n; ++i) {
+        x = std::clamp(x + uniform_real(rng, -step, step), 0.0, 1.0);
+        y = std::clamp(y + uniform_real(rng, -step, step), 0.0, 1.0);
+        ring.push_back({x, y});
+    }
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+        in.segments.push_back({ring[i], ring[(i + 1) % ring.size()]});
+    }
+    return in;
+}
+
+struct Family {
+    const char* name;
+    Input (*make)(std::size_t, Rng&);
+    const char* about;
+};
+
+const Family families[] = {
+    {"grid", grid, "axis-parallel segments, integer ends in [0,64], points (exact)"},
+    {"diagonal-grid", diagonal_grid, "slopes 0, inf, +-1, integer ends (crossings at halves; exact)"},
+    {"star", star, "segments through one integer point (exact)"},
+    {"collinear", collinear, "overlapping collinear segments on 5 lines, integer ends (exact)"},
+    {"t-junction", t_junctions, "vertical segments ending inside horizontal ones, points inside (exact)"},
+    {"roads-int", roads_int, "random segments of length 2000/sqrt(n), integer ends in [0,1000]"},
+    {"roads-real", roads_real, "random segments of length 2/sqrt(n) in the unit square"},
+    {"polygon-cross", polygon_cross, "a tangled ring, integer vertices in [0,1000]"},
+    {"polygon-cross-real", polygon_cross_real, "a tangled ring, real vertices in the unit square"},
+};
+
+// ---------------------------------------------------------------------------
+// Ours
+// ---------------------------------------------------------------------------
+
+struct Ours {
+    std::vector<Point> point_sites;                    // by site id (points first)
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> segment_of_ends;  // sorted ends -> site
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> pairs;              // VPAIRS by site ids
+    std::size_t sites = 0;
+    double pixel = 0.0;
+    double build_ms = 0.0;
+    segvoronoi_stats stats{};
+};
+
+void check(segvoronoi_status status, const char* what, const segvoronoi_builder* b = nullptr) {
+    if (status != SEGVORONOI_STATUS_OK) {
+        std::string message = std::string(what) + ": " + segvoronoi_status_str(status);
+        if (b) message += std::string(" (") + segvoronoi_builder_last_error(b) + ")";
+        throw std::runtime_error(message);
+    }
+}
+
+std::pair<std::uint32_t, std::uint32_t> ordered(std::uint32_t a, std::uint32_t b) {
+    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+}
+
+// The pixel side of our snapping: 2^-46 of the power of two above the
+// largest coordinate magnitude.
+double pixel_size(const Input& in) {
+    double m = 0.0;
+    for (const Point& p : in.points) m = std::max({m, std::fabs(p.x), std::fabs(p.y)});
+    for (const Segment& s : in.segments) m = std::max({m, std::fabs(s.a.x), std::fabs(s.a.y), std::fabs(s.b.x), std::fabs(s.b.y)});
+    double top = std::ldexp(1.0, -1022 + 48);
+    while (top <= m) top *= 2.0;
+    return std::ldexp(top, -46);
+}
+
+Ours build_ours(const Input& in) {
+    Ours ours;
+    ours.pixel = pixel_size(in);
+    segvoronoi_builder* b = segvoronoi_builder_new();
+    if (!b) throw std::runtime_error("segvoronoi_builder_new: out of memory");
+    std::vector<double> xy;
+    for (const Point& p : in.points) xy.insert(xy.end(), {p.x, p.y});
+    check(segvoronoi_builder_add_points(b, xy.data(), in.points.size()), "add_points", b);
+    xy.clear();
+    for (const Segment& s : in.segments) xy.insert(xy.end(), {s.a.x, s.a.y, s.b.x, s.b.y});
+    check(segvoronoi_builder_add_segments(b, xy.data(), in.segments.size()), "add_segments", b);
+    check(segvoronoi_builder_set_split_crossings(b, 1), "set_split_crossings", b);
+    segvoronoi_diagram* d = nullptr;
+    const auto start = std::chrono::steady_clock::now();
+    const segvoronoi_status built = segvoronoi_builder_build(b, &d);
+    ours.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    check(built, "build", b);
+    segvoronoi_builder_free(b);
+    check(segvoronoi_diagram_validate(d), "validate");
+    ours.stats.struct_size = sizeof ours.stats;
+    check(segvoronoi_diagram_stats(d, &ours.stats), "stats");
+
+    ours.sites = segvoronoi_diagram_site_count(d);
+    const std::size_t n_points = segvoronoi_diagram_point_site_count(d);
+    for (std::size_t i = 0; i < ours.sites; ++i) {
+        segvoronoi_site s{};
+        s.struct_size = sizeof s;
+        check(segvoronoi_diagram_site(d, i, &s), "site");
+        if (i < n_points) {
+            ours.point_sites.push_back({s.x, s.y});
+        } else {
+            std::uint32_t ends[2];
+            check(segvoronoi_diagram_segment_endpoints(d, i, ends), "segment_endpoints");
+            ours.segment_of_ends[ordered(ends[0], ends[1])] = std::uint32_t(i);
+        }
+    }
+
+    // VPAIRS: P<k> is point site k, S<j> piece j's site.
+    char* text = nullptr;
+    check(segvoronoi_diagram_topology(d, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS, &text, nullptr), "topology");
+    std::istringstream lines(text);
+    segvoronoi_string_free(text);
+    std::string line;
+    bool in_pairs = false;
+    auto site_of = [&](const std::string& name) -> std::uint32_t {
+        const unsigned long k = std::stoul(name.substr(1));
+        if (name[0] == 'P') return std::uint32_t(k);
+        std::uint32_t site = 0;
+        check(segvoronoi_diagram_site_of_segment(d, k, &site), "site_of_segment");
+        return site;
+    };
+    while (std::getline(lines, line)) {
+        if (line.rfind("VPAIRS", 0) == 0) {
+            in_pairs = true;
+            continue;
+        }
+        if (line.rfind("VVERTICES", 0) == 0) break;
+        if (!in_pairs) continue;
+        std::istringstream names(line);
+        std::string a, c;
+        names >> a >> c;
+        ++ours.pairs[ordered(site_of(a), site_of(c))];
+    }
+    segvoronoi_diagram_free(d);
+    return ours;
+}
+
+// Our point site within `tolerance` of (x, y), nearest; -1 if none. The
+// grid's cells are `cell` wide, at least twice the tolerance.
+struct PointIndex {
+    double cell;
+    std::map<std::pair<long, long>, std::vector<std::uint32_t>> cells;
+    const std::vector<Point>* points;
+
+    PointIndex(const std::vector<Point>& pts, double cell_side) : cell(cell_side), points(&pts) {
+        for (std::uint32_t i = 0; i < pts.size(); ++i) cells[key(pts[i].x, pts[i].y)].push_back(i);
+    }
+    std::pair<long, long> key(double x, double y) const {
+        return {long(std::floor(x / cell)), long(std::floor(y / cell))};
+    }
+    long find(double x, double y, double tolerance) const {
+        const auto k = key(x, y);
+        long best = -1;
+        double best_d = tolerance;
+        for (long dx = -1; dx <= 1; ++dx) {
+            for (long dy = -1; dy <= 1; ++dy) {
+                const auto it = cells.find({k.first + dx, k.second + dy});
+                if (it == cells.end()) continue;
+                for (std::uint32_t i : it->second) {
+                    const double d = std::hypot((*points)[i].x - x, (*points)[i].y - y);
+                    if (d <= best_d) {
+                        best_d = d;
+                        best = long(i);
+                    }
+                }
+            }
+        }
+        return best;
+    }
+};
+
+// ---------------------------------------------------------------------------
+// CGAL's side
+// ---------------------------------------------------------------------------
+
+using K = CGAL::Simple_cartesian<double>;
+// Exact predicates (interval filter, then Gmpq) with intersections: CGAL
+// splits crossing segments itself, at exact intersection points.
+using Gt = CGAL::Segment_Delaunay_graph_filtered_traits_2<K, CGAL::Field_with_sqrt_tag>;
+using Sdg = CGAL::Segment_Delaunay_graph_hierarchy_2<Gt>;
+using Site = Gt::Site_2;
+using Q = CGAL::Gmpq;
+
+// The exact point of a point site, rounded to double: an input point, or the
+// crossing of its two supporting segments' lines solved in rationals.
+Point exact_point(const Site& s) {
+    if (s.is_input()) return {s.point().x(), s.point().y()};
+    const K::Point_2 &p1 = s.source_of_supporting_site(0), &p2 = s.target_of_supporting_site(0);
+    const K::Point_2 &q1 = s.source_of_supporting_site(1), &q2 = s.target_of_supporting_site(1);
+    const Q ax(p1.x()), ay(p1.y()), bx(p2.x()), by(p2.y());
+    const Q cx(q1.x()), cy(q1.y()), dx(q2.x()), dy(q2.y());
+    const Q rx = bx - ax, ry = by - ay, sx = dx - cx, sy = dy - cy;
+    const Q den = rx * sy - ry * sx;
+    if (den == 0) throw std::runtime_error("CGAL point site on two parallel supporting segments");
+    const Q t = ((cx - ax) * sy - (cy - ay) * sx) / den;
+    const Q x = ax + t * rx, y = ay + t * ry;
+    return {CGAL::to_double(x), CGAL::to_double(y)};
+}
+
+struct Cgal {
+    std::size_t sites = 0;
+    std::size_t intersection_points = 0;
+    double build_ms = 0.0;
+    // per finite CGAL vertex: its site, and its positive-length neighbours
+    std::vector<Site> site;
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;  // VPAIRS by CGAL vertex number
+};
+
+Cgal build_cgal(const Input& in) {
+    Cgal cgal;
+    Sdg sdg;
+    const auto start = std::chrono::steady_clock::now();
+    for (const Point& p : in.points) sdg.insert(K::Point_2(p.x, p.y));
+    for (const Segment& s : in.segments) sdg.insert(K::Point_2(s.a.x, s.a.y), K::Point_2(s.b.x, s.b.y));
+    cgal.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::map<const void*, std::size_t> number;
+    for (auto v = sdg.finite_vertices_begin(); v != sdg.finite_vertices_end(); ++v) {
+        number.emplace(&*v, cgal.site.size());
+        cgal.site.push_back(v->site());
+        if (v->site().is_point() && !v->site().is_input()) ++cgal.intersection_points;
+    }
+    cgal.sites = cgal.site.size();
+    if (sdg.dimension() < 1) return cgal;
+    const Gt& traits = sdg.geom_traits();
+    for (auto e = sdg.finite_edges_begin(); e != sdg.finite_edges_end(); ++e) {
+        const Sdg::Vertex_handle a = e->first->vertex(Sdg::ccw(e->second));
+        const Sdg::Vertex_handle b = e->first->vertex(Sdg::cw(e->second));
+        const bool finite = sdg.dimension() == 2 && !sdg.is_infinite(e->first) &&
+                            !sdg.is_infinite(e->first->neighbor(e->second));
+        if (finite) {
+            const Sdg::Vertex_handle apex = e->first->vertex(e->second);
+            const Sdg::Vertex_handle mirror = sdg.tds().mirror_vertex(e->first, e->second);
+            if (apex != mirror &&
+                traits.is_degenerate_edge_2_object()(a->site(), b->site(), apex->site(), mirror->site())) {
+                continue;  // zero length
+            }
+        }
+        cgal.pairs.emplace_back(number.at(&*a), number.at(&*b));
+    }
+    return cgal;
+}
+
+// ---------------------------------------------------------------------------
+// Comparison
+// ---------------------------------------------------------------------------
+
+struct Outcome {
+    bool agree = false;
+};
+
+std::string describe(const Point& p) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);
+    return buf;
+}
+
+bool compare(const std::string& family, const std::string& variant, const Input& in, double min_agreement,
+             bool verbose) {
+    const Ours ours = build_ours(in);
+    const Cgal cgal = build_cgal(in);
+    const double tolerance = 2.0 * ours.pixel;
+    const PointIndex index(ours.point_sites, 2.0 * tolerance);
+
+    // map CGAL vertices to our sites
+    std::vector<long> image(cgal.sites, -1);
+    std::vector<Point> where(cgal.sites);
+    std::vector<std::size_t> unmapped;
+    for (std::size_t i = 0; i < cgal.sites; ++i) {
+        const Site& s = cgal.site[i];
+        if (s.is_point()) {
+            where[i] = exact_point(s);
+            image[i] = index.find(where[i].x, where[i].y, tolerance);
+        } else {
+            const Point a = exact_point(s.source_site()), b = exact_point(s.target_site());
+            where[i] = {a.x / 2 + b.x / 2, a.y / 2 + b.y / 2};
+            const long ia = index.find(a.x, a.y, tolerance), ib = index.find(b.x, b.y, tolerance);
+            if (ia >= 0 && ib >= 0) {
+                const auto it = ours.segment_of_ends.find(ordered(std::uint32_t(ia), std::uint32_t(ib)));
+                if (it != ours.segment_of_ends.end()) image[i] = it->second;
+            }
+        }
+        if (image[i] < 0) unmapped.push_back(i);
+    }
+    std::vector<bool> hit(ours.sites, false);
+    std::size_t mapped = 0;
+    for (long m : image) {
+        if (m >= 0) {
+            ++mapped;
+            hit[std::size_t(m)] = true;
+        }
+    }
+
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> theirs;
+    std::size_t cgal_unmapped_edges = 0;
+    for (const auto& pr : cgal.pairs) {
+        if (image[pr.first] < 0 || image[pr.second] < 0) {
+            ++cgal_unmapped_edges;
+            continue;
+        }
+        ++theirs[ordered(std::uint32_t(image[pr.first]), std::uint32_t(image[pr.second]))];
+    }
+    // Our edges touching a site that no CGAL site maps to are counted apart
+    // too (the other side of the same unmapped feature).
+    std::size_t edges_ours = 0, ours_unmapped_edges = 0, agree = 0, only_cgal = 0, only_ours = 0;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> diff_cgal, diff_ours;
+    for (const auto& e : ours.pairs) {
+        edges_ours += e.second;
+        if (!hit[e.first.first] || !hit[e.first.second]) {
+            ours_unmapped_edges += e.second;
+            continue;
+        }
+        const auto it = theirs.find(e.first);
+        const std::size_t c = it == theirs.end() ? 0 : it->second;
+        agree += std::min(c, e.second);
+        if (e.second > c) {
+            only_ours += e.second - c;
+            diff_ours.push_back(e.first);
+        }
+    }
+    for (const auto& e : theirs) {
+        const auto it = ours.pairs.find(e.first);
+        const std::size_t o = it == ours.pairs.end() ? 0 : it->second;
+        if (e.second > o) {
+            only_cgal += e.second - o;
+            diff_cgal.push_back(e.first);
+        }
+    }
+    const std::size_t edges_cgal = cgal.pairs.size();
+    const double agreement = double(agree) / double(std::max<std::size_t>(1, std::max(edges_cgal, edges_ours)));
+    const bool ok = min_agreement > 0.0 ? agreement >= min_agreement
+                                        : unmapped.empty() && only_cgal == 0 && only_ours == 0 &&
+                                              cgal_unmapped_edges == 0 && ours_unmapped_edges == 0 &&
+                                              mapped == ours.sites;
+    std::printf(
+        "family=%s variant=%s inputs=%zu+%zu sites_cgal=%zu sites_ours=%zu mapped=%zu unmapped_cgal=%zu "
+        "crossings_cgal=%zu pieces=%zu crossings=%zu overlaps=%zu touchings=%zu snap_rounds=%zu "
+        "edges_cgal=%zu edges_ours=%zu edges_agree=%zu only_cgal=%zu only_ours=%zu unmapped_edges_cgal=%zu "
+        "unmapped_edges_ours=%zu agreement=%.6f ms_ours=%.1f ms_cgal=%.1f verdict=%s\n",
+        family.c_str(), variant.c_str(), in.segments.size(), in.points.size(), cgal.sites, ours.sites, mapped,
+        unmapped.size(), cgal.intersection_points, ours.stats.pieces, ours.stats.crossings, ours.stats.overlaps,
+        ours.stats.touchings, ours.stats.snap_rounds, edges_cgal, edges_ours, agree, only_cgal, only_ours,
+        cgal_unmapped_edges, ours_unmapped_edges, agreement, ours.build_ms, cgal.build_ms, ok ? "AGREE" : "DIFFER");
+    if (verbose || (!ok && min_agreement <= 0.0)) {
+        std::size_t shown = 0;
+        for (std::size_t i : unmapped) {
+            if (++shown > 20) break;
+            const Site& s = cgal.site[i];
+            std::printf("  unmapped CGAL %s %s%s\n", s.is_point() ? "point" : "segment", describe(where[i]).c_str(),
+                        s.is_point() && !s.is_input() ? " (intersection)" : "");
+        }
+        auto show = [&](const char* side, const std::pair<std::uint32_t, std::uint32_t>& e) {
+            const auto at = [&](std::uint32_t s) -> std::string {
+                if (s < ours.point_sites.size()) return "P" + describe(ours.point_sites[s]);
+                for (const auto& kv : ours.segment_of_ends) {
+                    if (kv.second == s) {
+                        return "S" + describe(ours.point_sites[kv.first.first]) + "-" +
+                               describe(ours.point_sites[kv.first.second]);
+                    }
+                }
+                return "?";
+            };
+            std::printf("  only %s: %s | %s\n", side, at(e.first).c_str(), at(e.second).c_str());
+        };
+        shown = 0;
+        for (const auto& e : diff_cgal) {
+            if (++shown > 10) break;
+            show("cgal", e);
+        }
+        shown = 0;
+        for (const auto& e : diff_ours) {
+            if (++shown > 10) break;
+            show("ours", e);
+        }
+    }
+    return ok;
+}
+
+int usage() {
+    std::fprintf(stderr,
+                 "usage: segvoronoi_cgal_split --family NAME --n N [--seed S] [--min-agreement F] [--verbose]\n"
+                 "       segvoronoi_cgal_split --list\n");
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string family;
+    std::size_t n = 0;
+    std::uint64_t seed = 1;
+    double min_agreement = 0.0;
+    bool verbose = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        auto next = [&]() -> std::string {
+            if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
+            return argv[++i];
+        };
+        try {
+            if (arg == "--list") {
+                for (const Family& f : families) std::printf("%-20s %s\n", f.name, f.about);
+                return 0;
+            } else if (arg == "--family") {
+                family = next();
+            } else if (arg == "--n") {
+                n = std::stoul(next());
+            } else if (arg == "--seed") {
+                seed = std::stoull(next());
+            } else if (arg == "--min-agreement") {
+                min_agreement = std::stod(next());
+            } else if (arg == "--verbose") {
+                verbose = true;
+            } else {
+                return usage();
+            }
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "%s\n", e.what());
+            return usage();
+        }
+    }
+    const Family* chosen = nullptr;
+    for (const Family& f : families) {
+        if (family == f.name) chosen = &f;
+    }
+    if (!chosen || n == 0) return usage();
+
+    Rng rng(seed);
+    const Input input = chosen->make(n, rng);
+    Input reversed = input;
+    for (Segment& s : reversed.segments) std::swap(s.a, s.b);
+    Input shuffled = input;
+    std::shuffle(shuffled.segments.begin(), shuffled.segments.end(), rng);
+    std::shuffle(shuffled.points.begin(), shuffled.points.end(), rng);
+    bool ok = true;
+    try {
+        ok &= compare(family, "as-is", input, min_agreement, verbose);
+        ok &= compare(family, "reversed", reversed, min_agreement, verbose);
+        ok &= compare(family, "shuffled", shuffled, min_agreement, verbose);
+    } catch (const std::exception& e) {
+        std::printf("family=%s error: %s\n", family.c_str(), e.what());
+        return 3;
+    }
+    return ok ? 0 : 1;
+}
