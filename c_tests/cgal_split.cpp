@@ -14,7 +14,8 @@
 // length decided exactly on both sides; the Delaunay graph itself is not
 // unique at a crossing, where five sites share one vertex of radius 0).
 //
-//   segvoronoi_cgal_split --family NAME --n N [--seed S] [--min-agreement F] [--verbose]
+//   segvoronoi_cgal_split --family NAME --n N [--seed S] [--min-agreement F] [--verbose] [--cgal-of-pieces]
+//                         [--write-pieces FILE]
 //   segvoronoi_cgal_split --list
 //
 // Each CGAL site is mapped to one of ours: a point site (an input point or
@@ -53,6 +54,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <numeric>
+#include <tuple>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -144,11 +147,12 @@ Input star(std::size_t n, Rng& rng) {
     return in;
 }
 
-// Overlapping collinear segments on a few lines (horizontal, vertical,
-// diagonal, and slope 1/2 through integer points), integer ends.
+// Overlapping collinear segments on a few lines (horizontal, vertical and
+// diagonal through integer points), integer ends.
 Input collinear(std::size_t n, Rng& rng) {
     Input in;
-    const long lines[][4] = {{0, 5, 1, 0}, {3, 0, 0, 1}, {0, 0, 1, 1}, {0, 40, 2, -1}, {0, 20, 2, 1}};
+    // (x0, y0, dx, dy): slopes 0, infinite, +-1, so crossings are at halves
+    const long lines[][4] = {{0, 5, 1, 0}, {3, 0, 0, 1}, {0, 0, 1, 1}, {0, 40, 1, -1}, {0, 21, 1, 1}};
     for (std::size_t i = 0; i < n; ++i) {
         const long* l = lines[i % 5];
         long t0 = uniform_int(rng, 0, 30), t1 = uniform_int(rng, 0, 30);
@@ -264,6 +268,70 @@ const Family families[] = {
     {"polygon-cross-real", polygon_cross_real, "a tangled ring, real vertices in the unit square"},
 };
 
+// CGAL's segment Delaunay graph loses parts of collinear segments that
+// overlap, depending on the insertion order (seen on star and collinear:
+// a subsegment covered by the input missing, its neighbours adjacent across
+// it; as-is and reversed give different site counts). So CGAL gets the
+// overlaps resolved here, exactly, for integer input: the segments of one
+// line are cut at every endpoint on the line inside their union into
+// consecutive pieces, each once (collinear segments that only touch, as
+// our pieces do). Crossings, T-junctions and points inside segments stay
+// for CGAL to split. Inputs with a non-integer coordinate are returned as
+// they are (the random real families have no overlaps).
+Input without_overlaps(const Input& in) {
+    for (const Segment& s : in.segments) {
+        for (double c : {s.a.x, s.a.y, s.b.x, s.b.y}) {
+            if (c != std::floor(c) || std::fabs(c) > 1e9) return in;
+        }
+    }
+    struct Span {
+        long lo, hi;
+    };
+    // line (dx, dy, c) with gcd(dx, dy) = 1, dx > 0 or dx = 0 < dy, and
+    // c = dy x - dx y; position along it t = dx x + dy y
+    std::map<std::tuple<long, long, long>, std::vector<Span>> lines;
+    for (const Segment& s : in.segments) {
+        long dx = long(s.b.x - s.a.x), dy = long(s.b.y - s.a.y);
+        const long g = std::gcd(std::labs(dx), std::labs(dy));
+        dx /= g;
+        dy /= g;
+        if (dx < 0 || (dx == 0 && dy < 0)) {
+            dx = -dx;
+            dy = -dy;
+        }
+        const long c = dy * long(s.a.x) - dx * long(s.a.y);
+        long t0 = dx * long(s.a.x) + dy * long(s.a.y), t1 = dx * long(s.b.x) + dy * long(s.b.y);
+        if (t0 > t1) std::swap(t0, t1);
+        lines[{dx, dy, c}].push_back({t0, t1});
+    }
+    Input out;
+    out.points = in.points;
+    for (auto& line : lines) {
+        const auto [dx, dy, c] = line.first;
+        std::vector<Span>& spans = line.second;
+        std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.lo < b.lo; });
+        // the point at t on the line: solve dy x - dx y = c, dx x + dy y = t
+        const double n = double(dx * dx + dy * dy);
+        auto at = [&](long t) { return Point{double(c * dy + t * dx) / n, double(t * dy - c * dx) / n}; };
+        for (std::size_t i = 0; i < spans.size();) {
+            std::size_t j = i;
+            long hi = spans[i].hi;
+            std::vector<long> cuts;
+            while (j < spans.size() && spans[j].lo < hi + (j == i ? 1 : 0)) {
+                hi = std::max(hi, spans[j].hi);
+                cuts.push_back(spans[j].lo);
+                cuts.push_back(spans[j].hi);
+                ++j;
+            }
+            std::sort(cuts.begin(), cuts.end());
+            cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+            for (std::size_t k = 0; k + 1 < cuts.size(); ++k) out.segments.push_back({at(cuts[k]), at(cuts[k + 1])});
+            i = j;
+        }
+    }
+    return out;
+}
+
 // ---------------------------------------------------------------------------
 // Ours
 // ---------------------------------------------------------------------------
@@ -276,6 +344,7 @@ struct Ours {
     double pixel = 0.0;
     double build_ms = 0.0;
     segvoronoi_stats stats{};
+    Input built;  // the input as built: points and pieces
 };
 
 void check(segvoronoi_status status, const char* what, const segvoronoi_builder* b = nullptr) {
@@ -323,6 +392,12 @@ Ours build_ours(const Input& in) {
     ours.stats.struct_size = sizeof ours.stats;
     check(segvoronoi_diagram_stats(d, &ours.stats), "stats");
 
+    ours.built.points = in.points;
+    for (std::size_t j = 0; j < segvoronoi_diagram_piece_count(d); ++j) {
+        double e[4];
+        check(segvoronoi_diagram_piece(d, j, e), "piece");
+        ours.built.segments.push_back({{e[0], e[1]}, {e[2], e[3]}});
+    }
     ours.sites = segvoronoi_diagram_site_count(d);
     const std::size_t n_points = segvoronoi_diagram_point_site_count(d);
     for (std::size_t i = 0; i < ours.sites; ++i) {
@@ -414,10 +489,15 @@ using Sdg = CGAL::Segment_Delaunay_graph_hierarchy_2<Gt>;
 using Site = Gt::Site_2;
 using Q = CGAL::Gmpq;
 
-// The exact point of a point site, rounded to double: an input point, or the
-// crossing of its two supporting segments' lines solved in rationals.
-Point exact_point(const Site& s) {
-    if (s.is_input()) return {s.point().x(), s.point().y()};
+// The exact point of a point site: an input point, or the crossing of its
+// two supporting segments' lines solved in rationals.
+struct QPoint {
+    Q x, y;
+    bool operator==(const QPoint& o) const { return x == o.x && y == o.y; }
+};
+
+QPoint exact_qpoint(const Site& s) {
+    if (s.is_input()) return {Q(s.point().x()), Q(s.point().y())};
     const K::Point_2 &p1 = s.source_of_supporting_site(0), &p2 = s.target_of_supporting_site(0);
     const K::Point_2 &q1 = s.source_of_supporting_site(1), &q2 = s.target_of_supporting_site(1);
     const Q ax(p1.x()), ay(p1.y()), bx(p2.x()), by(p2.y());
@@ -426,8 +506,115 @@ Point exact_point(const Site& s) {
     const Q den = rx * sy - ry * sx;
     if (den == 0) throw std::runtime_error("CGAL point site on two parallel supporting segments");
     const Q t = ((cx - ax) * sy - (cy - ay) * sx) / den;
-    const Q x = ax + t * rx, y = ay + t * ry;
-    return {CGAL::to_double(x), CGAL::to_double(y)};
+    return {ax + t * rx, ay + t * ry};
+}
+
+// The same rounded to double.
+Point exact_point(const Site& s) {
+    const QPoint q = exact_qpoint(s);
+    return {CGAL::to_double(q.x), CGAL::to_double(q.y)};
+}
+
+// Whether the rational q is the square of a rational, and if so its root.
+bool rational_sqrt(const Q& q, Q& root) {
+    if (q < 0) return false;
+    mpz_t num, den;
+    mpz_init_set(num, mpq_numref(q.mpq()));
+    mpz_init_set(den, mpq_denref(q.mpq()));
+    const bool square = mpz_perfect_square_p(num) && mpz_perfect_square_p(den);
+    if (square) {
+        mpz_sqrt(num, num);
+        mpz_sqrt(den, den);
+        root = Q(CGAL::Gmpz(num), CGAL::Gmpz(den));
+    }
+    mpz_clear(num);
+    mpz_clear(den);
+    return square;
+}
+
+// Zero length decided as segvoronoi_cgal_check does (see
+// is_zero_length_sites there: CGAL's is_degenerate_edge misses a circle
+// tangent to a segment at one of the face's points), with exact rational
+// points for the intersection sites: the Voronoi vertex of a face in
+// rationals where it is rational (three points; two points and a segment
+// from one of them; two points and a segment when the tangent circle is
+// rational), else CGAL's predicate.
+bool rational_pps(const QPoint& p, const QPoint& q, const QPoint& a, const QPoint& b, Q& x, Q& y) {
+    const Q nx = a.y - b.y, ny = b.x - a.x, c = nx * a.x + ny * a.y, n2 = nx * nx + ny * ny;
+    const Q mx = (p.x + q.x) / Q(2), my = (p.y + q.y) / Q(2);
+    const Q dx = p.y - q.y, dy = q.x - p.x;
+    const Q alpha = nx * mx + ny * my - c, beta = nx * dx + ny * dy;
+    const Q mp2 = (mx - p.x) * (mx - p.x) + (my - p.y) * (my - p.y), d2 = dx * dx + dy * dy;
+    const Q qa = n2 * d2 - beta * beta, qb = Q(-2) * alpha * beta, qc = n2 * mp2 - alpha * alpha;
+    std::vector<Q> roots;
+    if (qa == 0) {
+        if (qb == 0) return false;
+        roots.push_back(-qc / qb);
+    } else {
+        Q root;
+        if (!rational_sqrt(qb * qb - Q(4) * qa * qc, root)) return false;
+        roots.push_back((-qb + root) / (Q(2) * qa));
+        roots.push_back((-qb - root) / (Q(2) * qa));
+    }
+    for (const Q& t : roots) {
+        const Q cx = mx + t * dx, cy = my + t * dy;
+        const Q k = (nx * cx + ny * cy - c) / n2;
+        const Q tx = cx - k * nx, ty = cy - k * ny;
+        if ((q.x - p.x) * (ty - p.y) - (q.y - p.y) * (tx - p.x) > 0) {
+            x = cx;
+            y = cy;
+            return true;
+        }
+    }
+    return false;
+}
+
+bool rational_vertex(const Site& a, const Site& b, const Site& c, Q& x, Q& y) {
+    std::vector<QPoint> points;
+    const Site* segment = nullptr;
+    const Site* order[3] = {&a, &b, &c};
+    if (a.is_segment()) order[0] = &b, order[1] = &c, order[2] = &a;
+    if (b.is_segment()) order[0] = &c, order[1] = &a, order[2] = &b;
+    for (const Site* site : order) {
+        if (site->is_point()) {
+            points.push_back(exact_qpoint(*site));
+        } else if (segment == nullptr) {
+            segment = site;
+        } else {
+            return false;
+        }
+    }
+    Q n1x, n1y, c1, n2x, n2y, c2;
+    const auto bisector = [](const QPoint& p, const QPoint& q, Q& nx, Q& ny, Q& cc) {
+        nx = q.x - p.x;
+        ny = q.y - p.y;
+        cc = (nx * (p.x + q.x) + ny * (p.y + q.y)) / Q(2);
+    };
+    bisector(points[0], points[1], n1x, n1y, c1);
+    if (segment == nullptr) {
+        bisector(points[0], points[2], n2x, n2y, c2);
+    } else {
+        const QPoint s0 = exact_qpoint(segment->source_site()), s1 = exact_qpoint(segment->target_site());
+        const bool at_source = s0 == points[0] || s0 == points[1];
+        const bool at_target = s1 == points[0] || s1 == points[1];
+        if (at_source && at_target) return false;
+        if (!at_source && !at_target) return rational_pps(points[0], points[1], s0, s1, x, y);
+        const QPoint e = at_source ? s0 : s1, f = at_source ? s1 : s0;
+        n2x = f.x - e.x;
+        n2y = f.y - e.y;
+        c2 = n2x * e.x + n2y * e.y;
+    }
+    const Q det = n1x * n2y - n1y * n2x;
+    if (det == 0) return false;
+    x = (c1 * n2y - c2 * n1y) / det;
+    y = (n1x * c2 - n2x * c1) / det;
+    return true;
+}
+
+bool is_zero_length_sites(const Gt& traits, const Site& p, const Site& q, const Site& r, const Site& s) {
+    Q x1, y1, x2, y2;
+    if (rational_vertex(p, q, r, x1, y1) && rational_vertex(q, p, s, x2, y2)) return x1 == x2 && y1 == y2;
+    return traits.is_degenerate_edge_2_object()(p, q, r, s);
 }
 
 struct Cgal {
@@ -464,7 +651,7 @@ Cgal build_cgal(const Input& in) {
             const Sdg::Vertex_handle apex = e->first->vertex(e->second);
             const Sdg::Vertex_handle mirror = sdg.tds().mirror_vertex(e->first, e->second);
             if (apex != mirror &&
-                traits.is_degenerate_edge_2_object()(a->site(), b->site(), apex->site(), mirror->site())) {
+                is_zero_length_sites(traits, a->site(), b->site(), apex->site(), mirror->site())) {
                 continue;  // zero length
             }
         }
@@ -477,9 +664,8 @@ Cgal build_cgal(const Input& in) {
 // Comparison
 // ---------------------------------------------------------------------------
 
-struct Outcome {
-    bool agree = false;
-};
+// --write-pieces FILE: where to write our pieces of the as-is variant.
+std::string write_pieces;
 
 std::string describe(const Point& p) {
     char buf[96];
@@ -488,9 +674,20 @@ std::string describe(const Point& p) {
 }
 
 bool compare(const std::string& family, const std::string& variant, const Input& in, double min_agreement,
-             bool verbose) {
+             bool verbose, bool cgal_of_pieces) {
     const Ours ours = build_ours(in);
-    const Cgal cgal = build_cgal(in);
+    if (!write_pieces.empty() && variant == "as-is") {
+        FILE* f = std::fopen(write_pieces.c_str(), "w");
+        if (!f) throw std::runtime_error("cannot write " + write_pieces);
+        std::fprintf(f, "%zu\n", ours.built.points.size());
+        for (const Point& p : ours.built.points) std::fprintf(f, "%.17g %.17g\n", p.x, p.y);
+        std::fprintf(f, "%zu\n", ours.built.segments.size());
+        for (const Segment& g : ours.built.segments) {
+            std::fprintf(f, "%.17g %.17g %.17g %.17g\n", g.a.x, g.a.y, g.b.x, g.b.y);
+        }
+        std::fclose(f);
+    }
+    const Cgal cgal = build_cgal(cgal_of_pieces ? ours.built : without_overlaps(in));
     const double tolerance = 2.0 * ours.pixel;
     const PointIndex index(ours.point_sites, 2.0 * tolerance);
 
@@ -581,19 +778,24 @@ bool compare(const std::string& family, const std::string& variant, const Input&
             std::printf("  unmapped CGAL %s %s%s\n", s.is_point() ? "point" : "segment", describe(where[i]).c_str(),
                         s.is_point() && !s.is_input() ? " (intersection)" : "");
         }
-        auto show = [&](const char* side, const std::pair<std::uint32_t, std::uint32_t>& e) {
-            const auto at = [&](std::uint32_t s) -> std::string {
-                if (s < ours.point_sites.size()) return "P" + describe(ours.point_sites[s]);
-                for (const auto& kv : ours.segment_of_ends) {
-                    if (kv.second == s) {
-                        return "S" + describe(ours.point_sites[kv.first.first]) + "-" +
-                               describe(ours.point_sites[kv.first.second]);
-                    }
+        const auto site_text = [&](std::uint32_t s) -> std::string {
+            if (s < ours.point_sites.size()) return "P" + describe(ours.point_sites[s]);
+            for (const auto& kv : ours.segment_of_ends) {
+                if (kv.second == s) {
+                    return "S" + describe(ours.point_sites[kv.first.first]) + "-" +
+                           describe(ours.point_sites[kv.first.second]);
                 }
-                return "?";
-            };
-            std::printf("  only %s: %s | %s\n", side, at(e.first).c_str(), at(e.second).c_str());
+            }
+            return "?";
         };
+        auto show = [&](const char* side, const std::pair<std::uint32_t, std::uint32_t>& e) {
+            std::printf("  only %s: %s | %s\n", side, site_text(e.first).c_str(), site_text(e.second).c_str());
+        };
+        shown = 0;
+        for (std::uint32_t s = 0; s < ours.sites; ++s) {
+            if (hit[s] || ++shown > 20) continue;
+            std::printf("  ours without a CGAL site: %s\n", site_text(s).c_str());
+        }
         shown = 0;
         for (const auto& e : diff_cgal) {
             if (++shown > 10) break;
@@ -623,6 +825,7 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     double min_agreement = 0.0;
     bool verbose = false;
+    bool pieces = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         auto next = [&]() -> std::string {
@@ -643,6 +846,10 @@ int main(int argc, char** argv) {
                 min_agreement = std::stod(next());
             } else if (arg == "--verbose") {
                 verbose = true;
+            } else if (arg == "--write-pieces") {
+                write_pieces = next();
+            } else if (arg == "--cgal-of-pieces") {
+                pieces = true;
             } else {
                 return usage();
             }
@@ -666,9 +873,9 @@ int main(int argc, char** argv) {
     std::shuffle(shuffled.points.begin(), shuffled.points.end(), rng);
     bool ok = true;
     try {
-        ok &= compare(family, "as-is", input, min_agreement, verbose);
-        ok &= compare(family, "reversed", reversed, min_agreement, verbose);
-        ok &= compare(family, "shuffled", shuffled, min_agreement, verbose);
+        ok &= compare(family, "as-is", input, min_agreement, verbose, pieces);
+        ok &= compare(family, "reversed", reversed, min_agreement, verbose, pieces);
+        ok &= compare(family, "shuffled", shuffled, min_agreement, verbose, pieces);
     } catch (const std::exception& e) {
         std::printf("family=%s error: %s\n", family.c_str(), e.what());
         return 3;
