@@ -61,15 +61,27 @@ function(segvoronoi_cgal_split_test family count seed)
            COMMAND segvoronoi_cgal_split --family ${family} --n ${count} --seed ${seed} ${ARGN})
   set_tests_properties(cgal_split_${family}_${count}_seed${seed} PROPERTIES TIMEOUT 60 LABELS "cgal;split")
 endfunction()
-# Exact families (every crossing an integer or a half): all must AGREE.
-foreach(_run "grid 20 1" "grid 200 2" "grid 500 3" "diagonal-grid 20 1" "diagonal-grid 200 2"
-             "diagonal-grid 500 3" "star 8 1" "star 64 2" "star 200 3" "collinear 20 1" "collinear 100 2"
-             "collinear 300 3" "t-junction 40 1" "t-junction 300 2")
+# Exact families (every crossing an integer or a half, so our snapped
+# points are CGAL's exact ones): every variant must AGREE exactly (every
+# site mapped, no pair on one side only).
+foreach(_run "grid 20 1" "grid 200 2" "diagonal-grid 20 1" "diagonal-grid 100 2" "star 8 1" "star 64 2"
+             "star 200 3" "collinear 20 1" "collinear 100 2" "collinear 300 3" "t-junction 40 1"
+             "t-junction 300 2")
   separate_arguments(_run)
   segvoronoi_cgal_split_test(${_run})
 endforeach()
-# General families: measured agreement below.
-# (general families: to come)
+# General families (rational or real crossings): our crossings are snapped
+# to a pixel, some into a cluster of pixels, where a point's cell can be a
+# wedge with separators of positive length that CGAL's exact crossing does
+# not have; agreement leaves those out. Measured (sizes 20..500, seeds 1 and
+# 2, all variants): agreement 1.000000 everywhere, raw agreement (with them)
+# 0.947..0.993. Required: 0.999, so a single edge in a thousand that differs
+# otherwise fails.
+foreach(_run "roads-int 20 1" "roads-int 500 2" "roads-real 100 1" "roads-real 500 2" "polygon-cross 100 1"
+             "polygon-cross 500 2" "polygon-cross-real 100 1" "polygon-cross-real 500 2")
+  separate_arguments(_run)
+  segvoronoi_cgal_split_test(${_run} --min-agreement 0.999)
+endforeach()
 unset(_run)
 
 # The input generator: cargo builds it into CARGO_TARGET_DIR when that is
