@@ -15,7 +15,7 @@
 // unique at a crossing, where five sites share one vertex of radius 0).
 //
 //   segvoronoi_cgal_split --family NAME --n N [--seed S] [--min-agreement F] [--verbose] [--cgal-of-pieces]
-//                         [--write-pieces FILE]
+//                         [--write-pieces FILE] [--plain]
 //   segvoronoi_cgal_split --list
 //
 // Each CGAL site is mapped to one of ours: a point site (an input point or
@@ -43,6 +43,7 @@
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
+#include <CGAL/Segment_Delaunay_graph_2.h>
 #include <CGAL/Segment_Delaunay_graph_hierarchy_2.h>
 #include <CGAL/Simple_cartesian.h>
 
@@ -556,7 +557,12 @@ using K = CGAL::Simple_cartesian<double>;
 // Exact predicates (interval filter, then Gmpq) with intersections: CGAL
 // splits crossing segments itself, at exact intersection points.
 using Gt = CGAL::Segment_Delaunay_graph_filtered_traits_2<K, CGAL::Field_with_sqrt_tag>;
+// The hierarchy, as segvoronoi_cgal_check uses; --plain: without it (CGAL
+// 5.5's hierarchy crashes, a stack overflow in insert_point ->
+// insert_segment_on_point, on star 200 seed 3: 200 segments through one
+// point; the plain graph builds it, 4x slower).
 using Sdg = CGAL::Segment_Delaunay_graph_hierarchy_2<Gt>;
+using PlainSdg = CGAL::Segment_Delaunay_graph_2<Gt>;
 using Site = Gt::Site_2;
 using Q = CGAL::Gmpq;
 
@@ -697,6 +703,7 @@ struct Cgal {
     std::vector<std::pair<std::size_t, std::size_t>> pairs;  // VPAIRS by CGAL vertex number
 };
 
+template <class Sdg>
 Cgal build_cgal(const Input& in) {
     Cgal cgal;
     Sdg sdg;
@@ -714,13 +721,13 @@ Cgal build_cgal(const Input& in) {
     if (sdg.dimension() < 1) return cgal;
     const Gt& traits = sdg.geom_traits();
     for (auto e = sdg.finite_edges_begin(); e != sdg.finite_edges_end(); ++e) {
-        const Sdg::Vertex_handle a = e->first->vertex(Sdg::ccw(e->second));
-        const Sdg::Vertex_handle b = e->first->vertex(Sdg::cw(e->second));
+        const typename Sdg::Vertex_handle a = e->first->vertex(Sdg::ccw(e->second));
+        const typename Sdg::Vertex_handle b = e->first->vertex(Sdg::cw(e->second));
         const bool finite = sdg.dimension() == 2 && !sdg.is_infinite(e->first) &&
                             !sdg.is_infinite(e->first->neighbor(e->second));
         if (finite) {
-            const Sdg::Vertex_handle apex = e->first->vertex(e->second);
-            const Sdg::Vertex_handle mirror = sdg.tds().mirror_vertex(e->first, e->second);
+            const typename Sdg::Vertex_handle apex = e->first->vertex(e->second);
+            const typename Sdg::Vertex_handle mirror = sdg.tds().mirror_vertex(e->first, e->second);
             if (apex != mirror &&
                 is_zero_length_sites(traits, a->site(), b->site(), apex->site(), mirror->site())) {
                 continue;  // zero length
@@ -737,6 +744,8 @@ Cgal build_cgal(const Input& in) {
 
 // --write-pieces FILE: where to write our pieces of the as-is variant.
 std::string write_pieces;
+// --plain: CGAL's graph without the hierarchy.
+bool plain = false;
 
 std::string describe(const Point& p) {
     char buf[96];
@@ -759,7 +768,8 @@ bool compare(const std::string& family, const std::string& variant, const Input&
         }
         std::fclose(f);
     }
-    const Cgal cgal = build_cgal(cgal_of_pieces ? ours.built : without_overlaps(in));
+    const Input& for_cgal = cgal_of_pieces ? ours.built : without_overlaps(in);
+    const Cgal cgal = plain ? build_cgal<PlainSdg>(for_cgal) : build_cgal<Sdg>(for_cgal);
     const double tolerance = 2.0 * ours.pixel;
     const PointIndex index(ours.point_sites, 2.0 * tolerance);
 
@@ -944,6 +954,8 @@ int main(int argc, char** argv) {
                 min_agreement = std::stod(next());
             } else if (arg == "--verbose") {
                 verbose = true;
+            } else if (arg == "--plain") {
+                plain = true;
             } else if (arg == "--write-pieces") {
                 write_pieces = next();
             } else if (arg == "--cgal-of-pieces") {
