@@ -5,41 +5,61 @@
 //           segvoronoi_builder_set_split_crossings(b, 1) (snap rounding to
 //           pixels of side 2^-46 of the power of two above the largest
 //           coordinate);
-//   CGAL's: the same original segments and points in the segment Delaunay
-//           graph with intersection-capable traits
-//           (Segment_Delaunay_graph_filtered_traits_2, exact predicates),
-//           which splits at crossings itself with exact intersection points;
-// and compares the Voronoi adjacency: the multiset of pairs of sites of the
-// Voronoi edges of positive length (VPAIRS of the canonical topology, zero
-// length decided exactly on both sides; the Delaunay graph itself is not
+//   CGAL's: the same segments and points in the segment Delaunay graph
+//           hierarchy with intersection-capable traits
+//           (Segment_Delaunay_graph_filtered_traits_2<K, Field_with_sqrt_tag>,
+//           exact predicates), which splits at crossings itself, at exact
+//           intersection points (collinear overlaps resolved beforehand,
+//           see without_overlaps: CGAL loses parts of them);
+// and compares the Voronoi adjacency: the set of pairs of sites of the
+// Voronoi edges of positive length (the Delaunay graph itself is not
 // unique at a crossing, where five sites share one vertex of radius 0).
+// CGAL's zero length is decided exactly (as segvoronoi_cgal_check does),
+// ours as "both ends within 4 pixels".
 //
-//   segvoronoi_cgal_split --family NAME --n N [--seed S] [--min-agreement F] [--verbose] [--cgal-of-pieces]
-//                         [--write-pieces FILE] [--plain]
+//   segvoronoi_cgal_split --family NAME --n N [--seed S] [--min-agreement F] [--verbose]
+//                         [--plain] [--cgal-of-pieces] [--write-pieces FILE]
 //   segvoronoi_cgal_split --list
 //
-// Each CGAL site is mapped to one of ours: a point site (an input point or
+// Our sites are first collapsed (see collapse): point sites within 3 pixels
+// of each other become one point element, a piece inside such a cluster
+// that point, pieces between two clusters one segment element. Each CGAL
+// site is then mapped to an element: a point site (an input point or
 // endpoint, or an intersection point: its exact rational coordinates
-// rounded to double) to our point site nearest to it within 2 pixels, a
-// segment site (a subsegment) to our piece whose two endpoint sites are
-// the images of its two endpoints. A CGAL site with no counterpart is
-// "unmapped" (two crossings closer than a pixel that our snapping merged, a
-// subsegment that our snapping bent through a nearby hot pixel), and so are
-// its edges. Edges are compared where both sites are mapped:
-// edges_agree = sum over pairs of min(count in CGAL, count in ours).
+// rounded to double) to the element of our point site nearest to it within
+// 2 pixels, a subsegment to the segment element of the images of its two
+// endpoints. A CGAL site with no counterpart is unmapped (two crossings
+// closer than a pixel that our snapping merged, a subsegment that our
+// snapping bent through a nearby hot pixel), and so are its edges, and our
+// elements that no CGAL site maps to. Pairs are compared where both are
+// mapped: edges_agree pairs on both sides, only_cgal, only_ours, and
+// cluster_separators, our pairs of a cluster and a piece ending in it (a
+// point of a snapped cluster whose pieces all lie in a half-plane has a
+// wedge-shaped cell, with separators of positive length, where CGAL's
+// exact crossing has a cell of one point): explained, not counted in
+// only_ours.
 //
 // Each input is run three times: as generated, every segment reversed, and
 // with segments and points shuffled; one summary line each
-//   family=... variant=... inputs=... sites_cgal=... sites_ours=... mapped=...
-//   edges_cgal=... edges_ours=... edges_agree=... only_cgal=... only_ours=...
-//   agreement=... verdict=AGREE|DIFFER
-// agreement = edges_agree / max(edges_cgal, edges_ours). Without
-// --min-agreement (the exact families, whose crossings are integers or
-// dyadic so that our snapped points are CGAL's exact ones) a variant AGREEs
-// when every CGAL site is mapped and no edge is only on one side; with it,
-// when agreement >= F. --verbose prints each difference and the unmapped
-// sites near it. Exit status: 0 all variants agree, 1 a difference, 2 bad
-// usage, 3 a library error.
+//   family=... variant=... inputs=SEGMENTS+POINTS sites_cgal=... sites_ours=...
+//   elements_ours=... mapped=... unmapped_cgal=... (counts of the split) edges_cgal=...
+//   edges_ours=... edges_agree=... only_cgal=... only_ours=... cluster_separators=...
+//   unmapped_edges_cgal=... unmapped_edges_ours=... raw_agreement=... agreement=...
+//   ms_ours=... ms_cgal=... verdict=AGREE|DIFFER
+// agreement = edges_agree / max(edges_cgal, edges_ours - cluster_separators),
+// raw_agreement the same with them. Without --min-agreement (the exact
+// families, whose crossings are integers or halves so that our snapped
+// points are CGAL's exact ones) a variant AGREEs when every site is mapped
+// both ways and no pair is on one side only; with it, when agreement >= F.
+// --verbose prints the differences and the unmapped sites. --plain builds
+// CGAL's graph without the hierarchy (see PlainSdg). --cgal-of-pieces (a
+// diagnostic) gives CGAL our pieces instead of the original segments: a
+// difference that stays is one between the two Voronoi builders on the
+// same non-crossing input, one that goes away comes from the splitting.
+// --write-pieces FILE writes our points and pieces of the as-is variant in
+// Boost.Polygon's text format, for segvoronoi_cgal_check --file. Exit
+// status: 0 all variants agree, 1 a difference, 2 bad usage, 3 a library
+// error.
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
