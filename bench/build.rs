@@ -27,7 +27,36 @@ fn compile(file: &str, lib: &str, cfg: &str, link: Option<&str>, what: &str) {
     }
 }
 
+/// CGAL's segment Delaunay graph with intersections for the split
+/// benchmark (`bin/split`, cfg `has_cgal_split`; Debian's `libcgal-dev`,
+/// header-only, with GMP and MPFR), compiled as c_tests/cgal.cmake compiles
+/// the CGAL cross-check: -O2 and -frounding-math (CGAL's interval filter
+/// switches the rounding mode).
+fn compile_cgal_split() {
+    let (file, cfg) = ("cpp/cgal_split.cpp", "has_cgal_split");
+    println!("cargo:rerun-if-changed={file}");
+    println!("cargo::rustc-check-cfg=cfg({cfg})");
+    let built = cc::Build::new()
+        .cpp(true)
+        .file(file)
+        .flag_if_supported("-std=c++17")
+        .flag_if_supported("-frounding-math")
+        .opt_level(2)
+        .define("NDEBUG", None)
+        .warnings(false)
+        .try_compile("cgal_split_bench");
+    match built {
+        Ok(()) => {
+            println!("cargo:rustc-link-lib=mpfr");
+            println!("cargo:rustc-link-lib=gmp");
+            println!("cargo:rustc-cfg={cfg}");
+        }
+        Err(e) => println!("cargo:warning=cgal contender of bin/split left out (libcgal-dev missing?): {e}"),
+    }
+}
+
 fn main() {
+    compile_cgal_split();
     compile(
         "cpp/boost_polygon.cpp",
         "boost_polygon_bench",

@@ -1,0 +1,206 @@
+//! Splitting crossings (issue 11) against CGAL's segment Delaunay graph
+//! with intersections, in one run on the same input: crossing road
+//! networks of 10k, 100k and 1M segments.
+//!
+//! `cargo run --release --bin split -- [--sizes 10000,100000,1000000] [--runs 3] [--budget 120] [--c 2]`
+//!
+//! The input: n segments, each from a uniform point of the unit square in a
+//! uniform direction, of length c/√n (c = 2 by default). Two such segments
+//! cross with probability 2L²/π (Buffon, up to the border), so about
+//! c²n/π crossings in all (1.27 n for c = 2): each segment crosses 2.5
+//! others on average, as in a road network. The table gives the crossings
+//! the split found.
+//!
+//! Ours, the median of `--runs`: `Builder::split_crossings(true)`,
+//! `add_segments` and `build` (the split, then the diagram of the pieces);
+//! then the pieces alone (`Diagram::piece`) built without splitting, the
+//! diagram part of the first, so that their difference is the split. CGAL:
+//! `cpp/cgal_split.cpp`, the segments inserted in the given order into
+//! `Segment_Delaunay_graph_hierarchy_2` with
+//! `Segment_Delaunay_graph_filtered_traits_2<K, Field_with_sqrt_tag>`
+//! (CGAL splits at exact intersection points itself), the median of
+//! `--runs` where they fit in `--budget` seconds, else one run; a size
+//! whose estimate (the last size's time times the size ratio) exceeds the
+//! budget is not run, and the table gives the estimate.
+
+use segvoronoi::Builder;
+use segvoronoi_testgen::Rng;
+use std::time::Instant;
+
+type Segment = [[f64; 2]; 2];
+
+/// `n` random segments of length `c / sqrt(n)` from uniform points of the
+/// unit square in uniform directions.
+fn roads(n: usize, c: f64, seed: u64) -> Vec<Segment> {
+    let mut rng = Rng(seed);
+    let length = c / (n as f64).sqrt();
+    (0..n)
+        .map(|_| {
+            let (x, y) = (rng.unit(), rng.unit());
+            let a = rng.unit() * std::f64::consts::TAU;
+            [[x, y], [x + length * a.cos(), y + length * a.sin()]]
+        })
+        .collect()
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+struct Ours {
+    total: f64,
+    pieces_build: f64,
+    crossings: usize,
+    pieces: usize,
+    sites: usize,
+    rounds: usize,
+    displacement: f64,
+}
+
+fn ours(input: &[Segment]) -> Ours {
+    let start = Instant::now();
+    let mut b = Builder::new();
+    b.split_crossings(true);
+    b.add_segments(input.iter().copied()).expect("finite segments");
+    let d = b.build().expect("a diagram of the split input");
+    let total = start.elapsed().as_secs_f64();
+    let stats = d.stats();
+    let displacement = d.max_split_displacement();
+    let pieces: Vec<[segvoronoi::Point; 2]> = (0..d.piece_count()).filter_map(|j| d.piece(j)).collect();
+    drop(d);
+
+    let start = Instant::now();
+    let mut b = Builder::new();
+    b.add_segments(pieces.iter().copied()).expect("finite pieces");
+    let built = b.build().expect("the pieces do not cross");
+    let pieces_build = start.elapsed().as_secs_f64();
+    assert_eq!(built.stats().sites, stats.sites, "the pieces give the same sites");
+    Ours {
+        total,
+        pieces_build,
+        crossings: stats.crossings,
+        pieces: stats.pieces,
+        sites: stats.sites,
+        rounds: stats.snap_rounds,
+        displacement,
+    }
+}
+
+#[cfg(has_cgal_split)]
+mod cgal {
+    extern "C" {
+        fn cgal_split_bench(xy: *const f64, n: usize, sites: *mut usize, crossings: *mut usize, vertices: *mut usize) -> i32;
+    }
+
+    /// CGAL's graph of the segments: (sites, intersection points, faces).
+    pub fn build(input: &[super::Segment]) -> (usize, usize, usize) {
+        let xy: Vec<f64> = input.iter().flatten().flatten().copied().collect();
+        let (mut sites, mut crossings, mut vertices) = (0, 0, 0);
+        // SAFETY: xy holds 4 n doubles; three out-parameters.
+        let status = unsafe { cgal_split_bench(xy.as_ptr(), input.len(), &mut sites, &mut crossings, &mut vertices) };
+        assert_eq!(status, 0, "CGAL threw");
+        (sites, crossings, vertices)
+    }
+}
+
+/// The CGAL cell of the table and the ratio to ours (`total`), timing it
+/// unless the last size's time scaled by the size exceeds `budget`.
+#[cfg(has_cgal_split)]
+fn cgal_cells(
+    input: &[Segment],
+    n: usize,
+    total: f64,
+    runs: usize,
+    budget: f64,
+    last: &mut Option<(usize, f64)>,
+) -> (String, String) {
+    if let Some(e) = last.map(|(m, t)| t * n as f64 / m as f64).filter(|&e| e > budget) {
+        return (format!("not run (est. {} from the last size)", seconds(e)), format!("~{:.0}x (est.)", e / total));
+    }
+    let mut times = Vec::new();
+    let mut counts = (0, 0, 0);
+    for k in 0..runs.max(1) {
+        if k == 1 && times[0] * runs as f64 > budget {
+            break;
+        }
+        let start = Instant::now();
+        counts = cgal::build(input);
+        times.push(start.elapsed().as_secs_f64());
+    }
+    let one_run = times.len() == 1 && runs > 1;
+    let t = median(times);
+    *last = Some((n, t));
+    let cell = format!(
+        "{}{} ({} sites, {} crossings)",
+        seconds(t),
+        if one_run { ", 1 run" } else { "" },
+        thousands(counts.0),
+        thousands(counts.1)
+    );
+    (cell, format!("{:.1}x", t / total))
+}
+
+#[cfg(not(has_cgal_split))]
+fn cgal_cells(_: &[Segment], _: usize, _: f64, _: usize, _: f64, _: &mut Option<(usize, f64)>) -> (String, String) {
+    ("not built (no CGAL)".to_string(), "-".to_string())
+}
+
+fn seconds(t: f64) -> String {
+    if t < 1.0 {
+        format!("{:.1} ms", t * 1e3)
+    } else {
+        format!("{t:.2} s")
+    }
+}
+
+fn thousands(n: usize) -> String {
+    let s = n.to_string();
+    let mut out = String::new();
+    for (i, ch) in s.chars().enumerate() {
+        if i > 0 && (s.len() - i) % 3 == 0 {
+            out.push(',');
+        }
+        out.push(ch);
+    }
+    out
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let value = |name: &str| args.iter().position(|a| a == name).map(|i| args[i + 1].clone());
+    let sizes: Vec<usize> = value("--sizes")
+        .map_or(vec![10_000, 100_000, 1_000_000], |s| s.split(',').map(|n| n.parse().expect("--sizes N,N,...")).collect());
+    let runs: usize = value("--runs").map_or(3, |r| r.parse().expect("--runs R"));
+    let budget: f64 = value("--budget").map_or(120.0, |r| r.parse().expect("--budget SECONDS"));
+    let c: f64 = value("--c").map_or(2.0, |r| r.parse().expect("--c C"));
+
+    println!(
+        "| segments | crossings | pieces | snap rounds | max displacement | ours split + build | ours build of the pieces | split (difference) | CGAL with intersections | CGAL / ours |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|---|");
+    let mut last_cgal: Option<(usize, f64)> = None;
+    for &n in &sizes {
+        let input = roads(n, c, 11);
+        let results: Vec<Ours> = (0..runs.max(1)).map(|_| ours(&input)).collect();
+        let total = median(results.iter().map(|r| r.total).collect());
+        let pieces_build = median(results.iter().map(|r| r.pieces_build).collect());
+        let r = &results[0];
+
+        let (cgal_cell, ratio_cell) = cgal_cells(&input, n, total, runs, budget, &mut last_cgal);
+        println!(
+            "| {} | {} | {} | {} | {:.1e} | {} | {} | {} | {} (ours: {} sites) | {} |",
+            thousands(n),
+            thousands(r.crossings),
+            thousands(r.pieces),
+            r.rounds,
+            r.displacement,
+            seconds(total),
+            seconds(pieces_build),
+            seconds(total - pieces_build),
+            cgal_cell,
+            thousands(r.sites),
+            ratio_cell
+        );
+    }
+}
