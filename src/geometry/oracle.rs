@@ -306,6 +306,14 @@ fn decide(
         }
         Refined::Failed => {}
     }
+    // Still near zero: where the centre is rational (three points, or two
+    // points and a segment ending at one of them), the exact answer costs
+    // a few big-number products; the refinement below would take it to
+    // 1200 bits and call it zero (on rasterised outlines, most of the
+    // build's time).
+    if let Some(exact) = system.rational_answer(&question) {
+        return (Stage::Exact, Some(exact));
+    }
     // Each precision starts from the last one's solution, or where there
     // is none from the solver run at that precision: for a system whose
     // condition exceeds the last precision (kinks of 1e-15 rad: 1e30) a
@@ -647,6 +655,83 @@ impl System {
                 }
             }
             Reach::Entering { from, to } => -line(from, to).2.signum(),
+        };
+        Some(match sign {
+            -1 => CirclePosition::Inside,
+            1 => CirclePosition::Outside,
+            _ => CirclePosition::On,
+        })
+    }
+
+    /// The exact answer when the equations fix the centre linearly: every
+    /// equation a point's circle or a perpendicular at a point (no
+    /// tangent line), so that subtracting the first circle from the others
+    /// leaves two linear equations in `c` (bisectors `2(p − p₀)·c = (p −
+    /// p₀)·(p + p₀)`, perpendiculars `(q − p)·c = (q − p)·p`) and
+    /// `c = N / D` by Cramer's rule, `r² = |c − p₀|²`. The question is then
+    /// a sign of polynomials in `N`, `D` and the doubles (multiplied
+    /// through by `D` or `D²`), evaluated without rounding. Three points,
+    /// or two points and a segment ending at one of them: the vertices of
+    /// grid-like inputs whose centre has no short binary expansion (a third,
+    /// or a square root in the radius), where the rounded-vertex check
+    /// (`exact_answer`) fails. `None` for any other system, or `D = 0`.
+    fn rational_answer(&self, question: &Reach) -> Option<CirclePosition> {
+        let lift = |x: f64| BigFloat::from_f64(x, EXACT);
+        let mut circles = self.0.iter().filter_map(|e| match *e {
+            Equation::Circle(p) => Some(p),
+            _ => None,
+        });
+        let p0 = circles.next()?;
+        let mut rows: Vec<([BigFloat; 2], BigFloat)> = Vec::with_capacity(2);
+        for equation in &self.0 {
+            match *equation {
+                Equation::Circle(p) if p == p0 => {}
+                Equation::Circle(p) => {
+                    let (ux, uy) = (lift(p.x).sub(&lift(p0.x)), lift(p.y).sub(&lift(p0.y)));
+                    let rhs = ux.mul(&lift(p.x).add(&lift(p0.x))).add(&uy.mul(&lift(p.y).add(&lift(p0.y))));
+                    rows.push(([ux.add(&ux), uy.add(&uy)], rhs));
+                }
+                Equation::Perpendicular { p, q } => {
+                    let (ux, uy) = (lift(q.x).sub(&lift(p.x)), lift(q.y).sub(&lift(p.y)));
+                    let rhs = ux.mul(&lift(p.x)).add(&uy.mul(&lift(p.y)));
+                    rows.push(([ux, uy], rhs));
+                }
+                Equation::Line { .. } => return None,
+            }
+        }
+        let [([a1x, a1y], b1), ([a2x, a2y], b2)] = <[_; 2]>::try_from(rows).ok()?;
+        let d = a1x.mul(&a2y).sub(&a1y.mul(&a2x));
+        let sign_d = d.signum();
+        if sign_d == 0 {
+            return None;
+        }
+        let (nx, ny) = (b1.mul(&a2y).sub(&b2.mul(&a1y)), a1x.mul(&b2).sub(&a2x.mul(&b1)));
+        // D (c − p), exactly
+        let offset = |p: Point| (nx.sub(&d.mul(&lift(p.x))), ny.sub(&d.mul(&lift(p.y))));
+        let squared = |(x, y): &(BigFloat, BigFloat)| x.mul(x).add(&y.mul(y));
+        // D² r²
+        let r2 = squared(&offset(p0));
+        let sign = match *question {
+            Reach::Distance { a, b } => {
+                let (ux, uy) = (lift(b.x).sub(&lift(a.x)), lift(b.y).sub(&lift(a.y)));
+                let from_a = offset(a);
+                let length2 = ux.mul(&ux).add(&uy.mul(&uy));
+                // D (c − a)·u, and D |u|²: their signs times D's order c along ab
+                let along = ux.mul(&from_a.0).add(&uy.mul(&from_a.1));
+                if along.signum() * sign_d <= 0 {
+                    squared(&from_a).sub(&r2).signum()
+                } else if along.sub(&length2.mul(&d)).signum() * sign_d >= 0 {
+                    squared(&offset(b)).sub(&r2).signum()
+                } else {
+                    let cross = ux.mul(&from_a.1).sub(&uy.mul(&from_a.0));
+                    cross.mul(&cross).sub(&r2.mul(&length2)).signum()
+                }
+            }
+            Reach::Entering { from, to } => {
+                let (ux, uy) = (lift(to.x).sub(&lift(from.x)), lift(to.y).sub(&lift(from.y)));
+                let from_c = offset(from);
+                -(ux.mul(&from_c.0).add(&uy.mul(&from_c.1)).signum() * sign_d)
+            }
         };
         Some(match sign {
             -1 => CirclePosition::Inside,
