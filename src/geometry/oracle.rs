@@ -980,6 +980,37 @@ mod tests {
         }
     }
 
+    /// The cocircular answers of a rasterised outline whose centre or
+    /// radius has no short binary expansion: exact from the rational
+    /// centre, not refined to 1200 bits and taken as zero.
+    #[test]
+    fn a_rational_centre_is_decided_exactly() {
+        let p = |x: f64, y: f64| Point::new(x, y);
+        let ask = |sites: [Site; 3], question: Reach| {
+            let (c, r) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]).unwrap();
+            let _ = take_predicate_counts();
+            let answer = reach(|| sites, c, r, question, question.value(&[c.x, c.y, r], &|x| x));
+            (answer, take_predicate_counts().by_stage[Stage::Exact as usize])
+        };
+        // three points, centre (2616 + 1/3, 212): the new segment leaves
+        // (2615, 211) along the tangent, or a hair inwards
+        let ppp = [point(2615.0, 211.0), point(2618.0, 212.0), point(2615.0, 213.0)];
+        let along = |to_y: f64| Reach::Entering { from: p(2615.0, 211.0), to: p(2612.0, to_y) };
+        assert_eq!(ask(ppp, along(215.0)), (Some(CirclePosition::On), 1));
+        // (double-double decides this one)
+        assert_eq!(ask(ppp, along(215.0 + 1e-9)).0, Some(CirclePosition::Inside));
+        // two points and a segment ending at one, radius √18: the tangent
+        // at (663, 214) and a segment touching the circle from outside
+        let pps = [point(663.0, 214.0), point(669.0, 214.0), Site::Segment { a: p(666.0, 217.0), b: p(669.0, 214.0) }];
+        assert_eq!(ask(pps, Reach::Entering { from: p(663.0, 214.0), to: p(666.0, 217.0) }), (Some(CirclePosition::On), 1));
+        // the segment from (663, 214) through the centre (666, 211) enters
+        assert_eq!(ask(pps, Reach::Entering { from: p(663.0, 214.0), to: p(669.0, 208.0) }).0, Some(CirclePosition::Inside));
+        // a segment at distance 3 from the centre of a circle of radius √18
+        // through the points (3, 3) off it: inside, whatever the stage
+        let chord = Reach::Distance { a: p(660.0, 208.0), b: p(672.0, 208.0) };
+        assert_eq!(ask(pps, chord).0, Some(CirclePosition::Inside));
+    }
+
     #[test]
     fn a_clear_answer_is_taken_from_the_filter() {
         let sites = [point(-1.0, 0.0), point(1.0, 0.0), point(0.0, 1.0)];

@@ -56,10 +56,10 @@ const STAIR_BAND: i32 = 64;
 /// About `n` segments of closed rectilinear-looking polygons, like a
 /// rasterised country border: each polygon is a lower and an upper
 /// x-monotone chain closed by two vertical sides, and each chain a random
-/// walk of steps of 1 to 4 units, a third horizontal, a third vertical and
-/// a third diagonal (never two horizontal or two vertical steps in a row,
-/// so a run is one segment), which makes about two thirds of the segments
-/// axis-parallel (the outline had 64 %). Consecutive segments share
+/// walk of steps of 1 to 4 units, drawn three eighths horizontal, three
+/// eighths vertical and a quarter diagonal (never two horizontal or two
+/// vertical steps in a row, so a run is one segment), which makes 65 % of
+/// the segments axis-parallel (the outline had 64 %). Consecutive segments share
 /// their endpoint; the polygons are stacked in bands 2 units apart, so
 /// nothing else touches. Many points lie on one grid line and many four on
 /// one circle: the exact degeneracies of rasterised data.
@@ -95,9 +95,9 @@ fn chain(rng: &mut Rng, steps: usize, lo: i32, hi: i32) -> Vec<[i32; 2]> {
     // side there.
     let mut last = Step::Vertical;
     while points.len() <= steps || last == Step::Vertical {
-        let kind = match rng.below(3) {
-            0 => Step::Horizontal,
-            1 => Step::Vertical,
+        let kind = match rng.below(8) {
+            0..=2 => Step::Horizontal,
+            3..=5 => Step::Vertical,
             _ => Step::Diagonal,
         };
         if kind == last && kind != Step::Diagonal {
@@ -170,7 +170,7 @@ mod tests {
             }
         }
         let share = axis_parallel_share(&s);
-        assert!((0.55..0.75).contains(&share), "{share}");
+        assert!((0.6..0.7).contains(&share), "{share}");
     }
 
     /// Whether an endpoint of `t` lies inside `s` (not at its ends).
