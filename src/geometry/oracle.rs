@@ -29,6 +29,12 @@
 //!    stands when the question's value exceeds four times the last Newton
 //!    step plus the rounding at that precision times the equations'
 //!    condition `‖J⁻¹‖`.
+//!    Where double-double leaves the question undecided and the centre
+//!    is rational (three points, or two points and a segment ending at
+//!    one of them: the equations are then linear in the centre), the
+//!    answer is computed exactly from that centre instead
+//!    (`System::rational_answer`): on rasterised outlines most true zeros
+//!    are of this kind, and 1200 bits cost them about 170 µs each.
 //! 4. **Zero.** A value that stays below that bound at 1200 bits (about
 //!    `2^-1150` of the configuration's size, for well-conditioned
 //!    equations) is taken as exactly zero: the segment touches the circle
@@ -224,9 +230,10 @@ enum Stage {
 /// How the questions asked on one thread were decided, by stage.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct PredicateCounts {
-    /// Per stage: the `f64` filter, the exact check of a rounded vertex,
-    /// double-double, big floats, taken as zero, and left to the `f64` value
-    /// (no convergence or a degenerate triple).
+    /// Per stage: the `f64` filter, the exact check of a rounded vertex
+    /// (or of a rational centre), double-double, big floats, taken as
+    /// zero, and left to the `f64` value (no convergence or a degenerate
+    /// triple).
     pub by_stage: [u64; 6],
     /// Vertices whose solver result missed its sites by more than rounding
     /// and was polished by Newton's method (`polish_vertex`).
