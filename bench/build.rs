@@ -2,13 +2,22 @@
 //! harness as the Rust ones: Boost.Polygon's Voronoi builder (header-only,
 //! Debian's `libboost-dev`), GEOS's buffer (`libgeos-dev`, linked to
 //! `geos_c`) and Clipper's offset (`libpolyclipping-dev`, linked to
-//! `polyclipping`). A contender whose headers are missing is left out, with
-//! a warning: `boost-cpp`, and `geos` / `clipper` of the offsets benchmark.
+//! `polyclipping`), and CGAL's segment Delaunay graph (header-only, Debian's
+//! `libcgal-dev`, linked to `gmp` and `mpfr`). A contender whose headers are
+//! missing is left out, with a warning: `boost-cpp` and `cgal`, and `geos` /
+//! `clipper` of the offsets benchmark.
 
-fn compile(file: &str, lib: &str, cfg: &str, link: Option<&str>, what: &str) {
+fn compile(file: &str, lib: &str, cfg: &str, link: &[&str], what: &str) {
     println!("cargo:rerun-if-changed={file}");
     println!("cargo::rustc-check-cfg=cfg({cfg})");
-    let built = cc::Build::new()
+    let mut build = cc::Build::new();
+    if cfg == "has_cgal" {
+        // CGAL's interval filter switches the rounding mode; GCC must not
+        // fold floating-point expressions across that (CGAL's own setup
+        // adds the same flag, as does c_tests/cgal.cmake).
+        build.flag_if_supported("-frounding-math");
+    }
+    let built = build
         .cpp(true)
         .file(file)
         .flag_if_supported("-std=c++17")
@@ -18,7 +27,7 @@ fn compile(file: &str, lib: &str, cfg: &str, link: Option<&str>, what: &str) {
         .try_compile(lib);
     match built {
         Ok(()) => {
-            if let Some(link) = link {
+            for link in link {
                 println!("cargo:rustc-link-lib={link}");
             }
             println!("cargo:rustc-cfg={cfg}");
@@ -61,21 +70,28 @@ fn main() {
         "cpp/boost_polygon.cpp",
         "boost_polygon_bench",
         "has_boost_cpp",
-        None,
+        &[],
         "boost-cpp contender left out (Boost headers missing?)",
     );
     compile(
         "cpp/geos_buffer.cpp",
         "geos_buffer_bench",
         "has_geos",
-        Some("geos_c"),
+        &["geos_c"],
         "geos contender left out (libgeos-dev missing?)",
     );
     compile(
         "cpp/clipper_offset.cpp",
         "clipper_offset_bench",
         "has_clipper",
-        Some("polyclipping"),
+        &["polyclipping"],
         "clipper contender left out (libpolyclipping-dev missing?)",
+    );
+    compile(
+        "cpp/cgal_sdg.cpp",
+        "cgal_sdg_bench",
+        "has_cgal",
+        &["mpfr", "gmp"],
+        "cgal contender left out (libcgal-dev, libgmp-dev or libmpfr-dev missing?)",
     );
 }

@@ -3,8 +3,9 @@
 //! So every timed region includes the library copying the input in, and none
 //! includes generating it or freeing the result.
 //!
-//! Points: all four contenders. Segments: segvoronoi, boost-cpp and
-//! boostvoronoi (spade triangulates points only).
+//! Points: segvoronoi, boost-cpp, boostvoronoi, spade. Segments:
+//! segvoronoi, cgal, boost-cpp and boostvoronoi (spade triangulates points
+//! only; cgal is run on segments only).
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -23,14 +24,26 @@ pub enum Contender {
     /// headers are there.
     BoostCpp,
     Spade,
+    /// CGAL's segment Delaunay graph (`cpp/cgal_sdg.cpp`), compiled in by
+    /// build.rs when the CGAL headers are there.
+    Cgal,
 }
 
 impl Contender {
-    pub const ALL: [Contender; 4] = [Contender::Segvoronoi, Contender::BoostCpp, Contender::Boostvoronoi, Contender::Spade];
+    pub const ALL: [Contender; 5] =
+        [Contender::Segvoronoi, Contender::Cgal, Contender::BoostCpp, Contender::Boostvoronoi, Contender::Spade];
 
-    /// The contenders this binary can run (boost-cpp only when compiled in).
+    /// The contenders this binary can run (boost-cpp and cgal only when
+    /// compiled in).
     pub fn available() -> Vec<Contender> {
-        Contender::ALL.into_iter().filter(|c| *c != Contender::BoostCpp || cfg!(has_boost_cpp)).collect()
+        Contender::ALL
+            .into_iter()
+            .filter(|c| match c {
+                Contender::BoostCpp => cfg!(has_boost_cpp),
+                Contender::Cgal => cfg!(has_cgal),
+                _ => true,
+            })
+            .collect()
     }
 
     pub fn name(self) -> &'static str {
@@ -39,6 +52,7 @@ impl Contender {
             Contender::Boostvoronoi => "boostvoronoi",
             Contender::BoostCpp => "boost-cpp",
             Contender::Spade => "spade",
+            Contender::Cgal => "cgal",
         }
     }
 
@@ -49,6 +63,12 @@ impl Contender {
     /// Whether it takes line segments.
     pub fn takes_segments(self) -> bool {
         self != Contender::Spade
+    }
+
+    /// Whether it is benchmarked on points (CGAL's segment Delaunay graph
+    /// is here for the segment workloads of issue 11 only).
+    pub fn takes_points(self) -> bool {
+        self != Contender::Cgal
     }
 }
 
@@ -110,6 +130,7 @@ pub fn measure(contender: Contender, n: usize, runs: usize) -> Measured {
             let points = grid_points(n, SEED);
             time_runs(runs, || boost_cpp::Diagram::build(&points), boost_cpp::Diagram::counts)
         }
+        Contender::Cgal => fail("cgal is benchmarked on segments only".into()),
         Contender::Spade => {
             let points = float_points(n, SEED);
             time_runs(
@@ -143,6 +164,10 @@ pub fn measure_segments(contender: Contender, file: &std::path::Path, runs: usiz
         Contender::BoostCpp => {
             let segments = crate::segments::read_file(file, |s| s).unwrap_or_else(|e| read_error(e));
             time_runs(runs, || boost_cpp::Diagram::build_segments(&segments), boost_cpp::Diagram::counts)
+        }
+        Contender::Cgal => {
+            let segments = crate::segments::read_file(file, |s| s).unwrap_or_else(|e| read_error(e));
+            time_runs(runs, || cgal::Graph::build_segments(&segments), cgal::Graph::counts)
         }
         Contender::Spade => fail("spade takes no line segments".into()),
     }
@@ -291,6 +316,72 @@ mod boost_cpp {
         }
         pub fn build_segments(_: &[[i32; 4]]) -> Diagram {
             panic!("boost-cpp was not compiled in (Boost headers missing at build time)")
+        }
+        pub fn counts(&self) -> super::Counts {
+            super::Counts { sites: 0, vertices: 0, edges: 0, vertex_sum: [f64::NAN; 2] }
+        }
+    }
+}
+
+/// CGAL's segment Delaunay graph through the C interface of `cpp/cgal_sdg.cpp`.
+mod cgal {
+    use std::ffi::c_void;
+
+    #[cfg(has_cgal)]
+    extern "C" {
+        fn cgal_sdg_build_segments(xyxy: *const i32, n: usize) -> *mut c_void;
+        fn cgal_sdg_sites(sdg: *const c_void) -> usize;
+        fn cgal_sdg_vertices(sdg: *const c_void) -> usize;
+        fn cgal_sdg_edges(sdg: *const c_void) -> usize;
+        fn cgal_sdg_vertex_positions(sdg: *const c_void, xy: *mut f64);
+        fn cgal_sdg_free(sdg: *mut c_void);
+    }
+
+    /// An owned C++ `Segment_Delaunay_graph_2`.
+    pub struct Graph(*mut c_void);
+
+    #[cfg(has_cgal)]
+    impl Graph {
+        pub fn build_segments(segments: &[[i32; 4]]) -> Graph {
+            // SAFETY: `segments` is `4 * len` contiguous i32, read during the call only.
+            let raw = unsafe { cgal_sdg_build_segments(segments.as_ptr().cast(), segments.len()) };
+            if raw.is_null() {
+                super::fail(format!("CGAL build failed (exception) on {} segments", segments.len()));
+            }
+            Graph(raw)
+        }
+
+        /// Sites, finite faces (Voronoi vertices, a degree-k vertex counted
+        /// k - 2 times), edges, vertex sums.
+        pub fn counts(&self) -> super::Counts {
+            // SAFETY: a live graph from `build_segments`; the buffer holds
+            // two doubles per finite face.
+            unsafe {
+                let vertices = cgal_sdg_vertices(self.0);
+                let mut xy = vec![0.0f64; 2 * vertices];
+                cgal_sdg_vertex_positions(self.0, xy.as_mut_ptr());
+                super::Counts {
+                    sites: cgal_sdg_sites(self.0),
+                    vertices,
+                    edges: cgal_sdg_edges(self.0),
+                    vertex_sum: super::coordinate_sum(xy.chunks_exact(2).map(|c| [c[0], c[1]])),
+                }
+            }
+        }
+    }
+
+    #[cfg(has_cgal)]
+    impl Drop for Graph {
+        fn drop(&mut self) {
+            // SAFETY: built by `build_segments`, freed once.
+            unsafe { cgal_sdg_free(self.0) }
+        }
+    }
+
+    #[cfg(not(has_cgal))]
+    impl Graph {
+        pub fn build_segments(_: &[[i32; 4]]) -> Graph {
+            panic!("cgal was not compiled in (CGAL headers missing at build time)")
         }
         pub fn counts(&self) -> super::Counts {
             super::Counts { sites: 0, vertices: 0, edges: 0, vertex_sum: [f64::NAN; 2] }

@@ -2,8 +2,9 @@
 //! original and the boostvoronoi port) and spade on uniform random points,
 //! and of the first three on disjoint line segments.
 //!
-//! `cargo run --release -- [--input points|segments|seed] [--sizes N,N,..]
-//! [--runs 5] [--contenders segvoronoi,boost-cpp,boostvoronoi,spade]
+//! `cargo run --release -- [--input points|segments|seed|parallel|staircase]
+//! [--sizes N,N,..] [--runs 5]
+//! [--contenders segvoronoi,cgal,boost-cpp,boostvoronoi,spade]
 //! [--methods 1,2,3] [--timeout SECONDS]`
 //!
 //! - `points` (the default): uniform random points, 10k, 100k, 1M.
@@ -11,6 +12,11 @@
 //!   style), 10k, 100k, 1M.
 //! - `seed`: the seed paper's experiment, its three ways of drawing random
 //!   disjoint segments (`--methods`), 256 to 4096 segments.
+//! - `parallel`, `staircase` (issue 11): long nearly parallel segments, and
+//!   axis-parallel staircase outlines (`segvoronoi_testgen::long_segments`),
+//!   16k, 64k, 256k. Several segment workloads go in one run as a list,
+//!   `--input parallel,staircase,segments`, so their per-segment costs are
+//!   measured on the same machine state.
 //!
 //! Each (contender, size) runs in a child process (this binary again, in the
 //! hidden `--child` mode), so the peak resident set size it reports (VmHWM) is
@@ -60,6 +66,10 @@ impl Who {
 pub enum Workload {
     Points,
     Segments(Method),
+    /// Long nearly parallel segments (issue 11).
+    Parallel,
+    /// Axis-parallel staircase outlines (issue 11).
+    Staircase,
 }
 
 impl Workload {
@@ -68,6 +78,8 @@ impl Workload {
             Workload::Points => "points".into(),
             Workload::Segments(Method::Short) => "segments".into(),
             Workload::Segments(m) => format!("seed{}", m.number()),
+            Workload::Parallel => "parallel".into(),
+            Workload::Staircase => "staircase".into(),
         }
     }
 
@@ -75,6 +87,8 @@ impl Workload {
         match name {
             "points" => Some(Workload::Points),
             "segments" => Some(Workload::Segments(Method::Short)),
+            "parallel" => Some(Workload::Parallel),
+            "staircase" => Some(Workload::Staircase),
             _ => name.strip_prefix("seed")?.parse().ok().and_then(Method::from_number).map(Workload::Segments),
         }
     }
@@ -83,7 +97,7 @@ impl Workload {
     pub fn unit(self) -> &'static str {
         match self {
             Workload::Points => "points",
-            Workload::Segments(_) => "segments",
+            _ => "segments",
         }
     }
 }
@@ -117,6 +131,8 @@ pub struct InputInfo {
     pub mean_length: f64,
     /// Least distance between two segments near each other.
     pub least_gap: Option<f64>,
+    /// Share of horizontal and vertical segments.
+    pub axis_share: f64,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -128,6 +144,8 @@ enum Suite {
 
 struct Options {
     suite: Suite,
+    /// The segment workloads of a `Segments` suite, in order.
+    workloads: Vec<Workload>,
     sizes: Vec<usize>,
     runs: usize,
     contenders: Vec<Contender>,
@@ -135,7 +153,7 @@ struct Options {
     timeout: Duration,
 }
 
-const USAGE: &str = "usage: segvoronoi-bench [--input points|segments|seed] [--sizes N,N,..] [--runs R] \
+const USAGE: &str = "usage: segvoronoi-bench [--input points|segments|seed|parallel|staircase[,..]] [--sizes N,N,..] [--runs R] \
 [--contenders NAME,NAME,..] [--methods 1,2,3] [--timeout SECONDS]";
 
 fn main() {
@@ -167,7 +185,7 @@ fn main() {
         }
         Suite::Segments | Suite::Seed => {
             let workloads: Vec<Workload> = match options.suite {
-                Suite::Segments => vec![Workload::Segments(Method::Short)],
+                Suite::Segments => options.workloads.clone(),
                 _ => options.methods.iter().map(|&m| Workload::Segments(m)).collect(),
             };
             let (rows, inputs) = run_segments(&workloads, &options);
@@ -204,14 +222,30 @@ fn run_segments(workloads: &[Workload], options: &Options) -> (Vec<Row>, Vec<Inp
     std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("cannot create {}: {e}", dir.display()));
     let (mut rows, mut inputs) = (Vec::new(), Vec::new());
     for &workload in workloads {
-        let Workload::Segments(method) = workload else { unreachable!("segment workloads only") };
         for &n in &options.sizes {
             eprintln!("generating {} segments ({}) ...", n, workload.name());
             let start = Instant::now();
-            let generated = segments::generate(method, n, input::SEED);
+            let generated = match workload {
+                Workload::Segments(method) => segments::generate(method, n, input::SEED),
+                Workload::Parallel => {
+                    segments::Generated { segments: segments::parallel(n, input::SEED), draws: n as u64, ..Default::default() }
+                }
+                Workload::Staircase => {
+                    let segments = segments::staircase(n, input::SEED);
+                    segments::Generated { draws: segments.len() as u64, segments, ..Default::default() }
+                }
+                Workload::Points => unreachable!("segment workloads only"),
+            };
             let seconds = start.elapsed().as_secs_f64();
-            let least_gap = segments::verify(&generated.segments)
-                .unwrap_or_else(|e| panic!("generator bug, {} n = {n}: {e}", workload.name()));
+            // The issue-11 shapes are legal by construction (and unit-tested
+            // so); the grid check refuses shared endpoints and would choke on
+            // long segments. segvoronoi's own exact input check still runs.
+            let least_gap = match workload {
+                Workload::Segments(_) => segments::verify(&generated.segments)
+                    .unwrap_or_else(|e| panic!("generator bug, {} n = {n}: {e}", workload.name())),
+                _ => None,
+            };
+            let n = generated.segments.len();
             let file = dir.join(format!("{}-{n}.bin", workload.name()));
             segments::write_file(&file, &generated.segments).unwrap_or_else(|e| panic!("cannot write {}: {e}", file.display()));
             inputs.push(InputInfo {
@@ -223,6 +257,7 @@ fn run_segments(workloads: &[Workload], options: &Options) -> (Vec<Row>, Vec<Inp
                 restarts: generated.restarts,
                 mean_length: generated.mean_length(),
                 least_gap,
+                axis_share: segments::axis_parallel_share(&generated.segments),
             });
             drop(generated);
             for who in everyone(options) {
@@ -248,6 +283,7 @@ fn parse_list<T>(value: &str, parse: impl Fn(&str) -> Result<T, String>) -> Resu
 
 fn parse_options(args: &[String]) -> Result<Options, String> {
     let mut suite = Suite::Points;
+    let mut workloads = vec![Workload::Segments(Method::Short)];
     let mut sizes = None;
     let mut runs = 5;
     let mut contenders = None;
@@ -260,9 +296,14 @@ fn parse_options(args: &[String]) -> Result<Options, String> {
             "--input" | "--suite" => {
                 suite = match value.as_str() {
                     "points" => Suite::Points,
-                    "segments" => Suite::Segments,
                     "seed" => Suite::Seed,
-                    _ => return Err(format!("unknown input {value:?} (points, segments or seed)")),
+                    _ => {
+                        workloads = parse_list(value, |s| match Workload::parse(s) {
+                            Some(w @ (Workload::Segments(Method::Short) | Workload::Parallel | Workload::Staircase)) => Ok(w),
+                            _ => Err(format!("unknown input {s:?} (points, seed, or a list of segments, parallel, staircase)")),
+                        })?;
+                        Suite::Segments
+                    }
                 }
             }
             "--sizes" => {
@@ -292,22 +333,29 @@ fn parse_options(args: &[String]) -> Result<Options, String> {
             _ => return Err(format!("unknown option {flag}")),
         }
     }
+    let issue11 = workloads.iter().any(|w| matches!(w, Workload::Parallel | Workload::Staircase));
     let sizes = sizes.unwrap_or_else(|| match suite {
+        Suite::Segments if issue11 => vec![16_384, 65_536, 262_144],
         Suite::Points | Suite::Segments => vec![10_000, 100_000, 1_000_000],
         Suite::Seed => vec![256, 512, 1024, 2048, 4096],
     });
     let contenders = match (contenders, suite) {
-        (Some(list), Suite::Points) => list,
+        (Some(list), Suite::Points) => {
+            if let Some(c) = list.iter().find(|c| !c.takes_points()) {
+                return Err(format!("{} is benchmarked on segments only", c.name()));
+            }
+            list
+        }
         (Some(list), _) => {
             if let Some(c) = list.iter().find(|c| !c.takes_segments()) {
                 return Err(format!("{} takes no line segments", c.name()));
             }
             list
         }
-        (None, Suite::Points) => Contender::available(),
+        (None, Suite::Points) => Contender::available().into_iter().filter(|c| c.takes_points()).collect(),
         (None, _) => Contender::available().into_iter().filter(|c| c.takes_segments()).collect(),
     };
-    Ok(Options { suite, sizes, runs, contenders, methods, timeout })
+    Ok(Options { suite, workloads, sizes, runs, contenders, methods, timeout })
 }
 
 /// Runs one measurement in a fresh process and parses its one-line report:
@@ -400,7 +448,7 @@ fn child(args: &[String]) {
             println!("RESULT {}", peak_rss_kib());
             drop(points);
         }
-        (Workload::Segments(_), Who::Input) => {
+        (_, Who::Input) => {
             // segvoronoi's `f64` form, the largest (32 bytes a segment).
             let segments = segments::read_file(&file(), segments::to_float).expect("input file");
             let segments = std::hint::black_box(segments);
@@ -410,7 +458,7 @@ fn child(args: &[String]) {
         (_, Who::Lib(contender)) => {
             let m = match workload {
                 Workload::Points => measure(contender, n, runs),
-                Workload::Segments(_) => measure_segments(contender, &file(), runs),
+                _ => measure_segments(contender, &file(), runs),
             };
             let seconds: Vec<String> = m.seconds.iter().map(|s| format!("{s:.9}")).collect();
             let [sx, sy] = m.vertex_sum.map(|s| format!("{:x}", s.to_bits()));

@@ -5,35 +5,37 @@ use crate::{InputInfo, Row, Who, Workload};
 
 pub fn print_all(rows: &[Row], runs: usize) {
     println!("\n### Build time and peak memory ({runs} runs each)\n");
-    print_times(rows);
+    print_times(rows, false);
     println!("\n### Output sizes (sanity check)\n");
     print_counts(rows);
     println!("\n### Scaling\n");
-    print_scaling(rows);
+    print_scaling(rows, false);
     print_failures(rows);
 }
 
 /// The tables of a `--input segments` run.
 pub fn print_segments(rows: &[Row], inputs: &[InputInfo], runs: usize) {
-    println!("\n### Input (generated once per size, checked disjoint)\n");
-    println!("| segments | generation s | draws | mean length | least gap |");
-    println!("|---:|---:|---:|---:|---:|");
+    println!("\n### Input (generated once per size; random segments checked disjoint, the others legal by construction)\n");
+    println!("| input | segments | generation s | draws | mean length | least gap | axis-parallel |");
+    println!("|---|---:|---:|---:|---:|---:|---:|");
     for i in inputs {
         println!(
-            "| {} | {:.2} | {} | {:.0} | {} |",
+            "| {} | {} | {:.2} | {} | {:.0} | {} | {:.1} % |",
+            i.workload.name(),
             thousands(i.n),
             i.seconds,
             thousands(i.draws as usize),
             i.mean_length,
-            i.least_gap.map_or("—".into(), |g| format!("{g:.1}"))
+            i.least_gap.map_or("—".into(), |g| format!("{g:.1}")),
+            100.0 * i.axis_share
         );
     }
     println!("\n### Build time and peak memory ({runs} runs each)\n");
-    print_times(rows);
+    print_times(rows, true);
     println!("\n### Output sizes (sanity check)\n");
     print_segment_counts(rows);
     println!("\n### Scaling\n");
-    print_scaling(rows);
+    print_scaling(rows, true);
     println!();
     print_slopes(rows, |w| w.name());
     print_failures(rows);
@@ -135,7 +137,7 @@ fn relative(d: f64) -> String {
 fn method_number(workload: Workload) -> u8 {
     match workload {
         Workload::Segments(m) => m.number(),
-        Workload::Points => 0,
+        _ => 0,
     }
 }
 
@@ -189,8 +191,8 @@ fn print_failures(rows: &[Row]) {
 /// endpoints and the open segment, so on disjoint segments all report 3n
 /// cells; vertices and edges are compared with segvoronoi's.
 fn print_segment_counts(rows: &[Row]) {
-    println!("| size | contender | cells | Voronoi vertices | edges | vertices minus segvoronoi's | edges minus segvoronoi's | vertex sums vs segvoronoi's (relative) |");
-    println!("|---:|---|---:|---:|---:|---:|---:|---:|");
+    println!("| input | size | contender | cells | Voronoi vertices | edges | vertices minus segvoronoi's | edges minus segvoronoi's | vertex sums vs segvoronoi's (relative) |");
+    println!("|---|---:|---|---:|---:|---:|---:|---:|---:|");
     for row in rows {
         let (Who::Lib(c), Some(m)) = (row.who, measured(row)) else { continue };
         let reference = rows
@@ -200,7 +202,8 @@ fn print_segment_counts(rows: &[Row]) {
         let delta = |f: fn(&Measured) -> usize| reference.map_or("—".into(), |s| format!("{:+}", f(m) as i64 - f(s) as i64));
         let sums = reference.map_or("—".into(), |s| relative(sum_difference(m, s)));
         println!(
-            "| {} | {} | {} | {} | {} | {} | {} | {sums} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {sums} |",
+            row.workload.name(),
             thousands(row.n),
             c.name(),
             thousands(m.sites),
@@ -212,26 +215,39 @@ fn print_segment_counts(rows: &[Row]) {
     }
 }
 
-fn print_times(rows: &[Row]) {
-    println!("| size | contender | median s | min s | peak RSS MiB | time vs segvoronoi |");
-    println!("|---:|---|---:|---:|---:|---:|");
+/// One line per child; `with_input` adds the workload's name (segment runs
+/// may hold several) and, where CGAL ran on the same input, each time
+/// against CGAL's.
+fn print_times(rows: &[Row], with_input: bool) {
+    let cgal = with_input && rows.iter().any(|r| r.who == Who::Lib(Contender::Cgal));
+    let (input_head, input_rule) = if with_input { ("| input ", "|---") } else { ("", "") };
+    let (cgal_head, cgal_rule) = if cgal { (" time vs cgal |", "---:|") } else { ("", "") };
+    println!("{input_head}| size | contender | median s | min s | peak RSS MiB | time vs segvoronoi |{cgal_head}");
+    println!("{input_rule}|---:|---|---:|---:|---:|---:|{cgal_rule}");
     for row in rows {
         let label = match row.who {
             Who::Input => "input only (baseline)",
             Who::Lib(c) => c.name(),
         };
-        let (median_s, min_s, ratio) = match measured(row) {
-            Some(m) => {
-                let ratio = segvoronoi_median(rows, row.n).map_or("—".into(), |s| format!("{:.2}×", median(m) / s));
-                (format!("{:.4}", median(m)), format!("{:.4}", min(m)), ratio)
-            }
-            None => ("—".into(), "—".into(), "—".into()),
+        let against = |c: Contender| {
+            let reference = median_of(rows, row.workload, row.n, c);
+            measured(row).zip(reference).map_or("—".into(), |(m, s)| format!("{:.2}×", median(m) / s))
+        };
+        let (median_s, min_s) = match measured(row) {
+            Some(m) => (format!("{:.4}", median(m)), format!("{:.4}", min(m))),
+            None => ("—".into(), "—".into()),
         };
         let peak = match &row.result {
             Ok(report) => format!("{:.1}", report.peak_kib as f64 / 1024.0),
             Err(_) => "failed".into(),
         };
-        println!("| {} | {label} | {median_s} | {min_s} | {peak} | {ratio} |", thousands(row.n));
+        let input = if with_input { format!("| {} ", row.workload.name()) } else { String::new() };
+        let versus_cgal = if cgal { format!(" {} |", against(Contender::Cgal)) } else { String::new() };
+        println!(
+            "{input}| {} | {label} | {median_s} | {min_s} | {peak} | {} |{versus_cgal}",
+            thousands(row.n),
+            against(Contender::Segvoronoi)
+        );
     }
 }
 
@@ -250,10 +266,11 @@ fn print_counts(rows: &[Row]) {
 /// Time per point, and the exponent `log(t2/t1) / log(n2/n1)` between each
 /// size and the next smaller one: 1.0 is linear, n log n shows as a little
 /// above 1.
-fn print_scaling(rows: &[Row]) {
+fn print_scaling(rows: &[Row], with_input: bool) {
     let unit = rows.first().map_or("point", |r| if r.workload == Workload::Points { "point" } else { "segment" });
-    println!("| size | contender | ns per {unit} | growth exponent from previous size |");
-    println!("|---:|---|---:|---:|");
+    let (input_head, input_rule) = if with_input { ("| input ", "|---") } else { ("", "") };
+    println!("{input_head}| size | contender | ns per {unit} | growth exponent from previous size |");
+    println!("{input_rule}|---:|---|---:|---:|");
     for row in rows {
         let (Who::Lib(c), Some(m)) = (row.who, measured(row)) else { continue };
         let t = median(m);
@@ -264,7 +281,8 @@ fn print_scaling(rows: &[Row]) {
             .max_by_key(|&(n, _)| n);
         let exponent =
             previous.map_or("—".into(), |(n1, t1)| format!("{:.3}", (t / t1).ln() / (row.n as f64 / n1 as f64).ln()));
-        println!("| {} | {} | {:.0} | {exponent} |", thousands(row.n), c.name(), t * 1e9 / row.n as f64);
+        let input = if with_input { format!("| {} ", row.workload.name()) } else { String::new() };
+        println!("{input}| {} | {} | {:.0} | {exponent} |", thousands(row.n), c.name(), t * 1e9 / row.n as f64);
     }
 }
 
@@ -272,8 +290,9 @@ fn measured(row: &Row) -> Option<&Measured> {
     row.result.as_ref().ok().and_then(|r| r.measured.as_ref())
 }
 
-fn segvoronoi_median(rows: &[Row], n: usize) -> Option<f64> {
-    rows.iter().find(|r| r.n == n && r.who == Who::Lib(Contender::Segvoronoi)).and_then(measured).map(median)
+/// The median time of contender `c` on the same input.
+fn median_of(rows: &[Row], workload: Workload, n: usize, c: Contender) -> Option<f64> {
+    rows.iter().find(|r| r.workload == workload && r.n == n && r.who == Who::Lib(c)).and_then(measured).map(median)
 }
 
 pub fn median(m: &Measured) -> f64 {

@@ -63,8 +63,67 @@ pub(crate) fn solved_circle(sites: &[Site; 3]) -> Option<(Point, f64)> {
     // solved again finer and polished against the sites themselves.
     if fault::active() {
         solved
+    } else if ill_conditioned {
+        // Certainly polished, at a few microseconds; the same circle is
+        // asked for again and again while one segment goes in (the path
+        // search and the growth both ask for the two crossings of an edge,
+        // and the placement for the vertex they become), so the answers
+        // are remembered. A pure function of the sites, so the memo never
+        // changes an answer.
+        POLISHED.with(|memo| memo.borrow_mut().get_or_insert(sites, || oracle::polish_vertex(sites, solved, true).or(solved)))
     } else {
-        oracle::polish_vertex(sites, solved, ill_conditioned).or(solved)
+        oracle::polish_vertex(sites, solved, false).or(solved)
+    }
+}
+
+thread_local! {
+    /// The last polished circles, by their sites (see `solved_circle`).
+    static POLISHED: std::cell::RefCell<Memo> = std::cell::RefCell::new(Memo::new());
+}
+
+/// Slots of the [`Memo`] (a power of two): enough for the crossings one
+/// long segment's insertion asks about (each slot about 130 bytes).
+const MEMO_SLOTS: usize = 512;
+
+/// A direct-mapped memo from three sites (their kinds and coordinates, bit
+/// for bit) to a circle: each triple has one slot, a later triple with the
+/// same slot replaces it.
+struct Memo(Vec<Option<([u64; 13], Option<(Point, f64)>)>>);
+
+impl Memo {
+    fn new() -> Memo {
+        Memo(vec![None; MEMO_SLOTS])
+    }
+
+    /// The circle remembered for `sites`, or `solve()`, then remembered.
+    fn get_or_insert(&mut self, sites: &[Site; 3], solve: impl FnOnce() -> Option<(Point, f64)>) -> Option<(Point, f64)> {
+        let key = Memo::key(sites);
+        // FxHash's multiply-and-rotate over the key's words
+        let hash = key.iter().fold(0u64, |h, &w| (h.rotate_left(5) ^ w).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95));
+        let slot = &mut self.0[(hash >> 32) as usize & (MEMO_SLOTS - 1)];
+        match slot {
+            Some((k, circle)) if *k == key => *circle,
+            _ => {
+                let circle = solve();
+                *slot = Some((key, circle));
+                circle
+            }
+        }
+    }
+
+    /// The sites as words: per site its kind, then four coordinates (a
+    /// point's twice), so no two different triples share a key.
+    fn key(sites: &[Site; 3]) -> [u64; 13] {
+        let mut key = [0u64; 13];
+        for (k, site) in sites.iter().enumerate() {
+            let (kind, a, b) = match *site {
+                Site::Point(p) => (1, p, p),
+                Site::Segment { a, b } => (2, a, b),
+            };
+            key[0] |= kind << (8 * k);
+            key[1 + 4 * k..5 + 4 * k].copy_from_slice(&[a.x, a.y, b.x, b.y].map(f64::to_bits));
+        }
+        key
     }
 }
 

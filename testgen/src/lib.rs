@@ -2,7 +2,7 @@
 //! of the CGAL cross-check (`c_tests/cgal_crosscheck.cpp` reads the files
 //! that [`write_text`] writes), its randomised search ([`search`]), the
 //! shapes of the cargo tests ([`shapes`]) and the benchmark's inputs
-//! ([`bench`]).
+//! ([`bench`], [`long_segments`]).
 //!
 //! Everything is driven by one generator, [`Rng`] (SplitMix64), so that an
 //! input depends on nothing but its family, size and seed, on every
@@ -21,6 +21,7 @@
 
 pub mod bench;
 pub mod exact;
+pub mod long_segments;
 mod near_degenerate;
 mod points;
 pub mod rings;
