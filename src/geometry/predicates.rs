@@ -62,6 +62,23 @@ pub(crate) fn exact_orientation(a: Point, b: Point, c: Point) -> Orientation {
     sign_of(robust::orient2d(coord(a), coord(b), coord(c)))
 }
 
+/// The order of the directions from `centre` to `p` and to `q` by angle
+/// counter-clockwise from the positive x axis, in `[0, 2π)`, exactly: by the
+/// half-plane first (angles in `[0, π)`, then `[π, 2π)`), then by the exact
+/// orientation within one. Equal directions compare equal.
+pub(crate) fn compare_directions(centre: Point, p: Point, q: Point) -> std::cmp::Ordering {
+    let lower = |r: Point| r.y < centre.y || (r.y == centre.y && r.x < centre.x);
+    match (lower(p), lower(q)) {
+        (false, true) => std::cmp::Ordering::Less,
+        (true, false) => std::cmp::Ordering::Greater,
+        _ => match exact_orientation(centre, p, q) {
+            Orientation::CounterClockwise => std::cmp::Ordering::Less,
+            Orientation::Clockwise => std::cmp::Ordering::Greater,
+            Orientation::Collinear => std::cmp::Ordering::Equal,
+        },
+    }
+}
+
 /// The turn from the direction `a → b` to the direction `c → d`: the sign
 /// of `cross(b − a, d − c)`, exact (counter-clockwise: `d − c` points left
 /// of `b − a`; collinear: the directions are parallel or opposite). For
@@ -263,6 +280,20 @@ mod tests {
         assert!(strictly_between(p(1., 0.), p(1., 4.), p(1., 2.)));
         assert!(!strictly_between(p(1., 0.), p(1., 4.), p(1., 4.)));
         assert!(!strictly_between(p(1., 0.), p(1., 4.), p(1., -2.)));
+    }
+
+    #[test]
+    fn directions_sort_by_angle_exactly() {
+        // around the origin, so that 1e-300 off the axis is not rounded away
+        let c = Point::new(0.0, 0.0);
+        let at = Point::new;
+        let mut d =
+            vec![at(0.0, -1.0), at(-1.0, 0.0), at(1.0, 1e-300), at(1.0, 0.0), at(-1.0, -1e-300), at(0.0, 1.0), at(1.0, -1e-300)];
+        d.sort_by(|&p, &q| compare_directions(c, p, q));
+        let expected =
+            vec![at(1.0, 0.0), at(1.0, 1e-300), at(0.0, 1.0), at(-1.0, 0.0), at(-1.0, -1e-300), at(0.0, -1.0), at(1.0, -1e-300)];
+        assert_eq!(d, expected);
+        assert_eq!(compare_directions(c, at(2.0, 2.0), at(1.0, 1.0)), std::cmp::Ordering::Equal);
     }
 
     #[test]

@@ -13,6 +13,7 @@ use std::collections::HashMap;
 
 use super::Piece;
 use crate::construct::polygon_input::RingInput;
+use crate::geometry::predicates::compare_directions;
 use crate::geometry::Point;
 
 /// The pieces reordered so that each ring's pieces come first, in ring
@@ -32,15 +33,12 @@ pub(super) fn split_rings(pieces: Vec<Piece>, rings: &[RingInput], input_segment
         at.entry(key(p.ends[0])).or_default().push((k, true));
         at.entry(key(p.ends[1])).or_default().push((k, false));
     }
-    // pair neighbours in angular order: (0, 1), (2, 3), ...
+    // pair neighbours in (exact) angular order: (0, 1), (2, 3), ...
     let mut partner: HashMap<([u64; 2], usize), usize> = HashMap::new();
     for (point, list) in &mut at {
         let here = Point::new(f64::from_bits(point[0]), f64::from_bits(point[1]));
         let away = |&(k, starts): &(usize, bool)| boundary[k].ends[usize::from(starts)];
-        list.sort_by(|x, y| {
-            let (p, q) = (away(x), away(y));
-            (p.y - here.y).atan2(p.x - here.x).total_cmp(&(q.y - here.y).atan2(q.x - here.x))
-        });
+        list.sort_by(|x, y| compare_directions(here, away(x), away(y)));
         for pair in list.chunks(2) {
             if let [x, y] = pair {
                 partner.insert((*point, x.0), y.0);
