@@ -24,38 +24,32 @@ if(NOT SEGVORONOI_CGAL_INCLUDE_DIR OR NOT SEGVORONOI_BOOST_INCLUDE_DIR
   return()
 endif()
 
-add_executable(segvoronoi_cgal_check ${CMAKE_CURRENT_LIST_DIR}/cgal_crosscheck.cpp)
-set_target_properties(segvoronoi_cgal_check PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON CXX_EXTENSIONS OFF)
-target_include_directories(segvoronoi_cgal_check SYSTEM PRIVATE
-  ${SEGVORONOI_CGAL_INCLUDE_DIR} ${SEGVORONOI_BOOST_INCLUDE_DIR})
-# -O2 whatever the build type: CGAL unoptimised is too slow for 100k points.
-target_compile_options(segvoronoi_cgal_check PRIVATE -O2)
-# CGAL's interval filter switches the rounding mode; GCC must not fold
-# floating-point expressions across that (CGAL's own setup adds the same).
-if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-  target_compile_options(segvoronoi_cgal_check PRIVATE -frounding-math)
-endif()
-target_link_libraries(segvoronoi_cgal_check PRIVATE
-  segvoronoi::segvoronoi ${SEGVORONOI_MPFR_LIBRARY} ${SEGVORONOI_GMP_LIBRARY})
+# A CGAL program: C++17, CGAL and Boost as system headers, GMP and MPFR.
+function(segvoronoi_cgal_program name source)
+  add_executable(${name} ${CMAKE_CURRENT_LIST_DIR}/${source})
+  set_target_properties(${name} PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON CXX_EXTENSIONS OFF)
+  target_include_directories(${name} SYSTEM PRIVATE ${SEGVORONOI_CGAL_INCLUDE_DIR} ${SEGVORONOI_BOOST_INCLUDE_DIR})
+  # -O2 whatever the build type: CGAL unoptimised is too slow for 100k points.
+  target_compile_options(${name} PRIVATE -O2)
+  # CGAL's interval filter switches the rounding mode; GCC must not fold
+  # floating-point expressions across that (CGAL's own setup adds the same).
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    target_compile_options(${name} PRIVATE -frounding-math)
+  endif()
+  target_link_libraries(${name} PRIVATE segvoronoi::segvoronoi ${SEGVORONOI_MPFR_LIBRARY} ${SEGVORONOI_GMP_LIBRARY})
+endfunction()
+
+segvoronoi_cgal_program(segvoronoi_cgal_check cgal_crosscheck.cpp)
 
 # Splitting mode (issue 11) against CGAL's own splitting: segvoronoi_cgal_split
 # builds crossing inputs it generates itself with split_crossings on and in
 # CGAL's segment Delaunay graph with intersections, and compares the pairs of
 # sites of positive-length Voronoi edges (see the top of cgal_split.cpp).
 # Same include and link setup as segvoronoi_cgal_check; no generator needed.
-add_executable(segvoronoi_cgal_split ${CMAKE_CURRENT_LIST_DIR}/cgal_split.cpp)
-set_target_properties(segvoronoi_cgal_split PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON CXX_EXTENSIONS OFF)
-target_include_directories(segvoronoi_cgal_split SYSTEM PRIVATE
-  ${SEGVORONOI_CGAL_INCLUDE_DIR} ${SEGVORONOI_BOOST_INCLUDE_DIR})
-target_compile_options(segvoronoi_cgal_split PRIVATE -O2)
-if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-  target_compile_options(segvoronoi_cgal_split PRIVATE -frounding-math)
-endif()
-target_link_libraries(segvoronoi_cgal_split PRIVATE
-  segvoronoi::segvoronoi ${SEGVORONOI_MPFR_LIBRARY} ${SEGVORONOI_GMP_LIBRARY})
+segvoronoi_cgal_program(segvoronoi_cgal_split cgal_split.cpp)
 
-# The test cgal_split_<family>_<n>: family, segment count, seed, and for the
-# general families the least agreement required (see the measurements there).
+# The test cgal_split_<family>_<n>: family, segment count, seed, and any
+# more options of segvoronoi_cgal_split.
 function(segvoronoi_cgal_split_test family count seed)
   add_test(NAME cgal_split_${family}_${count}_seed${seed}
            COMMAND segvoronoi_cgal_split --family ${family} --n ${count} --seed ${seed} ${ARGN})

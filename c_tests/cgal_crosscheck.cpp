@@ -90,6 +90,7 @@
 #include <utility>
 #include <vector>
 
+#include "cgal_rational.hpp"
 #include "segvoronoi.h"
 
 #ifndef SEGVORONOI_TESTGEN_PATH
@@ -556,22 +557,6 @@ void add_delaunay_sections(const Sdg& sdg, const Sites& sites, Topology& topolog
     }
 }
 
-// Whether the rational q is the square of a rational, and if so its root.
-bool rational_sqrt(const CGAL::Gmpq& q, CGAL::Gmpq& root) {
-    if (q < 0) return false;
-    mpz_t num, den;
-    mpz_init_set(num, mpq_numref(q.mpq()));
-    mpz_init_set(den, mpq_denref(q.mpq()));
-    const bool square = mpz_perfect_square_p(num) && mpz_perfect_square_p(den);
-    if (square) {
-        mpz_sqrt(num, num);
-        mpz_sqrt(den, den);
-        root = CGAL::Gmpq(CGAL::Gmpz(num), CGAL::Gmpz(den));
-    }
-    mpz_clear(num);
-    mpz_clear(den);
-    return square;
-}
 
 // The circle through the points p, q tangent to the line of the segment s
 // with p, q and the touching point counter-clockwise (the Voronoi vertex of
@@ -580,36 +565,8 @@ bool rational_sqrt(const CGAL::Gmpq& q, CGAL::Gmpq& root) {
 // square.
 bool rational_pps(const K::Point_2& p, const K::Point_2& q, const K::Segment_2& s, CGAL::Gmpq& x, CGAL::Gmpq& y) {
     using Q = CGAL::Gmpq;
-    const Q px(p.x()), py(p.y()), qx(q.x()), qy(q.y());
-    const Q ax(s.source().x()), ay(s.source().y()), bx(s.target().x()), by(s.target().y());
-    const Q nx = ay - by, ny = bx - ax, c = nx * ax + ny * ay, n2 = nx * nx + ny * ny;
-    const Q mx = (px + qx) / Q(2), my = (py + qy) / Q(2);
-    const Q dx = py - qy, dy = qx - px;
-    const Q alpha = nx * mx + ny * my - c, beta = nx * dx + ny * dy;
-    const Q mp2 = (mx - px) * (mx - px) + (my - py) * (my - py), d2 = dx * dx + dy * dy;
-    const Q qa = n2 * d2 - beta * beta, qb = Q(-2) * alpha * beta, qc = n2 * mp2 - alpha * alpha;
-    std::vector<Q> roots;
-    if (qa == 0) {
-        if (qb == 0) return false;
-        roots.push_back(-qc / qb);
-    } else {
-        Q root;
-        if (!rational_sqrt(qb * qb - Q(4) * qa * qc, root)) return false;
-        roots.push_back((-qb + root) / (Q(2) * qa));
-        roots.push_back((-qb - root) / (Q(2) * qa));
-    }
-    for (const Q& t : roots) {
-        const Q cx = mx + t * dx, cy = my + t * dy;
-        // the touching point: the foot of the centre on the line
-        const Q k = (nx * cx + ny * cy - c) / n2;
-        const Q tx = cx - k * nx, ty = cy - k * ny;
-        if ((qx - px) * (ty - py) - (qy - py) * (tx - px) > 0) {
-            x = cx;
-            y = cy;
-            return true;
-        }
-    }
-    return false;
+    const auto exact = [](const K::Point_2& r) { return QPoint{Q(r.x()), Q(r.y())}; };
+    return rational_pps(exact(p), exact(q), exact(s.source()), exact(s.target()), x, y);
 }
 
 // The Voronoi vertex of the face (a, b, c) (counter-clockwise) exactly,

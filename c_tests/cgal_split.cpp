@@ -85,6 +85,7 @@
 #include <utility>
 #include <vector>
 
+#include "cgal_rational.hpp"
 #include "segvoronoi.h"
 
 namespace {
@@ -588,11 +589,6 @@ using Q = CGAL::Gmpq;
 
 // The exact point of a point site: an input point, or the crossing of its
 // two supporting segments' lines solved in rationals.
-struct QPoint {
-    Q x, y;
-    bool operator==(const QPoint& o) const { return x == o.x && y == o.y; }
-};
-
 QPoint exact_qpoint(const Site& s) {
     if (s.is_input()) return {Q(s.point().x()), Q(s.point().y())};
     const K::Point_2 &p1 = s.source_of_supporting_site(0), &p2 = s.target_of_supporting_site(0);
@@ -612,60 +608,13 @@ Point exact_point(const Site& s) {
     return {CGAL::to_double(q.x), CGAL::to_double(q.y)};
 }
 
-// Whether the rational q is the square of a rational, and if so its root.
-bool rational_sqrt(const Q& q, Q& root) {
-    if (q < 0) return false;
-    mpz_t num, den;
-    mpz_init_set(num, mpq_numref(q.mpq()));
-    mpz_init_set(den, mpq_denref(q.mpq()));
-    const bool square = mpz_perfect_square_p(num) && mpz_perfect_square_p(den);
-    if (square) {
-        mpz_sqrt(num, num);
-        mpz_sqrt(den, den);
-        root = Q(CGAL::Gmpz(num), CGAL::Gmpz(den));
-    }
-    mpz_clear(num);
-    mpz_clear(den);
-    return square;
-}
-
 // Zero length decided as segvoronoi_cgal_check does (see
 // is_zero_length_sites there: CGAL's is_degenerate_edge misses a circle
 // tangent to a segment at one of the face's points), with exact rational
 // points for the intersection sites: the Voronoi vertex of a face in
 // rationals where it is rational (three points; two points and a segment
 // from one of them; two points and a segment when the tangent circle is
-// rational), else CGAL's predicate.
-bool rational_pps(const QPoint& p, const QPoint& q, const QPoint& a, const QPoint& b, Q& x, Q& y) {
-    const Q nx = a.y - b.y, ny = b.x - a.x, c = nx * a.x + ny * a.y, n2 = nx * nx + ny * ny;
-    const Q mx = (p.x + q.x) / Q(2), my = (p.y + q.y) / Q(2);
-    const Q dx = p.y - q.y, dy = q.x - p.x;
-    const Q alpha = nx * mx + ny * my - c, beta = nx * dx + ny * dy;
-    const Q mp2 = (mx - p.x) * (mx - p.x) + (my - p.y) * (my - p.y), d2 = dx * dx + dy * dy;
-    const Q qa = n2 * d2 - beta * beta, qb = Q(-2) * alpha * beta, qc = n2 * mp2 - alpha * alpha;
-    std::vector<Q> roots;
-    if (qa == 0) {
-        if (qb == 0) return false;
-        roots.push_back(-qc / qb);
-    } else {
-        Q root;
-        if (!rational_sqrt(qb * qb - Q(4) * qa * qc, root)) return false;
-        roots.push_back((-qb + root) / (Q(2) * qa));
-        roots.push_back((-qb - root) / (Q(2) * qa));
-    }
-    for (const Q& t : roots) {
-        const Q cx = mx + t * dx, cy = my + t * dy;
-        const Q k = (nx * cx + ny * cy - c) / n2;
-        const Q tx = cx - k * nx, ty = cy - k * ny;
-        if ((q.x - p.x) * (ty - p.y) - (q.y - p.y) * (tx - p.x) > 0) {
-            x = cx;
-            y = cy;
-            return true;
-        }
-    }
-    return false;
-}
-
+// rational, cgal_rational.hpp), else CGAL's predicate.
 bool rational_vertex(const Site& a, const Site& b, const Site& c, Q& x, Q& y) {
     std::vector<QPoint> points;
     const Site* segment = nullptr;
