@@ -35,7 +35,7 @@ prefix="$work/moved"
 
 echo "--- downstream: c_tests, copied out of the repository, through find_package(segvoronoi)"
 mkdir "$work/consumer"
-cp "$repo"/c_tests/*.c "$repo"/c_tests/*.cpp "$repo"/c_tests/*.cmake "$repo"/c_tests/CMakeLists.txt "$work/consumer/"
+cp "$repo"/c_tests/*.c "$repo"/c_tests/*.cpp "$repo"/c_tests/*.hpp "$repo"/c_tests/*.cmake "$repo"/c_tests/CMakeLists.txt "$work/consumer/"
 cp -r "$repo"/c_tests/fixtures "$work/consumer/"
 # The cross-check's input generator is built from the source tree (cargo).
 cmake -S "$work/consumer" -B "$work/c_tests" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
