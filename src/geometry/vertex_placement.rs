@@ -88,7 +88,10 @@ const MEMO_SLOTS: usize = 512;
 /// A direct-mapped memo from three sites (their kinds and coordinates, bit
 /// for bit) to a circle: each triple has one slot, a later triple with the
 /// same slot replaces it.
-struct Memo(Vec<Option<([u64; 13], Option<(Point, f64)>)>>);
+struct Memo(Vec<Option<Remembered>>);
+
+/// Three sites bit for bit (see [`Memo::key`]) and their circle.
+type Remembered = ([u64; 13], Option<(Point, f64)>);
 
 impl Memo {
     fn new() -> Memo {
