@@ -24,8 +24,7 @@ pub(crate) fn diagram_of_split(points: &[Point], segments: &[[Point; 2]], rings:
         diagram.set_domain(&split_rings_over_pieces);
     }
     let origins: Vec<Vec<u32>> = split.pieces.iter().map(|p| p.origins.clone()).collect();
-    let displacement = max_displacement(&split, segments);
-    diagram.split = Some(Box::new(SplitPieces::new(&origins, segments.len(), displacement, split.pixel)));
+    diagram.split = Some(Box::new(SplitPieces::new(&origins, segments.len(), split.max_displacement, split.pixel)));
     let stats = &mut diagram.stats;
     stats.input_segments = segments.len();
     stats.pieces = split.pieces.len();
@@ -34,35 +33,6 @@ pub(crate) fn diagram_of_split(points: &[Point], segments: &[[Point; 2]], rings:
     stats.touchings = split.touchings;
     stats.snap_rounds = split.rounds;
     Ok(diagram)
-}
-
-/// The largest distance from a piece's endpoint to an input segment it
-/// came from: the distance to a segment is convex, so no point of the
-/// piece is farther.
-fn max_displacement(split: &SplitInput, segments: &[[Point; 2]]) -> f64 {
-    let mut worst = 0.0f64;
-    for piece in &split.pieces {
-        for &i in &piece.origins {
-            for q in piece.ends {
-                worst = worst.max(distance_to_segment(q, segments[i as usize]));
-            }
-        }
-    }
-    worst
-}
-
-fn distance_to_segment(q: Point, [a, b]: [Point; 2]) -> f64 {
-    // in the segment's own frame, scaled to its length so that neither
-    // huge nor tiny coordinates overflow
-    let scale = (b.x - a.x).abs().max((b.y - a.y).abs()).max((q.x - a.x).abs()).max((q.y - a.y).abs());
-    if scale == 0.0 {
-        return 0.0;
-    }
-    let (dx, dy) = ((b.x - a.x) / scale, (b.y - a.y) / scale);
-    let (qx, qy) = ((q.x - a.x) / scale, (q.y - a.y) / scale);
-    let len2 = dx * dx + dy * dy;
-    let t = if len2 == 0.0 { 0.0 } else { ((qx * dx + qy * dy) / len2).clamp(0.0, 1.0) };
-    scale * (qx - t * dx).hypot(qy - t * dy)
 }
 
 /// A build error about pieces, its indices turned into the input segments

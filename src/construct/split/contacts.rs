@@ -7,7 +7,8 @@
 //! pieces of its cell. Each test is the exact contact test of
 //! `geometry::segment_contact`.
 
-use crate::construct::grid::{bounding_box, Grid, SegmentCells};
+use super::Layout;
+use crate::construct::grid::bounding_box;
 use crate::geometry::segment_contact::{inside_segment, segment_contact, SegmentContact};
 use crate::geometry::snap::{Pixel, PixelGrid};
 use crate::geometry::Point;
@@ -27,28 +28,19 @@ impl ContactCounts {
     }
 }
 
-/// The pixels where `segments` (non-degenerate) and `points` meet other
-/// than at common endpoints, appended to `hot` (with repeats), and the
-/// counts.
-pub(super) fn contact_pixels(
-    segments: &[[Point; 2]],
-    points: &[Point],
-    pixels: &PixelGrid,
-    hot: &mut Vec<Pixel>,
-) -> ContactCounts {
+/// The pixels where the pieces of `layout` and its points meet other than
+/// at common endpoints, appended to `hot` (with repeats), and the counts.
+pub(super) fn contact_pixels(layout: &Layout, pixels: &PixelGrid, hot: &mut Vec<Pixel>) -> ContactCounts {
     let mut counts = ContactCounts::default();
-    if segments.is_empty() {
-        return counts;
-    }
-    let listed: Vec<(usize, [Point; 2])> = segments.iter().copied().enumerate().collect();
-    let grid = Grid::for_segments(&listed);
-    let cells = SegmentCells::new(&grid, &listed);
+    let Some((grid, cells)) = &layout.grid else { return counts };
+    let segments: Vec<[Point; 2]> = layout.proper.iter().map(|&(_, s)| s).collect();
+    let points = &layout.lone;
     let m = segments.len();
     let mut items: Vec<(u64, usize)> = Vec::with_capacity(cells.cells.len() + points.len());
     for i in 0..m {
         items.extend(cells.of(i as u32).iter().map(|&c| (c, i)));
     }
-    let (lo, hi) = bounding_box(&listed);
+    let (lo, hi) = bounding_box(&layout.proper);
     for (k, &q) in points.iter().enumerate() {
         if lo.x <= q.x && q.x <= hi.x && lo.y <= q.y && q.y <= hi.y {
             items.push((grid.cell_of(q), m + k));

@@ -47,10 +47,11 @@ mod contacts;
 mod rings;
 mod route;
 
+use crate::construct::grid::{Grid, SegmentCells};
 use crate::error::{Error, ErrorKind};
 use crate::geometry::scale::Scale;
 use crate::geometry::snap::PixelGrid;
-use crate::geometry::Point;
+use crate::geometry::{Point, Site};
 pub(crate) use build::diagram_of_split;
 use contacts::{contact_pixels, ContactCounts};
 use route::{route, HotPixels};
@@ -84,6 +85,9 @@ pub(crate) struct SplitInput {
     pub rounds: usize,
     /// The pixel side, in input coordinates.
     pub pixel: f64,
+    /// The largest distance from a piece to an input segment it came from,
+    /// in input coordinates.
+    pub max_displacement: f64,
 }
 
 /// Splits `segments` (finite coordinates) against each other and against
@@ -101,9 +105,9 @@ pub(crate) fn split(points: &[Point], segments: &[[Point; 2]]) -> Result<SplitIn
     let mut first: Option<ContactCounts> = None;
     let mut rounds = 0;
     loop {
-        let (proper, lone) = items(&pieces, &moved);
+        let layout = Layout::of(&pieces, &moved);
         let mut found = Vec::new();
-        let counts = contact_pixels(&proper, &lone, &pixels, &mut found);
+        let counts = contact_pixels(&layout, &pixels, &mut found);
         first.get_or_insert(counts);
         if counts.total() == 0 {
             break;
@@ -119,10 +123,11 @@ pub(crate) fn split(points: &[Point], segments: &[[Point; 2]]) -> Result<SplitIn
             ));
         }
         hot.extend(found);
-        pieces = route(pieces, &hot, &pixels);
+        pieces = route(pieces, &layout, &hot, &pixels);
         moved = moved.into_iter().map(|p| hot.snap(&pixels, p)).collect();
         rounds += 1;
     }
+    let max_displacement = max_displacement(&pieces, segments, internal) * scale.to_input;
     let external = |p: Point| p.scaled(scale.to_input);
     let counts = first.unwrap_or_default();
     Ok(SplitInput {
@@ -133,22 +138,53 @@ pub(crate) fn split(points: &[Point], segments: &[[Point; 2]]) -> Result<SplitIn
         touchings: counts.touchings,
         rounds,
         pixel: pixels.size() * scale.to_input,
+        max_displacement,
     })
 }
 
-/// The items of a contact search: the pieces of nonzero length, and the
-/// points (isolated ones and zero-length pieces).
-fn items(pieces: &[Piece], points: &[Point]) -> (Vec<[Point; 2]>, Vec<Point>) {
-    let mut proper = Vec::with_capacity(pieces.len());
-    let mut lone = points.to_vec();
-    for p in pieces {
-        if p.ends[0] == p.ends[1] {
-            lone.push(p.ends[0]);
-        } else {
-            proper.push(p.ends);
+/// The largest distance from a piece's endpoint to an input segment it
+/// came from, in internal coordinates (where squares cannot overflow): the
+/// distance to a segment is convex, so no point of the piece is farther.
+fn max_displacement(pieces: &[Piece], segments: &[[Point; 2]], internal: impl Fn(Point) -> Point) -> f64 {
+    let mut worst = 0.0f64;
+    for piece in pieces {
+        for &i in &piece.origins {
+            let [a, b] = segments[i as usize].map(&internal);
+            let origin = Site::Segment { a, b };
+            worst = piece.ends.iter().map(|&q| origin.distance(q)).fold(worst, f64::max);
         }
     }
-    (proper, lone)
+    worst
+}
+
+/// The pieces of one round as both its steps (the contact search and the
+/// routing) see them, laid out once: those of nonzero length, by their
+/// index, in a grid; and the points (isolated ones and zero-length pieces).
+pub(super) struct Layout {
+    pub proper: Vec<(usize, [Point; 2])>,
+    pub lone: Vec<Point>,
+    /// The grid of `proper` and each one's cells; `None` when it is empty.
+    pub grid: Option<(Grid, SegmentCells)>,
+}
+
+impl Layout {
+    fn of(pieces: &[Piece], points: &[Point]) -> Layout {
+        let mut proper = Vec::with_capacity(pieces.len());
+        let mut lone = points.to_vec();
+        for (k, p) in pieces.iter().enumerate() {
+            if p.ends[0] == p.ends[1] {
+                lone.push(p.ends[0]);
+            } else {
+                proper.push((k, p.ends));
+            }
+        }
+        let grid = (!proper.is_empty()).then(|| {
+            let grid = Grid::for_segments(&proper);
+            let cells = SegmentCells::new(&grid, &proper);
+            (grid, cells)
+        });
+        Layout { proper, lone, grid }
+    }
 }
 
 #[cfg(test)]

@@ -5,8 +5,7 @@
 
 use std::collections::{HashMap, HashSet};
 
-use super::Piece;
-use crate::construct::grid::{Grid, SegmentCells};
+use super::{Layout, Piece};
 use crate::geometry::snap::{Pixel, PixelGrid};
 use crate::geometry::Point;
 
@@ -37,19 +36,17 @@ impl HotPixels {
 }
 
 /// The pieces after one round of snapping through `hot`.
-pub(super) fn route(pieces: Vec<Piece>, hot: &HotPixels, pixels: &PixelGrid) -> Vec<Piece> {
-    let proper: Vec<(usize, [Point; 2])> =
-        pieces.iter().enumerate().filter(|(_, p)| p.ends[0] != p.ends[1]).map(|(k, p)| (k, p.ends)).collect();
+/// `layout` is the pieces' layout of this round.
+pub(super) fn route(pieces: Vec<Piece>, layout: &Layout, hot: &HotPixels, pixels: &PixelGrid) -> Vec<Piece> {
+    let proper = &layout.proper;
     let mut out = Merged::default();
-    if proper.is_empty() {
+    let Some((grid, cells)) = &layout.grid else {
         for piece in pieces {
             let q = hot.snap(pixels, piece.ends[0]);
             out.push([q, q], piece.origins);
         }
         return out.pieces;
-    }
-    let grid = Grid::for_segments(&proper);
-    let cells = SegmentCells::new(&grid, &proper);
+    };
     // each hot pixel in every cell its square overlaps: a segment meeting
     // the square has a point in one of those cells, and its cover holds it
     let half = pixels.size() / 2.0;
