@@ -23,6 +23,22 @@ impl Point {
         Point::new(self.x + 0.0, self.y + 0.0)
     }
 
+    /// Both coordinates' bits: for points with canonical zeros, equal
+    /// points have equal keys (for hashing and sorting by identity).
+    #[inline]
+    pub(crate) fn bit_key(self) -> [u64; 2] {
+        [self.x.to_bits(), self.y.to_bits()]
+    }
+
+    /// The [`Point::bit_key`]s of a segment's ends, the same in both
+    /// directions.
+    #[inline]
+    pub(crate) fn segment_key(a: Point, b: Point) -> [u64; 4] {
+        let (ka, kb) = (a.bit_key(), b.bit_key());
+        let (lo, hi) = if ka <= kb { (ka, kb) } else { (kb, ka) };
+        [lo[0], lo[1], hi[0], hi[1]]
+    }
+
     /// Squared Euclidean distance.
     #[inline]
     pub fn distance_squared(self, other: Point) -> f64 {

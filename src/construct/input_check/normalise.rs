@@ -17,18 +17,6 @@ pub(super) struct Normalised {
     pub(super) kept_of_input: Vec<Option<usize>>,
 }
 
-/// Bit pattern of a point with canonical zeros: equal points, equal keys.
-fn point_key(p: Point) -> [u64; 2] {
-    [p.x.to_bits(), p.y.to_bits()]
-}
-
-/// Key of a segment, the same in both directions.
-fn segment_key(a: Point, b: Point) -> [u64; 4] {
-    let (ka, kb) = (point_key(a), point_key(b));
-    let (lo, hi) = if ka <= kb { (ka, kb) } else { (kb, ka) };
-    [lo[0], lo[1], hi[0], hi[1]]
-}
-
 /// Zero-length segments become points; repeated segments and points are
 /// dropped (the first one is kept). Segment endpoints take precedence over
 /// isolated points, which take precedence over zero-length segments.
@@ -48,7 +36,7 @@ pub(super) fn normalise(points: &[Point], segments: &[[Point; 2]], internal: imp
             degenerate.push((PointSource::Segment(i), a));
             ends.push(None);
         } else {
-            keyed.push((segment_key(a, b), i as u32));
+            keyed.push((Point::segment_key(a, b), i as u32));
             ends.push(Some([a, b]));
         }
     }
@@ -85,10 +73,10 @@ pub(super) fn normalise(points: &[Point], segments: &[[Point; 2]], internal: imp
     }
     // (The keys are the caller's coordinates: the default hasher's random
     // keys keep crafted input from colliding them.)
-    let mut seen_points: HashSet<[u64; 2]> = out.segments.iter().flat_map(|(_, s)| s.map(point_key)).collect();
+    let mut seen_points: HashSet<[u64; 2]> = out.segments.iter().flat_map(|(_, s)| s.map(Point::bit_key)).collect();
     let isolated = points.iter().enumerate().map(|(i, &p)| (PointSource::Point(i), internal(p)));
     for (src, p) in isolated.chain(degenerate) {
-        if seen_points.insert(point_key(p)) {
+        if seen_points.insert(Point::bit_key(p)) {
             out.points.push((src, p));
         } else {
             out.duplicate_points += 1;

@@ -26,7 +26,7 @@ pub(super) fn split_rings(pieces: Vec<Piece>, rings: &[RingInput], input_segment
     let in_ring = |i: u32| ring_segment[i as usize];
     let (boundary, rest): (Vec<Piece>, Vec<Piece>) =
         pieces.into_iter().partition(|p| p.ends[0] != p.ends[1] && p.origins.iter().filter(|&&i| in_ring(i)).count() % 2 == 1);
-    let key = |p: Point| [p.x.to_bits(), p.y.to_bits()];
+    let key = Point::bit_key;
     // per point, its boundary pieces (as (piece, whether it starts there))
     let mut at: HashMap<[u64; 2], Vec<(usize, bool)>> = HashMap::new();
     for (k, p) in boundary.iter().enumerate() {

@@ -115,10 +115,7 @@ struct Merged {
 
 impl Merged {
     fn push(&mut self, ends: [Point; 2], origins: Vec<u32>) {
-        let key = |p: Point| [p.x.to_bits(), p.y.to_bits()];
-        let (ka, kb) = (key(ends[0]), key(ends[1]));
-        let (lo, hi) = if ka <= kb { (ka, kb) } else { (kb, ka) };
-        let full = [lo[0], lo[1], hi[0], hi[1]];
+        let full = Point::segment_key(ends[0], ends[1]);
         match self.index.get(&full) {
             Some(&k) => {
                 let merged = &mut self.pieces[k].origins;
