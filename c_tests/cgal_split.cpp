@@ -244,19 +244,20 @@ double reflect(double x, double side) {
     return x;
 }
 
-// A closed ring of n integer vertices in [0, 1000]^2, a random walk with
-// steps up to 3000/sqrt(n) on each axis (reflected at the border): long and tangled, it crosses itself
-// a few times per side.
-Input polygon_cross(std::size_t n, Rng& rng) {
+// A closed ring of n vertices in [0, side]^2, a random walk with steps up to
+// 3 side/sqrt(n) on each axis (reflected at the border): long and tangled,
+// it crosses itself a few times per side. Integer vertices are rounded, and
+// one that repeats the vertex before it is dropped.
+Input tangled_ring(std::size_t n, Rng& rng, double side, bool integer) {
     Input in;
     std::vector<Point> ring;
-    double x = 500, y = 500;
-    const double step = 3000.0 / std::sqrt(double(n));
+    double x = side / 2, y = side / 2;
+    const double step = 3 * side / std::sqrt(double(n));
     for (std::size_t i = 0; i < n; ++i) {
-        x = reflect(x + uniform_real(rng, -step, step), 1000.0);
-        y = reflect(y + uniform_real(rng, -step, step), 1000.0);
-        const Point p{std::round(x), std::round(y)};
-        if (!ring.empty() && ring.back().x == p.x && ring.back().y == p.y) continue;
+        x = reflect(x + uniform_real(rng, -step, step), side);
+        y = reflect(y + uniform_real(rng, -step, step), side);
+        const Point p = integer ? Point{std::round(x), std::round(y)} : Point{x, y};
+        if (integer && !ring.empty() && ring.back().x == p.x && ring.back().y == p.y) continue;
         ring.push_back(p);
     }
     for (std::size_t i = 0; i < ring.size(); ++i) {
@@ -265,22 +266,9 @@ Input polygon_cross(std::size_t n, Rng& rng) {
     return in;
 }
 
-// The same with real coordinates.
-Input polygon_cross_real(std::size_t n, Rng& rng) {
-    Input in;
-    std::vector<Point> ring;
-    double x = 0.5, y = 0.5;
-    const double step = 3.0 / std::sqrt(double(n));
-    for (std::size_t i = 0; i < n; ++i) {
-        x = reflect(x + uniform_real(rng, -step, step), 1.0);
-        y = reflect(y + uniform_real(rng, -step, step), 1.0);
-        ring.push_back({x, y});
-    }
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-        in.segments.push_back({ring[i], ring[(i + 1) % ring.size()]});
-    }
-    return in;
-}
+Input polygon_cross(std::size_t n, Rng& rng) { return tangled_ring(n, rng, 1000.0, true); }
+
+Input polygon_cross_real(std::size_t n, Rng& rng) { return tangled_ring(n, rng, 1.0, false); }
 
 struct Family {
     const char* name;
