@@ -11,6 +11,7 @@
 //! build perturbs numbers only here (`fault`).
 
 mod bigfloat;
+mod certified;
 mod double_double;
 pub(crate) mod edge_curve;
 pub(crate) mod edge_track;

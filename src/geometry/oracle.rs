@@ -37,12 +37,18 @@
 //!    are of this kind, and 1200 bits cost them about 170 µs each.
 //! 4. **Zero.** A value that stays below that bound at 1200 bits (about
 //!    `2^-1150` of the configuration's size, for well-conditioned
-//!    equations) is taken as exactly zero: the segment touches the circle
-//!    (cocircular sites), and the caller's topology rules decide. Inputs
-//!    are doubles, so a nonzero value of these algebraic expressions of
-//!    bounded degree is bounded away from zero; the bound used is an
-//!    engineering choice, not a proven separation bound. Where Newton's
-//!    method converges at no precision (a double root: the vertex about to
+//!    equations) is evaluated once more from the circle's closed form in
+//!    certified big floats (`certified`: balls that hold the exact value,
+//!    and the BFMSS separation bound of the expression), at the precision
+//!    the bound calls for: it is then proven zero (the segment touches the
+//!    circle: cocircular sites, and the caller's topology rules decide) or
+//!    told apart. Where the bound needs more than `CERTIFIED_MAX_BITS`
+//!    (32,768: the closed forms of two points and a segment with an
+//!    irrational centre take 41k to 59k on the `parallel` family, where
+//!    65,536 bits would prove all 1,164 zeros but cost 26 times the
+//!    build), the value is taken as zero by the cut-off: an engineering
+//!    choice, not a proof. Where Newton's method
+//!    converges at no precision (a double root: the vertex about to
 //!    vanish) the `f64` value stands.
 //!
 //! The equations per site (a segment's supporting line is used, as by the
@@ -56,6 +62,7 @@
 //! lying numbers, and a refinement would make them honest again.
 
 use super::bigfloat::BigFloat;
+use super::certified::{certified_evaluation, dyadic, Certified};
 use super::double_double::DoubleDouble;
 use super::point::Point;
 use super::predicates::{in_circle, CirclePosition};
@@ -352,12 +359,80 @@ fn decide(
         }
     }
     // Zero within 2^-1150 or so of the size (2^-4300 for magnitudes far
-    // apart): on the circle. Without convergence at any precision the
-    // rounded value stands.
-    if converged {
-        (Stage::Zero, Some(CirclePosition::On))
-    } else {
-        (Stage::Unrefined, None)
+    // apart): proven so, or told apart, in certified arithmetic; where the
+    // separation bound is out of reach, on the circle by the cut-off.
+    // Without convergence at any precision the rounded value stands.
+    if !converged {
+        return (Stage::Unrefined, None);
+    }
+    match certified_answer(&sites, &question) {
+        Some(answer) => (Stage::Exact, Some(answer)),
+        None => (Stage::Zero, Some(CirclePosition::On)),
+    }
+}
+
+/// `sites` and `question` scaled by the power of two that makes every
+/// coordinate an integer, as far as that keeps them below `2^1000` (exact:
+/// a power of two, no overflow).
+fn integer_scaled(sites: &[Site; 3], question: &Reach) -> ([Site; 3], Reach) {
+    let coordinates = || sites.iter().flat_map(Site::ends).chain(question.points()).flat_map(|p| [p.x, p.y]);
+    let fraction_bits = coordinates().filter_map(dyadic).map(|(_, e)| -e).max().unwrap_or(0);
+    let top = coordinates().filter(|x| *x != 0.0).map(|x| x.abs().log2().ceil() as i64).max().unwrap_or(0);
+    let k = fraction_bits.min(1000 - top).clamp(0, 1000) as i32;
+    if k == 0 {
+        return (*sites, *question);
+    }
+    let factor = 2f64.powi(k);
+    let question = match *question {
+        Reach::Distance { a, b } => Reach::Distance { a: a.scaled(factor), b: b.scaled(factor) },
+        Reach::Entering { from, to } => Reach::Entering { from: from.scaled(factor), to: to.scaled(factor) },
+    };
+    (sites.map(|s| s.scaled(factor)), question)
+}
+
+/// The precision a certified evaluation starts at, in bits.
+const CERTIFIED_START_BITS: u64 = 1200;
+
+/// The precision beyond which [`certified_answer`] gives up, in bits.
+const CERTIFIED_MAX_BITS: u64 = 1 << 15;
+
+/// The question's exact answer at the circle of `sites`, `On` only for a
+/// proven zero: the circle's closed form (`segment_solvers`) and the
+/// question evaluated in certified big floats (`certified`: balls that
+/// hold the exact value, and the BFMSS separation bound of the
+/// expression). The precision grows to what the ball's width and the bound
+/// call for; `None` when that exceeds `CERTIFIED_MAX_BITS`, or no circle
+/// is found.
+fn certified_answer(sites: &[Site; 3], question: &Reach) -> Option<CirclePosition> {
+    // The configuration scaled by a power of two that makes every
+    // coordinate an integer (the answer is the same): leaves without
+    // denominators give a far better separation bound.
+    let (sites, question) = &integer_scaled(sites, question);
+    let mut bits = CERTIFIED_START_BITS;
+    loop {
+        let lift = |x: f64| Certified::from_f64(x, bits);
+        let (value, sure) = certified_evaluation(|| {
+            segment_solvers::vertex_in_any_range(sites, &lift).map(|solution| question.value(&solution, &lift))
+        });
+        let value = value?;
+        if let Some(sign) = value.exact_sign().filter(|_| sure) {
+            return Some(match sign {
+                0 => CirclePosition::On,
+                s if s < 0 => CirclePosition::Inside,
+                _ => CirclePosition::Outside,
+            });
+        }
+        // the ball must shrink below the separation bound: by as many bits
+        // as it is wider, and some
+        // (twice the precision where the bound or the ball is out of reach:
+        // a nonzero value may still be told)
+        let short = value.log_radius() + value.separation_bits();
+        let wanted = if short.is_finite() { bits.saturating_add(short.max(0.0) as u64 + 64) } else { 0 };
+        let next = wanted.max(2 * bits);
+        if next > CERTIFIED_MAX_BITS {
+            return None;
+        }
+        bits = next;
     }
 }
 
@@ -379,22 +454,44 @@ pub(crate) fn is_beyond_range(radius: f64) -> bool {
 /// The answer for a vertex whose circle lies beyond the range of `f64`
 /// (its magnitudes span more than `f64`'s exponents: a point the least
 /// subnormal off a segment's line, beside ordinary coordinates). The
-/// circle is solved from the sites at `BEYOND_RANGE_BITS`, whose exponents
-/// are unbounded, and the question's value there decides; below `2^-3000`
-/// of the configuration's size it is zero (the solve's rounding, even
-/// amplified by a condition of `2^1300`, is below it). Not the
-/// refinement's `2^-1150`: the size here is the huge radius, and a site off
-/// such a circle by an ordinary gap `g` of the input is off it by about
-/// `g² / r` only, far below `2^-1150 r` (a point beside the near end of a
-/// circle of radius `2^1080` through an endpoint `2^-1074` off a line).
-/// `None` when no circle is found: the caller's `f64` value stands.
+/// circle is solved from the sites in big floats, whose exponents are
+/// unbounded, and the question's value there decides, in two stages
+/// (`BEYOND_RANGE_STAGES`): a value below the first stage's cut-off of
+/// the configuration's size is solved again at the second's before it
+/// counts as zero. The cut-offs are far below the refinement's `2^-1150`:
+/// the size here is the huge radius `r`, and a site off such a circle by
+/// an ordinary gap `g` of the input is off it by about `g² / r` only, or
+/// less where four sites are nearly on one circle to first order (two
+/// nearly collinear segments, one end `δ = 2^-1072` off their line, and
+/// the ends facing each other: a value of order `δ³ r`, about `2^-3220`
+/// of the size, which the first stage alone took as zero). Each cut-off
+/// stays above that stage's rounding even amplified by a condition of
+/// `2^1300`. `None` when no circle is found: the caller's `f64` value
+/// stands.
 fn beyond_range_answer(sites: &[Site; 3], question: &Reach) -> Option<CirclePosition> {
-    let lift = |x: f64| BigFloat::from_f64(x, BEYOND_RANGE_BITS);
-    let solution = segment_solvers::vertex_in_any_range(sites, &lift)?;
-    let value = question.value(&solution, &lift);
-    let bound = question.size_in(&solution, &lift).mul(&BigFloat::pow2(-3000, BEYOND_RANGE_BITS));
-    Some(position_beyond(&value, &bound))
+    let mut answer = None;
+    for &(bits, cut_off) in BEYOND_RANGE_STAGES {
+        let lift = |x: f64| BigFloat::from_f64(x, bits);
+        let solution = segment_solvers::vertex_in_any_range(sites, &lift)?;
+        let value = question.value(&solution, &lift);
+        let bound = question.size_in(&solution, &lift).mul(&BigFloat::pow2(cut_off, bits));
+        let position = position_beyond(&value, &bound);
+        if position != CirclePosition::On {
+            return Some(position);
+        }
+        answer = Some(position);
+    }
+    // below both cut-offs: proven zero, or told apart, where the
+    // separation bound is within reach
+    answer.map(|on| certified_answer(sites, question).unwrap_or(on))
 }
+
+/// The precisions (bits) of [`beyond_range_answer`]'s solves and the
+/// cut-offs (binary exponents, relative to the configuration's size) below
+/// which each stage's value is taken as zero: the first stage is also the
+/// precision at which such vertices are placed (`BEYOND_RANGE_BITS`), the
+/// second only runs for values within the first's cut-off of zero.
+const BEYOND_RANGE_STAGES: &[(u64, i64)] = &[(BEYOND_RANGE_BITS, -3000), (2 * BEYOND_RANGE_BITS, -7000)];
 
 /// The position a big-float value of a question gives: `On` within
 /// `bound` of zero, else by its sign.
