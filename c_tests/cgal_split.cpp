@@ -19,7 +19,13 @@
 //
 //   segvoronoi_cgal_split --family NAME --n N [--seed S] [--min-agreement F] [--verbose]
 //                         [--plain] [--cgal-of-pieces] [--write-pieces FILE]
+//   segvoronoi_cgal_split --file FILE [--seed S] [options as above]
 //   segvoronoi_cgal_split --list
+//
+// --file reads the input from FILE (Boost.Polygon's text format, e.g. the
+// real coastlines, borders and rivers of tests/data/gshhg_*.txt) instead of
+// generating it; its summary lines say family=file:NAME, NAME the file's
+// base name; --seed then only shuffles.
 //
 // Our sites are first collapsed (see collapse): point sites within 3 pixels
 // of each other become one point element, a piece inside such a cluster
@@ -85,6 +91,7 @@
 #include <utility>
 #include <vector>
 
+#include "boost_text.hpp"
 #include "cgal_rational.hpp"
 #include "segvoronoi.h"
 
@@ -714,16 +721,8 @@ bool compare(const std::string& family, const std::string& variant, const Input&
              bool verbose, bool cgal_of_pieces) {
     Ours ours = build_ours(in);
     collapse(ours);
-    if (!write_pieces.empty() && variant == "as-is") {
-        FILE* f = std::fopen(write_pieces.c_str(), "w");
-        if (!f) throw std::runtime_error("cannot write " + write_pieces);
-        std::fprintf(f, "%zu\n", ours.built.points.size());
-        for (const Point& p : ours.built.points) std::fprintf(f, "%.17g %.17g\n", p.x, p.y);
-        std::fprintf(f, "%zu\n", ours.built.segments.size());
-        for (const Segment& g : ours.built.segments) {
-            std::fprintf(f, "%.17g %.17g %.17g %.17g\n", g.a.x, g.a.y, g.b.x, g.b.y);
-        }
-        std::fclose(f);
+    if (!write_pieces.empty() && variant == "as-is" && !write_boost_file(write_pieces, ours.built)) {
+        throw std::runtime_error("cannot write " + write_pieces);
     }
     const Input& for_cgal = cgal_of_pieces ? ours.built : without_overlaps(in);
     const Cgal cgal = plain ? build_cgal<PlainSdg>(for_cgal) : build_cgal<Sdg>(for_cgal);
@@ -878,6 +877,7 @@ bool compare(const std::string& family, const std::string& variant, const Input&
 int usage() {
     std::fprintf(stderr,
                  "usage: segvoronoi_cgal_split --family NAME --n N [--seed S] [--min-agreement F] [--verbose]\n"
+                 "       segvoronoi_cgal_split --file FILE [--seed S] [--min-agreement F] [--verbose]\n"
                  "       segvoronoi_cgal_split --list\n");
     return 2;
 }
@@ -886,6 +886,7 @@ int usage() {
 
 int main(int argc, char** argv) {
     std::string family;
+    std::string file;
     std::size_t n = 0;
     std::uint64_t seed = 1;
     double min_agreement = 0.0;
@@ -903,6 +904,8 @@ int main(int argc, char** argv) {
                 return 0;
             } else if (arg == "--family") {
                 family = next();
+            } else if (arg == "--file") {
+                file = next();
             } else if (arg == "--n") {
                 n = std::stoul(next());
             } else if (arg == "--seed") {
@@ -925,14 +928,24 @@ int main(int argc, char** argv) {
             return usage();
         }
     }
-    const Family* chosen = nullptr;
-    for (const Family& f : families) {
-        if (family == f.name) chosen = &f;
-    }
-    if (!chosen || n == 0) return usage();
-
     Rng rng(seed);
-    const Input input = chosen->make(n, rng);
+    Input input;
+    if (!file.empty()) {
+        if (!family.empty() || n != 0) return usage();
+        std::string error;
+        if (!read_boost_file(file, input, error)) {
+            std::fprintf(stderr, "%s: %s\n", file.c_str(), error.c_str());
+            return 2;
+        }
+        family = "file:" + file.substr(file.find_last_of('/') + 1);
+    } else {
+        const Family* chosen = nullptr;
+        for (const Family& f : families) {
+            if (family == f.name) chosen = &f;
+        }
+        if (!chosen || n == 0) return usage();
+        input = chosen->make(n, rng);
+    }
     Input reversed = input;
     for (Segment& s : reversed.segments) std::swap(s.a, s.b);
     Input shuffled = input;
