@@ -89,6 +89,14 @@ FIXTURES = [
         (-80, -40, -30, -10),
         "crude coast, borders and rivers of South America: all three layers crossing",
     ),
+    (
+        "gshhg_all_l_centralafrica",
+        "l",
+        "coast,borders,rivers",
+        (20, 30, 5, 15),
+        "low-resolution borders and rivers of Chad, Sudan and the Central African Republic: a crossing snapped "
+        "inside a straight run of collinear segments (a bent continuation, c_tests/cgal_split.cpp)",
+    ),
 ]
 
 
