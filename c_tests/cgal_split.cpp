@@ -47,8 +47,10 @@
 // a snapped end (collinear input segments sharing an end, a crossing
 // inside one of them snapped off the line: our pieces meet at a hair below
 // 180 degrees and their cells share an edge on the concave side, CGAL's
-// exactly collinear subsegments none; found on GSHHG data, see
-// BENCHMARKS.md): explained, not counted in only_ours.
+// exactly collinear subsegments none), and the pairs of the thin wedge
+// that is then the cell of their shared end on the convex side (CGAL's
+// has no area); found on GSHHG data, see BENCHMARKS.md: explained, not
+// counted in only_ours.
 //
 // Each input is run three times: as generated, every segment reversed, and
 // with segments and points shuffled; one summary line each
@@ -786,17 +788,19 @@ bool compare(const std::string& family, const std::string& variant, const Input&
     std::size_t edges_ours = 0, ours_unmapped_edges = 0, agree = 0, only_cgal = 0, only_ours = 0;
     std::size_t cluster_separators = 0, bent_continuations = 0;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> diff_cgal, diff_ours, bent;
-    // Two segment elements continuing each other: they share an end, point
-    // away from it in opposite directions, and the far end of one is within
-    // 2 pixels of the other's line. Collinear input segments that continue
-    // each other (a straight run of a polyline) have no edge of positive
-    // length between them in CGAL's exact arrangement; where a crossing
-    // inside one of them was snapped, off the line by up to the
-    // displacement, our two pieces meet at an angle a hair below 180
-    // degrees, and on its concave side their cells share an edge.
-    const auto continues = [&](std::uint32_t a, std::uint32_t b) {
+    // Two segment elements continuing each other (their shared end, or -1):
+    // they share an end, point away from it in opposite directions, and the
+    // far end of one is within 2 pixels of the other's line. Collinear input
+    // segments that continue each other (a straight run of a polyline) have
+    // no edge of positive length between them in CGAL's exact arrangement,
+    // and their shared end a cell of no area; where a crossing inside one of
+    // them was snapped, off the line by up to the displacement, our two
+    // pieces meet at a hair below 180 degrees: on the concave side their
+    // cells share an edge, on the convex side the shared end has a thin
+    // wedge-shaped cell that may reach further sites.
+    const auto continues = [&](std::uint32_t a, std::uint32_t b) -> long {
         const std::size_t points = ours.point_sites.size();
-        if (a < points || b < points) return false;
+        if (a < points || b < points) return -1;
         const auto ea = ours.ends_of_element[a], eb = ours.ends_of_element[b];
         std::uint32_t c, u, w;
         if (ea.first == eb.first || ea.first == eb.second) {
@@ -804,14 +808,19 @@ bool compare(const std::string& family, const std::string& variant, const Input&
         } else if (ea.second == eb.first || ea.second == eb.second) {
             c = ea.second, u = ea.first, w = ea.second == eb.first ? eb.second : eb.first;
         } else {
-            return false;
+            return -1;
         }
         const Point &pc = ours.point_sites[c], &pu = ours.point_sites[u], &pw = ours.point_sites[w];
         const double ux = pu.x - pc.x, uy = pu.y - pc.y, wx = pw.x - pc.x, wy = pw.y - pc.y;
         const double cross = std::fabs(ux * wy - uy * wx);
         const double off = cross / std::max(std::hypot(ux, uy), std::hypot(wx, wy));  // the nearer far end from the other line
-        return ux * wx + uy * wy < 0 && off <= 2.0 * ours.pixel;
+        return ux * wx + uy * wy < 0 && off <= 2.0 * ours.pixel ? long(c) : -1;
     };
+    // the shared ends of the bent continuations, and the pairs on our side
+    // only that are not explained as they are found (one may be explained
+    // later as the wedge of such an end)
+    std::vector<bool> bent_end(ours.elements, false);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> unexplained;
     for (const auto& e : ours.pairs) {
         edges_ours += e.second;
         if (!hit[e.first.first] || !hit[e.first.second]) {
@@ -831,13 +840,22 @@ bool compare(const std::string& family, const std::string& variant, const Input&
             };
             if (is_end(a, b) || is_end(b, a)) {
                 ++cluster_separators;
-            } else if (continues(a, b)) {
+            } else if (const long end = continues(a, b); end >= 0) {
                 ++bent_continuations;
                 bent.push_back(e.first);
+                bent_end[std::size_t(end)] = true;
             } else {
-                only_ours += e.second - c;
-                diff_ours.push_back(e.first);
+                unexplained.push_back(e.first);
             }
+        }
+    }
+    for (const auto& e : unexplained) {
+        if (bent_end[e.first] || bent_end[e.second]) {
+            ++bent_continuations;  // the wedge of a bent continuation's shared end
+            bent.push_back(e);
+        } else {
+            ++only_ours;
+            diff_ours.push_back(e);
         }
     }
     for (const auto& e : theirs) {
