@@ -120,10 +120,9 @@ def polylines(path, layer, box, levels):
     """The polylines of one layer in the box, as lists of integer (x, y),
     the bin size in minutes and the box the bins cover."""
     with h5py.File(path, "r") as f:
-        scalar = lambda name: int(f[name][0])  # noqa: E731
-        size_minutes, nx, ny = scalar("Bin_size_in_minutes"), scalar("N_bins_in_360_longitude_range"), scalar(
-            "N_bins_in_180_degree_latitude_range"
-        )
+        size_minutes = int(f["Bin_size_in_minutes"][0])
+        nx = int(f["N_bins_in_360_longitude_range"][0])
+        ny = int(f["N_bins_in_180_degree_latitude_range"][0])
         first_seg = f["Id_of_first_segment_in_a_bin"][:]
         n_seg = f["N_segments_in_a_bin"][:]
         first_point = f["Id_of_first_point_in_a_segment"][:]
