@@ -90,6 +90,7 @@
 #include <utility>
 #include <vector>
 
+#include "boost_text.hpp"
 #include "cgal_rational.hpp"
 #include "segvoronoi.h"
 
@@ -122,66 +123,10 @@ struct Input {
     bool degenerate = false;
 };
 
-// Boost.Polygon text format: P, P lines "x y", S, S lines "x0 y0 x1 y1".
-// Writes the input in the format read_text reads, with every digit needed to
-// read back the same doubles: a minimised case becomes a file to debug with.
-void write_text(std::FILE* out, const Input& input) {
-    std::fprintf(out, "%zu\n", input.points.size());
-    for (const Point& p : input.points) std::fprintf(out, "%.17g %.17g\n", p.x, p.y);
-    std::fprintf(out, "%zu\n", input.segments.size());
-    for (const Segment& s : input.segments) {
-        std::fprintf(out, "%.17g %.17g %.17g %.17g\n", s.a.x, s.a.y, s.b.x, s.b.y);
-    }
-}
-
-bool write_file(const std::string& path, const Input& input) {
-    std::FILE* out = std::fopen(path.c_str(), "w");
-    if (out == nullptr) return false;
-    write_text(out, input);
-    return std::fclose(out) == 0;
-}
-
-bool read_number(std::FILE* in, double& v) { return std::fscanf(in, "%lf", &v) == 1 && std::isfinite(v); }
-
-// Reads one input (the format above) from `in`; the segment count may be
-// left out at the end of a file.
-bool read_text(std::FILE* in, Input& input, std::string& error) {
-    std::size_t point_count = 0;
-    if (std::fscanf(in, "%zu", &point_count) != 1) {
-        error = "missing point count";
-        return false;
-    }
-    input.points.resize(point_count);
-    for (std::size_t i = 0; i < point_count; ++i) {
-        Point& p = input.points[i];
-        if (!read_number(in, p.x) || !read_number(in, p.y)) {
-            error = "point " + std::to_string(i) + " is missing, malformed or not finite";
-            return false;
-        }
-    }
-    std::size_t segment_count = 0;
-    if (std::fscanf(in, "%zu", &segment_count) != 1) segment_count = 0;
-    input.segments.resize(segment_count);
-    for (std::size_t i = 0; i < segment_count; ++i) {
-        Segment& s = input.segments[i];
-        if (!read_number(in, s.a.x) || !read_number(in, s.a.y) || !read_number(in, s.b.x) || !read_number(in, s.b.y)) {
-            error = "segment " + std::to_string(i) + " is missing, malformed or not finite";
-            return false;
-        }
-    }
-    return true;
-}
-
+// Inputs are read and written in Boost.Polygon's text format (boost_text.hpp).
 bool read_file(const std::string& path, Input& input, std::string& error) {
-    std::FILE* in = std::fopen(path.c_str(), "r");
-    if (in == nullptr) {
-        error = "cannot open " + path;
-        return false;
-    }
-    const bool ok = read_text(in, input, error);
-    std::fclose(in);
     input.family = "file";
-    return ok;
+    return read_boost_file(path, input, error);
 }
 
 // ---------------------------------------------------------------------------
@@ -917,7 +862,7 @@ extern "C" void report_sigfpe(int) {
     // Raised synchronously (GMP's division by zero calls raise()), so stdio
     // is usable here in practice.
     std::printf("CRASH: SIGFPE (GMP division by zero in a CGAL construction?) on this input:\n");
-    if (g_current_input != nullptr) write_text(stdout, *g_current_input);
+    if (g_current_input != nullptr) write_boost_text(stdout, *g_current_input);
     std::fflush(stdout);
     std::_Exit(3);
 }
@@ -1057,7 +1002,7 @@ bool read_record(std::FILE* in, SearchRecord& record, std::string& error) {
     }
     record.input = Input();
     record.shuffled = Input();
-    if (!read_text(in, record.input, error) || !read_text(in, record.shuffled, error)) return false;
+    if (!read_boost_text(in, record.input, error) || !read_boost_text(in, record.shuffled, error)) return false;
     record.kind = kind;
     record.input.family = record.shuffled.family = kind;
     record.input.degenerate = record.shuffled.degenerate = degenerate != 0;
@@ -1133,13 +1078,13 @@ int search(double seconds, std::uint64_t seed, bool generic_only, bool no_subnor
                         smallest.segments.size(), variant.input->points.size(), smallest.points.size());
             std::printf("--- minimised input (Boost.Polygon text; compare with%s) ---\n",
                         smallest.degenerate ? " --degenerate" : "");
-            write_text(stdout, smallest);
+            write_boost_text(stdout, smallest);
             std::printf("--- its comparison ---\n%s", again.text.c_str());
             std::printf("--- first result of the unminimised input ---\n%s---\n", result.text.c_str());
             if (!out_dir.empty()) {
                 const std::string path = out_dir + "/search_" + std::to_string(c.case_seed) + "_" +
                                          std::to_string(failures) + (smallest.degenerate ? "_deg" : "") + ".txt";
-                if (!write_file(path, smallest)) std::fprintf(stderr, "cannot write %s\n", path.c_str());
+                if (!write_boost_file(path, smallest)) std::fprintf(stderr, "cannot write %s\n", path.c_str());
             }
             std::fflush(stdout);
             break;  // one failure per input is enough
@@ -1606,7 +1551,7 @@ int minimise_file(int argc, char** argv) {
     const Input smallest = minimise(input, flipped, 1, runs);
     std::printf("minimise: segments %zu -> %zu, points %zu -> %zu, runs=%zu\n", input.segments.size(),
                 smallest.segments.size(), input.points.size(), smallest.points.size(), runs);
-    write_text(stdout, smallest);
+    write_boost_text(stdout, smallest);
     std::printf("%s", run_one(smallest).text.c_str());
     return 1;
 }

@@ -37,9 +37,10 @@ echo "--- downstream: c_tests, copied out of the repository, through find_packag
 mkdir "$work/consumer"
 cp "$repo"/c_tests/*.c "$repo"/c_tests/*.cpp "$repo"/c_tests/*.hpp "$repo"/c_tests/*.cmake "$repo"/c_tests/CMakeLists.txt "$work/consumer/"
 cp -r "$repo"/c_tests/fixtures "$work/consumer/"
-# The cross-check's input generator is built from the source tree (cargo).
+# The cross-check's input generator is built from the source tree (cargo),
+# and its real inputs (tests/data/gshhg_*.txt) are read from there.
 cmake -S "$work/consumer" -B "$work/c_tests" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" \
-  -DSEGVORONOI_TESTGEN_SOURCE="$repo/testgen" >"$work/c_configure.log" || { cat "$work/c_configure.log"; exit 1; }
+  -DSEGVORONOI_TESTGEN_SOURCE="$repo/testgen" -DSEGVORONOI_REAL_DATA="$repo/tests/data" >"$work/c_configure.log" || { cat "$work/c_configure.log"; exit 1; }
 grep -E "using segvoronoi|WARNING|skipped" "$work/c_configure.log" || true
 cmake --build "$work/c_tests" -j "$jobs"
 # shellcheck disable=SC2086

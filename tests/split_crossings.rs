@@ -6,28 +6,12 @@
 //! is the even-odd region of its rings. Each input also mirrored, reversed
 //! and scaled.
 
+mod common;
+
+use common::{check_pieces, distance_to_segment, Segment};
 use segvoronoi::{Builder, Diagram, Location, Point};
 use segvoronoi_testgen::rings::even_odd;
 use segvoronoi_testgen::Rng;
-
-type Segment = [[f64; 2]; 2];
-
-/// (In units of the largest difference, so that 1e-200 does not underflow.)
-fn distance_to_segment(q: Point, [a, b]: Segment) -> f64 {
-    let unit = (b[0] - a[0]).abs().max((b[1] - a[1]).abs()).max((q.x - a[0]).abs()).max((q.y - a[1]).abs());
-    if unit == 0.0 {
-        return 0.0;
-    }
-    let (dx, dy) = ((b[0] - a[0]) / unit, (b[1] - a[1]) / unit);
-    let (qx, qy) = ((q.x - a[0]) / unit, (q.y - a[1]) / unit);
-    let len2 = dx * dx + dy * dy;
-    let t = if len2 == 0.0 { 0.0 } else { ((qx * dx + qy * dy) / len2).clamp(0.0, 1.0) };
-    unit * (qx - t * dx).hypot(qy - t * dy)
-}
-
-fn piece_distance(q: Point, [a, b]: [Point; 2]) -> f64 {
-    distance_to_segment(q, [[a.x, a.y], [b.x, b.y]])
-}
 
 /// Builds `segments` (and `points`) in splitting mode and checks the
 /// guarantees; returns the diagram.
@@ -38,47 +22,6 @@ fn check(points: &[[f64; 2]], segments: &[Segment]) -> Diagram {
     let d = b.split_crossings(true).build().unwrap_or_else(|e| panic!("{e}: {segments:?}"));
     check_pieces(&d, segments);
     d
-}
-
-fn check_pieces(d: &Diagram, segments: &[Segment]) {
-    d.validate().unwrap_or_else(|e| panic!("{e}"));
-    let stats = d.stats();
-    assert_eq!(stats.input_segments, segments.len());
-    assert_eq!(stats.pieces, d.piece_count());
-    let extent = segments.iter().flatten().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
-    let slack = 1e-13 * extent;
-    let bound = stats.snap_rounds as f64 * d.split_pixel_size() * std::f64::consts::FRAC_1_SQRT_2;
-    assert!(d.max_split_displacement() <= bound * (1.0 + 1e-9) + slack, "{} > {bound}", d.max_split_displacement());
-    let reach = d.max_split_displacement() * (1.0 + 1e-9) + slack;
-    for (i, &s) in segments.iter().enumerate() {
-        let pieces: Vec<usize> = d.pieces_of_input(i).collect();
-        assert!(pieces.windows(2).all(|w| w[0] < w[1]));
-        for &p in &pieces {
-            assert!(d.inputs_of_piece(p).any(|j| j == i), "piece {p} of {i} does not name it");
-            let ends = d.piece(p).unwrap();
-            for q in ends {
-                let off = distance_to_segment(q, s);
-                assert!(off <= reach, "piece {p} is {off} from input {i} (reported {})", d.max_split_displacement());
-            }
-        }
-        // covered: every point of the input is near one of its pieces
-        let length = (s[1][0] - s[0][0]).hypot(s[1][1] - s[0][1]);
-        if length <= 2.0 * bound + slack {
-            continue;
-        }
-        for k in 0..=20 {
-            let t = k as f64 / 20.0;
-            let q = Point::new(s[0][0] + t * (s[1][0] - s[0][0]), s[0][1] + t * (s[1][1] - s[0][1]));
-            let near = pieces.iter().map(|&p| piece_distance(q, d.piece(p).unwrap())).fold(f64::INFINITY, f64::min);
-            assert!(near <= bound + slack, "input {i} not covered at {q:?} ({near} > {bound})");
-        }
-    }
-    for p in 0..d.piece_count() {
-        assert!(d.inputs_of_piece(p).len() >= 1);
-        for i in d.inputs_of_piece(p) {
-            assert!(d.pieces_of_input(i).any(|q| q == p));
-        }
-    }
 }
 
 /// The same input mirrored, reversed (order and direction) and scaled.

@@ -1,8 +1,15 @@
 //! Splitting crossings (issue 11) against CGAL's segment Delaunay graph
 //! with intersections, in one run on the same input: crossing road
-//! networks of 10k, 100k and 1M segments.
+//! networks of 10k, 100k and 1M segments, or real inputs read from files.
 //!
 //! `cargo run --release --bin split -- [--sizes 10000,100000,1000000] [--runs 3] [--budget 120] [--c 2]`
+//! `cargo run --release --bin split -- --file PATH [--file PATH]... [--runs 3] [--budget 120]`
+//!
+//! `--file` replaces the road networks by the segments of each file
+//! (Boost.Polygon's text format, without isolated points), e.g. GSHHG
+//! coastlines, borders and rivers made by `scripts/coastlines.py`. Each row
+//! also gives the machine's load average (1 minute, /proc/loadavg) when
+//! the row started, since the machine may be shared.
 //!
 //! The input: n segments, each from a uniform point of the unit square in a
 //! uniform direction, of length c/√n (c = 2 by default). Two such segments
@@ -41,6 +48,39 @@ fn roads(n: usize, c: f64, seed: u64) -> Vec<Segment> {
             [[x, y], [x + length * a.cos(), y + length * a.sin()]]
         })
         .collect()
+}
+
+/// Where a row's input comes from.
+enum Source {
+    /// `roads(n, c, 11)`.
+    Roads(usize, f64),
+    /// A Boost text file.
+    File(String),
+}
+
+impl Source {
+    /// The row's label and its segments (made or read when the row runs, so
+    /// that only one input is in memory at a time).
+    fn load(&self) -> (String, Vec<Segment>) {
+        match self {
+            &Source::Roads(n, c) => (format!("roads, c = {c}"), roads(n, c, 11)),
+            Source::File(path) => {
+                let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"));
+                let input = segvoronoi::boost_text::parse(&text).unwrap_or_else(|e| panic!("{path}: {e}"));
+                assert!(input.points.is_empty(), "{path}: isolated points are not supported here (CGAL's shim takes segments)");
+                let name = std::path::Path::new(path).file_name().map_or(path.clone(), |f| f.to_string_lossy().into_owned());
+                (name, input.segments.iter().map(|&[x0, y0, x1, y1]| [[x0, y0], [x1, y1]]).collect())
+            }
+        }
+    }
+}
+
+/// The 1-minute load average, or "?" where /proc/loadavg is missing.
+fn load_average() -> String {
+    std::fs::read_to_string("/proc/loadavg")
+        .ok()
+        .and_then(|s| s.split_whitespace().next().map(str::to_string))
+        .unwrap_or_else(|| "?".to_string())
 }
 
 fn median(mut v: Vec<f64>) -> f64 {
@@ -174,14 +214,18 @@ fn main() {
     let runs: usize = value("--runs").map_or(3, |r| r.parse().expect("--runs R"));
     let budget: f64 = value("--budget").map_or(120.0, |r| r.parse().expect("--budget SECONDS"));
     let c: f64 = value("--c").map_or(2.0, |r| r.parse().expect("--c C"));
+    let files: Vec<Source> = args.windows(2).filter(|w| w[0] == "--file").map(|w| Source::File(w[1].clone())).collect();
+    let sources = if files.is_empty() { sizes.iter().map(|&n| Source::Roads(n, c)).collect() } else { files };
 
     println!(
-        "| segments | crossings | pieces | snap rounds | max displacement | ours split + build | ours build of the pieces | split (difference) | CGAL with intersections | CGAL / ours |"
+        "| input | segments | crossings | pieces | snap rounds | max displacement | ours split + build | ours build of the pieces | split (difference) | CGAL with intersections | CGAL / ours | load |"
     );
-    println!("|---|---|---|---|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|");
     let mut last_cgal: Option<(usize, f64)> = None;
-    for &n in &sizes {
-        let input = roads(n, c, 11);
+    for source in &sources {
+        let load = load_average();
+        let (label, input) = source.load();
+        let n = input.len();
         let results: Vec<Ours> = (0..runs.max(1)).map(|_| ours(&input)).collect();
         let total = median(results.iter().map(|r| r.total).collect());
         let pieces_build = median(results.iter().map(|r| r.pieces_build).collect());
@@ -189,7 +233,7 @@ fn main() {
 
         let (cgal_cell, ratio_cell) = cgal_cells(&input, n, total, runs, budget, &mut last_cgal);
         println!(
-            "| {} | {} | {} | {} | {:.1e} | {} | {} | {} | {} (ours: {} sites) | {} |",
+            "| {label} | {} | {} | {} | {} | {:.1e} | {} | {} | {} | {} (ours: {} sites) | {} | {load} |",
             thousands(n),
             thousands(r.crossings),
             thousands(r.pieces),
