@@ -12,6 +12,20 @@ use std::ops::{Add, Mul, Neg, Sub};
 
 use num_bigint::{BigInt, Sign};
 
+/// `|x| = m · 2^e` with an odd integer `m > 0`; `None` for zero and
+/// non-finite `x`.
+pub(crate) fn dyadic(x: f64) -> Option<(u64, i64)> {
+    if x == 0.0 || !x.is_finite() {
+        return None;
+    }
+    let raw = x.to_bits();
+    let biased = ((raw >> 52) & 0x7ff) as i64;
+    let fraction = raw & ((1u64 << 52) - 1);
+    let (m, e) = if biased == 0 { (fraction, -1074) } else { (fraction | (1u64 << 52), biased - 1075) };
+    let shift = m.trailing_zeros();
+    Some((m >> shift, e + shift as i64))
+}
+
 /// A binary floating-point number with a big-integer mantissa.
 #[derive(Clone, Debug)]
 pub(crate) struct BigFloat {
@@ -25,13 +39,9 @@ impl BigFloat {
     /// `x` exactly (finite `x`), with `bits` of precision for later
     /// operations.
     pub fn from_f64(x: f64, bits: u64) -> BigFloat {
-        if x == 0.0 || !x.is_finite() {
+        let Some((m, e)) = dyadic(x) else {
             return BigFloat { mantissa: BigInt::from(0), exponent: 0, bits };
-        }
-        let raw = x.to_bits();
-        let biased = ((raw >> 52) & 0x7ff) as i64;
-        let fraction = raw & ((1u64 << 52) - 1);
-        let (m, e) = if biased == 0 { (fraction, -1074) } else { (fraction | (1u64 << 52), biased - 1075) };
+        };
         let m = BigInt::from(m);
         BigFloat { mantissa: if x < 0.0 { -m } else { m }, exponent: e, bits }
     }

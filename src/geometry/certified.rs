@@ -27,7 +27,7 @@
 
 use std::cell::Cell;
 
-use super::bigfloat::BigFloat;
+use super::bigfloat::{dyadic, BigFloat};
 use super::real::Real;
 
 /// Added to every logarithm of an upper bound, so that the `f64` rounding
@@ -97,22 +97,12 @@ fn new_radical() -> u64 {
     })
 }
 
-/// `x = m · 2^e` with an odd integer `m > 0` (`|x|` exactly); `None` for
-/// zero and non-finite `x`.
-pub(crate) fn dyadic(x: f64) -> Option<(u64, i64)> {
-    if x == 0.0 || !x.is_finite() {
-        return None;
-    }
-    let raw = x.to_bits();
-    let biased = ((raw >> 52) & 0x7ff) as i64;
-    let fraction = raw & ((1u64 << 52) - 1);
-    let (m, e) = if biased == 0 { (fraction, -1074) } else { (fraction | (1u64 << 52), biased - 1075) };
-    let shift = m.trailing_zeros();
-    Some((m >> shift, e + shift as i64))
-}
-
 /// `log2 (2^a + 2^b)`, rounded up.
 fn log_add(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() {
+        // `-inf + inf`: a zero midpoint times an unbounded ball's radius
+        return f64::INFINITY;
+    }
     let (hi, lo) = if a >= b { (a, b) } else { (b, a) };
     if lo == f64::NEG_INFINITY {
         return hi;

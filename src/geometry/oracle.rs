@@ -61,8 +61,8 @@
 //! numbers are honest): its purpose is to show that the topology survives
 //! lying numbers, and a refinement would make them honest again.
 
-use super::bigfloat::BigFloat;
-use super::certified::{certified_evaluation, dyadic, Certified};
+use super::bigfloat::{dyadic, BigFloat};
+use super::certified::{certified_evaluation, Certified};
 use super::double_double::DoubleDouble;
 use super::point::Point;
 use super::predicates::{in_circle, CirclePosition};
