@@ -46,6 +46,11 @@ impl BigFloat {
         BigFloat { mantissa: if x < 0.0 { -m } else { m }, exponent: e, bits }
     }
 
+    /// `m · 2^e`, truncated to `bits`.
+    pub fn from_parts(m: &BigInt, e: i64, bits: u64) -> BigFloat {
+        BigFloat { mantissa: m.clone(), exponent: e, bits }.rounded()
+    }
+
     /// `2^e` exactly, with `bits` of precision for later operations (any
     /// exponent, also far outside `f64`'s range).
     pub fn pow2(e: i64, bits: u64) -> BigFloat {

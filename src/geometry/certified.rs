@@ -27,6 +27,8 @@
 
 use std::cell::Cell;
 
+use num_bigint::{BigInt, Sign};
+
 use super::bigfloat::{dyadic, BigFloat};
 use super::real::Real;
 
@@ -139,6 +141,18 @@ impl Certified {
         // x = m 2^e: u = m 2^max(e,0), l = 2^max(-e,0)
         let log_m = (m as f64).log2() + LOG_MARGIN;
         Certified { mid, log_radius: f64::NEG_INFINITY, log_u: log_m + e.max(0) as f64, log_l: (-e).max(0) as f64, radicals: 0 }
+    }
+
+    /// `m · 2^e` (an exact dyadic number), computing at `bits` of
+    /// precision: the midpoint truncated, the truncation the radius.
+    pub fn from_parts(m: &BigInt, e: i64, bits: u64) -> Certified {
+        if m.sign() == Sign::NoSign {
+            return Certified::from_f64(0.0, bits);
+        }
+        let mid = BigFloat::from_parts(m, e, bits);
+        let log_radius = if m.bits() > bits { log_rounding(&mid) } else { f64::NEG_INFINITY };
+        // |m| < 2^bits(m): u = |m| 2^max(e,0), l = 2^max(-e,0)
+        Certified { mid, log_radius, log_u: m.bits() as f64 + e.max(0) as f64, log_l: (-e).max(0) as f64, radicals: 0 }
     }
 
     /// `log2` of the bound on the distance from the midpoint to the exact

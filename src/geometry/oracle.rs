@@ -66,6 +66,7 @@ use super::certified::{certified_evaluation, Certified};
 use super::double_double::DoubleDouble;
 use super::point::Point;
 use super::predicates::{in_circle, CirclePosition};
+use super::radical_tower::{exact_evaluation, Algebraic};
 use super::real::Real;
 use super::scale::Scale;
 use super::segment_solvers;
@@ -365,10 +366,29 @@ fn decide(
     if !converged {
         return (Stage::Unrefined, None);
     }
-    match certified_answer(&sites, &question) {
+    match proven_answer(&sites, &question) {
         Some(answer) => (Stage::Exact, Some(answer)),
         None => (Stage::Zero, Some(CirclePosition::On)),
     }
+}
+
+/// The exact answer for a question no refinement could tell from zero:
+/// in the tower of square roots (`radical_tower`, exact, within its
+/// limits), else from certified big floats and the separation bound.
+fn proven_answer(sites: &[Site; 3], question: &Reach) -> Option<CirclePosition> {
+    algebraic_answer(sites, question).or_else(|| certified_answer(sites, question))
+}
+
+/// The question's exact answer at the circle of `sites`, the closed forms
+/// evaluated in exact numbers with square roots (`radical_tower`); `None`
+/// when that evaluation exceeds its limits or no circle is found.
+fn algebraic_answer(sites: &[Site; 3], question: &Reach) -> Option<CirclePosition> {
+    let lift = Algebraic::from_f64;
+    let sign = exact_evaluation(|| {
+        let solution = segment_solvers::vertex_in_any_range(sites, &lift)?;
+        Some(question.value(&solution, &lift).signum())
+    })??;
+    Some(sign_position(f64::from(sign)))
 }
 
 /// `sites` and `question` scaled by the power of two that makes every
@@ -416,11 +436,7 @@ fn certified_answer(sites: &[Site; 3], question: &Reach) -> Option<CirclePositio
         });
         let value = value?;
         if let Some(sign) = value.exact_sign().filter(|_| sure) {
-            return Some(match sign {
-                0 => CirclePosition::On,
-                s if s < 0 => CirclePosition::Inside,
-                _ => CirclePosition::Outside,
-            });
+            return Some(sign_position(f64::from(sign)));
         }
         // the ball must shrink below the separation bound: by as many bits
         // as it is wider, and some
@@ -483,7 +499,7 @@ fn beyond_range_answer(sites: &[Site; 3], question: &Reach) -> Option<CirclePosi
     }
     // below both cut-offs: proven zero, or told apart, where the
     // separation bound is within reach
-    answer.map(|on| certified_answer(sites, question).unwrap_or(on))
+    answer.map(|on| proven_answer(sites, question).unwrap_or(on))
 }
 
 /// The precisions (bits) of [`beyond_range_answer`]'s solves and the
