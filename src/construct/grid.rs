@@ -1,7 +1,6 @@
 //! A sparse uniform grid over a set of segments: which cells a segment
-//! touches (conservatively), for the candidate pairs of the input check
-//! (`input_check/candidates.rs`) and of the splitting of crossings
-//! (`split/`).
+//! touches (conservatively), for finding the hot pixels a piece meets when
+//! the splitting of crossings routes it (`split/route.rs`).
 //!
 //! The cell side is the mean segment length (`total length / number of
 //! segments`), which keeps the number of (segment, cell) incidences at most a
@@ -121,7 +120,7 @@ impl Grid {
 
 /// Each segment's cells, sorted, in one flat array.
 pub(crate) struct SegmentCells {
-    pub(crate) cells: Vec<u64>,
+    cells: Vec<u64>,
     /// Segment `i` owns `cells[start[i]..start[i + 1]]`.
     start: Vec<usize>,
 }
@@ -143,27 +142,10 @@ impl SegmentCells {
     pub(crate) fn of(&self, i: u32) -> &[u64] {
         &self.cells[self.start[i as usize]..self.start[i as usize + 1]]
     }
-
-    /// The smallest cell of both segments (a merge of two sorted lists).
-    pub(crate) fn first_common(&self, i: u32, j: u32) -> Option<u64> {
-        let (mut x, mut y) = (self.of(i).iter().peekable(), self.of(j).iter().peekable());
-        while let (Some(&&p), Some(&&q)) = (x.peek(), y.peek()) {
-            match p.cmp(&q) {
-                std::cmp::Ordering::Less => {
-                    x.next();
-                }
-                std::cmp::Ordering::Greater => {
-                    y.next();
-                }
-                std::cmp::Ordering::Equal => return Some(p),
-            }
-        }
-        None
-    }
 }
 
 /// The smallest box holding every segment.
-pub(crate) fn bounding_box(segments: &[(usize, [Point; 2])]) -> (Point, Point) {
+fn bounding_box(segments: &[(usize, [Point; 2])]) -> (Point, Point) {
     let mut lo = Point::new(f64::INFINITY, f64::INFINITY);
     let mut hi = Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
     for p in segments.iter().flat_map(|(_, s)| s) {

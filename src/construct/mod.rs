@@ -36,6 +36,7 @@ mod renumber;
 mod restart;
 mod split;
 mod state;
+mod status_treap;
 
 pub use builder::{Builder, MAX_POINTS};
 #[cfg(feature = "fault-injection")]

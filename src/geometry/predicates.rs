@@ -85,17 +85,23 @@ pub(crate) fn compare_directions(centre: Point, p: Point, q: Point) -> std::cmp:
 /// directions that differ by an angle near the rounding of a unit vector,
 /// where the orientation of rounded normals says nothing.
 pub(crate) fn turn(a: Point, b: Point, c: Point, d: Point) -> Orientation {
-    let (ux, uy, vx, vy) = (b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
-    let (left, right) = (ux * vy, uy * vx);
     if fault::active() {
+        let (left, right) = ((b.x - a.x) * (d.y - c.y), (b.y - a.y) * (d.x - c.x));
         return sign_of(fault::perturb_difference(left, right));
     }
-    // Each difference and product is off by at most half an ulp; the
-    // bound covers both, with room (Shewchuk-style, products of rounded
-    // differences).
+    exact_turn(a, b, c, d)
+}
+
+/// [`turn`], exact even in fault injection (for the splitting's sweep).
+pub(crate) fn exact_turn(a: Point, b: Point, c: Point, d: Point) -> Orientation {
+    let (ux, uy, vx, vy) = (b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
+    let (left, right) = (ux * vy, uy * vx);
+    // Each difference and product is off by at most half an ulp while the
+    // products are normal numbers; the bound covers both, with room
+    // (Shewchuk-style, products of rounded differences).
     let det = left - right;
-    let bound = 8.0 * f64::EPSILON * (left.abs() + right.abs());
-    if det.abs() > bound && det.is_finite() {
+    let size = left.abs() + right.abs();
+    if det.abs() > 8.0 * f64::EPSILON * size && det.is_finite() && size > 1e-290 {
         return sign_of(det);
     }
     let mut exact = Expansion::default();

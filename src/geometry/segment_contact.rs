@@ -124,8 +124,9 @@ pub(crate) struct Crossing {
     den: BigFloat,
 }
 
-/// Enough bits that the sums and products of degree 3 in `f64`s here are
-/// never truncated: their exponents span less than `3 · 2100` bits.
+/// Enough bits that the sums and products of degree at most 4 in `f64`s
+/// here are never truncated: their exponents span less than `4 · 2100`
+/// bits.
 const EXACT_BITS: u64 = 1 << 14;
 
 fn big(x: f64) -> BigFloat {
@@ -208,6 +209,40 @@ impl ContactPoint {
             s if s < 0 => Ordering::Less,
             0 => Ordering::Equal,
             _ => Ordering::Greater,
+        }
+    }
+}
+
+impl ContactPoint {
+    /// The side of the line through `s` (from `s[0]` to `s[1]`, distinct)
+    /// on which this point lies, exactly: `CounterClockwise` on the left.
+    pub(crate) fn side_of(&self, s: [Point; 2]) -> Orientation {
+        let c = match self {
+            ContactPoint::At(p) => return orientation(s[0], s[1], *p),
+            ContactPoint::Crossing(c) => c,
+        };
+        let [a, b] = s;
+        let (dx, dy) = (b.x - a.x, b.y - a.y);
+        let (px, py) = (c.approx.x - a.x, c.approx.y - a.y);
+        let (left, right) = (dx * py, dy * px);
+        // The rounding of the differences and products (as in
+        // `predicates::turn`), and the approximation's error `e` in each
+        // coordinate of the point, times the lengths it multiplies.
+        let size = left.abs() + right.abs();
+        let bound = 8.0 * f64::EPSILON * size + 2.0 * (dx.abs() + dy.abs()) * c.error;
+        let det = left - right;
+        if det.abs() > bound && det.is_finite() && size > 1e-290 {
+            return if det > 0.0 { Orientation::CounterClockwise } else { Orientation::Clockwise };
+        }
+        // cross(b - a, num / den - a) has the sign of
+        // cross(b - a, num - a · den), den > 0.
+        let (ax, ay, den) = (big(a.x), big(a.y), &c.den);
+        let (ux, uy) = (&big(b.x) - &ax, &big(b.y) - &ay);
+        let (vx, vy) = (&c.num[0] - &(&ax * den), &c.num[1] - &(&ay * den));
+        match (&(&ux * &vy) - &(&uy * &vx)).signum() {
+            s if s > 0 => Orientation::CounterClockwise,
+            s if s < 0 => Orientation::Clockwise,
+            _ => Orientation::Collinear,
         }
     }
 }

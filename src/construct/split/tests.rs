@@ -203,3 +203,87 @@ fn long_segments_crossing_at_tiny_angles_and_in_one_spot() {
         assert!(out.rounds <= 3, "case {case}: {} rounds", out.rounds);
     }
 }
+
+/// The sweep's contacts (counts by kind and hot pixels) against every
+/// pair tested by brute force, on `pieces` and `points` as one round sees
+/// them.
+fn sweep_agrees_with_brute_force(segments: &[[Point; 2]], points: &[Point]) -> Result<(), String> {
+    use contacts::pair_pixels;
+    let pieces: Vec<Piece> = segments.iter().map(|&ends| Piece { ends, origins: vec![0] }).collect();
+    let layout = Layout::of(&pieces, points);
+    let extent = segments.iter().flatten().chain(points).map(|q| q.x.abs().max(q.y.abs())).fold(1.0, f64::max);
+    let pixels = PixelGrid::for_magnitude(extent);
+    let mut swept = Vec::new();
+    let counts = contact_pixels(&layout, &pixels, &mut swept);
+    let mut brute = Vec::new();
+    let mut expected = ContactCounts::default();
+    let proper: Vec<[Point; 2]> = layout.proper.iter().map(|&(_, s)| s).collect();
+    for i in 0..proper.len() {
+        for j in i + 1..proper.len() {
+            if let Some(contact) = segment_contact(proper[i], proper[j]) {
+                pair_pixels(proper[i], proper[j], contact, &pixels, &mut brute, &mut expected);
+            }
+        }
+        for &q in &layout.lone {
+            if inside_segment(q, proper[i]) {
+                expected.touchings += 1;
+                brute.push(pixels.pixel_of(q));
+            }
+        }
+    }
+    for list in [&mut swept, &mut brute] {
+        list.sort_unstable();
+        list.dedup();
+    }
+    if counts != expected || swept != brute {
+        return Err(format!("sweep {counts:?} {swept:?}, brute force {expected:?} {brute:?}"));
+    }
+    Ok(())
+}
+
+/// Small integer grids: collinear overlaps, T-junctions, vertical pieces,
+/// many pieces through one point, repeated pieces and points on pieces.
+fn degenerate_segments() -> impl Strategy<Value = (Vec<[Point; 2]>, Vec<Point>)> {
+    let point = (0..7i32, 0..7i32).prop_map(|(x, y)| p(f64::from(x), f64::from(y)));
+    (prop::collection::vec((point.clone(), point.clone()), 0..24), prop::collection::vec(point, 0..6))
+        .prop_map(|(s, q)| (s.into_iter().map(|(a, b)| [a, b]).collect(), q))
+}
+
+use proptest::prelude::*;
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(3000))]
+
+    #[test]
+    fn the_sweep_finds_every_contact_on_degenerate_grids((segments, points) in degenerate_segments()) {
+        sweep_agrees_with_brute_force(&segments, &points).map_err(TestCaseError::fail)?;
+        // mirrored and transposed: other orders of the sweep's events
+        let mirror: Vec<[Point; 2]> = segments.iter().map(|s| s.map(|q| p(-q.x, q.y))).collect();
+        let mirrored_points: Vec<Point> = points.iter().map(|q| p(-q.x, q.y)).collect();
+        sweep_agrees_with_brute_force(&mirror, &mirrored_points).map_err(TestCaseError::fail)?;
+        let swap: Vec<[Point; 2]> = segments.iter().map(|s| s.map(|q| p(q.y, q.x))).collect();
+        let swapped_points: Vec<Point> = points.iter().map(|q| p(q.y, q.x)).collect();
+        sweep_agrees_with_brute_force(&swap, &swapped_points).map_err(TestCaseError::fail)?;
+    }
+
+    #[test]
+    fn the_sweep_finds_every_contact_among_random_segments(
+        ends in prop::collection::vec(((-1.0..1.0f64, -1.0..1.0f64), (-1.0..1.0f64, -1.0..1.0f64)), 0..40),
+        scale in prop::sample::select(vec![1.0, 1e-9, 3e7]),
+    ) {
+        let segments: Vec<[Point; 2]> =
+            ends.iter().map(|&((ax, ay), (bx, by))| [p(ax * scale, ay * scale), p(bx * scale, by * scale)]).collect();
+        sweep_agrees_with_brute_force(&segments, &[]).map_err(TestCaseError::fail)?;
+    }
+}
+
+#[test]
+fn the_sweep_finds_crossings_of_long_nearly_parallel_pieces() {
+    // a bundle of long pieces fanning out from nearly one point, crossed
+    // by a few others: many crossing events close together
+    let mut rng = SplitMix64(11);
+    let mut segments: Vec<[Point; 2]> =
+        (0..60).map(|k| [p(0.0, k as f64 * 1e-7 + rng.unit() * 1e-9), p(1000.0, 60.0 - k as f64 + rng.unit())]).collect();
+    segments.extend((0..6).map(|k| [p(100.0 * k as f64 + 3.0, -5.0), p(100.0 * k as f64 + 40.0, 80.0)]));
+    sweep_agrees_with_brute_force(&segments, &[p(500.0, 30.0)]).unwrap();
+}
