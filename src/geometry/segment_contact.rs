@@ -4,6 +4,7 @@
 //! injection) and coordinate comparisons ([`strictly_between`]), no epsilon
 //! anywhere. The input check (`construct/input_check/`) asks these.
 
+use std::cell::OnceCell;
 use std::cmp::Ordering;
 
 use super::bigfloat::BigFloat;
@@ -111,15 +112,23 @@ pub(crate) enum ContactPoint {
     Crossing(Box<Crossing>),
 }
 
-/// The crossing point of two non-parallel segments: `(x, y) / den` exactly
-/// (`den > 0`), and an `f64` approximation with a bound on its error in
-/// each coordinate, which decides most comparisons without the big numbers.
+/// The crossing point of two non-parallel segments, kept as the two
+/// segments: an `f64` approximation with a bound on its error in each
+/// coordinate, which decides most comparisons, and the exact value
+/// `(x, y) / den` (`den > 0`) in big numbers, computed only when a
+/// comparison needs it.
 #[derive(Clone, Debug)]
 pub(crate) struct Crossing {
     approx: Point,
     /// `|approx - exact|` is below this in each coordinate (infinite when
     /// the approximation is not trusted).
     error: f64,
+    segments: [[Point; 2]; 2],
+    exact: OnceCell<ExactCrossing>,
+}
+
+#[derive(Clone, Debug)]
+struct ExactCrossing {
     num: [BigFloat; 2],
     den: BigFloat,
 }
@@ -136,36 +145,8 @@ fn big(x: f64) -> BigFloat {
 impl ContactPoint {
     /// The crossing point of the lines through `s` and `t` (not parallel).
     pub(crate) fn crossing(s: [Point; 2], t: [Point; 2]) -> ContactPoint {
-        let [a, b] = s.map(|p| [big(p.x), big(p.y)]);
-        let [c, d] = t.map(|p| [big(p.x), big(p.y)]);
-        let sub = |u: &[BigFloat; 2], v: &[BigFloat; 2]| [&u[0] - &v[0], &u[1] - &v[1]];
-        let cross = |u: &[BigFloat; 2], v: &[BigFloat; 2]| &(&u[0] * &v[1]) - &(&u[1] * &v[0]);
-        // a + (b - a) · u / den, with den = cross(b - a, d - c) and
-        // u = cross(c - a, d - c).
-        let (r, q) = (sub(&b, &a), sub(&d, &c));
-        let mut den = cross(&r, &q);
-        let mut u = cross(&sub(&c, &a), &q);
-        if den.signum() < 0 {
-            den = -&den;
-            u = -&u;
-        }
-        let num = [&(&a[0] * &den) + &(&r[0] * &u), &(&a[1] * &den) + &(&r[1] * &u)];
-        let (x, y, w) = (num[0].to_f64(), num[1].to_f64(), den.to_f64());
-        let approx = Point::new(x / w, y / w);
-        // Each conversion is within 2^-52 relative when its result is a
-        // normal number, the quotient within 2^-53: 8 ulps cover it all.
-        let trusted = |v: f64, exact: &BigFloat| (v.is_normal() && v.abs() < f64::MAX / 4.0) || exact.signum() == 0;
-        let error = if trusted(x, &num[0])
-            && trusted(y, &num[1])
-            && trusted(w, &den)
-            && trusted(approx.x, &num[0])
-            && trusted(approx.y, &num[1])
-        {
-            8.0 * f64::EPSILON * approx.x.abs().max(approx.y.abs())
-        } else {
-            f64::INFINITY
-        };
-        ContactPoint::Crossing(Box::new(Crossing { approx, error, num, den }))
+        let (approx, error) = approximate_crossing(s, t);
+        ContactPoint::Crossing(Box::new(Crossing { approx, error, segments: [s, t], exact: OnceCell::new() }))
     }
 
     /// The approximation and its error bound.
@@ -180,14 +161,24 @@ impl ContactPoint {
     fn exact(&self, axis: usize) -> (BigFloat, BigFloat) {
         match self {
             ContactPoint::At(p) => (big(if axis == 0 { p.x } else { p.y }), big(1.0)),
-            ContactPoint::Crossing(c) => (c.num[axis].clone(), c.den.clone()),
+            ContactPoint::Crossing(c) => {
+                let exact = c.exact();
+                (exact.num[axis].clone(), exact.den.clone())
+            }
         }
     }
 
     /// The lexicographic order ([`lex_cmp`]) of two contact points, exact.
     pub(crate) fn cmp(&self, other: &ContactPoint) -> Ordering {
-        if let (ContactPoint::At(p), ContactPoint::At(q)) = (self, other) {
-            return lex_cmp(*p, *q);
+        match (self, other) {
+            (ContactPoint::At(p), ContactPoint::At(q)) => return lex_cmp(*p, *q),
+            // the crossing of one pair of segments (in either order)
+            (ContactPoint::Crossing(c), ContactPoint::Crossing(d))
+                if c.segments == d.segments || c.segments == [d.segments[1], d.segments[0]] =>
+            {
+                return Ordering::Equal
+            }
+            _ => {}
         }
         self.cmp_axis(other, 0).then_with(|| self.cmp_axis(other, 1))
     }
@@ -236,15 +227,72 @@ impl ContactPoint {
         }
         // cross(b - a, num / den - a) has the sign of
         // cross(b - a, num - a · den), den > 0.
-        let (ax, ay, den) = (big(a.x), big(a.y), &c.den);
+        let exact = c.exact();
+        let (ax, ay, den) = (big(a.x), big(a.y), &exact.den);
         let (ux, uy) = (&big(b.x) - &ax, &big(b.y) - &ay);
-        let (vx, vy) = (&c.num[0] - &(&ax * den), &c.num[1] - &(&ay * den));
+        let (vx, vy) = (&exact.num[0] - &(&ax * den), &exact.num[1] - &(&ay * den));
         match (&(&ux * &vy) - &(&uy * &vx)).signum() {
             s if s > 0 => Orientation::CounterClockwise,
             s if s < 0 => Orientation::Clockwise,
             _ => Orientation::Collinear,
         }
     }
+}
+
+impl Crossing {
+    /// The exact value, computed on first use.
+    fn exact(&self) -> &ExactCrossing {
+        self.exact.get_or_init(|| {
+            let [s, t] = self.segments;
+            let [a, b] = s.map(|p| [big(p.x), big(p.y)]);
+            let [c, d] = t.map(|p| [big(p.x), big(p.y)]);
+            let sub = |u: &[BigFloat; 2], v: &[BigFloat; 2]| [&u[0] - &v[0], &u[1] - &v[1]];
+            let cross = |u: &[BigFloat; 2], v: &[BigFloat; 2]| &(&u[0] * &v[1]) - &(&u[1] * &v[0]);
+            // a + (b - a) · u / den, with den = cross(b - a, d - c) and
+            // u = cross(c - a, d - c).
+            let (r, q) = (sub(&b, &a), sub(&d, &c));
+            let mut den = cross(&r, &q);
+            let mut u = cross(&sub(&c, &a), &q);
+            if den.signum() < 0 {
+                den = -&den;
+                u = -&u;
+            }
+            let num = [&(&a[0] * &den) + &(&r[0] * &u), &(&a[1] * &den) + &(&r[1] * &u)];
+            ExactCrossing { num, den }
+        })
+    }
+}
+
+/// The crossing point of the lines through `s` and `t` in `f64`, and a
+/// bound on its error in each coordinate (infinite where the lines are so
+/// nearly parallel, or the numbers so far from 1, that the bound is not
+/// worth having).
+///
+/// With `u = 2^-53`: each rounded difference is within `u` relative, each
+/// product of two within `3u` of the exact one, so the computed
+/// `den = cross(b - a, d - c)` and `num = cross(c - a, d - c)` are within
+/// `E = 5u · (|x₁y₂| + |y₁x₂|)` of theirs (room included); then
+/// `t = num / den` within `Δt = (E_num + |t| E_den) / (|den| − E_den) + u|t|`,
+/// and `a + (b − a) t` within `1.01 |b − a| Δt + 2.01 u |(b − a) t| + u |x|`
+/// per coordinate.
+fn approximate_crossing([a, b]: [Point; 2], [c, d]: [Point; 2]) -> (Point, f64) {
+    const U: f64 = f64::EPSILON / 2.0;
+    let (rx, ry, qx, qy, wx, wy) = (b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y, c.x - a.x, c.y - a.y);
+    let cross_with_error = |x1: f64, y1: f64, x2: f64, y2: f64| {
+        let (p, q) = (x1 * y2, y1 * x2);
+        (p - q, 5.0 * U * (p.abs() + q.abs()), p.abs() + q.abs())
+    };
+    let (den, den_error, den_size) = cross_with_error(rx, ry, qx, qy);
+    let (num, num_error, num_size) = cross_with_error(wx, wy, qx, qy);
+    let t = num / den;
+    let t_error = (num_error + t.abs() * den_error) / (den.abs() - den_error) + U * t.abs();
+    let approx = Point::new(a.x + rx * t, a.y + ry * t);
+    let coordinate_error = |r: f64, x: f64| 1.01 * r.abs() * t_error + 2.01 * U * (r * t).abs() + U * x.abs();
+    let error = coordinate_error(rx, approx.x).max(coordinate_error(ry, approx.y));
+    // products near the subnormal range lose their relative accuracy
+    let normal = den_size > 1e-280 && num_size > 1e-280 && den_size < 1e280 && num_size < 1e280;
+    let trusted = normal && den.abs() > 2.0 * den_error && error.is_finite() && approx.x.is_finite() && approx.y.is_finite();
+    (approx, if trusted { 1.01 * error + f64::MIN_POSITIVE } else { f64::INFINITY })
 }
 
 /// The lexicographically smallest point that `s` and `t` share, given
@@ -262,5 +310,70 @@ pub(crate) fn first_contact(s: [Point; 2], t: [Point; 2], contact: SegmentContac
         }
         SegmentContact::EndpointOfSecondOnFirst => ContactPoint::At(inside_of(t, s)),
         SegmentContact::EndpointOfFirstOnSecond => ContactPoint::At(inside_of(s, t)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// `|approx − exact| ≤ error` in each coordinate, decided exactly.
+    fn bound_holds(s: [Point; 2], t: [Point; 2]) -> Result<(), String> {
+        let ContactPoint::Crossing(c) = ContactPoint::crossing(s, t) else { unreachable!() };
+        if !c.error.is_finite() {
+            return Ok(());
+        }
+        let exact = c.exact();
+        for (axis, approx) in [c.approx.x, c.approx.y].into_iter().enumerate() {
+            let off = (&(&big(approx) * &exact.den) - &exact.num[axis]).abs();
+            let allowed = &big(c.error) * &exact.den;
+            if (&off - &allowed).signum() > 0 {
+                return Err(format!("{s:?} {t:?}: axis {axis} off by more than {}", c.error));
+            }
+        }
+        Ok(())
+    }
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(4000))]
+
+        #[test]
+        fn the_approximate_crossing_is_within_its_bound(
+            a in (-1.0..1.0f64, -1.0..1.0f64), b in (-1.0..1.0f64, -1.0..1.0f64),
+            c in (-1.0..1.0f64, -1.0..1.0f64), tilt in -1.0..1.0f64,
+            steep in prop::sample::select(vec![1.0, 1e-6, 1e-12, 1e-15]),
+            scale in prop::sample::select(vec![1.0, 1e-200, 1e200, 3.0e7]),
+        ) {
+            // t through c, at an angle to s from wide down to nearly parallel
+            let (s0, s1) = (p(a.0, a.1), p(b.0, b.1));
+            prop_assume!(s0 != s1);
+            let (dx, dy) = (s1.x - s0.x, s1.y - s0.y);
+            let (ex, ey) = (dx + tilt * steep * -dy, dy + tilt * steep * dx);
+            let (t0, t1) = (p(c.0 - ex, c.1 - ey), p(c.0 + ex, c.1 + ey));
+            let k = |q: Point| p(q.x * scale, q.y * scale);
+            let (s, t) = ([k(s0), k(s1)], [k(t0), k(t1)]);
+            // (a tilt lost in rounding leaves them parallel: nothing to check)
+            if turn_is_not_zero(s, t) {
+                bound_holds(s, t).map_err(TestCaseError::fail)?;
+            }
+        }
+    }
+
+    fn turn_is_not_zero(s: [Point; 2], t: [Point; 2]) -> bool {
+        super::super::predicates::exact_turn(s[0], s[1], t[0], t[1]) != Orientation::Collinear
+    }
+
+    #[test]
+    fn nearly_parallel_crossings_fall_back_to_the_exact_value() {
+        let s = [p(0.0, 0.0), p(1.0, 1e-17)];
+        let t = [p(0.0, 1e-300), p(1.0, 0.0)];
+        bound_holds(s, t).unwrap();
+        let (q, r) = (ContactPoint::crossing(s, t), ContactPoint::crossing(t, s));
+        assert_eq!(q.cmp(&r), Ordering::Equal);
     }
 }

@@ -36,8 +36,8 @@
 //! event costs one descent and O(log n) expected per piece entering or
 //! leaving; each pair tested in step 2 is a contact (an overlap may be met
 //! again at later events of its common part; a set keeps it counted once);
-//! each event queues at most one crossing per new adjacency, so at most
-//! `n + 2k` crossings are queued in all. Compared with the uniform grid it
+//! each pair's crossing is queued once (a set of the pairs queued), so at
+//! most k crossings are in the queue. Compared with the uniform grid it
 //! replaces here, long nearly parallel pieces no longer meet in many
 //! shared cells.
 
@@ -80,7 +80,9 @@ pub(super) fn contact_pixels(layout: &Layout, pixels: &PixelGrid, hot: &mut Vec<
         status: Treap::new(segments.iter().copied()),
         segments,
         crossings: BinaryHeap::new(),
+        queued: HashSet::new(),
         overlaps: HashSet::new(),
+        known_on: Vec::new(),
         pixels,
         hot,
         counts: ContactCounts::default(),
@@ -101,12 +103,16 @@ pub(super) fn contact_pixels(layout: &Layout, pixels: &PixelGrid, hot: &mut Vec<
         .min_by(|p, q| lex_cmp(*p, *q));
         let q = match (input_next, sweep.crossings.peek()) {
             (None, None) => break,
-            (Some(p), Some(Reverse(Queued(c)))) if c.cmp(&ContactPoint::At(p)) != Ordering::Less => ContactPoint::At(p),
+            (Some(p), Some(Reverse(Queued(c, ..)))) if c.cmp(&ContactPoint::At(p)) != Ordering::Less => ContactPoint::At(p),
             (Some(p), None) => ContactPoint::At(p),
-            (_, Some(_)) => sweep.crossings.pop().expect("peeked").0 .0,
+            (_, Some(Reverse(Queued(c, ..)))) => c.clone(),
         };
-        while sweep.crossings.peek().is_some_and(|Reverse(Queued(c))| c.cmp(&q) == Ordering::Equal) {
-            sweep.crossings.pop();
+        // the pieces of the crossings queued at q pass through it: their
+        // side needs no exact evaluation
+        sweep.known_on.clear();
+        while sweep.crossings.peek().is_some_and(|Reverse(Queued(c, ..))| c.cmp(&q) == Ordering::Equal) {
+            let Reverse(Queued(_, i, j)) = sweep.crossings.pop().expect("peeked");
+            sweep.known_on.extend([sweep.segments[i as usize], sweep.segments[j as usize]]);
         }
         let (starts, lone_here) = match &q {
             ContactPoint::At(p) => {
@@ -131,8 +137,9 @@ pub(super) fn contact_pixels(layout: &Layout, pixels: &PixelGrid, hot: &mut Vec<
     sweep.counts
 }
 
-/// A crossing point in the queue, ordered exactly.
-struct Queued(ContactPoint);
+/// A crossing point in the queue, ordered exactly, and the two pieces
+/// that cross there.
+struct Queued(ContactPoint, u32, u32);
 
 impl PartialEq for Queued {
     fn eq(&self, other: &Queued) -> bool {
@@ -160,8 +167,14 @@ struct ContactSweep<'a> {
     segments: Vec<[Point; 2]>,
     /// The pieces the sweep line crosses, from below to above.
     status: Treap,
-    /// Crossing points ahead of the sweep line (with repeats).
+    /// Crossing points ahead of the sweep line (several pairs may cross
+    /// at one point).
     crossings: BinaryHeap<Reverse<Queued>>,
+    /// The pairs whose crossing has been queued: two pieces cross once, so
+    /// each pair is queued at most once, however often it becomes adjacent.
+    queued: HashSet<(u32, u32)>,
+    /// The pieces known to pass through the current event point.
+    known_on: Vec<[Point; 2]>,
     /// The overlapping pairs counted so far (an overlap meets at many
     /// points).
     overlaps: HashSet<(u32, u32)>,
@@ -185,8 +198,10 @@ impl ContactSweep<'_> {
     /// number of isolated points at `q`.
     fn event(&mut self, q: &ContactPoint, starts: std::ops::Range<u32>, lone_here: usize) {
         // Step 1: the run through q and its neighbours.
-        let on_q = |status: &Treap, k: u32| k != NIL && q.side_of(status.segment(k)) == Orientation::Collinear;
-        let (below, above, on) = self.status.locate(|s| q.side_of(s));
+        let known_on = &self.known_on;
+        let side = |s: [Point; 2]| if known_on.contains(&s) { Orientation::Collinear } else { q.side_of(s) };
+        let on_q = |status: &Treap, k: u32| k != NIL && side(status.segment(k)) == Orientation::Collinear;
+        let (below, above, on) = self.status.locate(side);
         self.through.clear();
         let (low, high) = if on == NIL {
             (below, above)
@@ -295,7 +310,7 @@ impl ContactSweep<'_> {
     /// Queues the crossing point of nodes `i` and `j` (either may be
     /// `NIL`) when they cross properly past `q`.
     fn queue_crossing(&mut self, i: u32, j: u32, q: &ContactPoint) {
-        if i == NIL || j == NIL {
+        if i == NIL || j == NIL || self.queued.contains(&(i.min(j), i.max(j))) {
             return;
         }
         let (s, t) = (self.segment(i), self.segment(j));
@@ -304,7 +319,8 @@ impl ContactSweep<'_> {
         }
         let crossing = ContactPoint::crossing(s, t);
         if crossing.cmp(q) == Ordering::Greater {
-            self.crossings.push(Reverse(Queued(crossing)));
+            self.queued.insert((i.min(j), i.max(j)));
+            self.crossings.push(Reverse(Queued(crossing, i, j)));
         }
     }
 }
