@@ -202,9 +202,7 @@ impl ContactPoint {
             _ => Ordering::Greater,
         }
     }
-}
 
-impl ContactPoint {
     /// The side of the line through `s` (from `s[0]` to `s[1]`, distinct)
     /// on which this point lies, exactly: `CounterClockwise` on the left.
     pub(crate) fn side_of(&self, s: [Point; 2]) -> Orientation {

@@ -88,6 +88,7 @@ pub(super) fn contact_pixels(layout: &Layout, pixels: &PixelGrid, hot: &mut Vec<
         counts: ContactCounts::default(),
         through: Vec::new(),
         interior: Vec::new(),
+        ending: Vec::new(),
         entering: Vec::new(),
     };
     let (mut next_start, mut next_end, mut next_lone) = (0, 0, 0);
@@ -101,15 +102,19 @@ pub(super) fn contact_pixels(layout: &Layout, pixels: &PixelGrid, hot: &mut Vec<
         .into_iter()
         .flatten()
         .min_by(|p, q| lex_cmp(*p, *q));
+        // the pieces of the crossings queued at q pass through it: their
+        // side needs no exact evaluation
+        sweep.known_on.clear();
         let q = match (input_next, sweep.crossings.peek()) {
             (None, None) => break,
             (Some(p), Some(Reverse(Queued(c, ..)))) if c.cmp(&ContactPoint::At(p)) != Ordering::Less => ContactPoint::At(p),
             (Some(p), None) => ContactPoint::At(p),
-            (_, Some(Reverse(Queued(c, ..)))) => c.clone(),
+            (_, Some(_)) => {
+                let Reverse(Queued(c, i, j)) = sweep.crossings.pop().expect("peeked");
+                sweep.known_on.extend([sweep.segments[i as usize], sweep.segments[j as usize]]);
+                c
+            }
         };
-        // the pieces of the crossings queued at q pass through it: their
-        // side needs no exact evaluation
-        sweep.known_on.clear();
         while sweep.crossings.peek().is_some_and(|Reverse(Queued(c, ..))| c.cmp(&q) == Ordering::Equal) {
             let Reverse(Queued(_, i, j)) = sweep.crossings.pop().expect("peeked");
             sweep.known_on.extend([sweep.segments[i as usize], sweep.segments[j as usize]]);
@@ -182,9 +187,11 @@ struct ContactSweep<'a> {
     hot: &'a mut Vec<Pixel>,
     counts: ContactCounts,
     /// Scratch space, kept from event to event: the run through the event
-    /// point, its pieces with the point inside, the pieces entering.
+    /// point, its pieces with the point inside and those ending there, the
+    /// pieces entering.
     through: Vec<u32>,
     interior: Vec<u32>,
+    ending: Vec<u32>,
     entering: Vec<u32>,
 }
 
@@ -225,8 +232,11 @@ impl ContactSweep<'_> {
         };
         let ends_at_q = |s: [Point; 2]| matches!(q, ContactPoint::At(p) if lex_cmp(s[1], *p) == Ordering::Equal);
         self.interior.clear();
+        self.ending.clear();
         for &k in &self.through {
-            if !ends_at_q(self.segments[k as usize]) {
+            if ends_at_q(self.segments[k as usize]) {
+                self.ending.push(k);
+            } else {
                 self.interior.push(k);
             }
         }
@@ -243,11 +253,8 @@ impl ContactSweep<'_> {
             for y in x + 1..self.interior.len() {
                 self.pair(i, self.interior[y]);
             }
-            for y in 0..self.through.len() {
-                let j = self.through[y];
-                if ends_at_q(self.segment(j)) {
-                    self.pair(i, j);
-                }
+            for y in 0..self.ending.len() {
+                self.pair(i, self.ending[y]);
             }
             for j in starts.clone() {
                 self.pair(i, j);

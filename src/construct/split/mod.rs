@@ -47,7 +47,6 @@ mod contacts;
 mod rings;
 mod route;
 
-use crate::construct::grid::{Grid, SegmentCells};
 use crate::error::{Error, ErrorKind};
 use crate::geometry::scale::Scale;
 use crate::geometry::snap::PixelGrid;
@@ -159,12 +158,10 @@ fn max_displacement(pieces: &[Piece], segments: &[[Point; 2]], internal: impl Fn
 
 /// The pieces of one round as both its steps (the contact search and the
 /// routing) see them, laid out once: those of nonzero length, by their
-/// index, in a grid; and the points (isolated ones and zero-length pieces).
+/// index; and the points (isolated ones and zero-length pieces).
 pub(super) struct Layout {
     pub proper: Vec<(usize, [Point; 2])>,
     pub lone: Vec<Point>,
-    /// The grid of `proper` and each one's cells; `None` when it is empty.
-    pub grid: Option<(Grid, SegmentCells)>,
 }
 
 impl Layout {
@@ -178,12 +175,7 @@ impl Layout {
                 proper.push((k, p.ends));
             }
         }
-        let grid = (!proper.is_empty()).then(|| {
-            let grid = Grid::for_segments(&proper);
-            let cells = SegmentCells::new(&grid, &proper);
-            (grid, cells)
-        });
-        Layout { proper, lone, grid }
+        Layout { proper, lone }
     }
 }
 

@@ -6,6 +6,7 @@
 use std::collections::{HashMap, HashSet};
 
 use super::{Layout, Piece};
+use crate::construct::grid::{Grid, SegmentCells};
 use crate::geometry::snap::{Pixel, PixelGrid};
 use crate::geometry::Point;
 
@@ -40,7 +41,13 @@ impl HotPixels {
 pub(super) fn route(pieces: Vec<Piece>, layout: &Layout, hot: &HotPixels, pixels: &PixelGrid) -> Vec<Piece> {
     let proper = &layout.proper;
     let mut out = Merged::default();
-    let Some((grid, cells)) = &layout.grid else {
+    // The grid is built here, not with the layout: the last round's
+    // contact search finds nothing and routes nothing.
+    let Some((grid, cells)) = (!proper.is_empty()).then(|| {
+        let grid = Grid::for_segments(proper);
+        let cells = SegmentCells::new(&grid, proper);
+        (grid, cells)
+    }) else {
         for piece in pieces {
             let q = hot.snap(pixels, piece.ends[0]);
             out.push([q, q], piece.origins);
