@@ -26,7 +26,6 @@
 mod builder;
 mod collinear;
 mod deletion_tree;
-mod grid;
 mod input_check;
 mod insert_point;
 mod insert_segment;

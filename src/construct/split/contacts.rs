@@ -38,8 +38,8 @@
 //! again at later events of its common part; a set keeps it counted once);
 //! each pair's crossing is queued once (a set of the pairs queued), so at
 //! most k crossings are in the queue. Compared with the uniform grid it
-//! replaces here, long nearly parallel pieces no longer meet in many
-//! shared cells.
+//! replaced, long nearly parallel pieces no longer meet in many shared
+//! cells.
 
 use std::cmp::{Ordering, Reverse};
 use std::collections::{BinaryHeap, HashSet};

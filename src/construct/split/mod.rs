@@ -44,6 +44,7 @@
 
 mod build;
 mod contacts;
+mod pixel_tree;
 mod rings;
 mod route;
 
@@ -122,7 +123,7 @@ pub(crate) fn split(points: &[Point], segments: &[[Point; 2]]) -> Result<SplitIn
             ));
         }
         hot.extend(found);
-        pieces = route(pieces, &layout, &hot, &pixels);
+        pieces = route(pieces, &hot, &pixels);
         moved = moved.into_iter().map(|p| hot.snap(&pixels, p)).collect();
         rounds += 1;
     }

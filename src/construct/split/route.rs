@@ -5,12 +5,12 @@
 
 use std::collections::{HashMap, HashSet};
 
-use super::{Layout, Piece};
-use crate::construct::grid::{Grid, SegmentCells};
+use super::pixel_tree::PixelTree;
+use super::Piece;
 use crate::geometry::snap::{Pixel, PixelGrid};
 use crate::geometry::Point;
 
-/// The hot pixels, and where to find them.
+/// The hot pixels of every round so far.
 pub(super) struct HotPixels {
     set: HashSet<Pixel>,
 }
@@ -37,58 +37,23 @@ impl HotPixels {
 }
 
 /// The pieces after one round of snapping through `hot`.
-/// `layout` is the pieces' layout of this round.
-pub(super) fn route(pieces: Vec<Piece>, layout: &Layout, hot: &HotPixels, pixels: &PixelGrid) -> Vec<Piece> {
-    let proper = &layout.proper;
+pub(super) fn route(pieces: Vec<Piece>, hot: &HotPixels, pixels: &PixelGrid) -> Vec<Piece> {
     let mut out = Merged::default();
-    // The grid is built here, not with the layout: the last round's
-    // contact search finds nothing and routes nothing.
-    let Some((grid, cells)) = (!proper.is_empty()).then(|| {
-        let grid = Grid::for_segments(proper);
-        let cells = SegmentCells::new(&grid, proper);
-        (grid, cells)
-    }) else {
-        for piece in pieces {
-            let q = hot.snap(pixels, piece.ends[0]);
-            out.push([q, q], piece.origins);
-        }
-        return out.pieces;
-    };
-    // each hot pixel in every cell its square overlaps: a segment meeting
-    // the square has a point in one of those cells, and its cover holds it
-    let half = pixels.size() / 2.0;
-    let mut by_cell: HashMap<u64, Vec<Pixel>> = HashMap::new();
-    for &pixel in &hot.set {
-        let c = pixels.centre(pixel);
-        let mut keys: Vec<u64> = [(-half, -half), (half, -half), (half, half), (-half, half)]
-            .iter()
-            .map(|&(dx, dy)| grid.cell_of(Point::new(c.x + dx, c.y + dy)))
-            .collect();
-        keys.sort_unstable();
-        keys.dedup();
-        for key in keys {
-            by_cell.entry(key).or_default().push(pixel);
-        }
-    }
-    let mut position = 0;
+    // Built here, per round that routes: the last round's contact search
+    // finds nothing and routes nothing.
+    let tree = PixelTree::new(hot.set.iter().copied().collect());
     let mut met: Vec<Pixel> = Vec::new();
-    for (k, piece) in pieces.into_iter().enumerate() {
+    for piece in pieces {
         let [a, b] = piece.ends;
         if a == b {
             let q = hot.snap(pixels, a);
             out.push([q, q], piece.origins);
             continue;
         }
-        let own = cells.of(position as u32);
-        debug_assert_eq!(proper[position].0, k);
-        position += 1;
         met.clear();
+        tree.met_by(pixels, a, b, &mut met);
         let (pa, pb) = (pixels.pixel_of(a), pixels.pixel_of(b));
-        for cell in own {
-            if let Some(list) = by_cell.get(cell) {
-                met.extend(list.iter().filter(|&&x| x != pa && x != pb && pixels.meets(x, a, b)));
-            }
-        }
+        met.retain(|&x| x != pa && x != pb);
         let (a2, b2) = (hot.snap(pixels, a), hot.snap(pixels, b));
         if met.is_empty() {
             if a2 != b2 {
@@ -96,8 +61,6 @@ pub(super) fn route(pieces: Vec<Piece>, layout: &Layout, hot: &HotPixels, pixels
             }
             continue;
         }
-        met.sort_unstable();
-        met.dedup();
         // along the piece, by the projection of each centre
         let (dx, dy) = (b.x - a.x, b.y - a.y);
         let along = |q: Point| (q.x - a.x) * dx + (q.y - a.y) * dy;
