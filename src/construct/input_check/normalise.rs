@@ -43,9 +43,11 @@ pub(super) fn normalise(points: &[Point], segments: &[[Point; 2]], internal: imp
     keyed.sort_unstable();
     // Per input segment, the earliest with its key (itself if none is
     // earlier); then, once kept, that one's position among the kept.
-    let mut first = vec![u32::MAX; segments.len()];
-    for group in keyed.chunk_by(|x, y| x.0 == y.0) {
-        for &(_, i) in group {
+    // (Each is its own earliest but for repeats, which are rare: only
+    // they are written out of input order.)
+    let mut first: Vec<u32> = (0..segments.len() as u32).collect();
+    for group in keyed.chunk_by(|x, y| x.0 == y.0).filter(|g| g.len() > 1) {
+        for &(_, i) in &group[1..] {
             first[i as usize] = group[0].1;
         }
     }
