@@ -72,6 +72,29 @@ fn an_input_that_meets_nothing_builds_as_without_splitting() {
     assert_eq!((d.stats().snap_rounds, d.max_split_displacement()), (0, 0.0));
 }
 
+#[test]
+fn repeated_segments_are_counted_as_the_strict_build_counts_them() {
+    // a repeat, a reversed repeat with -0.0, a zero-length one: no crossing
+    let segments = [
+        [[0.0, 0.0], [1.0, 0.5]],
+        [[1.0, 0.5], [-0.0, 0.0]],
+        [[0.0, 0.0], [1.0, 0.5]],
+        [[2.0, 2.0], [3.0, 2.5]],
+        [[4.0, 4.0], [4.0, 4.0]],
+    ];
+    let d = check(&[], &segments);
+    let mut b = Builder::new();
+    b.add_segments(segments).unwrap();
+    let strict = b.build().unwrap();
+    assert_eq!(strict.stats().duplicate_segments, 2);
+    assert_eq!(d.stats().duplicate_segments, strict.stats().duplicate_segments);
+    assert_eq!(d.stats().zero_length_segments, strict.stats().zero_length_segments);
+    // and beside a crossing, where the strict build refuses the input
+    let mut crossing = segments.to_vec();
+    crossing.push([[0.0, 1.0], [1.0, -1.0]]);
+    assert_eq!(check(&[], &crossing).stats().duplicate_segments, 2);
+}
+
 /// Random rings of random points: polygons that cross themselves and each
 /// other. The domain is the even-odd region of the rings as given.
 #[test]

@@ -27,12 +27,27 @@ pub(crate) fn diagram_of_split(points: &[Point], segments: &[[Point; 2]], rings:
     diagram.split = Some(Box::new(SplitPieces::new(&origins, segments.len(), split.max_displacement, split.pixel)));
     let stats = &mut diagram.stats;
     stats.input_segments = segments.len();
+    // the pieces are merged already: the repeats are counted in the input
+    stats.duplicate_segments = repeated_segments(segments);
     stats.pieces = split.pieces.len();
     stats.crossings = split.crossings;
     stats.overlaps = split.overlaps;
     stats.touchings = split.touchings;
     stats.snap_rounds = split.rounds;
     Ok(diagram)
+}
+
+/// Input segments of nonzero length that repeat an earlier one (either
+/// direction), as the strict build counts them; their pieces merge.
+fn repeated_segments(segments: &[[Point; 2]]) -> usize {
+    let mut keys: Vec<[u64; 4]> = segments
+        .iter()
+        .map(|s| s.map(Point::canonical_zero))
+        .filter(|[a, b]| a != b)
+        .map(|[a, b]| Point::segment_key(a, b))
+        .collect();
+    keys.sort_unstable();
+    keys.windows(2).filter(|w| w[0] == w[1]).count()
 }
 
 /// A build error about pieces, its indices turned into the input segments
