@@ -82,14 +82,22 @@ impl PixelTree {
         if self.nodes.is_empty() {
             return;
         }
-        let mut stack = vec![0u32];
-        while let Some(k) = stack.pop() {
-            let node = &self.nodes[k as usize];
+        // Depth first: the stack holds at most one sibling per level and
+        // the tree, split at medians, has fewer than 64 levels.
+        let mut stack = [0u32; 66];
+        let mut len = 1;
+        while len > 0 {
+            len -= 1;
+            let node = &self.nodes[stack[len] as usize];
             if !box_may_meet(grid, node, a, b) {
                 continue;
             }
             match node.children {
-                Some(children) => stack.extend(children),
+                Some([left, right]) => {
+                    stack[len] = right;
+                    stack[len + 1] = left;
+                    len += 2;
+                }
                 None => {
                     let pixels = &self.pixels[node.start as usize..node.end as usize];
                     out.extend(pixels.iter().filter(|&&p| grid.meets(p, a, b)));
