@@ -411,6 +411,13 @@ segvoronoi_cgal_fixture_test(search_denormal_second_order_gap_4seg --degenerate)
 # Agrees since such values are solved again at 8800 bits (oracle.rs,
 # beyond_range_answer)
 segvoronoi_cgal_fixture_test(search_denormal_far_collinear_2seg)
+# five integer segments of a junction family with one end moved from x = 0 to x = -4 x 2^-1074 (search seed 21
+# with the subnormal kinds, input 9482, nudged-junctions-denormal, shuffled): a chain (4,12)-(1,15)-(-e,16) bent
+# by about 2^-1076 rad, and a point (1,10). The circle of the point and the two pieces was solved from the
+# difference of their unit normals, rounding noise at that kink: a vertex placed far off its sites, whose
+# garbage position the filter then trusted, so ours had S2-S4 where CGAL has P4-S3. Agrees since a joint's
+# circle is solved on the bisector through the joint itself (segment_solvers::pss_joint)
+segvoronoi_cgal_fixture_test(search_denormal_nudged_junction_5seg)
 # a chain of two segments with a kink of 1e-16 rad (endpoints moved by ulps) and a third segment: a vertex 0.6 off
 segvoronoi_cgal_fixture_test(search_ulps_3seg)
 # a point and four segments of a small-grid junction moved by up to 1e-9: one edge flipped where four sites are 1e-9 from cocircular;

@@ -421,8 +421,86 @@ fn pss_dispatch<T: Real>(p: Point, s1: (Point, Point), s2: (Point, Point), lift:
         (Some(f1), Some(f2)) => pss_common_endpoint(p, f1, f2).then(|| (Vector::of(p, lift), lift(0.0), 1.0)),
         (Some(f1), None) => pss_endpoint(p, f1, true, s2, lift),
         (None, Some(f2)) => pss_endpoint(p, f2, false, s1, lift),
-        (None, None) => pss(p, s1, s2, lift),
+        (None, None) => match shared_endpoint(s1, s2) {
+            Some(q) => pss_joint(p, q, s1, s2, lift),
+            None => pss(p, s1, s2, lift),
+        },
     }
+}
+
+/// The endpoint two segments share, if any (exact comparison).
+fn shared_endpoint(s1: (Point, Point), s2: (Point, Point)) -> Option<Point> {
+    [s1.0, s1.1].into_iter().find(|&q| q == s2.0 || q == s2.1)
+}
+
+/// `(p, S1, S2)` where the segments meet at an endpoint `q` (a joint of a
+/// chain) and `p` is an endpoint of neither: [`pss`] with the crossing of
+/// the two lines known exactly.
+///
+/// The centre is on a bisector of the lines through `q`; the one on `p`'s
+/// side runs along `v = (n1 + n2) / |n1 + n2|` (the normals toward `p`),
+/// so `u = q + t v`, radius `t κ` with `κ = n1·v = |n1 + n2| / 2`, and
+/// `|u - p| = t κ` reads `(1 - κ²) t² - 2 (v·d) t + |d|² = 0`, `d = p - q`.
+/// This form has no difference of nearly equal normals: where the chain
+/// is nearly straight (a kink far below `f64`'s resolution, as at a joint
+/// moved by a subnormal), [`pss`]'s bisector, the difference `n1 - n2`,
+/// is rounding noise, while `n1 + n2` is about `2 n1` and `1 - κ² =
+/// |n1 - n2|² / 4` only scales the far root. The root is [`pss`]'s rule
+/// (the circles tangent to both lines are homothetic from `q`): the
+/// smaller circle when `cross(n1, n2) > 0`, else the larger; that sign is
+/// exact, from `orientation(q, f1, f2)` of the far ends and the sides of
+/// `p`, where the rounded normals may not tell it.
+///
+/// Precision: relative to `d`; a few ulps of `t` for the smaller root,
+/// away from a double root (`p` near a tangent point).
+fn pss_joint<T: Real>(p: Point, q: Point, s1: (Point, Point), s2: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<Solved<T>> {
+    if collinear_segments(s1, s2) {
+        return None;
+    }
+    let (n1, _, h1_condition) = normal_toward(s1.0, s1.1, p, lift)?;
+    let (n2, _, h2_condition) = normal_toward(s2.0, s2.1, p, lift)?;
+    let sum = n1.add(&n2);
+    let v = sum.unit()?;
+    let kappa = sum.norm().mul(&lift(0.5));
+    let m = n1.sub(&n2);
+    let a = m.dot(&m).mul(&lift(0.25)); // 1 - κ², without cancellation
+    let d = Vector::between(q, p, lift);
+    let b = v.dot(&d);
+    let dd = d.dot(&d);
+    if b.signum() <= 0 {
+        return None;
+    }
+    let disc = b.mul(&b).sub(&a.mul(&dd));
+    if disc.signum() < 0 {
+        return None;
+    }
+    let root = disc.sqrt();
+    // cross(n1, n2) = σ1 σ2 cross(u1, u2) for the directions u of the
+    // segments as given and σ the side of p; cross(u1, u2) by the far ends
+    let far = |s: (Point, Point)| if s.0 == q { (s.1, 1) } else { (s.0, -1) };
+    let ((f1, d1), (f2, d2)) = (far(s1), far(s2));
+    let sign = |o: Orientation| match o {
+        Orientation::CounterClockwise => 1,
+        Orientation::Clockwise => -1,
+        Orientation::Collinear => 0,
+    };
+    let side = sign(orientation(s1.0, s1.1, p)) * sign(orientation(s2.0, s2.1, p));
+    let turn = sign(orientation(q, f1, f2)) * d1 * d2;
+    let t = if side * turn > 0 {
+        dd.div(&b.add(&root))
+    } else {
+        if a.signum() == 0 {
+            return None; // the larger circle is at infinity
+        }
+        b.add(&root).div(&a)
+    };
+    let centre = Vector::of(q, lift).add(&v.scale(&t));
+    let r = t.mul(&kappa);
+    let disc_condition = if disc.signum() > 0 { b.mul(&b).to_f64() / disc.to_f64() } else { f64::INFINITY };
+    // the larger root divides by 1 - κ², known only to ε / |n1 - n2|
+    let far_condition = if side * turn > 0 { 0.0 } else { 4.0 / m.dot(&m).sqrt().to_f64() };
+    let condition = 4.0 + h1_condition + h2_condition + disc_condition + far_condition;
+    Some((centre, r, condition))
 }
 
 /// `(p, S1, S2)` with `p` an endpoint of both: `S1 = p f1`, `S2 = p f2`.
@@ -930,6 +1008,31 @@ mod tests {
         assert_eq!(solve(q, s1, s4), None);
         // p on the other segment's supporting line.
         assert_eq!(solve(q, s1, seg(-1., 0., -5., 0.)), None);
+    }
+
+    #[test]
+    fn pss_at_a_joint_straight_to_far_below_an_ulp() {
+        // The chain (4,12) - (1,15) - (-e,16) with e = 4 x 2^-1074 turns by
+        // about 2^-1076 rad at (1,15) (c_tests/fixtures/
+        // search_denormal_nudged_junction_5seg.txt); the point (1,10). The
+        // circle through the point tangent to both pieces: centre on the
+        // perpendicular at the joint, (-1.5, 12.5), radius √12.5, to far
+        // below an ulp. The normals' difference is rounding noise there;
+        // solved on the bisector through the joint it is not.
+        let e = -4.0 * f64::from_bits(1);
+        let (s12, s13) = (seg(4., 12., 1., 15.), seg(e, 16., 1., 15.));
+        let q = pt(1., 10.);
+        assert_circle(solve(q, s12, s13), -1.5, 12.5, 12.5f64.sqrt());
+        // the other order is the far circle of the homothety, beyond f64:
+        // whatever f64 makes of it is flagged for solving again
+        if let Some((_, _, condition)) = vertex_and_condition(&q, &s13, &s12) {
+            assert!(condition > 1e10, "condition {condition}");
+        }
+        // a joint at a right angle: the same circle as without the shared
+        // end (pss_parabola_meets_angle_bisector), from (5,5) radius 5
+        let (s1, s2) = (seg(0., 0., 10., 0.), seg(0., 0., 0., 10.));
+        assert_circle(solve(pt(1., 2.), s1, s2), 5.0, 5.0, 5.0);
+        assert_circle(solve(pt(1., 2.), s2, s1), 1.0, 1.0, 1.0);
     }
 
     #[test]
