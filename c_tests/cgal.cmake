@@ -449,13 +449,15 @@ segvoronoi_cgal_fixture_test(search_rational_tangency_3seg --degenerate)
 
 # The searches with a new seed each run are disabled so that CI is
 # deterministic; they run with fixed seeds instead, 60 s each: the generic
-# one, and the full one without the subnormal kinds (--no-subnormal). With
-# them it failed about once per 700 inputs until far vertices beyond the
-# range of f64 were decided from their sites; since, 0 failures in 38,603
-# inputs with seeds 12 and 14, and 1 in about 12,700 with seed 1
-# (search_denormal_far_collinear_2seg). Re-enable by deleting a name.
+# one, and the full one, the subnormal kinds included. Those failed about
+# once per 700 inputs until far vertices beyond the range of f64 were
+# decided from their sites; then 1 in about 12,700 with seed 1
+# (search_denormal_far_collinear_2seg, fixed) and 1 in 26,102 with seed 21
+# (search_denormal_nudged_junction_5seg, fixed); since, 0 in 10,873 with
+# seed 1 (70 s, more than CI reaches in 60 s) and in the runs the note of
+# issue 7 lists. Re-enable by deleting a name.
 add_test(NAME cgal_search_generic_seed1 COMMAND segvoronoi_cgal_check --search 60 1 --generic)
-add_test(NAME cgal_search_seed1 COMMAND segvoronoi_cgal_check --search 60 1 --no-subnormal)
+add_test(NAME cgal_search_seed1 COMMAND segvoronoi_cgal_check --search 60 1)
 set_tests_properties(cgal_search_generic_seed1 cgal_search_seed1 PROPERTIES TIMEOUT 300 LABELS cgal)
 set_tests_properties(
   cgal_search_generic
