@@ -29,6 +29,17 @@ pub enum Orientation {
     Collinear,
 }
 
+impl Orientation {
+    /// `1`, `-1` or `0`: counter-clockwise, clockwise, collinear.
+    pub(crate) fn sign(self) -> i8 {
+        match self {
+            Orientation::CounterClockwise => 1,
+            Orientation::Clockwise => -1,
+            Orientation::Collinear => 0,
+        }
+    }
+}
+
 /// Where a point lies with respect to a circle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CirclePosition {

@@ -448,7 +448,7 @@ fn shared_endpoint(s1: (Point, Point), s2: (Point, Point)) -> Option<Point> {
 /// |n1 - n2|² / 4` only scales the far root. The root is [`pss`]'s rule
 /// (the circles tangent to both lines are homothetic from `q`): the
 /// smaller circle when `cross(n1, n2) > 0`, else the larger; that sign is
-/// exact, from `orientation(q, f1, f2)` of the far ends and the sides of
+/// exact, from the turn between the segments' directions and the sides of
 /// `p`, where the rounded normals may not tell it.
 ///
 /// Precision: relative to `d`; a few ulps of `t` for the smaller root,
@@ -476,17 +476,10 @@ fn pss_joint<T: Real>(p: Point, q: Point, s1: (Point, Point), s2: (Point, Point)
     }
     let root = disc.sqrt();
     // cross(n1, n2) = σ1 σ2 cross(u1, u2) for the directions u of the
-    // segments as given and σ the side of p; cross(u1, u2) by the far ends
-    let far = |s: (Point, Point)| if s.0 == q { (s.1, 1) } else { (s.0, -1) };
-    let ((f1, d1), (f2, d2)) = (far(s1), far(s2));
-    let sign = |o: Orientation| match o {
-        Orientation::CounterClockwise => 1,
-        Orientation::Clockwise => -1,
-        Orientation::Collinear => 0,
-    };
-    let side = sign(orientation(s1.0, s1.1, p)) * sign(orientation(s2.0, s2.1, p));
-    let turn = sign(orientation(q, f1, f2)) * d1 * d2;
-    let t = if side * turn > 0 {
+    // segments as given and σ the side of p: exact signs
+    let side = orientation(s1.0, s1.1, p).sign() * orientation(s2.0, s2.1, p).sign();
+    let smaller = side * turn(s1.0, s1.1, s2.0, s2.1).sign() > 0;
+    let t = if smaller {
         dd.div(&b.add(&root))
     } else {
         if a.signum() == 0 {
@@ -498,7 +491,7 @@ fn pss_joint<T: Real>(p: Point, q: Point, s1: (Point, Point), s2: (Point, Point)
     let r = t.mul(&kappa);
     let disc_condition = if disc.signum() > 0 { b.mul(&b).to_f64() / disc.to_f64() } else { f64::INFINITY };
     // the larger root divides by 1 - κ², known only to ε / |n1 - n2|
-    let far_condition = if side * turn > 0 { 0.0 } else { 4.0 / m.dot(&m).sqrt().to_f64() };
+    let far_condition = if smaller { 0.0 } else { 4.0 / m.dot(&m).sqrt().to_f64() };
     let condition = 4.0 + h1_condition + h2_condition + disc_condition + far_condition;
     Some((centre, r, condition))
 }
@@ -704,11 +697,7 @@ fn sss<T: Real>(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point), lift
     // The turns between the segments' directions, exactly: the touching
     // directions `σ_i n_i` are the directions turned a quarter and
     // flipped by `σ_i`, so their order comes from these and the signs.
-    let turn_of = |i: usize, j: usize| match turn(segs[i].0, segs[i].1, segs[j].0, segs[j].1) {
-        Orientation::CounterClockwise => 1.0,
-        Orientation::Clockwise => -1.0,
-        Orientation::Collinear => 0.0,
-    };
+    let turn_of = |i: usize, j: usize| f64::from(turn(segs[i].0, segs[i].1, segs[j].0, segs[j].1).sign());
     let turns = [turn_of(0, 1), turn_of(1, 2), turn_of(2, 0)];
     const PATTERNS: [[f64; 3]; 4] = [[1.0, 1.0, 1.0], [-1.0, 1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 1.0, -1.0]];
     let mut best: Option<(f64, Vector<T>, T, f64)> = None;

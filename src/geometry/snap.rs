@@ -14,7 +14,7 @@
 //! ([`PixelGrid::crossing_pixel`]).
 
 use super::expansion::Expansion;
-use super::predicates::{exact_orientation, Orientation};
+use super::predicates::exact_orientation;
 use super::Point;
 
 /// A pixel by its integer centre coordinates: the centre is `m · size`.
@@ -123,11 +123,7 @@ impl PixelGrid {
         let along_x = sign(b.y - a.y);
         let along_y = -sign(b.x - a.x);
         let side = |q: Point, moved_x: bool, moved_y: bool| {
-            let exact = match exact_orientation(a, b, q) {
-                Orientation::CounterClockwise => 1,
-                Orientation::Clockwise => -1,
-                Orientation::Collinear => 0,
-            };
+            let exact = exact_orientation(a, b, q).sign();
             [exact, if moved_x { along_x } else { 0 }, if moved_y { along_y } else { 0 }]
                 .into_iter()
                 .find(|&s| s != 0)
