@@ -113,12 +113,12 @@ fn with_segments<T: Real>(sites: [Site; 3], lift: &impl Fn(f64) -> T) -> Option<
     match sites.iter().filter(|s| s.is_point()).count() {
         2 => {
             // The rotation that puts the segment last: (p, q, S).
-            let [p, q, s] = rotate_until(sites, |r| !r[2].is_point());
+            let [p, q, s] = rotate_to(sites, |site| !site.is_point(), 2);
             pps_dispatch(point_of(p)?, point_of(q)?, segment_of(s)?, lift)
         }
         1 => {
             // The rotation that puts the point first: (p, S1, S2).
-            let [p, s1, s2] = rotate_until(sites, |r| r[0].is_point());
+            let [p, s1, s2] = rotate_to(sites, Site::is_point, 0);
             pss_dispatch(point_of(p)?, segment_of(s1)?, segment_of(s2)?, lift)
         }
         0 => {
@@ -132,11 +132,14 @@ fn with_segments<T: Real>(sites: [Site; 3], lift: &impl Fn(f64) -> T) -> Option<
 // ---------------------------------------------------------------------------
 // Canonical order.
 
-/// The first rotation of `sites` that satisfies `wanted` (the identity if
-/// none does, which the callers rule out by counting site types).
-fn rotate_until(sites: [Site; 3], wanted: impl Fn(&[Site; 3]) -> bool) -> [Site; 3] {
-    let [a, b, c] = sites;
-    [[a, b, c], [b, c, a], [c, a, b]].into_iter().find(|r| wanted(r)).unwrap_or(sites)
+/// The rotation of `sites` that puts the first site that is `wanted` at
+/// index `at` (the identity if none is, which the callers rule out by
+/// counting site types). Indices only: on the solvers' hot path, building
+/// the three rotations to search them cost more than some solves.
+fn rotate_to(sites: [Site; 3], wanted: impl Fn(&Site) -> bool, at: usize) -> [Site; 3] {
+    let Some(k) = sites.iter().position(wanted) else { return sites };
+    let shift = (k + 3 - at) % 3;
+    std::array::from_fn(|i| sites[(shift + i) % 3])
 }
 
 /// The rotation that starts with the site of smallest coordinates (lexicographic

@@ -70,9 +70,12 @@ pub(crate) fn solved_circle(sites: &[Site; 3]) -> Option<(Point, f64)> {
         // and the placement for the vertex they become), so the answers
         // are remembered. A pure function of the sites, so the memo never
         // changes an answer.
-        POLISHED.with(|memo| memo.borrow_mut().get_or_insert(sites, || oracle::polish_vertex(sites, solved, true).or(solved)))
+        POLISHED.with(|memo| memo.borrow_mut().get_or_insert(sites, || oracle::polish_vertex(sites, solved).or(solved)))
+    } else if solved.is_some_and(|(centre, radius)| !oracle::misses_its_sites(sites, centre, radius)) {
+        // the common case, checked here so that it stays inline
+        solved
     } else {
-        oracle::polish_vertex(sites, solved, false).or(solved)
+        oracle::polish_vertex(sites, solved).or(solved)
     }
 }
 
