@@ -107,6 +107,7 @@ const MAX_STEPS: usize = 60;
 /// convergence) and the `f64` value should stand. `depth` is the `f64`
 /// value of the question at the rounded `(centre, radius)`.
 /// The sites are asked for only when the filter's first test is not enough.
+#[inline]
 pub(crate) fn reach(
     sites: impl FnOnce() -> [Site; 3],
     centre: Point,
@@ -114,7 +115,16 @@ pub(crate) fn reach(
     question: Reach,
     depth: f64,
 ) -> Option<CirclePosition> {
-    let (stage, answer) = decide(sites, centre, radius, question, depth);
+    // The filter's first test, which decides nearly every question, inline
+    // in the caller; `decide` (out of line) repeats it and goes on. (An
+    // infinite size is a vertex beyond the range of `f64`, or a question
+    // with no finite answer: those go to `decide`.)
+    let size = question.size(centre, radius);
+    let (stage, answer) = if size < f64::INFINITY && depth.abs() < f64::INFINITY && depth.abs() > CLEAR * size {
+        (Stage::Filter, Some(sign_position(depth)))
+    } else {
+        decide(sites, centre, radius, question, depth)
+    };
     COUNTS.with(|c| c[stage as usize].set(c[stage as usize].get() + 1));
     answer
 }
@@ -209,7 +219,8 @@ pub(crate) fn polish_vertex(sites: &[Site; 3], solved: Option<(Point, f64)>) -> 
 /// short random segments, 10,000 of 10,200 polishes were such).
 #[inline]
 pub(crate) fn misses_its_sites(sites: &[Site; 3], centre: Point, radius: f64) -> bool {
-    let is_point_site = |p: Point| sites.iter().any(|s| matches!(*s, Site::Point(q) if q == p));
+    let points = sites.map(|s| s.as_point());
+    let is_point_site = |p: Point| points.contains(&Some(p));
     // Summed, not the largest: a NaN (a centre or radius that is not
     // finite, a segment of length 0) then misses, where `max` would drop
     // it; the sum is at most three times the largest miss.
@@ -313,6 +324,7 @@ pub fn take_predicate_counts() -> PredicateCounts {
     PredicateCounts { by_stage, polished_vertices: taken[POLISHED] }
 }
 
+#[inline(never)]
 fn decide(
     sites: impl FnOnce() -> [Site; 3],
     centre: Point,
@@ -646,6 +658,7 @@ fn refine_at<T: Real>(
     }
 }
 
+#[inline]
 fn sign_position(depth: f64) -> CirclePosition {
     if depth < 0.0 {
         CirclePosition::Inside
