@@ -55,7 +55,7 @@ use super::state::{infinite_rotation, Construction, INFINITE};
 use crate::diagram::{SiteId, VertexId, NONE};
 use crate::geometry::predicates::CirclePosition;
 use crate::geometry::segment_predicates::{self, AtEndpoint, Contact, LeftDegree, SegmentDepth, SiteSeen};
-use crate::geometry::Point;
+use crate::geometry::{Point, Site};
 
 /// Inserts the segments into the diagram of the points; those listed in
 /// `first_segments` go first, in that order. Also returns the first segment
@@ -85,13 +85,7 @@ pub(in crate::construct) fn insert_segments(
     // one before, which reaches across all the points (n parallel segments
     // of length n at unit spacing cost O(n^2) that way, O(n log n) in
     // random rounds).
-    let midpoints: Vec<Point> = segments
-        .iter()
-        .map(|&[i, j]| {
-            let (p, q) = (points[i], points[j]);
-            Point::new(0.5 * p.x + 0.5 * q.x, 0.5 * p.y + 0.5 * q.y)
-        })
-        .collect();
+    let midpoints: Vec<Point> = segments.iter().map(|&[i, j]| Site::Segment { a: points[i], b: points[j] }.midpoint()).collect();
     let mut segment_sites = vec![SiteId(NONE); segments.len()];
     let mut stuck = None;
     let by_midpoint = insertion_order(&midpoints);
