@@ -45,7 +45,7 @@ use crate::diagram::Diagram;
 use crate::error::{Error, ErrorKind};
 use crate::geometry::scale::Scale;
 use crate::geometry::Point;
-use input_check::{check_segments, Conflict};
+use input_check::{check_segments, first_conflict, Conflict};
 use insert_point::insert_points;
 use renumber::SegmentSite;
 use restart::{insert_all, insert_all_from, Outcome, Stuck};
@@ -64,7 +64,10 @@ pub(super) fn check_input(points: &[Point], segments: &[[Point; 2]]) -> Result<(
     if segments.is_empty() {
         return Ok(()); // distinct or repeated points never conflict
     }
-    check_segments(points, segments, input_scale(points, segments)).map(|_| ()).map_err(|c| conflict_error(&c))
+    match first_conflict(points, segments, input_scale(points, segments)) {
+        Some(c) => Err(conflict_error(&c)),
+        None => Ok(()),
+    }
 }
 
 /// The Voronoi diagram of finite points, and how its construction ended

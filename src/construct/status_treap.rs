@@ -33,6 +33,8 @@ struct Node {
 pub(crate) struct Treap {
     nodes: Vec<Node>,
     root: u32,
+    /// The number of nodes in the tree.
+    len: usize,
     /// xorshift state for the priorities.
     state: u32,
 }
@@ -40,7 +42,17 @@ pub(crate) struct Treap {
 impl Treap {
     pub(crate) fn new(segments: impl Iterator<Item = [Point; 2]>) -> Treap {
         let nodes = segments.map(|segment| Node { segment, left: NIL, right: NIL, parent: NIL, priority: 0 }).collect();
-        Treap { nodes, root: NIL, state: 0x9e37_79b9 }
+        Treap { nodes, root: NIL, len: 0, state: 0x9e37_79b9 }
+    }
+
+    /// The number of nodes in the tree.
+    pub(crate) fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Takes every node out of the tree at once (they may go in again).
+    pub(crate) fn clear(&mut self) {
+        (self.root, self.len) = (NIL, 0);
     }
 
     pub(crate) fn segment(&self, i: u32) -> [Point; 2] {
@@ -170,6 +182,7 @@ impl Treap {
         self.state ^= self.state << 13;
         self.state ^= self.state >> 17;
         self.state ^= self.state << 5;
+        self.len += 1;
         let node = &mut self.nodes[n as usize];
         (node.left, node.right, node.parent, node.priority) = (NIL, NIL, NIL, self.state);
         if self.root == NIL {
@@ -196,6 +209,7 @@ impl Treap {
 
     /// Takes node `n` out of the tree.
     pub(crate) fn remove(&mut self, n: u32) {
+        self.len -= 1;
         loop {
             let (l, r) = (self.left(n), self.right(n));
             if l == NIL || r == NIL {

@@ -139,8 +139,7 @@ impl Conflict {
 /// builder guarantees), in the coordinates that `scale` makes (the
 /// build's one scale). See the module documentation for the rules.
 pub(crate) fn check_segments(points: &[Point], segments: &[[Point; 2]], scale: Scale) -> Result<CheckedInput, Conflict> {
-    let internal = |p: Point| p.scaled(scale.to_internal).canonical_zero();
-    let norm = normalise(points, segments, internal);
+    let norm = normalise_scaled(points, segments, scale);
     if let Some(conflict) = find_conflict(&norm) {
         return Err(conflict);
     }
@@ -156,6 +155,17 @@ pub(crate) fn check_segments(points: &[Point], segments: &[[Point; 2]], scale: S
         degenerate_segments: norm.degenerate_segments,
         kept_of_input: norm.kept_of_input,
     })
+}
+
+/// The conflict [`check_segments`] would report, without building the
+/// checked input (for [`Builder::check`](crate::Builder::check)).
+pub(crate) fn first_conflict(points: &[Point], segments: &[[Point; 2]], scale: Scale) -> Option<Conflict> {
+    find_conflict(&normalise_scaled(points, segments, scale))
+}
+
+/// The input normalised in the coordinates that `scale` makes.
+fn normalise_scaled(points: &[Point], segments: &[[Point; 2]], scale: Scale) -> normalise::Normalised {
+    normalise(points, segments, |p: Point| p.scaled(scale.to_internal).canonical_zero())
 }
 
 fn input_point(points: &[Point], segments: &[[Point; 2]], src: PointSource) -> Point {

@@ -4,6 +4,7 @@
 use std::collections::HashSet;
 
 use super::PointSource;
+use crate::geometry::segment_contact::lex_key;
 use crate::geometry::Point;
 
 /// The input after normalisation, in internal (scaled) coordinates.
@@ -15,6 +16,9 @@ pub(super) struct Normalised {
     pub(super) duplicate_segments: usize,
     pub(super) degenerate_segments: usize,
     pub(super) kept_of_input: Vec<Option<usize>>,
+    /// The kept segments (positions in `segments`) by first point, then by
+    /// last point, lexicographically (the sweep's order).
+    pub(super) by_first_point: Vec<u32>,
 }
 
 /// Zero-length segments become points; repeated segments and points are
@@ -23,52 +27,53 @@ pub(super) struct Normalised {
 pub(super) fn normalise(points: &[Point], segments: &[[Point; 2]], internal: impl Fn(Point) -> Point) -> Normalised {
     let mut out = Normalised::default();
     let mut degenerate = Vec::new();
-    // Repeats found by sorting the keys (with the input index, so the first
-    // of equal keys is the earliest): O(n log n) on sequential memory,
-    // where a hash map of a million segments spends most of its time
-    // waiting for memory.
-    let mut ends: Vec<Option<[Point; 2]>> = Vec::with_capacity(segments.len());
+    // Repeats found by sorting the segments by their ends in the sweep's
+    // order (first point, then last point; with the input index, so the
+    // first of equal keys is the earliest): O(n log n) on sequential
+    // memory, where a hash map of a million segments spends most of its
+    // time waiting for memory. The sorted order is also the order in which
+    // the sweep meets the kept segments' first points, so it sorts nothing
+    // more for its start events.
     let mut keyed: Vec<([u64; 4], u32)> = Vec::with_capacity(segments.len());
+    // Per input segment, the earliest with its key (itself if none is
+    // earlier, `ZERO_LENGTH` for a point); then, once kept, that one's
+    // position among the kept. (Each is its own earliest but for repeats,
+    // which are rare: only they are written out of input order.)
+    let mut first: Vec<u32> = Vec::with_capacity(segments.len());
     for (i, s) in segments.iter().enumerate() {
         let (a, b) = (internal(s[0]), internal(s[1]));
         if a == b {
             out.degenerate_segments += 1;
             degenerate.push((PointSource::Segment(i), a));
-            ends.push(None);
+            first.push(ZERO_LENGTH);
         } else {
-            keyed.push((Point::segment_key(a, b), i as u32));
-            ends.push(Some([a, b]));
+            keyed.push((sweep_key(a, b), i as u32));
+            first.push(i as u32);
         }
     }
     keyed.sort_unstable();
-    // Per input segment, the earliest with its key (itself if none is
-    // earlier); then, once kept, that one's position among the kept.
-    // (Each is its own earliest but for repeats, which are rare: only
-    // they are written out of input order.)
-    let mut first: Vec<u32> = (0..segments.len() as u32).collect();
     for group in keyed.chunk_by(|x, y| x.0 == y.0).filter(|g| g.len() > 1) {
         for &(_, i) in &group[1..] {
             first[i as usize] = group[0].1;
         }
     }
-    drop(keyed);
-    for (i, e) in ends.into_iter().enumerate() {
-        let Some([a, b]) = e else {
+    for (i, s) in segments.iter().enumerate() {
+        let earliest = first[i];
+        let kept = if earliest == ZERO_LENGTH {
             out.kept_of_input.push(None);
             continue;
-        };
-        let earliest = first[i] as usize;
-        let kept = if earliest == i {
-            out.segments.push((i, [a, b]));
+        } else if earliest as usize == i {
+            out.segments.push((i, [internal(s[0]), internal(s[1])]));
             first[i] = (out.segments.len() - 1) as u32;
             out.segments.len() - 1
         } else {
             out.duplicate_segments += 1;
-            first[earliest] as usize // already its position among the kept
+            first[earliest as usize] as usize // already its position among the kept
         };
         out.kept_of_input.push(Some(kept));
     }
-    drop(first);
+    out.by_first_point = keyed.chunk_by(|x, y| x.0 == y.0).map(|g| first[g[0].1 as usize]).collect();
+    drop((keyed, first));
     if points.is_empty() && degenerate.is_empty() {
         // Nothing to compare with the endpoints: no set of them needed.
         return out;
@@ -85,4 +90,16 @@ pub(super) fn normalise(points: &[Point], segments: &[[Point; 2]], internal: imp
         }
     }
     out
+}
+
+/// Marks a zero-length segment among the earliest indices.
+const ZERO_LENGTH: u32 = u32::MAX;
+
+/// A segment's [`lex_key`]s, its lexicographically smaller end first: equal
+/// for the same segment in either direction (with canonical zeros), and
+/// ordered by first point as the sweep meets them.
+fn sweep_key(a: Point, b: Point) -> [u64; 4] {
+    let (ka, kb) = (lex_key(a), lex_key(b));
+    let ((x0, y0), (x1, y1)) = if ka <= kb { (ka, kb) } else { (kb, ka) };
+    [x0, y0, x1, y1]
 }

@@ -115,40 +115,37 @@ pub(super) fn find_conflict_at(norm: &Normalised) -> Option<(Conflict, ContactPo
     let m = norm.segments.len();
     assert!(m < NIL as usize && norm.points.len() < NIL as usize, "item ids are 32-bit");
     let oriented = |[a, b]: [Point; 2]| if lex_cmp(a, b) == Ordering::Greater { [b, a] } else { [a, b] };
-    // Node ids in the order of the first points: the start events come in
-    // that order, and the segments in the status at one time lie close
-    // together in memory.
-    let mut starts: Vec<(Key, u32)> =
-        norm.segments.iter().enumerate().map(|(i, &(_, s))| (lex_key(oriented(s)[0]), i as u32)).collect();
-    starts.sort_unstable();
-    let kept: Vec<u32> = starts.iter().map(|&(_, i)| i).collect();
-    drop(starts);
-    let segments: Vec<[Point; 2]> = kept.iter().map(|&i| oriented(norm.segments[i as usize].1)).collect();
-    let mut ends: Vec<(Key, u32)> = segments.iter().enumerate().map(|(k, s)| (lex_key(s[1]), k as u32)).collect();
+    // Node ids in the order of the first points (normalisation's sort):
+    // the start events come in that order, and the segments in the status
+    // at one time lie close together in memory.
+    let kept = &norm.by_first_point;
+    let status = Treap::new(kept.iter().map(|&k| oriented(norm.segments[k as usize].1)));
+    let mut ends: Vec<(Key, u32)> = (0..m as u32).map(|k| (lex_key(status.segment(k)[1]), k)).collect();
     ends.sort_unstable();
     let mut lone: Vec<(Key, u32)> = norm.points.iter().enumerate().map(|(k, &(_, q))| (lex_key(q), k as u32)).collect();
     lone.sort_unstable();
 
     let mut sweep = Sweep {
         norm,
-        status: Treap::new(segments.iter().copied()),
+        status,
         kept,
         ending: vec![false; m],
         best: None,
         group: Group::default(),
         adjacent: Vec::new(),
+        by_angle: Vec::new(),
     };
     let (mut next_start, mut next_end, mut next_lone) = (0, 0, 0);
     loop {
         // The next event: the smallest of the three streams' heads.
-        let start_key = segments.get(next_start).map(|s| lex_key(s[0]));
+        let start_key = (next_start < m).then(|| sweep.first_key(next_start));
         let end_key = ends.get(next_end).map(|e| e.0);
         let lone_key = lone.get(next_lone).map(|e| e.0);
         let Some(key) = [start_key, end_key, lone_key].into_iter().flatten().min() else { break };
         let q = if start_key == Some(key) {
-            segments[next_start][0]
+            sweep.status.segment(next_start as u32)[0]
         } else if end_key == Some(key) {
-            segments[ends[next_end].1 as usize][1]
+            sweep.status.segment(ends[next_end].1)[1]
         } else {
             norm.points[lone[next_lone].1 as usize].1
         };
@@ -156,7 +153,7 @@ pub(super) fn find_conflict_at(norm: &Normalised) -> Option<(Conflict, ContactPo
             break; // past the best contact point
         }
         sweep.group.clear();
-        while next_start < m && lex_key(segments[next_start][0]) == key {
+        while next_start < m && sweep.first_key(next_start) == key {
             sweep.group.starts.push(next_start as u32);
             next_start += 1;
         }
@@ -172,6 +169,10 @@ pub(super) fn find_conflict_at(norm: &Normalised) -> Option<(Conflict, ContactPo
     }
     sweep.best
 }
+
+/// From how many segments starting at one event the exact sort by direction
+/// is preceded by an approximate one.
+const PRESORTED_FROM: usize = 32;
 
 /// A point's sort key ([`lex_key`]).
 type Key = (u64, u64);
@@ -198,16 +199,22 @@ struct Sweep<'a> {
     /// The segments the sweep line crosses, from below to above.
     status: Treap,
     /// Per node, its kept segment (position in `norm.segments`).
-    kept: Vec<u32>,
+    kept: &'a [u32],
     /// Per node: it ends at the current event.
     ending: Vec<bool>,
     best: Option<(Conflict, ContactPoint)>,
     /// Scratch space, kept from event to event.
     group: Group,
     adjacent: Vec<(u32, u32)>,
+    by_angle: Vec<(f64, u32)>,
 }
 
 impl Sweep<'_> {
+    /// The sort key of node `i`'s first point.
+    fn first_key(&self, i: usize) -> Key {
+        lex_key(self.status.segment(i as u32)[0])
+    }
+
     /// Handles the event at `q` (steps 1 to 4 of the module documentation)
     /// with what `self.group` holds.
     fn event(&mut self, q: Point) {
@@ -219,6 +226,11 @@ impl Sweep<'_> {
         let (mut below, mut above, mut interior) = (NIL, NIL, NIL);
         if self.group.ends.is_empty() {
             (below, above, interior) = self.status.locate(side);
+        } else if self.group.ends.len() == self.status.len() {
+            // All of the status ends here (a hub, or the last event of a
+            // component): no neighbours and nothing through q, and the
+            // status empties at once rather than node by node.
+            self.status.clear();
         } else {
             for &e in &self.group.ends {
                 self.ending[e as usize] = true;
@@ -257,9 +269,24 @@ impl Sweep<'_> {
             return; // nothing starts or ends at an isolated point
         }
 
-        // Step 3: those starting at q enter, by direction.
-        let (status, kept) = (&self.status, &self.kept);
-        self.group.starts.sort_unstable_by(|&i, &j| match exact_orientation(q, status.segment(i)[1], status.segment(j)[1]) {
+        // Step 3: those starting at q enter, by direction. Many of them (a
+        // hub) are first sorted by an approximate angle, plain numbers
+        // sorted fast, so that the exact sort, adaptive to runs already in
+        // order, has little left to do.
+        let (status, kept) = (&self.status, self.kept);
+        if self.group.starts.len() > PRESORTED_FROM {
+            let angle = |i: u32| {
+                let last = status.segment(i)[1];
+                let (dx, dy) = (last.x - q.x, last.y - q.y); // dx >= 0: last > q
+                dy / (dx + dy.abs()) // increasing with the angle from -90° to 90°
+            };
+            self.by_angle.clear();
+            self.by_angle.extend(self.group.starts.iter().map(|&i| (angle(i), i)));
+            self.by_angle.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+            self.group.starts.clear();
+            self.group.starts.extend(self.by_angle.iter().map(|&(_, i)| i));
+        }
+        self.group.starts.sort_by(|&i, &j| match exact_orientation(q, status.segment(i)[1], status.segment(j)[1]) {
             Orientation::CounterClockwise => Ordering::Less,
             Orientation::Clockwise => Ordering::Greater,
             Orientation::Collinear => kept[i as usize].cmp(&kept[j as usize]),
