@@ -4,7 +4,7 @@
 
 use super::classify::{point_conflict_at, segment_conflict_at};
 use super::normalise::{normalise, Normalised};
-use super::sweep::{find_conflict, find_conflict_at};
+use super::sweep::{find_conflict, find_conflict_at, PRESORTED_FROM};
 use super::*;
 use crate::construct::input_scale;
 use crate::geometry::segment_contact::ContactPoint;
@@ -593,6 +593,39 @@ fn polyline_input() -> impl Strategy<Value = IntInput> {
     })
 }
 
+/// A hub: more spokes starting at one centre than the sweep sorts exactly
+/// without an approximate sort first ([`PRESORTED_FROM`]), in any order.
+/// Either primitive tips (coprime coordinates: all directions distinct, no
+/// conflict among the spokes) on both sides of the centre, so that as
+/// many end there as start there, or any tips right of the centre
+/// (collinear spokes of different lengths overlap); plus a few segments
+/// and points.
+fn hub_input() -> impl Strategy<Value = IntInput> {
+    fn gcd(a: i64, b: i64) -> i64 {
+        if b == 0 {
+            a.abs()
+        } else {
+            gcd(b, a % b)
+        }
+    }
+    let right: Vec<(i64, i64)> =
+        (0..=12).flat_map(|x| (-12..=12).map(move |y| (x, y))).filter(|&(x, y)| x > 0 || y > 0).collect();
+    let primitive: Vec<(i64, i64)> =
+        right.iter().filter(|&&(x, y)| gcd(x, y) == 1).flat_map(|&(x, y)| [(x, y), (-x, -y)]).collect();
+    let tips = prop_oneof![
+        Just(primitive).prop_shuffle().prop_flat_map(|t| (2 * PRESORTED_FROM + 2..t.len()).prop_map(move |k| t[..k].to_vec())),
+        Just(right).prop_shuffle().prop_flat_map(|t| (PRESORTED_FROM + 1..120).prop_map(move |k| t[..k].to_vec())),
+    ];
+    let v = (-13i64..14, -13i64..14);
+    (tips, prop::collection::vec([v.clone(), v.clone()], 0..3), prop::collection::vec(v, 0..3)).prop_map(
+        |(tips, extra, points)| {
+            let mut segments: Vec<[(i64, i64); 2]> = tips.into_iter().map(|t| [(0, 0), t]).collect();
+            segments.extend(extra);
+            (points, segments)
+        },
+    )
+}
+
 /// Shared endpoints galore: spokes from one or two centres to points of a
 /// small grid (collinear spokes, overlapping spokes), plus a few segments
 /// and points.
@@ -721,10 +754,15 @@ proptest! {
         run(&input, f)?;
     }
 
+    #[test]
+    fn sweep_agrees_with_brute_force_hubs(input in hub_input(), f in placement()) {
+        run(&input, f)?;
+    }
+
     /// Reversed, shuffled, mirrored and scaled inputs: the same verdict
     /// and the same leftmost contact point.
     #[test]
-    fn sweep_is_invariant(input in prop_oneof![small_grid_input(), star_input(), polyline_input()], seed in any::<u64>()) {
+    fn sweep_is_invariant(input in prop_oneof![small_grid_input(), star_input(), polyline_input(), hub_input()], seed in any::<u64>()) {
         invariance(&input, seed)?;
     }
 
