@@ -189,8 +189,10 @@ def text(segments):
     return "\n".join(lines) + "\n"
 
 
-def version(data_dir):
-    with h5py.File(os.path.join(data_dir, "binned_GSHHS_c.nc"), "r") as f:
+def version(data_dir, res):
+    # From the resolution's own file: the packages ship the resolutions
+    # apart (gmt-gshhg-full has only f), so the crude file may be missing.
+    with h5py.File(os.path.join(data_dir, "binned_GSHHS_%s.nc" % res), "r") as f:
         return f.attrs["version"].decode()
 
 
@@ -228,7 +230,7 @@ def main():
         sys.stdout.write(out)
     print(
         "GSHHG %s, resolution %s, %s, bins covering %s: %d segments (units of %g/65535 degrees)"
-        % (version(args.data_dir), args.res, args.layers, covered, len(segments), size / 60.0),
+        % (version(args.data_dir, args.res), args.res, args.layers, covered, len(segments), size / 60.0),
         file=sys.stderr,
     )
 
