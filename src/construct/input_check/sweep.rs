@@ -101,10 +101,11 @@
 //! approximate angle before the exact sort, which, adaptive to runs in
 //! order, then mostly confirms it (a hub's spokes come in any order).
 //!
-//! Measured (`bench --bin check`): from 10k to 1M segments the instructions
-//! grow as n^1.04 on a star; the time grows faster on a star (n^1.15),
-//! whose status of half a million spokes (32 MB of nodes) no longer fits
-//! the caches, so that the deepest levels of each descent wait for memory.
+//! Measured (`bench --bin check`, figures in BENCHMARKS.md): from 10k to
+//! 1M segments the instructions grow as n^1.02 to n^1.04 on every family;
+//! on a star the time grows faster, because its status of half a million
+//! spokes (32 MB of nodes) no longer fits the caches and the deepest levels
+//! of each descent wait for memory.
 
 use std::cmp::Ordering;
 
