@@ -15,6 +15,9 @@
 //!   sample points away from its boundary;
 //! - the exact area agrees with the polylines' within the tolerance.
 
+mod common;
+
+use common::Nudge;
 use segvoronoi::{Builder, Diagram, Location, Offset, Point};
 use segvoronoi_testgen as testgen;
 
@@ -319,4 +322,96 @@ fn a_disk_like_4096_gon_at_many_distances() {
         };
         assert!((o.area() - want).abs() < 1e-9 * want, "{}: {} vs {want}", o.distance, o.area());
     }
+}
+
+/// The test domains with edges cut at exactly collinear points (straight
+/// vertices: the corner's cell is a piece of the perpendicular, without
+/// area) and with each cut point then moved by an ulp (nearly straight:
+/// reflex or convex, the cell a wedge thinner than rounding). The domain
+/// is the same, or the same within an ulp, so every offset must be: each
+/// passes the brute-force checks, and its area and number of loops equal
+/// the uncut domain's.
+#[test]
+fn straight_and_nearly_straight_vertices_change_no_offset() {
+    let mut domains: Vec<(String, Vec<Vec<[f64; 2]>>)> = Vec::new();
+    for seed in 1..=6 {
+        let n = 12 + (seed as usize * 7) % 40;
+        domains.push((format!("rings-holes n={n} seed={seed}"), testgen::rings::generate_rings("rings-holes", n, seed).unwrap()));
+    }
+    for family in ["rings-inscribed", "rings-inscribed-jitter"] {
+        domains.push((family.to_string(), testgen::rings::generate_rings(family, 24, 3).unwrap()));
+    }
+    domains.push(("glyph".to_string(), testgen::rings::generate_rings("glyphs", 0, 1).unwrap()));
+    domains.push(("square".to_string(), vec![vec![[0.0, 0.0], [100.0, 0.0], [100.0, 100.0], [0.0, 100.0]]]));
+    for (name, rings) in domains {
+        let rings = common::on_dyadic_grid(&rings);
+        let plain = from_rings(name.clone(), &rings);
+        let ds = distances(&plain, true, 7);
+        let want = plain.diagram.offsets(&ds).unwrap();
+        for (k, (nudge, share)) in
+            [(Nudge::None, 0.5), (Nudge::None, 1.0), (Nudge::Ulp, 0.5), (Nudge::Ulp, 1.0)].into_iter().enumerate()
+        {
+            let cut = common::cut_edges(&rings, share, nudge, 100 + k as u64);
+            let case = from_rings(format!("{name} cut {share} {nudge:?}"), &cut);
+            let size = case.size();
+            for ((offset, expected), &d) in case.diagram.offsets(&ds).unwrap().iter().zip(&want).zip(&ds) {
+                check(&case, offset);
+                let scale = (size + d.abs()) * (size + d.abs());
+                assert!(
+                    (offset.area() - expected.area()).abs() <= 1e-9 * scale,
+                    "{} at {d}: area {} against {} uncut",
+                    case.name,
+                    offset.area(),
+                    expected.area()
+                );
+                let areas = |o: &Offset| {
+                    o.loops
+                        .iter()
+                        .map(|l| (l.signed_area(), if l.pieces.len() < 6 { format!("{:?}", l.pieces) } else { String::new() }))
+                        .collect::<Vec<_>>()
+                };
+                assert_eq!(
+                    offset.loops.len(),
+                    expected.loops.len(),
+                    "{} at {d}: loops {:?} uncut {:?}",
+                    case.name,
+                    areas(offset),
+                    areas(expected)
+                );
+            }
+        }
+    }
+}
+
+/// The outlines of issue 27, with their areas in closed form: a square with
+/// a straight vertex in the middle of a side (exactly, and 1e-15 off to
+/// either side), a straight polyline, a straight vertex on a slanted side.
+#[test]
+fn straight_vertices_of_issue_27_give_the_closed_form_areas() {
+    use std::f64::consts::PI;
+    for x in [0.0, 1e-15, -1e-15] {
+        let square = vec![vec![[100.0, 0.0], [100.0, 100.0], [0.0, 100.0], [x, 50.0], [0.0, 0.0]]];
+        let case = from_rings(format!("square with ({x}, 50)"), &square);
+        for (d, want) in [(5.0, 10000.0 + 2000.0 + 25.0 * PI), (-5.0, 8100.0), (0.5, 10000.0 + 200.0 + 0.25 * PI), (-45.0, 100.0)] {
+            let o = case.diagram.offset(d).unwrap();
+            check(&case, &o);
+            assert_eq!(o.loops.len(), 1, "{} at {d}", case.name);
+            assert!((o.area() - want).abs() < 1e-9 * want, "{} at {d}: {} for {want}", case.name, o.area());
+        }
+    }
+    let mut b = Builder::new();
+    b.add_polyline(&[[0.0, 0.0], [50.0, 0.0], [100.0, 0.0]]).unwrap();
+    let case = Case::new("straight polyline".into(), b.build().unwrap());
+    let o = case.diagram.offset(5.0).unwrap();
+    check(&case, &o);
+    assert_eq!(o.loops.len(), 1);
+    assert!((o.area() - (1000.0 + 25.0 * PI)).abs() < 1e-9 * 1000.0, "{}", o.area());
+    // the triangle (0, 0), (8, 4), (0, 8) shrunk by 0.5: similar, with the
+    // inradius less 0.5
+    let case = from_rings("slanted".into(), &[vec![[0.0, 0.0], [4.0, 2.0], [8.0, 4.0], [0.0, 8.0]]]);
+    let inradius = 64.0 / (2.0 * 80f64.sqrt() + 8.0);
+    let o = case.diagram.offset(-0.5).unwrap();
+    check(&case, &o);
+    let want = 32.0 * ((inradius - 0.5) / inradius).powi(2);
+    assert!((o.area() - want).abs() < 1e-9 * want, "{} for {want}", o.area());
 }

@@ -21,8 +21,9 @@
 //! places them. Not exact: positions are within a few ulps of the edge's
 //! magnitude, as the edge drawings are.
 
-use super::parabola::Parabola;
+use super::parabola::{focus_and_directrix, Parabola};
 use super::point::Point;
+use super::predicates::foot_strictly_inside;
 use super::site::Site;
 
 /// One end of an edge, in the diagram's internal coordinates.
@@ -43,6 +44,16 @@ pub(crate) struct EdgeTrack {
     /// infinity.
     pub(crate) from: f64,
     pub(crate) to: f64,
+    /// Whether the curve's lowest point can lie inside a Voronoi edge of
+    /// these sites, from the sites alone (exact): a parabola's apex only
+    /// when the focus's foot lies inside the segment (the edge lies in the
+    /// segment's strip), the crossing of two segments' lines never (the
+    /// segments would meet there, and an edge ends where they do), a point's
+    /// foot always. So the offsets do not take a dip from the parameters of
+    /// vertices rounded far away (two nearly parallel lines meet 1e15 times
+    /// the extent out, where an ulp of the vertices exceeds the whole width
+    /// of a narrow parabola).
+    apex_may_be_inside: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -119,7 +130,14 @@ impl EdgeTrack {
         if let (Some(parabola), TrackEnd::At(p), TrackEnd::At(q)) = (Parabola::of_sites(sites[0], sites[1]), start, end) {
             let (s0, s1) = (parabola.parameter(p), parabola.parameter(q));
             let sign = if s1 >= s0 { 1.0 } else { -1.0 };
-            return finite(EdgeTrack { curve: Curve::Parabolic { parabola, sign }, from: sign * s0, to: sign * s1 });
+            let apex_may_be_inside =
+                focus_and_directrix(sites[0], sites[1]).is_some_and(|(focus, a, b)| foot_strictly_inside(a, b, focus));
+            return finite(EdgeTrack {
+                curve: Curve::Parabolic { parabola, sign },
+                from: sign * s0,
+                to: sign * s1,
+                apex_may_be_inside,
+            });
         }
         let gauge = match nearest_point_site(sites) {
             Some(centre) => Gauge::Point(centre),
@@ -129,8 +147,9 @@ impl EdgeTrack {
                 Gauge::Line(a, Point::new(-(b.y - a.y) / length, (b.x - a.x) / length))
             }
         };
+        let apex_may_be_inside = matches!(gauge, Gauge::Point(_));
         if let Some((origin, unit)) = line_of_sites(sites) {
-            return finite(EdgeTrack::along_line(origin, unit, start, end, gauge));
+            return finite(EdgeTrack { apex_may_be_inside, ..EdgeTrack::along_line(origin, unit, start, end, gauge) });
         }
         let (origin, unit, far, from, to) = match (start, end) {
             (TrackEnd::At(p), TrackEnd::At(q)) => {
@@ -143,7 +162,7 @@ impl EdgeTrack {
             (TrackEnd::Towards(u), TrackEnd::At(q)) => (q, Point::new(-u.x, -u.y), None, f64::NEG_INFINITY, 0.0),
             (TrackEnd::Towards(_), TrackEnd::Towards(_)) => return None,
         };
-        finite(EdgeTrack { curve: Curve::Straight { origin, unit, far, gauge }, from, to })
+        finite(EdgeTrack { curve: Curve::Straight { origin, unit, far, gauge }, from, to, apex_may_be_inside })
     }
 
     /// A straight edge on the line `origin + τ unit` known from its sites
@@ -165,7 +184,7 @@ impl EdgeTrack {
             TrackEnd::At(q) => at(q).max(from),
             TrackEnd::Towards(_) => f64::INFINITY,
         };
-        EdgeTrack { curve: Curve::Straight { origin, unit, far: None, gauge }, from, to }
+        EdgeTrack { curve: Curve::Straight { origin, unit, far: None, gauge }, from, to, apex_may_be_inside: true }
     }
 
     /// The point at parameter `τ`.
@@ -218,10 +237,10 @@ impl EdgeTrack {
     }
 
     /// The lowest distance strictly inside the edge, if the lowest point
-    /// of the curve lies there.
+    /// of the curve lies there (and can: see `apex_may_be_inside`).
     pub(crate) fn interior_minimum(&self) -> Option<f64> {
         let t = self.lowest();
-        (t > self.from && t < self.to).then(|| self.distance(t))
+        (self.apex_may_be_inside && t > self.from && t < self.to).then(|| self.distance(t))
     }
 
     /// The two parameters (falling, rising: `lo <= hi`) where the distance

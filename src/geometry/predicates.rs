@@ -175,6 +175,18 @@ pub fn strictly_between(a: Point, b: Point, p: Point) -> bool {
     }
 }
 
+/// Whether the foot of `p` on the line `ab` lies strictly between `a` and
+/// `b`: `(p − a)·(b − a) > 0` and `(p − b)·(a − b) > 0`, exact.
+pub(crate) fn foot_strictly_inside(a: Point, b: Point, p: Point) -> bool {
+    let dot_sign = |o: Point, q: Point| {
+        let mut exact = Expansion::default();
+        exact.add_product_of_differences((q.x, o.x), (p.x, o.x));
+        exact.add_product_of_differences((q.y, o.y), (p.y, o.y));
+        exact.sign()
+    };
+    dot_sign(a, b) > 0 && dot_sign(b, a) > 0
+}
+
 /// Whether the circle "through `a`, `b` and the point at infinity on the left
 /// of `a → b`" contains `p`: the open half-plane left of `a → b`, plus the
 /// open segment `ab` itself (the limit of circles through `a` and `b` whose

@@ -679,9 +679,25 @@ fn pss<T: Real>(p: Point, s1: (Point, Point), s2: (Point, Point), lift: &impl Fn
 /// `None` (no circle, or a whole family). Three lines through one point: the
 /// answer is that point with radius about 0.
 ///
+/// Two of the segments meeting at a joint `q` (an endpoint of both): each
+/// pattern's centre is solved on the bisector through `q`, as
+/// [`pss_joint`] does, not by Cramer's rule. The two lines cross at `q`
+/// exactly, while from their equations alone the crossing of nearly
+/// parallel lines is lost: at a joint that is straight up to rounding the
+/// system of the circle across the joint (centre on the perpendicular
+/// there) is singular, and the only pattern left is the circle of radius
+/// about 0 at the far end of one segment, tangent to the other's line
+/// beyond its end (a vertex 0.05 off its sites on a chain cut at a point
+/// moved by an ulp). Three segments in a chain (two joints): the crossing
+/// of the two joints' bisectors ([`solve_at_two_joints`]). The choice among
+/// the patterns is made by the strays of all of them, so the condition
+/// returned is the worst of theirs: an imprecise rival makes the choice
+/// uncertain, and the caller solves again finer.
+///
 /// Precision: relative to `a_1`; each solution costs a 3×3 determinant of
 /// unit-normal entries, a few ulps of the extent divided by the sine of the
-/// smallest angle between the lines that matter.
+/// smallest angle between the lines that matter; at a joint, a few ulps
+/// divided by the angle between the third line and the bisector.
 fn sss<T: Real>(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point), lift: &impl Fn(f64) -> T) -> Option<Solved<T>> {
     let segs = [s1, s2, s3];
     if collinear_segments(s1, s2) || collinear_segments(s2, s3) || collinear_segments(s3, s1) {
@@ -697,6 +713,7 @@ fn sss<T: Real>(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point), lift
     }
     let n: [Vector<T>; 3] = normals.try_into().ok()?;
     let c: [T; 3] = c.try_into().ok()?;
+    let joint = sss_joints(&segs);
     // The turns between the segments' directions, exactly: the touching
     // directions `σ_i n_i` are the directions turned a quarter and
     // flipped by `σ_i`, so their order comes from these and the signs.
@@ -704,6 +721,11 @@ fn sss<T: Real>(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point), lift
     let turns = [turn_of(0, 1), turn_of(1, 2), turn_of(2, 0)];
     const PATTERNS: [[f64; 3]; 4] = [[1.0, 1.0, 1.0], [-1.0, 1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 1.0, -1.0]];
     let mut best: Option<(f64, Vector<T>, T, f64)> = None;
+    // The choice among the patterns is only as good as the worst of their
+    // solutions: a candidate solved imprecisely (nearly parallel lines) has
+    // a stray that means nothing, and the one chosen over it may be the
+    // wrong circle however well it is conditioned itself.
+    let mut worst = 0.0f64;
     for sigma in PATTERNS {
         // Three directions are counter-clockwise in this order when at
         // least two of the three consecutive turns are (none parallel).
@@ -711,14 +733,22 @@ fn sss<T: Real>(s1: (Point, Point), s2: (Point, Point), s3: (Point, Point), lift
         if left_turns < 2 {
             continue;
         }
-        let Some((w, r, condition)) = solve_tangent_system(&n, &c, sigma, lift) else { continue };
+        let solved = match joint {
+            Joints::Two(order, q1, q2) => {
+                solve_at_two_joints(&n, sigma, order, Vector::between(o, q1, lift), Vector::between(o, q2, lift))
+            }
+            Joints::One(pair, q) => solve_at_joint(&n, &c, sigma, pair, Vector::between(o, q, lift), lift),
+            Joints::None => solve_tangent_system(&n, &c, sigma, lift),
+        };
+        let Some((w, r, condition)) = solved else { continue };
+        worst = worst.max(condition);
         let centre = Vector::of(o, lift).add(&w);
         let stray = stray_distance(&segs, Point::new(centre.x.to_f64(), centre.y.to_f64()));
         if best.as_ref().map_or(true, |(b, _, _, _)| stray < *b) {
             best = Some((stray, centre, r.abs(), condition));
         }
     }
-    best.map(|(_, centre, r, condition)| (centre, r, condition))
+    best.map(|(_, centre, r, condition)| (centre, r, condition.max(worst)))
 }
 
 /// Solves `n_i·w - σ_i r = c_i` (i = 0, 1, 2) by Cramer's rule; `None` when
@@ -739,6 +769,99 @@ fn solve_tangent_system<T: Real>(n: &[Vector<T>; 3], c: &[T; 3], sigma: [f64; 3]
     // of the sines of the angles between the lines
     let condition = 8.0 + 6.0 / det.to_f64().abs();
     finite.then_some((Vector { x, y }, r, condition))
+}
+
+/// Where three segments meet each other at endpoints (joints), as
+/// [`sss`] uses them.
+enum Joints {
+    /// A chain: `[i, j, k]` with `i, j` meeting at the first point and
+    /// `j, k` at the second (a triangle gives its first two joints).
+    Two([usize; 3], Point, Point),
+    /// `[i, j, k]` with `i, j` meeting at the point.
+    One([usize; 3], Point),
+    None,
+}
+
+/// The joints among three segments (exact comparisons of endpoints).
+fn sss_joints(segs: &[(Point, Point); 3]) -> Joints {
+    let pairs = [[0, 1, 2], [1, 2, 0], [2, 0, 1]];
+    let mut meeting = pairs.iter().filter_map(|&[i, j, k]| shared_endpoint(segs[i], segs[j]).map(|q| ([i, j, k], q)));
+    match (meeting.next(), meeting.next()) {
+        (None, _) => Joints::None,
+        (Some((pair, q)), None) => Joints::One(pair, q),
+        (Some(([a, b, _], q1)), Some(([c, d, _], q2))) => {
+            // the segment both joints hold is the middle of the chain
+            let middle = if a == c || a == d { a } else { b };
+            let other = |x: usize, y: usize| if x == middle { y } else { x };
+            Joints::Two([other(a, b), middle, other(c, d)], q1, q2)
+        }
+    }
+}
+
+/// The circle of sign pattern `sigma` (as [`solve_tangent_system`]) when
+/// lines `i` and `j` of `pair = [i, j, k]` cross at `q` (`qo`: `q` from
+/// the origin of `c`): the centre is `q + t v` on the bisector
+/// `v ∥ σ_i n_i + σ_j n_j` (a sum: no cancellation where the touching
+/// directions nearly agree), radius `t κ` with `κ = |σ_i n_i + σ_j n_j| / 2`,
+/// and line `k` fixes `t`: `n_k·(q + t v) - σ_k t κ = c_k`.
+fn solve_at_joint<T: Real>(
+    n: &[Vector<T>; 3],
+    c: &[T; 3],
+    sigma: [f64; 3],
+    [i, j, k]: [usize; 3],
+    qo: Vector<T>,
+    lift: &impl Fn(f64) -> T,
+) -> Option<Solved<T>> {
+    let w = n[i].scale(&lift(sigma[i])).add(&n[j].scale(&lift(sigma[j])));
+    let norm = w.norm();
+    let v = w.unit()?;
+    let kappa = norm.mul(&lift(0.5));
+    let denominator = n[k].dot(&v).sub(&kappa.mul(&lift(sigma[k])));
+    if denominator.signum() == 0 {
+        return None;
+    }
+    let t = c[k].sub(&n[k].dot(&qo)).div(&denominator);
+    let centre = qo.add(&v.scale(&t));
+    let r = t.mul(&kappa);
+    let finite = centre.x.to_f64().is_finite() && centre.y.to_f64().is_finite() && r.to_f64().is_finite();
+    // the bisector's direction is known to ε / |w|, and line k meets it at
+    // an angle whose sine is about the denominator
+    let condition = 8.0 + 4.0 / norm.to_f64() + 4.0 / denominator.to_f64().abs();
+    finite.then_some((centre, r, condition))
+}
+
+/// The circle of sign pattern `sigma` (as [`solve_tangent_system`]) of a
+/// chain `order = [i, j, k]` whose lines `i, j` cross at `q1` and `j, k`
+/// at `q2` (from the origin): the crossing of the two bisectors
+/// `q1 + t v1`, `v1 ∥ σ_i n_i + σ_j n_j`, and `q2 + s v2`,
+/// `v2 ∥ σ_j n_j + σ_k n_k`, radius `t κ1`, `κ1 = |σ_i n_i + σ_j n_j| / 2`.
+/// Where both joints are nearly straight the circle is far away and the
+/// bisectors nearly parallel: their crossing divides by the sine of the
+/// angle between them, first order in the joints' turns, where the
+/// equation of one joint's bisector against the third line divides by a
+/// second-order difference of normals that no fixed precision holds.
+fn solve_at_two_joints<T: Real>(
+    n: &[Vector<T>; 3],
+    sigma: [f64; 3],
+    [i, j, k]: [usize; 3],
+    q1: Vector<T>,
+    q2: Vector<T>,
+) -> Option<Solved<T>> {
+    let signed = |m: usize| if sigma[m] > 0.0 { n[m].clone() } else { n[m].neg() };
+    let w1 = signed(i).add(&signed(j));
+    let w2 = signed(j).add(&signed(k));
+    let (norm1, norm2) = (w1.norm(), w2.norm());
+    let (v1, v2) = (w1.unit()?, w2.unit()?);
+    let sine = v1.cross(&v2);
+    if sine.signum() == 0 {
+        return None;
+    }
+    let t = q2.sub(&q1).cross(&v2).div(&sine);
+    let centre = q1.add(&v1.scale(&t));
+    let r = t.mul(&signed(i).dot(&v1));
+    let finite = centre.x.to_f64().is_finite() && centre.y.to_f64().is_finite() && r.to_f64().is_finite();
+    let condition = 8.0 + 4.0 / norm1.to_f64() + 4.0 / norm2.to_f64() + 4.0 / sine.to_f64().abs();
+    finite.then_some((centre, r, condition))
 }
 
 /// The determinant of the 3×3 matrix with columns `a`, `b`, `c`.

@@ -13,7 +13,10 @@
 //!   of `a → b`, the others on its right;
 //! - the cell of a ring corner lies on the corner's reflex side (it is the
 //!   wedge between the perpendiculars of its two segments), decided by the
-//!   exact turn at the corner; a straight corner's cell has no interior;
+//!   exact turn at the corner; a straight corner's cell has no interior: it
+//!   lies on the perpendicular, and so do its separators, on one side of
+//!   the ring where they end at a vertex at the corner, on both where they
+//!   pass through it (see [`Diagram::edge_location`]);
 //! - the cell of an obstacle (an isolated point, a polyline or free
 //!   segment) lies where the obstacle lies: an exact even-odd test of one
 //!   of its points against the rings;
@@ -28,6 +31,7 @@ use crate::construct::polygon_input::RingInput;
 use crate::diagram::{Diagram, EdgeId, SiteId, VertexId};
 use crate::geometry::predicates::{orientation, Orientation};
 use crate::geometry::{Point, Site};
+use crate::query::EdgeEnd;
 
 /// Where a vertex, edge or cell lies relative to the domain.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -38,7 +42,9 @@ pub enum Location {
     Outside,
     /// On its boundary: a vertex at a ring corner, an edge of length zero
     /// there, the cell of a ring's segment or corner (which lies on both
-    /// sides).
+    /// sides), and an edge that passes through a straight corner (a
+    /// separator on the perpendicular there, partly inside and partly
+    /// outside).
     Boundary,
 }
 
@@ -49,6 +55,9 @@ pub(crate) struct Domain {
     vertex: Vec<Location>,
     edge: Vec<Location>,
     cell: Vec<Location>,
+    /// The edges that pass through a straight ring corner, by id, each with
+    /// which of its ends (`Edge::ends`) lies inside.
+    through: Vec<(EdgeId, usize)>,
 }
 
 /// A ring as the diagram sees it: its corners and segments as sites, in
@@ -120,10 +129,23 @@ impl Diagram {
         self.domain.as_ref()?.vertex.get(v.index()).copied()
     }
 
-    /// Where an edge lies (all of it: an edge never crosses the boundary);
-    /// `None` without a domain or out of range.
+    /// Where an edge lies; `None` without a domain or out of range. An
+    /// edge never crosses a ring's segment, so it lies on one side of the
+    /// boundary, with one exception: at a straight corner (a ring vertex
+    /// between two collinear segments) the corner's cell is a piece of the
+    /// perpendicular, and a separator there may run from a vertex inside
+    /// through the corner to one outside; such an edge is
+    /// [`Location::Boundary`].
     pub fn edge_location(&self, e: EdgeId) -> Option<Location> {
         self.domain.as_ref()?.edge.get(e.index()).copied()
+    }
+
+    /// For an edge that passes through a straight ring corner (see
+    /// [`Diagram::edge_location`]), which of its ends (an index into
+    /// `Edge::ends`) lies inside the domain; `None` for every other edge.
+    pub(crate) fn inside_end_through_corner(&self, e: EdgeId) -> Option<usize> {
+        let through = &self.domain.as_ref()?.through;
+        through.binary_search_by_key(&e, |&(edge, _)| edge).ok().map(|k| through[k].1)
     }
 
     /// Where a cell lies; `None` without a domain or out of range.
@@ -173,7 +195,9 @@ impl Diagram {
             })
             .collect();
         let cell: Vec<Location> = (0..self.sites.len()).map(|s| obstacle_location[s].unwrap_or(Location::Boundary)).collect();
-        let side_of = self.ring_segment_sides(&role);
+        let (side_of, mut through) = self.ring_segment_sides(&role);
+        through.sort_unstable();
+        through.dedup_by_key(|&mut (e, _)| e);
         // The location an edge has seen from the cell on the left of its
         // half-edge `h`, where that cell tells.
         let seen_from = |h: crate::HalfEdge| -> Option<Location> {
@@ -184,35 +208,59 @@ impl Diagram {
                 Role::Obstacle => obstacle_location[s.index()],
             }
         };
-        let edge: Vec<Location> = (0..self.edges.len())
+        let mut edge: Vec<Location> = (0..self.edges.len())
             .map(|e| {
                 let [h, t] = self.half_edges(EdgeId::from_index(e)).expect("in range");
                 seen_from(h).or_else(|| seen_from(t)).unwrap_or(Location::Boundary)
             })
             .collect();
-        let vertex: Vec<Location> = (0..self.finite_vertices)
+        let on_ring: Vec<bool> =
+            (0..self.finite_vertices).map(|v| self.is_ring_corner_vertex(VertexId::from_index(v), &role)).collect();
+        let mut vertex: Vec<Location> = (0..self.finite_vertices)
             .map(|v| {
-                let v = VertexId::from_index(v);
-                if self.is_ring_corner_vertex(v, &role) {
+                if on_ring[v] {
                     return Location::Boundary;
                 }
-                let out = self.vertex_half_edges(v).expect("a finite vertex");
+                let out = self.vertex_half_edges(VertexId::from_index(v)).expect("a finite vertex");
                 out.iter().map(|h| edge[h.edge().index()]).find(|&l| l != Location::Boundary).unwrap_or(Location::Boundary)
             })
             .collect();
-        Domain { rings, vertex, edge, cell }
+        // Edges that no cell locates (between the cells of two straight
+        // corners, which are lines) take the location of an end vertex off
+        // the rings, and such vertices that of their edges: a vertex off
+        // the rings lies strictly on one side, and so does every edge from
+        // it that does not pass through a straight corner.
+        let is_through = |e: usize| through.binary_search_by_key(&EdgeId::from_index(e), |&(t, _)| t).is_ok();
+        let mut queue: Vec<usize> = (0..vertex.len()).filter(|&v| vertex[v] != Location::Boundary).collect();
+        while let Some(v) = queue.pop() {
+            for h in self.vertex_half_edges(VertexId::from_index(v)).expect("a finite vertex") {
+                let e = h.edge().index();
+                if edge[e] != Location::Boundary || is_through(e) {
+                    continue;
+                }
+                edge[e] = vertex[v];
+                if let Some(u) = self.target_of(h).filter(|&u| !on_ring[u] && vertex[u] == Location::Boundary) {
+                    vertex[u] = vertex[v];
+                    queue.push(u);
+                }
+            }
+        }
+        Domain { rings, vertex, edge, cell, through }
     }
 
     /// Per half-edge on the boundary of a ring segment's cell (that cell on
     /// its left): `Some(true)` when it is on the left of the site's
     /// `a → b`, `Some(false)` on the right, `None` for the separators and
-    /// every other half-edge (see the module doc).
-    fn ring_segment_sides(&self, role: &[Role]) -> Vec<Option<bool>> {
+    /// every other half-edge (see the module doc). A separator at a
+    /// straight corner gets the side where it lies, and when it passes
+    /// through the corner it is listed, with its end on the domain's side,
+    /// in the second result.
+    fn ring_segment_sides(&self, role: &[Role]) -> (Vec<Option<bool>>, Vec<(EdgeId, usize)>) {
         let mut side = vec![None; 2 * self.edges.len()];
+        let mut through = Vec::new();
+        let straight = |p: SiteId| matches!(role[p.index()], Role::RingCorner { cell: Location::Boundary });
         for (s, r) in role.iter().enumerate() {
-            if !matches!(r, Role::RingSegment { .. }) {
-                continue;
-            }
+            let Role::RingSegment { left_inside } = *r else { continue };
             let s = SiteId::from_index(s);
             let Some([a, b]) = self.segment_endpoints(s) else { continue };
             let around: Vec<crate::HalfEdge> = self.cell_half_edges(s).collect();
@@ -234,18 +282,55 @@ impl Diagram {
                 side[around[k].index()] = Some(false);
                 k = (k + 1) % n;
             }
+            // The separator at b is walked from the right of a → b to its
+            // left, the one at a from the left to the right: one that starts
+            // at the corner lies on the side it goes to, one that ends there
+            // on the side it comes from, and one that does neither passes
+            // through the corner.
+            for (h, corner, to_left) in [(around[at_b], b, true), (around[at_a], a, false)] {
+                if !straight(corner) {
+                    continue;
+                }
+                let at_corner = |end: Option<EdgeEnd>| match end {
+                    Some(EdgeEnd::Vertex(v)) => self.touches_only(v, corner),
+                    _ => false,
+                };
+                let (from, to) = (at_corner(self.half_edge_origin(h)), at_corner(self.half_edge_target(h)));
+                match (from, to) {
+                    (true, false) => side[h.index()] = Some(to_left),
+                    (false, true) => side[h.index()] = Some(!to_left),
+                    (false, false) => {
+                        // the end where h goes is on the left (to_left) or right
+                        let target_end = usize::from(!h.is_reversed());
+                        let target_inside = to_left == left_inside;
+                        through.push((h.edge(), if target_inside { target_end } else { 1 - target_end }));
+                    }
+                    (true, true) => {}
+                }
+            }
         }
-        side
+        (side, through)
+    }
+
+    /// The finite vertex where `h` ends.
+    fn target_of(&self, h: crate::HalfEdge) -> Option<usize> {
+        match self.half_edge_target(h)? {
+            EdgeEnd::Vertex(v) => Some(v.index()),
+            EdgeEnd::Infinite { .. } => None,
+        }
+    }
+
+    /// Whether every site of vertex `v` is the point site `p` or a segment
+    /// ending there: `v` lies at `p`, at clearance zero.
+    fn touches_only(&self, v: VertexId, p: SiteId) -> bool {
+        self.store.sites_of(v).iter().all(|&s| s == p || self.segment_endpoints(s).is_some_and(|e| e.contains(&p)))
     }
 
     /// A vertex of radius zero at a ring corner: a corner and two segments
     /// that both end there.
     fn is_ring_corner_vertex(&self, v: VertexId, role: &[Role]) -> bool {
         let sites = self.store.sites_of(v);
-        sites.iter().any(|&p| {
-            matches!(role[p.index()], Role::RingCorner { .. })
-                && sites.iter().filter(|&&s| s != p).all(|&s| self.segment_endpoints(s).is_some_and(|e| e.contains(&p)))
-        })
+        sites.iter().any(|&p| matches!(role[p.index()], Role::RingCorner { .. }) && self.touches_only(v, p))
     }
 
     /// The rings with their corners, direction and inside side.

@@ -91,7 +91,7 @@ impl OffsetIndex {
             if !diagram.offset_may_cross(e, side) {
                 continue;
             }
-            let (lo, hi) = diagram.clearance_range(e, &levels);
+            let (lo, hi) = diagram.clearance_range(e, &levels, side);
             low[e.index()] = lo;
             intervals.push((lo, hi, e.index() as u32));
             let ends = diagram.end_vertices(e).map(|v| v.map_or(infinity, |v| v.index() as u32));
@@ -164,12 +164,13 @@ fn ring_links(diagram: &Diagram, side: Side, outside: u32) -> Vec<(u32, u32, f64
 impl Diagram {
     /// Whether the offsets on `side` may cross edge `e`: every edge without
     /// a domain; with one, the edges outside it when growing, inside when
-    /// shrinking.
+    /// shrinking, and on both sides an edge through a straight corner (its
+    /// part on that side: `Diagram::end_levels`).
     pub(super) fn offset_may_cross(&self, e: EdgeId, side: Side) -> bool {
         match (self.edge_location(e), side) {
             (None, _) => true,
-            (Some(l), Side::Grow) => l == Location::Outside,
-            (Some(l), Side::Shrink) => l == Location::Inside,
+            (Some(l), Side::Grow) => l == Location::Outside || self.inside_end_through_corner(e).is_some(),
+            (Some(l), Side::Shrink) => l == Location::Inside || self.inside_end_through_corner(e).is_some(),
         }
     }
 
@@ -185,16 +186,26 @@ impl Diagram {
 
     /// The lowest and highest clearance along edge `e` (input units;
     /// infinite at an end at infinity).
-    pub(super) fn clearance_range(&self, e: EdgeId, levels: &[f64]) -> (f64, f64) {
-        let [c0, c1] = self.end_levels(e, levels);
+    pub(super) fn clearance_range(&self, e: EdgeId, levels: &[f64], side: Side) -> (f64, f64) {
+        let [c0, c1] = self.end_levels(e, levels, side);
         let interior = self.edge_track(e).and_then(|t| t.interior_minimum()).map_or(f64::INFINITY, |m| m * self.scale.to_input);
         (c0.min(c1).min(interior), c0.max(c1))
     }
 
     /// The clearance at both ends of `e` as the offsets on `side` take it
-    /// (`levels`: see `OffsetIndex::levels`); infinite at infinity.
-    pub(super) fn end_levels(&self, e: EdgeId, levels: &[f64]) -> [f64; 2] {
-        self.end_vertices(e).map(|v| v.map_or(f64::INFINITY, |v| levels[v.index()]))
+    /// (`levels`: see `OffsetIndex::levels`); infinite at infinity. An edge
+    /// through a straight ring corner (a separator on the perpendicular
+    /// there, clearance zero at the corner) is cut at the corner: its end
+    /// on the other side of the domain's boundary is taken at the corner,
+    /// at clearance zero, so the offsets on each side cross only its part
+    /// on that side (along which the clearance only rises from the corner).
+    pub(super) fn end_levels(&self, e: EdgeId, levels: &[f64], side: Side) -> [f64; 2] {
+        let mut ends = self.end_vertices(e).map(|v| v.map_or(f64::INFINITY, |v| levels[v.index()]));
+        if let Some(inside) = self.inside_end_through_corner(e) {
+            let kept = if side == Side::Shrink { inside } else { 1 - inside };
+            ends[1 - kept] = 0.0;
+        }
+        ends
     }
 
     /// The clearance of vertex `v` as the vertices store it, but zero at a

@@ -316,7 +316,13 @@ impl Diagram {
                 continue;
             }
             let centre = self.sites[span.site.index()].as_point();
-            whole[k] = centre.is_some() && self.span_leaves(span, from, near);
+            // Only an isolated point's cell can hold a whole circle: the
+            // cell of a segment's endpoint lies in the half-plane beyond
+            // that segment's perpendicular there, so a span of it sweeps at
+            // most half a turn, and one whose ends meet sweeps nothing (the
+            // cell of a straight or nearly straight joint is a line or a
+            // wedge thinner than rounding).
+            whole[k] = centre.is_some() && !self.is_segment_endpoint(span.site) && self.span_leaves(span, from, near);
             let whole = whole[k];
             if !whole && (from == to || centre.is_some_and(|c| approximation::sweep(c, from, to, true) > std::f64::consts::PI)) {
                 empty[k] = true;

@@ -138,7 +138,7 @@ impl Diagram {
     /// `ends[0] → ends[1]`, each with whether the clearance rises there.
     fn edge_crossings(&self, e: EdgeId, index: &OffsetIndex, r: f64) -> Vec<(Point, bool)> {
         let side = index.side;
-        let [c0, c1] = self.end_levels(e, &index.levels);
+        let [c0, c1] = self.end_levels(e, &index.levels, side);
         let threshold = side.threshold(r);
         let (b0, b1) = (side.in_band(c0, threshold), side.in_band(c1, threshold));
         let track = self.edge_track(e);
@@ -200,6 +200,12 @@ impl Diagram {
     /// of the index's `above` tree.
     pub(super) fn above_leaf(&self, h: HalfEdge, infinity: u32) -> u32 {
         self.target_vertex(h).map_or(infinity, |v| v.index() as u32)
+    }
+
+    /// Whether the point site `p` is an endpoint of a segment: its cell
+    /// has a separator.
+    pub(super) fn is_segment_endpoint(&self, p: SiteId) -> bool {
+        self.cell_half_edges(p).any(|h| self.is_separator(h.edge()) == Some(true))
     }
 
     /// Whether the cell boundary between the span's two crossings goes
