@@ -368,3 +368,67 @@ fn an_l_a_t_and_a_comb() {
         }
     }
 }
+
+/// The largest distance from a sample of `a` to the polylines of `b`.
+fn one_sided_hausdorff(a: &[Vec<[f64; 3]>], b: &[Vec<[f64; 3]>]) -> f64 {
+    let segments: Vec<(Point, Point)> =
+        b.iter().flat_map(|l| l.windows(2).map(|w| (Point::new(w[0][0], w[0][1]), Point::new(w[1][0], w[1][1])))).collect();
+    let mut worst = 0.0f64;
+    for &[x, y, _] in a.iter().flatten() {
+        let p = Point::new(x, y);
+        let d = segments.iter().map(|&(s, t)| common::piece_distance(p, [s, t])).fold(f64::INFINITY, f64::min);
+        worst = worst.max(d);
+    }
+    worst
+}
+
+fn axis_samples(d: &Diagram, axis: &MedialAxis, tolerance: f64) -> Vec<Vec<[f64; 3]>> {
+    axis.chains.iter().filter_map(|c| d.sample_chain(c, tolerance)).collect()
+}
+
+/// Cutting edges at exactly collinear points (straight vertices, whose
+/// cells have no area) leaves the domain as it is, so the medial axis as a
+/// point set, the largest inscribed circle and the location of points must
+/// not change; with the cut points moved by an ulp the domain changes by
+/// that much, and the axis gains only the branches into the new convex
+/// corners of nearly 180 degrees, which the corner filter removes (without
+/// it the comparison fails: checked).
+#[test]
+fn cutting_edges_at_straight_vertices_changes_no_query() {
+    let mut domains: Vec<Vec<Vec<[f64; 2]>>> = Vec::new();
+    for seed in 1..=4 {
+        domains.push(segvoronoi_testgen::rings::generate_rings("rings-holes", 12 + (seed as usize * 7) % 40, seed).unwrap());
+    }
+    domains.push(segvoronoi_testgen::rings::generate_rings("rings-inscribed", 24, 3).unwrap());
+    domains
+        .push(vec![vec![[0.0, 0.0], [100.0, 0.0], [100.0, 100.0], [0.0, 100.0]], vec![[20.0, 20.0], [20.0, 40.0], [40.0, 20.0]]]);
+    let filter = segvoronoi::MedialAxisFilter::new().with_corner_angle(179.0);
+    for (n, rings) in domains.iter().enumerate() {
+        let rings = common::on_dyadic_grid(rings);
+        let plain = build(&rings);
+        let size = plain.extent();
+        let tolerance = 1e-3 * size;
+        let (_, radius) = plain.max_inscribed_circle().unwrap();
+        let axis = axis_samples(&plain, &plain.medial_axis(), tolerance);
+        let filtered = axis_samples(&plain, &plain.medial_axis_filtered(&filter), tolerance);
+        for (k, nudge) in [common::Nudge::None, common::Nudge::Ulp].into_iter().enumerate() {
+            let cut = build(&common::cut_edges(&rings, 0.6, nudge, 40 + k as u64));
+            let what = format!("domain {n} cut {nudge:?}");
+            let (_, r) = cut.max_inscribed_circle().unwrap();
+            assert!((r - radius).abs() <= 1e-9 * size, "{what}: inscribed radius {r} for {radius}");
+            let (ours, theirs) = if nudge == common::Nudge::None {
+                (axis_samples(&cut, &cut.medial_axis(), tolerance), &axis)
+            } else {
+                (axis_samples(&cut, &cut.medial_axis_filtered(&filter), tolerance), &filtered)
+            };
+            let both_ways = one_sided_hausdorff(&ours, theirs).max(one_sided_hausdorff(theirs, &ours));
+            assert!(both_ways <= 2.0 * tolerance, "{what}: the medial axes differ by {both_ways}");
+            let mut rng = common::Rng(n as u64);
+            for _ in 0..400 {
+                let p = Point::new(rng.unit() * 2.0 * size - size / 2.0, rng.unit() * 2.0 * size - size / 2.0);
+                let (a, b) = (plain.locate_point(p), cut.locate_point(p));
+                assert!(a == b || nudge == common::Nudge::Ulp, "{what}: {p:?} is {b:?}, uncut {a:?}");
+            }
+        }
+    }
+}

@@ -392,7 +392,8 @@ fn straight_vertices_of_issue_27_give_the_closed_form_areas() {
     for x in [0.0, 1e-15, -1e-15] {
         let square = vec![vec![[100.0, 0.0], [100.0, 100.0], [0.0, 100.0], [x, 50.0], [0.0, 0.0]]];
         let case = from_rings(format!("square with ({x}, 50)"), &square);
-        for (d, want) in [(5.0, 10000.0 + 2000.0 + 25.0 * PI), (-5.0, 8100.0), (0.5, 10000.0 + 200.0 + 0.25 * PI), (-45.0, 100.0)] {
+        for (d, want) in [(5.0, 10000.0 + 2000.0 + 25.0 * PI), (-5.0, 8100.0), (0.5, 10000.0 + 200.0 + 0.25 * PI), (-45.0, 100.0)]
+        {
             let o = case.diagram.offset(d).unwrap();
             check(&case, &o);
             assert_eq!(o.loops.len(), 1, "{} at {d}", case.name);
