@@ -334,7 +334,7 @@ fn a_disk_like_4096_gon_at_many_distances() {
 #[test]
 fn straight_and_nearly_straight_vertices_change_no_offset() {
     let mut domains: Vec<(String, Vec<Vec<[f64; 2]>>)> = Vec::new();
-    for seed in 1..=6 {
+    for seed in 1..=5 {
         let n = 12 + (seed as usize * 7) % 40;
         domains.push((format!("rings-holes n={n} seed={seed}"), testgen::rings::generate_rings("rings-holes", n, seed).unwrap()));
     }
@@ -348,9 +348,10 @@ fn straight_and_nearly_straight_vertices_change_no_offset() {
         let plain = from_rings(name.clone(), &rings);
         let ds = distances(&plain, true, 7);
         let want = plain.diagram.offsets(&ds).unwrap();
-        for (k, (nudge, share)) in
-            [(Nudge::None, 0.5), (Nudge::None, 1.0), (Nudge::Ulp, 0.5), (Nudge::Ulp, 1.0)].into_iter().enumerate()
-        {
+        // the glyph (hundreds of segments) with half its edges cut only
+        let variants = [(Nudge::None, 0.5), (Nudge::Ulp, 0.5), (Nudge::None, 1.0), (Nudge::Ulp, 1.0)];
+        let variants = if name == "glyph" { &variants[..2] } else { &variants[..] };
+        for (k, &(nudge, share)) in variants.iter().enumerate() {
             let cut = common::cut_edges(&rings, share, nudge, 100 + k as u64);
             let case = from_rings(format!("{name} cut {share} {nudge:?}"), &cut);
             let size = case.size();
