@@ -10,6 +10,7 @@
 // very non-convex) with 0..5 random star-shaped holes placed so that they
 // touch neither each other nor the outer ring; regular n-gons; a disk-like
 // 4096-gon; and, with --glyphs DIR, the glyph outlines DIR/glyph_{B,8,g}.rings
+// and the country outlines DIR/dcw_*.rings (km)
 // (the rings format: "rings R", then per ring its point count K and K lines
 // "x y"; '#' starts a comment; the region is the even-odd one). Each at
 // fixed fractions of its size, negative (shrinking, up to beyond the
@@ -71,6 +72,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -888,8 +890,27 @@ int main(int argc, char **argv) {
       in.distances = {-5, -20, -50, -89, -150, 5, 30, 100, 400};
       inputs.push_back(in);
     }
+    // Country outlines in km (scripts/country_rings.py: the Digital Chart
+    // of the World, gmt-dcw), with their straight and nearly straight
+    // vertices, enclaves and islands: every dcw_*.rings beside the glyphs.
+    std::vector<std::string> countries;
+    for (const auto &entry : std::filesystem::directory_iterator(glyphs)) {
+      std::string file = entry.path().filename().string();
+      if (file.rfind("dcw_", 0) == 0 && file.size() > 6 && file.substr(file.size() - 6) == ".rings") countries.push_back(file);
+    }
+    std::sort(countries.begin(), countries.end());
+    for (const std::string &file : countries) {
+      Input in;
+      in.name = file.substr(0, file.size() - 6);
+      if (!read_rings(glyphs + "/" + file, in.rings)) {
+        std::fprintf(stderr, "cannot read %s/%s\n", glyphs.c_str(), file.c_str());
+        return 2;
+      }
+      in.distances = {-0.5, -3, -15, -40, 0.5, 3, 20, 150};
+      inputs.push_back(in);
+    }
   } else {
-    std::printf("note: no --glyphs DIR, the glyph outlines are left out\n");
+    std::printf("note: no --glyphs DIR, the glyph and country outlines are left out\n");
   }
 
   std::vector<Known> known;  // none known
