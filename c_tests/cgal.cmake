@@ -657,26 +657,36 @@ if(SEGVORONOI_TEST_TOUCHING_RINGS)
     segvoronoi_cgal_straight_test(${_run})
   endforeach()
 endif()
-# Known failures at 8d7b7c5+ (issue 27; WILL_FAIL, label known_failure:
-# remove a name here when it passes). Where both Delaunay graphs agree
-# exactly (EDGES, FACES) but the library gives a positive length to an
-# edge of a straight joint's cell that CGAL's exact construction finds of
-# length zero (the joint's cell has no width, so every edge of it but the
-# two separators has length zero: the library is wrong), minimised to
-# fixtures/straight_joint_zero_length_32seg.txt (P1 the straight joint of
-# S0 and S1, the library has the VPAIR P1 S2). The nudged ones are not
-# analysed yet (see the report of branch cgal-exact).
+# Known failures (issue 27; WILL_FAIL, label known_failure: remove a name
+# here when it passes, `ctest -L known_failure` lists them). Both are the
+# library's (CGAL's exact segment Delaunay graph decides every predicate
+# exactly; the harness's zero length is CGAL's vertex constructed exactly):
+# - a straight joint (a vertex where a chain goes on straight) has a cell of
+#   no width, so every edge of it but its two separators has length zero;
+#   both Delaunay graphs agree exactly (EDGES, FACES), but the library gives
+#   an edge of such a cell a positive length (VPAIRS): in
+#   straight_joint_zero_length_32seg (minimised from polyline+straight 2048
+#   seed 1; P1 is the straight joint of S0 and S1, the library has the VPAIR
+#   P1 S2 and the vertices P1 S0 S2 and P1 S1 S2, CGAL one vertex P1 S0 S1
+#   S2; no single segment can be removed with the difference staying);
+#   also polyline+runs 2048 seed 2 and boost-split+straight 1000 seed 1
+#   (the same kind: EDGES and FACES agree, VPAIRS differ).
+# - two spokes from one point, each with a joint one ulp from straight
+#   (nudged_joints_two_spokes_4seg, minimised from star+nudged 64 seed 1):
+#   a generic input (no zero-length edge) whose Delaunay graph differs, ours
+#   S1-S2 where CGAL has S0-S3 (four segments nearly tangent to one circle
+#   near the joints).
 set(_segvoronoi_straight_known_failures
-  cgal_polyline_runs_2048_seed2 cgal_boost-split_straight_1000_seed1 cgal_star_nudged_64_seed1
-  cgal_rings-inscribed-jitter_nudged_512_seed2 cgal_glyphs_nudged_0_seed1 cgal_glyphs_runs-nudged_0_seed1
-  cgal_glyphs_runs-nudged_0_seed2 cgal_glyphs_runs-nudged_0_seed6 cgal_rings-inscribed-jitter_runs-nudged_512_seed2)
+  cgal_polyline_runs_2048_seed2 cgal_boost-split_straight_1000_seed1 cgal_star_nudged_64_seed1)
 set_tests_properties(${_segvoronoi_straight_known_failures} PROPERTIES WILL_FAIL TRUE)
 foreach(_name ${_segvoronoi_straight_known_failures})
   get_test_property(${_name} LABELS _labels)
   set_tests_properties(${_name} PROPERTIES LABELS "${_labels};known_failure")
 endforeach()
 segvoronoi_cgal_fixture_test(straight_joint_zero_length_32seg --degenerate)
-set_tests_properties(cgal_fixture_straight_joint_zero_length_32seg PROPERTIES WILL_FAIL TRUE LABELS "cgal;known_failure")
+segvoronoi_cgal_fixture_test(nudged_joints_two_spokes_4seg)
+set_tests_properties(cgal_fixture_straight_joint_zero_length_32seg cgal_fixture_nudged_joints_two_spokes_4seg
+                     PROPERTIES WILL_FAIL TRUE LABELS "cgal;known_failure")
 unset(_segvoronoi_straight_known_failures)
 unset(_labels)
 unset(_name)

@@ -1471,11 +1471,11 @@ K::Point_2 edge_middle(const Gt::Site_2& a, const Gt::Site_2& b, const K::Point_
 
 // The Voronoi vertex of the finite face f, to within 1e-9 of the extent:
 // CGAL's construction in interval arithmetic where its box is that small,
-// else the exact one (as in same_vertex) rounded. (CGAL's double
+// else the exact one (as in same_vertex) rounded; throws where neither can. (CGAL's double
 // construction, sdg.primal, is ill-conditioned next to a joint an ulp from
 // straight: its vertices there were off by far more than their clearance,
 // or not finite, and put edges' middles on the wrong side of the rings.)
-K::Point_2 face_vertex(const Sdg& sdg, const Sdg::Face_handle& f, double extent) {
+K::Point_2 face_vertex(const Sdg::Face_handle& f, double extent) {
     const Gt::Site_2 &a = f->vertex(0)->site(), &b = f->vertex(1)->site(), &c = f->vertex(2)->site();
     {
         CGAL::Protect_FPU_rounding<true> upward;
@@ -1489,15 +1489,20 @@ K::Point_2 face_vertex(const Sdg& sdg, const Sdg::Face_handle& f, double extent)
             // undecided in intervals: exactly below
         }
     }
-    const K::Point_2 rounded = sdg.primal(f);
+    // (not sdg.primal as the last resort: on faces at joints an ulp from
+    // straight its exact stage divides by zero in GMP, a SIGFPE)
     const std::pair<double, double> range = coordinate_range({&a, &b, &c});
-    if (range.first > 0.0 && std::ilogb(range.first) - std::ilogb(range.second) > 400) return rounded;
+    if (range.first > 0.0 && std::ilogb(range.first) - std::ilogb(range.second) > 400) {
+        throw std::runtime_error("a Voronoi vertex whose coordinates spread over more than 2^400 (not constructed)");
+    }
     const int k = range.first > 0.0 ? -std::ilogb(range.first) : 0;
     CORE::get_static_AbortFlag() = false;
     CORE::get_static_InvalidFlag() = 0;
     const Kx::Point_2 exact =
         Gtx::Construct_svd_vertex_2()(convert_scaled(a, k), convert_scaled(b, k), convert_scaled(c, k));
-    if (CORE::get_static_InvalidFlag() != 0) return rounded;
+    if (CORE::get_static_InvalidFlag() != 0) {
+        throw std::runtime_error("a Voronoi vertex that CGAL's exact construction cannot make (CORE invalid)");
+    }
     return K::Point_2(std::ldexp(CGAL::to_double(exact.x()), -k), std::ldexp(CGAL::to_double(exact.y()), -k));
 }
 
@@ -1533,7 +1538,7 @@ AxisResult axis_cgal(const std::vector<std::vector<Point>>& rings, const Sites& 
             ++cgal.zero_length;
             continue;
         }
-        const K::Point_2 middle = edge_middle(a, b, face_vertex(sdg, f, extent), face_vertex(sdg, g, extent));
+        const K::Point_2 middle = edge_middle(a, b, face_vertex(f, extent), face_vertex(g, extent));
         if (!std::isfinite(middle.x()) || !std::isfinite(middle.y())) {
             throw std::runtime_error("a Voronoi edge whose middle CGAL's double construction cannot place");
         }
