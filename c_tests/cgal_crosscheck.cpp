@@ -75,6 +75,7 @@
 #include <CGAL/spatial_sort.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <csignal>
 #include <chrono>
@@ -546,6 +547,40 @@ Gtx::Site_2 convert_scaled(const Gt::Site_2& site, int k) {
                                          P(scaled(seg.target().x()), scaled(seg.target().y())));
 }
 
+// The exact vertices constructed so far, by their three sites (each as
+// kind and coordinates) and scale: a face is asked about once per edge, and
+// CORE keeps the precision it has reached in the nodes of an Expr, so the
+// second comparison of a vertex is much cheaper than the first. The key is the geometry itself, so
+// entries never go stale; cleared for each input to bound the memory.
+using ExactVertexKey = std::pair<std::array<double, 15>, int>;
+std::map<ExactVertexKey, Kx::Point_2> g_exact_vertices;
+
+void clear_exact_vertices() { g_exact_vertices.clear(); }
+
+// The Voronoi vertex of the face (a, b, c) in CORE::Expr, every coordinate
+// of the sites multiplied by 2^k; from g_exact_vertices when it was made
+// before.
+Kx::Point_2 exact_vertex(const Gt::Site_2& a, const Gt::Site_2& b, const Gt::Site_2& c, int k) {
+    ExactVertexKey key{{}, k};
+    std::size_t n = 0;
+    for (const Gt::Site_2* site : {&a, &b, &c}) {
+        if (site->is_point()) {
+            for (double v : {0.0, site->point().x(), site->point().y(), 0.0, 0.0}) key.first[n++] = v;
+        } else {
+            const K::Segment_2 seg = site->segment();
+            for (double v : {1.0, seg.source().x(), seg.source().y(), seg.target().x(), seg.target().y()}) {
+                key.first[n++] = v;
+            }
+        }
+    }
+    const auto found = g_exact_vertices.find(key);
+    if (found != g_exact_vertices.end()) return found->second;
+    const Kx::Point_2 vertex =
+        Gtx::Construct_svd_vertex_2()(convert_scaled(a, k), convert_scaled(b, k), convert_scaled(c, k));
+    g_exact_vertices.emplace(key, vertex);
+    return vertex;
+}
+
 // The largest and the least nonzero magnitude of a coordinate of the sites
 // (0 when all are 0).
 std::pair<double, double> coordinate_range(std::initializer_list<const Gt::Site_2*> sites) {
@@ -573,6 +608,7 @@ std::pair<double, double> coordinate_range(std::initializer_list<const Gt::Site_
 // the summary line.
 std::size_t g_exact_vertex_pairs = 0;
 std::size_t g_exact_vertex_same = 0;
+
 // How many exact constructions were not made (magnitudes that spread over
 // more than 2^400) or that CGAL's formula could not make (a square root of
 // a negative number: CORE then marks the result invalid instead of
@@ -619,9 +655,7 @@ std::optional<bool> same_vertex(const Gt::Site_2& a1, const Gt::Site_2& a2, cons
     // at 1e-180 (its squares), then wrongly found divisions by zero
     // (cgal_tiny-lattice_2500)
     const int k = range.first > 0.0 ? -std::ilogb(range.first) : 0;
-    const Gtx::Construct_svd_vertex_2 construct;
-    const Kx::Point_2 u = construct(convert_scaled(a1, k), convert_scaled(a2, k), convert_scaled(a3, k));
-    const Kx::Point_2 v = construct(convert_scaled(b1, k), convert_scaled(b2, k), convert_scaled(b3, k));
+    const Kx::Point_2 u = exact_vertex(a1, a2, a3, k), v = exact_vertex(b1, b2, b3, k);
     if (CORE::get_static_InvalidFlag() != 0) {
         ++g_exact_vertex_invalid;
         return std::nullopt;
@@ -731,6 +765,7 @@ void count_degenerate_edges(const Sdg& sdg, CgalResult& cgal) {
 // Without `voronoi`, a generic input gets no VPAIRS and VVERTICES (they are
 // informational there, and the search need not pay for them).
 CgalResult build_cgal(const Sites& sites, const Input& input, bool voronoi = true) {
+    clear_exact_vertices();
     CgalResult cgal;
     Sdg sdg;
     build_cgal_graph(sites, input, sdg, cgal);
@@ -1498,8 +1533,7 @@ K::Point_2 face_vertex(const Sdg::Face_handle& f, double extent) {
     const int k = range.first > 0.0 ? -std::ilogb(range.first) : 0;
     CORE::get_static_AbortFlag() = false;
     CORE::get_static_InvalidFlag() = 0;
-    const Kx::Point_2 exact =
-        Gtx::Construct_svd_vertex_2()(convert_scaled(a, k), convert_scaled(b, k), convert_scaled(c, k));
+    const Kx::Point_2 exact = exact_vertex(a, b, c, k);
     if (CORE::get_static_InvalidFlag() != 0) {
         throw std::runtime_error("a Voronoi vertex that CGAL's exact construction cannot make (CORE invalid)");
     }
@@ -1581,6 +1615,7 @@ int polygon_main(int argc, char** argv) {
     const Sites sites(input);
     std::signal(SIGFPE, report_sigfpe);
     g_current_input = &input;
+    clear_exact_vertices();
     AxisResult ours, cgal;
     try {
         ours = axis_ours(rings, sites);
