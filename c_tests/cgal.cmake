@@ -246,12 +246,15 @@ set_tests_properties(cgal_collinear_continuation PROPERTIES TIMEOUT 60 LABELS cg
 # (3)), n equal parallel segments at unit spacing (figure 8 (4), 39 as in
 # the seed) and the R with shared endpoints (its hand coordinates align the
 # corners (20, 40) and (20, 58)).
-# family, segment count, timeout in seconds
+# family, segment count, timeout in seconds (seg-lattice 7812: about 20 s
+# since zero length is decided by exact construction, every one of its
+# ~19,000 zero-length pairs compared equal in CORE::Expr; 60 s before
+# the exact vertices were cached)
 set(_segvoronoi_cgal_issue3_runs
   "polygon-holes 64 60" "polygon-holes 1024 60" "polygon-holes 4096 60"
   "letter-gap 22 60"
   "near-vertical 64 60" "near-vertical 1000 60" "near-vertical 4096 60"
-  "seg-lattice 180 60" "seg-lattice 1984 60" "seg-lattice 7812 60"
+  "seg-lattice 180 60" "seg-lattice 1984 60" "seg-lattice 7812 120"
   "tangent 4 60" "tangent 16 60" "tangent 64 60" "tangent 256 60" "tangent 1024 60"
   "parallel 39 60" "parallel 200 60" "parallel 1000 60"
   "letter 22 60")
@@ -591,3 +594,111 @@ endforeach()
 unset(_count)
 unset(_seed)
 unset(_family)
+
+# Issue 27: straight and nearly straight vertices, as users' chains and
+# rings have them (testgen/src/straight.rs). Every chain or ring family
+# comes as variants, named FAMILY+VARIANT: +straight (about half the edges
+# cut at 1..3 points exactly on them, an open chain's end edges always, one
+# point 2^-m from the free end), +nudged (each cut point then moved one ulp
+# off the line), +runs (a quarter of the edges cut at 4..16 points: straight
+# runs through many vertices), +runs-nudged. Random coordinates are first
+# snapped to a dyadic grid 2^-36 of the extent (finer where that would make
+# the input illegal) so that cut points at k/2^m are exact; each is checked
+# with an exact orientation. The exact variants are compared as degenerate
+# (a straight joint's cell has no width: its edges to every site but its two
+# segments have length zero, decided exactly, see same_vertex), the nudged
+# ones as their family. The ring variants compare the medial axis
+# (--polygon). Label straight: `ctest -L straight`. About 60 s in all on
+# one core.
+function(segvoronoi_cgal_straight_test family count seed)
+  string(REPLACE "+" "_" _name "cgal_${family}_${count}_seed${seed}")
+  segvoronoi_cgal_generated_test(${_name} ${family} ${count} ${seed} 120)
+  set_tests_properties(${_name} PROPERTIES LABELS "cgal;straight")
+endfunction()
+foreach(_variant straight nudged runs runs-nudged)
+  foreach(_run "polyline 256 1" "polyline 512 11" "polygon-holes 1024 1" "glyph 256 2" "glyph 64 4"
+               "star 64 1" "polygon 12 1" "polygon 64 1" "inscribed-jitter 256 3" "letter 22 1"
+               "kinked-chain 64 3")
+    separate_arguments(_run)
+    list(GET _run 0 _family)
+    list(GET _run 1 _count)
+    list(GET _run 2 _seed)
+    segvoronoi_cgal_straight_test(${_family}+${_variant} ${_count} ${_seed})
+  endforeach()
+  foreach(_run "rings-holes 512 1" "rings-holes 64 2" "rings-inscribed-jitter 512 2" "glyphs 0 1" "glyphs 0 2"
+               "glyphs 0 6")
+    separate_arguments(_run)
+    list(GET _run 0 _family)
+    list(GET _run 1 _count)
+    list(GET _run 2 _seed)
+    segvoronoi_cgal_straight_test(${_family}+${_variant} ${_count} ${_seed})
+    string(REPLACE "+" "_" _name "cgal_${_family}+${_variant}_${_count}_seed${_seed}")
+    set_tests_properties(${_name} PROPERTIES LABELS "cgal;straight;medial_axis")
+  endforeach()
+endforeach()
+foreach(_run "near-vertical 1000 1" "boost-split 300 1" "fan 16 1" "square-hole 8 1" "letter-gap 22 1"
+             "ulp-ends 256 2" "inscribed 256 2")
+  separate_arguments(_run)
+  list(GET _run 0 _family)
+  list(GET _run 1 _count)
+  list(GET _run 2 _seed)
+  segvoronoi_cgal_straight_test(${_family}+straight ${_count} ${_seed})
+  segvoronoi_cgal_straight_test(${_family}+nudged ${_count} ${_seed})
+endforeach()
+# Rings that touch at points (a hole's corner on the outer ring, two holes
+# sharing a corner; straight.rs touching_rings): the library rejects them
+# until touching rings are split exactly (another branch); then enable by
+# setting SEGVORONOI_TEST_TOUCHING_RINGS. (CGAL's traits without
+# intersections do not take a T-junction either: the harness would need to
+# split the touched segment on CGAL's side and map the names.)
+option(SEGVORONOI_TEST_TOUCHING_RINGS "cross-check rings that touch at points (needs the library to accept them)" OFF)
+if(SEGVORONOI_TEST_TOUCHING_RINGS)
+  foreach(_run "rings-touching 16 1" "rings-touching 100 2" "rings-touching+straight 100 3")
+    separate_arguments(_run)
+    segvoronoi_cgal_straight_test(${_run})
+  endforeach()
+endif()
+# Known failures (issue 27; WILL_FAIL, label known_failure: remove a name
+# here when it passes, `ctest -L known_failure` lists them). Both are the
+# library's (CGAL's exact segment Delaunay graph decides every predicate
+# exactly; the harness's zero length is CGAL's vertex constructed exactly):
+# - a straight joint (a vertex where a chain goes on straight) has a cell of
+#   no width, so every edge of it but its two separators has length zero;
+#   both Delaunay graphs agree exactly (EDGES, FACES), but the library gives
+#   an edge of such a cell a positive length (VPAIRS): in
+#   straight_joint_zero_length_4seg (minimised from polyline+straight 2048
+#   seed 1: S0 and S3 meet straight at P1, S3 and S1 turn sharply at their
+#   joint, S2 is apart; the library has the VPAIR P1 S1 and the vertices
+#   P1 S0 S1 and P1 S1 S3, CGAL one vertex P1 S0 S1 S3; the first 32-segment
+#   cut of it agreed with its segments in reverse order, and 2 of the 24
+#   orders of these four differ: the library's
+#   answer depends on the insertion order);
+#   also polyline+runs 512 seed 11 (and 2048 seed 2, 512 seed 13) and
+#   boost-split+straight 300 seed 1 (and seed 2, 500 seed 3; integer
+#   coordinates: many straight joints), the same kind: EDGES and FACES
+#   agree, VPAIRS differ.
+# - two spokes from one point, each with a joint one ulp from straight
+#   (nudged_joints_two_spokes_4seg, minimised from star+nudged 64 seed 1):
+#   a generic input (no zero-length edge) whose Delaunay graph differs, ours
+#   S1-S2 where CGAL has S0-S3 (four segments nearly tangent to one circle
+#   near the joints); 18 of the 24 orders of its segments differ, 6 agree.
+#   Also star+nudged 48 seed 12 and star+runs-nudged 48 seed 12.
+set(_segvoronoi_straight_known_failures
+  cgal_polyline_runs_512_seed11 cgal_boost-split_straight_300_seed1 cgal_star_nudged_64_seed1)
+set_tests_properties(${_segvoronoi_straight_known_failures} PROPERTIES WILL_FAIL TRUE)
+foreach(_name ${_segvoronoi_straight_known_failures})
+  get_test_property(${_name} LABELS _labels)
+  set_tests_properties(${_name} PROPERTIES LABELS "${_labels};known_failure")
+endforeach()
+segvoronoi_cgal_fixture_test(straight_joint_zero_length_4seg --degenerate)
+segvoronoi_cgal_fixture_test(nudged_joints_two_spokes_4seg)
+set_tests_properties(cgal_fixture_straight_joint_zero_length_4seg cgal_fixture_nudged_joints_two_spokes_4seg
+                     PROPERTIES WILL_FAIL TRUE LABELS "cgal;known_failure")
+unset(_segvoronoi_straight_known_failures)
+unset(_labels)
+unset(_name)
+unset(_run)
+unset(_variant)
+unset(_family)
+unset(_count)
+unset(_seed)

@@ -15,11 +15,13 @@
 // (the default): EDGES and FACES must agree exactly. Degenerate input
 // (--degenerate: cocircular or collinear sites, where the Delaunay graph is
 // not unique): only VPAIRS and VVERTICES are unique, so only they must agree.
-// For faces with segments CGAL's Voronoi vertex is a double construction, so
-// VPAIRS/VVERTICES of segment inputs decide zero length from rounded
-// positions; they are checked for degenerate inputs and informational
-// otherwise (and left out of a generic run when CGAL's construction is not
-// finite, as for nearly collinear segments). A generic input that CGAL finds
+// On CGAL's side their zero length is decided exactly: the two Voronoi
+// vertices of an edge are constructed by CGAL (Construct_svd_vertex_2) in
+// interval arithmetic, and where the intervals cannot tell them apart again
+// in CORE::Expr (exact square roots) and compared exactly (same_vertex; the
+// summary's exact_vertex_pairs counts those). The library's VPAIRS decide
+// zero length exactly too. They are checked for degenerate inputs and
+// informational otherwise. A generic input that CGAL finds
 // exactly degenerate (a Voronoi edge of length zero) is compared again as
 // degenerate when the generic comparison differs. --family names the input
 // in the summary line (c_tests/cgal_family.cmake passes the family). Exit
@@ -51,7 +53,7 @@
 // domain is the even-odd region of the rings. Ours: the rings through
 // segvoronoi_builder_add_polygon; every edge whose location is INSIDE, not
 // a separator, and of positive length (zero length decided exactly from the
-// sites of its two vertices, with CGAL's predicates as for CGAL's edges).
+// sites of its two vertices, by exact construction as for CGAL's edges).
 // CGAL's: the ring segments in the segment Delaunay graph; the dual of
 // every finite Delaunay edge that is not a separator and not of length
 // zero, a ray counting as outside, a finite edge inside when a point
@@ -62,7 +64,9 @@
 // for --file.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Gmpq.h>
+#include <CGAL/CORE_Expr.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Segment_Delaunay_graph_traits_2.h>
 #include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
 #include <CGAL/Segment_Delaunay_graph_hierarchy_2.h>
 #include <CGAL/Simple_cartesian.h>
@@ -71,6 +75,7 @@
 #include <CGAL/spatial_sort.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <csignal>
 #include <chrono>
@@ -91,7 +96,6 @@
 #include <vector>
 
 #include "boost_text.hpp"
-#include "cgal_rational.hpp"
 #include "segvoronoi.h"
 
 #ifndef SEGVORONOI_TESTGEN_PATH
@@ -503,96 +507,183 @@ void add_delaunay_sections(const Sdg& sdg, const Sites& sites, Topology& topolog
 }
 
 
-// The circle through the points p, q tangent to the line of the segment s
-// with p, q and the touching point counter-clockwise (the Voronoi vertex of
-// the face (p, q, s)), when it is rational: the centre X = M + t d on the
-// bisector of p and q solves a quadratic in t whose discriminant is then a
-// square.
-bool rational_pps(const K::Point_2& p, const K::Point_2& q, const K::Segment_2& s, CGAL::Gmpq& x, CGAL::Gmpq& y) {
-    using Q = CGAL::Gmpq;
-    const auto exact = [](const K::Point_2& r) { return QPoint{Q(r.x()), Q(r.y())}; };
-    return rational_pps(exact(p), exact(q), exact(s.source()), exact(s.target()), x, y);
+// Voronoi vertices constructed exactly: CGAL's own construction
+// (Construct_svd_vertex_2, the Voronoi vertex of three sites given
+// counter-clockwise) over a kernel of intervals (the filter) and over one of
+// CORE::Expr (exact real algebraic numbers with square roots: its == is
+// decided exactly, by separation bounds where the numbers are equal).
+using Ki = CGAL::Simple_cartesian<CGAL::Interval_nt<false>>;
+using Gti = CGAL::Segment_Delaunay_graph_traits_without_intersections_2<Ki, CGAL::Field_with_sqrt_tag>;
+using Kx = CGAL::Simple_cartesian<CORE::Expr>;
+using Gtx = CGAL::Segment_Delaunay_graph_traits_without_intersections_2<Kx, CGAL::Field_with_sqrt_tag>;
+
+// An input site (a point, or a segment by its endpoints; the traits
+// without intersections make no other) in the kernel of G, exactly.
+template <class G>
+typename G::Site_2 convert_site(const Gt::Site_2& site) {
+    using P = typename G::Point_2;
+    if (site.is_point()) return G::Site_2::construct_site_2(P(site.point().x(), site.point().y()));
+    const K::Segment_2 seg = site.segment();
+    return G::Site_2::construct_site_2(P(seg.source().x(), seg.source().y()), P(seg.target().x(), seg.target().y()));
 }
 
-// The Voronoi vertex of the face (a, b, c) (counter-clockwise) exactly,
-// where it is rational: three points (the circumcentre); two points p, q
-// and a segment with an endpoint among them (the bisector of p and q meets
-// the segment's perpendicular at that endpoint); two points and a segment
-// when the circle through them tangent to its line is rational
-// (rational_pps). False otherwise (square roots, or segments only).
-bool rational_vertex(const Gt::Site_2& a, const Gt::Site_2& b, const Gt::Site_2& c, CGAL::Gmpq& x, CGAL::Gmpq& y) {
-    using Q = CGAL::Gmpq;
-    std::vector<K::Point_2> points;
-    const Gt::Site_2* segment = nullptr;
-    // rotated so that a segment comes last: the points then keep the face's order
-    const Gt::Site_2* order[3] = {&a, &b, &c};
-    if (a.is_segment()) order[0] = &b, order[1] = &c, order[2] = &a;
-    if (b.is_segment()) order[0] = &c, order[1] = &a, order[2] = &b;
-    for (const Gt::Site_2* site : order) {
+template <class G>
+typename G::Point_2 construct_vertex(const Gt::Site_2& a, const Gt::Site_2& b, const Gt::Site_2& c) {
+    return typename G::Construct_svd_vertex_2()(convert_site<G>(a), convert_site<G>(b), convert_site<G>(c));
+}
+
+// An input site in CORE::Expr, every coordinate multiplied by 2^k: exactly
+// (in double where that is exact, else as a product of two Exprs).
+Gtx::Site_2 convert_scaled(const Gt::Site_2& site, int k) {
+    const auto scaled = [k](double v) {
+        const double w = std::ldexp(v, k);
+        if (std::isfinite(w) && std::ldexp(w, -k) == v) return CORE::Expr(w);
+        return CORE::Expr(v) * CORE::Expr(std::ldexp(1.0, k / 2)) * CORE::Expr(std::ldexp(1.0, k - k / 2));
+    };
+    using P = Gtx::Point_2;
+    if (site.is_point()) return Gtx::Site_2::construct_site_2(P(scaled(site.point().x()), scaled(site.point().y())));
+    const K::Segment_2 seg = site.segment();
+    return Gtx::Site_2::construct_site_2(P(scaled(seg.source().x()), scaled(seg.source().y())),
+                                         P(scaled(seg.target().x()), scaled(seg.target().y())));
+}
+
+// The exact vertices constructed so far, by their three sites (each as
+// kind and coordinates) and scale: a face is asked about once per edge, and
+// CORE keeps the precision it has reached in the nodes of an Expr, so the
+// second comparison of a vertex is much cheaper than the first. The key is the geometry itself, so
+// entries never go stale; cleared for each input to bound the memory.
+using ExactVertexKey = std::pair<std::array<double, 15>, int>;
+std::map<ExactVertexKey, Kx::Point_2> g_exact_vertices;
+
+void clear_exact_vertices() { g_exact_vertices.clear(); }
+
+// The Voronoi vertex of the face (a, b, c) in CORE::Expr, every coordinate
+// of the sites multiplied by 2^k; from g_exact_vertices when it was made
+// before.
+Kx::Point_2 exact_vertex(const Gt::Site_2& a, const Gt::Site_2& b, const Gt::Site_2& c, int k) {
+    ExactVertexKey key{{}, k};
+    std::size_t n = 0;
+    for (const Gt::Site_2* site : {&a, &b, &c}) {
         if (site->is_point()) {
-            points.push_back(site->point());
-        } else if (segment == nullptr) {
-            segment = site;
+            for (double v : {0.0, site->point().x(), site->point().y(), 0.0, 0.0}) key.first[n++] = v;
         } else {
-            return false;
+            const K::Segment_2 seg = site->segment();
+            for (double v : {1.0, seg.source().x(), seg.source().y(), seg.target().x(), seg.target().y()}) {
+                key.first[n++] = v;
+            }
         }
     }
-    // the centre is on the lines n1 . X = c1 and n2 . X = c2
-    Q n1x, n1y, c1, n2x, n2y, c2;
-    const auto bisector = [](const K::Point_2& p, const K::Point_2& q, Q& nx, Q& ny, Q& cc) {
-        nx = Q(q.x()) - Q(p.x());
-        ny = Q(q.y()) - Q(p.y());
-        cc = (nx * (Q(p.x()) + Q(q.x())) + ny * (Q(p.y()) + Q(q.y()))) / Q(2);
-    };
-    bisector(points[0], points[1], n1x, n1y, c1);
-    if (segment == nullptr) {
-        bisector(points[0], points[2], n2x, n2y, c2);
-    } else {
-        const K::Segment_2 seg = segment->segment();
-        const bool at_source = seg.source() == points[0] || seg.source() == points[1];
-        const bool at_target = seg.target() == points[0] || seg.target() == points[1];
-        if (at_source && at_target) return false;
-        if (!at_source && !at_target) return rational_pps(points[0], points[1], seg, x, y);
-        const K::Point_2 e = at_source ? seg.source() : seg.target(), f = at_source ? seg.target() : seg.source();
-        n2x = Q(f.x()) - Q(e.x());
-        n2y = Q(f.y()) - Q(e.y());
-        c2 = n2x * Q(e.x()) + n2y * Q(e.y());
-    }
-    const Q det = n1x * n2y - n1y * n2x;
-    if (det == 0) return false;
-    x = (c1 * n2y - c2 * n1y) / det;
-    y = (n1x * c2 - n2x * c1) / det;
-    return true;
+    const auto found = g_exact_vertices.find(key);
+    if (found != g_exact_vertices.end()) return found->second;
+    const Kx::Point_2 vertex =
+        Gtx::Construct_svd_vertex_2()(convert_scaled(a, k), convert_scaled(b, k), convert_scaled(c, k));
+    g_exact_vertices.emplace(key, vertex);
+    return vertex;
 }
 
-// Whether the Voronoi edge of a finite Delaunay edge between two finite
-// faces has length zero, exactly: the apex of the second face lies on the
-// circle of the first, and the other way. Two faces of the
-// same three sites (far apart, with segments) are two different circles, for
-// which the predicate is trivially true, so they are excluded.
+// The largest and the least nonzero magnitude of a coordinate of the sites
+// (0 when all are 0).
+std::pair<double, double> coordinate_range(std::initializer_list<const Gt::Site_2*> sites) {
+    double largest = 0.0, least = 0.0;
+    const auto note = [&](double v) {
+        v = std::abs(v);
+        if (v == 0.0) return;
+        largest = std::max(largest, v);
+        least = least == 0.0 ? v : std::min(least, v);
+    };
+    for (const Gt::Site_2* site : sites) {
+        if (site->is_point()) {
+            note(site->point().x());
+            note(site->point().y());
+        } else {
+            const K::Segment_2 seg = site->segment();
+            for (double v : {seg.source().x(), seg.source().y(), seg.target().x(), seg.target().y()}) note(v);
+        }
+    }
+    return {largest, least};
+}
+
+// How many vertex pairs needed the exact construction (the filter could
+// not tell them apart), and how many of those were one point: reported on
+// the summary line.
+std::size_t g_exact_vertex_pairs = 0;
+std::size_t g_exact_vertex_same = 0;
+
+// How many exact constructions were not made (magnitudes that spread over
+// more than 2^400) or that CGAL's formula could not make (a square root of
+// a negative number: CORE then marks the result invalid instead of
+// aborting, see same_vertex); those edges fall back to CGAL's
+// Is_degenerate_edge_2 (exact_fallback on the summary line).
+std::size_t g_exact_vertex_invalid = 0;
+
+// Whether the Voronoi vertices of the faces (a1, a2, a3) and (b1, b2, b3)
+// (each counter-clockwise) are one point, exactly. The construction in
+// interval arithmetic (rounding upward, as CGAL's filtered predicates do)
+// says "apart" when the two boxes are disjoint; where it cannot (boxes that
+// overlap, or a branch inside the construction that the intervals cannot
+// decide: CGAL throws Uncertain_conversion_exception) the vertices are
+// constructed in CORE::Expr and compared exactly.
 //
-// CGAL's predicate (it asks both ways: each apex on the other face's
-// circle) counts an open segment that touches a circle only at its
-// endpoint as outside it, so where a face's circle is tangent to a segment
-// at one of the face's points (the centre on the segment's perpendicular
-// there), the two vertices are one point but the predicate says no; the
-// library, deciding zero length geometrically, says yes. So edges whose two
-// vertices are rational (rational_vertex) are compared as points in exact
-// rationals; CGAL's predicate decides the rest. (A circle of three points
-// that touches a segment only at its endpoint, another of the points, is
-// not the segment's vertex with the other two: that one touches the open
-// segment.) Still open: two vertices with square
-// roots (a general point-point-segment circle) that coincide through such
-// a touching.
+// CGAL's formulas take a square root of a negative number on some faces of
+// nearly parallel segments and a point (compute_pll); CORE would abort the
+// program there, so its abort flag is off and its invalid flag is read
+// instead: std::nullopt then (the construction is not CGAL's vertex).
+std::optional<bool> same_vertex(const Gt::Site_2& a1, const Gt::Site_2& a2, const Gt::Site_2& a3,
+                                const Gt::Site_2& b1, const Gt::Site_2& b2, const Gt::Site_2& b3) {
+    {
+        CGAL::Protect_FPU_rounding<true> upward;
+        try {
+            const Ki::Point_2 u = construct_vertex<Gti>(a1, a2, a3), v = construct_vertex<Gti>(b1, b2, b3);
+            if (!CGAL::possibly(u.x() == v.x()) || !CGAL::possibly(u.y() == v.y())) return false;
+        } catch (const CGAL::Uncertain_conversion_exception&) {
+            // undecided in intervals: exactly below
+        }
+    }
+    ++g_exact_vertex_pairs;
+    // CORE::Expr is not reliable where magnitudes spread wide (a
+    // coordinate 2^-1074 beside 1: its BigFloat division reports a zero
+    // divisor and exits): those pairs fall back
+    const std::pair<double, double> range = coordinate_range({&a1, &a2, &a3, &b1, &b2, &b3});
+    if (range.first > 0.0 && std::ilogb(range.first) - std::ilogb(range.second) > 400) {
+        ++g_exact_vertex_invalid;
+        return std::nullopt;
+    }
+    CORE::get_static_AbortFlag() = false;
+    CORE::get_static_InvalidFlag() = 0;
+    // scaled by a power of two so that the largest coordinate is about 1:
+    // the answer is the same, and CORE's double filter, which underflows
+    // at 1e-180 (its squares), then wrongly found divisions by zero
+    // (cgal_tiny-lattice_2500)
+    const int k = range.first > 0.0 ? -std::ilogb(range.first) : 0;
+    const Kx::Point_2 u = exact_vertex(a1, a2, a3, k), v = exact_vertex(b1, b2, b3, k);
+    if (CORE::get_static_InvalidFlag() != 0) {
+        ++g_exact_vertex_invalid;
+        return std::nullopt;
+    }
+    const bool same = u.x() == v.x() && u.y() == v.y();
+    if (same) ++g_exact_vertex_same;
+    return same;
+}
+
+// Whether the Voronoi edge of a finite Delaunay edge (p, q) between the
+// faces (p, q, r) and (q, p, s) (each counter-clockwise) has length zero,
+// exactly: its two vertices, constructed exactly, are one point. Two faces
+// of the same three sites (far apart, with segments) are two different
+// circles; callers leave them out (r == s).
 //
-// The same test on sites alone (is_zero_length_sites) decides zero length
-// for the library's edges in --polygon: the edge (p, q) between the faces
-// (p, q, r) and (q, p, s), each counter-clockwise.
-bool is_zero_length_sites(const Gt& traits, const Gt::Site_2& p, const Gt::Site_2& q, const Gt::Site_2& r,
-                          const Gt::Site_2& s) {
-    CGAL::Gmpq x1, y1, x2, y2;
-    if (rational_vertex(p, q, r, x1, y1) && rational_vertex(q, p, s, x2, y2)) return x1 == x2 && y1 == y2;
-    return traits.is_degenerate_edge_2_object()(p, q, r, s);
+// CGAL's own predicate (Is_degenerate_edge_2: each apex on the other
+// face's circle) is not used: it is vacuous on the edges of a 2-gon, and
+// it counts an open segment that touches a circle only at its endpoint as
+// outside it, so where a face's circle is tangent to a segment at one of
+// the face's points (a vertex of points P, Q and the segment ending at Q;
+// every straight joint of a chain makes one) it says "not degenerate" for
+// two vertices that are one point.
+//
+// The same test decides zero length for the library's edges in --polygon
+// (from the sites of each edge's two vertices).
+bool is_zero_length_sites(const Gt::Site_2& p, const Gt::Site_2& q, const Gt::Site_2& r, const Gt::Site_2& s) {
+    if (const std::optional<bool> same = same_vertex(p, q, r, q, p, s)) return *same;
+    return Gt().is_degenerate_edge_2_object()(p, q, r, s);
 }
 
 bool is_zero_length_edge(const Sdg& sdg, const Sdg::Edge& e) {
@@ -600,8 +691,7 @@ bool is_zero_length_edge(const Sdg& sdg, const Sdg::Edge& e) {
     const Sdg::Vertex_handle mirror = sdg.tds().mirror_vertex(e.first, e.second);
     if (apex == mirror) return false;
     const auto ends = edge_vertices(e);
-    return is_zero_length_sites(sdg.geom_traits(), ends.first->site(), ends.second->site(), apex->site(),
-                                mirror->site());
+    return is_zero_length_sites(ends.first->site(), ends.second->site(), apex->site(), mirror->site());
 }
 
 // VPAIRS and VVERTICES, zero length decided exactly (is_zero_length_edge),
@@ -673,9 +763,9 @@ void count_degenerate_edges(const Sdg& sdg, CgalResult& cgal) {
 }
 
 // Without `voronoi`, a generic input gets no VPAIRS and VVERTICES (they are
-// informational there, and CGAL's exact vertex construction can divide by
-// zero on a nearly degenerate face: GMP then raises SIGFPE).
+// informational there, and the search need not pay for them).
 CgalResult build_cgal(const Sites& sites, const Input& input, bool voronoi = true) {
+    clear_exact_vertices();
     CgalResult cgal;
     Sdg sdg;
     build_cgal_graph(sites, input, sdg, cgal);
@@ -778,11 +868,13 @@ Verdict compare(const Input& input, const Sites& sites, const OursResult& ours, 
     std::snprintf(line, sizeof line,
                   "family=%s n=%zu segments=%zu sites=%zu degenerate=%s ours_edges=%zu cgal_edges=%zu ours_faces=%zu "
                   "cgal_faces=%zu matched=%zu only_ours=%zu only_cgal=%zu cgal_dimension=%d cocircular_edges=%zu "
-                  "zero_length_edges=%zu ours_build_ms=%.1f cgal_build_ms=%.1f valid=%s verdict=%s\n",
+                  "zero_length_edges=%zu exact_vertex_pairs=%zu exact_fallback=%zu ours_build_ms=%.1f cgal_build_ms=%.1f valid=%s "
+                  "verdict=%s\n",
                   input.family.c_str(), input.points.size() + input.segments.size(), input.segments.size(),
                   sites.count(), input.degenerate ? "yes" : "no", ours.full.count("EDGES"),
                   cgal.topology.count("EDGES"), ours.full.count("FACES"), cgal.topology.count("FACES"), matched,
-                  only_ours, only_cgal, cgal.dimension, cgal.cocircular_edges, cgal.degenerate_edges, ours.build_ms, cgal.build_ms,
+                  only_ours, only_cgal, cgal.dimension, cgal.cocircular_edges, cgal.degenerate_edges, g_exact_vertex_pairs,
+                  g_exact_vertex_invalid, ours.build_ms, cgal.build_ms,
                   verdict.valid ? "yes" : "no", verdict.ok() ? "AGREE" : "DIFFER");
     verdict.text = line + details.str();
     for (const std::string& problem : ours.problems) verdict.text += "  invalid: " + problem + "\n";
@@ -1302,7 +1394,6 @@ AxisResult axis_ours(const std::vector<std::vector<Point>>& rings, const Sites& 
                 cgal_sites.push_back(Gt::Site_2::construct_site_2(a, b));
             }
         }
-        const Gt traits;
         const std::size_t edge_count = segvoronoi_diagram_edge_count(diagram);
         std::vector<bool> in_axis(edge_count, false);
         auto vertex = [&](std::uint32_t id) {
@@ -1343,7 +1434,7 @@ AxisResult axis_ours(const std::vector<std::vector<Point>>& rings, const Sites& 
                 continue;
             }
             // two vertices of the same three sites are two circles: apart
-            if (r != s && is_zero_length_sites(traits, cgal_sites[p], cgal_sites[q], cgal_sites[r], cgal_sites[s])) {
+            if (r != s && is_zero_length_sites(cgal_sites[p], cgal_sites[q], cgal_sites[r], cgal_sites[s])) {
                 ++ours.zero_length;
             } else if (in_axis[e]) {
                 add_pair(ours.pairs, names[p], names[q]);
@@ -1413,6 +1504,42 @@ K::Point_2 edge_middle(const Gt::Site_2& a, const Gt::Site_2& b, const K::Point_
     return K::Point_2(fx + h * nx, fy + h * ny);
 }
 
+// The Voronoi vertex of the finite face f, to within 1e-9 of the extent:
+// CGAL's construction in interval arithmetic where its box is that small,
+// else the exact one (as in same_vertex) rounded; throws where neither can. (CGAL's double
+// construction, sdg.primal, is ill-conditioned next to a joint an ulp from
+// straight: its vertices there were off by far more than their clearance,
+// or not finite, and put edges' middles on the wrong side of the rings.)
+K::Point_2 face_vertex(const Sdg::Face_handle& f, double extent) {
+    const Gt::Site_2 &a = f->vertex(0)->site(), &b = f->vertex(1)->site(), &c = f->vertex(2)->site();
+    {
+        CGAL::Protect_FPU_rounding<true> upward;
+        try {
+            const Ki::Point_2 box = construct_vertex<Gti>(a, b, c);
+            const double tolerance = 1e-9 * extent;
+            if (box.x().sup() - box.x().inf() <= tolerance && box.y().sup() - box.y().inf() <= tolerance) {
+                return K::Point_2(CGAL::to_double(box.x()), CGAL::to_double(box.y()));
+            }
+        } catch (const CGAL::Uncertain_conversion_exception&) {
+            // undecided in intervals: exactly below
+        }
+    }
+    // (not sdg.primal as the last resort: on faces at joints an ulp from
+    // straight its exact stage divides by zero in GMP, a SIGFPE)
+    const std::pair<double, double> range = coordinate_range({&a, &b, &c});
+    if (range.first > 0.0 && std::ilogb(range.first) - std::ilogb(range.second) > 400) {
+        throw std::runtime_error("a Voronoi vertex whose coordinates spread over more than 2^400 (not constructed)");
+    }
+    const int k = range.first > 0.0 ? -std::ilogb(range.first) : 0;
+    CORE::get_static_AbortFlag() = false;
+    CORE::get_static_InvalidFlag() = 0;
+    const Kx::Point_2 exact = exact_vertex(a, b, c, k);
+    if (CORE::get_static_InvalidFlag() != 0) {
+        throw std::runtime_error("a Voronoi vertex that CGAL's exact construction cannot make (CORE invalid)");
+    }
+    return K::Point_2(std::ldexp(CGAL::to_double(exact.x()), -k), std::ldexp(CGAL::to_double(exact.y()), -k));
+}
+
 // CGAL's side: every finite Delaunay edge that is not a separator (a
 // segment and one of its own endpoints); its dual is a ray (next to an
 // infinite face: unbounded, so outside the bounded domain), of length zero
@@ -1445,7 +1572,7 @@ AxisResult axis_cgal(const std::vector<std::vector<Point>>& rings, const Sites& 
             ++cgal.zero_length;
             continue;
         }
-        const K::Point_2 middle = edge_middle(a, b, sdg.primal(f), sdg.primal(g));
+        const K::Point_2 middle = edge_middle(a, b, face_vertex(f, extent), face_vertex(g, extent));
         if (!std::isfinite(middle.x()) || !std::isfinite(middle.y())) {
             throw std::runtime_error("a Voronoi edge whose middle CGAL's double construction cannot place");
         }
@@ -1488,6 +1615,7 @@ int polygon_main(int argc, char** argv) {
     const Sites sites(input);
     std::signal(SIGFPE, report_sigfpe);
     g_current_input = &input;
+    clear_exact_vertices();
     AxisResult ours, cgal;
     try {
         ours = axis_ours(rings, sites);
@@ -1510,10 +1638,10 @@ int polygon_main(int argc, char** argv) {
     const bool agree = diff.only_ours == 0 && diff.only_cgal == 0, valid = ours.problems.empty();
     std::printf("family=%s mode=polygon rings=%zu segments=%zu ours_axis=%zu cgal_axis=%zu matched=%zu only_ours=%zu "
                 "only_cgal=%zu ours_zero_length=%zu cgal_zero_length=%zu ours_outside=%zu cgal_outside=%zu "
-                "close_middles=%zu ours_build_ms=%.1f cgal_build_ms=%.1f valid=%s verdict=%s\n",
+                "close_middles=%zu exact_vertex_pairs=%zu exact_fallback=%zu ours_build_ms=%.1f cgal_build_ms=%.1f valid=%s verdict=%s\n",
                 family.c_str(), rings.size(), input.segments.size(), ours_count, cgal_count, diff.matched,
                 diff.only_ours, diff.only_cgal, ours.zero_length, cgal.zero_length, ours.outside, cgal.outside,
-                cgal.close_middles, ours.build_ms, cgal.build_ms, valid ? "yes" : "no", agree && valid ? "AGREE" : "DIFFER");
+                cgal.close_middles, g_exact_vertex_pairs, g_exact_vertex_invalid, ours.build_ms, cgal.build_ms, valid ? "yes" : "no", agree && valid ? "AGREE" : "DIFFER");
     for (const auto& example : diff.examples) {
         std::printf("    %s AXIS: %s\n", example.first.c_str(), format_line(example.second).c_str());
     }

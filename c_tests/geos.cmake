@@ -46,5 +46,12 @@ else()
 endif()
 add_test(NAME geos_offsets COMMAND segvoronoi_geos_offsets ${_segvoronoi_geos_args})
 set_tests_properties(geos_offsets PROPERTIES TIMEOUT 300 LABELS offsets)
+# The same inputs with straight vertices (every edge cut at exact points)
+# and nearly straight ones (each cut point one ulp off): issue 27. They
+# failed at 347f993 (the offsets were wrong at straight vertices; the fix
+# of src/query/offset was on its way to main): expected to pass after it.
+add_test(NAME geos_offsets_straight COMMAND segvoronoi_geos_offsets ${_segvoronoi_geos_args} --cut straight)
+add_test(NAME geos_offsets_nudged COMMAND segvoronoi_geos_offsets ${_segvoronoi_geos_args} --cut nudged)
+set_tests_properties(geos_offsets_straight geos_offsets_nudged PROPERTIES TIMEOUT 300 LABELS "offsets;straight")
 unset(_segvoronoi_geos_args)
 unset(_segvoronoi_data_default)

@@ -3,7 +3,7 @@
 // (its reentrant C API) and, when built with SEGVORONOI_HAVE_CLIPPER,
 // Clipper's ClipperOffset (jtRound, etClosedPolygon).
 //
-//   segvoronoi_geos_offsets [--glyphs DIR] [--verbose] [--dump NAME D]
+//   segvoronoi_geos_offsets [--glyphs DIR] [--cut straight|nudged] [--verbose] [--dump NAME D]
 //
 // Inputs, generated here from fixed seeds (nobody tuned them): random
 // star-shaped polygons (random radii around a centre; some convex, some
@@ -14,7 +14,9 @@
 // (the rings format: "rings R", then per ring its point count K and K lines
 // "x y"; '#' starts a comment; the region is the even-odd one). Each at
 // fixed fractions of its size, negative (shrinking, up to beyond the
-// inscribed radius, where parts or all of it vanish) and positive.
+// inscribed radius, where parts or all of it vanish) and positive. With
+// --cut, every edge of every input is cut at points exactly on it
+// (straight vertices), or nudged one ulp off (see cut_edges).
 //
 // For each input and distance d: the tolerance t is 1e-4 of the input's
 // bounding-box diagonal; GEOS gets quadsegs = the smallest q with
@@ -795,6 +797,50 @@ double diagonal(const std::vector<Ring> &rings) {
   return std::hypot(maxx - minx, maxy - miny);
 }
 
+// --cut straight|nudged (issue 27): every edge of every input cut at
+// points exactly on it, straight vertices, as users' polygons have them;
+// nudged: each cut point then moved one ulp off the edge's line (across
+// its main direction; a zero coordinate is left alone, an ulp of it is a
+// subnormal). The rings are first snapped to the dyadic grid of 2^-30 of
+// the power of two above their largest coordinate, so the cut points, at
+// parameters j/4 (edge k gets 1 + k % 3 of them: 1/4, 1/2, 3/4), are
+// exact: the endpoints' differences, their products with j/4 and the sums
+// all fit in 53 bits. The names get the suffix "+straight" or "+nudged".
+void cut_edges(Input &in, bool nudge) {
+  double largest = 0.0;
+  for (const Ring &r : in.rings)
+    for (const Point &p : r) largest = std::max({largest, std::abs(p[0]), std::abs(p[1])});
+  const int shift = 30 - std::ilogb(largest);
+  const auto snap = [shift](double v) { return std::ldexp(std::nearbyint(std::ldexp(v, shift)), -shift); };
+  std::size_t k = 0;
+  for (Ring &r : in.rings) {
+    Ring snapped;
+    for (const Point &p : r) {
+      const Point q{snap(p[0]), snap(p[1])};
+      if (snapped.empty() || snapped.back() != q) snapped.push_back(q);
+    }
+    while (snapped.size() > 1 && snapped.front() == snapped.back()) snapped.pop_back();
+    Ring out;
+    for (std::size_t i = 0; i < snapped.size(); ++i, ++k) {
+      const Point a = snapped[i], b = snapped[(i + 1) % snapped.size()];
+      out.push_back(a);
+      const int cuts = 1 + int(k % 3);
+      for (int j = 1; j <= cuts; ++j) {
+        const double t = (cuts == 2 ? 2 * j - 1 : j) / 4.0;  // 1/2; 1/4 3/4; 1/4 1/2 3/4
+        Point c{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])};
+        if (nudge) {
+          int across = std::abs(b[0] - a[0]) >= std::abs(b[1] - a[1]) ? 1 : 0;
+          if (c[across] == 0.0) across = 1 - across;
+          if (c[across] != 0.0) c[across] = std::nextafter(c[across], (k + j) % 2 ? INFINITY : -INFINITY);
+        }
+        out.push_back(c);
+      }
+    }
+    r = out;
+  }
+  in.name += nudge ? "+nudged" : "+straight";
+}
+
 void run_input(const Input &in, const std::vector<Known> &known, Stats &st) {
   segvoronoi_diagram *diagram = nullptr;
   if (!build_diagram(in.rings, &diagram)) {
@@ -850,17 +896,18 @@ void run_input(const Input &in, const std::vector<Known> &known, Stats &st) {
 }  // namespace
 
 int main(int argc, char **argv) {
-  std::string glyphs;
+  std::string glyphs, cut;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--glyphs" && i + 1 < argc) glyphs = argv[++i];
+    else if (a == "--cut" && i + 1 < argc && (std::string(argv[i + 1]) == "straight" || std::string(argv[i + 1]) == "nudged")) cut = argv[++i];
     else if (a == "--verbose") verbose = true;
     else if (a == "--dump" && i + 2 < argc) {
       dump_name = argv[++i];
       dump_distance = std::strtod(argv[++i], nullptr);
     }
     else {
-      std::fprintf(stderr, "usage: %s [--glyphs DIR] [--verbose] [--dump NAME D]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--glyphs DIR] [--cut straight|nudged] [--verbose] [--dump NAME D]\n", argv[0]);
       return 2;
     }
   }
@@ -911,6 +958,21 @@ int main(int argc, char **argv) {
     }
   } else {
     std::printf("note: no --glyphs DIR, the glyph and country outlines are left out\n");
+  }
+
+  if (!cut.empty()) {
+    // a quarter of the random polygons, the regular ones and the glyphs
+    // (cut, they have about three times the vertices; the 4096-gon is
+    // left out): about a third of the time of the uncut run
+    std::vector<Input> kept;
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      const bool random = inputs[i].name.rfind("star", 0) == 0;
+      if ((random && i % 4 == 0) || (!random && inputs[i].rings.size() == 1 && inputs[i].rings[0].size() < 4096) ||
+          inputs[i].name.rfind("glyph", 0) == 0)
+        kept.push_back(inputs[i]);
+    }
+    inputs = kept;
+    for (Input &in : inputs) cut_edges(in, cut == "nudged");
   }
 
   std::vector<Known> known;  // none known

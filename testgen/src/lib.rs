@@ -29,6 +29,7 @@ pub mod search;
 mod segments;
 pub mod shapes;
 mod split;
+pub mod straight;
 
 use segvoronoi::splitmix::SplitMix64;
 use std::io::{self, Write};
@@ -133,11 +134,63 @@ pub const FAMILIES: &[(&str, bool)] = &[
     ("glyph", false),
 ];
 
+/// The families of [`FAMILIES`] that make chains or rings (polylines,
+/// polygons, stars, glyph-like outlines): each also comes as every variant
+/// of [`straight::VARIANTS`], its name with the variant's suffix
+/// (`polyline+straight`, `glyph+nudged`), the family's input of size `n`
+/// with edges cut at exact points ([`straight::cut_segments`]). The exact
+/// variants are compared as degenerate (a straight joint is a cell of no
+/// width: its Voronoi edges to every neighbour but its two segments have
+/// length zero); the nudged ones as the family is.
+pub const CHAIN_FAMILIES: &[&str] = &[
+    "polyline",
+    "square-hole",
+    "polygon",
+    "star",
+    "polygon-holes",
+    "letter",
+    "letter-gap",
+    "near-vertical",
+    "boost-split",
+    "inscribed",
+    "inscribed-jitter",
+    "fan",
+    "kinked-chain",
+    "ulp-ends",
+    "glyph",
+];
+
+/// How the harness compares `family` (with any variant suffix):
+/// "degenerate", "generic", or "polygon" for a ring family (the harness's
+/// --polygon); `None` for an unknown family.
+pub fn comparison(family: &str) -> Option<&'static str> {
+    let (base, straight) = straight::split_variant(family);
+    if rings::RING_FAMILIES.contains(&base) {
+        return Some("polygon");
+    }
+    if straight.is_some() && !CHAIN_FAMILIES.contains(&base) {
+        return None;
+    }
+    let degenerate = FAMILIES.iter().find(|(name, _)| *name == base)?.1;
+    Some(if degenerate || straight.is_some_and(|s| !s.nudge) { "degenerate" } else { "generic" })
+}
+
 /// Family `family` of size `n` from `seed` (see the top of
-/// `c_tests/cgal_crosscheck.cpp` for what each is); `None` for an unknown
-/// family or a size it cannot make.
+/// `c_tests/cgal_crosscheck.cpp` for what each is; a family of
+/// [`CHAIN_FAMILIES`] also with a variant suffix of
+/// [`straight::VARIANTS`]); `None` for an unknown family or a size it
+/// cannot make.
 pub fn generate(family: &str, n: usize, seed: u64) -> Option<Input> {
     use near_degenerate as nd;
+    if let (base, Some(straight)) = straight::split_variant(family) {
+        if !CHAIN_FAMILIES.contains(&base) {
+            return None;
+        }
+        let mut input = generate(base, n, seed)?;
+        input.segments = straight::cut_segments(&input.segments, &straight, &mut straight::variant_rng(seed));
+        input.degenerate = comparison(family) == Some("degenerate");
+        return Some(input);
+    }
     let degenerate = FAMILIES.iter().find(|(name, _)| *name == family)?.1;
     let mut rng = Rng(seed);
     let rng = &mut rng;
@@ -327,6 +380,18 @@ mod tests {
             assert!(!input.points.is_empty() || !input.segments.is_empty(), "{family}");
             assert_eq!(Some(input), generate(family, 64, 3), "{family} is deterministic");
         }
+        for &family in CHAIN_FAMILIES {
+            for (suffix, straight) in straight::VARIANTS {
+                let name = format!("{family}{suffix}");
+                let base = generate(family, 64, 3).unwrap();
+                let input = generate(&name, 64, 3).unwrap_or_else(|| panic!("{name}"));
+                assert_eq!(Some(&input), generate(&name, 64, 3).as_ref(), "{name} is deterministic");
+                assert!(straight::legal(&input.segments), "{name} is legal");
+                assert!(input.segments.len() > base.segments.len(), "{name} cuts nothing");
+                assert_eq!(input.degenerate, base.degenerate || !straight.nudge, "{name}");
+            }
+        }
+        assert!(generate("uniform+straight", 64, 3).is_none());
         assert!(generate("polygon", 2, 1).is_none());
         assert!(generate("no-such-family", 10, 1).is_none());
     }

@@ -2,7 +2,10 @@
 //! Boost.Polygon's text format, or for the ring families (polygons with
 //! holes, `segvoronoi_testgen::rings`) in the rings format.
 //!
-//!   segvoronoi-testgen FAMILY N [SEED]        one input (SEED 1 if left out)
+//!   segvoronoi-testgen FAMILY N [SEED]        one input (SEED 1 if left out); FAMILY
+//!                                             may carry a variant suffix (+straight,
+//!                                             +nudged, +runs, +runs-nudged: see
+//!                                             segvoronoi_testgen::straight)
 //!   segvoronoi-testgen --comparison FAMILY    "degenerate", "generic" or "polygon"
 //!                                             (a ring family: the harness's --polygon)
 //!   segvoronoi-testgen --list                 every family and its comparison
@@ -17,7 +20,8 @@ use std::io::{self, BufWriter, Write};
 use std::process::ExitCode;
 
 use segvoronoi_testgen::rings::{generate_rings, write_rings, RING_FAMILIES};
-use segvoronoi_testgen::{generate, search, write_text, FAMILIES};
+use segvoronoi_testgen::straight::{split_variant, VARIANTS};
+use segvoronoi_testgen::{comparison, generate, search, write_text, CHAIN_FAMILIES, FAMILIES};
 
 fn usage() -> ExitCode {
     let names: Vec<&str> = FAMILIES.iter().map(|(name, _)| *name).chain(RING_FAMILIES.iter().copied()).collect();
@@ -51,14 +55,18 @@ fn main() -> ExitCode {
                 .iter()
                 .map(|(name, degenerate)| format!("{name} {}\n", if *degenerate { "degenerate" } else { "generic" }))
                 .chain(RING_FAMILIES.iter().map(|name| format!("{name} polygon\n")))
+                .chain(CHAIN_FAMILIES.iter().chain(RING_FAMILIES).flat_map(|name| {
+                    VARIANTS.iter().map(move |(suffix, _)| {
+                        let family = format!("{name}{suffix}");
+                        let how = comparison(&family).expect("a variant of a chain or ring family");
+                        format!("{family} {how}\n")
+                    })
+                }))
                 .collect();
             finish(out.write_all(text.as_bytes()).and_then(|()| out.flush()))
         }
-        ["--comparison", family] => match FAMILIES.iter().find(|(name, _)| name == family) {
-            Some((_, degenerate)) => {
-                finish(writeln!(out, "{}", if *degenerate { "degenerate" } else { "generic" }).and_then(|()| out.flush()))
-            }
-            None if RING_FAMILIES.contains(family) => finish(writeln!(out, "polygon").and_then(|()| out.flush())),
+        ["--comparison", family] => match comparison(family) {
+            Some(how) => finish(writeln!(out, "{how}").and_then(|()| out.flush())),
             None => usage(),
         },
         ["search", seed, options @ ..] => {
@@ -81,7 +89,7 @@ fn main() -> ExitCode {
             let (Ok(n), Ok(seed)) = (n.parse::<usize>(), seed.first().map_or(Ok(1), |s| s.parse::<u64>())) else {
                 return usage();
             };
-            if RING_FAMILIES.contains(family) {
+            if RING_FAMILIES.contains(&split_variant(family).0) {
                 return match generate_rings(family, n, seed) {
                     Some(rings) => finish(write_rings(&mut out, &rings).and_then(|()| out.flush())),
                     None => usage(),

@@ -30,7 +30,7 @@ use std::io::{self, Write};
 
 /// The ring families, in the order `--list` prints them (after the others;
 /// compared as "polygon"). See [`generate_rings`].
-pub const RING_FAMILIES: &[&str] = &["rings-holes", "rings-inscribed", "rings-inscribed-jitter", "glyphs"];
+pub const RING_FAMILIES: &[&str] = &["rings-holes", "rings-inscribed", "rings-inscribed-jitter", "glyphs", "rings-touching"];
 
 /// The glyph fixtures (scripts/glyph_rings.py): B, 8 and g of DejaVu Sans.
 pub const GLYPHS: &[(&str, &str)] = &[
@@ -56,7 +56,18 @@ pub const GLYPHS: &[(&str, &str)] = &[
 /// - `glyphs`: the glyph fixture B, 8, g for seed 1, 2, 3 (then again,
 ///   scaled by 2^-10, 2^10, 2^-20, 2^20 in turn: exact, so the same
 ///   topology); `n` is ignored.
+/// - `rings-touching`: rings that touch at points
+///   ([`crate::straight::touching_rings`]; not legal input until the
+///   library splits such contacts).
+///
+/// Each family also comes as every variant of
+/// [`crate::straight::VARIANTS`] (`rings-holes+straight`): its rings with
+/// edges cut at exact points ([`crate::straight::cut_rings`]).
 pub fn generate_rings(family: &str, n: usize, seed: u64) -> Option<Vec<Vec<Point>>> {
+    if let (base, Some(straight)) = crate::straight::split_variant(family) {
+        let rings = generate_rings(base, n, seed)?;
+        return Some(crate::straight::cut_rings(&rings, &straight, &mut crate::straight::variant_rng(seed)));
+    }
     let rng = &mut Rng(seed);
     match family {
         "rings-holes" if n >= 6 => Some(random_holes(n, rng)),
@@ -69,6 +80,7 @@ pub fn generate_rings(family: &str, n: usize, seed: u64) -> Option<Vec<Vec<Point
             let rings = read_rings(text).expect("the glyph fixtures are well-formed");
             Some(rings.into_iter().map(|r| r.into_iter().map(|[x, y]| [unit * x, unit * y]).collect()).collect())
         }
+        "rings-touching" if n >= 4 => Some(crate::straight::touching_rings(n, rng)),
         _ => None,
     }
 }
@@ -305,7 +317,16 @@ mod tests {
     /// other, deterministic, about the size asked for.
     #[test]
     fn ring_families_are_legal() {
-        for &family in RING_FAMILIES {
+        let variants = crate::straight::VARIANTS.iter().map(|(suffix, _)| *suffix);
+        let names: Vec<String> = RING_FAMILIES
+            .iter()
+            .filter(|&&family| family != "rings-touching") // touching by design
+            .flat_map(|family| {
+                std::iter::once(String::new()).chain(variants.clone().map(String::from)).map(move |v| format!("{family}{v}"))
+            })
+            .collect();
+        for family in &names {
+            let family = family.as_str();
             for (n, seed) in [(8, 1), (64, 2), (300, 3), (1000, 4)] {
                 let rings = generate_rings(family, n, seed).unwrap_or_else(|| panic!("{family} {n}"));
                 assert_eq!(Some(&rings), generate_rings(family, n, seed).as_ref(), "{family} is deterministic");
@@ -315,7 +336,7 @@ mod tests {
                         assert!(!segments_conflict(segments[i], segments[j]), "{family} {n} {seed}: {i} and {j}");
                     }
                 }
-                if family != "glyphs" {
+                if !family.starts_with("glyphs") {
                     // the first ring is the outer one (the glyphs' are in the font's order)
                     for (k, hole) in rings.iter().enumerate().skip(1) {
                         let others: Vec<Vec<Point>> =
@@ -323,7 +344,11 @@ mod tests {
                         assert!(even_odd(&others, hole[0]), "{family} {n} {seed}: hole {k} is not in the domain");
                     }
                     assert!(rings.len() >= 2, "{family} {n} {seed}: no hole");
-                    assert!(corners(&rings) <= n.max(6) + 8, "{family} {n} {seed}: {} corners", corners(&rings));
+                    assert!(
+                        family.contains('+') || corners(&rings) <= n.max(6) + 8,
+                        "{family} {n} {seed}: {} corners",
+                        corners(&rings)
+                    );
                 }
             }
         }
