@@ -17,7 +17,6 @@
 
 mod common;
 
-use common::Nudge;
 use segvoronoi::{Builder, Diagram, Location, Offset, Point};
 use segvoronoi_testgen as testgen;
 
@@ -344,16 +343,16 @@ fn straight_and_nearly_straight_vertices_change_no_offset() {
     domains.push(("glyph".to_string(), testgen::rings::generate_rings("glyphs", 0, 1).unwrap()));
     domains.push(("square".to_string(), vec![vec![[0.0, 0.0], [100.0, 0.0], [100.0, 100.0], [0.0, 100.0]]]));
     for (name, rings) in domains {
-        let rings = common::on_dyadic_grid(&rings);
+        let rings = common::cut_rings(&rings, 0.0, false, 0);
         let plain = from_rings(name.clone(), &rings);
         let ds = distances(&plain, true, 7);
         let want = plain.diagram.offsets(&ds).unwrap();
         // the glyph (hundreds of segments) with half its edges cut only
-        let variants = [(Nudge::None, 0.5), (Nudge::Ulp, 0.5), (Nudge::None, 1.0), (Nudge::Ulp, 1.0)];
+        let variants = [(false, 0.5), (true, 0.5), (false, 1.0), (true, 1.0)];
         let variants = if name == "glyph" { &variants[..2] } else { &variants[..] };
         for (k, &(nudge, share)) in variants.iter().enumerate() {
-            let cut = common::cut_edges(&rings, share, nudge, 100 + k as u64);
-            let case = from_rings(format!("{name} cut {share} {nudge:?}"), &cut);
+            let cut = common::cut_rings(&rings, share, nudge, 100 + k as u64);
+            let case = from_rings(format!("{name} cut {share} nudged {nudge}"), &cut);
             let size = case.size();
             for ((offset, expected), &d) in case.diagram.offsets(&ds).unwrap().iter().zip(&want).zip(&ds) {
                 check(&case, offset);

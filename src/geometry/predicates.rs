@@ -179,6 +179,13 @@ pub fn strictly_between(a: Point, b: Point, p: Point) -> bool {
 /// `b`: `(p − a)·(b − a) > 0` and `(p − b)·(a − b) > 0`, exact.
 pub(crate) fn foot_strictly_inside(a: Point, b: Point, p: Point) -> bool {
     let dot_sign = |o: Point, q: Point| {
+        // rounded differences and products, each within half an ulp (as
+        // `exact_turn` bounds them), decide unless the dot is near zero
+        let (left, right) = ((q.x - o.x) * (p.x - o.x), (q.y - o.y) * (p.y - o.y));
+        let dot = left + right;
+        if dot.abs() > 8.0 * f64::EPSILON * (left.abs() + right.abs()) && dot.is_finite() && left.abs() + right.abs() > 1e-290 {
+            return if dot > 0.0 { 1 } else { -1 };
+        }
         let mut exact = Expansion::default();
         exact.add_product_of_differences((q.x, o.x), (p.x, o.x));
         exact.add_product_of_differences((q.y, o.y), (p.y, o.y));

@@ -278,78 +278,13 @@ fn check_pieces_are_strict(d: &Diagram) {
     b.check().unwrap_or_else(|e| panic!("the pieces do not pass the strict check: {e}"));
 }
 
-/// The rings on a dyadic grid (every coordinate a multiple of `2^(e - 26)`,
-/// where `2^e` bounds them), so that points at `k / 8` along any edge are
-/// exact floating-point numbers exactly on the edge.
-pub fn on_dyadic_grid(rings: &[Vec<[f64; 2]>]) -> Vec<Vec<[f64; 2]>> {
-    let largest = rings.iter().flatten().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
-    let step = 2f64.powi(largest.max(f64::MIN_POSITIVE).log2().ceil() as i32 - 26);
-    rings.iter().map(|r| r.iter().map(|p| p.map(|v| (v / step).round() * step)).collect()).collect()
-}
-
-/// How `cut_edges` moves its cut points off the edge.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Nudge {
-    /// Exactly on the edge: straight vertices.
-    None,
-    /// One ulp off, in x or y and to either side (seeded): nearly straight
-    /// vertices, reflex or convex.
-    Ulp,
-}
-
-/// The next float above (`up`) or below `v`.
-pub fn ulp_step(v: f64, up: bool) -> f64 {
-    if v == 0.0 {
-        return if up { f64::from_bits(1) } else { -f64::from_bits(1) };
-    }
-    let bits = v.to_bits();
-    f64::from_bits(if (v > 0.0) == up { bits + 1 } else { bits - 1 })
-}
-
-/// The rings (on a dyadic grid: `on_dyadic_grid`) with about `share` of
-/// their edges cut at one to three points at multiples of 1/8 along them,
-/// each exactly on the edge (checked by an exact orientation test), then
-/// moved by `nudge`. The domain is the same (exactly, or within an ulp).
-pub fn cut_edges(rings: &[Vec<[f64; 2]>], share: f64, nudge: Nudge, seed: u64) -> Vec<Vec<[f64; 2]>> {
-    use segvoronoi_testgen::exact::orient;
-    let mut rng = Rng(seed);
-    rings
-        .iter()
-        .map(|ring| {
-            let mut out = Vec::new();
-            for k in 0..ring.len() {
-                let (a, b) = (ring[k], ring[(k + 1) % ring.len()]);
-                out.push(a);
-                if rng.unit() >= share {
-                    continue;
-                }
-                let cuts = 1 + rng.below(3);
-                let mut ts: Vec<u32> = (0..cuts).map(|_| 1 + rng.below(7) as u32).collect();
-                ts.sort_unstable();
-                ts.dedup();
-                for t in ts {
-                    let f = t as f64 / 8.0;
-                    let mut p = [a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f];
-                    assert_eq!(orient(a, b, p), 0, "{a:?} {b:?} at {f}: not on the grid");
-                    if p == a || p == b {
-                        continue;
-                    }
-                    if nudge == Nudge::Ulp {
-                        let (axis, up) = (rng.below(2), rng.below(2) == 0);
-                        // a zero coordinate moves by an ulp of the point's
-                        // magnitude, as rounding would move it, not to a
-                        // subnormal
-                        p[axis] = if p[axis] == 0.0 {
-                            let big = p[0].abs().max(p[1].abs());
-                            (ulp_step(big, true) - big) * if up { 1.0 } else { -1.0 }
-                        } else {
-                            ulp_step(p[axis], up)
-                        };
-                    }
-                    out.push(p);
-                }
-            }
-            out
-        })
-        .collect()
+/// The rings with about `share` of their edges cut at one to three points
+/// exactly on them (straight vertices), each then moved one ulp off the
+/// line when `nudge` (nearly straight), after snapping to the grid that
+/// makes such points exact (testgen's `straight` transform); `share` 0 gives
+/// the snapped rings alone, the same domain as every cut of them.
+pub fn cut_rings(rings: &[Vec<[f64; 2]>], share: f64, nudge: bool, seed: u64) -> Vec<Vec<[f64; 2]>> {
+    use segvoronoi_testgen::straight::{cut_rings, variant_rng, Straight};
+    let straight = Straight { share, min_cuts: 1, max_cuts: 3, nudge, snap_bits: 36 };
+    cut_rings(rings, &straight, &mut variant_rng(seed))
 }
