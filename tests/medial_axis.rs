@@ -424,11 +424,25 @@ fn cutting_edges_at_straight_vertices_changes_no_query() {
             let both_ways = one_sided_hausdorff(&ours, theirs).max(one_sided_hausdorff(theirs, &ours));
             assert!(both_ways <= 2.0 * tolerance, "{what}: the medial axes differ by {both_ways}");
             let mut rng = common::Rng(n as u64);
+            let mut queries = Vec::new();
             for _ in 0..400 {
                 let p = Point::new(rng.unit() * 2.0 * size - size / 2.0, rng.unit() * 2.0 * size - size / 2.0);
                 let (a, b) = (plain.locate_point(p), cut.locate_point(p));
                 assert!(a == b || nudge, "{what}: {p:?} is {b:?}, uncut {a:?}");
+                queries.push(p);
+                let nearest = cut.nearest_site(p, None).unwrap();
+                let brute = cut.site_ids().map(|s| cut.site(s).unwrap().distance(p)).fold(f64::INFINITY, f64::min);
+                assert!(cut.site(nearest).unwrap().distance(p) <= brute + 1e-12 * size, "{what}: nearest site of {p:?}");
             }
+            // on the perpendiculars of the cut points, in the cells without area
+            for ring in common::cut_rings(&rings, 0.6, nudge, 40 + k as u64) {
+                for w in ring.windows(2) {
+                    let (a, b) = (Point::new(w[0][0], w[0][1]), Point::new(w[1][0], w[1][1]));
+                    let (dx, dy) = (b.y - a.y, a.x - b.x);
+                    queries.extend([0.01, -0.01, 0.2].map(|t| Point::new(a.x + t * dx, a.y + t * dy)));
+                }
+            }
+            common::check_nearest_sites(&cut, &queries, 1e-9);
         }
     }
 }
