@@ -66,6 +66,7 @@ use super::certified::{certified_evaluation, Certified};
 use super::double_double::DoubleDouble;
 use super::point::{norm, Point};
 use super::predicates::{in_circle, CirclePosition};
+use super::quadratic_vertex;
 use super::radical_tower::{exact_evaluation, Algebraic};
 use super::real::Real;
 use super::scale::Scale;
@@ -351,6 +352,11 @@ fn decide(
         if depth.abs() > 4.0 * error + 16.0 * f64::EPSILON * size {
             return (Stage::Filter, Some(sign_position(depth)));
         }
+    }
+    // Two points and a line: exact from the quadratic of the centre, at
+    // the cost of a few expansions (the true zeros of stacks and hatches).
+    if let Some(exact) = system.two_points_line_answer(centre, &question) {
+        return (Stage::Exact, Some(exact));
     }
     if let Some(exact) = system.exact_answer(centre, radius, &question) {
         return (Stage::Exact, Some(exact));
@@ -781,6 +787,23 @@ impl System {
             };
         }
         Some(System(equations))
+    }
+
+    /// The exact answer for two points and a line (`quadratic_vertex`);
+    /// `None` for any other system, or where that arithmetic refuses.
+    fn two_points_line_answer(&self, centre: Point, question: &Reach) -> Option<CirclePosition> {
+        let (mut points, mut line) = (Vec::with_capacity(2), None);
+        for equation in &self.0 {
+            match *equation {
+                Equation::Circle(p) => points.push(p),
+                Equation::Line { a, b, side } => line = Some((a, b, side)),
+                Equation::Perpendicular { .. } => return None,
+            }
+        }
+        let ([p, q], Some((a, b, side))) = (<[Point; 2]>::try_from(points).ok()?, line) else {
+            return None;
+        };
+        quadratic_vertex::answer(p, q, (a, b), side, centre, question)
     }
 
     /// The exact answer when the rounded `(centre, radius)` solves the

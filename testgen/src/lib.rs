@@ -29,6 +29,7 @@ pub mod search;
 mod segments;
 pub mod shapes;
 mod split;
+pub mod ties;
 
 use segvoronoi::splitmix::SplitMix64;
 use std::io::{self, Write};
