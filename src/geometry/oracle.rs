@@ -1238,6 +1238,160 @@ mod tests {
         assert_eq!(ask(pps, chord).0, Some(CirclePosition::Inside));
     }
 
+    /// The fast exact answer for two points and a line
+    /// (`quadratic_vertex`), wherever it answers, against the slow exact
+    /// one (the radical tower, else certified big floats), on the vertex
+    /// the solvers find for the sites in that order.
+    fn check_two_points_line(sites: [Site; 3], question: Reach) -> Result<(), proptest::test_runner::TestCaseError> {
+        let Some((centre, _)) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]) else {
+            return Ok(());
+        };
+        let Some(system) = System::of(&sites, centre) else {
+            return Ok(());
+        };
+        let Some(fast) = system.two_points_line_answer(centre, &question) else {
+            return Ok(());
+        };
+        if let Some(slow) = proven_answer(&sites, &question) {
+            prop_assert_eq!(fast, slow, "{:?} {:?} centre {:?}", sites, question, centre);
+        }
+        Ok(())
+    }
+
+    /// Two points, a line and a question on a small integer lattice: many
+    /// answers exactly zero.
+    fn lattice_case() -> impl Strategy<Value = ([Site; 3], Reach)> {
+        let coordinate = || -6i32..=6;
+        let point = move || (coordinate(), coordinate()).prop_map(|(x, y)| Point::new(f64::from(x), f64::from(y)));
+        (point(), point(), point(), point(), point(), point(), 0..6usize, any::<bool>()).prop_map(
+            |(p, q, a, b, e, f, order, entering)| {
+                let line = Site::Segment { a, b };
+                let sites = rotate([Site::Point(p), Site::Point(q), line], order);
+                let question = if entering { Reach::Entering { from: p, to: e } } else { Reach::Distance { a: e, b: f } };
+                (sites, question)
+            },
+        )
+    }
+
+    /// The sites in one of the six orders.
+    fn rotate(sites: [Site; 3], order: usize) -> [Site; 3] {
+        let [x, y, z] = sites;
+        match order {
+            0 => [x, y, z],
+            1 => [y, z, x],
+            2 => [z, x, y],
+            3 => [y, x, z],
+            4 => [x, z, y],
+            _ => [z, y, x],
+        }
+    }
+
+    /// Symmetric by construction: the question's segment is the line's
+    /// segment reflected in the bisector of the two points (the circle is
+    /// symmetric in it, so that line is tangent too), or the segment
+    /// leaving a point along the line's direction (as in hatches). The
+    /// bisector is axis-parallel or diagonal, so the reflection is exact.
+    fn symmetric_case() -> impl Strategy<Value = ([Site; 3], Reach)> {
+        let small = || -40i32..=40;
+        (small(), small(), 1i32..=6, 0..4usize, small(), small(), small(), small(), 0..6usize, 0..3usize, -2i32..=2).prop_map(
+            |(px, py, h, axis, ax, ay, bx, by, order, kind, shift)| {
+                let d = [(0, h), (h, 0), (h, h), (h, -h)][axis];
+                let f = f64::from;
+                let p = Point::new(f(px), f(py));
+                let q = Point::new(f(px + d.0), f(py + d.1));
+                let (mx, my) = (f(2 * px + d.0) / 2.0, f(2 * py + d.1) / 2.0);
+                let dd = f(d.0 * d.0 + d.1 * d.1);
+                let reflect = |x: Point| {
+                    let k = 2.0 * ((x.x - mx) * f(d.0) + (x.y - my) * f(d.1)) / dd;
+                    Point::new(x.x - k * f(d.0), x.y - k * f(d.1))
+                };
+                let (a, b) = (Point::new(f(ax), f(ay)), Point::new(f(bx), f(by)));
+                let sites = rotate([Site::Point(p), Site::Point(q), Site::Segment { a, b }], order);
+                let question = match kind {
+                    0 => Reach::Distance { a: reflect(a), b: reflect(b) },
+                    // the reflected segment moved along itself: its end may
+                    // be the nearest point
+                    1 => {
+                        let (ra, rb) = (reflect(a), reflect(b));
+                        let t = f(shift);
+                        Reach::Distance { a: Point::new(ra.x + t * (rb.x - ra.x), ra.y + t * (rb.y - ra.y)), b: rb }
+                    }
+                    _ => Reach::Entering { from: q, to: Point::new(q.x + (b.x - a.x), q.y + (b.y - a.y) + f(shift)) },
+                };
+                (sites, question)
+            },
+        )
+    }
+
+    /// Coordinates with up to 40 significant bits, at several scales: the
+    /// expansions grow several components.
+    fn float_case() -> impl Strategy<Value = ([Site; 3], Reach)> {
+        let coordinate = || {
+            (0u64..(1 << 40), 1u32..=40, -8i32..=8)
+                .prop_map(|(m, bits, e)| ((m >> (40 - bits)) as f64) * 2f64.powi(e - bits as i32))
+        };
+        let point = move || (coordinate(), coordinate()).prop_map(|(x, y)| Point::new(x, y));
+        (point(), point(), point(), point(), point(), point(), 0..6usize, any::<bool>()).prop_map(
+            |(p, q, a, b, e, f, order, entering)| {
+                let sites = rotate([Site::Point(p), Site::Point(q), Site::Segment { a, b }], order);
+                let question = if entering { Reach::Entering { from: q, to: e } } else { Reach::Distance { a: e, b: f } };
+                (sites, question)
+            },
+        )
+    }
+
+    use proptest::prelude::*;
+    use proptest::strategy::ValueTree;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+
+        #[test]
+        fn two_points_and_a_line_on_a_lattice_agree_with_the_exact_path((sites, question) in lattice_case()) {
+            check_two_points_line(sites, question)?;
+        }
+
+        #[test]
+        fn two_points_and_a_line_by_symmetry_agree_with_the_exact_path((sites, question) in symmetric_case()) {
+            check_two_points_line(sites, question)?;
+        }
+
+        #[test]
+        fn two_points_and_a_line_in_floats_agree_with_the_exact_path((sites, question) in float_case()) {
+            check_two_points_line(sites, question)?;
+        }
+    }
+
+    /// The symmetric cases are mostly exact zeros, and the fast path
+    /// answers them (it is no use if it refuses them).
+    #[test]
+    fn the_fast_path_answers_symmetric_zeros() {
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let (mut zeros, mut answered) = (0, 0);
+        for _ in 0..2000 {
+            let (sites, question) = symmetric_case().new_tree(&mut runner).unwrap().current();
+            let Some((centre, _)) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]) else { continue };
+            let Some(system) = System::of(&sites, centre) else { continue };
+            if proven_answer(&sites, &question) == Some(CirclePosition::On) {
+                zeros += 1;
+                answered += usize::from(system.two_points_line_answer(centre, &question) == Some(CirclePosition::On));
+            }
+        }
+        assert!(zeros > 200 && answered == zeros, "{answered} of {zeros} zeros answered");
+        // and the random cases are answered too, not only refused
+        for (name, strategy) in [("lattice", lattice_case().boxed()), ("float", float_case().boxed())] {
+            let (mut asked, mut answered) = (0, 0);
+            for _ in 0..2000 {
+                let (sites, question) = strategy.new_tree(&mut runner).unwrap().current();
+                let Some((centre, _)) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]) else { continue };
+                let Some(system) = System::of(&sites, centre) else { continue };
+                asked += 1;
+                answered += usize::from(system.two_points_line_answer(centre, &question).is_some());
+            }
+            assert!(answered * 10 > asked * 9, "{name}: {answered} of {asked} answered");
+        }
+    }
+
     #[test]
     fn a_clear_answer_is_taken_from_the_filter() {
         let sites = [point(-1.0, 0.0), point(1.0, 0.0), point(0.0, 1.0)];

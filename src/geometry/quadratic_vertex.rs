@@ -15,7 +15,8 @@
 //! `A s² − 2 k₀k₁ s + C = 0`, `k₀ = cross(u, M − 2a)`, `k₁ = cross(u, w)`,
 //! `A = |u|²|w|² − k₁²`, `C = |u|²|w|² − k₀²`,
 //!
-//! so `s = (k₀k₁ + ε√Δ) / A` with `Δ = k₀²k₁² − AC` and `ε = ±1` the root
+//! so `s = (k₀k₁ + ε√Δ) / A` (`s = C / 2k₀k₁` where `A = 0`: the line
+//! parallel to `PQ`) with `Δ = k₀²k₁² − AC` and `ε = ±1` the root
 //! nearest the rounded centre (the one the solvers and Newton's method
 //! find; the answer is refused when the rounded centre does not clearly
 //! pick one). Every question the oracle asks is then the sign of a linear
@@ -126,10 +127,17 @@ struct Vertex {
     k01: Expansion,
     a: Expansion,
     c: Expansion,
+    /// The root is `s = (N + ε√Δ) / D`: `N = k₀k₁`, `D = A` for a
+    /// quadratic, `N = C`, `D = 2k₀k₁`, `Δ = 0` where `A = 0` (the line
+    /// parallel to `PQ`: one root).
+    numerator: Expansion,
+    denominator: Expansion,
     delta: Expansion,
-    /// Which root: `+1`, `−1`, or `0` for a double root.
+    /// Which root: `+1`, `−1`, or `0` for a double root or a linear
+    /// equation.
     epsilon: i8,
     sign_a: i8,
+    sign_denominator: i8,
 }
 
 impl Vertex {
@@ -151,8 +159,36 @@ impl Vertex {
         let c = uuww.minus(&k0.times(&k0));
         let k01 = k0.times(&k1);
         let delta = k01.times(&k01).minus(&a.times(&c));
-        if !(delta.is_finite() && a.is_finite() && c.is_finite()) || a.sign() == 0 || delta.sign() < 0 {
+        if !(delta.is_finite() && a.is_finite() && c.is_finite() && k01.is_finite()) || delta.sign() < 0 {
             return None;
+        }
+        if a.sign() == 0 {
+            // linear: −2k₀k₁ s + C = 0
+            let denominator = k01.plus(&k01);
+            if denominator.sign() == 0 {
+                return None;
+            }
+            let sign_denominator = denominator.sign();
+            let (numerator, delta) = (c.clone(), Expansion::default());
+            return Some(Vertex {
+                p,
+                mx,
+                my,
+                wx,
+                wy,
+                ww,
+                k0,
+                k1,
+                k01,
+                a,
+                c,
+                numerator,
+                denominator,
+                delta,
+                epsilon: 0,
+                sign_a: 0,
+                sign_denominator,
+            });
         }
         // the root nearest the rounded centre: s = (2c − M)·w / |w|²
         let (wxf, wyf, wwf) = (wx.approximate(), wy.approximate(), ww.approximate());
@@ -170,20 +206,34 @@ impl Vertex {
             }
             epsilon
         };
-        Some(Vertex { p, mx, my, wx, wy, ww, k0, k1, k01, a, c, delta, epsilon, sign_a: 0 }.with_sign_a())
-    }
-
-    fn with_sign_a(mut self) -> Vertex {
-        self.sign_a = self.a.sign();
-        self
+        let (numerator, denominator, sign_a) = (k01.clone(), a.clone(), a.sign());
+        Some(Vertex {
+            p,
+            mx,
+            my,
+            wx,
+            wy,
+            ww,
+            k0,
+            k1,
+            k01,
+            a,
+            c,
+            numerator,
+            denominator,
+            delta,
+            epsilon,
+            sign_a,
+            sign_denominator: sign_a,
+        })
     }
 
     /// The sign of `l₀ + l₁s` at the root.
     fn sign_at(&self, l0: &Expansion, l1: &Expansion) -> Option<i8> {
-        // A (l₀ + l₁ s) = l₀A + l₁k₀k₁ + ε l₁ √Δ
-        let x = l0.times(&self.a).plus(&l1.times(&self.k01));
+        // D (l₀ + l₁ s) = l₀D + l₁N + ε l₁ √Δ
+        let x = l0.times(&self.denominator).plus(&l1.times(&self.numerator));
         let y = if self.epsilon < 0 { l1.negated() } else { l1.clone() };
-        Some(self.sign_a * sign_with_root(&x, &y, &self.delta, self.epsilon != 0)?)
+        Some(self.sign_denominator * sign_with_root(&x, &y, &self.delta, self.epsilon != 0)?)
     }
 
     /// The sign of `α·c + β` at the root, `α = (αx, αy)`.
@@ -220,6 +270,12 @@ impl Vertex {
         let e1 = g0.times(&g1);
         let e1 = e1.plus(&e1);
         let e0 = g0.times(&g0).minus(&uuww);
+        if self.sign_a == 0 {
+            // s = N / D: D²(e₂s² + e₁s + e₀) = e₂N² + e₁ND + e₀D²
+            let (n, d) = (&self.numerator, &self.denominator);
+            let value = e2.times(&n.times(n)).plus(&e1.times(&n.times(d))).plus(&e0.times(&d.times(d)));
+            return value.is_finite().then(|| value.sign());
+        }
         // A s² = 2k₀k₁ s − C
         let two_k01 = self.k01.plus(&self.k01);
         let f1 = e2.times(&two_k01).plus(&self.a.times(&e1));
