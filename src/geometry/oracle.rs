@@ -64,6 +64,7 @@
 use super::bigfloat::{dyadic, BigFloat};
 use super::certified::{certified_evaluation, Certified};
 use super::double_double::DoubleDouble;
+use super::expansion::Expansion;
 use super::point::{norm, Point};
 use super::predicates::{in_circle, CirclePosition};
 use super::quadratic_vertex;
@@ -748,6 +749,18 @@ enum Equation {
     Perpendicular { p: Point, q: Point },
 }
 
+impl Equation {
+    /// The points the equation names.
+    fn points(&self) -> impl Iterator<Item = Point> {
+        let (p, q) = match *self {
+            Equation::Circle(p) => (p, p),
+            Equation::Line { a, b, .. } => (a, b),
+            Equation::Perpendicular { p, q } => (p, q),
+        };
+        [p, q].into_iter()
+    }
+}
+
 /// The three tangency equations of a vertex.
 struct System([Equation; 3]);
 
@@ -789,6 +802,66 @@ impl System {
         Some(System(equations))
     }
 
+    /// [`System::exact_answer`] in Shewchuk's expansions (a few
+    /// products, no allocation of big numbers): `Some` of its answer where
+    /// every product of up to four of the coordinates, centre and radius is
+    /// exact in them (no set bit below `2^-260`, no overflow), `None`
+    /// where the big floats must decide.
+    fn exact_answer_in_expansions(&self, centre: Point, radius: f64, question: &Reach) -> Option<Option<CirclePosition>> {
+        let coordinates =
+            self.0.iter().flat_map(Equation::points).chain(question.points()).chain([centre]).flat_map(|p| [p.x, p.y]);
+        if !coordinates.chain([radius]).all(|x| quadratic_vertex::low_bits_fit(x, -260)) {
+            return None;
+        }
+        let (x, y) = (centre.x, centre.y);
+        let squared_distance = |p: Point| {
+            let mut e = Expansion::default();
+            e.add_squared_difference(x, p.x);
+            e.add_squared_difference(y, p.y);
+            e
+        };
+        let mut r2 = Expansion::default();
+        r2.add_product(radius, radius);
+        // cross(b − a, c − a), |b − a|², (b − a)·(c − a)
+        let line = |a: Point, b: Point| {
+            let (ux, uy) = (Expansion::difference(b.x, a.x), Expansion::difference(b.y, a.y));
+            let (vx, vy) = (Expansion::difference(x, a.x), Expansion::difference(y, a.y));
+            (ux.times(&vy).minus(&uy.times(&vx)), ux.times(&ux).plus(&uy.times(&uy)), ux.times(&vx).plus(&uy.times(&vy)))
+        };
+        let sign = |e: Expansion| e.is_finite().then(|| e.sign());
+        for equation in &self.0 {
+            let holds = match *equation {
+                Equation::Circle(p) => sign(squared_distance(p).minus(&r2))? == 0,
+                Equation::Line { a, b, side } => {
+                    let (cross, length2, _) = line(a, b);
+                    sign(cross.clone())? as f64 == side && sign(cross.times(&cross).minus(&r2.times(&length2)))? == 0
+                }
+                Equation::Perpendicular { p, q } => {
+                    let (ux, uy) = (Expansion::difference(q.x, p.x), Expansion::difference(q.y, p.y));
+                    let (dx, dy) = (Expansion::difference(x, p.x), Expansion::difference(y, p.y));
+                    sign(ux.times(&dx).plus(&uy.times(&dy)))? == 0
+                }
+            };
+            if !holds {
+                return Some(None);
+            }
+        }
+        let sign = match *question {
+            Reach::Distance { a, b } => {
+                let (cross, length2, along) = line(a, b);
+                if sign(along.clone())? <= 0 {
+                    sign(squared_distance(a).minus(&r2))?
+                } else if sign(along.minus(&length2))? >= 0 {
+                    sign(squared_distance(b).minus(&r2))?
+                } else {
+                    sign(cross.times(&cross).minus(&r2.times(&length2)))?
+                }
+            }
+            Reach::Entering { from, to } => -sign(line(from, to).2)?,
+        };
+        Some(Some(sign_position(f64::from(sign))))
+    }
+
     /// The exact answer for two points and a line (`quadratic_vertex`);
     /// `None` for any other system, or where that arithmetic refuses.
     fn two_points_line_answer(&self, centre: Point, question: &Reach) -> Option<CirclePosition> {
@@ -812,6 +885,14 @@ impl System {
     /// equations and the question are then polynomial in doubles, and are
     /// evaluated without rounding. `None` otherwise.
     fn exact_answer(&self, centre: Point, radius: f64, question: &Reach) -> Option<CirclePosition> {
+        match self.exact_answer_in_expansions(centre, radius, question) {
+            Some(answer) => answer,
+            None => self.exact_answer_in_big_floats(centre, radius, question),
+        }
+    }
+
+    /// [`System::exact_answer`] in big floats, whatever the magnitudes.
+    fn exact_answer_in_big_floats(&self, centre: Point, radius: f64, question: &Reach) -> Option<CirclePosition> {
         let lift = |x: f64| BigFloat::from_f64(x, EXACT);
         let (x, y, r) = (lift(centre.x), lift(centre.y), lift(radius));
         let squared_distance = |p: Point| {
@@ -1360,6 +1441,42 @@ mod tests {
         fn two_points_and_a_line_in_floats_agree_with_the_exact_path((sites, question) in float_case()) {
             check_two_points_line(sites, question)?;
         }
+
+        #[test]
+        fn the_rounded_vertex_check_in_expansions_agrees_with_big_floats((sites, question) in lattice_triple(), nudge in any::<bool>()) {
+            check_exact_answer(sites, question, nudge)?;
+        }
+    }
+
+    /// The rounded-vertex check in expansions against the same in big
+    /// floats, on lattice vertices of every kind (many of them exact:
+    /// the check then answers, zero included) and on vertices moved by an
+    /// ulp.
+    fn check_exact_answer(sites: [Site; 3], question: Reach, nudge: bool) -> Result<(), proptest::test_runner::TestCaseError> {
+        let Some((centre, radius)) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]) else {
+            return Ok(());
+        };
+        let centre = if nudge { Point::new(centre.x.next_up(), centre.y) } else { centre };
+        let Some(system) = System::of(&sites, centre) else {
+            return Ok(());
+        };
+        if let Some(fast) = system.exact_answer_in_expansions(centre, radius, &question) {
+            prop_assert_eq!(fast, system.exact_answer_in_big_floats(centre, radius, &question), "{:?} {:?}", sites, question);
+        }
+        Ok(())
+    }
+
+    fn lattice_triple() -> impl Strategy<Value = ([Site; 3], Reach)> {
+        let coordinate = || (-8i32..=8).prop_map(|v| f64::from(v) / 2.0);
+        let point = move || (coordinate(), coordinate()).prop_map(|(x, y)| Point::new(x, y));
+        let site = move || {
+            (point(), point(), any::<bool>())
+                .prop_map(|(a, b, segment)| if segment && a != b { Site::Segment { a, b } } else { Site::Point(a) })
+        };
+        (site(), site(), site(), point(), point(), any::<bool>()).prop_map(|(x, y, z, e, f, entering)| {
+            let question = if entering { Reach::Entering { from: e, to: f } } else { Reach::Distance { a: e, b: f } };
+            ([x, y, z], question)
+        })
     }
 
     /// The symmetric cases are mostly exact zeros, and the fast path

@@ -51,7 +51,7 @@ pub(crate) fn answer(
     question: &Reach,
 ) -> Option<CirclePosition> {
     let points = [p, q, a, b].into_iter().chain(question_points(question));
-    if !points.flat_map(|p| [p.x, p.y]).all(low_bits_fit) {
+    if !points.flat_map(|p| [p.x, p.y]).all(|x| low_bits_fit(x, LOWEST_BIT)) {
         return None;
     }
     let vertex = Vertex::new(p, q, a, b, centre)?;
@@ -91,9 +91,11 @@ fn question_points(question: &Reach) -> [Point; 2] {
     }
 }
 
-/// Whether `x` is zero or finite with its lowest set bit at `2^LOWEST_BIT`
-/// or above (not subnormal).
-fn low_bits_fit(x: f64) -> bool {
+/// Whether `x` is zero or finite with its lowest set bit at `2^lowest`
+/// or above (not subnormal): then every product of `k` such numbers is a
+/// multiple of `2^(k·lowest)`, and exact in expansions while that is at
+/// least `2^-1074`.
+pub(crate) fn low_bits_fit(x: f64, lowest: i64) -> bool {
     if x == 0.0 {
         return true;
     }
@@ -103,7 +105,7 @@ fn low_bits_fit(x: f64) -> bool {
         return false;
     }
     let mantissa = (raw & ((1u64 << 52) - 1)) | (1u64 << 52);
-    biased - 1075 + i64::from(mantissa.trailing_zeros()) >= LOWEST_BIT
+    biased - 1075 + i64::from(mantissa.trailing_zeros()) >= lowest
 }
 
 /// `u·p` for `u = (ux, uy)`, exactly.
@@ -349,7 +351,8 @@ mod tests {
 
     #[test]
     fn tiny_low_bits_are_refused() {
-        assert!(low_bits_fit(3.0) && low_bits_fit(0.0) && low_bits_fit(2f64.powi(-44)));
-        assert!(!low_bits_fit(2f64.powi(-45)) && !low_bits_fit(1.0 + f64::EPSILON) && !low_bits_fit(f64::NAN));
+        let fit = |x: f64| low_bits_fit(x, LOWEST_BIT);
+        assert!(fit(3.0) && fit(0.0) && fit(2f64.powi(-44)));
+        assert!(!fit(2f64.powi(-45)) && !fit(1.0 + f64::EPSILON) && !fit(f64::NAN) && !fit(f64::INFINITY));
     }
 }
