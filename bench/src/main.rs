@@ -17,6 +17,9 @@
 //!   16k, 64k, 256k. Several segment workloads go in one run as a list,
 //!   `--input parallel,staircase,segments`, so their per-segment costs are
 //!   measured on the same machine state.
+//! - `stack`, `vstack`, `hatch`, `rows`, `staggered`, `bus` (issue 27):
+//!   equal parallel segments with aligned ends and other exactly
+//!   cocircular families (`segvoronoi_testgen::ties`), 3,000 and 30,000.
 //!
 //! Each (contender, size) runs in a child process (this binary again, in the
 //! hidden `--child` mode), so the peak resident set size it reports (VmHWM) is
@@ -70,6 +73,9 @@ pub enum Workload {
     Parallel,
     /// Axis-parallel staircase outlines (issue 11).
     Staircase,
+    /// An exactly cocircular family of issue 27 (`ties::FAMILIES[i]`:
+    /// stacks and hatches of equal parallel segments, rows, ...).
+    Ties(usize),
 }
 
 impl Workload {
@@ -80,6 +86,7 @@ impl Workload {
             Workload::Segments(m) => format!("seed{}", m.number()),
             Workload::Parallel => "parallel".into(),
             Workload::Staircase => "staircase".into(),
+            Workload::Ties(i) => segments::TIES[i].into(),
         }
     }
 
@@ -89,6 +96,7 @@ impl Workload {
             "segments" => Some(Workload::Segments(Method::Short)),
             "parallel" => Some(Workload::Parallel),
             "staircase" => Some(Workload::Staircase),
+            _ if segments::TIES.contains(&name) => segments::TIES.iter().position(|&t| t == name).map(Workload::Ties),
             _ => name.strip_prefix("seed")?.parse().ok().and_then(Method::from_number).map(Workload::Segments),
         }
     }
@@ -153,7 +161,7 @@ struct Options {
     timeout: Duration,
 }
 
-const USAGE: &str = "usage: segvoronoi-bench [--input points|segments|seed|parallel|staircase[,..]] [--sizes N,N,..] [--runs R] \
+const USAGE: &str = "usage: segvoronoi-bench [--input points|segments|seed|parallel|staircase|stack|vstack|hatch|rows|staggered|bus[,..]] [--sizes N,N,..] [--runs R] \
 [--contenders NAME,NAME,..] [--methods 1,2,3] [--timeout SECONDS]";
 
 fn main() {
@@ -234,6 +242,10 @@ fn run_segments(workloads: &[Workload], options: &Options) -> (Vec<Row>, Vec<Inp
                     let segments = segments::staircase(n, input::SEED);
                     segments::Generated { draws: segments.len() as u64, segments, ..Default::default() }
                 }
+                Workload::Ties(i) => {
+                    let segments = segments::ties_family(segments::TIES[i], n).expect("a family");
+                    segments::Generated { draws: segments.len() as u64, segments, ..Default::default() }
+                }
                 Workload::Points => unreachable!("segment workloads only"),
             };
             let seconds = start.elapsed().as_secs_f64();
@@ -299,8 +311,16 @@ fn parse_options(args: &[String]) -> Result<Options, String> {
                     "seed" => Suite::Seed,
                     _ => {
                         workloads = parse_list(value, |s| match Workload::parse(s) {
-                            Some(w @ (Workload::Segments(Method::Short) | Workload::Parallel | Workload::Staircase)) => Ok(w),
-                            _ => Err(format!("unknown input {s:?} (points, seed, or a list of segments, parallel, staircase)")),
+                            Some(
+                                w @ (Workload::Segments(Method::Short)
+                                | Workload::Parallel
+                                | Workload::Staircase
+                                | Workload::Ties(_)),
+                            ) => Ok(w),
+                            _ => Err(format!(
+                                "unknown input {s:?} (points, seed, or a list of segments, parallel, staircase, {})",
+                                segments::TIES.join(", ")
+                            )),
                         })?;
                         Suite::Segments
                     }
@@ -334,7 +354,9 @@ fn parse_options(args: &[String]) -> Result<Options, String> {
         }
     }
     let issue11 = workloads.iter().any(|w| matches!(w, Workload::Parallel | Workload::Staircase));
+    let ties = workloads.iter().all(|w| matches!(w, Workload::Ties(_)));
     let sizes = sizes.unwrap_or_else(|| match suite {
+        Suite::Segments if ties => vec![3_000, 30_000],
         Suite::Segments if issue11 => vec![16_384, 65_536, 262_144],
         Suite::Points | Suite::Segments => vec![10_000, 100_000, 1_000_000],
         Suite::Seed => vec![256, 512, 1024, 2048, 4096],

@@ -9,6 +9,7 @@ use std::path::Path;
 
 pub use segvoronoi_testgen::bench::{generate, verify, Generated, Method, Seg};
 pub use segvoronoi_testgen::long_segments::{axis_parallel_share, parallel, staircase};
+pub use segvoronoi_testgen::ties::{family as ties_family, FAMILIES as TIES};
 
 // ----------------------------------------------------------------- the files
 

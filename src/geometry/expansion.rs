@@ -106,6 +106,64 @@ impl Expansion {
     pub(crate) fn negate(&mut self) {
         self.components.iter_mut().for_each(|c| *c = -*c);
     }
+
+    /// `x` as an expansion.
+    pub(crate) fn of(x: f64) -> Expansion {
+        let mut e = Expansion::default();
+        e.add(x);
+        e
+    }
+
+    /// `x − y`, exactly.
+    pub(crate) fn difference(x: f64, y: f64) -> Expansion {
+        let (s, e) = two_sum(x, -y);
+        let mut out = Expansion::of(e);
+        out.add(s);
+        out
+    }
+
+    /// `self + other`, exactly.
+    pub(crate) fn plus(&self, other: &Expansion) -> Expansion {
+        let (mut long, short) =
+            if self.components.len() >= other.components.len() { (self.clone(), other) } else { (other.clone(), self) };
+        for &c in &short.components {
+            long.add(c);
+        }
+        long
+    }
+
+    /// `self − other`, exactly.
+    pub(crate) fn minus(&self, other: &Expansion) -> Expansion {
+        let mut out = self.clone();
+        out.subtract(other);
+        out
+    }
+
+    /// `self · other`, exactly (as long as no product underflows or
+    /// overflows: see [`Expansion::is_finite`]).
+    pub(crate) fn times(&self, other: &Expansion) -> Expansion {
+        let mut out = Expansion { components: Vec::with_capacity(2 * self.components.len() * other.components.len()) };
+        for &x in &self.components {
+            for &y in &other.components {
+                out.add_product(x, y);
+            }
+        }
+        out
+    }
+
+    /// `−self`.
+    pub(crate) fn negated(&self) -> Expansion {
+        let mut out = self.clone();
+        out.negate();
+        out
+    }
+
+    /// Whether every component is finite: an overflow shows as an
+    /// infinite or NaN component, and then [`Expansion::sign`] means
+    /// nothing.
+    pub(crate) fn is_finite(&self) -> bool {
+        self.components.iter().all(|c| c.is_finite())
+    }
 }
 
 #[cfg(test)]

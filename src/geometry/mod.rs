@@ -22,6 +22,7 @@ pub(crate) mod parabola;
 pub mod point;
 pub(crate) mod point_predicates;
 pub mod predicates;
+mod quadratic_vertex;
 mod radical_tower;
 pub(crate) mod real;
 #[doc(hidden)] // the CLI's picture normalises with it; not stable API

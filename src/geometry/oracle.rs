@@ -20,7 +20,13 @@
 //! 2. **Exact check.** When the rounded `(c, r)` solves the equations
 //!    exactly (grids and other inputs with few bits, where cocircular
 //!    answers are common), the question is a polynomial in doubles and is
-//!    evaluated without rounding: an exact sign, zero included.
+//!    evaluated without rounding: an exact sign, zero included (in
+//!    Shewchuk expansions where the coordinates' low bits allow, else in
+//!    big floats). Before it, a vertex of two points and a segment's
+//!    line is decided exactly from the quadratic of its centre, also in
+//!    expansions (`quadratic_vertex`): the true zeros of stacks and
+//!    hatches of equal parallel segments with aligned ends, which the
+//!    refinement below took to 1200 bits (about 400 µs each).
 //! 3. **Refine.** Otherwise the tangency equations are solved again by
 //!    Newton's method from the `f64` root, the sites' coordinates taken
 //!    exactly: in double-double arithmetic (about 106 bits, no allocation),
@@ -64,8 +70,10 @@
 use super::bigfloat::{dyadic, BigFloat};
 use super::certified::{certified_evaluation, Certified};
 use super::double_double::DoubleDouble;
+use super::expansion::Expansion;
 use super::point::{norm, Point};
 use super::predicates::{in_circle, CirclePosition};
+use super::quadratic_vertex;
 use super::radical_tower::{exact_evaluation, Algebraic};
 use super::real::Real;
 use super::scale::Scale;
@@ -351,6 +359,11 @@ fn decide(
         if depth.abs() > 4.0 * error + 16.0 * f64::EPSILON * size {
             return (Stage::Filter, Some(sign_position(depth)));
         }
+    }
+    // Two points and a line: exact from the quadratic of the centre, at
+    // the cost of a few expansions (the true zeros of stacks and hatches).
+    if let Some(exact) = system.two_points_line_answer(centre, &question) {
+        return (Stage::Exact, Some(exact));
     }
     if let Some(exact) = system.exact_answer(centre, radius, &question) {
         return (Stage::Exact, Some(exact));
@@ -742,6 +755,18 @@ enum Equation {
     Perpendicular { p: Point, q: Point },
 }
 
+impl Equation {
+    /// The points the equation names.
+    fn points(&self) -> impl Iterator<Item = Point> {
+        let (p, q) = match *self {
+            Equation::Circle(p) => (p, p),
+            Equation::Line { a, b, .. } => (a, b),
+            Equation::Perpendicular { p, q } => (p, q),
+        };
+        [p, q].into_iter()
+    }
+}
+
 /// The three tangency equations of a vertex.
 struct System([Equation; 3]);
 
@@ -783,12 +808,97 @@ impl System {
         Some(System(equations))
     }
 
+    /// [`System::exact_answer`] in Shewchuk's expansions (a few
+    /// products, no allocation of big numbers): `Some` of its answer where
+    /// every product of up to four of the coordinates, centre and radius is
+    /// exact in them (no set bit below `2^-260`, no overflow), `None`
+    /// where the big floats must decide.
+    fn exact_answer_in_expansions(&self, centre: Point, radius: f64, question: &Reach) -> Option<Option<CirclePosition>> {
+        let coordinates =
+            self.0.iter().flat_map(Equation::points).chain(question.points()).chain([centre]).flat_map(|p| [p.x, p.y]);
+        if !coordinates.chain([radius]).all(|x| quadratic_vertex::low_bits_fit(x, -260)) {
+            return None;
+        }
+        let (x, y) = (centre.x, centre.y);
+        let squared_distance = |p: Point| {
+            let mut e = Expansion::default();
+            e.add_squared_difference(x, p.x);
+            e.add_squared_difference(y, p.y);
+            e
+        };
+        let mut r2 = Expansion::default();
+        r2.add_product(radius, radius);
+        // cross(b − a, c − a), |b − a|², (b − a)·(c − a)
+        let line = |a: Point, b: Point| {
+            let (ux, uy) = (Expansion::difference(b.x, a.x), Expansion::difference(b.y, a.y));
+            let (vx, vy) = (Expansion::difference(x, a.x), Expansion::difference(y, a.y));
+            (ux.times(&vy).minus(&uy.times(&vx)), ux.times(&ux).plus(&uy.times(&uy)), ux.times(&vx).plus(&uy.times(&vy)))
+        };
+        let sign = |e: Expansion| e.is_finite().then(|| e.sign());
+        for equation in &self.0 {
+            let holds = match *equation {
+                Equation::Circle(p) => sign(squared_distance(p).minus(&r2))? == 0,
+                Equation::Line { a, b, side } => {
+                    let (cross, length2, _) = line(a, b);
+                    sign(cross.clone())? as f64 == side && sign(cross.times(&cross).minus(&r2.times(&length2)))? == 0
+                }
+                Equation::Perpendicular { p, q } => {
+                    let (ux, uy) = (Expansion::difference(q.x, p.x), Expansion::difference(q.y, p.y));
+                    let (dx, dy) = (Expansion::difference(x, p.x), Expansion::difference(y, p.y));
+                    sign(ux.times(&dx).plus(&uy.times(&dy)))? == 0
+                }
+            };
+            if !holds {
+                return Some(None);
+            }
+        }
+        let sign = match *question {
+            Reach::Distance { a, b } => {
+                let (cross, length2, along) = line(a, b);
+                if sign(along.clone())? <= 0 {
+                    sign(squared_distance(a).minus(&r2))?
+                } else if sign(along.minus(&length2))? >= 0 {
+                    sign(squared_distance(b).minus(&r2))?
+                } else {
+                    sign(cross.times(&cross).minus(&r2.times(&length2)))?
+                }
+            }
+            Reach::Entering { from, to } => -sign(line(from, to).2)?,
+        };
+        Some(Some(sign_position(f64::from(sign))))
+    }
+
+    /// The exact answer for two points and a line (`quadratic_vertex`);
+    /// `None` for any other system, or where that arithmetic refuses.
+    fn two_points_line_answer(&self, centre: Point, question: &Reach) -> Option<CirclePosition> {
+        let (mut points, mut line) = (Vec::with_capacity(2), None);
+        for equation in &self.0 {
+            match *equation {
+                Equation::Circle(p) => points.push(p),
+                Equation::Line { a, b, side } => line = Some((a, b, side)),
+                Equation::Perpendicular { .. } => return None,
+            }
+        }
+        let ([p, q], Some((a, b, side))) = (<[Point; 2]>::try_from(points).ok()?, line) else {
+            return None;
+        };
+        quadratic_vertex::answer(p, q, (a, b), side, centre, question)
+    }
+
     /// The exact answer when the rounded `(centre, radius)` solves the
     /// tangency equations exactly (as on grids and other inputs with few
     /// bits, where degenerate, cocircular answers are common): the
     /// equations and the question are then polynomial in doubles, and are
     /// evaluated without rounding. `None` otherwise.
     fn exact_answer(&self, centre: Point, radius: f64, question: &Reach) -> Option<CirclePosition> {
+        match self.exact_answer_in_expansions(centre, radius, question) {
+            Some(answer) => answer,
+            None => self.exact_answer_in_big_floats(centre, radius, question),
+        }
+    }
+
+    /// [`System::exact_answer`] in big floats, whatever the magnitudes.
+    fn exact_answer_in_big_floats(&self, centre: Point, radius: f64, question: &Reach) -> Option<CirclePosition> {
         let lift = |x: f64| BigFloat::from_f64(x, EXACT);
         let (x, y, r) = (lift(centre.x), lift(centre.y), lift(radius));
         let squared_distance = |p: Point| {
@@ -1213,6 +1323,196 @@ mod tests {
         // through the points (3, 3) off it: inside, whatever the stage
         let chord = Reach::Distance { a: p(660.0, 208.0), b: p(672.0, 208.0) };
         assert_eq!(ask(pps, chord).0, Some(CirclePosition::Inside));
+    }
+
+    /// The fast exact answer for two points and a line
+    /// (`quadratic_vertex`), wherever it answers, against the slow exact
+    /// one (the radical tower, else certified big floats), on the vertex
+    /// the solvers find for the sites in that order.
+    fn check_two_points_line(sites: [Site; 3], question: Reach) -> Result<(), proptest::test_runner::TestCaseError> {
+        let Some((centre, _)) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]) else {
+            return Ok(());
+        };
+        let Some(system) = System::of(&sites, centre) else {
+            return Ok(());
+        };
+        let Some(fast) = system.two_points_line_answer(centre, &question) else {
+            return Ok(());
+        };
+        if let Some(slow) = proven_answer(&sites, &question) {
+            prop_assert_eq!(fast, slow, "{:?} {:?} centre {:?}", sites, question, centre);
+        }
+        Ok(())
+    }
+
+    /// Two points, a line and a question on a small integer lattice: many
+    /// answers exactly zero.
+    fn lattice_case() -> impl Strategy<Value = ([Site; 3], Reach)> {
+        let coordinate = || -6i32..=6;
+        let point = move || (coordinate(), coordinate()).prop_map(|(x, y)| Point::new(f64::from(x), f64::from(y)));
+        (point(), point(), point(), point(), point(), point(), 0..6usize, any::<bool>()).prop_map(
+            |(p, q, a, b, e, f, order, entering)| {
+                let line = Site::Segment { a, b };
+                let sites = rotate([Site::Point(p), Site::Point(q), line], order);
+                let question = if entering { Reach::Entering { from: p, to: e } } else { Reach::Distance { a: e, b: f } };
+                (sites, question)
+            },
+        )
+    }
+
+    /// The sites in one of the six orders.
+    fn rotate(sites: [Site; 3], order: usize) -> [Site; 3] {
+        let [x, y, z] = sites;
+        match order {
+            0 => [x, y, z],
+            1 => [y, z, x],
+            2 => [z, x, y],
+            3 => [y, x, z],
+            4 => [x, z, y],
+            _ => [z, y, x],
+        }
+    }
+
+    /// Symmetric by construction: the question's segment is the line's
+    /// segment reflected in the bisector of the two points (the circle is
+    /// symmetric in it, so that line is tangent too), or the segment
+    /// leaving a point along the line's direction (as in hatches). The
+    /// bisector is axis-parallel or diagonal, so the reflection is exact.
+    fn symmetric_case() -> impl Strategy<Value = ([Site; 3], Reach)> {
+        let small = || -40i32..=40;
+        (small(), small(), 1i32..=6, 0..4usize, small(), small(), small(), small(), 0..6usize, 0..3usize, -2i32..=2).prop_map(
+            |(px, py, h, axis, ax, ay, bx, by, order, kind, shift)| {
+                let d = [(0, h), (h, 0), (h, h), (h, -h)][axis];
+                let f = f64::from;
+                let p = Point::new(f(px), f(py));
+                let q = Point::new(f(px + d.0), f(py + d.1));
+                let (mx, my) = (f(2 * px + d.0) / 2.0, f(2 * py + d.1) / 2.0);
+                let dd = f(d.0 * d.0 + d.1 * d.1);
+                let reflect = |x: Point| {
+                    let k = 2.0 * ((x.x - mx) * f(d.0) + (x.y - my) * f(d.1)) / dd;
+                    Point::new(x.x - k * f(d.0), x.y - k * f(d.1))
+                };
+                let (a, b) = (Point::new(f(ax), f(ay)), Point::new(f(bx), f(by)));
+                let sites = rotate([Site::Point(p), Site::Point(q), Site::Segment { a, b }], order);
+                let question = match kind {
+                    0 => Reach::Distance { a: reflect(a), b: reflect(b) },
+                    // the reflected segment moved along itself: its end may
+                    // be the nearest point
+                    1 => {
+                        let (ra, rb) = (reflect(a), reflect(b));
+                        let t = f(shift);
+                        Reach::Distance { a: Point::new(ra.x + t * (rb.x - ra.x), ra.y + t * (rb.y - ra.y)), b: rb }
+                    }
+                    _ => Reach::Entering { from: q, to: Point::new(q.x + (b.x - a.x), q.y + (b.y - a.y) + f(shift)) },
+                };
+                (sites, question)
+            },
+        )
+    }
+
+    /// Coordinates with up to 40 significant bits, at several scales: the
+    /// expansions grow several components.
+    fn float_case() -> impl Strategy<Value = ([Site; 3], Reach)> {
+        let coordinate = || {
+            (0u64..(1 << 40), 1u32..=40, -8i32..=8)
+                .prop_map(|(m, bits, e)| ((m >> (40 - bits)) as f64) * 2f64.powi(e - bits as i32))
+        };
+        let point = move || (coordinate(), coordinate()).prop_map(|(x, y)| Point::new(x, y));
+        (point(), point(), point(), point(), point(), point(), 0..6usize, any::<bool>()).prop_map(
+            |(p, q, a, b, e, f, order, entering)| {
+                let sites = rotate([Site::Point(p), Site::Point(q), Site::Segment { a, b }], order);
+                let question = if entering { Reach::Entering { from: q, to: e } } else { Reach::Distance { a: e, b: f } };
+                (sites, question)
+            },
+        )
+    }
+
+    use proptest::prelude::*;
+    use proptest::strategy::ValueTree;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(3000))]
+
+        #[test]
+        fn two_points_and_a_line_on_a_lattice_agree_with_the_exact_path((sites, question) in lattice_case()) {
+            check_two_points_line(sites, question)?;
+        }
+
+        #[test]
+        fn two_points_and_a_line_by_symmetry_agree_with_the_exact_path((sites, question) in symmetric_case()) {
+            check_two_points_line(sites, question)?;
+        }
+
+        #[test]
+        fn two_points_and_a_line_in_floats_agree_with_the_exact_path((sites, question) in float_case()) {
+            check_two_points_line(sites, question)?;
+        }
+
+        #[test]
+        fn the_rounded_vertex_check_in_expansions_agrees_with_big_floats((sites, question) in lattice_triple(), nudge in any::<bool>()) {
+            check_exact_answer(sites, question, nudge)?;
+        }
+    }
+
+    /// The rounded-vertex check in expansions against the same in big
+    /// floats, on lattice vertices of every kind (many of them exact:
+    /// the check then answers, zero included) and on vertices moved by an
+    /// ulp.
+    fn check_exact_answer(sites: [Site; 3], question: Reach, nudge: bool) -> Result<(), proptest::test_runner::TestCaseError> {
+        let Some((centre, radius)) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]) else {
+            return Ok(());
+        };
+        let centre = if nudge { Point::new(centre.x.next_up(), centre.y) } else { centre };
+        let Some(system) = System::of(&sites, centre) else {
+            return Ok(());
+        };
+        if let Some(fast) = system.exact_answer_in_expansions(centre, radius, &question) {
+            prop_assert_eq!(fast, system.exact_answer_in_big_floats(centre, radius, &question), "{:?} {:?}", sites, question);
+        }
+        Ok(())
+    }
+
+    fn lattice_triple() -> impl Strategy<Value = ([Site; 3], Reach)> {
+        let coordinate = || (-8i32..=8).prop_map(|v| f64::from(v) / 2.0);
+        let point = move || (coordinate(), coordinate()).prop_map(|(x, y)| Point::new(x, y));
+        let site = move || {
+            (point(), point(), any::<bool>())
+                .prop_map(|(a, b, segment)| if segment && a != b { Site::Segment { a, b } } else { Site::Point(a) })
+        };
+        (site(), site(), site(), point(), point(), any::<bool>()).prop_map(|(x, y, z, e, f, entering)| {
+            let question = if entering { Reach::Entering { from: e, to: f } } else { Reach::Distance { a: e, b: f } };
+            ([x, y, z], question)
+        })
+    }
+
+    /// The symmetric cases are mostly exact zeros, and the fast path
+    /// answers them (it is no use if it refuses them).
+    #[test]
+    fn the_fast_path_answers_symmetric_zeros() {
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let (mut zeros, mut answered) = (0, 0);
+        for _ in 0..2000 {
+            let (sites, question) = symmetric_case().new_tree(&mut runner).unwrap().current();
+            let Some((centre, _)) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]) else { continue };
+            let Some(system) = System::of(&sites, centre) else { continue };
+            if proven_answer(&sites, &question) == Some(CirclePosition::On) {
+                zeros += 1;
+                answered += usize::from(system.two_points_line_answer(centre, &question) == Some(CirclePosition::On));
+            }
+        }
+        assert!(zeros > 200 && answered == zeros, "{answered} of {zeros} zeros answered");
+        // and the random cases are answered too, not only refused
+        for (name, strategy) in [("lattice", lattice_case().boxed()), ("float", float_case().boxed())] {
+            let (mut asked, mut answered) = (0, 0);
+            for _ in 0..2000 {
+                let (sites, question) = strategy.new_tree(&mut runner).unwrap().current();
+                let Some((centre, _)) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]) else { continue };
+                let Some(system) = System::of(&sites, centre) else { continue };
+                asked += 1;
+                answered += usize::from(system.two_points_line_answer(centre, &question).is_some());
+            }
+            assert!(answered * 10 > asked * 9, "{name}: {answered} of {asked} answered");
+        }
     }
 
     #[test]

@@ -30,6 +30,7 @@ mod segments;
 pub mod shapes;
 mod split;
 pub mod straight;
+pub mod ties;
 
 use segvoronoi::splitmix::SplitMix64;
 use std::io::{self, Write};
