@@ -233,7 +233,11 @@ fn check(input: &Input, place: Place) -> Diagram {
         let away = nearest(&all_sites, v.position);
         let to_rings = placed_ring_distance(&placed, v.position);
         if location == Location::Boundary {
-            assert!(to_rings <= tol, "{what}: boundary vertex {v:?} {to_rings} off the rings");
+            // (or one whose edges are all at straight corners, whose cells
+            // are pieces of perpendiculars: said to be on the boundary)
+            let straight =
+                || v.sites.iter().any(|&s| matches!(d.site(s), Some(Site::Point(p)) if straight_corner(input, place, p)));
+            assert!(to_rings <= tol || straight(), "{what}: boundary vertex {v:?} {to_rings} off the rings");
         } else if to_rings > tol && away > tol {
             assert_eq!(location, plain_even_odd(v.position), "{what}: vertex {v:?}");
         }
@@ -697,4 +701,43 @@ proptest! {
     fn random_touching_rings(input in touching_input(), place in place()) {
         check(&input, place);
     }
+}
+
+/// Repeated segments (either direction) cut at the same vertices share
+/// their pieces' sites, piece by piece; a zero-length segment inside a
+/// segment cuts it and is its point.
+#[test]
+fn repeated_and_zero_length_segments() {
+    let mut b = Builder::new();
+    b.add_segments([
+        [[0.0, 0.0], [4.0, 0.0]],
+        [[4.0, 0.0], [0.0, 0.0]],
+        [[2.0, 0.0], [2.0, 3.0]],
+        [[3.0, 0.0], [3.0, 0.0]],
+        [[0.0, 0.0], [4.0, 0.0]],
+    ])
+    .unwrap();
+    b.add_point([1.0, 0.0]).unwrap();
+    let d = b.build().unwrap();
+    d.validate().unwrap();
+    let stats = d.stats();
+    // (1, 0), (2, 0) and (3, 0) cut segment 0 (its repeats share the cuts)
+    assert_eq!((stats.split_at_vertices, stats.duplicate_segments, stats.zero_length_segments), (3, 2, 1));
+    assert_eq!(d.piece_count(), 4 + 4 + 1 + 1 + 4);
+    let pieces = |i: usize| d.pieces_of_input(i).collect::<Vec<_>>();
+    assert_eq!(pieces(0), vec![0, 1, 2, 3]);
+    assert_eq!(pieces(1), vec![4, 5, 6, 7]);
+    assert_eq!(pieces(3), vec![9]);
+    let site = |p: usize| d.site_of_segment(p).unwrap();
+    for k in 0..4 {
+        assert_eq!(site(4 + k), site(3 - k), "the reversed repeat, piece {k}");
+        assert_eq!(site(10 + k), site(k), "the repeat, piece {k}");
+        // (`piece` gives the geometry of the site, the first's)
+        assert_eq!(d.piece(4 + k), d.piece(3 - k));
+    }
+    assert_eq!(d.site(site(9)), Some(Site::Point(Point::new(3.0, 0.0))));
+    assert_eq!(d.site(d.site_of_input(0).unwrap()), Some(Site::Point(Point::new(1.0, 0.0))));
+    assert_eq!(d.segment_input_index(site(2)), Some(2));
+    // five distinct points, and segment sites: four pieces and the stem
+    assert_eq!(d.site_count(), 6 + 5);
 }
