@@ -373,7 +373,7 @@ fn star_with_a_spoke_overlapping_another() {
         // Through the centre between spokes: it crosses none, and is split
         // at the centre, where every spoke ends.
         let mut through = star.clone();
-        through.push([p(-3. * f, -1. * f), p(3. * f, 1. * f)]);
+        through.push([p(-3. * f, -f), p(3. * f, f)]);
         assert_eq!(cuts(&[], &through), Ok(vec![(n, end(0, 0))]), "{f}");
     }
 }
