@@ -527,9 +527,9 @@ fn overlapping_stretches_are_refused_with_what_to_do() {
     assert_eq!(e.indices(), [1, 7]);
     assert_eq!(
         e.message(),
-        "ring 0 of polygon 0 and ring 0 of polygon 1 share the stretch from (4, 1) to (4, 3) (segments 1 and 7); polygons \
-         may touch at points but not along a stretch: merge them, or split crossings (Builder::split_crossings) to take \
-         their even-odd region"
+        "ring 0 of polygon 0 and ring 0 of polygon 1 share the stretch from (4, 1) to (4, 3) (segment 1 is in polygon 0, \
+         ring 0; segment 7 is in polygon 1, ring 0); polygons may touch at points but not along a stretch: merge them, \
+         or split crossings (Builder::split_crossings) to take their even-odd region"
     );
     // two rings of one polygon sharing a whole edge (equal segments)
     let input = polygon(vec![square(0, 0, 10), vec![[0, 2], [3, 2], [3, 4], [0, 4]], vec![[0, 2], [0, 4], [-1, 3]]]);
@@ -540,7 +540,7 @@ fn overlapping_stretches_are_refused_with_what_to_do() {
     let input = polygon(vec![square(0, 0, 10), vec![[0, 2], [3, 2], [3, 4], [0, 4]]]);
     let e = input.builder(PLAIN).build().unwrap_err();
     assert!(
-        e.message().starts_with("rings 0 and 1 of polygon 0 share the stretch from (0, 2) to (0, 4) (segments 3 and 7)"),
+        e.message().starts_with("rings 0 and 1 of polygon 0 share the stretch from (0, 2) to (0, 4) (segment 3 is in polygon 0, ring 0; segment 7 is in polygon 0, ring 1)"),
         "{}",
         e.message()
     );
@@ -549,7 +549,7 @@ fn overlapping_stretches_are_refused_with_what_to_do() {
     let e = input.builder(PLAIN).build().unwrap_err();
     assert!(
         e.message()
-            .starts_with("ring 0 of polygon 0 runs back along itself from (4, 4) to (6, 4) (segments 2 and 3); remove the spike"),
+            .starts_with("ring 0 of polygon 0 runs back along itself from (4, 4) to (6, 4) (segment 2 is in polygon 0, ring 0; segment 3 is in polygon 0, ring 0); remove the spike"),
         "{}",
         e.message()
     );

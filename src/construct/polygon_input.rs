@@ -195,7 +195,10 @@ pub(crate) fn name_rings(error: Error, rings: &[RingInput], segments: &[[Point; 
     if let ([i, j], true) = (error.indices(), error.message().contains(" overlap ")) {
         if let (Some(a), Some(b), Some(&s), Some(&t)) = (ring_of(*i), ring_of(*j), segments.get(*i), segments.get(*j)) {
             let [from, to] = super::overlap_stretch(s, t);
-            let stretch = format!("from ({}, {}) to ({}, {}) (segments {i} and {j})", from.x, from.y, to.x, to.y);
+            let stretch = format!(
+                "from ({}, {}) to ({}, {}) (segment {i} is in polygon {}, ring {}; segment {j} is in polygon {}, ring {})",
+                from.x, from.y, to.x, to.y, a.polygon, a.ring, b.polygon, b.ring
+            );
             let message = if (a.polygon, a.ring) == (b.polygon, b.ring) {
                 format!(
                     "ring {} of polygon {} runs back along itself {stretch}; remove the spike, or split crossings \
