@@ -881,17 +881,37 @@ static void expect_intersecting(const double *xy, size_t np, const double *seg, 
 static void test_intersecting_segments(void) {
     /* Segments 1 and 3 cross; 0 and 2 are far away. */
     const double crossing[16] = {10, 10, 11, 10, 0, 0, 2, 2, 20, 0, 21, 1, 0, 2, 2, 0};
-    /* T-junction: an endpoint of segment 2 inside segment 0. */
+    /* T-junction: an endpoint of segment 2 inside segment 0 (no error:
+     * segment 0 is split there, exactly). */
     const double tee[12] = {0, 0, 4, 0, -5, -5, -4, -5, 2, 0, 2, 3};
     /* Collinear overlap of segments 0 and 1. */
     const double overlap[8] = {0, 0, 2, 0, 1, 0, 3, 0};
-    /* Point 3 inside segment 1 (point 0 equals an endpoint: allowed). */
+    /* Point 3 inside segment 1 (split there too; point 0 equals an endpoint). */
     const double points[8] = {0, 0, 9, 9, 8, 9, 2, 0};
     const double lines[8] = {5, 5, 6, 6, 0, 0, 4, 0};
     expect_intersecting(NULL, 0, crossing, 4, 1, 3);
-    expect_intersecting(NULL, 0, tee, 3, 0, 2);
     expect_intersecting(NULL, 0, overlap, 2, 0, 1);
-    expect_intersecting(points, 4, lines, 2, 3, 1);
+    {
+        /* Touching input builds: one cut each, one more piece. */
+        const double *inputs[2][2] = {{NULL, tee}, {points, lines}};
+        const size_t counts[2][2] = {{0, 3}, {4, 2}};
+        int k;
+        for (k = 0; k < 2; ++k) {
+            segvoronoi_builder *builder = segvoronoi_builder_new();
+            segvoronoi_diagram *diagram = NULL;
+            segvoronoi_stats stats = {.struct_size = sizeof stats};
+            CHECK_STATUS(segvoronoi_builder_add_points(builder, inputs[k][0], counts[k][0]), SEGVORONOI_STATUS_OK);
+            CHECK_STATUS(segvoronoi_builder_add_segments(builder, inputs[k][1], counts[k][1]), SEGVORONOI_STATUS_OK);
+            CHECK_STATUS(segvoronoi_builder_check(builder), SEGVORONOI_STATUS_OK);
+            CHECK_STATUS(segvoronoi_builder_build(builder, &diagram), SEGVORONOI_STATUS_OK);
+            CHECK_STATUS(segvoronoi_diagram_validate(diagram), SEGVORONOI_STATUS_OK);
+            CHECK_STATUS(segvoronoi_diagram_stats(diagram, &stats), SEGVORONOI_STATUS_OK);
+            CHECK(stats.split_at_vertices == 1 && stats.pieces == counts[k][1] + 1);
+            CHECK(segvoronoi_diagram_piece_count(diagram) == counts[k][1] + 1);
+            segvoronoi_diagram_free(diagram);
+            segvoronoi_builder_free(builder);
+        }
+    }
     {
         /* A star and a path sharing endpoints: the check passes and clears
          * the last error; the builder still builds. */

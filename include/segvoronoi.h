@@ -262,6 +262,10 @@ typedef struct segvoronoi_stats {
   size_t touchings;
   // With splitting: rounds of snapping run.
   size_t snap_rounds;
+  // Without splitting: input vertices (segment endpoints, zero-length
+  // segments, isolated points) that lay inside an input segment, which
+  // was cut there exactly, per (vertex, segment) pair. Since 0.2.
+  size_t split_at_vertices;
 } segvoronoi_stats;
 
 // Which branches `segvoronoi_diagram_medial_axis_filtered` leaves out

@@ -227,10 +227,11 @@ fn crossing_segments_exit_1_naming_both_indices() {
     assert!(stdout(&o).is_empty());
     let err = stderr(&o);
     assert!(err.contains("crossing.txt") && err.contains("segments 0 and 2 cross"), "{err}");
-    // A point inside a segment, and a non-finite segment coordinate.
-    let o = run_with_stdin(&["-"], "1\n1 1\n1\n0 0 2 2\n");
-    assert_eq!(o.status.code(), Some(1));
-    assert!(stderr(&o).contains("point 0") && stderr(&o).contains("segment 0"), "{}", stderr(&o));
+    // A point inside a segment splits it (no error), and a non-finite
+    // segment coordinate.
+    let o = run_with_stdin(&["-", "--stats"], "1\n1 1\n1\n0 0 2 2\n");
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stderr(&o).contains("split_at_vertices=1\n") && stderr(&o).contains("pieces=2\n"), "{}", stderr(&o));
     let o = run_with_stdin(&["-"], "0\n2\n0 0 1 0\n0 1 inf 1\n");
     assert_eq!(o.status.code(), Some(1));
     assert!(stderr(&o).contains("segment 1"), "{}", stderr(&o));
@@ -700,6 +701,46 @@ fn crossing_input_is_refused_naming_lines_and_coordinates_or_split() {
     assert!(o.status.success(), "{}", stderr(&o));
     let split = run(&[path, "--split-crossings", "--topology"]);
     assert_eq!(stdout(&o), stdout(&split));
+}
+
+/// Valid OGC input as it is (issue 27): a hole touching its shell inside
+/// an edge builds by default, exactly (the shell's edge is cut at the
+/// hole's vertex, nothing moves); rings sharing a stretch are refused with
+/// the rings, the stretch and what to do.
+#[test]
+fn a_hole_touching_its_shell_builds_exactly() {
+    let path = input_file("touching.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (0 5, 3 4, 3 6, 0 5))\n");
+    let o = run(&[path.to_str().unwrap(), "--stats", "--max-inscribed-circle"]);
+    std::fs::remove_file(&path).unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let report = stderr(&o);
+    for figure in ["input_segments=7", "split_at_vertices=1", "pieces=8", "snap_rounds=0", "max_split_displacement=0"] {
+        assert!(report.lines().any(|l| l == figure), "{figure} in {report}");
+    }
+    // the largest circle: inside the shell, outside the hole, touching
+    // the shell's right and top edges and the hole's corner (3, 6)
+    let circle: Vec<f64> = stdout(&o).split_whitespace().map(|v| v.parse().unwrap()).collect();
+    let [x, y, r] = circle[..] else { panic!("{circle:?}") };
+    for clearance in [10.0 - x, 10.0 - y, (x - 3.0).hypot(y - 6.0)] {
+        assert!((clearance - r).abs() < 1e-9, "{circle:?}");
+    }
+    assert!(r > 3.5 && x > 3.0 && y > 6.0, "{circle:?}");
+    // the medial axis too
+    let axis = temp_path("touching-axis.wkt");
+    let o = run_with_stdin(
+        &["-", "--medial-axis", axis.to_str().unwrap()],
+        "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (0 5, 3 4, 3 6, 0 5))",
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(std::fs::read_to_string(&axis).unwrap().starts_with("MULTILINESTRING Z"));
+    std::fs::remove_file(&axis).unwrap();
+
+    // two squares of a MultiPolygon sharing part of an edge: refused
+    let o = run_with_stdin(&["-"], "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((4 1, 6 1, 6 3, 4 3, 4 1)))");
+    assert_eq!(o.status.code(), Some(1));
+    let err = stderr(&o);
+    assert!(err.contains("share the stretch from (4, 1) to (4, 3)") && err.contains("merge them"), "{err}");
+    assert!(err.contains("--split-crossings"), "{err}");
 }
 
 #[test]

@@ -208,8 +208,40 @@ impl Builder {
     /// order) runs on a second, short-lived thread; the result is the same.
     ///
     /// With segments, the input is checked first: segments that cross or
-    /// overlap, or a point inside a segment, give
-    /// [`ErrorKind::Intersecting`] naming both input indices.
+    /// overlap give [`ErrorKind::Intersecting`] naming both input indices.
+    /// An input vertex (a segment's endpoint, a zero-length segment or an
+    /// isolated point) inside another segment is fine: that segment is
+    /// split there, exactly (the vertex is the cut point, nothing moves),
+    /// and the diagram is that of the pieces, numbered as with
+    /// [`Builder::split_crossings`] ([`Diagram::pieces_of_input`],
+    /// [`Diagram::inputs_of_piece`]; [`Diagram::site_of_segment`] and
+    /// [`Diagram::segment_input_index`] then speak of pieces, and
+    /// [`BuildStats::split_at_vertices`] counts the cuts). A polygon's ring
+    /// cut so is still that ring, with one more corner: a hole touching
+    /// its shell, or rings touching at a point, bound the same domain as
+    /// the OGC polygon.
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, Location, Point};
+    /// let mut b = Builder::new();
+    /// // a hole touching its shell at (0, 5), inside the shell's edge 3
+    /// b.add_polygon(&[
+    ///     vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]],
+    ///     vec![[0.0, 5.0], [3.0, 4.0], [3.0, 6.0]],
+    /// ])?;
+    /// let d = b.build()?;
+    /// assert_eq!(d.stats().split_at_vertices, 1);
+    /// assert_eq!(d.pieces_of_input(3).collect::<Vec<_>>(), vec![3, 4]);
+    /// assert_eq!(d.locate_point(Point::new(2.0, 5.0)), Some(Location::Outside)); // in the hole
+    /// assert_eq!(d.locate_point(Point::new(1.0, 2.0)), Some(Location::Inside));
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    ///
+    /// [`Diagram::pieces_of_input`]: crate::Diagram::pieces_of_input
+    /// [`Diagram::inputs_of_piece`]: crate::Diagram::inputs_of_piece
+    /// [`Diagram::site_of_segment`]: crate::Diagram::site_of_segment
+    /// [`Diagram::segment_input_index`]: crate::Diagram::segment_input_index
+    /// [`BuildStats::split_at_vertices`]: crate::BuildStats::split_at_vertices
     ///
     /// [`Builder::check`] runs the input check alone.
     ///
@@ -223,28 +255,31 @@ impl Builder {
             diagram.stats.dropped_chain_points = self.dropped_chain_points;
             return Ok(diagram);
         }
-        let mut diagram =
-            super::diagram_of(&self.points, &self.segments).map_err(|e| super::polygon_input::name_rings(e, &self.rings))?;
-        if let Some(e) = super::polygon_input::shared_ring_edge(&diagram, &self.rings) {
-            return Err(super::polygon_input::name_rings(e, &self.rings));
+        let name = |e| super::polygon_input::name_rings(e, &self.rings, &self.segments);
+        let mut diagram = super::diagram_of(&self.points, &self.segments).map_err(name)?;
+        // Rings cut at vertices of others are still those rings, over the pieces.
+        let rings = super::polygon_input::rings_over_pieces(&diagram, &self.rings);
+        if let Some(e) = super::polygon_input::shared_ring_edge(&diagram, &rings, &self.segments) {
+            return Err(name(e));
         }
-        diagram.set_domain(&self.rings);
+        diagram.set_domain(&rings);
         diagram.stats.dropped_chain_points = self.dropped_chain_points;
         Ok(diagram)
     }
 
     /// Checks the input as [`Builder::build`] does first, without building:
-    /// `Ok` when no two segments cross or overlap and no point lies inside a
-    /// segment (segments may share endpoints, any number at one point),
-    /// else the same [`ErrorKind::Intersecting`] error `build` would give,
+    /// `Ok` when no two segments cross or overlap (segments may share
+    /// endpoints, any number at one point, and an input vertex inside a
+    /// segment only splits it), else the same [`ErrorKind::Intersecting`]
+    /// error `build` would give,
     /// naming both input indices. When several conflicts exist it names the
     /// one whose first common point (by `x`, then `y`) is lexicographically
     /// smallest, whatever the input order.
     ///
     /// The check is exact and takes O(n log n) expected time for n segments
     /// and points, whatever their shape (a sweep). It does not see what only the
-    /// diagram shows: two polygon rings sharing an edge pass here and fail
-    /// in `build`.
+    /// diagram shows: two polygon rings sharing a whole edge (equal
+    /// segments, merged) pass here and fail in `build`.
     ///
     /// ```
     /// use segvoronoi::{Builder, ErrorKind};
@@ -260,7 +295,8 @@ impl Builder {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn check(&self) -> Result<(), Error> {
-        super::check_input(&self.points, &self.segments).map_err(|e| super::polygon_input::name_rings(e, &self.rings))
+        super::check_input(&self.points, &self.segments)
+            .map_err(|e| super::polygon_input::name_rings(e, &self.rings, &self.segments))
     }
 }
 

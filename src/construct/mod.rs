@@ -44,8 +44,10 @@ pub use restart::set_restart_budget;
 use crate::diagram::Diagram;
 use crate::error::{Error, ErrorKind};
 use crate::geometry::scale::Scale;
+use crate::geometry::segment_contact;
 use crate::geometry::Point;
-use input_check::{check_segments, first_conflict, Conflict};
+use input_check::{check_segments, first_conflict, CheckedInput, Vertex};
+pub(crate) use input_check::{overlap_stretch, Conflict};
 use insert_point::insert_points;
 use renumber::SegmentSite;
 use restart::{insert_all, insert_all_from, Outcome, Stuck};
@@ -65,7 +67,7 @@ pub(super) fn check_input(points: &[Point], segments: &[[Point; 2]]) -> Result<(
         return Ok(()); // distinct or repeated points never conflict
     }
     match first_conflict(points, segments, input_scale(points, segments)) {
-        Some(c) => Err(conflict_error(&c)),
+        Some(c) => Err(conflict_error(&c, segments)),
         None => Ok(()),
     }
 }
@@ -105,8 +107,11 @@ fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<(Diagram, Ou
     } else {
         (check_segments(points, segments, scale), None)
     };
-    let checked = checked.map_err(|c| conflict_error(&c))?;
+    let checked = checked.map_err(|c| conflict_error(&c, segments))?;
     let stage = stage.unwrap_or_else(|| insert_points(&scaled, segments.len()));
+    if !checked.splits.is_empty() {
+        return Ok(build_split(stage, &checked, points, segments, &all, &scaled, scale));
+    }
 
     let kept: Vec<usize> = checked.segments.iter().map(|&(j, _)| j).collect();
     let pairs: Vec<[usize; 2]> = kept.iter().map(|&j| endpoint_index(points.len(), j)).collect();
@@ -116,6 +121,122 @@ fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<(Diagram, Ou
     let mut diagram = renumber::renumber(built, &site_of_input, &all, &described, scale);
     renumber::number_segment_inputs(&mut diagram, &checked, points.len(), segments.len());
     Ok((diagram, outcome))
+}
+
+/// The diagram when input vertices lie inside segments
+/// ([`CheckedInput::splits`]): each such segment is cut into pieces at
+/// them, exactly (the cut points are input vertices, already inserted with
+/// the points of `stage`), and the diagram is that of the pieces. Piece
+/// numbering as with [`Builder::split_crossings`]: the pieces of input
+/// segment 0 from its first end to its second, then those of segment 1,
+/// and so on (an input segment not split is one piece; a zero-length one a
+/// zero-length piece); `Diagram::pieces_of_input` and `inputs_of_piece`
+/// map between the two.
+fn build_split(
+    stage: insert_point::PointStage,
+    checked: &CheckedInput,
+    points: &[Point],
+    segments: &[[Point; 2]],
+    all: &[Point],
+    scaled: &[Point],
+    scale: Scale,
+) -> (Diagram, Outcome) {
+    let pieces = Pieces::of(checked, points.len(), segments);
+    let pairs: Vec<[usize; 2]> = pieces.kept.iter().map(|&p| pieces.ends[p]).collect();
+    let (built, site_of_input, segment_sites, outcome) = insert_all_from(stage, scaled, &pairs);
+    let described: Vec<SegmentSite> = pieces
+        .kept
+        .iter()
+        .zip(segment_sites)
+        .map(|(&p, internal)| SegmentSite { input: p, internal, ends: pieces.ends[p].map(|k| all[k]) })
+        .collect();
+    let mut diagram = renumber::renumber(built, &site_of_input, all, &described, scale);
+    let first_segment_site = diagram.point_sites;
+    diagram.segment_site = (0..pieces.ends.len())
+        .map(|p| match pieces.kept_of[p] {
+            Some(k) => crate::diagram::SiteId::from_index(first_segment_site + k),
+            None => diagram.input_site[pieces.ends[p][0]],
+        })
+        .collect();
+    diagram.input_site.truncate(points.len());
+    let origins: Vec<Vec<u32>> =
+        (0..segments.len()).flat_map(|j| (pieces.start[j]..pieces.start[j + 1]).map(move |_| vec![j as u32])).collect();
+    diagram.split = Some(Box::new(crate::diagram::SplitPieces::new(&origins, segments.len(), 0.0, 0.0)));
+    let stats = &mut diagram.stats;
+    stats.input_points = points.len();
+    stats.input_segments = segments.len();
+    stats.pieces = pieces.ends.len();
+    stats.duplicate_points = checked.duplicate_points;
+    stats.duplicate_segments = checked.duplicate_segments;
+    stats.zero_length_segments = checked.degenerate_segments;
+    stats.split_at_vertices = checked.splits.len();
+    (diagram, outcome)
+}
+
+/// The pieces of the input segments cut at the input vertices inside them.
+struct Pieces {
+    /// Input segment `j` became pieces `start[j]..start[j + 1]`.
+    start: Vec<usize>,
+    /// Per piece, its ends in the construction's point list, in the
+    /// direction of its input segment.
+    ends: Vec<[usize; 2]>,
+    /// Per piece: the kept piece it is or repeats (a position in `kept`);
+    /// `None` for a zero-length one.
+    kept_of: Vec<Option<usize>>,
+    /// The pieces built, each once: those of the kept input segments.
+    kept: Vec<usize>,
+}
+
+impl Pieces {
+    fn of(checked: &CheckedInput, points: usize, segments: &[[Point; 2]]) -> Pieces {
+        let vertex = |v: Vertex| match v {
+            Vertex::Point(i) => i,
+            Vertex::End { segment, end } => endpoint_index(points, segment)[end],
+        };
+        // Per kept segment, its cut points along it from its
+        // lexicographically smaller end (`splits` is sorted so).
+        let mut cuts: Vec<Vec<usize>> = vec![Vec::new(); checked.segments.len()];
+        for split in &checked.splits {
+            cuts[split.segment].push(vertex(split.at));
+        }
+        let mut out = Pieces { start: vec![0], ends: Vec::new(), kept_of: Vec::new(), kept: Vec::new() };
+        for (j, s) in segments.iter().enumerate() {
+            let [e0, e1] = endpoint_index(points, j);
+            let Some(k) = checked.kept_of_input[j] else {
+                out.ends.push([e0, e0]);
+                out.kept_of.push(None);
+                out.start.push(out.ends.len());
+                continue;
+            };
+            let along = &cuts[k];
+            let forward = segment_contact::lex_cmp(s[0], s[1]) == std::cmp::Ordering::Less;
+            let mut chain = Vec::with_capacity(along.len() + 2);
+            chain.push(e0);
+            if forward {
+                chain.extend(along.iter().copied());
+            } else {
+                chain.extend(along.iter().rev().copied());
+            }
+            chain.push(e1);
+            let original = checked.segments[k].0;
+            let first = out.ends.len();
+            for (m, w) in chain.windows(2).enumerate() {
+                out.ends.push([w[0], w[1]]);
+                if original == j {
+                    out.kept_of.push(Some(out.kept.len()));
+                    out.kept.push(first + m);
+                } else {
+                    // a repeat of an earlier segment, in its direction or
+                    // the other: the same pieces, in that order or reversed
+                    let same_way = segments[original][0] == s[0];
+                    let at = if same_way { m } else { chain.len() - 2 - m };
+                    out.kept_of.push(out.kept_of[out.start[original] + at]);
+                }
+            }
+            out.start.push(out.ends.len());
+        }
+        out
+    }
 }
 
 /// The indices in the construction's point list of input segment `j`'s two
@@ -157,14 +278,10 @@ pub(crate) fn run_beside<A: Send, B>(beside: impl FnOnce() -> A + Send, here: im
     })
 }
 
-/// The builder's error for an input conflict, naming both input indices.
-fn conflict_error(conflict: &Conflict) -> Error {
-    let indices = match *conflict {
-        Conflict::SegmentsCross { first, second } | Conflict::SegmentsOverlap { first, second } => vec![first, second],
-        Conflict::EndpointOnSegment { segment, endpoint_of } => vec![segment, endpoint_of],
-        Conflict::PointOnSegment { point, segment } => vec![point, segment],
-    };
-    Error::new(ErrorKind::Intersecting, conflict.message(), indices)
+/// The builder's error for an input conflict, naming both input indices
+/// (`segments`: the input segments).
+pub(crate) fn conflict_error(conflict: &Conflict, segments: &[[Point; 2]]) -> Error {
+    Error::new(ErrorKind::Intersecting, conflict.message(segments), conflict.segments().to_vec())
 }
 
 /// `diagram`, or [`ErrorKind::Internal`] when the construction did not

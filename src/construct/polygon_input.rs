@@ -28,11 +28,15 @@ impl Builder {
     /// non-finite coordinate, is [`ErrorKind::InvalidPolygon`] /
     /// [`ErrorKind::InvalidCoordinate`] naming the polygon and the ring; the
     /// builder is then unchanged. Rings that cross themselves or each other,
-    /// or share an edge, are found by the build, as any crossing segments
-    /// are ([`ErrorKind::Intersecting`], naming both segments, and the
-    /// message the polygons and rings they belong to). Rings may touch at
-    /// corners: two squares sharing one corner, a hole touching its outer
-    /// ring.
+    /// or share a stretch (an edge or part of one, or a spike running back
+    /// along itself), are found by the build, as any crossing segments are
+    /// ([`ErrorKind::Intersecting`], naming both segments, and the message
+    /// the polygons and rings they belong to, the stretch, and what to do).
+    /// Rings may touch at points, as OGC's valid polygons do: two squares
+    /// sharing one corner, a checkerboard, a hole touching its outer ring at
+    /// a corner or inside an edge, two holes touching. A ring touched
+    /// inside an edge is cut there, exactly, at the touching vertex
+    /// ([`Builder::build`]): the domain is the same.
     ///
     /// ```
     /// use segvoronoi::{Builder, Location};
@@ -136,18 +140,42 @@ fn distinct_chain(points: &[Point], non_finite: impl Fn(usize) -> Error) -> Resu
     Ok(chain)
 }
 
-/// Two ring segments that are one segment (rings that share an edge, or a
-/// ring that runs back along itself): an overlap, as the input check calls
-/// partial ones, [`ErrorKind::Intersecting`] naming both. The check merges
-/// repeated segments into one site, so it is found here, from the sites.
-pub(crate) fn shared_ring_edge(diagram: &crate::Diagram, rings: &[RingInput]) -> Option<Error> {
+/// The rings over the pieces the diagram was built from: a ring whose
+/// segments were cut at input vertices inside them (`BuildStats::
+/// split_at_vertices`) runs through the same points with one more corner
+/// per cut, so each input segment's range becomes that of its pieces (in
+/// its direction, as the pieces are numbered). Without cuts, the rings.
+pub(crate) fn rings_over_pieces(diagram: &crate::Diagram, rings: &[RingInput]) -> Vec<RingInput> {
+    rings
+        .iter()
+        .map(|r| {
+            let first = diagram.pieces_of_input(r.segments.start).next();
+            let last = diagram.pieces_of_input(r.segments.end - 1).last();
+            let segments = match (first, last) {
+                (Some(first), Some(last)) => first..last + 1,
+                _ => r.segments.clone(), // (a ring has no zero-length segment)
+            };
+            RingInput { polygon: r.polygon, ring: r.ring, segments }
+        })
+        .collect()
+}
+
+/// Two ring pieces that are one segment (rings that share a whole edge, or
+/// a ring that runs back along itself): an overlap, as the input check
+/// calls partial ones, [`ErrorKind::Intersecting`] naming both input
+/// segments. The check merges repeated segments into one site, so it is
+/// found here, from the sites. `rings` are over the pieces
+/// ([`rings_over_pieces`]); `segments` are the input segments.
+pub(crate) fn shared_ring_edge(diagram: &crate::Diagram, rings: &[RingInput], segments: &[[Point; 2]]) -> Option<Error> {
     let mut first_input_of = std::collections::HashMap::new();
-    for j in rings.iter().flat_map(|r| r.segments.clone()) {
-        let site = diagram.site_of_segment(j)?;
+    for p in rings.iter().flat_map(|r| r.segments.clone()) {
+        let site = diagram.site_of_segment(p)?;
+        let j = diagram.inputs_of_piece(p).next()?;
         if let Some(&i) = first_input_of.get(&site) {
-            let message =
-                format!("segments {i} and {j} overlap: they are the same segment, and rings may touch but not share an edge");
-            return Some(Error::new(ErrorKind::Intersecting, message, vec![i, j]));
+            // pieces are equal only when their input segments are (else those
+            // would overlap, which the check refuses)
+            let conflict = super::Conflict::SegmentsOverlap { first: i, second: j };
+            return Some(super::conflict_error(&conflict, segments));
         }
         first_input_of.insert(site, j);
     }
@@ -155,15 +183,52 @@ pub(crate) fn shared_ring_edge(diagram: &crate::Diagram, rings: &[RingInput]) ->
 }
 
 /// An input error with the polygons and rings of the segments it names
-/// added to its message (a ring that crosses itself or another ring).
-pub(crate) fn name_rings(error: Error, rings: &[RingInput]) -> Error {
+/// added to its message (a ring that crosses itself or another ring). Two
+/// ring segments that overlap are said as what they are, with what to do:
+/// rings that share a stretch, or a ring that runs back along itself.
+/// `segments` are the input segments.
+pub(crate) fn name_rings(error: Error, rings: &[RingInput], segments: &[[Point; 2]]) -> Error {
     if error.kind() != ErrorKind::Intersecting || rings.is_empty() {
         return error;
+    }
+    let ring_of = |j: usize| rings.iter().find(|r| r.segments.contains(&j));
+    if let ([i, j], true) = (error.indices(), error.message().contains(" overlap ")) {
+        if let (Some(a), Some(b), Some(&s), Some(&t)) = (ring_of(*i), ring_of(*j), segments.get(*i), segments.get(*j)) {
+            let [from, to] = super::overlap_stretch(s, t);
+            let stretch = format!(
+                "from ({}, {}) to ({}, {}) (segment {i} is in polygon {}, ring {}; segment {j} is in polygon {}, ring {})",
+                from.x, from.y, to.x, to.y, a.polygon, a.ring, b.polygon, b.ring
+            );
+            let message = if (a.polygon, a.ring) == (b.polygon, b.ring) {
+                format!(
+                    "ring {} of polygon {} runs back along itself {stretch}; remove the spike, or split crossings \
+                     (Builder::split_crossings) to keep the ring's even-odd region",
+                    a.ring, a.polygon
+                )
+            } else if a.polygon == b.polygon {
+                format!(
+                    "rings {} and {} of polygon {} share the stretch {stretch}; rings may touch at points but not \
+                     along a stretch: merge them, or split crossings (Builder::split_crossings) to take their \
+                     even-odd region",
+                    a.ring.min(b.ring),
+                    a.ring.max(b.ring),
+                    a.polygon
+                )
+            } else {
+                format!(
+                    "ring {} of polygon {} and ring {} of polygon {} share the stretch {stretch}; polygons may touch \
+                     at points but not along a stretch: merge them, or split crossings (Builder::split_crossings) \
+                     to take their even-odd region",
+                    a.ring, a.polygon, b.ring, b.polygon
+                )
+            };
+            return Error::new(error.kind(), message, error.indices().to_vec());
+        }
     }
     let named: Vec<String> = error
         .indices()
         .iter()
-        .filter_map(|&j| rings.iter().find(|r| r.segments.contains(&j)).map(|r| (j, r)))
+        .filter_map(|&j| ring_of(j).map(|r| (j, r)))
         .map(|(j, r)| format!("segment {j} is in polygon {}, ring {}", r.polygon, r.ring))
         .collect();
     if named.is_empty() {

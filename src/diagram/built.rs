@@ -34,10 +34,20 @@ pub struct BuildStats {
     pub vertices: usize,
     /// Voronoi edges between two sites, rays and lines included.
     pub edges: usize,
-    /// Segments the diagram was built from: the input segments, or with
-    /// [`Builder::split_crossings`](crate::Builder::split_crossings) the
-    /// pieces they were split into.
+    /// Segments the diagram was built from: the input segments, or the
+    /// pieces they were split into (at input vertices inside them,
+    /// [`BuildStats::split_at_vertices`], or with
+    /// [`Builder::split_crossings`](crate::Builder::split_crossings)).
     pub pieces: usize,
+    /// Without `split_crossings`: input vertices (segment endpoints,
+    /// zero-length segments, isolated points) that lay in the open
+    /// interior of an input segment, which was split there exactly, at the
+    /// vertex itself (a T-junction, a hole touching its shell inside an
+    /// edge, a point on a line); counted per (vertex, segment) pair, so
+    /// also the number of pieces beyond one per segment. With
+    /// `split_crossings` such touchings are counted in `touchings`
+    /// instead. Since 0.2.
+    pub split_at_vertices: usize,
     /// With `split_crossings`: pairs of input segments that crossed (at a
     /// point inside both).
     pub crossings: usize,

@@ -159,6 +159,10 @@ pub struct segvoronoi_stats {
     pub touchings: usize,
     /// With splitting: rounds of snapping run.
     pub snap_rounds: usize,
+    /// Without splitting: input vertices (segment endpoints, zero-length
+    /// segments, isolated points) that lay inside an input segment, which
+    /// was cut there exactly, per (vertex, segment) pair. Since 0.2.
+    pub split_at_vertices: usize,
 }
 versioned!(segvoronoi_stats, edges: usize);
 
@@ -522,6 +526,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_stats(
                 overlaps: s.overlaps,
                 touchings: s.touchings,
                 snap_rounds: s.snap_rounds,
+                split_at_vertices: s.split_at_vertices,
             },
         )
     })

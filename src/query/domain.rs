@@ -16,7 +16,11 @@
 //!   exact turn at the corner; a straight corner's cell has no interior: it
 //!   lies on the perpendicular, and so do its separators, on one side of
 //!   the ring where they end at a vertex at the corner, on both where they
-//!   pass through it (see [`Diagram::edge_location`]);
+//!   pass through it (see [`Diagram::edge_location`]); where more segments
+//!   meet (rings touching at the corner, an obstacle ending there), the
+//!   cell lies in the one wedge between consecutive segments of at least a
+//!   half turn, on that side of a ring segment bounding it (exact
+//!   orientations);
 //! - the cell of an obstacle (an isolated point, a polyline or free
 //!   segment) lies where the obstacle lies: an exact even-odd test of one
 //!   of its points against the rings;
@@ -188,6 +192,21 @@ impl Diagram {
                 role[here.index()] = Role::RingCorner { cell };
             }
         }
+        // A corner where more than two segments meet (rings touching there,
+        // or an obstacle ending at it): its cell lies in the wedge between
+        // consecutive segments that is at least a half turn, not on one
+        // ring's reflex side.
+        let mut meeting: std::collections::HashMap<SiteId, Vec<SiteId>> = std::collections::HashMap::new();
+        for s in (self.point_sites..self.sites.len()).map(SiteId::from_index) {
+            for end in self.segment_endpoints(s).into_iter().flatten() {
+                if matches!(role[end.index()], Role::RingCorner { .. }) {
+                    meeting.entry(end).or_default().push(s);
+                }
+            }
+        }
+        for (p, segments) in meeting.into_iter().filter(|(_, segments)| segments.len() > 2) {
+            role[p.index()] = Role::RingCorner { cell: self.shared_corner_cell(p, &segments, &role) };
+        }
         let obstacle_location: Vec<Option<Location>> = (0..self.sites.len())
             .map(|s| match role[s] {
                 Role::Obstacle => Some(self.obstacle_location(&rings, SiteId::from_index(s))),
@@ -324,6 +343,45 @@ impl Diagram {
     /// ending there: `v` lies at `p`, at clearance zero.
     fn touches_only(&self, v: VertexId, p: SiteId) -> bool {
         self.store.sites_of(v).iter().all(|&s| s == p || self.segment_endpoints(s).is_some_and(|e| e.contains(&p)))
+    }
+
+    /// Where the cell of corner `p` lies, where `segments` (more than two)
+    /// end: in the one wedge between consecutive segments around `p` that is
+    /// at least a half turn, on the side of a ring segment bounding it
+    /// (exact orientations); `Boundary` when there are two such wedges (a
+    /// straight corner) or none, or only obstacles bound it.
+    fn shared_corner_cell(&self, p: SiteId, segments: &[SiteId], role: &[Role]) -> Location {
+        let here = self.point_of(p);
+        let mut around: Vec<(SiteId, Point)> = segments
+            .iter()
+            .filter_map(|&s| {
+                let [a, b] = self.segment_endpoints(s)?;
+                Some((s, self.point_of(if a == p { b } else { a })))
+            })
+            .collect();
+        around.sort_by(|x, y| crate::geometry::predicates::compare_directions(here, x.1, y.1));
+        // The side of ring segment `s` leaving `p`: its left, or its right.
+        let side = |s: SiteId, left: bool| match role[s.index()] {
+            Role::RingSegment { left_inside } => {
+                let from_p = self.segment_endpoints(s).is_some_and(|[a, _]| a == p);
+                Some(inside_if((left == from_p) == left_inside))
+            }
+            _ => None,
+        };
+        let n = around.len();
+        let mut cell = None;
+        for k in 0..n {
+            let ((u, to_u), (v, to_v)) = (around[k], around[(k + 1) % n]);
+            if orientation(here, to_u, to_v) == Orientation::CounterClockwise {
+                continue; // less than a half turn from u to v
+            }
+            if cell.is_some() {
+                return Location::Boundary;
+            }
+            // counter-clockwise from u to v: left of u, right of v
+            cell = Some(side(u, true).or_else(|| side(v, false)).unwrap_or(Location::Boundary));
+        }
+        cell.unwrap_or(Location::Boundary)
     }
 
     /// A vertex of radius zero at a ring corner: a corner and two segments

@@ -16,8 +16,9 @@ Builds the Voronoi diagram of the points and line segments in INPUT.
 INPUT is Boost.Polygon's voronoi text format: a count P, then P lines `x y`,
 then a count S and S lines `x1 y1 x2 y2` (line segments; a missing S means
 0). Tokens are separated by any whitespace. `-` reads standard input.
-Segments may share endpoints but must not cross, overlap or pass through a
-point (unless --split-crossings). Without INPUT a built-in demo (a jittered ring, a cluster, collinear
+Segments may share endpoints but must not cross or overlap (unless
+--split-crossings); a point or an endpoint inside a segment cuts it there,
+exactly (--stats: split_at_vertices). Without INPUT a built-in demo (a jittered ring, a cluster, collinear
 points, a grid of cocircular points, a repeated point, short segments and a
 polyline) is used.
 
@@ -27,8 +28,10 @@ POLYGON, MULTIPOLYGON, GEOMETRYCOLLECTION, in any case, EMPTY allowed, an
 optional Z, M or ZM dimension (the extra ordinates are ignored), any number
 of geometries one after the other. Each polygon's rings bound the domain
 (even-odd: a ring inside a ring is a hole; orientation does not matter);
-linestrings and points are obstacles. Rings must not cross themselves or
-each other (the message names the polygons and rings).
+linestrings and points are obstacles. Rings may touch at points (a hole
+touching its shell, polygons touching at corners: valid OGC input builds as
+it is), but must not cross themselves or each other, nor share a stretch
+(the message names the polygons and rings).
 
 Options:
   --svg OUT.svg      draw the diagram: edges (parabolic arcs as exact
@@ -101,8 +104,8 @@ Options:
                      coordinates; --stats reports the crossings, pieces and
                      the largest displacement). Polygons bound the even-odd
                      region of their split rings
-  --write-sites OUT  write the points and segments actually built (after
-                     --split-crossings, the pieces) in Boost.Polygon's text
+  --write-sites OUT  write the points and segments actually built (the
+                     pieces, where segments were cut) in Boost.Polygon's text
                      format, each coordinate exactly
   -h, --help         print this help
   -V, --version      print the version

@@ -130,7 +130,8 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
 }
 
 /// The input points (same indices) and the segments the diagram was built
-/// from (the pieces, with `--split-crossings`), in Boost.Polygon's format.
+/// from (the pieces, with `--split-crossings` or where input vertices cut
+/// segments), in Boost.Polygon's format.
 fn sites_as_built(diagram: &Diagram, points: usize) -> String {
     let points: Vec<[f64; 2]> = (0..points)
         .filter_map(|i| match diagram.site(diagram.site_of_input(i)?) {

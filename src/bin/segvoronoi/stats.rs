@@ -21,7 +21,7 @@ pub fn report(diagram: &Diagram, build_s: f64) -> String {
     }
     let segment_sites = diagram.site_count() - diagram.point_site_count();
     let mut out = String::new();
-    let figures: [(&str, &dyn std::fmt::Display); 21] = [
+    let figures: [(&str, &dyn std::fmt::Display); 22] = [
         ("input_points", &stats.input_points),
         ("input_segments", &stats.input_segments),
         ("sites", &stats.sites),
@@ -37,6 +37,7 @@ pub fn report(diagram: &Diagram, build_s: f64) -> String {
         ("lines", &lines),
         ("parabolic_edges", &arcs),
         ("pieces", &stats.pieces),
+        ("split_at_vertices", &stats.split_at_vertices),
         ("crossings", &stats.crossings),
         ("overlaps", &stats.overlaps),
         ("touchings", &stats.touchings),
@@ -94,6 +95,23 @@ mod tests {
         assert_eq!(value(&r, "segment_sites"), "1");
         assert_eq!(value(&r, "sites"), "5");
         assert_eq!(value(&r, "parabolic_edges"), "1");
+    }
+
+    #[test]
+    fn touching_vertices_split_segments() {
+        // A hole touching its shell inside the shell's left edge, and a
+        // point on the bottom edge: two cuts, two more pieces.
+        let mut b = segvoronoi::Builder::new();
+        b.add_polygon(&[vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]], vec![[0.0, 5.0], [3.0, 4.0], [3.0, 6.0]]])
+            .unwrap();
+        b.add_point([4.0, 0.0]).unwrap();
+        let r = report(&b.build().unwrap(), 0.0);
+        assert_eq!(value(&r, "input_segments"), "7");
+        assert_eq!(value(&r, "split_at_vertices"), "2");
+        assert_eq!(value(&r, "pieces"), "9");
+        assert_eq!(value(&r, "segment_sites"), "9");
+        assert_eq!(value(&r, "duplicates"), "0");
+        assert_eq!(value(&r, "max_split_displacement"), "0");
     }
 
     #[test]

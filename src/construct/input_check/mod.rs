@@ -7,17 +7,23 @@
 //!   point that repeats an earlier point or any segment endpoint. All three are
 //!   counted for the build statistics. Equality is coordinate equality, so
 //!   `-0.0` equals `+0.0`.
-//! - *Conflicts.* Two segments may meet only at a common endpoint (exactly
-//!   equal coordinates), any number of them at one point. Everything else is a
-//!   [`Conflict`] naming both input indices: a proper crossing, an endpoint in
-//!   the open interior of another segment (T-junction), two collinear segments
-//!   sharing more than a point, an isolated point in the open interior of a
-//!   segment. When several conflicts exist, the one reported is the one whose
-//!   *contact point* (the lexicographically smallest point, by `x` then `y`,
-//!   that the two items share) is smallest, whatever the input order; among
-//!   conflicts at the same contact point, segment pairs come before
-//!   (point, segment) pairs, then the smaller pair of input indices, among
-//!   those the sweep meets there (`sweep.rs`).
+//! - *Touchings are splits.* An input vertex (an endpoint of a segment, a
+//!   zero-length segment, or an isolated point) in the open interior of a
+//!   segment splits that segment there: a T-junction, a hole touching its
+//!   shell inside an edge, two rings touching at a point, a point on a
+//!   line. The split point is the input vertex itself, so nothing moves and
+//!   nothing is rounded. Every such (segment, vertex) pair is listed in
+//!   [`CheckedInput::splits`], by segment and along it; the builder builds
+//!   the pieces (`construct::split_at_vertices`).
+//! - *Conflicts.* Apart from that, two segments may meet only at a common
+//!   endpoint (exactly equal coordinates), any number of them at one point.
+//!   Two segments that cross properly (at a point inside both) or that are
+//!   collinear and share more than a point are a [`Conflict`] naming both
+//!   input indices. When several conflicts exist, the one reported is the
+//!   one whose *contact point* (the lexicographically smallest point, by
+//!   `x` then `y`, that the two segments share) is smallest, whatever the
+//!   input order; among conflicts at the same contact point, the smaller
+//!   pair of input indices among those the sweep meets there (`sweep.rs`).
 //!
 //! # Exactness
 //! Every decision is an exact orientation sign (never perturbed by fault
@@ -37,10 +43,10 @@
 //!
 //! # Where
 //! `normalise.rs` (zero-length, repeated), `sweep.rs` (the pairs worth
-//! testing and the conflict reported: a Shamos–Hoey sweep, O(n log n) expected for
-//! every input), `classify.rs` (a pair's conflict, named by input indices,
-//! and its contact point); the contact test itself is
-//! `geometry::segment_contact`.
+//! testing, the conflict reported and every split: a Shamos–Hoey sweep,
+//! O(n log n) expected for every input), `classify.rs` (a pair's conflict,
+//! named by input indices, and its contact point); the contact test itself
+//! is `geometry::segment_contact`.
 
 mod classify;
 mod normalise;
@@ -49,9 +55,10 @@ mod sweep;
 mod tests;
 
 use crate::geometry::scale::Scale;
+use crate::geometry::segment_contact::lex_cmp;
 use crate::geometry::Point;
 use normalise::normalise;
-use sweep::find_conflict;
+use sweep::{find_conflict, sweep};
 
 /// Where a point of the checked input came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -82,10 +89,35 @@ pub(crate) struct CheckedInput {
     /// Per input segment: the index in `segments` of the kept segment it is
     /// or repeats; `None` for a zero-length segment.
     pub kept_of_input: Vec<Option<usize>>,
+    /// Every input vertex in the open interior of a kept segment: the
+    /// segment is split there. Sorted by segment (position in `segments`),
+    /// and for one segment in the order of the points along it from its
+    /// lexicographically smaller end.
+    pub splits: Vec<Split>,
+}
+
+/// An input vertex in the open interior of a kept segment, which is split
+/// there.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Split {
+    /// The segment split (its position in [`CheckedInput::segments`]).
+    pub segment: usize,
+    /// The vertex it is split at.
+    pub at: Vertex,
+}
+
+/// An input vertex, by where it comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Vertex {
+    /// An isolated input point (index among the points).
+    Point(usize),
+    /// End `end` (0 or 1, as given; 0 for a zero-length segment) of input
+    /// segment `segment`.
+    End { segment: usize, end: usize },
 }
 
 /// Why the input cannot be built: the kind of intersection and the two input
-/// indices involved. Segment and point indices are kept apart.
+/// segments involved (touchings are no conflict: they are [`Split`]s).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Conflict {
     /// Two segments cross at a point interior to both.
@@ -102,37 +134,36 @@ pub(crate) enum Conflict {
         /// The later segment (input index).
         second: usize,
     },
-    /// An endpoint of `endpoint_of` lies in the open interior of `segment`
-    /// (a T-junction; `endpoint_of` may be a zero-length segment).
-    EndpointOnSegment {
-        /// The segment whose interior is touched (input index).
-        segment: usize,
-        /// The segment whose endpoint touches it (input index).
-        endpoint_of: usize,
-    },
-    /// An isolated point lies in the open interior of a segment.
-    PointOnSegment {
-        /// The point (input index among the points).
-        point: usize,
-        /// The segment (input index among the segments).
-        segment: usize,
-    },
 }
 
 impl Conflict {
-    /// A sentence naming both input indices, for the error message.
-    pub(crate) fn message(&self) -> String {
+    /// The two input segments, earlier first.
+    pub(crate) fn segments(&self) -> [usize; 2] {
+        match *self {
+            Conflict::SegmentsCross { first, second } | Conflict::SegmentsOverlap { first, second } => [first, second],
+        }
+    }
+
+    /// A sentence naming both input indices, for the error message; for an
+    /// overlap, the stretch they share (`segments` are the input segments).
+    pub(crate) fn message(&self, segments: &[[Point; 2]]) -> String {
         match *self {
             Conflict::SegmentsCross { first, second } => format!("segments {first} and {second} cross"),
             Conflict::SegmentsOverlap { first, second } => {
-                format!("segments {first} and {second} are collinear and overlap")
+                let [a, b] = overlap_stretch(segments[first], segments[second]);
+                format!("segments {first} and {second} are collinear and overlap from ({}, {}) to ({}, {})", a.x, a.y, b.x, b.y)
             }
-            Conflict::EndpointOnSegment { segment, endpoint_of } => {
-                format!("an endpoint of segment {endpoint_of} lies inside segment {segment}")
-            }
-            Conflict::PointOnSegment { point, segment } => format!("point {point} lies inside segment {segment}"),
         }
     }
+}
+
+/// The stretch two collinear overlapping segments share, from its
+/// lexicographically smaller end: the middle two of their four endpoints
+/// in the sweep's order (coordinate comparisons only).
+pub(crate) fn overlap_stretch(s: [Point; 2], t: [Point; 2]) -> [Point; 2] {
+    let mut ends = [s[0], s[1], t[0], t[1]];
+    ends.sort_by(|&a, &b| lex_cmp(a, b));
+    [ends[1], ends[2]]
 }
 
 /// Normalises and checks points and segments (finite coordinates, as the
@@ -140,7 +171,8 @@ impl Conflict {
 /// build's one scale). See the module documentation for the rules.
 pub(crate) fn check_segments(points: &[Point], segments: &[[Point; 2]], scale: Scale) -> Result<CheckedInput, Conflict> {
     let norm = normalise_scaled(points, segments, scale);
-    if let Some(conflict) = find_conflict(&norm) {
+    let (conflict, splits) = sweep(&norm);
+    if let Some((conflict, _)) = conflict {
         return Err(conflict);
     }
     Ok(CheckedInput {
@@ -154,6 +186,7 @@ pub(crate) fn check_segments(points: &[Point], segments: &[[Point; 2]], scale: S
         duplicate_segments: norm.duplicate_segments,
         degenerate_segments: norm.degenerate_segments,
         kept_of_input: norm.kept_of_input,
+        splits,
     })
 }
 

@@ -1,4 +1,4 @@
-//! # Which conflict is found: a Shamos–Hoey sweep
+//! # Which conflict is found, and every split: a Shamos–Hoey sweep
 //! The kept segments and isolated points are swept in lexicographic order
 //! of their points (by `x`, then by `y`): think of a vertical sweep line
 //! tilted by an infinitesimal clockwise angle, so that no two distinct
@@ -23,42 +23,53 @@
 //!    descended by the sign of `orientation(first, last, q)` (`q` above,
 //!    below or on the segment): the last node passed below `q` and the last
 //!    passed above it;
-//! 2. a segment with `q` in its open interior is a conflict at `q` with an
-//!    item there (the isolated point, or the segment with the smallest index
-//!    among those starting or ending there). The segments ending at `q` and
-//!    those with `q` inside form one run of the status, so one of the
-//!    latter, if any, is a neighbour of one of the former, where step 1
+//! 2. the segments with `q` in their open interior. The segments ending at
+//!    `q` and those with `q` inside form one run of the status, so one of
+//!    the latter, if any, is a neighbour of one of the former, where step 1
 //!    looks; when nothing ends at `q`, the descent meets one (a search in a
-//!    binary tree meets an equal key when there is one);
-//! 3. the segments starting at `q`, sorted by direction
+//!    binary tree meets an equal key when there is one). From it, the run
+//!    is walked (after the ending ones have left). Two segments through `q`
+//!    cross there or overlap: a conflict at `q`, and the sweep stops. One
+//!    alone, `t`, is a touching: `t` is *split* at `q` (a [`Split`] names
+//!    `t` and the input vertex at `q`: the isolated point, or an end of the
+//!    segment with the smallest index among those starting or ending there).
+//!    From `q` on, `t` is what is left of it, from `q` to its last point:
+//!    it leaves the status and enters again in step 3 with the segments
+//!    starting at `q`, and the neighbours of `q` are its neighbours;
+//! 3. the segments starting at `q` (and a split `t`), sorted by direction
 //!    (`orientation(q, last_i, last_j)`, exact; ties, which are overlaps, by
 //!    index), enter between the neighbours;
 //! 4. every pair of segments that has just become adjacent is classified
 //!    (`classify.rs`): the neighbour below with the lowest new one, each new
 //!    one with the next, the highest new one with the neighbour above; or,
-//!    when nothing starts at `q`, the two neighbours.
+//!    when nothing starts at `q`, the two neighbours. A pair that meets only
+//!    at an endpoint of one inside the other is no conflict (step 2 splits
+//!    it when the sweep reaches that point).
 //!
 //! # Which conflict is reported, and why it is seen
-//! Every conflict found is ranked by its *contact point*, the
-//! lexicographically smallest point the two items share
-//! (`geometry::segment_contact::first_contact`; a crossing point is a
+//! Every conflict found (a crossing or an overlap) is ranked by its
+//! *contact point*, the lexicographically smallest point the two segments
+//! share (`geometry::segment_contact::first_contact`; a crossing point is a
 //! rational point, compared exactly); the smallest contact point wins, and
-//! among conflicts found at the same contact point, segment pairs before
-//! (point, segment) pairs, then the smaller pair of input indices
-//! (smaller index first). The sweep stops at the first event
+//! among conflicts found at the same contact point, the smaller pair of
+//! input indices (smaller index first). The sweep stops at the first event
 //! lexicographically past the best contact point found so far.
 //!
 //! Let `p*` be the smallest contact point of all conflicts. Before the
 //! sweep reaches `p*`, no two active segments share a point left of the
-//! sweep line other than a common endpoint, so the status order is the
-//! true order along the sweep line, and "below `q`", "through `q`",
-//! "above `q`" split it into three runs. Two cases:
-//! - `p*` is an event point. Some item has `p*` as an endpoint (or is the
-//!   isolated point `p*`); its partner of the conflict either has `p*` in
-//!   its open interior (it is active and through `p*`: step 2 sees it) or
-//!   starts at `p*` too (an overlap in one direction: the two are
-//!   neighbours in the sorted start list, step 4 sees it). A proper
-//!   crossing at an event point is also a T-junction there, seen so.
+//! sweep line other than a common endpoint or a touching (an endpoint of
+//! one inside the other), neither of which changes their order, so the
+//! status order is the true order along the sweep line, and "below `q`",
+//! "through `q`", "above `q`" split it into three runs; a split segment
+//! re-enters by its direction at `q`, as a segment starting there, so the
+//! order stays true after `q`. Two cases:
+//! - `p*` is an event point. Either two segments pass through `p*` (a
+//!   crossing there, or an overlap: step 2 sees them, one run of the status
+//!   next to where it looks), or one passes through it and the other starts
+//!   there along it (an overlap: the split one re-enters with the starting
+//!   ones, collinear with it, so they are neighbours in the sorted start
+//!   list and step 4 sees them), or both start there in one direction (the
+//!   same).
 //! - `p*` is not an event point: two segments cross there properly. All
 //!   segments through `p*` are active just left of it and, by continuity,
 //!   contiguous in the status; any two of them cross at `p*` (an overlap
@@ -74,6 +85,11 @@
 //! after it). Events past the best contact found so far are not needed:
 //! a conflict with a smaller contact point `p` would be found at an event
 //! no later than `p`.
+//!
+//! Every split is found: a vertex `q` inside a segment `t` is an event, `t`
+//! is active and through `q` there, and with no conflict up to `q` it is
+//! the only segment through `q`, which step 2 finds. A split costs one
+//! walk step, a removal and an insertion, O(log n) expected.
 //!
 //! # Cost
 //! Sorting the segments by first point (normalisation's sort, which finds
@@ -109,9 +125,9 @@
 
 use std::cmp::Ordering;
 
-use super::classify::{point_conflict_at, segment_conflict_at};
+use super::classify::segment_conflict_at;
 use super::normalise::Normalised;
-use super::Conflict;
+use super::{Conflict, PointSource, Split, Vertex};
 use crate::construct::status_treap::{Treap, NIL};
 use crate::geometry::predicates::{exact_orientation, Orientation};
 use crate::geometry::segment_contact::{lex_cmp, lex_key, segment_contact, ContactPoint};
@@ -125,8 +141,16 @@ pub(super) fn find_conflict(norm: &Normalised) -> Option<Conflict> {
 
 /// [`find_conflict`] with the conflict's contact point.
 pub(super) fn find_conflict_at(norm: &Normalised) -> Option<(Conflict, ContactPoint)> {
+    sweep(norm).0
+}
+
+/// The sweep: the conflict whose contact point is smallest, with that
+/// point; and every split (an input vertex in the open interior of a kept
+/// segment), by segment and along it — all of them when there is no
+/// conflict, else those left of the conflict.
+pub(super) fn sweep(norm: &Normalised) -> (Option<(Conflict, ContactPoint)>, Vec<Split>) {
     if norm.segments.is_empty() {
-        return None; // distinct points never conflict
+        return (None, Vec::new()); // distinct points never conflict
     }
     let m = norm.segments.len();
     assert!(m < NIL as usize && norm.points.len() < NIL as usize, "item ids are 32-bit");
@@ -150,6 +174,7 @@ pub(super) fn find_conflict_at(norm: &Normalised) -> Option<(Conflict, ContactPo
         group: Group::default(),
         adjacent: Vec::new(),
         by_angle: Vec::new(),
+        splits: Vec::new(),
     };
     let (mut next_start, mut next_end, mut next_lone) = (0, 0, 0);
     loop {
@@ -183,7 +208,11 @@ pub(super) fn find_conflict_at(norm: &Normalised) -> Option<(Conflict, ContactPo
         }
         sweep.event(q);
     }
-    sweep.best
+    // Found in the order of the events, so along each segment; a stable
+    // sort by segment keeps that order.
+    let mut splits = sweep.splits;
+    splits.sort_by_key(|s| s.segment);
+    (sweep.best, splits)
 }
 
 /// From how many segments starting at one event the exact sort by direction
@@ -223,6 +252,8 @@ struct Sweep<'a> {
     group: Group,
     adjacent: Vec<(u32, u32)>,
     by_angle: Vec<(f64, u32)>,
+    /// The splits found so far, in the order of the events.
+    splits: Vec<Split>,
 }
 
 impl Sweep<'_> {
@@ -268,18 +299,32 @@ impl Sweep<'_> {
             }
         }
         if interior != NIL {
-            let kept = &self.kept;
-            let t = kept[interior as usize] as usize;
-            let found = match self.group.lone {
-                Some(p) => point_conflict_at(self.norm, p as usize, t),
-                None => {
-                    let items = self.group.starts.iter().chain(&self.group.ends);
-                    let u = items.copied().min_by_key(|&i| kept[i as usize]).expect("an event has an item");
-                    let u = kept[u as usize] as usize;
-                    segment_conflict_at(self.norm, t.min(u), t.max(u))
+            // The segments through q (the ending ones have left): one run of
+            // the status. Two of them cross at q or overlap; one alone is
+            // split at q, and from q on it is ordered among the segments
+            // starting there, as if it started there too.
+            let mut t = interior;
+            loop {
+                let p = self.status.previous(t);
+                if p == NIL || side(self.status.segment(p)) != Orientation::Collinear {
+                    break;
                 }
-            };
-            self.offer(found);
+                t = p;
+            }
+            let other = self.status.next(t);
+            if other != NIL && side(self.status.segment(other)) == Orientation::Collinear {
+                let found = self.pair(t, other);
+                self.offer(found);
+                return; // a conflict at q: the sweep stops here
+            }
+            let at = self.vertex_at(q);
+            self.splits.push(Split { segment: self.kept[t as usize] as usize, at });
+            if self.group.lone.is_some() {
+                return; // nothing starts or ends at an isolated point
+            }
+            (below, above) = (self.status.previous(t), self.status.next(t));
+            self.status.remove(t);
+            self.group.starts.push(t);
         }
         if self.group.lone.is_some() {
             return; // nothing starts or ends at an isolated point
@@ -326,6 +371,21 @@ impl Sweep<'_> {
         }
     }
 
+    /// The input vertex at event `q`: the isolated point, or an end of the
+    /// segment with the smallest index among those starting or ending there.
+    fn vertex_at(&self, q: Point) -> Vertex {
+        if let Some(p) = self.group.lone {
+            return match self.norm.points[p as usize].0 {
+                PointSource::Point(i) => Vertex::Point(i),
+                PointSource::Segment(j) => Vertex::End { segment: j, end: 0 },
+            };
+        }
+        let items = self.group.starts.iter().chain(&self.group.ends);
+        let u = items.map(|&i| self.kept[i as usize]).min().expect("an event has an item");
+        let (segment, [a, _]) = self.norm.segments[u as usize];
+        Vertex::End { segment, end: usize::from(a != q) }
+    }
+
     /// The conflict of the segments of nodes `i` and `j`, with its contact
     /// point.
     fn pair(&self, i: u32, j: u32) -> Option<(Conflict, ContactPoint)> {
@@ -354,19 +414,9 @@ impl Sweep<'_> {
     }
 }
 
-/// The order among conflicts at one contact point: segment pairs first,
-/// then the smaller pair of input indices, smaller index first.
-fn rank(conflict: &Conflict) -> (u8, usize, usize) {
-    let pair = |a: usize, b: usize| (a.min(b), a.max(b));
-    match *conflict {
-        Conflict::SegmentsCross { first, second } | Conflict::SegmentsOverlap { first, second } => {
-            let (a, b) = pair(first, second);
-            (0, a, b)
-        }
-        Conflict::EndpointOnSegment { segment, endpoint_of } => {
-            let (a, b) = pair(segment, endpoint_of);
-            (0, a, b)
-        }
-        Conflict::PointOnSegment { point, segment } => (1, point, segment),
-    }
+/// The order among conflicts at one contact point: the smaller pair of
+/// input indices, smaller index first.
+fn rank(conflict: &Conflict) -> (usize, usize) {
+    let [a, b] = conflict.segments();
+    (a.min(b), a.max(b))
 }

@@ -2,12 +2,13 @@
 //! degenerate cases of the sweep, the sweep against brute force, and a large
 //! input.
 
-use super::classify::{point_conflict_at, segment_conflict_at};
+use super::classify::segment_conflict_at;
 use super::normalise::{normalise, Normalised};
-use super::sweep::{find_conflict, find_conflict_at, PRESORTED_FROM};
+use super::sweep::{find_conflict, find_conflict_at, sweep, PRESORTED_FROM};
 use super::*;
 use crate::construct::input_scale;
 use crate::geometry::segment_contact::ContactPoint;
+use crate::geometry::segment_contact::{inside_segment, lex_key};
 use proptest::prelude::*;
 use std::cmp::Ordering;
 
@@ -26,6 +27,18 @@ fn s(ax: f64, ay: f64, bx: f64, by: f64) -> [Point; 2] {
 
 fn check(segments: &[[Point; 2]]) -> Result<CheckedInput, Conflict> {
     check_segments(&[], segments)
+}
+
+/// The splits of a checked input as (input index of the segment split,
+/// the vertex), or the conflict.
+fn cuts(points: &[Point], segments: &[[Point; 2]]) -> Result<Vec<(usize, Vertex)>, Conflict> {
+    let out = check_segments(points, segments)?;
+    Ok(out.splits.iter().map(|c| (out.segments[c.segment].0, c.at)).collect())
+}
+
+/// End `end` of input segment `segment`.
+fn end(segment: usize, end: usize) -> Vertex {
+    Vertex::End { segment, end }
 }
 
 fn up(x: f64) -> f64 {
@@ -89,27 +102,44 @@ fn output_keeps_input_coordinates_of_huge_inputs() {
 fn crossing_segments() {
     let r = check(&[s(0., 0., 2., 2.), s(5., 5., 6., 6.), s(0., 2., 2., 0.)]);
     assert_eq!(r, Err(Conflict::SegmentsCross { first: 0, second: 2 }));
-    assert_eq!(r.unwrap_err().message(), "segments 0 and 2 cross");
+    assert_eq!(r.unwrap_err().message(&[]), "segments 0 and 2 cross");
 }
 
 #[test]
 fn horizontal_and_vertical() {
     assert_eq!(check(&[s(-1., 0., 1., 0.), s(0., -1., 0., 1.)]), Err(Conflict::SegmentsCross { first: 0, second: 1 }));
-    // Vertical stem ending on a horizontal bar, both orders.
-    let t = Conflict::EndpointOnSegment { segment: 0, endpoint_of: 1 };
-    assert_eq!(check(&[s(-1., 0., 1., 0.), s(0., 0., 0., 1.)]), Err(t));
-    let t = Conflict::EndpointOnSegment { segment: 1, endpoint_of: 0 };
-    assert_eq!(check(&[s(0., 5., 0., 1.), s(1., 1., -1., 1.)]), Err(t));
+    // Vertical stem ending on a horizontal bar, both orders: the bar is
+    // split at the stem's end.
+    assert_eq!(cuts(&[], &[s(-1., 0., 1., 0.), s(0., 0., 0., 1.)]), Ok(vec![(0, end(1, 0))]));
+    assert_eq!(cuts(&[], &[s(0., 5., 0., 1.), s(1., 1., -1., 1.)]), Ok(vec![(1, end(0, 1))]));
     // An L and a vertical pair touching end to end are fine.
     assert!(check(&[s(0., 0., 1., 0.), s(1., 0., 1., 1.), s(1., 1., 1., 3.)]).is_ok());
 }
 
 #[test]
-fn t_junction_names_both_segments() {
-    let r = check(&[s(0., 0., 1., 3.), s(0., 0., 4., 0.), s(2., 0., 2., 3.)]);
-    let c = Conflict::EndpointOnSegment { segment: 1, endpoint_of: 2 };
-    assert_eq!(r, Err(c));
-    assert_eq!(c.message(), "an endpoint of segment 2 lies inside segment 1");
+fn t_junction_splits_the_segment() {
+    let r = cuts(&[], &[s(0., 0., 1., 3.), s(0., 0., 4., 0.), s(2., 0., 2., 3.)]);
+    assert_eq!(r, Ok(vec![(1, end(2, 0))]));
+    // Several vertices on one segment, found along it from its smaller
+    // end, whatever its direction; a vertex on two segments' interiors
+    // would be a crossing.
+    let bar = s(8., 0., 0., 0.);
+    let r = cuts(&[p(5., 0.)], &[bar, s(6., 0., 6., 1.), s(2., -1., 2., 0.), s(3., 0., 3., -1.), s(2., 0., 2., 1.)]);
+    assert_eq!(r, Ok(vec![(0, end(2, 1)), (0, end(3, 0)), (0, Vertex::Point(0)), (0, end(1, 0))]));
+    // A checkerboard's corner: two squares touching at a corner split nothing.
+    let square = |x: f64, y: f64| polygon_of(&[p(x, y), p(x + 1., y), p(x + 1., y + 1.), p(x, y + 1.)]);
+    let mut board = square(0., 0.);
+    board.extend(square(1., 1.));
+    assert_eq!(cuts(&[], &board), Ok(vec![]));
+    // A hole touching its shell inside an edge splits that edge.
+    let mut shell = polygon_of(&[p(0., 0.), p(10., 0.), p(10., 10.), p(0., 10.)]);
+    shell.extend(polygon_of(&[p(0., 5.), p(3., 4.), p(3., 6.)]));
+    assert_eq!(cuts(&[], &shell), Ok(vec![(3, end(4, 0))]));
+}
+
+/// The closed ring through `corners`, as segments.
+fn polygon_of(corners: &[Point]) -> Vec<[Point; 2]> {
+    (0..corners.len()).map(|k| [corners[k], corners[(k + 1) % corners.len()]]).collect()
 }
 
 #[test]
@@ -122,19 +152,23 @@ fn collinear_cases() {
     assert!(check(&[s(0., 0., 1., 1.), s(1., 1., 2., 2.), s(2., 2., 5., 5.)]).is_ok(), "consecutive");
     assert!(check(&[s(0., 0., 1., 1.), s(2., 2., 3., 3.)]).is_ok(), "disjoint");
     assert!(check(&[s(0., 0., 1., 0.), s(3., 0., 2., 0.), s(-1., 0., -3., 0.)]).is_ok(), "disjoint");
-    assert_eq!(Conflict::SegmentsOverlap { first: 4, second: 9 }.message(), "segments 4 and 9 are collinear and overlap");
+    let segments = [s(0., 0., 4., 0.), s(3., 0., 1., 0.)];
+    assert_eq!(
+        Conflict::SegmentsOverlap { first: 0, second: 1 }.message(&segments),
+        "segments 0 and 1 are collinear and overlap from (1, 0) to (3, 0)"
+    );
 }
 
 #[test]
 fn point_inside_segment() {
-    let r = check_segments(&[p(9., 9.), p(1., 1.)], &[s(0., 0., 2., 2.)]);
-    assert_eq!(r, Err(Conflict::PointOnSegment { point: 1, segment: 0 }));
-    assert_eq!(r.unwrap_err().message(), "point 1 lies inside segment 0");
-    // On the line but outside, and on an endpoint: fine.
-    assert!(check_segments(&[p(3., 3.), p(2., 2.)], &[s(0., 0., 2., 2.)]).is_ok());
-    // A zero-length segment inside a segment is an endpoint on it.
-    let r = check(&[s(0., 0., 2., 2.), s(1., 1., 1., 1.)]);
-    assert_eq!(r, Err(Conflict::EndpointOnSegment { segment: 0, endpoint_of: 1 }));
+    // An isolated point inside a segment splits it, as an endpoint does.
+    let r = cuts(&[p(9., 9.), p(1., 1.)], &[s(0., 0., 2., 2.)]);
+    assert_eq!(r, Ok(vec![(0, Vertex::Point(1))]));
+    // On the line but outside, and on an endpoint: nothing to split.
+    assert_eq!(cuts(&[p(3., 3.), p(2., 2.)], &[s(0., 0., 2., 2.)]), Ok(vec![]));
+    // A zero-length segment inside a segment splits it too.
+    let r = cuts(&[], &[s(0., 0., 2., 2.), s(1., 1., 1., 1.)]);
+    assert_eq!(r, Ok(vec![(0, end(1, 0))]));
 }
 
 #[test]
@@ -145,26 +179,26 @@ fn leftmost_conflict_is_reported() {
     assert_eq!(check(&segments), Err(Conflict::SegmentsCross { first: 1, second: 2 }));
     let reversed: Vec<[Point; 2]> = segments.iter().rev().copied().collect();
     assert_eq!(check(&reversed), Err(Conflict::SegmentsCross { first: 1, second: 2 }));
-    // A point conflict left of a crossing wins over it; right of it, not.
+    // A point inside a segment left of a crossing is no conflict: the
+    // crossing is reported.
     let r = check_segments(&[p(0.5, 11.)], &[s(0., 11., 2., 11.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)]);
-    assert_eq!(r, Err(Conflict::PointOnSegment { point: 0, segment: 0 }));
-    let r = check_segments(&[p(1.5, 11.)], &[s(0., 11., 2., 11.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)]);
     assert_eq!(r, Err(Conflict::SegmentsCross { first: 1, second: 2 }));
-    // At one x the lower contact point wins: a crossing at (1, 1) against a
-    // T-junction at (1, 5) and an overlap starting at (1, 7).
+    // At one x the lower contact point wins: a crossing at (1, 1) against
+    // an overlap starting at (1, 7); a T-junction at (1, 5) between them
+    // is a split.
     let segments =
         [s(1., 7., 3., 7.), s(0., 7., 2., 7.), s(0., 5., 2., 5.), s(1., 5., 1., 6.), s(0., 0., 2., 2.), s(0., 2., 2., 0.)];
     assert_eq!(check(&segments), Err(Conflict::SegmentsCross { first: 4, second: 5 }));
-    assert_eq!(check(&segments[..4]), Err(Conflict::EndpointOnSegment { segment: 2, endpoint_of: 3 }));
-    assert_eq!(check(&segments[..2]), Err(Conflict::SegmentsOverlap { first: 0, second: 1 }));
+    assert_eq!(check(&segments[..4]), Err(Conflict::SegmentsOverlap { first: 0, second: 1 }));
+    assert_eq!(cuts(&[], &segments[2..4]), Ok(vec![(0, end(1, 0))]));
 }
 
 #[test]
 fn crossing_point_is_compared_exactly() {
-    // Segments 0 and 1 cross at (1/3, 1/3) exactly. Segment 3 ends inside
-    // the vertical bar 2 at x: the double nearest 1/3 lies below 1/3, so
-    // that T-junction is further left than the crossing; one ulp up, it
-    // is further right.
+    // Segments 0 and 1 cross at (1/3, 1/3) exactly. Segment 3 overlaps
+    // the vertical bar 2 at x from (x, -4) on: the double nearest 1/3 lies
+    // below 1/3, so that overlap is further left than the crossing; one
+    // ulp up, it is further right.
     let third = 1.0 / 3.0;
     let cross = [s(0., 0., 1., 1.), s(0., 1., 0.5, 0.)];
     let at = ContactPoint::crossing(cross[0], cross[1]);
@@ -172,10 +206,10 @@ fn crossing_point_is_compared_exactly() {
     assert_eq!(ContactPoint::At(p(up(third), -9.0)).cmp(&at), Ordering::Greater);
     let with_t = |x: f64| {
         let mut v = cross.to_vec();
-        v.extend([s(x, -6., x, -3.), s(x, -4., x + 1., -3.)]);
+        v.extend([s(x, -6., x, -3.), s(x, -4., x, -2.)]);
         v
     };
-    assert_eq!(check(&with_t(third)), Err(Conflict::EndpointOnSegment { segment: 2, endpoint_of: 3 }));
+    assert_eq!(check(&with_t(third)), Err(Conflict::SegmentsOverlap { first: 2, second: 3 }));
     assert_eq!(check(&with_t(up(third))), Err(Conflict::SegmentsCross { first: 0, second: 1 }));
     // Exactly on a crossing: (1/2, 1/2) for the diagonals of a square.
     let y = ContactPoint::crossing(s(0., 0., 1., 1.), s(0., 1., 1., 0.));
@@ -239,15 +273,16 @@ fn closed_polygon_and_polygon_with_hole() {
 fn one_ulp_decides() {
     let bar = s(0., 0., 2., 0.);
     assert!(check(&[bar, s(1., up(0.), 1., 5.)]).is_ok(), "one ulp above");
-    assert_eq!(check(&[bar, s(1., 0., 1., 5.)]), Err(Conflict::EndpointOnSegment { segment: 0, endpoint_of: 1 }));
+    assert_eq!(cuts(&[], &[bar, s(1., 0., 1., 5.)]), Ok(vec![(0, end(1, 0))]));
     assert_eq!(check(&[bar, s(1., -f64::from_bits(1), 1., 5.)]), Err(Conflict::SegmentsCross { first: 0, second: 1 }));
     // Near the end of the bar: one ulp beyond it is fine.
     assert!(check(&[bar, s(up(2.), 0., 3., 5.)]).is_ok());
-    assert_eq!(check(&[bar, s(down(2.), 0., 3., 5.)]), Err(Conflict::EndpointOnSegment { segment: 0, endpoint_of: 1 }));
+    assert!(check(&[bar, s(up(2.), 0., 3., 5.)]).unwrap().splits.is_empty());
+    assert_eq!(cuts(&[], &[bar, s(down(2.), 0., 3., 5.)]), Ok(vec![(0, end(1, 0))]));
     // A diagonal: a point one ulp off the line is not on it.
     let diag = s(0.1, 0.1, 0.7, 0.7);
-    assert!(check_segments(&[p(0.3, up(0.3))], &[diag]).is_ok());
-    assert!(check_segments(&[p(0.3, 0.3)], &[diag]).is_err());
+    assert_eq!(cuts(&[p(0.3, up(0.3))], &[diag]), Ok(vec![]));
+    assert_eq!(cuts(&[p(0.3, 0.3)], &[diag]), Ok(vec![(0, Vertex::Point(0))]));
     // Nearly parallel segments one ulp apart.
     assert!(check(&[s(0., 1., 1e6, 1.), s(0., up(1.), 1e6, up(1.))]).is_ok());
     assert!(check(&[s(0., 1., 1e6, 1.), s(0., up(1.), 1e6, down(1.))]).is_err());
@@ -264,16 +299,16 @@ fn huge_and_tiny_coordinates() {
     // Tiny: on the diagonal, and one ulp off it (products underflow
     // without the power-of-two scaling).
     let diag = s(0., 0., 2e-300, 2e-300);
-    assert!(check_segments(&[p(1e-300, 1e-300)], &[diag]).is_err());
-    assert!(check_segments(&[p(1e-300, up(1e-300))], &[diag]).is_ok());
+    assert_eq!(cuts(&[p(1e-300, 1e-300)], &[diag]), Ok(vec![(0, Vertex::Point(0))]));
+    assert_eq!(cuts(&[p(1e-300, up(1e-300))], &[diag]), Ok(vec![]));
     // Huge: a T-junction and its one-ulp miss (products overflow
     // without the scaling).
     let bar = s(-1e300, 1e300, 1e300, -1e300);
-    assert!(check(&[bar, s(3e299, -3e299, 1e300, 1e300)]).is_err());
-    assert!(check(&[bar, s(3e299, down(-3e299), 1e300, 1e300)]).is_ok(), "one ulp nearer zero");
+    assert_eq!(cuts(&[], &[bar, s(3e299, -3e299, 1e300, 1e300)]), Ok(vec![(0, end(1, 0))]));
+    assert_eq!(cuts(&[], &[bar, s(3e299, down(-3e299), 1e300, 1e300)]), Ok(vec![]), "one ulp nearer zero");
     // Beyond the documented range: a difference of 1e-324 next to 1e300
     // vanishes in the scaling (as in the point builder), so this touches.
-    assert!(check(&[bar, s(f64::from_bits(1), 0., 1e300, 1e300)]).is_err());
+    assert_eq!(cuts(&[], &[bar, s(f64::from_bits(1), 0., 1e300, 1e300)]), Ok(vec![(0, end(1, 0))]));
 }
 
 #[test]
@@ -331,10 +366,15 @@ fn star_with_a_spoke_overlapping_another() {
         // starts at (-10, -4), left of the centre, so it is reported.
         bad.push([p(-20. * f, -8. * f), p(0., 0.)]);
         assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: index_of(-10., -4.), second: n + 1 }), "{f}");
-        // Through the centre, along a spoke: the centre is inside it.
+        // Through the centre, along two spokes: it overlaps them.
         let mut through = star.clone();
         through.push([p(-3. * f, 0.), p(3. * f, 0.)]);
-        assert!(matches!(check(&through), Err(Conflict::SegmentsOverlap { .. } | Conflict::EndpointOnSegment { .. })));
+        assert!(matches!(check(&through), Err(Conflict::SegmentsOverlap { .. })));
+        // Through the centre between spokes: it crosses none, and is split
+        // at the centre, where every spoke ends.
+        let mut through = star.clone();
+        through.push([p(-3. * f, -f), p(3. * f, f)]);
+        assert_eq!(cuts(&[], &through), Ok(vec![(n, end(0, 0))]), "{f}");
     }
 }
 
@@ -361,7 +401,7 @@ fn stacked_vertical_segments() {
         assert_eq!(check(&bad), Err(Conflict::SegmentsCross { first: 30, second: 100 }), "{f}");
         let mut bad = stack.clone();
         bad.push(s(-f, 30.25 * f, 0., 30.25 * f));
-        assert_eq!(check(&bad), Err(Conflict::EndpointOnSegment { segment: 30, endpoint_of: 100 }), "{f}");
+        assert_eq!(cuts(&[], &bad), Ok(vec![(30, end(100, 1))]), "{f}");
         // Touching the stack at a shared end from the side: fine.
         let mut fine = stack.clone();
         fine.push(s(-f, 30. * f, 0., 30. * f));
@@ -378,12 +418,12 @@ fn point_inside_a_vertical_segment() {
         // on their ends (merged), are fine.
         let fine = [p(0., 2.5 * f), p(0., -f), p(0., 5. * f), p(0., 0.)];
         assert!(check_segments(&fine, &segments).is_ok(), "{f}");
-        let r = check_segments(&[p(0., 2.5 * f), p(0., 1.5 * f)], &segments);
-        assert_eq!(r, Err(Conflict::PointOnSegment { point: 1, segment: 1 }), "{f}");
+        let r = cuts(&[p(0., 2.5 * f), p(0., 1.5 * f)], &segments);
+        assert_eq!(r, Ok(vec![(1, Vertex::Point(1))]), "{f}");
         // As a zero-length segment.
         let mut with = segments.to_vec();
         with.push(s(0., 3.5 * f, 0., 3.5 * f));
-        assert_eq!(check(&with), Err(Conflict::EndpointOnSegment { segment: 3, endpoint_of: 4 }), "{f}");
+        assert_eq!(cuts(&[], &with), Ok(vec![(3, end(4, 0))]), "{f}");
     }
 }
 
@@ -431,13 +471,16 @@ fn t_junction_at_an_x_shared_with_many_events() {
         // Starting on the diagonal at x = 5, and ending on the bar there.
         let mut bad = segments.clone();
         bad.push(s(5. * f, 500. * f, 6. * f, 500. * f));
-        assert_eq!(check(&bad), Err(Conflict::EndpointOnSegment { segment: 400, endpoint_of: 403 }), "{f}");
+        assert_eq!(cuts(&[], &bad), Ok(vec![(400, end(403, 0))]), "{f}");
         let mut bad = segments.clone();
         bad.push(s(4. * f, 1500. * f, 5. * f, 1500. * f));
-        assert_eq!(check(&bad), Err(Conflict::EndpointOnSegment { segment: 401, endpoint_of: 403 }), "{f}");
-        // Both: the lower contact point, on the diagonal, is reported.
+        assert_eq!(cuts(&[], &bad), Ok(vec![(401, end(403, 1))]), "{f}");
+        // Both, listed by segment.
         bad.push(s(5. * f, 500. * f, 6. * f, 500. * f));
-        assert_eq!(check(&bad), Err(Conflict::EndpointOnSegment { segment: 400, endpoint_of: 404 }), "{f}");
+        assert_eq!(cuts(&[], &bad), Ok(vec![(400, end(404, 0)), (401, end(403, 1))]), "{f}");
+        // One more starting on the diagonal there, along it: an overlap.
+        bad.push(s(5. * f, 500. * f, 10. * f, 1000. * f));
+        assert_eq!(check(&bad), Err(Conflict::SegmentsOverlap { first: 400, second: 405 }), "{f}");
     }
 }
 
@@ -477,10 +520,36 @@ fn fault_injection_does_not_reach_the_check() {
 /// Every conflict of every pair, with its contact point: O(n²).
 fn all_conflicts(norm: &Normalised) -> Vec<(Conflict, ContactPoint)> {
     let m = norm.segments.len();
-    let segments = (0..m).flat_map(|i| (i + 1..m).map(move |j| (i, j))).filter_map(|(i, j)| segment_conflict_at(norm, i, j));
-    let points =
-        (0..norm.points.len()).flat_map(|q| (0..m).map(move |s| (q, s))).filter_map(|(q, s)| point_conflict_at(norm, q, s));
-    segments.chain(points).collect()
+    (0..m).flat_map(|i| (i + 1..m).map(move |j| (i, j))).filter_map(|(i, j)| segment_conflict_at(norm, i, j)).collect()
+}
+
+/// Every vertex inside every kept segment, by brute force, as (segment,
+/// the vertex's sort key), sorted: O(n²).
+fn all_splits(norm: &Normalised) -> Vec<(usize, (u64, u64))> {
+    let mut vertices: Vec<Point> =
+        norm.segments.iter().flat_map(|&(_, s)| s).chain(norm.points.iter().map(|&(_, q)| q)).collect();
+    vertices.sort_by_key(|&q| lex_key(q));
+    vertices.dedup();
+    let mut out: Vec<(usize, (u64, u64))> = (0..norm.segments.len())
+        .flat_map(|k| vertices.iter().filter(move |&&q| inside_segment(q, norm.segments[k].1)).map(move |&q| (k, lex_key(q))))
+        .collect();
+    out.sort_unstable();
+    out
+}
+
+/// Where a split's vertex is (internal coordinates).
+fn vertex_point(norm: &Normalised, v: Vertex) -> Point {
+    let lone = |src: PointSource| norm.points.iter().find(|&&(s, _)| s == src).expect("a kept point").1;
+    match v {
+        Vertex::Point(i) => lone(PointSource::Point(i)),
+        Vertex::End { segment, end } => match norm.kept_of_input[segment] {
+            Some(k) => {
+                assert_eq!(norm.segments[k].0, segment, "the vertex of a kept segment");
+                norm.segments[k].1[end]
+            }
+            None => lone(PointSource::Segment(segment)),
+        },
+    }
 }
 
 /// The smallest contact point of all conflicts, by brute force.
@@ -503,12 +572,20 @@ fn sweep_agrees(norm: &Normalised) -> Result<Option<(Conflict, ContactPoint)>, T
         (f, b) => prop_assert!(false, "sweep {:?}, brute force {:?}", f, b),
     }
     prop_assert_eq!(found.as_ref().map(|f| f.0), find_conflict(norm));
+    if found.is_none() {
+        // Every split, in order along each segment, and each vertex is
+        // where it says.
+        let (_, splits) = sweep(norm);
+        let got: Vec<(usize, (u64, u64))> = splits.iter().map(|c| (c.segment, lex_key(vertex_point(norm, c.at)))).collect();
+        prop_assert_eq!(got, all_splits(norm));
+    }
     Ok(found)
 }
 
-/// Whether integer input breaks the rules, decided independently of
+/// Whether integer input breaks the rules (a crossing or an overlap), and
+/// how many (vertex, segment) splits it has, decided independently of
 /// `segment_contact`: intersections computed in exact integer arithmetic.
-fn integer_oracle(points: &[(i64, i64)], segments: &[[(i64, i64); 2]]) -> bool {
+fn integer_oracle(points: &[(i64, i64)], segments: &[[(i64, i64); 2]]) -> (bool, usize) {
     let mut kept: Vec<[(i64, i64); 2]> = Vec::new();
     let mut lone: Vec<(i64, i64)> = points.to_vec();
     for &[a, b] in segments {
@@ -519,7 +596,11 @@ fn integer_oracle(points: &[(i64, i64)], segments: &[[(i64, i64); 2]]) -> bool {
         }
     }
     let pairs = (0..kept.len()).any(|i| (i + 1..kept.len()).any(|j| integer_pair_conflict(kept[i], kept[j])));
-    pairs || lone.iter().any(|&q| kept.iter().any(|&seg| integer_inside(q, seg)))
+    let mut vertices: Vec<(i64, i64)> = kept.iter().flatten().copied().chain(lone).collect();
+    vertices.sort_unstable();
+    vertices.dedup();
+    let splits = kept.iter().map(|&seg| vertices.iter().filter(|&&q| integer_inside(q, seg)).count()).sum();
+    (pairs, splits)
 }
 
 fn sub(a: (i64, i64), b: (i64, i64)) -> (i64, i64) {
@@ -537,7 +618,8 @@ fn integer_inside(q: (i64, i64), [a, b]: [(i64, i64); 2]) -> bool {
     cross(r, w) == 0 && 0 < dot(r, w) && dot(r, w) < dot(r, r)
 }
 
-/// Closed segments meet in anything but a common endpoint.
+/// Closed segments cross (at a point inside both) or overlap; an endpoint
+/// of one inside the other is a split, no conflict.
 fn integer_pair_conflict([a, b]: [(i64, i64); 2], [c, d]: [(i64, i64); 2]) -> bool {
     let (r, q, w) = (sub(b, a), sub(d, c), sub(c, a));
     let den = cross(r, q);
@@ -554,7 +636,7 @@ fn integer_pair_conflict([a, b]: [(i64, i64); 2], [c, d]: [(i64, i64); 2]) -> bo
     let (tn, un, den) = if den < 0 { (-tn, -un, -den) } else { (tn, un, den) };
     let meets = (0..=den).contains(&tn) && (0..=den).contains(&un);
     let at_end = |n: i64| n == 0 || n == den;
-    meets && !(at_end(tn) && at_end(un))
+    meets && !at_end(tn) && !at_end(un)
 }
 
 /// `v * scale + offset`, exact for the placements used here.
@@ -655,8 +737,13 @@ fn normalised(input: &IntInput, f: (f64, f64)) -> (Vec<Point>, Vec<[Point; 2]>, 
 fn run(input: &IntInput, f: (f64, f64)) -> Result<(), TestCaseError> {
     let (fp, fs, norm) = normalised(input, f);
     let found = sweep_agrees(&norm)?;
-    prop_assert_eq!(found.is_some(), integer_oracle(&input.0, &input.1));
-    prop_assert_eq!(check_segments(&fp, &fs).err(), found.map(|f| f.0));
+    let (conflict, splits) = integer_oracle(&input.0, &input.1);
+    prop_assert_eq!(found.is_some(), conflict);
+    let checked = check_segments(&fp, &fs);
+    prop_assert_eq!(checked.as_ref().err().copied(), found.map(|f| f.0));
+    if let Ok(checked) = checked {
+        prop_assert_eq!(checked.splits.len(), splits);
+    }
     Ok(())
 }
 
@@ -681,6 +768,9 @@ fn invariance(input: &IntInput, seed: u64) -> Result<(), TestCaseError> {
         let (_, _, other_norm) = normalised(&other, (1.0, 0.0));
         let again = sweep_agrees(&other_norm)?;
         prop_assert_eq!(again.is_some(), found.is_some());
+        if found.is_none() {
+            prop_assert_eq!(sweep(&other_norm).1.len(), sweep(&norm).1.len());
+        }
         if let (Some((_, a)), Some((_, b))) = (&found, &again) {
             prop_assert_eq!(a.cmp(b), Ordering::Equal);
         }
@@ -690,6 +780,9 @@ fn invariance(input: &IntInput, seed: u64) -> Result<(), TestCaseError> {
         (points.iter().map(|&(x, y)| (-x, y)).collect(), segments.iter().map(|s| s.map(|(x, y)| (-x, y))).collect());
     let (_, _, mirrored_norm) = normalised(&mirrored, (1.0, 0.0));
     prop_assert_eq!(sweep_agrees(&mirrored_norm)?.is_some(), found.is_some());
+    if found.is_none() {
+        prop_assert_eq!(sweep(&mirrored_norm).1.len(), sweep(&norm).1.len());
+    }
     // Scaled by powers of two: every decision is the same, so the same
     // conflict, and the same contact point in input coordinates.
     let input_contact = |f: (f64, f64), found: &Option<(Conflict, ContactPoint)>| {
@@ -704,6 +797,7 @@ fn invariance(input: &IntInput, seed: u64) -> Result<(), TestCaseError> {
         let (_, _, scaled_norm) = normalised(input, f);
         let again = sweep_agrees(&scaled_norm)?;
         prop_assert_eq!(again.as_ref().map(|f| f.0), found.as_ref().map(|f| f.0));
+        prop_assert_eq!(sweep(&scaled_norm).1, sweep(&norm).1);
         let expected = input_contact((1.0, 0.0), &found).map(|q| q.scaled(f.0));
         prop_assert_eq!(input_contact(f, &again), expected);
     }
