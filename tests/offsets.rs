@@ -416,3 +416,16 @@ fn straight_vertices_of_issue_27_give_the_closed_form_areas() {
     let want = 32.0 * ((inradius - 0.5) / inradius).powi(2);
     assert!((o.area() - want).abs() < 1e-9 * want, "{} for {want}", o.area());
 }
+
+/// Rings that touch at points (testgen's `rings-touching`: diamonds
+/// sharing corners, touching the outer square inside its sides), valid OGC
+/// polygons that build as they are: the offsets by brute force, at the
+/// distances of every case (the diamonds' cells are exactly cocircular).
+#[test]
+fn rings_touching_at_points() {
+    for seed in 1..=4 {
+        let n = [8, 16, 30, 50][seed as usize - 1];
+        let rings = testgen::straight::touching_rings(n, &mut testgen::Rng(seed));
+        run(&from_rings(format!("rings-touching n={n} seed={seed}"), &rings), true, seed);
+    }
+}

@@ -451,6 +451,15 @@ fn hole_touching_its_shell_at_a_corner_and_inside_an_edge() {
     ]));
 }
 
+/// A hole all of whose corners lie on its shell (a diamond in a square,
+/// the domain four triangles): no corner of the hole tells which side of
+/// the shell it is on; where its sides leave them does.
+#[test]
+fn a_hole_touching_its_shell_at_every_corner() {
+    check_everywhere(&polygon(vec![square(0, 0, 4), vec![[4, 2], [2, 4], [0, 2], [2, 0]]]));
+    check_everywhere(&polygon(vec![square(0, 0, 6), vec![[0, 0], [6, 3], [3, 6]]]));
+}
+
 #[test]
 fn two_holes_touching() {
     // at a corner of both

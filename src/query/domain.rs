@@ -444,15 +444,25 @@ impl Diagram {
     /// The other rings that contain ring `r` (rings neither cross nor
     /// overlap, so one corner of `r` not on another ring tells).
     fn enclosing_rings(&self, rings: &[Ring], r: usize) -> Vec<usize> {
+        let corners = &rings[r].corners;
+        let n = corners.len();
         (0..rings.len())
             .filter(|&other| other != r && rings[other].bounds.holds(&rings[r].bounds))
             .filter(|&other| {
-                rings[r]
-                    .corners
+                let by_corner = corners
                     .iter()
                     .map(|&c| self.ring_location(&rings[other], self.point_of(c)))
                     .find(|&l| l != Location::Boundary)
-                    == Some(Location::Inside)
+                    .map(|l| l == Location::Inside);
+                // every corner on the other ring (a hole touching its shell
+                // at all its corners, each a corner of both after the
+                // exact split): where a side of `r` leaves its corner
+                by_corner.or_else(|| {
+                    (0..n).find_map(|k| {
+                        let (p, q) = (self.point_of(corners[k]), self.point_of(corners[(k + 1) % n]));
+                        self.ring_holds_direction(&rings[other], p, q)
+                    })
+                }) == Some(true)
             })
             .collect()
     }
@@ -474,32 +484,45 @@ impl Diagram {
 
     /// Whether the segment from the ring corner `p` towards `q` starts
     /// inside the domain: the parity of the rings whose region holds that
-    /// direction at `p` (a ring's region is the wedge at `p` on its inside,
-    /// the left of a counter-clockwise ring). Collinear with a ring's side
-    /// (an overlap the input check refuses): the boundary.
+    /// direction at `p` (`ring_holds_direction`). Collinear with a ring's
+    /// side (an overlap the input check refuses): the boundary.
     fn direction_location(&self, rings: &[Ring], p: Point, q: Point) -> Location {
         let mut inside = false;
         for ring in rings.iter().filter(|r| r.bounds.holds_point(p)) {
-            let n = ring.corners.len();
-            for k in (0..n).filter(|&k| self.point_of(ring.corners[k]) == p) {
-                let (before, after) = (self.point_of(ring.corners[(k + n - 1) % n]), self.point_of(ring.corners[(k + 1) % n]));
-                // the region's wedge runs counter-clockwise from `from` to `to`
-                let (from, to) = if self.is_counter_clockwise(ring) { (after, before) } else { (before, after) };
-                let (turn_from, turn_to) = (orientation(p, from, q), orientation(p, q, to));
-                if turn_from == Orientation::Collinear || turn_to == Orientation::Collinear {
-                    return Location::Boundary;
-                }
-                let ccw = Orientation::CounterClockwise;
-                let holds = if orientation(p, from, to) == ccw {
-                    turn_from == ccw && turn_to == ccw
-                } else {
-                    // a reflex wedge: all but the convex one the other way
-                    !(turn_from != ccw && turn_to != ccw)
-                };
-                inside ^= holds;
+            match self.ring_holds_direction(ring, p, q) {
+                Some(holds) => inside ^= holds,
+                None => return Location::Boundary,
             }
         }
         inside_if(inside)
+    }
+
+    /// Whether the direction from `p` towards `q` enters the region of
+    /// `ring` (inside it) at `p`, as parity over the ring's corners at `p`
+    /// (a ring's region is the wedge at a corner on its inside, the left of
+    /// a counter-clockwise ring; false where `p` is no corner); `None` when
+    /// the direction runs along a side.
+    fn ring_holds_direction(&self, ring: &Ring, p: Point, q: Point) -> Option<bool> {
+        let n = ring.corners.len();
+        let mut inside = false;
+        for k in (0..n).filter(|&k| self.point_of(ring.corners[k]) == p) {
+            let (before, after) = (self.point_of(ring.corners[(k + n - 1) % n]), self.point_of(ring.corners[(k + 1) % n]));
+            // the region's wedge runs counter-clockwise from `from` to `to`
+            let (from, to) = if self.is_counter_clockwise(ring) { (after, before) } else { (before, after) };
+            let (turn_from, turn_to) = (orientation(p, from, q), orientation(p, q, to));
+            if turn_from == Orientation::Collinear || turn_to == Orientation::Collinear {
+                return None;
+            }
+            let ccw = Orientation::CounterClockwise;
+            let holds = if orientation(p, from, to) == ccw {
+                turn_from == ccw && turn_to == ccw
+            } else {
+                // a reflex wedge: all but the convex one the other way
+                !(turn_from != ccw && turn_to != ccw)
+            };
+            inside ^= holds;
+        }
+        Some(inside)
     }
 
     /// The even-odd location of `p` against all rings.
