@@ -36,12 +36,7 @@ const TOLERANCE: f64 = 1e-7;
 
 /// Fixtures on which the library is known to be wrong, with the reason.
 /// Delete an entry once the fixture passes (the test says when).
-const KNOWN: &[(&str, &str)] = &[(
-    "subnormal_nudged_joint_2seg.txt",
-    "a chain tip whose far joint is moved off the line by the least subnormal: the circle of the tip, \
-     its segment and the next one is placed at the tip with radius 0 (pss_endpoint's near root touches \
-     the next segment's line beyond its end) where it lies beyond the range of f64",
-)];
+const KNOWN: &[(&str, &str)] = &[];
 
 type Segment = [[f64; 2]; 2];
 

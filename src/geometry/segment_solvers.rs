@@ -255,6 +255,12 @@ fn normal_toward<T: Real>(a: Point, b: Point, p: Point, lift: &impl Fn(f64) -> T
     };
     let near = if p.distance_squared(a) <= p.distance_squared(b) { a } else { b };
     let h = n.dot(&Vector::between(near, p, lift)).abs();
+    if h.signum() == 0 {
+        // `p` is off the line (exact test), so its distance is not zero: the
+        // arithmetic lost it (a normal tilted below the least subnormal
+        // rounds to an axis), and no circle is found in it
+        return None;
+    }
     // the rounded normal tilts by an ulp: an error of about |p - near| ulps
     let condition = p.distance(near) / h.to_f64();
     Some((n, h, condition))
