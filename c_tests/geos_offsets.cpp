@@ -10,7 +10,7 @@
 // very non-convex) with 0..5 random star-shaped holes placed so that they
 // touch neither each other nor the outer ring; regular n-gons; a disk-like
 // 4096-gon; and, with --glyphs DIR, the glyph outlines DIR/glyph_{B,8,g}.rings
-// and the country outlines DIR/dcw_*.rings (km)
+// and the country and island outlines DIR/dcw_*.rings, gshhg_islands_*.rings (km)
 // (the rings format: "rings R", then per ring its point count K and K lines
 // "x y"; '#' starts a comment; the region is the even-odd one). Each at
 // fixed fractions of its size, negative (shrinking, up to beyond the
@@ -939,11 +939,13 @@ int main(int argc, char **argv) {
     }
     // Country outlines in km (scripts/country_rings.py: the Digital Chart
     // of the World, gmt-dcw), with their straight and nearly straight
-    // vertices, enclaves and islands: every dcw_*.rings beside the glyphs.
+    // vertices, enclaves and islands, and GSHHG's islands of a sea
+    // (scripts/island_rings.py): every dcw_*.rings and gshhg_islands_*.rings
+    // beside the glyphs.
     std::vector<std::string> countries;
     for (const auto &entry : std::filesystem::directory_iterator(glyphs)) {
       std::string file = entry.path().filename().string();
-      if (file.rfind("dcw_", 0) == 0 && file.size() > 6 && file.substr(file.size() - 6) == ".rings") countries.push_back(file);
+      if ((file.rfind("dcw_", 0) == 0 || file.rfind("gshhg_islands_", 0) == 0) && file.size() > 6 && file.substr(file.size() - 6) == ".rings") countries.push_back(file);
     }
     std::sort(countries.begin(), countries.end());
     for (const std::string &file : countries) {

@@ -1,6 +1,8 @@
 //! Country outlines as a GIS user holds them (issue 27): the Digital Chart
 //! of the World from Debian's gmt-dcw, projected to kilometres
-//! (`scripts/country_rings.py`, `tests/data/dcw_*.rings`), full of straight
+//! (`scripts/country_rings.py`, `tests/data/dcw_*.rings`), and the islands
+//! of the Aegean from GSHHG (`scripts/island_rings.py`,
+//! `tests/data/gshhg_islands_*.rings`), full of straight
 //! and nearly straight vertices (points of one line of the integer grid,
 //! rounded by the projection), enclaves as holes, and islands. For each:
 //! the diagram validates; the medial axis lies inside, each sample at the
@@ -22,7 +24,7 @@ fn countries() -> Vec<(String, Vec<Vec<[f64; 2]>>)> {
     for entry in std::fs::read_dir(dir).unwrap() {
         let path = entry.unwrap().path();
         let name = path.file_name().unwrap().to_str().unwrap().to_string();
-        if name.starts_with("dcw_") && name.ends_with(".rings") {
+        if (name.starts_with("dcw_") || name.starts_with("gshhg_islands_")) && name.ends_with(".rings") {
             let rings = read_rings(&std::fs::read_to_string(&path).unwrap()).unwrap_or_else(|e| panic!("{name}: {e}"));
             out.push((name, rings));
         }
