@@ -646,18 +646,14 @@ foreach(_run "near-vertical 1000 1" "boost-split 300 1" "fan 16 1" "square-hole 
   segvoronoi_cgal_straight_test(${_family}+nudged ${_count} ${_seed})
 endforeach()
 # Rings that touch at points (a hole's corner on the outer ring, two holes
-# sharing a corner; straight.rs touching_rings): the library rejects them
-# until touching rings are split exactly (another branch); then enable by
-# setting SEGVORONOI_TEST_TOUCHING_RINGS. (CGAL's traits without
-# intersections do not take a T-junction either: the harness would need to
-# split the touched segment on CGAL's side and map the names.)
-option(SEGVORONOI_TEST_TOUCHING_RINGS "cross-check rings that touch at points (needs the library to accept them)" OFF)
-if(SEGVORONOI_TEST_TOUCHING_RINGS)
-  foreach(_run "rings-touching 16 1" "rings-touching 100 2" "rings-touching+straight 100 3")
-    separate_arguments(_run)
-    segvoronoi_cgal_straight_test(${_run})
-  endforeach()
-endif()
+# sharing a corner; straight.rs touching_rings): the library splits a side
+# at a corner inside it exactly; CGAL's traits without intersections take
+# shared endpoints but no T-junction, so the cross-check gets the rings
+# with those corners inserted (rings-touching-split, what the split makes).
+foreach(_run "rings-touching-split 16 1" "rings-touching-split 100 2" "rings-touching-split+straight 100 3")
+  separate_arguments(_run)
+  segvoronoi_cgal_straight_test(${_run})
+endforeach()
 # Known failures (issue 27; WILL_FAIL, label known_failure: remove a name
 # here when it passes, `ctest -L known_failure` lists them). They are the
 # library's (CGAL's exact segment Delaunay graph decides every predicate

@@ -30,7 +30,8 @@ use std::io::{self, Write};
 
 /// The ring families, in the order `--list` prints them (after the others;
 /// compared as "polygon"). See [`generate_rings`].
-pub const RING_FAMILIES: &[&str] = &["rings-holes", "rings-inscribed", "rings-inscribed-jitter", "glyphs", "rings-touching"];
+pub const RING_FAMILIES: &[&str] =
+    &["rings-holes", "rings-inscribed", "rings-inscribed-jitter", "glyphs", "rings-touching", "rings-touching-split"];
 
 /// The glyph fixtures (scripts/glyph_rings.py): B, 8 and g of DejaVu Sans.
 pub const GLYPHS: &[(&str, &str)] = &[
@@ -57,8 +58,10 @@ pub const GLYPHS: &[(&str, &str)] = &[
 ///   scaled by 2^-10, 2^10, 2^-20, 2^20 in turn: exact, so the same
 ///   topology); `n` is ignored.
 /// - `rings-touching`: rings that touch at points
-///   ([`crate::straight::touching_rings`]; not legal input until the
-///   library splits such contacts).
+///   ([`crate::straight::touching_rings`]: T-junctions, which the library
+///   splits exactly); `rings-touching-split`: the same with each touching
+///   corner inserted in the side it touches
+///   ([`crate::straight::split_at_corners`]), for the CGAL cross-check.
 ///
 /// Each family also comes as every variant of
 /// [`crate::straight::VARIANTS`] (`rings-holes+straight`): its rings with
@@ -81,6 +84,7 @@ pub fn generate_rings(family: &str, n: usize, seed: u64) -> Option<Vec<Vec<Point
             Some(rings.into_iter().map(|r| r.into_iter().map(|[x, y]| [unit * x, unit * y]).collect()).collect())
         }
         "rings-touching" if n >= 4 => Some(crate::straight::touching_rings(n, rng)),
+        "rings-touching-split" if n >= 4 => Some(crate::straight::split_at_corners(&crate::straight::touching_rings(n, rng))),
         _ => None,
     }
 }
@@ -320,7 +324,7 @@ mod tests {
         let variants = crate::straight::VARIANTS.iter().map(|(suffix, _)| *suffix);
         let names: Vec<String> = RING_FAMILIES
             .iter()
-            .filter(|&&family| family != "rings-touching") // touching by design
+            .filter(|&&family| !family.starts_with("rings-touching")) // touching by design
             .flat_map(|family| {
                 std::iter::once(String::new()).chain(variants.clone().map(String::from)).map(move |v| format!("{family}{v}"))
             })

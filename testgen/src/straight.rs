@@ -280,6 +280,33 @@ pub fn cut_rings(rings: &[Vec<Point>], straight: &Straight, rng: &mut Rng) -> Ve
     result
 }
 
+/// The rings with every corner of a ring that lies inside a side of
+/// another (a T-junction, exact test) inserted there as a corner of that
+/// side too, in order along it: what the library's exact split makes of
+/// touching rings, as input CGAL's segment Delaunay graph (which takes
+/// shared endpoints, not T-junctions) takes as well
+/// (`rings-touching-split`).
+pub fn split_at_corners(rings: &[Vec<Point>]) -> Vec<Vec<Point>> {
+    let corners: Vec<Point> = rings.iter().flatten().copied().collect();
+    rings
+        .iter()
+        .map(|ring| {
+            let mut out = Vec::new();
+            for k in 0..ring.len() {
+                let (a, b) = (ring[k], ring[(k + 1) % ring.len()]);
+                out.push(a);
+                let mut inside: Vec<Point> =
+                    corners.iter().copied().filter(|&c| crate::exact::in_open_segment([a, b], c)).collect();
+                let along = |p: &Point| (p[0] - a[0]).abs() + (p[1] - a[1]).abs();
+                inside.sort_by(|p, q| along(p).total_cmp(&along(q)));
+                inside.dedup();
+                out.extend(inside);
+            }
+            out
+        })
+        .collect()
+}
+
 /// `rings-touching`: rings that touch each other at single points, as
 /// users' polygons do (a hole whose corner lies on the outer ring, two
 /// holes sharing a corner). The outer ring is the square `[0, 2m]^2` with
