@@ -654,36 +654,20 @@ foreach(_run "rings-touching-split 16 1" "rings-touching-split 100 2" "rings-tou
   separate_arguments(_run)
   segvoronoi_cgal_straight_test(${_run})
 endforeach()
-# Known failures (issue 27; WILL_FAIL, label known_failure: remove a name
-# here when it passes, `ctest -L known_failure` lists them). They are the
-# library's (CGAL's exact segment Delaunay graph decides every predicate
-# exactly; the harness's zero length is CGAL's vertex constructed exactly):
+# Found by the straight families (issue 27), fixed since:
 # - a straight joint (a vertex where a chain goes on straight) has a cell of
 #   no width, so every edge of it but its two separators has length zero;
-#   both Delaunay graphs agree exactly (EDGES, FACES), but the library gives
-#   an edge of such a cell a positive length (VPAIRS): in
+#   the library's topology text kept one of them (VPAIR P1 S1 between the
+#   vertices P1 S0 S1 and P1 S1 S3, one point) in 2 of the 24 orders of
 #   straight_joint_zero_length_4seg (minimised from polyline+straight 2048
-#   seed 1: S0 and S3 meet straight at P1, S3 and S1 turn sharply at their
-#   joint, S2 is apart; the library has the VPAIR P1 S1 and the vertices
-#   P1 S0 S1 and P1 S1 S3, CGAL one vertex P1 S0 S1 S3; the first 32-segment
-#   cut of it agreed with its segments in reverse order, and 2 of the 24
-#   orders of these four differ: the library's
-#   answer depends on the insertion order);
-#   also polyline+runs 512 seed 11 (and 2048 seed 2, 512 seed 13) and
-#   boost-split+straight 300 seed 1 (and seed 2, 500 seed 3; integer
-#   coordinates: many straight joints), the same kind: EDGES and FACES
-#   agree, VPAIRS differ.
-# (Fixed: two spokes from one point, each with a joint one ulp from
-# straight, nudged_joints_two_spokes_4seg and star+nudged 64 seed 1, whose
-# Delaunay graph differed: the circle of three segments of a chain with
-# nearly straight joints is now solved on the joints' bisectors.)
-set(_segvoronoi_straight_known_failures
-  cgal_polyline_runs_512_seed11 cgal_boost-split_straight_300_seed1)
-set_tests_properties(${_segvoronoi_straight_known_failures} PROPERTIES WILL_FAIL TRUE)
-foreach(_name ${_segvoronoi_straight_known_failures})
-  get_test_property(${_name} LABELS _labels)
-  set_tests_properties(${_name} PROPERTIES LABELS "${_labels};known_failure")
-endforeach()
+#   seed 1), also polyline+runs 512 seed 11 and boost-split+straight 300
+#   seed 1: the zero-length test now knows that a vertex touching a joint
+#   and a segment ending there lies on their separator, which a segment
+#   going on straight shares (oracle::on_circle);
+# - two spokes from one point, each with a joint one ulp from straight
+#   (nudged_joints_two_spokes_4seg, star+nudged 64 seed 1), whose Delaunay
+#   graph differed: the circle of three segments of a chain with nearly
+#   straight joints is now solved on the joints' bisectors.
 segvoronoi_cgal_fixture_test(straight_joint_zero_length_4seg --degenerate)
 segvoronoi_cgal_fixture_test(nudged_joints_two_spokes_4seg)
 # chains with joints an ulp off straight, whose vertices of three segments
@@ -693,8 +677,6 @@ foreach(_fixture nudged_joint_ulp_3seg nudged_chain_two_joints_3seg nudged_chain
   segvoronoi_cgal_fixture_test(${_fixture})
 endforeach()
 unset(_fixture)
-set_tests_properties(cgal_fixture_straight_joint_zero_length_4seg PROPERTIES WILL_FAIL TRUE LABELS "cgal;known_failure")
-unset(_segvoronoi_straight_known_failures)
 unset(_labels)
 unset(_name)
 unset(_run)

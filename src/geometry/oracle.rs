@@ -72,7 +72,7 @@ use super::certified::{certified_evaluation, Certified};
 use super::double_double::DoubleDouble;
 use super::expansion::Expansion;
 use super::point::{norm, Point};
-use super::predicates::{in_circle, CirclePosition};
+use super::predicates::{exact_orientation, in_circle, strictly_between, CirclePosition, Orientation};
 use super::quadratic_vertex;
 use super::radical_tower::{exact_evaluation, Algebraic};
 use super::real::Real;
@@ -170,7 +170,22 @@ pub(crate) fn on_circle(sites: &[Site; 3], centre: Point, radius: f64, fourth: &
             _ => on(Reach::Distance { a: q, b: q }),
         },
         Site::Segment { a, b } => match sites.iter().find_map(|g| g.as_point().filter(|&p| p == a || p == b)) {
-            Some(e) => on(Reach::Entering { from: e, to: if e == a { b } else { a } }),
+            Some(e) => {
+                let to = if e == a { b } else { a };
+                // The vertex touches the cell of `e` and of a segment of
+                // `sites` ending at `e`, so it lies on their separator, that
+                // segment's perpendicular at `e`: where `fourth` goes on
+                // straight from it (a straight joint), that is `fourth`'s
+                // perpendicular too, exactly, whatever the rounding.
+                let goes_on_straight = sites.iter().any(|s| match *s {
+                    Site::Segment { a: sa, b: sb } if sa == e || sb == e => {
+                        let back = if sa == e { sb } else { sa };
+                        exact_orientation(back, e, to) == Orientation::Collinear && strictly_between(back, to, e)
+                    }
+                    _ => false,
+                });
+                goes_on_straight || on(Reach::Entering { from: e, to })
+            }
             // the closed segment's nearest point on the circle: tangent
             // inside it, or touching at an endpoint (which is then a site
             // on the circle too, and the two vertices one point: five
