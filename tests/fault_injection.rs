@@ -243,6 +243,9 @@ fn closed_chains() -> (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>) {
 /// completes.
 #[test]
 fn exhausted_restarts_give_internal_not_an_invalid_diagram() {
+    // Random lies need a restart on about one seed in 16 of these chains
+    // (8 of 128 since the joint solvers of issue 27; 32 seeds found none)
+    const SEEDS: u64 = 128;
     let (pts, segs) = closed_chains();
     let mut b = Builder::new();
     b.add_points(pts.iter().copied()).unwrap();
@@ -252,7 +255,7 @@ fn exhausted_restarts_give_internal_not_an_invalid_diagram() {
         for budget in [0, 1, 2, 16] {
             let _budget = RestartBudget::set(budget);
             let mut count = 0;
-            for seed in 0..32 {
+            for seed in 0..SEEDS {
                 let Err(e) = try_build_with(mode, seed, &b) else { continue };
                 count += 1;
                 let &[j] = e.indices() else { panic!("{mode:?} seed {seed}: {e} names no segment") };
