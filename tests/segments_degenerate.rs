@@ -157,3 +157,39 @@ fn near_vertical_segments() {
     }
     check_at_all_scales("near vertical", &[[0.25, 5.5], [7.0, 10.0]], &segs);
 }
+
+/// A chain going on straight through a joint next to a sharp turn (the
+/// fixture `straight_joint_zero_length_4seg`, from testgen's
+/// `polyline+straight`): the joint's cell has no width, so its edges other
+/// than the separators have length zero whatever the insertion order; the
+/// topology text (VPAIRS, VVERTICES) was one pair longer in 2 of the 24
+/// orders.
+#[test]
+fn a_straight_joint_has_the_same_topology_text_in_every_order() {
+    use segvoronoi::{Builder, TopologyOptions};
+    let text = include_str!("../c_tests/fixtures/straight_joint_zero_length_4seg.txt");
+    let input = segvoronoi::boost_text::parse(text).unwrap();
+    let segments: Vec<Segment> = input.segments.iter().map(|&[x0, y0, x1, y1]| [[x0, y0], [x1, y1]]).collect();
+    let shape = |order: &[usize]| {
+        let mut b = Builder::new();
+        b.add_segments(order.iter().map(|&k| segments[k])).unwrap();
+        let text = b.build().unwrap().topology(TopologyOptions::default().with_voronoi_pairs(true));
+        // counts per section, which do not depend on the names
+        let header = |l: &&str| l.split(' ').next().is_some_and(|w| w.len() > 2 && w.chars().all(|c| c.is_ascii_uppercase()));
+        text.lines().filter(header).map(str::to_string).collect::<Vec<_>>()
+    };
+    let first = shape(&[0, 1, 2, 3]);
+    let mut orders = Vec::new();
+    for a in 0..4 {
+        for b in (0..4).filter(|&b| b != a) {
+            for c in (0..4).filter(|&c| c != a && c != b) {
+                let d = 6 - a - b - c;
+                orders.push(vec![a, b, c, d]);
+            }
+        }
+    }
+    assert_eq!(orders.len(), 24);
+    for order in orders {
+        assert_eq!(shape(&order), first, "order {order:?}");
+    }
+}
