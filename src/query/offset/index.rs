@@ -169,8 +169,9 @@ impl Diagram {
     pub(super) fn offset_may_cross(&self, e: EdgeId, side: Side) -> bool {
         match (self.edge_location(e), side) {
             (None, _) => true,
-            (Some(l), Side::Grow) => l == Location::Outside || self.inside_end_through_corner(e).is_some(),
-            (Some(l), Side::Shrink) => l == Location::Inside || self.inside_end_through_corner(e).is_some(),
+            _ if self.inside_end_through_corner(e).is_some() => true,
+            (Some(l), Side::Grow) => l == Location::Outside,
+            (Some(l), Side::Shrink) => l == Location::Inside,
         }
     }
 
