@@ -164,51 +164,34 @@ impl Vertex {
         if !(delta.is_finite() && a.is_finite() && c.is_finite() && k01.is_finite()) || delta.sign() < 0 {
             return None;
         }
-        if a.sign() == 0 {
+        // (numerator, denominator, Δ, ε, sign of A, sign of the denominator)
+        let (numerator, denominator, delta, epsilon, sign_a, sign_denominator) = if a.sign() == 0 {
             // linear: −2k₀k₁ s + C = 0
             let denominator = k01.plus(&k01);
             if denominator.sign() == 0 {
                 return None;
             }
             let sign_denominator = denominator.sign();
-            let (numerator, delta) = (c.clone(), Expansion::default());
-            return Some(Vertex {
-                p,
-                mx,
-                my,
-                wx,
-                wy,
-                ww,
-                k0,
-                k1,
-                k01,
-                a,
-                c,
-                numerator,
-                denominator,
-                delta,
-                epsilon: 0,
-                sign_a: 0,
-                sign_denominator,
-            });
-        }
-        // the root nearest the rounded centre: s = (2c − M)·w / |w|²
-        let (wxf, wyf, wwf) = (wx.approximate(), wy.approximate(), ww.approximate());
-        let s = ((2.0 * centre.x - mx.approximate()) * wxf + (2.0 * centre.y - my.approximate()) * wyf) / wwf;
-        let (af, mid) = (a.approximate(), k01.approximate() / a.approximate());
-        let half = delta.approximate().sqrt() / af.abs();
-        let epsilon = if delta.sign() == 0 {
-            0
+            (c.clone(), denominator, Expansion::default(), 0, 0, sign_denominator)
         } else {
-            let epsilon: i8 = if s >= mid { 1 } else { -1 };
-            // clearly nearer that root than the other: refuse otherwise
-            let miss = (s - (mid + f64::from(epsilon) * half)).abs();
-            if !(miss < 0.25 * half) {
-                return None;
-            }
-            epsilon
+            // the root nearest the rounded centre: s = (2c − M)·w / |w|²
+            let (wxf, wyf, wwf) = (wx.approximate(), wy.approximate(), ww.approximate());
+            let s = ((2.0 * centre.x - mx.approximate()) * wxf + (2.0 * centre.y - my.approximate()) * wyf) / wwf;
+            let (af, mid) = (a.approximate(), k01.approximate() / a.approximate());
+            let half = delta.approximate().sqrt() / af.abs();
+            let epsilon = if delta.sign() == 0 {
+                0
+            } else {
+                let epsilon: i8 = if s >= mid { 1 } else { -1 };
+                // clearly nearer that root than the other: refuse otherwise
+                let miss = (s - (mid + f64::from(epsilon) * half)).abs();
+                if !(miss < 0.25 * half) {
+                    return None;
+                }
+                epsilon
+            };
+            (k01.clone(), a.clone(), delta, epsilon, a.sign(), a.sign())
         };
-        let (numerator, denominator, sign_a) = (k01.clone(), a.clone(), a.sign());
         Some(Vertex {
             p,
             mx,
@@ -226,7 +209,7 @@ impl Vertex {
             delta,
             epsilon,
             sign_a,
-            sign_denominator: sign_a,
+            sign_denominator,
         })
     }
 
