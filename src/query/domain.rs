@@ -148,8 +148,7 @@ impl Diagram {
     /// [`Diagram::edge_location`]), which of its ends (an index into
     /// `Edge::ends`) lies inside the domain; `None` for every other edge.
     pub(crate) fn inside_end_through_corner(&self, e: EdgeId) -> Option<usize> {
-        let through = &self.domain.as_ref()?.through;
-        through.binary_search_by_key(&e, |&(edge, _)| edge).ok().map(|k| through[k].1)
+        inside_end(&self.domain.as_ref()?.through, e)
     }
 
     /// Where a cell lies; `None` without a domain or out of range.
@@ -249,7 +248,7 @@ impl Diagram {
         // the rings, and such vertices that of their edges: a vertex off
         // the rings lies strictly on one side, and so does every edge from
         // it that does not pass through a straight corner.
-        let is_through = |e: usize| through.binary_search_by_key(&EdgeId::from_index(e), |&(t, _)| t).is_ok();
+        let is_through = |e: usize| inside_end(&through, EdgeId::from_index(e)).is_some();
         let mut queue: Vec<usize> = (0..vertex.len()).filter(|&v| vertex[v] != Location::Boundary).collect();
         while let Some(v) = queue.pop() {
             for h in self.vertex_half_edges(VertexId::from_index(v)).expect("a finite vertex") {
@@ -571,6 +570,12 @@ impl Diagram {
             Site::Segment { a, .. } => a,
         }
     }
+}
+
+/// The inside end of `e` in the sorted list of edges through straight
+/// corners (`Domain::through`); `None` when `e` is not one.
+fn inside_end(through: &[(EdgeId, usize)], e: EdgeId) -> Option<usize> {
+    through.binary_search_by_key(&e, |&(edge, _)| edge).ok().map(|k| through[k].1)
 }
 
 fn inside_if(inside: bool) -> Location {
