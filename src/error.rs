@@ -26,6 +26,16 @@ pub enum ErrorKind {
     /// failed, when one did. No diagram is returned and the builder is
     /// unchanged.
     Internal,
+    /// The input's coordinates span more than the range in which every
+    /// sign is decided exactly in `f64` (their largest magnitude more than
+    /// `2^480`, about `3e144`, times their smallest nonzero magnitude or
+    /// difference: `1e300` beside `1`, say), and the construction at that
+    /// span could not complete a valid diagram. The message names the two
+    /// coordinates and the range; scaling cannot help (the ratio stays),
+    /// rounding the smallest differences away or splitting the input in
+    /// parts of narrower span can. Inputs of such a span that build are
+    /// checked before they are returned.
+    UnsupportedRange,
 }
 
 /// A build or insertion error: its kind, a message that names the

@@ -250,6 +250,11 @@ impl Builder {
     /// sound arithmetic it does not happen), with a message saying what
     /// failed. The builder stays as it was.
     pub fn build(&self) -> Result<Diagram, Error> {
+        super::exact_range::checked_build(&self.points, &self.segments, || self.build_at_any_span())
+    }
+
+    /// `build` without the check of inputs beyond the exact range.
+    fn build_at_any_span(&self) -> Result<Diagram, Error> {
         if self.split_crossings && !self.segments.is_empty() {
             let mut diagram = super::split::diagram_of_split(&self.points, &self.segments, &self.rings)?;
             diagram.stats.dropped_chain_points = self.dropped_chain_points;

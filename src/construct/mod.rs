@@ -26,6 +26,7 @@
 mod builder;
 mod collinear;
 mod deletion_tree;
+mod exact_range;
 mod input_check;
 mod insert_point;
 mod insert_segment;
@@ -250,11 +251,11 @@ fn endpoint_index(points: usize, j: usize) -> [usize; 2] {
 /// insertions (below, a thread costs more than it saves).
 const PARALLEL_CHECK_FROM: usize = 20_000;
 
-/// The one power-of-two scale of a build (`Scale::for_coordinates` of every
+/// The one power-of-two scale of a build (`Scale::for_points` of every
 /// coordinate, points and segment endpoints): the input check and the
 /// insertions both work in the coordinates it makes.
 fn input_scale(points: &[Point], segments: &[[Point; 2]]) -> Scale {
-    Scale::for_coordinates(points.iter().chain(segments.iter().flatten()).flat_map(|p| [p.x, p.y]))
+    Scale::for_points(points.iter().chain(segments.iter().flatten()))
 }
 
 /// `input` in the construction's coordinates (scaled, with `-0` made `+0`).

@@ -83,14 +83,19 @@ pub(super) fn renumber(
     let finite_vertices =
         (0..store.vertex_count()).find(|&v| store.is_at_infinity(VertexId::from_index(v))).unwrap_or(store.vertex_count());
 
-    if !scale.is_identity() {
-        for v in 0..finite_vertices {
-            // (a coordinate saturated at ±f64::MAX, of a vertex beyond the
-            // range of f64, stays saturated)
-            let unscaled = |x: f64| if x.abs() == f64::MAX { x } else { x * scale.to_input };
-            let p = store.position[v];
-            store.position[v] = Point::new(unscaled(p.x), unscaled(p.y));
-            store.clearance[v] *= scale.to_input;
+    for v in 0..finite_vertices {
+        // A vertex beyond the range of f64 keeps its coordinates saturated
+        // at ±f64::MAX (internally too); one within it may still leave it when
+        // scaled back (an input near f64::MAX scaled down), or have
+        // overflowed on the way (an internal coordinate of ±∞), and
+        // saturates the same way, with an infinite clearance.
+        let unscaled = |x: f64| if x.abs() == f64::MAX { x } else { (x * scale.to_input).clamp(-f64::MAX, f64::MAX) };
+        let p = store.position[v];
+        let q = Point::new(unscaled(p.x), unscaled(p.y));
+        store.position[v] = q;
+        store.clearance[v] *= scale.to_input;
+        if store.clearance[v].is_nan() && (q.x.abs() == f64::MAX || q.y.abs() == f64::MAX) {
+            store.clearance[v] = f64::INFINITY;
         }
     }
 
@@ -140,9 +145,10 @@ fn bounding_box_diagonal(point_sites: &[Site]) -> f64 {
     let Some(first) = points.next() else { return 0.0 };
     let (lo, hi) = points
         .fold((first, first), |(lo, hi), p| (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y))));
-    // halve first so that the extent of huge inputs does not overflow
+    // halve first so that the extent of huge inputs does not overflow;
+    // a diagonal beyond f64 (a box from -f64::MAX to f64::MAX) saturates
     let (dx, dy) = (hi.x / 2.0 - lo.x / 2.0, hi.y / 2.0 - lo.y / 2.0);
-    2.0 * dx.hypot(dy)
+    (2.0 * dx.hypot(dy)).min(f64::MAX)
 }
 
 /// The per-input maps and statistics of a build with segments, after

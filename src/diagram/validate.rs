@@ -30,7 +30,8 @@ impl Store {
     /// - twins are mutual, distinct, on different vertices, and see the same
     ///   two cells from opposite sides (so the cyclic order of edges around
     ///   each vertex matches the cell structure);
-    /// - every vertex has degree 3 and three distinct cells;
+    /// - every vertex has degree 3 and three distinct cells, a finite
+    ///   position and a clearance that is not NaN or negative;
     /// - the graph is connected and Euler's formula `V - E + F = 2` holds,
     ///   with `F` the number of face cycles;
     /// - every site with a cell has exactly one face cycle, which is its
@@ -68,6 +69,13 @@ impl Store {
         for v in (0..nv).map(VertexId::from_index) {
             let [a, b, c] = self.sites_of(v);
             ensure!(a != b && b != c && a != c, "vertex {v} repeats a cell: {a} {b} {c}");
+            if !self.is_at_infinity(v) {
+                // saturated at ±f64::MAX beyond the range of f64, never
+                // infinite or NaN (clearance: infinite there, never NaN)
+                let (p, r) = (self.position[v.index()], self.clearance[v.index()]);
+                ensure!(p.x.is_finite() && p.y.is_finite(), "vertex {v} is at ({}, {})", p.x, p.y);
+                ensure!(r >= 0.0, "vertex {v} has clearance {r}");
+            }
         }
 
         // Face cycles of `next`; each must carry a single site, and each site one cycle.

@@ -34,11 +34,16 @@ pub enum segvoronoi_status {
     /// A polygon ring has fewer than three distinct points (the message
     /// names the polygon and the ring).
     InvalidPolygon = 9,
+    /// The input's coordinates span more than the exact range (largest
+    /// magnitude over `2^480` times the smallest nonzero magnitude or
+    /// difference) and could not be built at that span; the message names
+    /// the two coordinates and the range. Not a bug; see the README.
+    UnsupportedRange = 10,
 }
 
 impl segvoronoi_status {
     /// Every status, in numeric order.
-    const ALL: [segvoronoi_status; 10] = [
+    const ALL: [segvoronoi_status; 11] = [
         segvoronoi_status::Ok,
         segvoronoi_status::NullArgument,
         segvoronoi_status::InvalidCoordinate,
@@ -49,6 +54,7 @@ impl segvoronoi_status {
         segvoronoi_status::InvalidArgument,
         segvoronoi_status::Internal,
         segvoronoi_status::InvalidPolygon,
+        segvoronoi_status::UnsupportedRange,
     ];
 
     fn from_number(n: c_int) -> Option<segvoronoi_status> {
@@ -63,6 +69,7 @@ impl From<&Error> for segvoronoi_status {
             ErrorKind::TooLarge => segvoronoi_status::TooLarge,
             ErrorKind::Intersecting => segvoronoi_status::Intersecting,
             ErrorKind::Internal => segvoronoi_status::Internal,
+            ErrorKind::UnsupportedRange => segvoronoi_status::UnsupportedRange,
             ErrorKind::InvalidPolygon => segvoronoi_status::InvalidPolygon,
             ErrorKind::InvalidArgument => segvoronoi_status::InvalidArgument,
         }
@@ -111,6 +118,7 @@ pub extern "C" fn segvoronoi_status_str(status: c_int) -> *const c_char {
         segvoronoi_status::InvalidArgument => c"invalid argument",
         segvoronoi_status::Internal => c"internal error in segvoronoi",
         segvoronoi_status::InvalidPolygon => c"a polygon ring has fewer than three distinct points",
+        segvoronoi_status::UnsupportedRange => c"the input's coordinates span more than the exact range",
     };
     s.as_ptr()
 }

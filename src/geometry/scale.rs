@@ -1,30 +1,54 @@
 //! Normalisation of the input by an exact power of two.
 //!
 //! The predicates are exact as long as their intermediate products neither
-//! overflow nor underflow. Coordinates up to `2^60` in magnitude are used as
-//! they are; larger or tinier inputs are multiplied by a power of two (exact
-//! in binary floating point) to bring the largest magnitude near 1. An
-//! input that also has coordinates near the subnormal range (a zero moved
-//! by a few ulps) is scaled up instead, its largest magnitude to about
-//! `2^100`: a product of such a coordinate with an ordinary one would
-//! otherwise underflow, and the predicates that sum such products would
-//! lose the term that decides them. Where the magnitudes span less than
-//! about `2^1000`, a smaller scale-up also keeps the far Voronoi vertices
-//! such inputs have within `f64` (`tiny_input_target`). Nothing is translated, because a
-//! translation rounds and would change the answer to near-degenerate
-//! questions.
+//! overflow nor underflow. Those products are of coordinates and of their
+//! differences, up to degree 4; what must fit is therefore the *span* of an
+//! input: from its largest coordinate magnitude down to the smallest
+//! nonzero magnitude or difference between coordinates (`Magnitudes`).
+//!
+//! - Coordinates up to `2^60` in magnitude whose span fits are used as they
+//!   are; larger or tinier inputs are multiplied by a power of two (exact
+//!   in binary floating point) to bring the largest magnitude near 1.
+//! - Where that leaves the smallest one below `2^-240` (degree 4 would
+//!   underflow), an input spanning at most `2^480` is put in the middle:
+//!   its largest magnitude at `2^(span/2)`, its smallest at `2^(-span/2)`.
+//!   Every product of degree 4 then lies within `f64`'s normal range. A
+//!   segment `(0, -M)-(1, -M)` beside coordinates of `M = 1e170` is such an
+//!   input: at unit scale its length would be `2^-565` and its square lost.
+//! - Beyond a span of `2^480` no scale serves every product. The input is
+//!   put where the products of its smallest magnitude with three ordinary
+//!   ones stay normal and its far vertices finite, as far as both can be
+//!   had (`tiny_input_target`; a zero moved by a few ulps beside ordinary
+//!   coordinates is such an input). The construction then checks its
+//!   result (`construct::exact_range`).
+//!
+//! Nothing is translated, because a translation rounds and would change the
+//! answer to near-degenerate questions.
+
+use super::point::Point;
 
 /// Largest magnitude used without rescaling.
 const UPPER: f64 = (1u64 << 60) as f64;
 /// Smallest largest-magnitude used without rescaling.
 const LOWER: f64 = 1.0 / UPPER;
-/// Below this, a nonzero magnitude is near the subnormal range (about
-/// `2^-897`).
-const TINY: f64 = 1e-270;
 /// Where an input with tiny magnitudes puts its largest one when no scale
 /// also keeps its far vertices finite (`tiny_input_target`): `2^100`, with
 /// room for degree-4 predicates (`2^400`) below overflow.
 const TINY_INPUT_TARGET: i32 = 100;
+/// How far (in bits) the smallest and the largest magnitude may lie from 1
+/// with every product of degree 4 in the normal range of `f64` (`2^±1022`),
+/// with a margin for sums of such products.
+const PRODUCT_REACH: i32 = 240;
+/// The largest span (in bits, `Magnitudes::span`) that a scale puts wholly
+/// within `PRODUCT_REACH`: the range in which every sign is decided in
+/// `f64` expansions without underflow or overflow.
+pub const EXACT_SPAN: i32 = 2 * PRODUCT_REACH;
+/// Below this span (in bits) of the coordinates' magnitudes, no difference
+/// of two coordinates can reach `PRODUCT_REACH` below the largest one (a
+/// nonzero difference is at least an ulp of the smaller nonzero coordinate,
+/// 53 bits below it, or the coordinate itself when the other is 0), so the
+/// differences need not be looked at.
+const ORDINARY_SPAN: i32 = PRODUCT_REACH - 60;
 
 /// A power-of-two scale factor and its inverse.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -48,24 +72,31 @@ impl Scale {
         Scale::for_magnitudes(max_abs, min_abs)
     }
 
-    /// The scale for inputs whose largest coordinate magnitude is
-    /// `max_abs` and smallest nonzero one `min_abs` (see the module
-    /// documentation).
-    pub fn for_magnitudes(max_abs: f64, min_abs: f64) -> Scale {
+    /// The scale for an input of these points (`Magnitudes::of_points`).
+    pub fn for_points<'a>(points: impl Iterator<Item = &'a Point> + Clone) -> Scale {
+        let m = Magnitudes::of_points(points);
+        Scale::for_magnitudes(m.max_abs, m.smallest)
+    }
+
+    /// The scale for inputs whose largest coordinate magnitude is `max_abs`
+    /// and whose smallest nonzero magnitude or difference is `smallest`
+    /// (see the module documentation).
+    pub fn for_magnitudes(max_abs: f64, smallest: f64) -> Scale {
         if max_abs == 0.0 || !max_abs.is_finite() {
             return Scale::IDENTITY;
         }
         let scale = if (LOWER..=UPPER).contains(&max_abs) { Scale::IDENTITY } else { Scale::to_unit(max_abs) };
-        let tiny_left = min_abs > 0.0 && min_abs * scale.to_internal < TINY;
-        if !tiny_left {
+        if !(smallest > 0.0 && smallest.is_finite()) {
             return scale;
         }
-        let target = tiny_input_target(exponent_of(max_abs) - exponent_of(min_abs));
-        if max_abs * scale.to_internal < pow2(target) {
-            let e = (exponent_of(max_abs) - target).clamp(-1022, 1022);
-            return Scale { to_internal: pow2(-e), to_input: pow2(e) };
+        let span = span_of(max_abs, smallest);
+        let top = exponent_of(max_abs * scale.to_internal);
+        if top <= PRODUCT_REACH && top - span >= -PRODUCT_REACH {
+            return scale;
         }
-        scale
+        let target = if span <= EXACT_SPAN { span / 2 } else { tiny_input_target(span) };
+        let e = (exponent_of(max_abs) - target).clamp(-1022, 1022);
+        Scale { to_internal: pow2(-e), to_input: pow2(e) }
     }
 
     /// The scale that brings `max_abs` into `[1, 2)` (the identity for zero
@@ -82,6 +113,46 @@ impl Scale {
 
     pub fn is_identity(&self) -> bool {
         self.to_internal == 1.0
+    }
+}
+
+/// The two magnitudes that bound an input's products: its largest
+/// coordinate magnitude and the smallest nonzero magnitude or difference
+/// between two coordinates on one axis (`∞` when there is none).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Magnitudes {
+    pub max_abs: f64,
+    pub smallest: f64,
+}
+
+impl Magnitudes {
+    /// The magnitudes of an input of these points. The differences are
+    /// looked at (a sort) only where the magnitudes alone leave room for
+    /// them to matter (`ORDINARY_SPAN`).
+    pub fn of_points<'a>(points: impl Iterator<Item = &'a Point> + Clone) -> Magnitudes {
+        let (max_abs, min_abs) = points.clone().flat_map(|p| [p.x, p.y]).fold((0.0f64, f64::INFINITY), |(max, min), v| {
+            let v = v.abs();
+            (max.max(v), if v > 0.0 { min.min(v) } else { min })
+        });
+        let ordinary = Magnitudes { max_abs, smallest: min_abs };
+        if !(max_abs.is_finite() && min_abs.is_finite()) || ordinary.span() + 53 <= ORDINARY_SPAN {
+            return ordinary;
+        }
+        let smallest_gap = |axis: fn(&Point) -> f64| {
+            let mut values: Vec<f64> = points.clone().map(axis).collect();
+            values.sort_unstable_by(f64::total_cmp);
+            values.windows(2).map(|w| w[1] - w[0]).filter(|&d| d > 0.0).fold(f64::INFINITY, f64::min)
+        };
+        Magnitudes { max_abs, smallest: min_abs.min(smallest_gap(|p| p.x)).min(smallest_gap(|p| p.y)) }
+    }
+
+    /// How many bits lie between the two (0 when there is nothing to span).
+    pub fn span(&self) -> i32 {
+        if self.max_abs > 0.0 && self.max_abs.is_finite() && self.smallest > 0.0 && self.smallest.is_finite() {
+            span_of(self.max_abs, self.smallest)
+        } else {
+            0
+        }
     }
 }
 
@@ -106,6 +177,11 @@ fn tiny_input_target(span: i32) -> i32 {
     } else {
         TINY_INPUT_TARGET
     }
+}
+
+/// The span in bits from `smallest` up to `max_abs` (both positive).
+pub fn span_of(max_abs: f64, smallest: f64) -> i32 {
+    exponent_of(max_abs) - exponent_of(smallest)
 }
 
 fn exponent_of(x: f64) -> i32 {

@@ -368,7 +368,8 @@ impl Diagram {
         })
     }
 
-    /// The diagonal of the input's bounding box.
+    /// The diagonal of the input's bounding box (saturated at `f64::MAX`
+    /// for a box whose diagonal lies beyond it).
     pub fn extent(&self) -> f64 {
         self.extent
     }

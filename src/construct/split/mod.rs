@@ -128,7 +128,15 @@ pub(crate) fn split(points: &[Point], segments: &[[Point; 2]]) -> Result<SplitIn
         rounds += 1;
     }
     let max_displacement = max_displacement(&pieces, segments, internal) * scale.to_input;
-    let external = |p: Point| p.scaled(scale.to_input);
+    // A point snapped to the grid's last line beyond the input's largest
+    // coordinate can lie past f64::MAX (an input reaching f64::MAX); the
+    // nearest representable point is f64::MAX, within the pixel as every
+    // snapped point is.
+    let saturate = |v: f64| v.clamp(-f64::MAX, f64::MAX);
+    let external = |p: Point| {
+        let q = p.scaled(scale.to_input);
+        Point::new(saturate(q.x), saturate(q.y))
+    };
     let counts = first.unwrap_or_default();
     Ok(SplitInput {
         points: moved.into_iter().map(external).collect(),

@@ -117,6 +117,11 @@ pub struct Offset {
     pub loops: Vec<OffsetLoop>,
 }
 
+/// The largest extent of an offset's region (the input's extent plus twice
+/// the distance): `2^510`, so that its area, at most the square of it,
+/// stays finite with room for the sums that compute it.
+const MAX_OFFSET_REACH: f64 = 3.3519519824856493e153;
+
 impl Diagram {
     /// The offset at signed distance `distance`: the closed loops at that
     /// distance from the sites, of exact line pieces and circular arcs.
@@ -150,7 +155,10 @@ impl Diagram {
     /// is left out rather than traced as a sliver.
     ///
     /// Errors ([`ErrorKind::InvalidArgument`]): a distance that is NaN,
-    /// infinite or zero, or not positive without a domain.
+    /// infinite or zero, or not positive without a domain, or one at which
+    /// the input's extent plus twice the distance exceeds `2^510` (about
+    /// `3e153`): beyond it the loops' areas (up to that squared) and the
+    /// arithmetic of their points leave the range of `f64`.
     ///
     /// ```
     /// use segvoronoi::{Builder, OffsetPiece};
@@ -213,6 +221,13 @@ impl Diagram {
         }
         if distance < 0.0 && !self.has_domain() {
             return invalid("negative, and there is no domain to shrink (add polygons, or ask for a positive distance)");
+        }
+        if self.extent() + 2.0 * distance.abs() > MAX_OFFSET_REACH {
+            return invalid(&format!(
+                "with the input's extent {:e} the offset would reach beyond {MAX_OFFSET_REACH:e}, past which \
+                 its area and lengths leave the range of f64 (scale the input down first)",
+                self.extent()
+            ));
         }
         Ok(if distance > 0.0 { Side::Grow } else { Side::Shrink })
     }
