@@ -74,7 +74,7 @@ impl Store {
                 // infinite or NaN (clearance: infinite there, never NaN)
                 let (p, r) = (self.position[v.index()], self.clearance[v.index()]);
                 ensure!(p.x.is_finite() && p.y.is_finite(), "vertex {v} is at ({}, {})", p.x, p.y);
-                ensure!(r >= 0.0, "vertex {v} has clearance {r}");
+                ensure!((0.0..=f64::INFINITY).contains(&r), "vertex {v} has clearance {r}");
             }
         }
 

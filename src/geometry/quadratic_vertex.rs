@@ -185,7 +185,7 @@ impl Vertex {
                 let epsilon: i8 = if s >= mid { 1 } else { -1 };
                 // clearly nearer that root than the other: refuse otherwise
                 let miss = (s - (mid + f64::from(epsilon) * half)).abs();
-                if !(miss < 0.25 * half) {
+                if miss.partial_cmp(&(0.25 * half)) != Some(std::cmp::Ordering::Less) {
                     return None;
                 }
                 epsilon
