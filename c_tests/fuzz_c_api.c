@@ -24,7 +24,11 @@
  * --allow-known does not excuse.
  *
  *   fuzz_c_api [--seed N] [--iterations N] [--seconds S] [--case SEED]
- *              [--allow-known] [--quiet]
+ *              [--allow-known] [--no-shrink] [--shrink-seconds S]
+ *
+ * --case reruns one case by the seed a failure prints; shrinking a
+ * signature stops after --shrink-seconds (default 20) or at the end of
+ * --seconds; with --allow-known the known signatures are not shrunk.
  *
  * Plain C99 plus POSIX; reads only the public header. */
 
@@ -128,13 +132,22 @@ static int nseen = 0;
  * reports them without failing. Each entry matches the start of a
  * signature. Remove entries as the fixes land. */
 static const char *const KNOWN[] = {
+    /* listed in issue 28 */
     "INTERNAL segvoronoi_builder_build",
     "NONFINITE segvoronoi_offset_",
     "NONFINITE segvoronoi_diagram_vertex",
-    "NONFINITE segvoronoi_diagram_edge",
-    "NONFINITE segvoronoi_diagram_extent",
+    "NONFINITE segvoronoi_diagram_edge", /* edge, edge_shape, edge_polyline: vertices at +-inf */
     "NONFINITE segvoronoi_medial_axis_",
     "INCONSISTENT segvoronoi_diagram_locate_point non-finite",
+    "NO_MESSAGE segvoronoi_builder_|a required pointer argument is NULL",
+    /* found by this driver at f47f2fe, not in the issue's text */
+    "NONFINITE segvoronoi_diagram_extent",
+    "NONFINITE segvoronoi_diagram_max_inscribed_circle",
+    "NONFINITE segvoronoi_diagram_inscribed_circles",
+    "NONFINITE segvoronoi_diagram_site",  /* sites at +-inf without splitting */
+    "NONFINITE segvoronoi_diagram_piece",
+    "INTERNAL segvoronoi_diagram_validate",
+    "INCONSISTENT segvoronoi_builder_check disagrees with build",
     NULL,
 };
 static int is_known(const char *sig) {
@@ -758,7 +771,8 @@ static void query_point(gen *g, const segvoronoi_diagram *d, double *x, double *
     rng *r = g->r;
     size_t ns = segvoronoi_diagram_site_count(d);
     segvoronoi_site s = {.struct_size = sizeof s};
-    if (ns && chance(r, 60) && segvoronoi_diagram_site(d, below(r, (uint32_t)ns), &s) == 0) {
+    if (ns && chance(r, 60) && segvoronoi_diagram_site(d, below(r, (uint32_t)ns), &s) == 0 &&
+        isfinite(s.x) && isfinite(s.y) && isfinite(s.x2) && isfinite(s.y2)) { /* a site at inf is reported already */
         *x = s.x, *y = s.y;
         if (chance(r, 30)) *x = s.x / 2 + s.x2 / 2, *y = s.y / 2 + s.y2 / 2;
         if (chance(r, 30)) *x = clampd(nextafter(*x, chance(r, 50) ? INFINITY : -INFINITY));
@@ -1155,8 +1169,13 @@ static void exercise(ctx *c, const input *in, uint64_t qseed) {
 }
 
 /* ---- Shrinking. ------------------------------------------------------------- */
+static double now(void);
+static double shrink_seconds = 20, shrink_deadline = 0, run_deadline = 0;
+static int allow_known = 0;
 static int persists(const input *in, uint64_t qseed, const char *sig, int *budget) {
     ctx c;
+    if (now() > shrink_deadline) { *budget = 0; return 0; }
+    alarm(120);
     memset(&c, 0, sizeof c);
     c.build_only = strncmp(sig, "INTERNAL segvoronoi_builder_build", 33) == 0 || strncmp(sig, "INCONSISTENT segvoronoi_builder_", 32) == 0;
     --*budget;
@@ -1171,6 +1190,8 @@ static void drop_point(op *o, size_t at, size_t width) {
 }
 static void shrink(input *in, uint64_t qseed, const char *sig) {
     int budget = 3000, changed = 1;
+    shrink_deadline = now() + shrink_seconds;
+    if (run_deadline > 0 && run_deadline < shrink_deadline) shrink_deadline = run_deadline;
     while (changed && budget > 0) {
         changed = 0;
         for (int i = 0; i < in->nops && budget > 0; ++i) { /* whole calls */
@@ -1278,7 +1299,7 @@ static void run_case(uint64_t cs, int quiet) {
         /* first of its kind: shrink and print */
         input small = in;
         in_case = 1, current_input = &small;
-        if (!no_shrink) shrink(&small, cs, c.sig[i]);
+        if (!no_shrink && !(allow_known && is_known(c.sig[i]))) shrink(&small, cs, c.sig[i]);
         in_case = 0;
         printf("FAIL%s %s\n  case %#llx (rerun: --case %#llx): %s\n  shrunk input (%d calls):\n", is_known(c.sig[i]) ? " (known)" : "",
                c.sig[i], (unsigned long long)cs, (unsigned long long)cs, c.detail[i], small.nops);
@@ -1293,7 +1314,7 @@ int main(int argc, char **argv) {
     uint64_t seed = 1, one = 0;
     unsigned long long iterations = 0;
     double seconds = 0;
-    int allow_known = 0, quiet = 0, have_one = 0;
+    int quiet = 0, have_one = 0;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -1304,8 +1325,9 @@ int main(int argc, char **argv) {
         else if (strcmp(a, "--allow-known") == 0) allow_known = 1;
         else if (strcmp(a, "--quiet") == 0) quiet = 1;
         else if (strcmp(a, "--no-shrink") == 0) no_shrink = 1;
+        else if (strcmp(a, "--shrink-seconds") == 0 && v) shrink_seconds = strtod(v, NULL), ++i;
         else {
-            fprintf(stderr, "usage: %s [--seed N] [--iterations N] [--seconds S] [--case SEED] [--allow-known] [--quiet]\n", argv[0]);
+            fprintf(stderr, "usage: %s [--seed N] [--iterations N] [--seconds S] [--case SEED] [--allow-known] [--no-shrink] [--shrink-seconds S]\n", argv[0]);
             return 2;
         }
     }
@@ -1315,6 +1337,7 @@ int main(int argc, char **argv) {
            iterations ? "" : "unbounded ", iterations, seconds);
     fflush(stdout);
     double t0 = now();
+    if (seconds > 0) run_deadline = t0 + seconds;
     if (have_one) {
         input in;
         make_input(one, &in);
@@ -1323,7 +1346,7 @@ int main(int argc, char **argv) {
         run_case(one, quiet);
     } else {
         for (unsigned long long i = 0; !iterations || i < iterations; ++i) {
-            if (seconds > 0 && (i & 15) == 0 && now() - t0 > seconds) break;
+            if (seconds > 0 && now() - t0 > seconds) break;
             alarm(120); /* a hung case reports its input */
             run_case(case_seed(seed, i), quiet);
         }
