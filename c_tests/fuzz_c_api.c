@@ -1349,6 +1349,10 @@ int main(int argc, char **argv) {
             if (seconds > 0 && now() - t0 > seconds) break;
             alarm(120); /* a hung case reports its input */
             run_case(case_seed(seed, i), quiet);
+            if ((i + 1) % 10000 == 0) {
+                printf("progress: %llu cases, %.0f s, %llu with a failure\n", i + 1, now() - t0, total.cases_failed);
+                fflush(stdout);
+            }
         }
         alarm(0);
     }
