@@ -1111,7 +1111,9 @@ static void exercise(ctx *c, const input *in, uint64_t qseed) {
         outcome(c, "segvoronoi_builder_last_error_indices", segvoronoi_builder_last_error_indices(b, idx, 4, &n), S_SMALL, b);
         segvoronoi_builder_set_split_crossings(b, 1);
         split = 1;
+        snprintf(c->note, sizeof c->note, "after INTERSECTING, built again with segvoronoi_builder_set_split_crossings(b, 1)");
         st = outcome(c, "segvoronoi_builder_build", segvoronoi_builder_build(b, &d), S_INTER, b);
+        c->note[0] = 0;
         if (c->record) total.builds++, total.build_status[st < N_STATUS ? st : N_STATUS]++, total.split_builds++, total.retried_with_split++;
         if (st == SEGVORONOI_STATUS_INTERSECTING)
             inconsistent(c, "segvoronoi_builder_build", "INTERSECTING with splitting", "%s", segvoronoi_builder_last_error(b));
