@@ -1235,11 +1235,6 @@ static void shrink(input *in, uint64_t qseed, const char *sig) {
                         if (persists(&t, qseed, sig, &budget)) { *in = t; changed = 1; --j; o = &in->ops[i]; }
                     }
         }
-        if (in->split && budget > 0) {
-            input t = *in;
-            t.split = 0;
-            if (persists(&t, qseed, sig, &budget)) { *in = t; changed = 1; }
-        }
     }
 }
 
