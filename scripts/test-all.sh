@@ -37,8 +37,13 @@ cargo test --quiet --release --features fault-injection --test fault_injection
 package_target="$(mktemp -d "${TMPDIR:-/tmp}/segvoronoi-package-target.XXXXXX")"
 trap 'rm -rf "$package_target"' EXIT
 
-step "CMake package, downstream C tests, CGAL cross-check (ctest)"
+step "CMake package, downstream C tests, CGAL cross-check, 60 s C-API fuzz under ASan/UBSan, readers under TSan and helgrind (ctest)"
 CARGO_TARGET_DIR="$package_target" bash c_tests/run.sh
+
+if [ "${SEGVORONOI_TSAN_RUST:-0}" = 1 ]; then
+  step "concurrent readers with the library built with -Zsanitizer=thread (nightly)"
+  CARGO_TARGET_DIR="$package_target" bash scripts/fuzz-c-api.sh --tsan-rust
+fi
 
 step "examples/c: the C quick start through find_package and pkg-config; stripped install, Runtime component"
 CARGO_TARGET_DIR="$package_target" bash scripts/test-c-examples.sh
