@@ -102,7 +102,7 @@ typedef struct {
 static size_t op_doubles(const op *o) { return o->kind == OP_SEGMENTS ? 4 * o->n : 2 * o->n; }
 
 /* ---- Outcome bookkeeping. ------------------------------------------------ */
-#define N_STATUS 10
+#define N_STATUS 11
 #define MAX_SIGS 16
 #define SIG_LEN 320
 typedef struct {
@@ -217,6 +217,7 @@ static void check_message(ctx *c, const char *call, int st, const segvoronoi_bui
 #define S_LARGE B(SEGVORONOI_STATUS_TOO_LARGE)
 #define S_ARG B(SEGVORONOI_STATUS_INVALID_ARGUMENT)
 #define S_POLY B(SEGVORONOI_STATUS_INVALID_POLYGON)
+#define S_RANGE B(SEGVORONOI_STATUS_UNSUPPORTED_RANGE)
 
 static void count_status(ctx *c, int st) {
     if (!c->record) return;
@@ -1097,7 +1098,7 @@ static void exercise(ctx *c, const input *in, uint64_t qseed) {
     int split = in->split;
     int chk = -1;
     if (chance(&r, 50)) chk = outcome(c, "segvoronoi_builder_check", segvoronoi_builder_check(b), S_INTER, b);
-    int st = outcome(c, "segvoronoi_builder_build", segvoronoi_builder_build(b, &d), S_INTER, b);
+    int st = outcome(c, "segvoronoi_builder_build", segvoronoi_builder_build(b, &d), S_INTER | S_RANGE, b);
     if (c->record) total.builds++, total.build_status[st < N_STATUS ? st : N_STATUS]++, total.split_builds += split;
     if (st == SEGVORONOI_STATUS_INTERSECTING && split)
         inconsistent(c, "segvoronoi_builder_build", "INTERSECTING with splitting", "%s", segvoronoi_builder_last_error(b));
@@ -1112,7 +1113,7 @@ static void exercise(ctx *c, const input *in, uint64_t qseed) {
         segvoronoi_builder_set_split_crossings(b, 1);
         split = 1;
         snprintf(c->note, sizeof c->note, "after INTERSECTING, built again with segvoronoi_builder_set_split_crossings(b, 1)");
-        st = outcome(c, "segvoronoi_builder_build", segvoronoi_builder_build(b, &d), S_INTER, b);
+        st = outcome(c, "segvoronoi_builder_build", segvoronoi_builder_build(b, &d), S_INTER | S_RANGE, b);
         c->note[0] = 0;
         if (c->record) total.builds++, total.build_status[st < N_STATUS ? st : N_STATUS]++, total.split_builds++, total.retried_with_split++;
         if (st == SEGVORONOI_STATUS_INTERSECTING)

@@ -109,6 +109,11 @@
 // the directrix).
 #define SEGVORONOI_EDGE_PARABOLA 1
 
+// The largest span (in bits, `Magnitudes::span`) that a scale puts wholly
+// within `PRODUCT_REACH`: the range in which every sign is decided in
+// `f64` expansions without underflow or overflow.
+#define EXACT_SPAN (2 * PRODUCT_REACH)
+
 // Result of every fallible call. The numbers are stable across versions.
 typedef enum segvoronoi_status {
   // Success.
@@ -136,6 +141,11 @@ typedef enum segvoronoi_status {
   // A polygon ring has fewer than three distinct points (the message
   // names the polygon and the ring).
   SEGVORONOI_STATUS_INVALID_POLYGON = 9,
+  // The input's coordinates span more than the exact range (largest
+  // magnitude over `2^480` times the smallest nonzero magnitude or
+  // difference) and could not be built at that span; the message names
+  // the two coordinates and the range. Not a bug; see the README.
+  SEGVORONOI_STATUS_UNSUPPORTED_RANGE = 10,
 } segvoronoi_status;
 
 // Collects input sites. Opaque. Create with `segvoronoi_builder_new`, free

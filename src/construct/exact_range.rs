@@ -11,7 +11,8 @@
 //! refusing them all would refuse a zero nudged by an ulp. So such a
 //! build is attempted, and what comes out is checked: a construction that
 //! cannot complete, or a diagram that fails `validate` (which also
-//! requires finite positions), becomes an [`ErrorKind::UnsupportedRange`]
+//! requires finite positions) or has a vertex inside its domain at an
+//! infinite clearance, becomes an [`ErrorKind::UnsupportedRange`]
 //! naming the two coordinates, never [`ErrorKind::Internal`] and never an
 //! invalid diagram returned as a success.
 
@@ -19,6 +20,7 @@ use crate::diagram::Diagram;
 use crate::error::{Error, ErrorKind};
 use crate::geometry::point::Point;
 use crate::geometry::scale::{Magnitudes, EXACT_SPAN};
+use crate::query::Location;
 
 /// Runs `build` on the input of `points` and `segments` (the caller's
 /// coordinates), and for inputs beyond the exact range turns a failed or
@@ -48,10 +50,21 @@ pub(crate) fn checked_build(
     };
     match build() {
         Err(e) if e.kind() == ErrorKind::Internal => Err(refusal(format!("could not be built ({e})"))),
-        Ok(diagram) => match diagram.validate() {
+        Ok(diagram) => match diagram.validate().map_err(|e| format!("{e:?}")).and_then(|()| inside_clearances_finite(&diagram)) {
             Ok(()) => Ok(diagram),
-            Err(e) => Err(refusal(format!("gave a diagram that fails its check ({e:?})"))),
+            Err(e) => Err(refusal(format!("gave a diagram that fails its check ({e})"))),
         },
         other => other,
+    }
+}
+
+/// Every vertex inside the domain has a finite clearance: the domain lies
+/// within the input's bounding box, inside `±f64::MAX`, so a disk inside it
+/// has a radius of at most `f64::MAX`. An infinite one is a vertex beyond
+/// the range of `f64` taken for inside, or a clearance that overflowed.
+fn inside_clearances_finite(diagram: &Diagram) -> Result<(), String> {
+    match diagram.vertices().find(|v| v.clearance.is_infinite() && diagram.vertex_location(v.id) == Some(Location::Inside)) {
+        Some(v) => Err(format!("vertex {} is inside the domain with an infinite clearance", v.id.index())),
+        None => Ok(()),
     }
 }

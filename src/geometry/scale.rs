@@ -111,6 +111,14 @@ impl Scale {
         Scale { to_internal: pow2(-e), to_input: pow2(e) }
     }
 
+    /// An internal point in input coordinates, each coordinate beyond the
+    /// range of `f64` saturated at `±f64::MAX`, as the vertices beyond it
+    /// are (a point of an edge or an offset that reaches there).
+    pub fn point_to_input(&self, p: Point) -> Point {
+        let saturated = |v: f64| (v * self.to_input).clamp(-f64::MAX, f64::MAX);
+        Point::new(saturated(p.x), saturated(p.y))
+    }
+
     pub fn is_identity(&self) -> bool {
         self.to_internal == 1.0
     }

@@ -235,7 +235,8 @@ impl Diagram {
             EdgeEnd::Infinite { .. } => None,
         });
         let [Some(from), Some(to)] = positions else { return None };
-        let q = self.edge_curve(piece.edge, from, to)?.point(t).scaled(self.scale.to_input);
+        let q = self.edge_curve(piece.edge, from, to)?.point(t);
+        let q = self.scale.point_to_input(q);
         // the ends exactly, as the vertices have them
         let q = if t == 0.0 {
             from

@@ -171,8 +171,8 @@ impl Diagram {
         };
         // A tolerance beyond the scaled range becomes infinite: two points.
         let first = out.len();
-        let to_input = self.scale.to_input;
-        parabola.sample_into(s0, s1, tolerance * self.scale.to_internal, MAX_POLYLINE_POINTS, |p| out.push(p.scaled(to_input)));
+        let scale = self.scale;
+        parabola.sample_into(s0, s1, tolerance * self.scale.to_internal, MAX_POLYLINE_POINTS, |p| out.push(scale.point_to_input(p)));
         let last = out.len() - 1; // `sample_into` gives at least two points
         (out[first], out[last]) = (start, end);
     }
@@ -207,7 +207,7 @@ impl Diagram {
         let (start, end) = self.finite_ends(&edge)?;
         let (parabola, s0, s1) = self.arc(&edge, start, end)?;
         let [_, control, _] = parabola.bezier(s0, s1);
-        let control = control.scaled(self.scale.to_input);
+        let control = self.scale.point_to_input(control);
         control.is_finite().then_some([start, control, end])
     }
 

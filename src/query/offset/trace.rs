@@ -169,7 +169,7 @@ impl Diagram {
         let snap = SNAP * level;
         if let (2, Some((lo, hi))) = (kinds.len(), roots) {
             if hi - lo <= 2.0 * snap {
-                let at = track.point(lowest).scaled(self.scale.to_input);
+                let at = self.scale.point_to_input(track.point(lowest));
                 return vec![(at, false), (at, true)];
             }
         }
@@ -188,7 +188,7 @@ impl Diagram {
                 } else {
                     None
                 };
-                let at = track.point_at_distance(t, level).scaled(self.scale.to_input);
+                let at = self.scale.point_to_input(track.point_at_distance(t, level));
                 let near = |v: Option<Point>| v.filter(|v| v.distance(at) <= snap * self.scale.to_input);
                 let at = end.or(near(vertex_at(0))).or(near(vertex_at(1))).unwrap_or(at);
                 (at, rising)
