@@ -155,7 +155,7 @@ fn even_odd_polygons(rings: &[Ring]) -> Vec<Vec<Ring>> {
     let depth: Vec<usize> = holders.iter().map(Vec::len).collect();
     let mut polygons: Vec<Vec<Ring>> = Vec::new();
     let mut polygon_of = vec![usize::MAX; rings.len()];
-    for i in (0..rings.len()).filter(|&i| depth[i] % 2 == 0) {
+    for i in (0..rings.len()).filter(|&i| depth[i].is_multiple_of(2)) {
         polygon_of[i] = polygons.len();
         polygons.push(vec![rings[i].clone()]);
     }
