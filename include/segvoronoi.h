@@ -276,6 +276,10 @@ typedef struct segvoronoi_stats {
   // segments, isolated points) that lay inside an input segment, which
   // was cut there exactly, per (vertex, segment) pair. Since 0.2.
   size_t split_at_vertices;
+  // Without splitting: pieces of polygon rings dropped because they
+  // cancelled in pairs (two copies of one shared stretch; always even).
+  // Since 0.2.
+  size_t cancelled_ring_pieces;
 } segvoronoi_stats;
 
 // Which branches `segvoronoi_diagram_medial_axis_filtered` leaves out

@@ -528,46 +528,29 @@ fn t_junctions_of_polylines_and_points_on_segments() {
 }
 
 #[test]
-fn overlapping_stretches_are_refused_with_what_to_do() {
-    // two squares of one MultiPolygon sharing part of an edge
-    let input = Input { polygons: vec![vec![square(0, 0, 4)], vec![square(4, 1, 2)]], ..Input::default() };
-    let e = input.builder(PLAIN).build().unwrap_err();
-    assert_eq!(e.kind(), ErrorKind::Intersecting);
-    assert_eq!(e.indices(), [1, 7]);
-    assert_eq!(
-        e.message(),
-        "ring 0 of polygon 0 and ring 0 of polygon 1 share the stretch from (4, 1) to (4, 3) (segment 1 is in polygon 0, \
-         ring 0; segment 7 is in polygon 1, ring 0); polygons may touch at points but not along a stretch: merge them, \
-         or split crossings (Builder::split_crossings) to take their even-odd region"
-    );
-    // two rings of one polygon sharing a whole edge (equal segments)
-    let input = polygon(vec![square(0, 0, 10), vec![[0, 2], [3, 2], [3, 4], [0, 4]], vec![[0, 2], [0, 4], [-1, 3]]]);
-    let e = input.builder(PLAIN).build().unwrap_err();
-    assert_eq!(e.kind(), ErrorKind::Intersecting);
-    assert!(e.message().starts_with("rings 0 and 1 of polygon 0 share the stretch from (0, 2) to (0, 4)"), "{}", e.message());
-    // a hole along its shell's edge
-    let input = polygon(vec![square(0, 0, 10), vec![[0, 2], [3, 2], [3, 4], [0, 4]]]);
-    let e = input.builder(PLAIN).build().unwrap_err();
-    assert!(
-        e.message().starts_with("rings 0 and 1 of polygon 0 share the stretch from (0, 2) to (0, 4) (segment 3 is in polygon 0, ring 0; segment 7 is in polygon 0, ring 1)"),
-        "{}",
-        e.message()
-    );
-    // a spike out and back along itself
-    let input = polygon(vec![vec![[0, 0], [4, 0], [4, 4], [6, 4], [4, 4], [0, 4]]]);
-    let e = input.builder(PLAIN).build().unwrap_err();
-    assert!(
-        e.message()
-            .starts_with("ring 0 of polygon 0 runs back along itself from (4, 4) to (6, 4) (segment 2 is in polygon 0, ring 0; segment 3 is in polygon 0, ring 0); remove the spike"),
-        "{}",
-        e.message()
-    );
+fn shared_stretches_cancel_and_crossings_are_refused() {
+    // two squares of one MultiPolygon sharing part of an edge, two rings
+    // of one polygon sharing a whole edge, a hole along its shell's edge,
+    // a spike out and back: the shared stretches cancel (tests/
+    // shared_stretches.rs checks the domains)
+    let cases = [
+        Input { polygons: vec![vec![square(0, 0, 4)], vec![square(4, 1, 2)]], ..Input::default() },
+        polygon(vec![square(0, 0, 10), vec![[0, 2], [3, 2], [3, 4], [0, 4]], vec![[0, 2], [0, 4], [-1, 3]]]),
+        polygon(vec![square(0, 0, 10), vec![[0, 2], [3, 2], [3, 4], [0, 4]]]),
+        polygon(vec![vec![[0, 0], [4, 0], [4, 4], [6, 4], [4, 4], [0, 4]]]),
+    ];
+    for input in &cases {
+        let d = input.builder(PLAIN).build().unwrap_or_else(|e| panic!("{input:?}: {e}"));
+        assert_eq!(d.stats().cancelled_ring_pieces, 2, "{input:?}");
+        assert!(input.builder(PLAIN).check().is_ok());
+    }
     // crossings still need split_crossings
     let input = polygon(vec![square(0, 0, 4), square(2, 2, 4)]);
     let e = input.builder(PLAIN).build().unwrap_err();
+    assert_eq!(e.kind(), ErrorKind::Intersecting);
     assert!(e.message().contains("cross"), "{}", e.message());
     assert!(input.builder(PLAIN).split_crossings(true).build().is_ok());
-    // `check` agrees with `build` on touching (fine) and on overlaps (named)
+    // `check` agrees with `build` on touching (fine)
     assert!(polygon(vec![square(0, 0, 10), vec![[0, 5], [3, 4], [3, 6]]]).builder(PLAIN).check().is_ok());
 }
 

@@ -208,7 +208,9 @@ impl Builder {
     /// order) runs on a second, short-lived thread; the result is the same.
     ///
     /// With segments, the input is checked first: segments that cross or
-    /// overlap give [`ErrorKind::Intersecting`] naming both input indices.
+    /// overlap give [`ErrorKind::Intersecting`] naming both input indices
+    /// (but polygon rings may share stretches, which cancel: see
+    /// [`Builder::add_polygon`]).
     /// An input vertex (a segment's endpoint, a zero-length segment or an
     /// isolated point) inside another segment is fine: that segment is
     /// split there, exactly (the vertex is the cut point, nothing moves),
@@ -260,14 +262,8 @@ impl Builder {
             diagram.stats.dropped_chain_points = self.dropped_chain_points;
             return Ok(diagram);
         }
-        let name = |e| super::polygon_input::name_rings(e, &self.rings, &self.segments);
-        let mut diagram = super::diagram_of(&self.points, &self.segments).map_err(name)?;
-        // Rings cut at vertices of others are still those rings, over the pieces.
-        let rings = super::polygon_input::rings_over_pieces(&diagram, &self.rings);
-        if let Some(e) = super::polygon_input::shared_ring_edge(&diagram, &rings, &self.segments) {
-            return Err(name(e));
-        }
-        diagram.set_domain(&rings);
+        let name = |e| super::polygon_input::name_rings(e, &self.rings);
+        let mut diagram = super::diagram_of(&self.points, &self.segments, &self.rings).map_err(name)?;
         diagram.stats.dropped_chain_points = self.dropped_chain_points;
         Ok(diagram)
     }
@@ -282,9 +278,10 @@ impl Builder {
     /// smallest, whatever the input order.
     ///
     /// The check is exact and takes O(n log n) expected time for n segments
-    /// and points, whatever their shape (a sweep). It does not see what only the
-    /// diagram shows: two polygon rings sharing a whole edge (equal
-    /// segments, merged) pass here and fail in `build`.
+    /// and points, whatever their shape (a sweep). Polygon rings that share
+    /// a stretch pass, as in `build` (they cancel there, see
+    /// [`Builder::add_polygon`]); an obstacle that overlaps a ring, or
+    /// another obstacle, does not.
     ///
     /// ```
     /// use segvoronoi::{Builder, ErrorKind};
@@ -300,8 +297,8 @@ impl Builder {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn check(&self) -> Result<(), Error> {
-        super::check_input(&self.points, &self.segments)
-            .map_err(|e| super::polygon_input::name_rings(e, &self.rings, &self.segments))
+        super::check_input(&self.points, &self.segments, &self.rings)
+            .map_err(|e| super::polygon_input::name_rings(e, &self.rings))
     }
 }
 

@@ -34,6 +34,7 @@ mod insertion_order;
 pub(crate) mod polygon_input;
 mod renumber;
 mod restart;
+mod shared_stretches;
 mod split;
 mod state;
 mod status_treap;
@@ -47,27 +48,45 @@ use crate::error::{Error, ErrorKind};
 use crate::geometry::scale::Scale;
 use crate::geometry::segment_contact;
 use crate::geometry::Point;
+pub(crate) use input_check::Conflict;
 use input_check::{check_segments, first_conflict, CheckedInput, Vertex};
-pub(crate) use input_check::{overlap_stretch, Conflict};
 use insert_point::insert_points;
+use polygon_input::RingInput;
 use renumber::SegmentSite;
 use restart::{insert_all, insert_all_from, Outcome, Stuck};
 
-/// The diagram of the builder's input, or the error that
+/// The diagram of the builder's input, with the domain of `rings` (over
+/// the input segments; none: no domain), or the error that
 /// [`Builder::build`] returns (see there).
-pub(super) fn diagram_of(points: &[Point], segments: &[[Point; 2]]) -> Result<Diagram, Error> {
-    let (diagram, outcome) = if segments.is_empty() { build_points(points) } else { build_sites(points, segments)? };
-    accept(diagram, outcome, points, segments)
+pub(super) fn diagram_of(points: &[Point], segments: &[[Point; 2]], rings: &[RingInput]) -> Result<Diagram, Error> {
+    if segments.is_empty() {
+        let (diagram, outcome) = build_points(points);
+        return accept(diagram, outcome, points, segments);
+    }
+    let ring = polygon_input::ring_segments(rings, segments.len());
+    let (diagram, outcome) = match build_sites(points, segments, &ring)? {
+        Sites::Built(diagram, outcome) => (*diagram, outcome),
+        Sites::Shared(checked, pieces) => {
+            return shared_stretches::diagram_of_shared(points, segments, rings, &ring, &checked, pieces);
+        }
+    };
+    let mut diagram = accept(diagram, outcome, points, segments)?;
+    if !rings.is_empty() {
+        // Rings cut at vertices of others are still those rings, over the pieces.
+        diagram.set_domain(&polygon_input::rings_over_pieces(&diagram, rings));
+    }
+    Ok(diagram)
 }
 
 /// The input check of [`diagram_of`] alone (scale, normalise, search for a
 /// conflict): the [`ErrorKind::Intersecting`] error the build would give,
 /// without building.
-pub(super) fn check_input(points: &[Point], segments: &[[Point; 2]]) -> Result<(), Error> {
+pub(super) fn check_input(points: &[Point], segments: &[[Point; 2]], rings: &[RingInput]) -> Result<(), Error> {
     if segments.is_empty() {
         return Ok(()); // distinct or repeated points never conflict
     }
-    match first_conflict(points, segments, input_scale(points, segments)) {
+    let ring = polygon_input::ring_segments(rings, segments.len());
+    match first_conflict(points, segments, &ring, input_scale(points, segments)) {
         Some(c) => Err(conflict_error(&c, segments)),
         None => Ok(()),
     }
@@ -82,14 +101,26 @@ fn build_points(input: &[Point]) -> (Diagram, Outcome) {
     (renumber::renumber(diagram, &site_of_input, input, &[], scale), outcome)
 }
 
-/// The diagram of points and segments, and how its construction ended
-/// (checked by [`accept`]); `Err` for input that crosses itself.
+/// What [`build_sites`] made.
+enum Sites {
+    /// The diagram, and how its construction ended (checked by [`accept`]);
+    /// boxed, as the diagram's header is large beside the other variant.
+    Built(Box<Diagram>, Outcome),
+    /// Nothing yet: ring segments share stretches, which cancel
+    /// (`shared_stretches`); the checked input and its pieces.
+    Shared(CheckedInput, Vec<split::Piece>),
+}
+
+/// The diagram of points and segments, and how its construction ended;
+/// or, where ring segments (`ring`, per input segment; empty for none)
+/// share a stretch, the pieces that cancel; `Err` for input that crosses
+/// itself.
 ///
 /// Check the input (beside the point insertions, on large inputs), list
 /// every point in the naming order (isolated points, then each segment's
 /// first and second endpoint), insert the points and then the segments,
 /// renumber.
-fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<(Diagram, Outcome), Error> {
+fn build_sites(points: &[Point], segments: &[[Point; 2]], ring: &[bool]) -> Result<Sites, Error> {
     // P<k> numbers the distinct points of this list by first appearance.
     let mut all: Vec<Point> = Vec::with_capacity(points.len() + 2 * segments.len());
     all.extend_from_slice(points);
@@ -103,15 +134,22 @@ fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<(Diagram, Ou
     // zero-length segment only repeats points), so on large inputs the
     // check runs on a second thread meanwhile; an error discards the points.
     let (checked, stage) = if segments.len() >= PARALLEL_CHECK_FROM {
-        let (checked, stage) = run_beside(|| check_segments(points, segments, scale), || insert_points(&scaled, segments.len()));
+        let (checked, stage) =
+            run_beside(|| check_segments(points, segments, ring, scale), || insert_points(&scaled, segments.len()));
         (checked, Some(stage))
     } else {
-        (check_segments(points, segments, scale), None)
+        (check_segments(points, segments, ring, scale), None)
     };
     let checked = checked.map_err(|c| conflict_error(&c, segments))?;
+    if let Some(pieces) = shared_stretches::shared_pieces(&checked, points, segments, ring) {
+        // (the points inserted beside the check are dropped: the diagram is
+        // built of the pieces left)
+        return Ok(Sites::Shared(checked, pieces));
+    }
     let stage = stage.unwrap_or_else(|| insert_points(&scaled, segments.len()));
     if !checked.splits.is_empty() {
-        return Ok(build_split(stage, &checked, points, segments, &all, &scaled, scale));
+        let (diagram, outcome) = build_split(stage, &checked, points, segments, &all, &scaled, scale);
+        return Ok(Sites::Built(Box::new(diagram), outcome));
     }
 
     let kept: Vec<usize> = checked.segments.iter().map(|&(j, _)| j).collect();
@@ -121,7 +159,7 @@ fn build_sites(points: &[Point], segments: &[[Point; 2]]) -> Result<(Diagram, Ou
         kept.iter().zip(segment_sites).map(|(&j, internal)| SegmentSite { input: j, internal, ends: segments[j] }).collect();
     let mut diagram = renumber::renumber(built, &site_of_input, &all, &described, scale);
     renumber::number_segment_inputs(&mut diagram, &checked, points.len(), segments.len());
-    Ok((diagram, outcome))
+    Ok(Sites::Built(Box::new(diagram), outcome))
 }
 
 /// The diagram when input vertices lie inside segments

@@ -27,16 +27,27 @@ impl Builder {
     /// dropped. A ring with fewer than three distinct points, or a
     /// non-finite coordinate, is [`ErrorKind::InvalidPolygon`] /
     /// [`ErrorKind::InvalidCoordinate`] naming the polygon and the ring; the
-    /// builder is then unchanged. Rings that cross themselves or each other,
-    /// or share a stretch (an edge or part of one, or a spike running back
-    /// along itself), are found by the build, as any crossing segments are
+    /// builder is then unchanged. Rings that cross themselves or each other
+    /// are found by the build, as any crossing segments are
     /// ([`ErrorKind::Intersecting`], naming both segments, and the message
-    /// the polygons and rings they belong to, the stretch, and what to do).
+    /// the polygons and rings they belong to).
     /// Rings may touch at points, as OGC's valid polygons do: two squares
     /// sharing one corner, a checkerboard, a hole touching its outer ring at
     /// a corner or inside an edge, two holes touching. A ring touched
     /// inside an edge is cut there, exactly, at the touching vertex
     /// ([`Builder::build`]): the domain is the same.
+    ///
+    /// Rings may also share stretches (an edge or part of one: the polygons
+    /// of a MultiPolygon along a common border, a spike that runs out and
+    /// back along itself). By the even-odd rule two copies of a stretch
+    /// cancel: the build cuts the rings at the ends of every shared stretch
+    /// (input vertices, so nothing moves), drops the pieces that are equal
+    /// in pairs, and the domain is that of the pieces left, exactly the
+    /// even-odd region of the rings as given; two squares sharing an edge
+    /// are their union rectangle, with the shared edge gone
+    /// ([`BuildStats::cancelled_ring_pieces`](crate::BuildStats) counts the
+    /// pieces dropped; the pieces are then numbered as with
+    /// [`Builder::split_crossings`]).
     ///
     /// ```
     /// use segvoronoi::{Builder, Location};
@@ -160,71 +171,28 @@ pub(crate) fn rings_over_pieces(diagram: &crate::Diagram, rings: &[RingInput]) -
         .collect()
 }
 
-/// Two ring pieces that are one segment (rings that share a whole edge, or
-/// a ring that runs back along itself): an overlap, as the input check
-/// calls partial ones, [`ErrorKind::Intersecting`] naming both input
-/// segments. The check merges repeated segments into one site, so it is
-/// found here, from the sites. `rings` are over the pieces
-/// ([`rings_over_pieces`]); `segments` are the input segments.
-pub(crate) fn shared_ring_edge(diagram: &crate::Diagram, rings: &[RingInput], segments: &[[Point; 2]]) -> Option<Error> {
-    let mut first_input_of = std::collections::HashMap::new();
-    for p in rings.iter().flat_map(|r| r.segments.clone()) {
-        let site = diagram.site_of_segment(p)?;
-        let j = diagram.inputs_of_piece(p).next()?;
-        if let Some(&i) = first_input_of.get(&site) {
-            // pieces are equal only when their input segments are (else those
-            // would overlap, which the check refuses)
-            let conflict = super::Conflict::SegmentsOverlap { first: i, second: j };
-            return Some(super::conflict_error(&conflict, segments));
-        }
-        first_input_of.insert(site, j);
+/// Per input segment (`segments` of them), whether a ring of `rings` made
+/// it; empty when there are no rings. Ring segments may share stretches,
+/// which cancel (`construct::shared_stretches`).
+pub(crate) fn ring_segments(rings: &[RingInput], segments: usize) -> Vec<bool> {
+    if rings.is_empty() {
+        return Vec::new();
     }
-    None
+    let mut ring = vec![false; segments];
+    for j in rings.iter().flat_map(|r| r.segments.clone()) {
+        ring[j] = true;
+    }
+    ring
 }
 
 /// An input error with the polygons and rings of the segments it names
-/// added to its message (a ring that crosses itself or another ring). Two
-/// ring segments that overlap are said as what they are, with what to do:
-/// rings that share a stretch, or a ring that runs back along itself.
-/// `segments` are the input segments.
-pub(crate) fn name_rings(error: Error, rings: &[RingInput], segments: &[[Point; 2]]) -> Error {
+/// added to its message (a ring that crosses itself or another ring, or
+/// a ring segment that an obstacle overlaps).
+pub(crate) fn name_rings(error: Error, rings: &[RingInput]) -> Error {
     if error.kind() != ErrorKind::Intersecting || rings.is_empty() {
         return error;
     }
     let ring_of = |j: usize| rings.iter().find(|r| r.segments.contains(&j));
-    if let ([i, j], true) = (error.indices(), error.message().contains(" overlap ")) {
-        if let (Some(a), Some(b), Some(&s), Some(&t)) = (ring_of(*i), ring_of(*j), segments.get(*i), segments.get(*j)) {
-            let [from, to] = super::overlap_stretch(s, t);
-            let stretch = format!(
-                "from ({}, {}) to ({}, {}) (segment {i} is in polygon {}, ring {}; segment {j} is in polygon {}, ring {})",
-                from.x, from.y, to.x, to.y, a.polygon, a.ring, b.polygon, b.ring
-            );
-            let message = if (a.polygon, a.ring) == (b.polygon, b.ring) {
-                format!(
-                    "ring {} of polygon {} runs back along itself {stretch}; remove the spike, or split crossings \
-                     (Builder::split_crossings) to keep the ring's even-odd region",
-                    a.ring, a.polygon
-                )
-            } else if a.polygon == b.polygon {
-                format!(
-                    "rings {} and {} of polygon {} share the stretch {stretch}; rings may touch at points but not \
-                     along a stretch: merge them, or split crossings (Builder::split_crossings) to take their \
-                     even-odd region",
-                    a.ring.min(b.ring),
-                    a.ring.max(b.ring),
-                    a.polygon
-                )
-            } else {
-                format!(
-                    "ring {} of polygon {} and ring {} of polygon {} share the stretch {stretch}; polygons may touch \
-                     at points but not along a stretch: merge them, or split crossings (Builder::split_crossings) \
-                     to take their even-odd region",
-                    a.ring, a.polygon, b.ring, b.polygon
-                )
-            };
-            return Error::new(error.kind(), message, error.indices().to_vec());
-        }
-    }
     let named: Vec<String> = error
         .indices()
         .iter()

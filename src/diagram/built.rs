@@ -59,6 +59,12 @@ pub struct BuildStats {
     pub touchings: usize,
     /// With `split_crossings`: rounds of snapping run (0 when nothing met).
     pub snap_rounds: usize,
+    /// Without `split_crossings`: pieces of polygon rings dropped because
+    /// they cancelled in pairs, two copies of one stretch (rings sharing an
+    /// edge or part of one, a spike out and back along itself: the
+    /// even-odd domain is the same without them). Always even: two
+    /// squares sharing an edge give 2. Since 0.2.
+    pub cancelled_ring_pieces: usize,
 }
 
 /// A Voronoi diagram. Immutable; reading it from many threads at once is safe.

@@ -163,6 +163,10 @@ pub struct segvoronoi_stats {
     /// segments, isolated points) that lay inside an input segment, which
     /// was cut there exactly, per (vertex, segment) pair. Since 0.2.
     pub split_at_vertices: usize,
+    /// Without splitting: pieces of polygon rings dropped because they
+    /// cancelled in pairs (two copies of one shared stretch; always even).
+    /// Since 0.2.
+    pub cancelled_ring_pieces: usize,
 }
 versioned!(segvoronoi_stats, edges: usize);
 
@@ -527,6 +531,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_stats(
                 touchings: s.touchings,
                 snap_rounds: s.snap_rounds,
                 split_at_vertices: s.split_at_vertices,
+                cancelled_ring_pieces: s.cancelled_ring_pieces,
             },
         )
     })

@@ -116,10 +116,11 @@ enum Role {
 }
 
 impl Diagram {
-    /// Classifies the diagram against the rings the builder recorded (no
-    /// rings: no domain).
+    /// Classifies the diagram against the rings of its polygons (called
+    /// only when polygons were added; no rings left, where every piece
+    /// cancelled, is an empty domain: everything outside).
     pub(crate) fn set_domain(&mut self, rings: &[RingInput]) {
-        self.domain = (!rings.is_empty()).then(|| self.classify(rings));
+        self.domain = Some(self.classify(rings));
     }
 
     /// Whether polygons were added: then every vertex, edge and cell has a

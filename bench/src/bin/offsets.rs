@@ -4,6 +4,10 @@
 //!
 //! `cargo run --release --bin offsets -- [--sizes 10000,100000,1000000] [--runs 3] [--budget 60] [--hundred-up-to N]`
 //!
+//! `cargo run --release --bin offsets -- --rings FILE [--runs 3]`: a real
+//! outline instead (a rings file as `scripts/country_rings.py` writes it),
+//! beside GEOS's buffer at distances relative to its size (`src/offsets_outline.rs`).
+//!
 //! The input is a grid of star-shaped polygons (testgen's `star_ring`,
 //! random radii), each of 400 corners (radii 0.8..1) with a star-shaped
 //! hole of 100 (radii 0.2..0.35), 2.2 apart: many polygons with holes, as
@@ -31,6 +35,9 @@
 //! single distance is timed, and their x100 is the last smaller size's
 //! scaled by the ratio of the single runs (GEOS's buffer of the 1M input at
 //! -0.15 or -0.3 took more than the 23 GB of the machine it was written on).
+
+#[path = "../offsets_outline.rs"]
+mod outline;
 
 use segvoronoi::Builder;
 use segvoronoi_testgen::{shapes::star_ring, Rng};
@@ -67,8 +74,14 @@ fn distances() -> Vec<f64> {
 /// GEOS's quadrant segments for tolerance `TOLERANCE` at `d`, and the
 /// tolerance they give.
 fn quadsegs(d: f64) -> (i32, f64) {
+    quadsegs_within(d, TOLERANCE)
+}
+
+/// GEOS's quadrant segments for tolerance `tolerance` at `d` (the fewest
+/// whose chords stay within it), and the tolerance they give.
+fn quadsegs_within(d: f64, tolerance: f64) -> (i32, f64) {
     let r = d.abs();
-    let q = (PI / (4.0 * (1.0 - (TOLERANCE / r).min(1.0)).acos())).ceil().max(1.0);
+    let q = (PI / (4.0 * (1.0 - (tolerance / r).min(1.0)).acos())).ceil().max(1.0);
     (q as i32, r * (1.0 - (PI / (4.0 * q)).cos()))
 }
 
@@ -164,7 +177,7 @@ fn other(ds: &[f64], budget: f64, mut run: impl FnMut(f64) -> (usize, usize)) ->
 
 #[cfg(has_geos)]
 mod geos {
-    use super::{quadsegs, Polygon};
+    use super::quadsegs_within;
     use std::ffi::c_void;
 
     extern "C" {
@@ -177,10 +190,11 @@ mod geos {
     pub struct Input(*mut c_void);
 
     impl Input {
-        pub fn new(input: &[Polygon]) -> Input {
-            let xy: Vec<f64> = input.iter().flat_map(|p| p.iter().flatten().flatten().copied()).collect();
-            let lengths: Vec<usize> = input.iter().flat_map(|p| p.iter().map(Vec::len)).collect();
-            let rings = vec![2usize; input.len()];
+        /// Polygons, each its outer ring and then its holes.
+        pub fn new<P: AsRef<[Vec<[f64; 2]>]>>(input: &[P]) -> Input {
+            let xy: Vec<f64> = input.iter().flat_map(|p| p.as_ref().iter().flatten().flatten().copied()).collect();
+            let lengths: Vec<usize> = input.iter().flat_map(|p| p.as_ref().iter().map(Vec::len)).collect();
+            let rings: Vec<usize> = input.iter().map(|p| p.as_ref().len()).collect();
             // SAFETY: the arrays hold what the lengths say; GEOS copies them.
             let raw = unsafe { geos_bench_new(xy.as_ptr(), lengths.as_ptr(), rings.as_ptr(), input.len()) };
             assert!(!raw.is_null(), "GEOS input");
@@ -189,9 +203,14 @@ mod geos {
 
         /// Buffer at `d` with the benchmark's tolerance: (vertices, rings).
         pub fn buffer(&self, d: f64) -> (usize, usize) {
+            self.buffer_within(d, super::TOLERANCE)
+        }
+
+        /// Buffer at `d` within `tolerance`: (vertices, rings).
+        pub fn buffer_within(&self, d: f64, tolerance: f64) -> (usize, usize) {
             let (mut vertices, mut rings) = (0, 0);
             // SAFETY: a live handle and two out-parameters.
-            let status = unsafe { geos_bench_buffer(self.0, d, quadsegs(d).0, &mut vertices, &mut rings) };
+            let status = unsafe { geos_bench_buffer(self.0, d, quadsegs_within(d, tolerance).0, &mut vertices, &mut rings) };
             assert_eq!(status, 0, "GEOS buffer failed");
             (vertices, rings)
         }
@@ -276,6 +295,11 @@ fn seconds(s: f64) -> String {
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let value = |name: &str| args.iter().position(|a| a == name).and_then(|i| args.get(i + 1));
+    if let Some(path) = value("--rings") {
+        let runs: usize = value("--runs").map_or(3, |r| r.parse().expect("--runs R"));
+        outline::run(path, runs);
+        return;
+    }
     let sizes: Vec<usize> = value("--sizes")
         .map(|s| s.split(',').map(|n| n.parse().expect("--sizes N,N,..")).collect())
         .unwrap_or_else(|| vec![10_000, 100_000, 1_000_000]);

@@ -30,8 +30,10 @@ of geometries one after the other. Each polygon's rings bound the domain
 (even-odd: a ring inside a ring is a hole; orientation does not matter);
 linestrings and points are obstacles. Rings may touch at points (a hole
 touching its shell, polygons touching at corners: valid OGC input builds as
-it is), but must not cross themselves or each other, nor share a stretch
-(the message names the polygons and rings).
+it is) and share stretches (polygons along a common border, a spike out and
+back: the two copies cancel by the even-odd rule, --stats:
+cancelled_ring_pieces), but must not cross themselves or each other (the
+message names the polygons and rings).
 
 Options:
   --svg OUT.svg      draw the diagram: edges (parabolic arcs as exact

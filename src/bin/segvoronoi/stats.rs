@@ -21,7 +21,7 @@ pub fn report(diagram: &Diagram, build_s: f64) -> String {
     }
     let segment_sites = diagram.site_count() - diagram.point_site_count();
     let mut out = String::new();
-    let figures: [(&str, &dyn std::fmt::Display); 22] = [
+    let figures: [(&str, &dyn std::fmt::Display); 23] = [
         ("input_points", &stats.input_points),
         ("input_segments", &stats.input_segments),
         ("sites", &stats.sites),
@@ -38,6 +38,7 @@ pub fn report(diagram: &Diagram, build_s: f64) -> String {
         ("parabolic_edges", &arcs),
         ("pieces", &stats.pieces),
         ("split_at_vertices", &stats.split_at_vertices),
+        ("cancelled_ring_pieces", &stats.cancelled_ring_pieces),
         ("crossings", &stats.crossings),
         ("overlaps", &stats.overlaps),
         ("touchings", &stats.touchings),

@@ -9,13 +9,17 @@ use crate::geometry::segment_contact::{first_contact, segment_contact, ContactPo
 
 /// The conflict for kept segments `i < j` (positions in `norm.segments`),
 /// with the pair's first contact point: a crossing or an overlap; `None`
-/// when they meet at most at one point that is an endpoint of one of them.
+/// when they meet at most at one point that is an endpoint of one of them,
+/// or when both are ring segments that overlap (`Normalised::may_overlap`).
 pub(super) fn segment_conflict_at(norm: &Normalised, i: usize, j: usize) -> Option<(Conflict, ContactPoint)> {
     let (first, s) = norm.segments[i];
     let (second, t) = norm.segments[j];
     let contact = segment_contact(s, t)?;
     let conflict = match contact {
         SegmentContact::Cross => Conflict::SegmentsCross { first, second },
+        // ring segments sharing a stretch: split at its ends, and the
+        // equal pieces cancel (`construct::shared_stretches`)
+        SegmentContact::Overlap if norm.may_overlap(i, j) => return None,
         SegmentContact::Overlap => Conflict::SegmentsOverlap { first, second },
         SegmentContact::EndpointOfSecondOnFirst | SegmentContact::EndpointOfFirstOnSecond => return None,
     };

@@ -15,6 +15,13 @@
 //!   nothing is rounded. Every such (segment, vertex) pair is listed in
 //!   [`CheckedInput::splits`], by segment and along it; the builder builds
 //!   the pieces (`construct::split_at_vertices`).
+//! - *Shared stretches of rings.* Two collinear segments of polygon rings
+//!   that share more than a point (two rings along one border, a spike
+//!   out and back) are allowed when the caller says which segments are
+//!   ring segments: the ends of the shared stretch are input vertices
+//!   inside the segments, so they are splits as above, and the stretch
+//!   becomes equal pieces, which the builder cancels in pairs
+//!   (`construct::shared_stretches`).
 //! - *Conflicts.* Apart from that, two segments may meet only at a common
 //!   endpoint (exactly equal coordinates), any number of them at one point.
 //!   Two segments that cross properly (at a point inside both) or that are
@@ -169,8 +176,16 @@ pub(crate) fn overlap_stretch(s: [Point; 2], t: [Point; 2]) -> [Point; 2] {
 /// Normalises and checks points and segments (finite coordinates, as the
 /// builder guarantees), in the coordinates that `scale` makes (the
 /// build's one scale). See the module documentation for the rules.
-pub(crate) fn check_segments(points: &[Point], segments: &[[Point; 2]], scale: Scale) -> Result<CheckedInput, Conflict> {
-    let norm = normalise_scaled(points, segments, scale);
+/// `ring` says, per input segment, whether a polygon's ring made it (empty:
+/// none): ring segments may overlap each other, and are split at the ends
+/// of the stretches they share.
+pub(crate) fn check_segments(
+    points: &[Point],
+    segments: &[[Point; 2]],
+    ring: &[bool],
+    scale: Scale,
+) -> Result<CheckedInput, Conflict> {
+    let norm = normalise_scaled(points, segments, ring, scale);
     let (conflict, splits) = sweep(&norm);
     if let Some((conflict, _)) = conflict {
         return Err(conflict);
@@ -192,13 +207,16 @@ pub(crate) fn check_segments(points: &[Point], segments: &[[Point; 2]], scale: S
 
 /// The conflict [`check_segments`] would report, without building the
 /// checked input (for [`Builder::check`](crate::Builder::check)).
-pub(crate) fn first_conflict(points: &[Point], segments: &[[Point; 2]], scale: Scale) -> Option<Conflict> {
-    find_conflict(&normalise_scaled(points, segments, scale))
+pub(crate) fn first_conflict(points: &[Point], segments: &[[Point; 2]], ring: &[bool], scale: Scale) -> Option<Conflict> {
+    find_conflict(&normalise_scaled(points, segments, ring, scale))
 }
 
-/// The input normalised in the coordinates that `scale` makes.
-fn normalise_scaled(points: &[Point], segments: &[[Point; 2]], scale: Scale) -> normalise::Normalised {
-    normalise(points, segments, |p: Point| p.scaled(scale.to_internal).canonical_zero())
+/// The input normalised in the coordinates that `scale` makes, with the
+/// ring segments (`ring`, per input segment) allowed to overlap.
+fn normalise_scaled(points: &[Point], segments: &[[Point; 2]], ring: &[bool], scale: Scale) -> normalise::Normalised {
+    let mut norm = normalise(points, segments, |p: Point| p.scaled(scale.to_internal).canonical_zero());
+    norm.allow_ring_overlaps(ring);
+    norm
 }
 
 fn input_point(points: &[Point], segments: &[[Point; 2]], src: PointSource) -> Point {

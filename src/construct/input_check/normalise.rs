@@ -19,6 +19,34 @@ pub(super) struct Normalised {
     /// The kept segments (positions in `segments`) by first point, then by
     /// last point, lexicographically (the sweep's order).
     pub(super) by_first_point: Vec<u32>,
+    /// Per kept segment, whether it may overlap another such one: every
+    /// input segment it stands for is a ring segment (`allow_ring_overlaps`).
+    /// Empty: none may.
+    pub(super) may_overlap: Vec<bool>,
+}
+
+impl Normalised {
+    /// Whether kept segments `i` and `j` may share a stretch: both are ring
+    /// segments, whose shared stretches cancel (`construct::shared_stretches`).
+    pub(super) fn may_overlap(&self, i: usize, j: usize) -> bool {
+        !self.may_overlap.is_empty() && self.may_overlap[i] && self.may_overlap[j]
+    }
+
+    /// Marks the kept segments that stand only for ring segments (`ring`:
+    /// per input segment, whether a polygon's ring made it; empty for none)
+    /// as allowed to overlap each other.
+    pub(super) fn allow_ring_overlaps(&mut self, ring: &[bool]) {
+        if ring.is_empty() {
+            return;
+        }
+        let mut ok = vec![true; self.segments.len()];
+        for (i, kept) in self.kept_of_input.iter().enumerate() {
+            if let Some(k) = *kept {
+                ok[k] &= ring[i];
+            }
+        }
+        self.may_overlap = ok;
+    }
 }
 
 /// Zero-length segments become points; repeated segments and points are

@@ -29,8 +29,9 @@
 //!    looks; when nothing ends at `q`, the descent meets one (a search in a
 //!    binary tree meets an equal key when there is one). From it, the run
 //!    is walked (after the ending ones have left). Two segments through `q`
-//!    cross there or overlap: a conflict at `q`, and the sweep stops. One
-//!    alone, `t`, is a touching: `t` is *split* at `q` (a [`Split`] names
+//!    cross there or overlap: a conflict at `q`, and the sweep stops,
+//!    except for ring segments that share a stretch (allowed: see below).
+//!    One alone, `t`, is a touching: `t` is *split* at `q` (a [`Split`] names
 //!    `t` and the input vertex at `q`: the isolated point, or an end of the
 //!    segment with the smallest index among those starting or ending there).
 //!    From `q` on, `t` is what is left of it, from `q` to its last point:
@@ -45,6 +46,18 @@
 //!    when nothing starts at `q`, the two neighbours. A pair that meets only
 //!    at an endpoint of one inside the other is no conflict (step 2 splits
 //!    it when the sweep reaches that point).
+//!
+//! # Ring segments that share a stretch
+//! Two collinear ring segments that overlap are no conflict when the
+//! caller allows it (`Normalised::may_overlap`, for polygon rings, whose
+//! shared stretches cancel by the even-odd rule): they are split at each
+//! other's endpoints inside them, as touchings are, so that the shared
+//! stretch becomes equal pieces. In the status, overlapping segments are
+//! tied (neither is above the other), a group that every other segment
+//! meets as it would meet one of them; they enter next to each other (a
+//! tie in step 3 is sorted by index) and a run through `q` in step 2 may
+//! hold several of them, all split at `q`. So the arguments below hold
+//! with each such group in the place of one segment.
 //!
 //! # Which conflict is reported, and why it is seen
 //! Every conflict found (a crossing or an overlap) is ranked by its
@@ -300,9 +313,13 @@ impl Sweep<'_> {
         }
         if interior != NIL {
             // The segments through q (the ending ones have left): one run of
-            // the status. Two of them cross at q or overlap; one alone is
-            // split at q, and from q on it is ordered among the segments
-            // starting there, as if it started there too.
+            // the status, from `t` up to `last`. Two of them cross at q or
+            // overlap: a conflict at q, and the sweep stops here, unless
+            // they are ring segments sharing a stretch, which are allowed
+            // (`Normalised::may_overlap`: every two of the run are then
+            // collinear, so checking neighbours suffices). The run is split
+            // at q, and from q on it is ordered among the segments starting
+            // there, as if it started there too.
             let mut t = interior;
             loop {
                 let p = self.status.previous(t);
@@ -311,20 +328,42 @@ impl Sweep<'_> {
                 }
                 t = p;
             }
-            let other = self.status.next(t);
-            if other != NIL && side(self.status.segment(other)) == Orientation::Collinear {
-                let found = self.pair(t, other);
-                self.offer(found);
-                return; // a conflict at q: the sweep stops here
+            let mut last = t;
+            loop {
+                let other = self.status.next(last);
+                if other == NIL || side(self.status.segment(other)) != Orientation::Collinear {
+                    break;
+                }
+                let found = self.pair(last, other);
+                if found.is_some() {
+                    self.offer(found);
+                    return; // a conflict at q: the sweep stops here
+                }
+                last = other;
             }
             let at = self.vertex_at(q);
-            self.splits.push(Split { segment: self.kept[t as usize] as usize, at });
+            let mut k = t;
+            loop {
+                self.splits.push(Split { segment: self.kept[k as usize] as usize, at });
+                if k == last {
+                    break;
+                }
+                k = self.status.next(k);
+            }
             if self.group.lone.is_some() {
                 return; // nothing starts or ends at an isolated point
             }
-            (below, above) = (self.status.previous(t), self.status.next(t));
-            self.status.remove(t);
-            self.group.starts.push(t);
+            (below, above) = (self.status.previous(t), self.status.next(last));
+            let mut k = t;
+            loop {
+                let next = self.status.next(k);
+                self.status.remove(k);
+                self.group.starts.push(k);
+                if k == last {
+                    break;
+                }
+                k = next;
+            }
         }
         if self.group.lone.is_some() {
             return; // nothing starts or ends at an isolated point

@@ -14,7 +14,7 @@ use std::cmp::Ordering;
 
 /// The check as the builder calls it, with the build's one scale.
 fn check_segments(points: &[Point], segments: &[[Point; 2]]) -> Result<CheckedInput, Conflict> {
-    super::check_segments(points, segments, input_scale(points, segments))
+    super::check_segments(points, segments, &[], input_scale(points, segments))
 }
 
 fn p(x: f64, y: f64) -> Point {
@@ -874,6 +874,18 @@ proptest! {
         invariance(&input, seed)?;
     }
 
+    /// Small grids, polylines that retrace themselves and hubs of
+    /// collinear spokes, some or all of them ring segments that may share
+    /// stretches.
+    #[test]
+    fn sweep_agrees_with_brute_force_ring_overlaps(
+        input in prop_oneof![small_grid_input(), polyline_input(), spread_input()],
+        f in placement(),
+        ring_bits in prop_oneof![Just(u64::MAX), any::<u64>()],
+    ) {
+        run_rings(&input, f, ring_bits)?;
+    }
+
     /// Random real coordinates: crossings are common, collinearity not;
     /// the leftmost crossing is compared exactly with the others.
     #[test]
@@ -884,6 +896,38 @@ proptest! {
         let norm = normalise(&[], &fs, |q| q.canonical_zero());
         sweep_agrees(&norm)?;
     }
+}
+
+/// Ring segments may share stretches (`Normalised::may_overlap`): with the
+/// segments whose bit in `ring_bits` is set marked as a ring's, the sweep
+/// still finds the leftmost conflict left (an overlap of two ring segments
+/// is none), and without one every split, the ends of every shared stretch
+/// among them; `check_segments` agrees.
+fn run_rings(input: &IntInput, f: (f64, f64), ring_bits: u64) -> Result<(), TestCaseError> {
+    let (fp, fs, mut norm) = normalised(input, f);
+    let ring: Vec<bool> = (0..fs.len()).map(|k| ring_bits >> (k % 64) & 1 == 1).collect();
+    norm.allow_ring_overlaps(&ring);
+    let found = sweep_agrees(&norm)?;
+    let checked = super::check_segments(&fp, &fs, &ring, input_scale(&fp, &fs));
+    prop_assert_eq!(checked.as_ref().err().copied(), found.map(|f| f.0));
+    Ok(())
+}
+
+#[test]
+fn ring_segments_sharing_stretches_are_split_at_their_ends() {
+    // the bottom edge of a square run over from 1 to 3 by a spike, and a
+    // third ring segment inside that stretch: every end inside another
+    let segments = [s(0., 0., 4., 0.), s(3., 0., 1., 0.), s(1.5, 0., 2.5, 0.), s(0., 0., 0., 4.)];
+    let ring = [true; 4];
+    let checked = super::check_segments(&[], &segments, &ring, input_scale(&[], &segments)).unwrap();
+    let got: Vec<(usize, Vertex)> = checked.splits.iter().map(|c| (checked.segments[c.segment].0, c.at)).collect();
+    assert_eq!(got, vec![(0, end(1, 1)), (0, end(2, 0)), (0, end(2, 1)), (0, end(1, 0)), (1, end(2, 0)), (1, end(2, 1))]);
+    // an obstacle along a ring segment is refused, as two obstacles are
+    let obstacle = [true, true, false, true];
+    let conflict = super::check_segments(&[], &segments, &obstacle, input_scale(&[], &segments)).unwrap_err();
+    // (0 and 1 both overlap it from the same point: the sweep meets 1 there)
+    assert!(matches!(conflict, Conflict::SegmentsOverlap { second: 2, .. }), "{conflict:?}");
+    assert!(check(&segments).is_err());
 }
 
 // ---- scale ----

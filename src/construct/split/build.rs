@@ -19,7 +19,7 @@ pub(crate) fn diagram_of_split(points: &[Point], segments: &[[Point; 2]], rings:
         split_rings_over_pieces = new_rings;
     }
     let ends: Vec<[Point; 2]> = split.pieces.iter().map(|p| p.ends).collect();
-    let mut diagram = crate::construct::diagram_of(&split.points, &ends).map_err(|e| in_input_terms(e, &split))?;
+    let mut diagram = crate::construct::diagram_of(&split.points, &ends, &[]).map_err(|e| in_input_terms(e, &split))?;
     if !rings.is_empty() {
         diagram.set_domain(&split_rings_over_pieces);
     }

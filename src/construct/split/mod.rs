@@ -54,6 +54,7 @@ use crate::geometry::snap::PixelGrid;
 use crate::geometry::{Point, Site};
 pub(crate) use build::diagram_of_split;
 use contacts::{contact_pixels, ContactCounts};
+pub(crate) use rings::split_rings;
 use route::{route, HotPixels};
 
 /// Most rounds of snapping before giving up (an internal error): on every

@@ -18,7 +18,7 @@ use crate::geometry::Point;
 
 /// The pieces reordered so that each ring's pieces come first, in ring
 /// order and pointing along it, then the rest; and the rings over them.
-pub(super) fn split_rings(pieces: Vec<Piece>, rings: &[RingInput], input_segments: usize) -> (Vec<Piece>, Vec<RingInput>) {
+pub(crate) fn split_rings(pieces: Vec<Piece>, rings: &[RingInput], input_segments: usize) -> (Vec<Piece>, Vec<RingInput>) {
     let mut ring_segment = vec![false; input_segments];
     for j in rings.iter().flat_map(|r| r.segments.clone()) {
         ring_segment[j] = true;
