@@ -19,6 +19,7 @@ use std::collections::HashMap;
 
 use crate::diagram::{Diagram, SiteId};
 use crate::error::{Error, ErrorKind};
+use crate::geometry::scale::{Magnitudes, EXACT_SPAN};
 use crate::geometry::Point;
 use index::{OffsetIndex, Side};
 
@@ -204,9 +205,32 @@ impl Diagram {
         for (&distance, &side) in distances.iter().zip(&sides) {
             let slot = if side == Side::Grow { &mut grow } else { &mut shrink };
             let index = slot.get_or_insert_with(|| OffsetIndex::new(self, side));
-            out.push(self.offset_with(index, distance));
+            let offset = self.offset_with(index, distance);
+            self.check_finite(&offset, distance)?;
+            out.push(offset);
         }
         Ok(out)
+    }
+
+    /// An offset is returned only with finite points and area. Within the
+    /// exact range and `MAX_OFFSET_REACH` that always holds; beyond the
+    /// exact range (an input whose smallest differences underflow in the
+    /// products the tracing needs) it is checked, and refused by kind.
+    fn check_finite(&self, offset: &Offset, distance: f64) -> Result<(), Error> {
+        let finite = |p: Point| p.x.is_finite() && p.y.is_finite();
+        let pieces_finite = offset.loops.iter().flat_map(|l| &l.pieces).all(|p| finite(p.from()) && finite(p.to()));
+        if pieces_finite && offset.area().is_finite() {
+            return Ok(());
+        }
+        let sites = (0..self.site_count()).filter_map(|k| self.site(SiteId::from_index(k)));
+        let points: Vec<Point> = sites.flat_map(|s| s.ends()).collect();
+        let span = Magnitudes::of_points(points.iter()).span();
+        let (kind, why) = if span > EXACT_SPAN {
+            (ErrorKind::UnsupportedRange, format!("the input's coordinates span {span} bits, beyond the exact range of {EXACT_SPAN}"))
+        } else {
+            (ErrorKind::Internal, "a bug in segvoronoi: please report the input".to_string())
+        };
+        Err(Error::new(kind, format!("offset distance {distance}: the loops came out with points or an area beyond f64 ({why})"), Vec::new()))
     }
 
     /// Which way `distance` goes, or why it cannot.
