@@ -77,7 +77,9 @@ pub unsafe extern "C" fn segvoronoi_builder_free(builder: *mut segvoronoi_builde
     if builder.is_null() {
         return;
     }
-    // SAFETY: the caller passes a builder from `segvoronoi_builder_new`, not freed yet.
+    // SAFETY: the caller passes a builder from `segvoronoi_builder_new`
+    // (made by `try_box`, which `Box::from_raw` may free), not freed yet and
+    // in no other call.
     guard_or((), || drop(unsafe { Box::from_raw(builder) }))
 }
 

@@ -349,3 +349,42 @@ pub const SEGVORONOI_VERSION_PATCH: u32 = 0;
 /// `MAJOR * 10000 + MINOR * 100 + PATCH` (see `segvoronoi_version_number`).
 pub const SEGVORONOI_VERSION_NUMBER: u32 =
     SEGVORONOI_VERSION_MAJOR * 10000 + SEGVORONOI_VERSION_MINOR * 100 + SEGVORONOI_VERSION_PATCH;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn message() -> String {
+        // SAFETY: the function returns a NUL-terminated string, never NULL.
+        unsafe { CStr::from_ptr(segvoronoi_last_error_message()) }.to_string_lossy().into_owned()
+    }
+
+    /// A panic inside an entry point is INTERNAL with its text as the last
+    /// error: the quiet hook took it (the previous hook, which prints, did
+    /// not see it), and the next success clears the message.
+    #[test]
+    fn panic_becomes_internal_with_its_text() {
+        let status = guard(|| panic!("boom at the boundary"));
+        assert_eq!(status, segvoronoi_status::Internal);
+        let text = message();
+        assert!(text.contains("boom at the boundary") && text.contains("internal error"), "{text}");
+        assert_eq!(guard(|| segvoronoi_status::Ok), segvoronoi_status::Ok);
+        assert_eq!(message(), "");
+        // a failure without a message of its own gets the status's text
+        assert_eq!(guard(|| segvoronoi_status::OutOfRange), segvoronoi_status::OutOfRange);
+        assert_eq!(message(), "index out of range");
+        // `guard_or` (no status) keeps the message unless it catches a panic
+        assert_eq!(guard_or(7, || 3), 3);
+        assert_eq!(message(), "index out of range");
+        assert_eq!(guard_or(7, || panic!("second")), 7);
+        assert!(message().contains("second"));
+    }
+
+    #[test]
+    fn out_of_range_names_the_valid_range() {
+        out_of_range("site", 9, 3);
+        assert_eq!(message(), "site 9 is out of range: valid are 0 to 2");
+        out_of_range("chain", 0, 0);
+        assert_eq!(message(), "chain 0 is out of range: there are none");
+    }
+}
