@@ -144,7 +144,9 @@ typedef enum segvoronoi_status {
   SEGVORONOI_STATUS_OUT_OF_RANGE = 4,
   // The caller's buffer is too small; the required count was written.
   SEGVORONOI_STATUS_BUFFER_TOO_SMALL = 5,
-  // More input than the diagram's 32-bit ids can hold.
+  // More input than the diagram's 32-bit ids can hold, a count larger
+  // than any array, or a polyline longer than
+  // `SEGVORONOI_MAX_POLYLINE_POINTS` (the message says which).
   SEGVORONOI_STATUS_TOO_LARGE = 6,
   // An argument has an invalid value (for example unknown flag bits).
   SEGVORONOI_STATUS_INVALID_ARGUMENT = 7,

@@ -48,7 +48,9 @@ pub enum segvoronoi_status {
     OutOfRange = 4,
     /// The caller's buffer is too small; the required count was written.
     BufferTooSmall = 5,
-    /// More input than the diagram's 32-bit ids can hold.
+    /// More input than the diagram's 32-bit ids can hold, a count larger
+    /// than any array, or a polyline longer than
+    /// `SEGVORONOI_MAX_POLYLINE_POINTS` (the message says which).
     TooLarge = 6,
     /// An argument has an invalid value (for example unknown flag bits).
     InvalidArgument = 7,
@@ -286,7 +288,7 @@ pub extern "C" fn segvoronoi_status_str(status: c_int) -> *const c_char {
         segvoronoi_status::Intersecting => c"input segments intersect",
         segvoronoi_status::OutOfRange => c"index out of range",
         segvoronoi_status::BufferTooSmall => c"buffer too small",
-        segvoronoi_status::TooLarge => c"too many input sites",
+        segvoronoi_status::TooLarge => c"too large: too many input sites or output points",
         segvoronoi_status::InvalidArgument => c"invalid argument",
         segvoronoi_status::Internal => c"internal error in segvoronoi",
         segvoronoi_status::InvalidPolygon => c"a polygon ring has fewer than three distinct points",
