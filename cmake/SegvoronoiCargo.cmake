@@ -47,25 +47,6 @@ set(SEGVORONOI_SONAME_LINK "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so.${S
 set(SEGVORONOI_DEV_LINK "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so")
 set(SEGVORONOI_STATIC_FILE "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.a")
 
-# cargo decides itself what is out of date, so it runs on every build; the
-# copies keep the installed names stable whatever cargo's layout.
-add_custom_target(segvoronoi_cargo ALL
-  COMMAND "${SEGVORONOI_CARGO}" build --lib --locked ${_segvoronoi_profile_flag}
-          --manifest-path "${PROJECT_SOURCE_DIR}/Cargo.toml"
-          --target-dir "${_segvoronoi_cargo_dir}"
-  COMMAND "${CMAKE_COMMAND}" -E make_directory "${CMAKE_CURRENT_BINARY_DIR}/lib"
-  COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${_segvoronoi_out}/libsegvoronoi.so" "${SEGVORONOI_SHARED_FILE}"
-  COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${_segvoronoi_out}/libsegvoronoi.a" "${SEGVORONOI_STATIC_FILE}"
-  COMMAND "${CMAKE_COMMAND}" -E create_symlink "libsegvoronoi.so.${PROJECT_VERSION}"
-          "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
-  COMMAND "${CMAKE_COMMAND}" -E create_symlink "libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
-          "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so"
-  BYPRODUCTS ${SEGVORONOI_SHARED_FILE} ${SEGVORONOI_SONAME_LINK} ${SEGVORONOI_DEV_LINK} ${SEGVORONOI_STATIC_FILE}
-  WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"
-  COMMENT "cargo build segvoronoi (${_segvoronoi_profile_dir})"
-  USES_TERMINAL
-  VERBATIM)
-
 # What a static link of a Rust library needs from the system, as rustc itself
 # reports it for this toolchain and target (an empty staticlib has the same
 # needs as ours: we depend on std and libc only).
@@ -89,6 +70,43 @@ foreach(_flag IN LISTS _segvoronoi_native_flags)
 endforeach()
 list(REMOVE_DUPLICATES SEGVORONOI_STATIC_SYSTEM_LIBS)
 message(STATUS "segvoronoi: a static link needs ${SEGVORONOI_STATIC_SYSTEM_LIBS}")
+
+# The shared library is linked here from the static one, not copied from
+# cargo's cdylib: rustc gives the linker a version script of its own (all
+# exports in the base version), and GNU ld and lld take the first script for a
+# symbol, so a second one from build.rs cannot version the C API (GNU ld even
+# refuses to combine them). Linking the whole staticlib with our script
+# (cmake/segvoronoi.map.in) gives every segvoronoi_* function the version
+# node SEGVORONOI_<SOVERSION> and keeps everything else local; --gc-sections
+# drops what no export reaches. c_tests/symbols.cmake checks the result.
+configure_file("${CMAKE_CURRENT_LIST_DIR}/segvoronoi.map.in" "${CMAKE_CURRENT_BINARY_DIR}/segvoronoi.map" @ONLY)
+set(_segvoronoi_system_link_flags "")
+foreach(_lib IN LISTS SEGVORONOI_STATIC_SYSTEM_LIBS)
+  list(APPEND _segvoronoi_system_link_flags "-l${_lib}")
+endforeach()
+
+# cargo decides itself what is out of date, so it runs on every build; the
+# copies keep the installed names stable whatever cargo's layout.
+add_custom_target(segvoronoi_cargo ALL
+  COMMAND "${SEGVORONOI_CARGO}" build --lib --locked ${_segvoronoi_profile_flag}
+          --manifest-path "${PROJECT_SOURCE_DIR}/Cargo.toml"
+          --target-dir "${_segvoronoi_cargo_dir}"
+  COMMAND "${CMAKE_COMMAND}" -E make_directory "${CMAKE_CURRENT_BINARY_DIR}/lib"
+  COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${_segvoronoi_out}/libsegvoronoi.a" "${SEGVORONOI_STATIC_FILE}"
+  COMMAND "${CMAKE_C_COMPILER}" -shared -o "${SEGVORONOI_SHARED_FILE}"
+          -Wl,--whole-archive "${SEGVORONOI_STATIC_FILE}" -Wl,--no-whole-archive
+          "-Wl,--version-script=${CMAKE_CURRENT_BINARY_DIR}/segvoronoi.map"
+          "-Wl,-soname,libsegvoronoi.so.${SEGVORONOI_SOVERSION}" -Wl,--gc-sections -Wl,-z,defs
+          ${_segvoronoi_system_link_flags}
+  COMMAND "${CMAKE_COMMAND}" -E create_symlink "libsegvoronoi.so.${PROJECT_VERSION}"
+          "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
+  COMMAND "${CMAKE_COMMAND}" -E create_symlink "libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
+          "${CMAKE_CURRENT_BINARY_DIR}/lib/libsegvoronoi.so"
+  BYPRODUCTS ${SEGVORONOI_SHARED_FILE} ${SEGVORONOI_SONAME_LINK} ${SEGVORONOI_DEV_LINK} ${SEGVORONOI_STATIC_FILE}
+  WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"
+  COMMENT "cargo build segvoronoi (${_segvoronoi_profile_dir})"
+  USES_TERMINAL
+  VERBATIM)
 
 # Build-tree targets, for add_subdirectory() and FetchContent users.
 add_library(segvoronoi_shared SHARED IMPORTED GLOBAL)

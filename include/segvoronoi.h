@@ -3,9 +3,21 @@
  *
  * Conventions: every fallible call returns a segvoronoi_status; outputs come
  * last and are written only on success; memory handed out by the library is
- * freed by its own _free function, and _free(NULL) is a no-op. A diagram is
- * immutable and may be read from many threads at once; a builder is used by
- * one thread at a time.
+ * freed by its own _free function, and _free(NULL) is a no-op.
+ *
+ * Errors: after every call that returns a segvoronoi_status,
+ * segvoronoi_last_error_message() on the same thread says why it failed
+ * (naming the argument or input index), or is "" after SEGVORONOI_STATUS_OK.
+ * The library never aborts the process: a size that cannot be allocated is
+ * SEGVORONOI_STATUS_OUT_OF_MEMORY, a panic inside it
+ * SEGVORONOI_STATUS_INTERNAL, and it prints nothing on stderr.
+ *
+ * Threads: a builder is used by one thread at a time (it may move between
+ * threads). A diagram, a medial axis and an offset are immutable: any
+ * number of threads may read one at once; only its _free must not overlap
+ * other calls on it. A medial axis shares its diagram, so either may be
+ * freed first; an offset holds copies of its own. The last error is kept
+ * per thread.
  *
  * Versioned structs: every struct the library fills in (segvoronoi_site,
  * _vertex, _edge, _edge_shape, _stats, _piece) starts with `size_t struct_size` and
@@ -87,6 +99,14 @@
 // `segvoronoi_loop.parent` of an outermost loop.
 #define SEGVORONOI_NO_PARENT UINT32_MAX
 
+// Most points one polyline or sample of the C API holds
+// (`segvoronoi_offset_loop_polyline`, `segvoronoi_medial_axis_sample_chain`,
+// `segvoronoi_diagram_edge_polyline`): a tolerance that asks for more is
+// `SEGVORONOI_STATUS_TOO_LARGE`, found by counting, before anything is
+// written or allocated. 2^24 points are 256 MiB of `{x, y}` doubles, past
+// any drawing; the cap is on the whole output, not per piece.
+#define SEGVORONOI_MAX_POLYLINE_POINTS 16777216
+
 // Major version of the library this header belongs to.
 #define SEGVORONOI_VERSION_MAJOR 0
 
@@ -129,7 +149,9 @@ typedef enum segvoronoi_status {
   SEGVORONOI_STATUS_OUT_OF_RANGE = 4,
   // The caller's buffer is too small; the required count was written.
   SEGVORONOI_STATUS_BUFFER_TOO_SMALL = 5,
-  // More input than the diagram's 32-bit ids can hold.
+  // More input than the diagram's 32-bit ids can hold, a count larger
+  // than any array, or a polyline longer than
+  // `SEGVORONOI_MAX_POLYLINE_POINTS` (the message says which).
   SEGVORONOI_STATUS_TOO_LARGE = 6,
   // An argument has an invalid value (for example unknown flag bits).
   SEGVORONOI_STATUS_INVALID_ARGUMENT = 7,
@@ -141,30 +163,58 @@ typedef enum segvoronoi_status {
   // A polygon ring has fewer than three distinct points (the message
   // names the polygon and the ring).
   SEGVORONOI_STATUS_INVALID_POLYGON = 9,
+  // Memory for a size the caller asked for could not be allocated (for
+  // example `segvoronoi_builder_add_points` with a large count under a
+  // memory limit). Nothing was changed; the call may succeed with less.
+  // Since 0.2.
+  SEGVORONOI_STATUS_OUT_OF_MEMORY = 10,
   // The input's coordinates span more than the exact range (largest
   // magnitude over `2^480` times the smallest nonzero magnitude or
   // difference) and could not be built at that span; the message names
   // the two coordinates and the range. Not a bug; see the README.
-  SEGVORONOI_STATUS_UNSUPPORTED_RANGE = 10,
+  // Since 0.2.
+  SEGVORONOI_STATUS_UNSUPPORTED_RANGE = 11,
 } segvoronoi_status;
 
 // Collects input sites. Opaque. Create with `segvoronoi_builder_new`, free
-// with `segvoronoi_builder_free`. Used by one thread at a time.
+// with `segvoronoi_builder_free`.
+//
+// Thread safety: one thread at a time. A builder may move between threads
+// (nothing in it is tied to the thread that made it), but two calls on it
+// must not overlap; calls on different builders may.
 typedef struct segvoronoi_builder segvoronoi_builder;
 
-// A built Voronoi diagram. Opaque and immutable: any number of threads may
-// read it at once. Free with `segvoronoi_diagram_free`.
+// A built Voronoi diagram. Opaque and immutable. Free with
+// `segvoronoi_diagram_free`.
+//
+// Thread safety: any number of threads may read one diagram at once
+// (every query takes `const segvoronoi_diagram *` and changes nothing);
+// `segvoronoi_diagram_free` must not overlap any other call on it. A
+// medial axis made from it shares it (see `segvoronoi_medial_axis`), so the
+// diagram may be freed first.
 typedef struct segvoronoi_diagram segvoronoi_diagram;
 
-// A medial axis (`segvoronoi_diagram_medial_axis`). Opaque and immutable;
-// it refers to its diagram, so free it (`segvoronoi_medial_axis_free`)
-// before the diagram.
+// A medial axis (`segvoronoi_diagram_medial_axis`). Opaque and immutable.
+// Free it with `segvoronoi_medial_axis_free`.
+//
+// Ownership: it shares its diagram (a reference count), so it may be
+// freed before or after the diagram: the diagram's memory goes when the
+// last of them is freed, and after `segvoronoi_diagram_free` the axis
+// still answers every query as before.
+//
+// Thread safety: any number of threads may read one medial axis at once,
+// also while another thread reads or frees its diagram;
+// `segvoronoi_medial_axis_free` must not overlap another call on the same
+// axis.
 typedef struct segvoronoi_medial_axis segvoronoi_medial_axis;
 
 // The offset of a diagram at one distance (`segvoronoi_diagram_offset`):
 // closed loops of exact pieces. Opaque and immutable; it holds its own
 // copy of everything it reports, so it may outlive its diagram. Free it
 // with `segvoronoi_offset_free`.
+//
+// Thread safety: any number of threads may read one offset at once;
+// `segvoronoi_offset_free` must not overlap another call on it.
 typedef struct segvoronoi_offset segvoronoi_offset;
 
 // A site: a point, or an open segment. Versioned: set `struct_size` before
@@ -285,16 +335,18 @@ typedef struct segvoronoi_stats {
 // Which branches `segvoronoi_diagram_medial_axis_filtered` leaves out
 // (Rust's `MedialAxisFilter`). Versioned: set `struct_size` to
 // `sizeof(segvoronoi_medial_axis_filter)`; a zeroed struct filters nothing.
+// The flags are integers, nonzero meaning on (any nonzero value: 1, 2,
+// 0x80, -1); they were `bool` before 0.2.
 typedef struct segvoronoi_medial_axis_filter {
   // Set by the caller to `sizeof(segvoronoi_medial_axis_filter)`.
   size_t struct_size;
-  // Whether the corner filter is on.
-  bool corner_filter;
+  // Nonzero: the corner filter is on.
+  uint32_t corner_filter;
   // With the corner filter: leave out the branches into convex corners
   // whose interior angle, in degrees, is above this.
   double corner_angle;
-  // Whether the spur filter is on.
-  bool spur_filter;
+  // Nonzero: the spur filter is on.
+  uint32_t spur_filter;
   // With the spur filter: leave out the leaf branches shorter than this
   // times the clearance at their junction.
   double spur_factor;
@@ -392,7 +444,8 @@ typedef struct segvoronoi_edge_shape {
 extern "C" {
 #endif // __cplusplus
 
-// A new, empty builder. Returns NULL only if memory is exhausted.
+// A new, empty builder. Returns NULL only if memory is exhausted (then
+// `segvoronoi_last_error_message` says so).
 //
 // Ownership: the caller owns the builder and frees it with
 // `segvoronoi_builder_free`.
@@ -529,7 +582,9 @@ enum segvoronoi_status segvoronoi_builder_set_split_crossings(struct segvoronoi_
 enum segvoronoi_status segvoronoi_builder_check(struct segvoronoi_builder *builder);
 
 // The message of the last failed call on this builder (naming the offending
-// input indices), or `""` if the last call succeeded. Never NULL.
+// input indices), or `""` if the last call succeeded. Never NULL. The same
+// text as `segvoronoi_last_error_message` right after a call on this
+// builder; this one stays with the builder while other calls come between.
 //
 // Ownership: the builder owns the text; it stays valid until the next call
 // on this builder or its `_free`.
@@ -546,13 +601,15 @@ const char *segvoronoi_builder_last_error(const struct segvoronoi_builder *build
 //
 // Errors: `NULL_ARGUMENT` (`builder` or `count` NULL, or `indices` NULL
 // with `capacity > 0`), `BUFFER_TOO_SMALL` (then `*count` holds the number
-// and the first `capacity` are written).
+// and the first `capacity` are written). Unlike other calls, a success
+// leaves `segvoronoi_last_error_message` as it was: this reads the error.
 enum segvoronoi_status segvoronoi_builder_last_error_indices(const struct segvoronoi_builder *builder,
                                                              size_t *indices,
                                                              size_t capacity,
                                                              size_t *count);
 
-// Frees a diagram. NULL does nothing.
+// Frees a diagram. NULL does nothing. Medial axes made from it stay valid
+// (they share the diagram); offsets hold copies of their own.
 void segvoronoi_diagram_free(struct segvoronoi_diagram *diagram);
 
 // Checks every topological invariant. `SEGVORONOI_STATUS_OK` for every
@@ -739,7 +796,9 @@ enum segvoronoi_status segvoronoi_diagram_cell_location(const struct segvoronoi_
 
 // Where the point `(x, y)` lies, exactly (even-odd over every ring), in
 // `*out`. Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (no polygon was
-// added).
+// added), `INVALID_COORDINATE` (`x` or `y` is NaN or infinite, as for
+// `segvoronoi_diagram_nearest_site`; before 0.2 such a point was
+// answered).
 enum segvoronoi_status segvoronoi_diagram_locate_point(const struct segvoronoi_diagram *diagram,
                                                        double x,
                                                        double y,
@@ -771,8 +830,8 @@ enum segvoronoi_status segvoronoi_diagram_inscribed_circles(const struct segvoro
 // separators; without polygons, every edge that is not a separator) in
 // `*out`.
 //
-// Ownership: the caller frees it with `segvoronoi_medial_axis_free`, before
-// freeing the diagram.
+// Ownership: the caller frees it with `segvoronoi_medial_axis_free`; it
+// shares the diagram, which may be freed before or after it.
 //
 // Errors: `NULL_ARGUMENT`; then `*out` is untouched.
 enum segvoronoi_status segvoronoi_diagram_medial_axis(const struct segvoronoi_diagram *diagram,
@@ -816,12 +875,14 @@ enum segvoronoi_status segvoronoi_medial_axis_piece(const struct segvoronoi_medi
 // The points of chain `chain` within `tolerance` (input units) of its exact
 // curve, each `{x, y, clearance}`: up to `capacity` points (`3 * capacity`
 // doubles) to `xyr`, the full number of points to `*count`; `xyr = NULL,
-// capacity = 0` only counts (`OK`).
+// capacity = 0` only counts (`OK`), allocating nothing. Each piece gets at
+// most 1,000,000 points (the tolerance is then not met there).
 //
 // Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT` (a tolerance
-// that is not positive, or a chain that reaches infinity),
-// `BUFFER_TOO_SMALL` (then `*count` holds the number needed and the first
-// `capacity` points are written).
+// that is not positive, or a chain that reaches infinity), `TOO_LARGE`
+// (the chain would have more than `SEGVORONOI_MAX_POLYLINE_POINTS` points:
+// nothing is written), `BUFFER_TOO_SMALL` (then `*count` holds the number
+// needed and the first `capacity` points are written).
 enum segvoronoi_status segvoronoi_medial_axis_sample_chain(const struct segvoronoi_medial_axis *axis,
                                                            size_t chain,
                                                            double tolerance,
@@ -951,11 +1012,14 @@ enum segvoronoi_status segvoronoi_offset_piece(const struct segvoronoi_offset *o
 // curve, `{x, y}` each, the first not repeated at the end: simple, and
 // nested as the exact loops are (Rust's `OffsetLoop::polyline`). Up to
 // `capacity` points (`2 * capacity` doubles) to `xy`, the full number to
-// `*count`; `xy = NULL, capacity = 0` only counts (`OK`).
+// `*count`; `xy = NULL, capacity = 0` only counts (`OK`), allocating
+// nothing.
 //
 // Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT` (a tolerance
-// that is not positive), `BUFFER_TOO_SMALL` (then `*count` holds the number
-// needed and the first `capacity` points are written).
+// that is not positive), `TOO_LARGE` (the loop would have more than
+// `SEGVORONOI_MAX_POLYLINE_POINTS` points: nothing is written),
+// `BUFFER_TOO_SMALL` (then `*count` holds the number needed and the first
+// `capacity` points are written).
 enum segvoronoi_status segvoronoi_offset_loop_polyline(const struct segvoronoi_offset *offset,
                                                        size_t index,
                                                        double tolerance,
@@ -1010,6 +1074,21 @@ enum segvoronoi_status segvoronoi_diagram_piece(const struct segvoronoi_diagram 
 enum segvoronoi_status segvoronoi_diagram_max_split_displacement(const struct segvoronoi_diagram *diagram,
                                                                  double *out);
 
+// The message of the last call on this thread that returned a
+// `segvoronoi_status`: `""` after `SEGVORONOI_STATUS_OK`, else what failed,
+// naming the argument or the input index at fault (for example
+// "argument `out` is NULL", "site 7 is out of range: there are 5 sites",
+// "point 3 has a non-finite coordinate (NaN, 1)"). Never NULL. Calls that
+// return no status (counts, `_free`, `_new`, `segvoronoi_status_str`,
+// `segvoronoi_version`, this function) leave it as it was, except that a
+// `_new` that returns NULL and a count that caught a panic set it.
+//
+// Ownership: the library owns the text; it stays valid until the next
+// call into segvoronoi on the same thread.
+//
+// Thread safety: each thread has its own last error; safe from any thread.
+const char *segvoronoi_last_error_message(void);
+
 // Static text for a status code (a `segvoronoi_status` value); never NULL,
 // valid forever. Numbers that are no status give `"unknown status"`.
 //
@@ -1054,7 +1133,7 @@ enum segvoronoi_status segvoronoi_diagram_edge_shape(const struct segvoronoi_dia
 // tolerance is then not met). Writes up to `capacity_points` points to `xy`
 // as `x0, y0, x1, y1, ...` (`2 * capacity_points` doubles) and the full
 // number of points to `*count`; `xy = NULL, capacity_points = 0` only
-// counts (`OK`).
+// counts (`OK`), allocating nothing.
 //
 // Ownership: `xy` and `*count` are caller-owned memory.
 // Errors: `NULL_ARGUMENT` (`diagram` or `count` NULL, or `xy` NULL with

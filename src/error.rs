@@ -19,6 +19,10 @@ pub enum ErrorKind {
     /// An argument of a query is out of its domain (such as an offset
     /// distance that is NaN, infinite or zero); the message says which.
     InvalidArgument,
+    /// Memory for a size the caller asked for (such as
+    /// [`Builder::reserve_points`](crate::Builder::reserve_points)) could not
+    /// be allocated; nothing was changed.
+    OutOfMemory,
     /// The construction could not complete a valid diagram: a bug in
     /// segvoronoi, not in the input (none is known; with sound arithmetic it
     /// does not happen). The message says what failed; please report the

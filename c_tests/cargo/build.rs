@@ -1,11 +1,13 @@
-//! Compiles the C API tests as strict C99 into a static library for the test
-//! in tests/c_api.rs.
+//! Compiles the C API tests and the misuse table as strict C99 into a static
+//! library for the tests in tests/c_api.rs.
 
 fn main() {
     println!("cargo:rerun-if-changed=../test_c_api.c");
+    println!("cargo:rerun-if-changed=../misuse.c");
     println!("cargo:rerun-if-changed=../../include/segvoronoi.h");
     cc::Build::new()
         .file("../test_c_api.c")
+        .file("../misuse.c")
         .include("../../include")
         .define("SEGVORONOI_C_TESTS_NO_MAIN", None)
         .std("c99")

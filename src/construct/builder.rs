@@ -141,21 +141,24 @@ impl Builder {
 
     /// Makes room for `additional` more points, or fails with
     /// [`ErrorKind::TooLarge`] (the builder unchanged) when the points and
-    /// segment endpoints together would exceed [`MAX_POINTS`].
+    /// segment endpoints together would exceed [`MAX_POINTS`], or with
+    /// [`ErrorKind::OutOfMemory`] when the room cannot be allocated (the
+    /// count comes from the caller, so this must not abort the process).
     pub fn reserve_points(&mut self, additional: usize) -> Result<(), Error> {
         check_capacity(self.points.len().saturating_add(additional).saturating_add(2 * self.segments.len()))?;
-        self.points.reserve(additional);
-        Ok(())
+        self.points.try_reserve(additional).map_err(|_| out_of_memory("points", additional, std::mem::size_of::<Point>()))
     }
 
     /// Makes room for `additional` more segments, or fails with
     /// [`ErrorKind::TooLarge`] (the builder unchanged) when the points and
-    /// segment endpoints together would exceed [`MAX_POINTS`].
+    /// segment endpoints together would exceed [`MAX_POINTS`], or with
+    /// [`ErrorKind::OutOfMemory`] when the room cannot be allocated.
     pub fn reserve_segments(&mut self, additional: usize) -> Result<(), Error> {
         let points = self.points.len().saturating_add(self.segments.len().saturating_add(additional).saturating_mul(2));
         check_capacity(points)?;
-        self.segments.reserve(additional);
-        Ok(())
+        self.segments
+            .try_reserve(additional)
+            .map_err(|_| out_of_memory("segments", additional, std::mem::size_of::<[Point; 2]>()))
     }
 
     /// Whether [`Builder::build`] splits the input where it crosses itself
@@ -343,6 +346,11 @@ fn check_segment(index: usize, [a, b]: [Point; 2]) -> Result<(), Error> {
         format!("segment {index} has a non-finite coordinate ({}, {}) - ({}, {})", a.x, a.y, b.x, b.y),
         vec![index],
     ))
+}
+
+fn out_of_memory(what: &str, count: usize, size: usize) -> Error {
+    let bytes = count.saturating_mul(size);
+    Error::new(ErrorKind::OutOfMemory, format!("out of memory: no room for {count} more {what} ({bytes} bytes)"), Vec::new())
 }
 
 fn check_capacity(count: usize) -> Result<(), Error> {

@@ -4,12 +4,18 @@ use std::ffi::{c_char, CString};
 
 use super::diagram::segvoronoi_diagram;
 use super::out::{require_buffer, write_buffer};
-use super::plumbing::{guard, guard_or, require_non_null, segvoronoi_status};
+use super::plumbing::{
+    fail, fail_with, guard, guard_or, last_error_string, require_non_null, segvoronoi_status, set_last_error, try_box,
+};
 use crate::error::Error;
-use crate::Builder;
+use crate::{Builder, MAX_POINTS};
 
 /// Collects input sites. Opaque. Create with `segvoronoi_builder_new`, free
-/// with `segvoronoi_builder_free`. Used by one thread at a time.
+/// with `segvoronoi_builder_free`.
+///
+/// Thread safety: one thread at a time. A builder may move between threads
+/// (nothing in it is tied to the thread that made it), but two calls on it
+/// must not overlap; calls on different builders may.
 pub struct segvoronoi_builder {
     inner: Builder,
     last_error: CString,
@@ -18,6 +24,8 @@ pub struct segvoronoi_builder {
 }
 
 impl segvoronoi_builder {
+    /// Keeps the outcome of a call as this builder's last error and the
+    /// thread's (`segvoronoi_last_error_message`).
     fn record(&mut self, result: Result<(), Error>) -> segvoronoi_status {
         match result {
             Ok(()) => {
@@ -26,29 +34,40 @@ impl segvoronoi_builder {
             }
             Err(e) => {
                 self.set_error(CString::new(e.message()).unwrap_or_default(), e.indices().to_vec());
-                segvoronoi_status::from(&e)
+                fail_with(&e)
             }
         }
     }
 
+    /// A failure found at the boundary (a NULL buffer, a count too large to
+    /// describe one): the builder's message too, so that it never keeps the
+    /// message of an earlier call.
+    fn refuse(&mut self, status: segvoronoi_status, message: &str) -> segvoronoi_status {
+        self.set_error(CString::new(message).unwrap_or_default(), Vec::new());
+        fail(status, message)
+    }
+
     fn set_error(&mut self, message: CString, indices: Vec<usize>) {
+        set_last_error(&message.to_string_lossy());
         self.last_error = message;
         self.last_error_indices = indices;
     }
 }
 
-/// A new, empty builder. Returns NULL only if memory is exhausted.
+/// A new, empty builder. Returns NULL only if memory is exhausted (then
+/// `segvoronoi_last_error_message` says so).
 ///
 /// Ownership: the caller owns the builder and frees it with
 /// `segvoronoi_builder_free`.
 #[no_mangle]
 pub extern "C" fn segvoronoi_builder_new() -> *mut segvoronoi_builder {
     guard_or(std::ptr::null_mut(), || {
-        Box::into_raw(Box::new(segvoronoi_builder {
-            inner: Builder::new(),
-            last_error: CString::default(),
-            last_error_indices: Vec::new(),
-        }))
+        let builder =
+            segvoronoi_builder { inner: Builder::new(), last_error: CString::default(), last_error_indices: Vec::new() };
+        try_box(builder).unwrap_or_else(|| {
+            set_last_error("out of memory: no room for a builder");
+            std::ptr::null_mut()
+        })
     })
 }
 
@@ -58,7 +77,9 @@ pub unsafe extern "C" fn segvoronoi_builder_free(builder: *mut segvoronoi_builde
     if builder.is_null() {
         return;
     }
-    // SAFETY: the caller passes a builder from `segvoronoi_builder_new`, not freed yet.
+    // SAFETY: the caller passes a builder from `segvoronoi_builder_new`
+    // (made by `try_box`, which `Box::from_raw` may free), not freed yet and
+    // in no other call.
     guard_or((), || drop(unsafe { Box::from_raw(builder) }))
 }
 
@@ -164,19 +185,41 @@ pub unsafe extern "C" fn segvoronoi_builder_add_polygon(
     n_rings: usize,
 ) -> segvoronoi_status {
     require_non_null!(builder);
-    if n_rings > 0 {
-        require_non_null!(ring_lengths);
+    {
+        // SAFETY: non-null; the caller passes a live builder used by this thread only.
+        let b = unsafe { &mut *builder };
+        if n_rings > 0 && ring_lengths.is_null() {
+            return b.refuse(segvoronoi_status::NullArgument, "argument `ring_lengths` is NULL");
+        }
+        // Bound the count before it becomes a slice: every ring has a point,
+        // so more rings than a diagram holds points cannot be valid input,
+        // and a larger count need not describe memory at all.
+        if n_rings > MAX_POINTS {
+            let message = format!("{n_rings} rings are too many: a diagram holds at most {MAX_POINTS} points");
+            return b.refuse(segvoronoi_status::TooLarge, &message);
+        }
     }
-    // SAFETY: non-null when n_rings > 0, valid for n_rings reads (the caller's promise).
+    // SAFETY: `ring_lengths` is non-null when n_rings > 0 and holds n_rings
+    // readable `size_t`s (the caller's promise); n_rings <= MAX_POINTS keeps
+    // the slice's byte size far below isize::MAX.
     let lengths: &[usize] = if n_rings == 0 { &[] } else { unsafe { std::slice::from_raw_parts(ring_lengths, n_rings) } };
     let Some(total) = lengths.iter().try_fold(0usize, |sum, &n| sum.checked_add(n)) else {
-        return segvoronoi_status::TooLarge;
+        // SAFETY: as above, the live builder.
+        let b = unsafe { &mut *builder };
+        return b.refuse(segvoronoi_status::TooLarge, "the ring lengths add up to more than SIZE_MAX points");
     };
     // SAFETY: passed on from the caller (see `add_flat`): `xy` holds the
     // `total` points of all rings.
     unsafe {
         add_flat::<2>(builder, xy, total, Builder::reserve_segments, |b, coords| {
-            let mut rings: Vec<Vec<[f64; 2]>> = Vec::with_capacity(lengths.len());
+            let mut rings: Vec<Vec<[f64; 2]>> = Vec::new();
+            if rings.try_reserve(lengths.len()).is_err() {
+                return Err(Error::new(
+                    crate::ErrorKind::OutOfMemory,
+                    format!("out of memory: no room for {} rings", lengths.len()),
+                    Vec::new(),
+                ));
+            }
             let mut at = 0;
             for &n in lengths {
                 rings.push(coords[2 * at..2 * (at + n)].chunks_exact(2).map(|c| [c[0], c[1]]).collect());
@@ -223,17 +266,26 @@ unsafe fn add_flat<const STRIDE: usize>(
     add: impl FnOnce(&mut Builder, &[f64]) -> Result<(), Error>,
 ) -> segvoronoi_status {
     require_non_null!(builder);
-    if count > 0 {
-        require_non_null!(xy);
-    }
     guard(|| {
         // SAFETY: non-null; the caller keeps the builder exclusive.
         let b = unsafe { &mut *builder };
+        if count > 0 && xy.is_null() {
+            return b.refuse(segvoronoi_status::NullArgument, "argument `xy` is NULL");
+        }
+        // The size limit (TOO_LARGE) and the room (OUT_OF_MEMORY, by
+        // `try_reserve`) come first: `count` is the caller's number.
         if let Err(e) = reserve(&mut b.inner, count) {
             return b.record(Err(e));
         }
-        // SAFETY: non-null, valid for STRIDE * count reads (the caller's promise).
-        let coords: &[f64] = if count == 0 { &[] } else { unsafe { std::slice::from_raw_parts(xy, STRIDE * count) } };
+        // `reserve` bounds count by MAX_POINTS, so this never fails on a
+        // 64-bit target; on a 32-bit one it keeps the slice below isize::MAX bytes.
+        let Some(doubles) = STRIDE.checked_mul(count).filter(|n| *n <= isize::MAX as usize / std::mem::size_of::<f64>()) else {
+            return b.refuse(segvoronoi_status::TooLarge, "the coordinates would exceed the address space");
+        };
+        // SAFETY: non-null when count > 0, valid for STRIDE * count reads
+        // (the caller's promise), and that many doubles span at most
+        // isize::MAX bytes (checked above).
+        let coords: &[f64] = if count == 0 { &[] } else { unsafe { std::slice::from_raw_parts(xy, doubles) } };
         let r = add(&mut b.inner, coords);
         b.record(r)
     })
@@ -284,23 +336,27 @@ pub unsafe extern "C" fn segvoronoi_builder_build(
         // SAFETY: out is non-null and writable.
         unsafe { *out = std::ptr::null_mut() };
     }
-    require_non_null!(builder, out);
+    require_non_null!(builder);
     guard(|| {
         // SAFETY: non-null live builder, exclusive to this thread.
         let b = unsafe { &mut *builder };
+        if out.is_null() {
+            return b.refuse(segvoronoi_status::NullArgument, "argument `out` is NULL");
+        }
         // `build` takes the builder by shared reference: a panic leaves it as it was.
         match guard_or(None, || Some(b.inner.build())) {
-            Some(Ok(d)) => {
-                b.set_error(CString::default(), Vec::new());
-                // SAFETY: out is non-null and writable.
-                unsafe { *out = segvoronoi_diagram::into_raw(d) };
-                segvoronoi_status::Ok
-            }
+            Some(Ok(d)) => match segvoronoi_diagram::into_raw(d) {
+                Some(diagram) => {
+                    b.record(Ok(()));
+                    // SAFETY: out is non-null and writable.
+                    unsafe { *out = diagram };
+                    segvoronoi_status::Ok
+                }
+                None => b.refuse(segvoronoi_status::OutOfMemory, "out of memory: no room for the diagram's handle"),
+            },
             Some(Err(e)) => b.record(Err(e)),
-            None => {
-                b.set_error(c"internal error: the build panicked; please report this input".into(), Vec::new());
-                segvoronoi_status::Internal
-            }
+            // the panic's text, from `guard_or`
+            None => b.refuse(segvoronoi_status::Internal, &last_error_string()),
         }
     })
 }
@@ -350,16 +406,16 @@ pub unsafe extern "C" fn segvoronoi_builder_check(builder: *mut segvoronoi_build
         let b = unsafe { &mut *builder };
         match guard_or(None, || Some(b.inner.check())) {
             Some(r) => b.record(r),
-            None => {
-                b.set_error(c"internal error: the check panicked; please report this input".into(), Vec::new());
-                segvoronoi_status::Internal
-            }
+            // the panic's text, from `guard_or`
+            None => b.refuse(segvoronoi_status::Internal, &last_error_string()),
         }
     })
 }
 
 /// The message of the last failed call on this builder (naming the offending
-/// input indices), or `""` if the last call succeeded. Never NULL.
+/// input indices), or `""` if the last call succeeded. Never NULL. The same
+/// text as `segvoronoi_last_error_message` right after a call on this
+/// builder; this one stays with the builder while other calls come between.
 ///
 /// Ownership: the builder owns the text; it stays valid until the next call
 /// on this builder or its `_free`.
@@ -383,7 +439,8 @@ pub unsafe extern "C" fn segvoronoi_builder_last_error(builder: *const segvorono
 ///
 /// Errors: `NULL_ARGUMENT` (`builder` or `count` NULL, or `indices` NULL
 /// with `capacity > 0`), `BUFFER_TOO_SMALL` (then `*count` holds the number
-/// and the first `capacity` are written).
+/// and the first `capacity` are written). Unlike other calls, a success
+/// leaves `segvoronoi_last_error_message` as it was: this reads the error.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_builder_last_error_indices(
     builder: *const segvoronoi_builder,
@@ -393,9 +450,10 @@ pub unsafe extern "C" fn segvoronoi_builder_last_error_indices(
 ) -> segvoronoi_status {
     require_non_null!(builder);
     require_buffer!(indices, capacity, count);
-    guard(|| {
+    guard_or(segvoronoi_status::Internal, || {
         // SAFETY: non-null live builder.
         let b = unsafe { &*builder };
+        // not `guard`, which would clear the message this call belongs to
         write_buffer(b.last_error_indices.iter().copied(), indices, capacity, count)
     })
 }

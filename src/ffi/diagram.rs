@@ -1,9 +1,10 @@
 //! `segvoronoi_diagram`: read access to a built diagram.
 
 use std::ffi::c_char;
+use std::sync::Arc;
 
 use super::out::{require_buffer, versioned, write_buffer, write_out, write_versioned};
-use super::plumbing::{guard, guard_or, into_c_string, require_non_null, segvoronoi_status};
+use super::plumbing::{fail, guard, guard_or, into_c_string, out_of_range, require_non_null, segvoronoi_status, try_box};
 use crate::query::ZERO_LENGTH;
 use crate::{Diagram, EdgeEnd, EdgeId, SiteId, TopologyOptions, VertexId};
 
@@ -23,15 +24,35 @@ pub const SEGVORONOI_TOPOLOGY_VORONOI_PAIRS: u32 = 1;
 /// zero-length (by default only edges whose sites are exactly cocircular).
 pub const SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE: u32 = 2;
 
-/// A built Voronoi diagram. Opaque and immutable: any number of threads may
-/// read it at once. Free with `segvoronoi_diagram_free`.
+/// A built Voronoi diagram. Opaque and immutable. Free with
+/// `segvoronoi_diagram_free`.
+///
+/// Thread safety: any number of threads may read one diagram at once
+/// (every query takes `const segvoronoi_diagram *` and changes nothing);
+/// `segvoronoi_diagram_free` must not overlap any other call on it. A
+/// medial axis made from it shares it (see `segvoronoi_medial_axis`), so the
+/// diagram may be freed first.
 pub struct segvoronoi_diagram {
-    inner: Diagram,
+    /// Shared with the medial axes made from it, which outlive this handle.
+    inner: Arc<Diagram>,
 }
 
+// The promise above, checked: the diagram may be read from many threads,
+// and a shared medial axis may drop the last reference on any thread.
+const _: () = {
+    const fn shareable<T: Send + Sync>() {}
+    shareable::<Diagram>();
+};
+
 impl segvoronoi_diagram {
-    pub(crate) fn into_raw(d: Diagram) -> *mut segvoronoi_diagram {
-        Box::into_raw(Box::new(segvoronoi_diagram { inner: d }))
+    /// A new handle for C; `None` when there is no memory for it.
+    pub(crate) fn into_raw(d: Diagram) -> Option<*mut segvoronoi_diagram> {
+        try_box(segvoronoi_diagram { inner: Arc::new(d) })
+    }
+
+    /// The diagram, shared (for a medial axis that keeps it alive).
+    pub(super) fn shared(&self) -> Arc<Diagram> {
+        Arc::clone(&self.inner)
     }
 }
 
@@ -171,27 +192,34 @@ pub struct segvoronoi_stats {
 versioned!(segvoronoi_stats, edges: usize);
 
 /// Runs `f` on the diagram behind a checked, non-null pointer.
-pub(super) fn with_diagram(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> segvoronoi_status) -> segvoronoi_status {
-    require_non_null!(d);
-    // SAFETY: non-null; the caller passes a live diagram (shared reads are fine).
-    guard(|| f(&unsafe { &*d }.inner))
+pub(super) fn with_diagram(
+    diagram: *const segvoronoi_diagram,
+    f: impl FnOnce(&Diagram) -> segvoronoi_status,
+) -> segvoronoi_status {
+    require_non_null!(diagram);
+    // SAFETY: non-null, and the caller passes a live diagram (not freed);
+    // it is only read, which any number of threads may do at once.
+    guard(|| f(&unsafe { &*diagram }.inner))
 }
 
-pub(super) fn count(d: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> usize) -> usize {
-    if d.is_null() {
+pub(super) fn count(diagram: *const segvoronoi_diagram, f: impl FnOnce(&Diagram) -> usize) -> usize {
+    if diagram.is_null() {
         return 0;
     }
-    // SAFETY: non-null live diagram.
-    guard_or(0, || f(&unsafe { &*d }.inner))
+    // SAFETY: non-null live diagram, only read.
+    guard_or(0, || f(&unsafe { &*diagram }.inner))
 }
 
-/// Frees a diagram. NULL does nothing.
+/// Frees a diagram. NULL does nothing. Medial axes made from it stay valid
+/// (they share the diagram); offsets hold copies of their own.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_free(diagram: *mut segvoronoi_diagram) {
     if diagram.is_null() {
         return;
     }
-    // SAFETY: the caller passes a diagram from `segvoronoi_builder_build`, not freed yet.
+    // SAFETY: the caller passes a diagram from `segvoronoi_builder_build`
+    // (made by `try_box`, which `Box::from_raw` may free), not freed yet and
+    // in use by no other call. Medial axes keep their own `Arc` of it.
     guard_or((), || drop(unsafe { Box::from_raw(diagram) }))
 }
 
@@ -201,7 +229,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_free(diagram: *mut segvoronoi_diagra
 pub unsafe extern "C" fn segvoronoi_diagram_validate(diagram: *const segvoronoi_diagram) -> segvoronoi_status {
     with_diagram(diagram, |d| match d.validate() {
         Ok(()) => segvoronoi_status::Ok,
-        Err(_) => segvoronoi_status::Internal,
+        Err(e) => fail(segvoronoi_status::Internal, format!("the diagram is invalid ({e:?}); please report the input")),
     })
 }
 
@@ -243,7 +271,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_site(
     require_non_null!(out);
     with_diagram(diagram, |d| {
         let Some(site) = site_id(d, index).and_then(|s| d.site(s)) else {
-            return segvoronoi_status::OutOfRange;
+            return out_of_range("site", index, d.site_count());
         };
         let kind = if site.is_point() { SEGVORONOI_SITE_POINT } else { SEGVORONOI_SITE_SEGMENT };
         let [a, b] = site.ends();
@@ -276,7 +304,7 @@ fn with_cell(
 ) -> segvoronoi_status {
     with_diagram(d, |d| match site_id(d, site).and_then(|s| d.cell(s)) {
         Some(cell) => f(cell),
-        None => segvoronoi_status::OutOfRange,
+        None => out_of_range("site", site, d.site_count()),
     })
 }
 
@@ -284,8 +312,11 @@ fn with_cell(
 /// `INVALID_ARGUMENT` for a point site.
 fn segment_site_id(d: &Diagram, index: usize) -> Result<SiteId, segvoronoi_status> {
     match site_id(d, index) {
-        None => Err(segvoronoi_status::OutOfRange),
-        Some(_) if index < d.point_site_count() => Err(segvoronoi_status::InvalidArgument),
+        None => Err(out_of_range("site", index, d.site_count())),
+        Some(_) if index < d.point_site_count() => Err(fail(
+            segvoronoi_status::InvalidArgument,
+            format!("site {index} is a point site, not a segment (sites 0..{} are points)", d.point_site_count()),
+        )),
         Some(s) => Ok(s),
     }
 }
@@ -307,7 +338,12 @@ pub unsafe extern "C" fn segvoronoi_diagram_segment_endpoints(
     with_diagram(diagram, |d| {
         let ends = match segment_site_id(d, site).map(|s| d.segment_endpoints(s)) {
             Ok(Some(ends)) => ends,
-            Ok(None) => return segvoronoi_status::Internal,
+            Ok(None) => {
+                return fail(
+                    segvoronoi_status::Internal,
+                    format!("segment site {site} has no endpoints; please report the input"),
+                )
+            }
             Err(status) => return status,
         };
         write_out(out_endpoints.cast::<[u32; 2]>(), ends.map(|s| s.index() as u32))
@@ -330,7 +366,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_segment_input_index(
     require_non_null!(out_index);
     with_diagram(diagram, |d| match segment_site_id(d, site).map(|s| d.segment_input_index(s)) {
         Ok(Some(j)) => write_out(out_index, j),
-        Ok(None) => segvoronoi_status::Internal,
+        Ok(None) => fail(segvoronoi_status::Internal, format!("segment site {site} has no input index; please report the input")),
         Err(status) => status,
     })
 }
@@ -346,7 +382,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_site_of_input(
     require_non_null!(out_site);
     with_diagram(diagram, |d| match d.site_of_input(input_index) {
         Some(s) => write_out(out_site, s.index() as u32),
-        None => segvoronoi_status::OutOfRange,
+        None => out_of_range("input point", input_index, d.stats().input_points),
     })
 }
 
@@ -364,7 +400,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_site_of_segment(
     require_non_null!(out_site);
     with_diagram(diagram, |d| match d.site_of_segment(input_index) {
         Some(s) => write_out(out_site, s.index() as u32),
-        None => segvoronoi_status::OutOfRange,
+        None => out_of_range("segment", input_index, d.piece_count()),
     })
 }
 
@@ -381,7 +417,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_vertex(
     require_non_null!(out);
     with_diagram(diagram, |d| {
         let Some(v) = (index < d.vertex_count()).then(|| d.vertex(VertexId::from_index(index))).flatten() else {
-            return segvoronoi_status::OutOfRange;
+            return out_of_range("vertex", index, d.vertex_count());
         };
         let sites = v.sites.map(|s| s.index() as u32);
         let (x, y, clearance) = (v.position.x, v.position.y, v.clearance);
@@ -402,7 +438,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge(
     require_non_null!(out);
     with_diagram(diagram, |d| {
         let Some(e) = (index < d.edge_count()).then(|| d.edge(EdgeId::from_index(index))).flatten() else {
-            return segvoronoi_status::OutOfRange;
+            return out_of_range("edge", index, d.edge_count());
         };
         let (sites, ends) = (e.sites.map(|s| s.index() as u32), e.ends.map(|end| edge_end(d, end)));
         let is_separator = d.is_separator(e.id).unwrap_or(false);
@@ -484,18 +520,18 @@ pub unsafe extern "C" fn segvoronoi_diagram_nearest_site(
     with_diagram(diagram, |d| {
         let p = crate::Point::new(x, y);
         if !p.is_finite() {
-            return segvoronoi_status::InvalidCoordinate;
+            return fail(segvoronoi_status::InvalidCoordinate, format!("the query point ({x}, {y}) is not finite"));
         }
         let hint = match hint {
             SEGVORONOI_NO_SITE => None,
             h => match site_id(d, h as usize) {
                 Some(s) => Some(s),
-                None => return segvoronoi_status::OutOfRange,
+                None => return out_of_range("hint site", h as usize, d.site_count()),
             },
         };
         match d.nearest_site(p, hint) {
             Some(s) => write_out(out_site, s.index() as u32),
-            None => segvoronoi_status::OutOfRange,
+            None => fail(segvoronoi_status::OutOfRange, "the diagram has no sites"),
         }
     })
 }
@@ -568,8 +604,9 @@ pub unsafe extern "C" fn segvoronoi_diagram_topology(
     require_non_null!(text);
     // SAFETY: text is non-null and writable.
     unsafe { *text = std::ptr::null_mut() };
-    if flags & !(SEGVORONOI_TOPOLOGY_VORONOI_PAIRS | SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE) != 0 {
-        return segvoronoi_status::InvalidArgument;
+    let unknown = flags & !(SEGVORONOI_TOPOLOGY_VORONOI_PAIRS | SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE);
+    if unknown != 0 {
+        return fail(segvoronoi_status::InvalidArgument, format!("unknown flag bits {unknown:#x} in `flags`"));
     }
     with_diagram(diagram, |d| {
         let options = TopologyOptions {

@@ -4,9 +4,9 @@
 //! `Diagram::vertex_location`, `edge_location`, `cell_location`,
 //! `locate_point`, `max_inscribed_circle` and `inscribed_circles`.
 
-use super::diagram::{segvoronoi_diagram, with_diagram};
+use super::diagram::{count, segvoronoi_diagram, with_diagram};
 use super::out::{require_buffer, write_buffer, write_out};
-use super::plumbing::{require_non_null, segvoronoi_status};
+use super::plumbing::{fail, out_of_range, require_non_null, segvoronoi_status};
 use crate::{Diagram, EdgeId, Location, Point, SiteId, VertexId};
 
 /// In the domain's interior.
@@ -26,34 +26,45 @@ fn code(location: Location) -> u32 {
 }
 
 /// Writes where `ask` says something lies: `INVALID_ARGUMENT` without a
-/// domain, `OUT_OF_RANGE` past the ids.
+/// domain; `ask`'s own status (with its message) past the ids.
 fn locate(
     diagram: *const segvoronoi_diagram,
     out: *mut u32,
-    ask: impl FnOnce(&Diagram) -> Option<Location>,
+    ask: impl FnOnce(&Diagram) -> Result<Location, segvoronoi_status>,
 ) -> segvoronoi_status {
     require_non_null!(out);
     with_diagram(diagram, |d| {
         if !d.has_domain() {
-            return segvoronoi_status::InvalidArgument;
+            return no_domain();
         }
         match ask(d) {
-            Some(location) => write_out(out, code(location)),
-            None => segvoronoi_status::OutOfRange,
+            Ok(location) => write_out(out, code(location)),
+            Err(status) => status,
         }
     })
+}
+
+/// `INVALID_ARGUMENT`: the diagram has no polygon, so nothing has a location.
+fn no_domain() -> segvoronoi_status {
+    fail(segvoronoi_status::InvalidArgument, "the diagram has no domain: no polygon was added")
+}
+
+/// The location of id `index` below `count`, or `OUT_OF_RANGE`.
+fn located(
+    what: &str,
+    index: usize,
+    count: usize,
+    location: impl FnOnce() -> Option<Location>,
+) -> Result<Location, segvoronoi_status> {
+    (index < count).then(location).flatten().ok_or_else(|| out_of_range(what, index, count))
 }
 
 /// Whether polygons were added (then vertices, edges and cells have a
 /// location); false for NULL.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_has_domain(diagram: *const segvoronoi_diagram) -> bool {
-    let mut answer = false;
-    with_diagram(diagram, |d| {
-        answer = d.has_domain();
-        segvoronoi_status::Ok
-    });
-    answer
+    // as the counts: no status, so the last error stays as it was
+    count(diagram, |d| usize::from(d.has_domain())) != 0
 }
 
 /// Where vertex `vertex` lies, a `SEGVORONOI_LOCATION_*`, in `*out`.
@@ -66,7 +77,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_vertex_location(
     vertex: usize,
     out: *mut u32,
 ) -> segvoronoi_status {
-    locate(diagram, out, |d| (vertex < d.vertex_count()).then(|| d.vertex_location(VertexId::from_index(vertex))).flatten())
+    locate(diagram, out, |d| located("vertex", vertex, d.vertex_count(), || d.vertex_location(VertexId::from_index(vertex))))
 }
 
 /// Where edge `edge` lies (all of it), in `*out`. Errors: as
@@ -77,7 +88,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_location(
     edge: usize,
     out: *mut u32,
 ) -> segvoronoi_status {
-    locate(diagram, out, |d| (edge < d.edge_count()).then(|| d.edge_location(EdgeId::from_index(edge))).flatten())
+    locate(diagram, out, |d| located("edge", edge, d.edge_count(), || d.edge_location(EdgeId::from_index(edge))))
 }
 
 /// Where the cell of site `site` lies, in `*out`. Errors: as
@@ -88,12 +99,14 @@ pub unsafe extern "C" fn segvoronoi_diagram_cell_location(
     site: usize,
     out: *mut u32,
 ) -> segvoronoi_status {
-    locate(diagram, out, |d| (site < d.site_count()).then(|| d.cell_location(SiteId::from_index(site))).flatten())
+    locate(diagram, out, |d| located("site", site, d.site_count(), || d.cell_location(SiteId::from_index(site))))
 }
 
 /// Where the point `(x, y)` lies, exactly (even-odd over every ring), in
 /// `*out`. Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (no polygon was
-/// added).
+/// added), `INVALID_COORDINATE` (`x` or `y` is NaN or infinite, as for
+/// `segvoronoi_diagram_nearest_site`; before 0.2 such a point was
+/// answered).
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_locate_point(
     diagram: *const segvoronoi_diagram,
@@ -101,7 +114,13 @@ pub unsafe extern "C" fn segvoronoi_diagram_locate_point(
     y: f64,
     out: *mut u32,
 ) -> segvoronoi_status {
-    locate(diagram, out, |d| d.locate_point(Point::new(x, y)))
+    let p = Point::new(x, y);
+    locate(diagram, out, |d| {
+        if !p.is_finite() {
+            return Err(fail(segvoronoi_status::InvalidCoordinate, format!("the query point ({x}, {y}) is not finite")));
+        }
+        d.locate_point(p).ok_or_else(no_domain)
+    })
 }
 
 /// The largest disk inside the domain: its centre in `*x, *y` and radius in
@@ -123,7 +142,8 @@ pub unsafe extern "C" fn segvoronoi_diagram_max_inscribed_circle(
             write_out(y, centre.y);
             write_out(r, radius)
         }
-        None => segvoronoi_status::InvalidArgument,
+        None if !d.has_domain() => no_domain(),
+        None => fail(segvoronoi_status::InvalidArgument, "nothing is inside the domain"),
     })
 }
 

@@ -2,17 +2,41 @@
 //! the sampling of a chain as `(x, y, clearance)`. Delegates to
 //! `Diagram::medial_axis` and `Diagram::sample_chain`.
 
+use std::sync::Arc;
+
 use super::diagram::{edge_end, segvoronoi_diagram, segvoronoi_edge_end, with_diagram};
-use super::out::{read_versioned, require_buffer, versioned, write_buffer, write_out, write_versioned};
-use super::plumbing::{guard, guard_or, require_non_null, segvoronoi_status};
+use super::offset::not_positive;
+use super::out::{
+    check_polyline_len, read_versioned, require_buffer, versioned, write_indexed, write_out, write_versioned, FromAnyBytes,
+};
+use super::plumbing::{fail, guard, guard_or, out_of_range, require_non_null, segvoronoi_status, try_box};
+use super::SEGVORONOI_MAX_POLYLINE_POINTS;
 use crate::{Diagram, MedialAxis, MedialAxisFilter};
 
-/// A medial axis (`segvoronoi_diagram_medial_axis`). Opaque and immutable;
-/// it refers to its diagram, so free it (`segvoronoi_medial_axis_free`)
-/// before the diagram.
+/// A medial axis (`segvoronoi_diagram_medial_axis`). Opaque and immutable.
+/// Free it with `segvoronoi_medial_axis_free`.
+///
+/// Ownership: it shares its diagram (a reference count), so it may be
+/// freed before or after the diagram: the diagram's memory goes when the
+/// last of them is freed, and after `segvoronoi_diagram_free` the axis
+/// still answers every query as before.
+///
+/// Thread safety: any number of threads may read one medial axis at once,
+/// also while another thread reads or frees its diagram;
+/// `segvoronoi_medial_axis_free` must not overlap another call on the same
+/// axis.
 pub struct segvoronoi_medial_axis {
-    diagram: *const segvoronoi_diagram,
+    /// The diagram the pieces' edges belong to, kept alive by the axis.
+    diagram: Arc<Diagram>,
     inner: MedialAxis,
+}
+
+/// Hands a new medial axis of `diagram` to C.
+fn new_axis(diagram: &segvoronoi_diagram, inner: MedialAxis, out: *mut *mut segvoronoi_medial_axis) -> segvoronoi_status {
+    match try_box(segvoronoi_medial_axis { diagram: diagram.shared(), inner }) {
+        Some(axis) => write_out(out, axis),
+        None => fail(segvoronoi_status::OutOfMemory, "out of memory: no room for the medial axis's handle"),
+    }
 }
 
 /// One piece of a chain of the medial axis: an edge of the diagram walked in
@@ -41,8 +65,8 @@ versioned!(segvoronoi_piece, sites: [u32; 2]);
 /// separators; without polygons, every edge that is not a separator) in
 /// `*out`.
 ///
-/// Ownership: the caller frees it with `segvoronoi_medial_axis_free`, before
-/// freeing the diagram.
+/// Ownership: the caller frees it with `segvoronoi_medial_axis_free`; it
+/// shares the diagram, which may be freed before or after it.
 ///
 /// Errors: `NULL_ARGUMENT`; then `*out` is untouched.
 #[no_mangle]
@@ -52,31 +76,35 @@ pub unsafe extern "C" fn segvoronoi_diagram_medial_axis(
 ) -> segvoronoi_status {
     require_non_null!(out);
     with_diagram(diagram, |d| {
-        let axis = Box::new(segvoronoi_medial_axis { diagram, inner: d.medial_axis() });
-        write_out(out, Box::into_raw(axis))
+        // SAFETY: `with_diagram` checked it non-null; a live diagram.
+        new_axis(unsafe { &*diagram }, d.medial_axis(), out)
     })
 }
 
 /// Which branches `segvoronoi_diagram_medial_axis_filtered` leaves out
 /// (Rust's `MedialAxisFilter`). Versioned: set `struct_size` to
 /// `sizeof(segvoronoi_medial_axis_filter)`; a zeroed struct filters nothing.
+/// The flags are integers, nonzero meaning on (any nonzero value: 1, 2,
+/// 0x80, -1); they were `bool` before 0.2.
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct segvoronoi_medial_axis_filter {
     /// Set by the caller to `sizeof(segvoronoi_medial_axis_filter)`.
     pub struct_size: usize,
-    /// Whether the corner filter is on.
-    pub corner_filter: bool,
+    /// Nonzero: the corner filter is on.
+    pub corner_filter: u32,
     /// With the corner filter: leave out the branches into convex corners
     /// whose interior angle, in degrees, is above this.
     pub corner_angle: f64,
-    /// Whether the spur filter is on.
-    pub spur_filter: bool,
+    /// Nonzero: the spur filter is on.
+    pub spur_filter: u32,
     /// With the spur filter: leave out the leaf branches shorter than this
     /// times the clearance at their junction.
     pub spur_factor: f64,
 }
 versioned!(segvoronoi_medial_axis_filter, spur_factor: f64);
+// SAFETY: integers and floats only: any bytes are a valid value.
+unsafe impl FromAnyBytes for segvoronoi_medial_axis_filter {}
 
 /// The medial axis without the branches `filter` leaves out (NULL: none;
 /// the rules are Rust's `MedialAxisFilter`'s, with pictures in
@@ -92,26 +120,31 @@ pub unsafe extern "C" fn segvoronoi_diagram_medial_axis_filtered(
     out: *mut *mut segvoronoi_medial_axis,
 ) -> segvoronoi_status {
     require_non_null!(out);
-    let rules = if filter.is_null() {
-        MedialAxisFilter::new()
-    } else {
-        // SAFETY: non-null; the caller passes a filter of `struct_size` bytes.
-        let Some(f) = (unsafe { read_versioned(filter) }) else { return segvoronoi_status::InvalidArgument };
-        let mut rules = MedialAxisFilter::new();
-        if f.corner_filter {
-            rules = rules.with_corner_angle(f.corner_angle);
-        }
-        if f.spur_filter {
-            rules = rules.with_spur_pruning(f.spur_factor);
-        }
-        if rules.corner_angle.is_nan() || rules.spur_factor.is_nan() {
-            return segvoronoi_status::InvalidArgument;
-        }
-        rules
-    };
     with_diagram(diagram, |d| {
-        let axis = Box::new(segvoronoi_medial_axis { diagram, inner: d.medial_axis_filtered(&rules) });
-        write_out(out, Box::into_raw(axis))
+        let rules = if filter.is_null() {
+            MedialAxisFilter::new()
+        } else {
+            // SAFETY: non-null; the caller passes a filter of `struct_size` bytes.
+            let f = match unsafe { read_versioned(filter) } {
+                Ok(f) => f,
+                Err(status) => return status,
+            };
+            let mut rules = MedialAxisFilter::new();
+            if f.corner_filter != 0 {
+                rules = rules.with_corner_angle(f.corner_angle);
+            }
+            if f.spur_filter != 0 {
+                rules = rules.with_spur_pruning(f.spur_factor);
+            }
+            if rules.corner_angle.is_nan() || rules.spur_factor.is_nan() {
+                let message =
+                    format!("filter->corner_angle ({}) or filter->spur_factor ({}) is NaN", f.corner_angle, f.spur_factor);
+                return fail(segvoronoi_status::InvalidArgument, message);
+            }
+            rules
+        };
+        // SAFETY: `with_diagram` checked it non-null; a live diagram.
+        new_axis(unsafe { &*diagram }, d.medial_axis_filtered(&rules), out)
     })
 }
 
@@ -121,7 +154,9 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_free(axis: *mut segvoronoi_media
     if axis.is_null() {
         return;
     }
-    // SAFETY: the caller passes an axis from `segvoronoi_diagram_medial_axis`, not freed yet.
+    // SAFETY: the caller passes an axis from `segvoronoi_diagram_medial_axis`
+    // (made by `try_box`), not freed yet and in no other call. Dropping it
+    // drops its share of the diagram.
     guard_or((), || drop(unsafe { Box::from_raw(axis) }))
 }
 
@@ -134,11 +169,12 @@ fn with_chain(
 ) -> segvoronoi_status {
     require_non_null!(axis);
     guard(|| {
-        // SAFETY: non-null; the caller passes a live axis (shared reads are fine).
+        // SAFETY: non-null; the caller passes a live axis (not freed; its
+        // diagram is alive through the axis's share). Only read.
         let axis = unsafe { &*axis };
         match axis.inner.chains.get(chain) {
             Some(c) => f(axis, c),
-            None => segvoronoi_status::OutOfRange,
+            None => out_of_range("chain", chain, axis.inner.chains.len()),
         }
     })
 }
@@ -152,8 +188,8 @@ fn with_piece(
     f: impl FnOnce(&Diagram, &crate::Piece) -> segvoronoi_status,
 ) -> segvoronoi_status {
     with_chain(axis, chain, |axis, c| match c.pieces.get(piece) {
-        Some(p) => with_diagram(axis.diagram, |d| f(d, p)),
-        None => segvoronoi_status::OutOfRange,
+        Some(p) => f(&axis.diagram, p),
+        None => out_of_range(&format!("chain {chain}'s piece"), piece, c.pieces.len()),
     })
 }
 
@@ -213,12 +249,14 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_piece(
 /// The points of chain `chain` within `tolerance` (input units) of its exact
 /// curve, each `{x, y, clearance}`: up to `capacity` points (`3 * capacity`
 /// doubles) to `xyr`, the full number of points to `*count`; `xyr = NULL,
-/// capacity = 0` only counts (`OK`).
+/// capacity = 0` only counts (`OK`), allocating nothing. Each piece gets at
+/// most 1,000,000 points (the tolerance is then not met there).
 ///
 /// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT` (a tolerance
-/// that is not positive, or a chain that reaches infinity),
-/// `BUFFER_TOO_SMALL` (then `*count` holds the number needed and the first
-/// `capacity` points are written).
+/// that is not positive, or a chain that reaches infinity), `TOO_LARGE`
+/// (the chain would have more than `SEGVORONOI_MAX_POLYLINE_POINTS` points:
+/// nothing is written), `BUFFER_TOO_SMALL` (then `*count` holds the number
+/// needed and the first `capacity` points are written).
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_medial_axis_sample_chain(
     axis: *const segvoronoi_medial_axis,
@@ -230,10 +268,20 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_sample_chain(
 ) -> segvoronoi_status {
     require_buffer!(xyr, capacity, count);
     with_chain(axis, chain, |axis, c| {
-        with_diagram(axis.diagram, |d| match d.sample_chain(c, tolerance) {
-            // three consecutive doubles per point: the alignment of an array of them
-            Some(points) => write_buffer(points, xyr.cast::<[f64; 3]>(), capacity, count),
-            None => segvoronoi_status::InvalidArgument,
+        let d = &*axis.diagram;
+        if tolerance.is_nan() || tolerance <= 0.0 {
+            return not_positive(tolerance);
+        }
+        // counted first (stopping past the cap), allocating nothing
+        let Some(total) = d.chain_sample_len(c, tolerance, SEGVORONOI_MAX_POLYLINE_POINTS) else {
+            return fail(segvoronoi_status::InvalidArgument, format!("chain {chain} reaches infinity: it has no finite samples"));
+        };
+        if let Err(status) = check_polyline_len(total, tolerance) {
+            return status;
+        }
+        // three consecutive doubles per point: the alignment of an array of them
+        write_indexed(total, xyr.cast::<[f64; 3]>(), capacity, count, |sink| {
+            d.for_each_chain_sample(c, tolerance, sink);
         })
     })
 }
@@ -257,6 +305,10 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_piece_at(
     with_piece(axis, chain, piece, |d, p| match d.piece_point_at(p, t) {
         // three consecutive doubles: the alignment of an array of them
         Some(point) => write_out(xyr.cast::<[f64; 3]>(), point),
-        None => segvoronoi_status::InvalidArgument,
+        None if !(0.0..=1.0).contains(&t) => fail(segvoronoi_status::InvalidArgument, format!("t = {t} is outside [0, 1]")),
+        None => fail(
+            segvoronoi_status::InvalidArgument,
+            format!("piece {piece} of chain {chain} reaches infinity: it has no point at a parameter"),
+        ),
     })
 }

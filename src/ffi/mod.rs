@@ -13,10 +13,18 @@
 //!   `(NULL, 0)` returns `OK` with the count (both in `out.rs`);
 //! - memory the library hands out is freed by the library's own `_free`
 //!   function, and `_free(NULL)` does nothing;
-//! - no panic crosses the boundary: a panic becomes `SEGVORONOI_STATUS_INTERNAL`;
-//! - a diagram is immutable: any number of threads may read one
-//!   `const segvoronoi_diagram *` at once. A builder is used by one thread at
-//!   a time.
+//! - every call that returns a status leaves its reason in the thread's last
+//!   error (`segvoronoi_last_error_message`, `""` after success; in
+//!   `plumbing.rs`);
+//! - no panic crosses the boundary: a panic becomes `SEGVORONOI_STATUS_INTERNAL`,
+//!   quietly (nothing on stderr), and no caller-given size aborts the
+//!   process: `try_reserve`, `SEGVORONOI_STATUS_OUT_OF_MEMORY`;
+//! - a slice is made from a C pointer and count only after the count is
+//!   bounded; flags the caller passes in a struct are integers (nonzero is
+//!   true), never `bool`;
+//! - a diagram, a medial axis and an offset are immutable: any number of
+//!   threads may read one at once. A medial axis shares its diagram (an
+//!   `Arc`). A builder is used by one thread at a time.
 //!
 //! This is the only module with `unsafe` code; it converts and delegates.
 
@@ -40,9 +48,11 @@ pub use domain::*;
 pub use medial_axis::*;
 pub use navigation::*;
 pub use offset::*;
+pub use out::SEGVORONOI_MAX_POLYLINE_POINTS;
 pub use pieces::*;
 pub use plumbing::{
-    segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version, segvoronoi_version_number,
-    SEGVORONOI_VERSION_MAJOR, SEGVORONOI_VERSION_MINOR, SEGVORONOI_VERSION_NUMBER, SEGVORONOI_VERSION_PATCH,
+    segvoronoi_last_error_message, segvoronoi_status, segvoronoi_status_str, segvoronoi_string_free, segvoronoi_version,
+    segvoronoi_version_number, SEGVORONOI_VERSION_MAJOR, SEGVORONOI_VERSION_MINOR, SEGVORONOI_VERSION_NUMBER,
+    SEGVORONOI_VERSION_PATCH,
 };
 pub use shape::*;

@@ -6,7 +6,7 @@
 
 use super::diagram::{segvoronoi_diagram, site_id, with_diagram};
 use super::out::{require_buffer, write_buffer, write_out};
-use super::plumbing::{require_non_null, segvoronoi_status};
+use super::plumbing::{out_of_range, require_non_null, segvoronoi_status};
 use crate::{Diagram, HalfEdge, VertexId};
 
 /// Runs `f` on half-edge `h` of the diagram and writes its answer to
@@ -20,7 +20,7 @@ fn half_edge_query(
     require_non_null!(out);
     with_diagram(diagram, |d| match f(d, HalfEdge::from_index(h as usize)) {
         Some(answer) => write_out(out, answer as u32),
-        None => segvoronoi_status::OutOfRange,
+        None => out_of_range("half-edge", h as usize, 2 * d.edge_count()),
     })
 }
 
@@ -80,7 +80,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_vertex_half_edges(
         match v.and_then(|v| d.vertex_half_edges(v)) {
             // three consecutive u32s: the alignment of an array of them
             Some(three) => write_out(out.cast::<[u32; 3]>(), three.map(|h| h.index() as u32)),
-            None => segvoronoi_status::OutOfRange,
+            None => out_of_range("vertex", vertex, d.vertex_count()),
         }
     })
 }
@@ -105,6 +105,6 @@ pub unsafe extern "C" fn segvoronoi_diagram_cell_half_edges(
     require_buffer!(half_edges, capacity, count);
     with_diagram(diagram, |d| match site_id(d, site) {
         Some(s) => write_buffer(d.cell_half_edges(s).map(|h| h.index() as u32), half_edges, capacity, count),
-        None => segvoronoi_status::OutOfRange,
+        None => out_of_range("site", site, d.site_count()),
     })
 }

@@ -2,8 +2,8 @@
 //! nesting, polylines and areas. Delegates to `Diagram::offsets`.
 
 use super::diagram::{segvoronoi_diagram, with_diagram};
-use super::out::{require_buffer, versioned, write_buffer, write_versioned};
-use super::plumbing::{guard, guard_or, require_non_null, segvoronoi_status};
+use super::out::{check_polyline_len, require_buffer, versioned, write_indexed, write_versioned};
+use super::plumbing::{fail, fail_with, guard, guard_or, out_of_range, require_non_null, segvoronoi_status, try_box};
 use crate::{Offset, OffsetLoop, OffsetPiece};
 
 /// `segvoronoi_loop_piece.kind` of a straight piece, parallel to a
@@ -18,6 +18,9 @@ pub const SEGVORONOI_NO_PARENT: u32 = u32::MAX;
 /// closed loops of exact pieces. Opaque and immutable; it holds its own
 /// copy of everything it reports, so it may outlive its diagram. Free it
 /// with `segvoronoi_offset_free`.
+///
+/// Thread safety: any number of threads may read one offset at once;
+/// `segvoronoi_offset_free` must not overlap another call on it.
 pub struct segvoronoi_offset {
     inner: Offset,
 }
@@ -109,12 +112,38 @@ pub unsafe extern "C" fn segvoronoi_diagram_offsets(
         require_non_null!(distances, out);
     }
     with_diagram(diagram, |d| {
-        // SAFETY: non-null when count > 0; the caller passes `count` doubles.
+        // Bound the count before it becomes a slice: `count` doubles and as
+        // many output pointers must fit in the address space.
+        if count > isize::MAX as usize / std::mem::size_of::<f64>() {
+            return fail(segvoronoi_status::TooLarge, format!("count {count} is larger than any array of doubles"));
+        }
+        // SAFETY: non-null when count > 0, and the caller passes `count`
+        // readable doubles, which span at most isize::MAX bytes (checked above).
         let distances = if count == 0 { &[][..] } else { unsafe { std::slice::from_raw_parts(distances, count) } };
-        let Ok(offsets) = d.offsets(distances) else { return segvoronoi_status::InvalidArgument };
-        for (k, inner) in offsets.into_iter().enumerate() {
-            // SAFETY: `out` holds `count` writable pointers.
-            unsafe { out.add(k).write(Box::into_raw(Box::new(segvoronoi_offset { inner }))) };
+        let offsets = match d.offsets(distances) {
+            Ok(offsets) => offsets,
+            Err(e) => return fail_with(&e),
+        };
+        // All handles first, so that `out` is written only on success.
+        let mut handles: Vec<*mut segvoronoi_offset> = Vec::new();
+        if handles.try_reserve_exact(count).is_err() {
+            return fail(segvoronoi_status::OutOfMemory, format!("out of memory: no room for {count} offset handles"));
+        }
+        for inner in offsets {
+            match try_box(segvoronoi_offset { inner }) {
+                Some(h) => handles.push(h),
+                None => {
+                    for h in handles {
+                        // SAFETY: made by `try_box` just above and not handed out.
+                        drop(unsafe { Box::from_raw(h) });
+                    }
+                    return fail(segvoronoi_status::OutOfMemory, "out of memory: no room for an offset's handle");
+                }
+            }
+        }
+        for (k, h) in handles.into_iter().enumerate() {
+            // SAFETY: `out` holds `count` writable pointers, and k < count.
+            unsafe { out.add(k).write(h) };
         }
         segvoronoi_status::Ok
     })
@@ -133,7 +162,8 @@ pub unsafe extern "C" fn segvoronoi_offset_free(offset: *mut segvoronoi_offset) 
 /// Runs `f` on the offset; `NULL_ARGUMENT` for NULL.
 fn with_offset(offset: *const segvoronoi_offset, f: impl FnOnce(&Offset) -> segvoronoi_status) -> segvoronoi_status {
     require_non_null!(offset);
-    // SAFETY: non-null; the caller passes a live offset (shared reads are fine).
+    // SAFETY: non-null; the caller passes a live offset (not freed). It is
+    // only read, which many threads may do at once.
     guard(|| f(&unsafe { &*offset }.inner))
 }
 
@@ -145,7 +175,7 @@ fn with_loop(
 ) -> segvoronoi_status {
     with_offset(offset, |o| match o.loops.get(index) {
         Some(l) => f(l),
-        None => segvoronoi_status::OutOfRange,
+        None => out_of_range("loop", index, o.loops.len()),
     })
 }
 
@@ -214,7 +244,7 @@ pub unsafe extern "C" fn segvoronoi_offset_piece(
 ) -> segvoronoi_status {
     require_non_null!(out);
     with_loop(offset, index, |l| {
-        let Some(&p) = l.pieces.get(piece) else { return segvoronoi_status::OutOfRange };
+        let Some(&p) = l.pieces.get(piece) else { return out_of_range(&format!("loop {index}'s piece"), piece, l.pieces.len()) };
         let value = match p {
             OffsetPiece::Arc { centre, radius, from, to, counter_clockwise, site } => segvoronoi_loop_piece {
                 kind: SEGVORONOI_OFFSET_ARC,
@@ -242,11 +272,14 @@ pub unsafe extern "C" fn segvoronoi_offset_piece(
 /// curve, `{x, y}` each, the first not repeated at the end: simple, and
 /// nested as the exact loops are (Rust's `OffsetLoop::polyline`). Up to
 /// `capacity` points (`2 * capacity` doubles) to `xy`, the full number to
-/// `*count`; `xy = NULL, capacity = 0` only counts (`OK`).
+/// `*count`; `xy = NULL, capacity = 0` only counts (`OK`), allocating
+/// nothing.
 ///
 /// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT` (a tolerance
-/// that is not positive), `BUFFER_TOO_SMALL` (then `*count` holds the number
-/// needed and the first `capacity` points are written).
+/// that is not positive), `TOO_LARGE` (the loop would have more than
+/// `SEGVORONOI_MAX_POLYLINE_POINTS` points: nothing is written),
+/// `BUFFER_TOO_SMALL` (then `*count` holds the number needed and the first
+/// `capacity` points are written).
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_offset_loop_polyline(
     offset: *const segvoronoi_offset,
@@ -257,9 +290,23 @@ pub unsafe extern "C" fn segvoronoi_offset_loop_polyline(
     count: *mut usize,
 ) -> segvoronoi_status {
     require_buffer!(xy, capacity, count);
-    with_loop(offset, index, |l| match l.polyline(tolerance) {
+    with_loop(offset, index, |l| {
+        let Some(total) = l.polyline_len(tolerance) else { return not_positive(tolerance) };
+        if let Err(status) = check_polyline_len(total, tolerance) {
+            return status;
+        }
         // two consecutive doubles per point: the alignment of an array of them
-        Some(points) => write_buffer(points.into_iter().map(<[f64; 2]>::from), xy.cast::<[f64; 2]>(), capacity, count),
-        None => segvoronoi_status::InvalidArgument,
+        write_indexed(total, xy.cast::<[f64; 2]>(), capacity, count, |sink| {
+            let mut j = 0;
+            l.for_each_polyline_point(tolerance, |p| {
+                sink(j, p.into());
+                j += 1;
+            });
+        })
     })
+}
+
+/// `INVALID_ARGUMENT` for a tolerance that is not positive.
+pub(super) fn not_positive(tolerance: f64) -> segvoronoi_status {
+    fail(segvoronoi_status::InvalidArgument, format!("tolerance {tolerance} is not positive"))
 }

@@ -17,13 +17,23 @@
 //! count. A non-NULL buffer that is too small gives `BUFFER_TOO_SMALL`, with
 //! the count and the first `capacity` items written.
 
-use super::plumbing::segvoronoi_status;
+use super::plumbing::{fail, segvoronoi_status};
 
 /// Writes `value` through `out` and reports success.
+///
+/// Callers check `out` for NULL first (`require_non_null!`); the caller of
+/// the export promises that it points to a writable, aligned `T`.
 pub(super) fn write_out<T>(out: *mut T, value: T) -> segvoronoi_status {
-    // SAFETY: callers check `out` for NULL first; it points to writable memory.
+    // SAFETY: non-null (checked by the caller), and writable and aligned
+    // for a `T` (the C caller's promise for this argument).
     unsafe { out.write(value) };
     segvoronoi_status::Ok
+}
+
+/// The C name of a type: its last path segment.
+fn c_name<T>() -> &'static str {
+    let name = std::any::type_name::<T>();
+    name.rsplit("::").next().unwrap_or(name)
 }
 
 /// A C struct whose first field is `size_t struct_size` (see the module
@@ -38,6 +48,16 @@ pub(super) unsafe trait Versioned: Sized {
     /// when fields are added.
     const FIRST_SIZE: usize;
 }
+
+/// A versioned struct that the caller passes in (read by
+/// [`read_versioned`]): every field is an integer, a float or an array of
+/// them, so that any bytes a C caller writes are a valid value. No `bool`
+/// (only 0 and 1 are valid `bool`s in Rust; a C caller's 2 or 0x80 would be
+/// undefined behaviour) and no enum: flags cross as integers, nonzero true.
+///
+/// # Safety
+/// Every bit pattern of `size_of::<Self>()` bytes is a valid `Self`.
+pub(super) unsafe trait FromAnyBytes: Versioned {}
 
 /// Declares a struct [`Versioned`]: `versioned!(segvoronoi_vertex, sites:
 /// [u32; 3])` names the last field of its first version and that field's
@@ -77,7 +97,12 @@ pub(super) fn write_versioned<T: Versioned>(out: *mut T, value: T) -> segvoronoi
     // caller has set.
     let asked = unsafe { out.cast::<usize>().read() };
     if asked < T::FIRST_SIZE {
-        return segvoronoi_status::InvalidArgument;
+        let message = format!(
+            "struct_size of the {} is {asked}, below {}, the size of its first version: set it to sizeof the struct",
+            c_name::<T>(),
+            T::FIRST_SIZE
+        );
+        return fail(segvoronoi_status::InvalidArgument, message);
     }
     let n = asked.min(std::mem::size_of::<T>());
     let value = std::mem::MaybeUninit::new(value);
@@ -94,24 +119,29 @@ pub(super) fn write_versioned<T: Versioned>(out: *mut T, value: T) -> segvoronoi
 /// Reads a versioned struct the caller passes in (`p` non-NULL): the
 /// bytes its `struct_size` says it has, up to the library's own size, over
 /// the defaults of the fields it lacks (an older caller's struct is
-/// shorter). `None` when `struct_size` is below the first version's size.
+/// shorter). `INVALID_ARGUMENT`, with a message, when `struct_size` is
+/// below the first version's size.
 ///
 /// # Safety
 /// `p` is non-NULL and points to at least `struct_size` readable bytes.
-pub(super) unsafe fn read_versioned<T: Versioned + Default>(p: *const T) -> Option<T> {
+pub(super) unsafe fn read_versioned<T: FromAnyBytes + Default>(p: *const T) -> Result<T, segvoronoi_status> {
     // SAFETY: `struct_size` is the first field (the `Versioned` contract)
-    // and every caller's struct has it.
+    // and every caller's struct has it; read unaligned, as C may hand us
+    // any address.
     let size = unsafe { p.cast::<usize>().read_unaligned() };
     if size < T::FIRST_SIZE {
-        return None;
+        let message =
+            format!("struct_size of the {} is {size}, below {}, the size of its first version", c_name::<T>(), T::FIRST_SIZE);
+        return Err(fail(segvoronoi_status::InvalidArgument, message));
     }
     let mut value = T::default();
     let n = size.min(std::mem::size_of::<T>());
     // SAFETY: the caller's struct has `size >= n` readable bytes, `value`
-    // has `size_of::<T>() >= n` writable ones, and every field is plain
-    // data for which any bytes the caller wrote are its own value.
+    // has `size_of::<T>() >= n` writable ones, they do not overlap, and
+    // any bytes are a valid value of every field (`FromAnyBytes`), so the
+    // mix of the caller's bytes and the defaults is a valid `T`.
     unsafe { std::ptr::copy_nonoverlapping(p.cast::<u8>(), (&mut value as *mut T).cast::<u8>(), n) };
-    Some(value)
+    Ok(value)
 }
 
 /// Returns early with `NullArgument` unless `count` is non-NULL and
@@ -148,9 +178,70 @@ pub(super) fn write_buffer<T>(
         n += 1;
     }
     write_out(count, n);
-    if n > capacity && !buffer.is_null() {
-        segvoronoi_status::BufferTooSmall
+    too_small(n, buffer, capacity)
+}
+
+/// `BUFFER_TOO_SMALL`, with its message, when a non-NULL buffer of
+/// `capacity` items is too small for `total`; else `OK`.
+fn too_small<T>(total: usize, buffer: *mut T, capacity: usize) -> segvoronoi_status {
+    if total > capacity && !buffer.is_null() {
+        let message =
+            format!("the buffer holds {capacity} items and {total} are needed: *count holds {total}, and the first {capacity} were written");
+        fail(segvoronoi_status::BufferTooSmall, message)
     } else {
         segvoronoi_status::Ok
     }
+}
+
+/// Most points one polyline or sample of the C API holds
+/// (`segvoronoi_offset_loop_polyline`, `segvoronoi_medial_axis_sample_chain`,
+/// `segvoronoi_diagram_edge_polyline`): a tolerance that asks for more is
+/// `SEGVORONOI_STATUS_TOO_LARGE`, found by counting, before anything is
+/// written or allocated. 2^24 points are 256 MiB of `{x, y}` doubles, past
+/// any drawing; the cap is on the whole output, not per piece.
+pub const SEGVORONOI_MAX_POLYLINE_POINTS: usize = 16_777_216;
+
+/// `TOO_LARGE` when a polyline of `total` points (counted first) is over
+/// [`SEGVORONOI_MAX_POLYLINE_POINTS`], with a message naming the tolerance.
+pub(super) fn check_polyline_len(total: usize, tolerance: f64) -> Result<(), segvoronoi_status> {
+    if total <= SEGVORONOI_MAX_POLYLINE_POINTS {
+        return Ok(());
+    }
+    let needed = if total == usize::MAX { "more than SIZE_MAX".to_string() } else { total.to_string() };
+    Err(fail(
+        segvoronoi_status::TooLarge,
+        format!(
+            "tolerance {tolerance:e} asks for {needed} points, more than SEGVORONOI_MAX_POLYLINE_POINTS \
+             ({SEGVORONOI_MAX_POLYLINE_POINTS}): use a larger tolerance"
+        ),
+    ))
+}
+
+/// Writes a list of `total` items, counted before: `fill` is called
+/// (only when there is a buffer) with a sink that takes each item and its
+/// index in the list, in any order; the sink writes those below
+/// `capacity`. Then as [`write_buffer`]: `*count = total`, and
+/// `BUFFER_TOO_SMALL` when a non-NULL buffer is too small. Nothing is
+/// allocated, so a count query costs only the count.
+///
+/// Callers check the arguments with [`require_buffer!`] first, and `fill`
+/// gives exactly the indices `0..total`.
+pub(super) fn write_indexed<T>(
+    total: usize,
+    buffer: *mut T,
+    capacity: usize,
+    count: *mut usize,
+    fill: impl FnOnce(&mut dyn FnMut(usize, T)),
+) -> segvoronoi_status {
+    if !buffer.is_null() && capacity > 0 {
+        fill(&mut |j, item| {
+            if j < capacity {
+                // SAFETY: `buffer` holds `capacity` writable items (the
+                // caller's promise, non-NULL checked above), and j < capacity.
+                unsafe { buffer.add(j).write(item) };
+            }
+        });
+    }
+    write_out(count, total);
+    too_small(total, buffer, capacity)
 }

@@ -4,7 +4,7 @@
 
 use super::diagram::{count, segvoronoi_diagram, with_diagram};
 use super::out::{require_buffer, write_buffer, write_out};
-use super::plumbing::{require_non_null, segvoronoi_status};
+use super::plumbing::{out_of_range, require_non_null, segvoronoi_status};
 use crate::Diagram;
 
 /// The number of segments the diagram was built from: the pieces of a split
@@ -35,7 +35,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_pieces_of_input(
     require_buffer!(pieces, capacity, count);
     with_diagram(diagram, |d| {
         if input >= d.stats().input_segments {
-            return segvoronoi_status::OutOfRange;
+            return out_of_range("input segment", input, d.stats().input_segments);
         }
         write_buffer(d.pieces_of_input(input).map(|p| p as u32), pieces, capacity, count)
     })
@@ -58,7 +58,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_inputs_of_piece(
     require_buffer!(inputs, capacity, count);
     with_diagram(diagram, |d| {
         if piece >= d.piece_count() {
-            return segvoronoi_status::OutOfRange;
+            return out_of_range("piece", piece, d.piece_count());
         }
         write_buffer(d.inputs_of_piece(piece).map(|i| i as u32), inputs, capacity, count)
     })
@@ -78,12 +78,13 @@ pub unsafe extern "C" fn segvoronoi_diagram_piece(
     with_diagram(diagram, |d| match d.piece(piece) {
         Some([a, b]) => {
             for (k, v) in [a.x, a.y, b.x, b.y].into_iter().enumerate() {
-                // SAFETY: the caller passes room for four doubles.
+                // SAFETY: `out` is non-null (checked above) and the caller
+                // passes room for four doubles; k < 4.
                 unsafe { out.add(k).write(v) };
             }
             segvoronoi_status::Ok
         }
-        None => segvoronoi_status::OutOfRange,
+        None => out_of_range("piece", piece, d.piece_count()),
     })
 }
 

@@ -3,8 +3,9 @@
 //! `Diagram::edge_shape`, `Diagram::edge_polyline` and `Diagram::edge_bezier`.
 
 use super::diagram::{segvoronoi_diagram, with_diagram};
-use super::out::{require_buffer, versioned, write_buffer, write_out, write_versioned};
-use super::plumbing::{require_non_null, segvoronoi_status};
+use super::offset::not_positive;
+use super::out::{check_polyline_len, require_buffer, versioned, write_indexed, write_out, write_versioned};
+use super::plumbing::{fail, out_of_range, require_non_null, segvoronoi_status};
 use crate::{Diagram, EdgeId, EdgeShape};
 
 /// `segvoronoi_edge_shape.kind` of a straight edge: between two points,
@@ -58,7 +59,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_shape(
     require_non_null!(out);
     with_diagram(diagram, |d| {
         let Some(shape) = edge_id(d, edge_index).and_then(|e| d.edge_shape(e)) else {
-            return segvoronoi_status::OutOfRange;
+            return out_of_range("edge", edge_index, d.edge_count());
         };
         let shape = match shape {
             EdgeShape::Parabola { focus, directrix: [a, b] } => segvoronoi_edge_shape {
@@ -84,7 +85,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_shape(
 /// tolerance is then not met). Writes up to `capacity_points` points to `xy`
 /// as `x0, y0, x1, y1, ...` (`2 * capacity_points` doubles) and the full
 /// number of points to `*count`; `xy = NULL, capacity_points = 0` only
-/// counts (`OK`).
+/// counts (`OK`), allocating nothing.
 ///
 /// Ownership: `xy` and `*count` are caller-owned memory.
 /// Errors: `NULL_ARGUMENT` (`diagram` or `count` NULL, or `xy` NULL with
@@ -106,13 +107,27 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_polyline(
     require_buffer!(xy, capacity_points, count);
     with_diagram(diagram, |d| {
         if tolerance.is_nan() || tolerance <= 0.0 {
-            return segvoronoi_status::InvalidArgument;
+            return not_positive(tolerance);
         }
-        let Some(edge) = edge_id(d, edge_index) else { return segvoronoi_status::OutOfRange };
-        let Some(points) = d.edge_polyline(edge, tolerance) else { return segvoronoi_status::InvalidArgument };
+        let Some(edge) = edge_id(d, edge_index) else { return out_of_range("edge", edge_index, d.edge_count()) };
+        // counted by making the points, without keeping them (at most 1,000,000)
+        let mut total = 0usize;
+        if d.for_each_edge_polyline_point(edge, tolerance, |_| total += 1).is_none() {
+            let message = format!("edge {edge_index} is a ray or a line: it has no finite polyline");
+            return fail(segvoronoi_status::InvalidArgument, message);
+        }
+        if let Err(status) = check_polyline_len(total, tolerance) {
+            return status;
+        }
         // xy holds 2 * capacity_points doubles: capacity_points pairs, as
         // aligned as one double.
-        write_buffer(points.into_iter().map(<[f64; 2]>::from), xy.cast::<[f64; 2]>(), capacity_points, count)
+        write_indexed(total, xy.cast::<[f64; 2]>(), capacity_points, count, |sink| {
+            let mut j = 0;
+            d.for_each_edge_polyline_point(edge, tolerance, |p| {
+                sink(j, p.into());
+                j += 1;
+            });
+        })
     })
 }
 
@@ -138,10 +153,13 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_bezier(
 ) -> segvoronoi_status {
     require_non_null!(xy);
     with_diagram(diagram, |d| {
-        let Some(edge) = edge_id(d, edge_index) else { return segvoronoi_status::OutOfRange };
+        let Some(edge) = edge_id(d, edge_index) else { return out_of_range("edge", edge_index, d.edge_count()) };
         match d.edge_bezier(edge) {
             Some(curve) => write_out(xy.cast::<[[f64; 2]; 3]>(), curve.map(<[f64; 2]>::from)),
-            None => segvoronoi_status::InvalidArgument,
+            None => fail(
+                segvoronoi_status::InvalidArgument,
+                format!("edge {edge_index} is no finite parabolic arc (straight, a ray or a line, or its control point is beyond double)"),
+            ),
         }
     })
 }

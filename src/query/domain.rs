@@ -158,8 +158,14 @@ impl Diagram {
     }
 
     /// Whether `p` (input coordinates) is in the domain, exactly (even-odd
-    /// rule over every ring); `None` without a domain.
+    /// rule over every ring); `None` without a domain, and for a point with
+    /// a NaN or infinite coordinate, which is nowhere (as for
+    /// [`Diagram::nearest_site`]; the exact tests would answer it as if it
+    /// were a number).
     pub fn locate_point(&self, p: Point) -> Option<Location> {
+        if !p.is_finite() {
+            return None;
+        }
         Some(self.point_location(&self.domain.as_ref()?.rings, p))
     }
 

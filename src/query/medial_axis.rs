@@ -254,20 +254,21 @@ impl Diagram {
     /// clearance: `[x, y, r]`. `None` for a piece reaching infinity or a
     /// tolerance that is not positive.
     pub fn sample_piece(&self, piece: &Piece, tolerance: f64) -> Option<Vec<[f64; 3]>> {
-        let mut points = Vec::new();
-        self.append_piece(piece, tolerance, &mut points, &mut Vec::new())?;
+        let sampled = self.sampled_piece(piece, tolerance)?;
+        let n = sampled.len(self);
+        let mut points = vec![[0.0; 3]; n];
+        sampled.for_each_point(self, n, |j, p| points[j] = p);
         Some(points)
     }
 
-    /// Appends the points of `sample_piece` to `out`, but for its first
-    /// when `out` already ends there (the end of the previous piece).
-    /// `scratch` is a buffer for the polyline.
+    /// A finite piece ready to sample, or `None` for a piece reaching
+    /// infinity or a tolerance that is not positive.
     ///
     /// The curve is the one of the piece's ends and sites (those of its
     /// edge, for a piece of `medial_axis`: then the polyline is the edge's
     /// `edge_polyline`), and the clearance is measured from the site on the
     /// left of the edge, so that the edge itself is not looked up.
-    fn append_piece(&self, piece: &Piece, tolerance: f64, out: &mut Vec<[f64; 3]>, scratch: &mut Vec<Point>) -> Option<()> {
+    fn sampled_piece(&self, piece: &Piece, tolerance: f64) -> Option<SampledPiece> {
         if tolerance.is_nan() || tolerance <= 0.0 || piece.edge.index() >= self.edges.len() {
             return None;
         }
@@ -281,48 +282,62 @@ impl Diagram {
         // the edge's own direction: the polyline of a parabola depends on it
         let [start, end] = if piece.reversed { [piece.ends[1], piece.ends[0]] } else { piece.ends };
         let (first, last) = (vertex(start)?, vertex(end)?);
-        let (start, end) = (self.store.position[first], self.store.position[last]);
         // the edge's own sites in its own order: on its left first
         let sites = if piece.reversed { [piece.sites[1], piece.sites[0]] } else { piece.sites };
-        let site = self.sites[sites[0].index()];
-        let with_clearance = |p: Point| [p.x, p.y, site.distance(p)];
-        let skip = usize::from(!out.is_empty());
         let shape = self.shape_between(sites);
-        // the ends are vertices: their stored clearance
-        let at_vertex = |v: usize| {
-            let p = self.store.position[v];
-            [p.x, p.y, self.store.clearance[v]]
-        };
-        if shape == EdgeShape::Line {
-            // its two ends, as `polyline_into` gives them, without a buffer
-            let ends = if piece.reversed { [last, first] } else { [first, last] };
-            out.extend(ends.into_iter().skip(skip).map(at_vertex));
-            return Some(());
-        }
-        scratch.clear();
-        self.polyline_into(shape, start, end, tolerance, scratch);
-        if piece.reversed {
-            scratch.reverse();
-        }
-        let (head, tail) = if piece.reversed { (last, first) } else { (first, last) };
-        let n = scratch.len();
-        out.extend(scratch.iter().enumerate().skip(skip).map(|(k, &p)| match k {
-            0 => at_vertex(head),
-            k if k + 1 == n => at_vertex(tail),
-            _ => with_clearance(p),
-        }));
-        Some(())
+        Some(SampledPiece { shape, first, last, left: sites[0], reversed: piece.reversed, tolerance })
     }
 
     /// The points of a chain within `tolerance` (see [`Diagram::sample_piece`]),
     /// shared ends once; `None` when a piece reaches infinity.
     pub fn sample_chain(&self, chain: &Chain, tolerance: f64) -> Option<Vec<[f64; 3]>> {
-        let mut out: Vec<[f64; 3]> = Vec::with_capacity(chain.pieces.len() + 1);
-        let mut scratch = Vec::new();
-        for piece in &chain.pieces {
-            self.append_piece(piece, tolerance, &mut out, &mut scratch)?;
-        }
+        let n = self.chain_sample_len(chain, tolerance, usize::MAX)?;
+        let mut out = vec![[0.0; 3]; n];
+        self.for_each_chain_sample(chain, tolerance, |j, p| out[j] = p)?;
         Some(out)
+    }
+
+    /// How many points `sample_chain(chain, tolerance)` has, counted
+    /// without making a list: `None` where `sample_chain` gives `None`. The
+    /// count stops at the first piece that takes it past `limit` (then it
+    /// is above `limit`, and the later pieces are not looked at), so that
+    /// a tolerance that asks for too many points costs no more than `limit`.
+    pub(crate) fn chain_sample_len(&self, chain: &Chain, tolerance: f64, limit: usize) -> Option<usize> {
+        let mut total = 0usize;
+        for (k, piece) in chain.pieces.iter().enumerate() {
+            // each piece after the first starts where the one before ended
+            total = total.saturating_add(self.sampled_piece(piece, tolerance)?.len(self) - usize::from(k > 0));
+            if total > limit {
+                break;
+            }
+        }
+        Some(total)
+    }
+
+    /// Calls `emit(j, point)` with each point of `sample_chain(chain,
+    /// tolerance)`, `j` its index there (a reversed piece's points come
+    /// last first), allocating nothing; `None` where `sample_chain` gives
+    /// `None`, found before anything is emitted only when
+    /// `chain_sample_len` said so first.
+    pub(crate) fn for_each_chain_sample(
+        &self,
+        chain: &Chain,
+        tolerance: f64,
+        mut emit: impl FnMut(usize, [f64; 3]),
+    ) -> Option<usize> {
+        let mut base = 0usize;
+        for (k, piece) in chain.pieces.iter().enumerate() {
+            let sampled = self.sampled_piece(piece, tolerance)?;
+            let skip = usize::from(k > 0);
+            let n = sampled.len(self);
+            sampled.for_each_point(self, n, |j, p| {
+                if j >= skip {
+                    emit(base + j - skip, p);
+                }
+            });
+            base += n - skip;
+        }
+        Some(base)
     }
 
     /// The largest disk inside the domain: its centre and radius (the
@@ -398,5 +413,59 @@ pub(super) fn degree_at(end: EdgeEnd, degrees: &[u8]) -> usize {
     match end {
         EdgeEnd::Vertex(v) => usize::from(degrees[v.index()]),
         EdgeEnd::Infinite { .. } => 0,
+    }
+}
+
+/// A finite piece of the medial axis to sample ([`Diagram::sample_piece`]):
+/// its edge's shape, end vertices and left site in the edge's own direction.
+struct SampledPiece {
+    shape: EdgeShape,
+    /// The vertices at the edge's `ends[0]` and `ends[1]`.
+    first: usize,
+    last: usize,
+    /// The site on the left of the edge.
+    left: SiteId,
+    /// Whether the piece runs from `last` to `first`.
+    reversed: bool,
+    tolerance: f64,
+}
+
+impl SampledPiece {
+    /// How many points it has (at least two).
+    fn len(&self, d: &Diagram) -> usize {
+        if self.shape == EdgeShape::Line {
+            return 2;
+        }
+        let mut n = 0usize;
+        self.for_each_edge_point(d, |_| n += 1);
+        n
+    }
+
+    /// The points of the edge's polyline from `first` to `last`.
+    fn for_each_edge_point(&self, d: &Diagram, emit: impl FnMut(Point)) {
+        let (start, end) = (d.store.position[self.first], d.store.position[self.last]);
+        d.for_each_polyline_point(self.shape, start, end, self.tolerance, emit);
+    }
+
+    /// Calls `emit(j, [x, y, clearance])` for each of its `n` points
+    /// (`n` from `len`), `j` the index in the piece's own direction. The ends
+    /// are the vertices, with their stored clearance; the points between
+    /// measure it from the left site.
+    fn for_each_point(&self, d: &Diagram, n: usize, mut emit: impl FnMut(usize, [f64; 3])) {
+        let at_vertex = |v: usize| {
+            let p = d.store.position[v];
+            [p.x, p.y, d.store.clearance[v]]
+        };
+        let site = d.sites[self.left.index()];
+        let mut k = 0usize;
+        self.for_each_edge_point(d, |p| {
+            let value = match k {
+                0 => at_vertex(self.first),
+                k if k + 1 == n => at_vertex(self.last),
+                _ => [p.x, p.y, site.distance(p)],
+            };
+            emit(if self.reversed { n - 1 - k } else { k }, value);
+            k += 1;
+        });
     }
 }

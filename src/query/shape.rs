@@ -152,29 +152,60 @@ impl Diagram {
         if tolerance.is_nan() || tolerance <= 0.0 {
             return None;
         }
-        let edge = self.edge(id)?;
-        let (start, end) = self.finite_ends(&edge)?;
         let mut points = Vec::new();
-        self.polyline_into(self.shape_of(&edge), start, end, tolerance, &mut points);
+        self.for_each_edge_polyline_point(id, tolerance, |p| points.push(p))?;
         Some(points)
     }
 
-    /// Appends to `out` the polyline of `edge_polyline` for an edge of shape
-    /// `shape` from `start` to `end` (the positions of its `ends[0]` and
-    /// `ends[1]`), for a positive `tolerance`. (The parabola of a
-    /// `Parabola` shape is the one of its edge's sites: the same focus and
-    /// directrix points.)
-    pub(crate) fn polyline_into(&self, shape: EdgeShape, start: Point, end: Point, tolerance: f64, out: &mut Vec<Point>) {
+    /// Calls `emit` with each point of `edge_polyline(id, tolerance)`, in
+    /// order, allocating nothing (the C API counts and writes into the
+    /// caller's buffer this way); `None`, and no call, where
+    /// `edge_polyline` gives `None`.
+    pub(crate) fn for_each_edge_polyline_point(&self, id: EdgeId, tolerance: f64, emit: impl FnMut(Point)) -> Option<()> {
+        if tolerance.is_nan() || tolerance <= 0.0 {
+            return None;
+        }
+        let edge = self.edge(id)?;
+        let (start, end) = self.finite_ends(&edge)?;
+        self.for_each_polyline_point(self.shape_of(&edge), start, end, tolerance, emit);
+        Some(())
+    }
+
+    /// Calls `emit` with each point of the polyline of `edge_polyline` for
+    /// an edge of shape `shape` from `start` to `end` (the positions of its
+    /// `ends[0]` and `ends[1]`), for a positive `tolerance`, in order,
+    /// allocating nothing: at least two points, the first `start` and the
+    /// last `end` exactly. (The parabola of a `Parabola` shape is the one of
+    /// its edge's sites: the same focus and directrix points.)
+    pub(crate) fn for_each_polyline_point(
+        &self,
+        shape: EdgeShape,
+        start: Point,
+        end: Point,
+        tolerance: f64,
+        mut emit: impl FnMut(Point),
+    ) {
         let Some((parabola, s0, s1)) = self.arc_of_shape(shape, start, end) else {
-            out.extend([start, end]);
+            emit(start);
+            emit(end);
             return;
         };
         // A tolerance beyond the scaled range becomes infinite: two points.
-        let first = out.len();
         let scale = self.scale;
-        parabola.sample_into(s0, s1, tolerance * self.scale.to_internal, MAX_POLYLINE_POINTS, |p| out.push(scale.point_to_input(p)));
-        let last = out.len() - 1; // `sample_into` gives at least two points
-        (out[first], out[last]) = (start, end);
+        // Each point is passed on when the next one comes, so that the last
+        // can be replaced by `end` (`sample_into` gives at least two).
+        let mut held: Option<Point> = None;
+        parabola.sample_into(s0, s1, tolerance * self.scale.to_internal, MAX_POLYLINE_POINTS, |p| {
+            let p = match held {
+                None => start,
+                Some(previous) => {
+                    emit(previous);
+                    scale.point_to_input(p)
+                }
+            };
+            held = Some(p);
+        });
+        emit(end);
     }
     /// The quadratic Bézier curve `[start, control, end]` that is a finite
     /// parabolic edge: `start` and `end` are the positions of `ends[0]` and

@@ -4,6 +4,7 @@ use std::ffi::c_int;
 
 extern "C" {
     fn segvoronoi_run_c_tests() -> c_int;
+    fn segvoronoi_run_misuse_tests() -> c_int;
 }
 
 #[test]
@@ -15,4 +16,12 @@ fn c_api_tests_pass() {
     // SAFETY: a plain C function with no arguments.
     let failures = unsafe { segvoronoi_run_c_tests() };
     assert_eq!(failures, 0, "C API checks failed; see stderr");
+}
+
+#[test]
+fn misuse_table_passes() {
+    assert!(!segvoronoi_c_tests::segvoronoi::ffi::segvoronoi_version().is_null());
+    // SAFETY: a plain C function with no arguments.
+    let failures = unsafe { segvoronoi_run_misuse_tests() };
+    assert_eq!(failures, 0, "misuse checks failed; see stderr");
 }

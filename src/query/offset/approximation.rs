@@ -19,6 +19,16 @@ use crate::geometry::Point;
 /// Most points one arc is cut into (the tolerance is then not met).
 const MAX_ARC_POINTS: usize = 1_000_000;
 
+/// How many chords an arc turning `turn` of radius `radius` is cut into:
+/// each strays at most `tolerance` from it and spans at most a quarter
+/// turn, and there are at most [`MAX_ARC_POINTS`].
+fn arc_chords(turn: f64, radius: f64, tolerance: f64) -> usize {
+    // a chord over angle a strays r (1 − cos(a/2)) from the arc
+    let step = if tolerance >= radius { PI } else { 2.0 * (1.0 - tolerance / radius).acos() };
+    // `as` turns a NaN (from non-finite input) into 0: one chord then
+    ((turn / step.min(PI / 2.0)).ceil().clamp(1.0, MAX_ARC_POINTS as f64) as usize).max(1)
+}
+
 /// The angle swept from `from` to `to` around `centre` the given way
 /// round, in `(0, 2π]` (equal ends: a whole circle).
 pub(super) fn sweep(centre: Point, from: Point, to: Point, counter_clockwise: bool) -> f64 {
@@ -63,25 +73,35 @@ impl OffsetPiece {
             return None;
         }
         let mut out = Vec::new();
-        self.append_points(tolerance, &mut out);
+        self.for_each_point(tolerance, &mut |p| out.push(p));
         Some(out)
     }
 
-    fn append_points(&self, tolerance: f64, out: &mut Vec<Point>) {
+    /// How many points `polyline(tolerance)` has, found without making
+    /// them (the C API counts before it writes, and allocates nothing).
+    fn point_count(&self, tolerance: f64) -> usize {
         match *self {
-            OffsetPiece::Line { from, .. } => out.push(from),
+            OffsetPiece::Line { .. } => 1,
+            OffsetPiece::Arc { centre, radius, from, to, counter_clockwise, .. } => {
+                arc_chords(sweep(centre, from, to, counter_clockwise), radius, tolerance)
+            }
+        }
+    }
+
+    /// Calls `emit` with each point of `polyline(tolerance)`, in order.
+    fn for_each_point(&self, tolerance: f64, emit: &mut impl FnMut(Point)) {
+        match *self {
+            OffsetPiece::Line { from, .. } => emit(from),
             OffsetPiece::Arc { centre, radius, from, to, counter_clockwise, .. } => {
                 let turn = sweep(centre, from, to, counter_clockwise);
-                // a chord over angle a strays r (1 − cos(a/2)) from the arc
-                let step = if tolerance >= radius { PI } else { 2.0 * (1.0 - tolerance / radius).acos() };
-                let pieces = (turn / step.min(PI / 2.0)).ceil().clamp(1.0, MAX_ARC_POINTS as f64) as usize;
+                let pieces = arc_chords(turn, radius, tolerance);
                 let start = (from.y - centre.y).atan2(from.x - centre.x);
                 let sign = if counter_clockwise { 1.0 } else { -1.0 };
-                out.push(from);
-                out.extend((1..pieces).map(|k| {
+                emit(from);
+                for k in 1..pieces {
                     let a = start + sign * turn * (k as f64 / pieces as f64);
-                    Point::new(centre.x + radius * a.cos(), centre.y + radius * a.sin())
-                }));
+                    emit(Point::new(centre.x + radius * a.cos(), centre.y + radius * a.sin()));
+                }
             }
         }
     }
@@ -112,10 +132,31 @@ impl OffsetLoop {
             return None;
         }
         let mut out = Vec::with_capacity(self.pieces.len());
-        for piece in &self.pieces {
-            piece.append_points(tolerance, &mut out);
-        }
+        self.for_each_polyline_point(tolerance, |p| out.push(p));
         Some(out)
+    }
+
+    /// How many points `polyline(tolerance)` has (saturating at
+    /// `usize::MAX`), without making them; `None` when `tolerance` is not
+    /// positive.
+    pub(crate) fn polyline_len(&self, tolerance: f64) -> Option<usize> {
+        if tolerance.is_nan() || tolerance <= 0.0 {
+            return None;
+        }
+        Some(self.pieces.iter().fold(0usize, |n, piece| n.saturating_add(piece.point_count(tolerance))))
+    }
+
+    /// Calls `emit` with each point of `polyline(tolerance)`, in order,
+    /// allocating nothing; `None` (and no call) when `tolerance` is not
+    /// positive.
+    pub(crate) fn for_each_polyline_point(&self, tolerance: f64, mut emit: impl FnMut(Point)) -> Option<()> {
+        if tolerance.is_nan() || tolerance <= 0.0 {
+            return None;
+        }
+        for piece in &self.pieces {
+            piece.for_each_point(tolerance, &mut emit);
+        }
+        Some(())
     }
 
     /// The signed area it encloses, from its exact pieces: positive for a
