@@ -47,22 +47,12 @@
 #include <time.h>
 #include <unistd.h>
 
-/* ---- The one place that reads the reason for a failed call. ------------
- * Today only builder calls keep a message. When the library gains a
- * thread-local last error for every call, build with
- * -DFUZZ_LAST_ERROR=segvoronoi_last_error_message (or whatever its name is,
- * a function taking no argument and returning const char *) and every
- * failing call is checked. NULL means "no way to read it": not checked. */
-#ifdef FUZZ_LAST_ERROR
+/* ---- The one place that reads the reason for a failed call: the
+ * thread-local last error, current after every call that returns a status. */
 static const char *failure_message(const segvoronoi_builder *builder) {
     (void)builder;
-    return FUZZ_LAST_ERROR();
+    return segvoronoi_last_error_message();
 }
-#else
-static const char *failure_message(const segvoronoi_builder *builder) {
-    return builder != NULL ? segvoronoi_builder_last_error(builder) : NULL;
-}
-#endif
 
 /* ---- Random numbers: SplitMix64, one stream per purpose. ---------------- */
 typedef struct { uint64_t s; } rng;
@@ -102,7 +92,7 @@ typedef struct {
 static size_t op_doubles(const op *o) { return o->kind == OP_SEGMENTS ? 4 * o->n : 2 * o->n; }
 
 /* ---- Outcome bookkeeping. ------------------------------------------------ */
-#define N_STATUS 11
+#define N_STATUS 12
 #define MAX_SIGS 16
 #define SIG_LEN 320
 typedef struct {
@@ -132,21 +122,7 @@ static int nseen = 0;
  * reports them without failing. Each entry matches the start of a
  * signature. Remove entries as the fixes land. */
 static const char *const KNOWN[] = {
-    /* listed in issue 28 */
-    "INTERNAL segvoronoi_builder_build",
-    "NONFINITE segvoronoi_offset_",
-    "NONFINITE segvoronoi_diagram_vertex",
-    "NONFINITE segvoronoi_diagram_edge", /* edge, edge_shape, edge_polyline: vertices at +-inf */
-    "NONFINITE segvoronoi_medial_axis_",
-    "INCONSISTENT segvoronoi_diagram_locate_point non-finite",
-    "NO_MESSAGE segvoronoi_builder_|a required pointer argument is NULL",
     /* found by this driver at f47f2fe, not in the issue's text */
-    "NONFINITE segvoronoi_diagram_extent",
-    "NONFINITE segvoronoi_diagram_max_inscribed_circle",
-    "NONFINITE segvoronoi_diagram_inscribed_circles",
-    "NONFINITE segvoronoi_diagram_site",  /* sites at +-inf without splitting */
-    "NONFINITE segvoronoi_diagram_piece",
-    "INTERNAL segvoronoi_diagram_validate",
     "INCONSISTENT segvoronoi_builder_check disagrees with build",
     NULL,
 };
@@ -940,7 +916,7 @@ static void query_medial(ctx *c, const segvoronoi_diagram *d, rng *r, double ext
             int sa = segvoronoi_medial_axis_piece_at(ax, ch, p, t, at);
             if (!(t >= 0 && t <= 1))
                 expect(c, "segvoronoi_medial_axis_piece_at", "t outside [0, 1]", sa, SEGVORONOI_STATUS_INVALID_ARGUMENT, NULL);
-            else if (outcome(c, "segvoronoi_medial_axis_piece_at", sa, S_ARG, NULL) == 0) {
+            else if (outcome(c, "segvoronoi_medial_axis_piece_at", sa, S_ARG | S_RANGE, NULL) == 0) {
                 finite(c, "segvoronoi_medial_axis_piece_at", "xy", at[0]), finite(c, "segvoronoi_medial_axis_piece_at", "xy", at[1]);
                 clearance(c, "segvoronoi_medial_axis_piece_at", "clearance", at[2]);
             }
@@ -1063,7 +1039,7 @@ static int make_offsets(ctx *c, const segvoronoi_diagram *d, rng *r, double ext,
         segvoronoi_offset *o = NULL;
         int st = segvoronoi_diagram_offset(d, dist, &o);
         if (bad || (!dom && dist < 0)) expect(c, "segvoronoi_diagram_offset", "bad distance", st, SEGVORONOI_STATUS_INVALID_ARGUMENT, NULL);
-        else outcome(c, "segvoronoi_diagram_offset", st, S_ARG, NULL);
+        else outcome(c, "segvoronoi_diagram_offset", st, S_ARG | S_RANGE, NULL);
         if (st == 0) out[n] = o, dists[n++] = dist;
     } else {
         double ds[4];
@@ -1075,7 +1051,7 @@ static int make_offsets(ctx *c, const segvoronoi_diagram *d, rng *r, double ext,
         }
         int st = segvoronoi_diagram_offsets(d, ds, (size_t)k, os);
         if (any_bad) expect(c, "segvoronoi_diagram_offsets", "bad distance", st, SEGVORONOI_STATUS_INVALID_ARGUMENT, NULL);
-        else outcome(c, "segvoronoi_diagram_offsets", st, S_ARG, NULL);
+        else outcome(c, "segvoronoi_diagram_offsets", st, S_ARG | S_RANGE, NULL);
         if (st == 0)
             for (int i = 0; i < k; ++i) out[n] = os[i], dists[n++] = ds[i];
         else

@@ -11,7 +11,7 @@ use super::out::{
 };
 use super::plumbing::{fail, guard, guard_or, out_of_range, require_non_null, segvoronoi_status, try_box};
 use super::SEGVORONOI_MAX_POLYLINE_POINTS;
-use crate::{Diagram, MedialAxis, MedialAxisFilter};
+use crate::{Diagram, EdgeEnd, MedialAxis, MedialAxisFilter};
 
 /// A medial axis (`segvoronoi_diagram_medial_axis`). Opaque and immutable.
 /// Free it with `segvoronoi_medial_axis_free`.
@@ -291,8 +291,9 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_sample_chain(
 /// as `{x, y, clearance}` in `xyr[0..3]`.
 ///
 /// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (chain or piece), `INVALID_ARGUMENT`
-/// (`t` outside `[0, 1]`, or a piece that reaches infinity); then `xyr` is
-/// untouched.
+/// (`t` outside `[0, 1]`, or a piece that reaches infinity),
+/// `UNSUPPORTED_RANGE` (a point that f64 cannot compute, only on inputs
+/// beyond the exact range); then `xyr` is untouched.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_medial_axis_piece_at(
     axis: *const segvoronoi_medial_axis,
@@ -306,9 +307,16 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_piece_at(
         // three consecutive doubles: the alignment of an array of them
         Some(point) => write_out(xyr.cast::<[f64; 3]>(), point),
         None if !(0.0..=1.0).contains(&t) => fail(segvoronoi_status::InvalidArgument, format!("t = {t} is outside [0, 1]")),
-        None => fail(
+        None if p.ends.iter().any(|end| matches!(end, EdgeEnd::Infinite { .. })) => fail(
             segvoronoi_status::InvalidArgument,
             format!("piece {piece} of chain {chain} reaches infinity: it has no point at a parameter"),
+        ),
+        None => fail(
+            segvoronoi_status::UnsupportedRange,
+            format!(
+                "the point at t = {t} of piece {piece} of chain {chain} cannot be computed in f64: \
+                 the input's coordinates span more than the exact range"
+            ),
         ),
     })
 }

@@ -81,8 +81,10 @@ versioned!(segvoronoi_loop_piece, counter_clockwise: bool);
 ///
 /// Ownership: the caller frees `*out` with `segvoronoi_offset_free`.
 /// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (a distance that is NaN,
-/// infinite or zero, or not positive without polygons); then `*out` is
-/// untouched.
+/// infinite or zero, or not positive without polygons, or one at which the
+/// input's extent plus twice the distance exceeds `2^510`, about 3e153),
+/// `UNSUPPORTED_RANGE` (loops that f64 cannot trace, only on inputs beyond
+/// the exact range); then `*out` is untouched.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_offset(
     diagram: *const segvoronoi_diagram,
@@ -99,8 +101,8 @@ pub unsafe extern "C" fn segvoronoi_diagram_offset(
 /// so each distance costs about its own output.
 ///
 /// Ownership: the caller frees each `out[k]` with `segvoronoi_offset_free`.
-/// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (any distance as for
-/// `segvoronoi_diagram_offset`); then `out` is untouched.
+/// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` and `UNSUPPORTED_RANGE` (any
+/// distance as for `segvoronoi_diagram_offset`); then `out` is untouched.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_offsets(
     diagram: *const segvoronoi_diagram,

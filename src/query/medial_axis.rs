@@ -225,7 +225,9 @@ impl Diagram {
     /// its end, in the chain's direction; along the line of a straight
     /// piece, along the directrix of a parabolic one) and the clearance
     /// there: `[x, y, r]`. `None` for a piece reaching infinity or a `t`
-    /// outside `[0, 1]`.
+    /// outside `[0, 1]`, and for a point that cannot be computed in `f64`
+    /// (only on inputs beyond the exact range, see
+    /// [`ErrorKind::UnsupportedRange`](crate::ErrorKind::UnsupportedRange)).
     pub fn piece_point_at(&self, piece: &Piece, t: f64) -> Option<[f64; 3]> {
         if !(0.0..=1.0).contains(&t) {
             return None;
@@ -237,6 +239,12 @@ impl Diagram {
         let [Some(from), Some(to)] = positions else { return None };
         let q = self.edge_curve(piece.edge, from, to)?.point(t);
         let q = self.scale.point_to_input(q);
+        if q.x.is_nan() || q.y.is_nan() {
+            // the curve's parameters underflowed: an input beyond the exact
+            // range (`ErrorKind::UnsupportedRange`), whose shortest edges
+            // f64 cannot parameterise
+            return None;
+        }
         // the ends exactly, as the vertices have them
         let q = if t == 0.0 {
             from
