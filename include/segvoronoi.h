@@ -129,11 +129,6 @@
 // the directrix).
 #define SEGVORONOI_EDGE_PARABOLA 1
 
-// The largest span (in bits, `Magnitudes::span`) that a scale puts wholly
-// within `PRODUCT_REACH`: the range in which every sign is decided in
-// `f64` expansions without underflow or overflow.
-#define EXACT_SPAN (2 * PRODUCT_REACH)
-
 // Result of every fallible call. The numbers are stable across versions.
 typedef enum segvoronoi_status {
   // Success.
@@ -895,8 +890,9 @@ enum segvoronoi_status segvoronoi_medial_axis_sample_chain(const struct segvoron
 // as `{x, y, clearance}` in `xyr[0..3]`.
 //
 // Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (chain or piece), `INVALID_ARGUMENT`
-// (`t` outside `[0, 1]`, or a piece that reaches infinity); then `xyr` is
-// untouched.
+// (`t` outside `[0, 1]`, or a piece that reaches infinity),
+// `UNSUPPORTED_RANGE` (a point that f64 cannot compute, only on inputs
+// beyond the exact range); then `xyr` is untouched.
 enum segvoronoi_status segvoronoi_medial_axis_piece_at(const struct segvoronoi_medial_axis *axis,
                                                        size_t chain,
                                                        size_t piece,
@@ -958,8 +954,10 @@ enum segvoronoi_status segvoronoi_diagram_cell_half_edges(const struct segvorono
 //
 // Ownership: the caller frees `*out` with `segvoronoi_offset_free`.
 // Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (a distance that is NaN,
-// infinite or zero, or not positive without polygons); then `*out` is
-// untouched.
+// infinite or zero, or not positive without polygons, or one at which the
+// input's extent plus twice the distance exceeds `2^510`, about 3e153),
+// `UNSUPPORTED_RANGE` (loops that f64 cannot trace, only on inputs beyond
+// the exact range); then `*out` is untouched.
 enum segvoronoi_status segvoronoi_diagram_offset(const struct segvoronoi_diagram *diagram,
                                                  double distance,
                                                  struct segvoronoi_offset **out);
@@ -970,8 +968,8 @@ enum segvoronoi_status segvoronoi_diagram_offset(const struct segvoronoi_diagram
 // so each distance costs about its own output.
 //
 // Ownership: the caller frees each `out[k]` with `segvoronoi_offset_free`.
-// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (any distance as for
-// `segvoronoi_diagram_offset`); then `out` is untouched.
+// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` and `UNSUPPORTED_RANGE` (any
+// distance as for `segvoronoi_diagram_offset`); then `out` is untouched.
 enum segvoronoi_status segvoronoi_diagram_offsets(const struct segvoronoi_diagram *diagram,
                                                   const double *distances,
                                                   size_t count,

@@ -42,7 +42,7 @@ const PRODUCT_REACH: i32 = 240;
 /// The largest span (in bits, `Magnitudes::span`) that a scale puts wholly
 /// within `PRODUCT_REACH`: the range in which every sign is decided in
 /// `f64` expansions without underflow or overflow.
-pub const EXACT_SPAN: i32 = 2 * PRODUCT_REACH;
+pub(crate) const EXACT_SPAN: i32 = 2 * PRODUCT_REACH;
 /// Below this span (in bits) of the coordinates' magnitudes, no difference
 /// of two coordinates can reach `PRODUCT_REACH` below the largest one (a
 /// nonzero difference is at least an ulp of the smaller nonzero coordinate,
