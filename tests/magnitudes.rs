@@ -315,6 +315,14 @@ fn offsets_are_finite_up_to_their_range_and_refused_beyond() {
         let refused = d.offset(1e200).expect_err("a distance beyond the range");
         assert_eq!(refused.kind(), ErrorKind::InvalidArgument);
     }
+    // a tiny input is scaled up inside: a distance far beyond its extent
+    // is refused, one of its own size is traced
+    let mut b = Builder::new();
+    b.add_polygon(&[square(1e-159)]).expect("a square");
+    let d = b.build().expect("a diagram");
+    check_loops(&d, 1e-160);
+    check_loops(&d, -1e-160);
+    assert_eq!(d.offset(2.0).expect_err("far beyond a tiny input").kind(), ErrorKind::InvalidArgument);
     // an input of extent 1e300 has no offsets within f64
     let mut b = Builder::new();
     b.add_polygon(&[square(1e300)]).expect("a square");

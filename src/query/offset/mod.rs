@@ -158,8 +158,10 @@ impl Diagram {
     /// Errors ([`ErrorKind::InvalidArgument`]): a distance that is NaN,
     /// infinite or zero, or not positive without a domain, or one at which
     /// the input's extent plus twice the distance exceeds `2^510` (about
-    /// `3e153`): beyond it the loops' areas (up to that squared) and the
-    /// arithmetic of their points leave the range of `f64`.
+    /// `3e153`), in input coordinates and in the construction's (an input
+    /// the construction scales up by a power of two, such as one of extent
+    /// 1e-159, has a bound that much smaller; the message gives it): beyond
+    /// it the loops' areas and the arithmetic of their points leave `f64`.
     ///
     /// ```
     /// use segvoronoi::{Builder, OffsetPiece};
@@ -226,11 +228,18 @@ impl Diagram {
         let points: Vec<Point> = sites.flat_map(|s| s.ends()).collect();
         let span = Magnitudes::of_points(points.iter()).span();
         let (kind, why) = if span > EXACT_SPAN {
-            (ErrorKind::UnsupportedRange, format!("the input's coordinates span {span} bits, beyond the exact range of {EXACT_SPAN}"))
+            (
+                ErrorKind::UnsupportedRange,
+                format!("the input's coordinates span {span} bits, beyond the exact range of {EXACT_SPAN}"),
+            )
         } else {
             (ErrorKind::Internal, "a bug in segvoronoi: please report the input".to_string())
         };
-        Err(Error::new(kind, format!("offset distance {distance}: the loops came out with points or an area beyond f64 ({why})"), Vec::new()))
+        Err(Error::new(
+            kind,
+            format!("offset distance {distance}: the loops came out with points or an area beyond f64 ({why})"),
+            Vec::new(),
+        ))
     }
 
     /// Which way `distance` goes, or why it cannot.
@@ -246,10 +255,16 @@ impl Diagram {
         if distance < 0.0 && !self.has_domain() {
             return invalid("negative, and there is no domain to shrink (add polygons, or ask for a positive distance)");
         }
-        if self.extent() + 2.0 * distance.abs() > MAX_OFFSET_REACH {
+        // The region's size, in input coordinates and in the construction's
+        // (scaled by a power of two: a tiny input is scaled up, and a
+        // distance far beyond its extent with it).
+        let reach = self.extent() + 2.0 * distance.abs();
+        let limit = MAX_OFFSET_REACH * self.scale.to_input.min(1.0);
+        if !(reach <= limit) {
             return invalid(&format!(
-                "with the input's extent {:e} the offset would reach beyond {MAX_OFFSET_REACH:e}, past which \
-                 its area and lengths leave the range of f64 (scale the input down first)",
+                "the offset's region would reach {reach:e} (the input's extent {:e} plus twice the distance), \
+                 beyond {limit:e} for this input, past which its area and the arithmetic of its points \
+                 leave the range of f64",
                 self.extent()
             ));
         }
