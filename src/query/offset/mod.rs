@@ -260,7 +260,7 @@ impl Diagram {
         // distance far beyond its extent with it).
         let reach = self.extent() + 2.0 * distance.abs();
         let limit = MAX_OFFSET_REACH * self.scale.to_input.min(1.0);
-        if !(reach <= limit) {
+        if reach > limit {
             return invalid(&format!(
                 "the offset's region would reach {reach:e} (the input's extent {:e} plus twice the distance), \
                  beyond {limit:e} for this input, past which its area and the arithmetic of its points \
