@@ -54,7 +54,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
-#define SEGVORONOI_VERSION_STRING "0.1.0"
+#define SEGVORONOI_VERSION_STRING "0.2.0"
 
 // Marks an edge end at infinity in `segvoronoi_edge_end::vertex`.
 #define SEGVORONOI_NO_VERTEX UINT32_MAX
@@ -111,7 +111,7 @@
 #define SEGVORONOI_VERSION_MAJOR 0
 
 // Minor version of the library this header belongs to.
-#define SEGVORONOI_VERSION_MINOR 1
+#define SEGVORONOI_VERSION_MINOR 2
 
 // Patch version of the library this header belongs to.
 #define SEGVORONOI_VERSION_PATCH 0
@@ -1100,7 +1100,7 @@ const char *segvoronoi_status_str(int status);
 const char *segvoronoi_version(void);
 
 // The library version as one number, `MAJOR * 10000 + MINOR * 100 +
-// PATCH` (0.1.0 is 100), the same as `SEGVORONOI_VERSION_NUMBER` in a
+// PATCH` (0.2.0 is 200), the same as `SEGVORONOI_VERSION_NUMBER` in a
 // matching header: compare the two to find a library older than the
 // header.
 //

@@ -317,7 +317,7 @@ pub extern "C" fn segvoronoi_version() -> *const c_char {
 }
 
 /// The library version as one number, `MAJOR * 10000 + MINOR * 100 +
-/// PATCH` (0.1.0 is 100), the same as `SEGVORONOI_VERSION_NUMBER` in a
+/// PATCH` (0.2.0 is 200), the same as `SEGVORONOI_VERSION_NUMBER` in a
 /// matching header: compare the two to find a library older than the
 /// header.
 ///
@@ -353,7 +353,7 @@ pub(crate) fn into_c_string(text: String) -> (*mut c_char, usize) {
 /// Major version of the library this header belongs to.
 pub const SEGVORONOI_VERSION_MAJOR: u32 = 0;
 /// Minor version of the library this header belongs to.
-pub const SEGVORONOI_VERSION_MINOR: u32 = 1;
+pub const SEGVORONOI_VERSION_MINOR: u32 = 2;
 /// Patch version of the library this header belongs to.
 pub const SEGVORONOI_VERSION_PATCH: u32 = 0;
 /// The version of the library this header belongs to as one number,
