@@ -333,3 +333,30 @@ fn offsets_are_finite_up_to_their_range_and_refused_beyond() {
     assert_eq!(refused.kind(), ErrorKind::InvalidArgument);
     assert!(refused.message().contains("extent"), "{refused}");
 }
+
+/// A long rectangle (10 × 1) and a point below it, at every scale from
+/// subnormal-adjacent to `f64::MAX` wide: the domain is located exactly
+/// (the ring's orientation and the point location were decided on the
+/// input's own coordinates, whose products overflow or underflow there),
+/// so the largest inscribed circle is the closed form's.
+#[test]
+fn domains_at_the_ends_of_the_range_are_located_exactly() {
+    for unit in [1e-300, 1e-200, 1.0, 1e200, 1e300, f64::MAX / 10.0] {
+        let corners = [[0.0, 0.0], [10.0 * unit, 0.0], [10.0 * unit, unit], [0.0, unit]];
+        for with_point in [false, true] {
+            let mut b = Builder::new();
+            b.add_polygon(&[corners.to_vec()]).expect("a rectangle");
+            if with_point {
+                b.add_point([3.0 * unit, -2.0 * unit]).expect("a point below");
+            }
+            let d = b.build().unwrap_or_else(|e| panic!("unit {unit:e}: {e}"));
+            check_finite(&d, &format!("unit {unit:e}"));
+            let (centre, r) = d.max_inscribed_circle().unwrap_or_else(|| panic!("unit {unit:e}: no circle"));
+            let what = format!("unit {unit:e}, point {with_point}: circle at {centre:?} r {r:e}");
+            assert!((r - 0.5 * unit).abs() <= 1e-12 * unit, "{what}");
+            assert!((centre.y - 0.5 * unit).abs() <= 1e-12 * unit, "{what}");
+            assert_eq!(d.locate_point(centre), Some(segvoronoi::Location::Inside), "{what}");
+            assert_eq!(d.locate_point(Point::new(5.0 * unit, 2.0 * unit)), Some(segvoronoi::Location::Outside), "{what}");
+        }
+    }
+}

@@ -188,7 +188,7 @@ impl Diagram {
                 let forward = self.segment_endpoints(s).is_some_and(|[a, _]| a == ring.corners[k]);
                 role[s.index()] = Role::RingSegment { left_inside: ring.left_inside == forward };
                 let [prev, here, next] = [ring.corners[(k + n - 1) % n], ring.corners[k], ring.corners[(k + 1) % n]];
-                let turn = orientation(self.point_of(prev), self.point_of(here), self.point_of(next));
+                let turn = self.turn(self.point_of(prev), self.point_of(here), self.point_of(next));
                 // the reflex side: right of a left turn, left of a right turn
                 let cell = match turn {
                     Orientation::Collinear => Location::Boundary,
@@ -378,7 +378,7 @@ impl Diagram {
         let mut cell = None;
         for k in 0..n {
             let ((u, to_u), (v, to_v)) = (around[k], around[(k + 1) % n]);
-            if orientation(here, to_u, to_v) == Orientation::CounterClockwise {
+            if self.turn(here, to_u, to_v) == Orientation::CounterClockwise {
                 continue; // less than a half turn from u to v
             }
             if cell.is_some() {
@@ -444,7 +444,7 @@ impl Diagram {
         };
         let low = (0..n).min_by(|&i, &j| key(i).partial_cmp(&key(j)).expect("finite")).unwrap_or(0);
         let [prev, here, next] = [(low + n - 1) % n, low, (low + 1) % n].map(|k| self.point_of(ring.corners[k]));
-        orientation(prev, here, next) == Orientation::CounterClockwise
+        self.turn(prev, here, next) == Orientation::CounterClockwise
     }
 
     /// The other rings that contain ring `r` (rings neither cross nor
@@ -515,12 +515,12 @@ impl Diagram {
             let (before, after) = (self.point_of(ring.corners[(k + n - 1) % n]), self.point_of(ring.corners[(k + 1) % n]));
             // the region's wedge runs counter-clockwise from `from` to `to`
             let (from, to) = if self.is_counter_clockwise(ring) { (after, before) } else { (before, after) };
-            let (turn_from, turn_to) = (orientation(p, from, q), orientation(p, q, to));
+            let (turn_from, turn_to) = (self.turn(p, from, q), self.turn(p, q, to));
             if turn_from == Orientation::Collinear || turn_to == Orientation::Collinear {
                 return None;
             }
             let ccw = Orientation::CounterClockwise;
-            let holds = if orientation(p, from, to) == ccw {
+            let holds = if self.turn(p, from, to) == ccw {
                 turn_from == ccw && turn_to == ccw
             } else {
                 // a reflex wedge: all but the convex one the other way
@@ -552,7 +552,7 @@ impl Diagram {
         let mut inside = false;
         for k in 0..n {
             let (a, b) = (self.point_of(ring.corners[k]), self.point_of(ring.corners[(k + 1) % n]));
-            let turn = orientation(a, b, p);
+            let turn = self.turn(a, b, p);
             if turn == Orientation::Collinear
                 && p.x >= a.x.min(b.x)
                 && p.x <= a.x.max(b.x)
@@ -568,6 +568,25 @@ impl Diagram {
             }
         }
         inside_if(inside)
+    }
+
+    /// The exact orientation of `a`, `b`, `c` (input coordinates), asked in
+    /// the construction's coordinates: the power of two that keeps the
+    /// input's products within `f64` (`geometry::scale`), so that an input
+    /// of 1e300 (whose products overflow as they are) is decided exactly
+    /// too. A point that does not scale exactly (a query point far beyond
+    /// the input) is asked as it is.
+    fn turn(&self, a: Point, b: Point, c: Point) -> Orientation {
+        let k = self.scale.to_internal;
+        let exact = |p: Point| {
+            let q = p.scaled(k);
+            q.x.is_finite() && q.y.is_finite() && q.scaled(self.scale.to_input) == p
+        };
+        if [a, b, c].into_iter().all(exact) {
+            orientation(a.scaled(k), b.scaled(k), c.scaled(k))
+        } else {
+            orientation(a, b, c)
+        }
     }
 
     /// The coordinates of a point site.
