@@ -10,12 +10,9 @@
 //! module compares a raw determinant with zero, and the fault-injection
 //! build perturbs numbers only here (`fault`).
 
-mod bigfloat;
-mod certified;
-mod double_double;
+mod arithmetic;
 pub(crate) mod edge_curve;
 pub(crate) mod edge_track;
-mod expansion;
 pub(crate) mod fault;
 pub(crate) mod oracle;
 pub(crate) mod parabola;
@@ -23,8 +20,6 @@ pub mod point;
 pub(crate) mod point_predicates;
 pub mod predicates;
 mod quadratic_vertex;
-mod radical_tower;
-pub(crate) mod real;
 #[doc(hidden)] // the CLI's picture normalises with it; not stable API
 pub mod scale;
 pub(crate) mod segment_contact;

@@ -67,15 +67,16 @@
 //! numbers are honest): its purpose is to show that the topology survives
 //! lying numbers, and a refinement would make them honest again.
 
-use super::bigfloat::{dyadic, BigFloat};
-use super::certified::{certified_evaluation, Certified};
-use super::double_double::DoubleDouble;
-use super::expansion::Expansion;
-use super::point::{norm, Point};
+use super::arithmetic::bigfloat::{dyadic, BigFloat};
+use super::arithmetic::certified::{certified_evaluation, Certified};
+use super::arithmetic::double_double::DoubleDouble;
+use super::arithmetic::expansion::Expansion;
+use super::arithmetic::radical_tower::{exact_evaluation, Algebraic};
+use super::arithmetic::real::norm;
+use super::arithmetic::real::Real;
+use super::point::Point;
 use super::predicates::{exact_orientation, in_circle, strictly_between, CirclePosition, Orientation};
 use super::quadratic_vertex;
-use super::radical_tower::{exact_evaluation, Algebraic};
-use super::real::Real;
 use super::scale::Scale;
 use super::segment_solvers;
 use super::site::Site;

@@ -149,7 +149,7 @@ fn cross_accurately(a: Point, b: Point, c: Point) -> f64 {
     if cross.abs() >= (l.abs() + r.abs()) * 2f64.powi(-10) {
         return cross;
     }
-    use super::double_double::DoubleDouble as Dd;
+    use super::arithmetic::double_double::DoubleDouble as Dd;
     let d = |p: f64, q: f64| Dd::from_f64(p).sub(Dd::from_f64(q));
     d(b.x, a.x).mul(d(c.y, a.y)).sub(d(b.y, a.y).mul(d(c.x, a.x))).to_f64()
 }

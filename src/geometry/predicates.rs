@@ -14,7 +14,7 @@
 //! In the `fault-injection` test build these predicates can be told to lie
 //! (see `fault`); the construction must stay valid whatever they answer.
 
-use super::expansion::Expansion;
+use super::arithmetic::expansion::Expansion;
 use super::fault;
 use super::point::Point;
 

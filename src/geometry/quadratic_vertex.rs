@@ -29,7 +29,7 @@
 //! refused (`None`) when the coordinates' lowest set bits lie below
 //! `2^-44` (a degree-24 product could underflow) or a value overflows.
 
-use super::expansion::Expansion;
+use super::arithmetic::expansion::Expansion;
 use super::oracle::Reach;
 use super::point::Point;
 use super::predicates::CirclePosition;

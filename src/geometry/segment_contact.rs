@@ -7,7 +7,7 @@
 use std::cell::OnceCell;
 use std::cmp::Ordering;
 
-use super::bigfloat::BigFloat;
+use super::arithmetic::bigfloat::BigFloat;
 use super::predicates::{exact_orientation as orientation, strictly_between, Orientation};
 use super::Point;
 

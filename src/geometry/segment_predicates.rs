@@ -15,11 +15,12 @@
 //! are perturbed here (`fault`), one draw per quantity, in the order the
 //! questions are asked.
 
-use super::double_double::DoubleDouble;
+use super::arithmetic::double_double::DoubleDouble;
+use super::arithmetic::real::norm;
 use super::edge_curve::EdgeCurve;
 use super::fault;
 use super::oracle::{self, Reach};
-use super::point::{norm, Point};
+use super::point::Point;
 use super::predicates::{orientation, CirclePosition, Orientation};
 use super::segment_solvers;
 use super::site::Site;

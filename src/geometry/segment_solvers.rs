@@ -50,9 +50,9 @@
 //! a perturbation `δ` of the input moves the answer by up to `√δ`, which no
 //! formula avoids. Non-finite intermediate results give `None`, never a panic.
 
+use super::arithmetic::real::Real;
 use super::point::Point;
 use super::predicates::{orientation, turn, Orientation};
-use super::real::Real;
 use super::site::{segment_parameter, Site};
 use super::solvers::circumcircle;
 
@@ -1400,8 +1400,8 @@ mod tests {
         // bisector of the two lines is lost (their unit normals agree to
         // ten digits) and no circle is found; double-double finds it, and
         // 400-bit floats agree to 1e-15.
-        use super::super::bigfloat::BigFloat;
-        use super::super::double_double::DoubleDouble;
+        use super::super::arithmetic::bigfloat::BigFloat;
+        use super::super::arithmetic::double_double::DoubleDouble;
         let q = kinked_chain();
         let sites = [Site::Segment { a: q[0], b: q[1] }, Site::Point(q[3]), Site::Segment { a: q[1], b: q[2] }];
         let dd = vertex_in(&sites, &DoubleDouble::from_f64).expect("a circle").map(|v| v.to_f64());
@@ -1425,7 +1425,7 @@ mod tests {
         // from there; the rounded unit normals, 7e-11 apart, have no
         // reliable orientation as points, so the order comes from the
         // exact turns between the pieces' directions.
-        use super::super::double_double::DoubleDouble;
+        use super::super::arithmetic::double_double::DoubleDouble;
         let q = kinked_chain();
         let s = [0, 1, 2].map(|i| Site::Segment { a: q[i], b: q[i + 1] });
         let far = vertex_in(&[s[1], s[0], s[2]], &DoubleDouble::from_f64).expect("a circle").map(|v| v.to_f64());

@@ -15,7 +15,8 @@
 //! each endpoint once and hands the same coordinates to the point site and to
 //! the segment site, so no tolerance is wanted (or safe) here.
 
-use super::point::{norm, Point};
+use super::arithmetic::real::norm;
+use super::point::Point;
 
 /// A site as geometry: a point, or an open segment whose endpoints are
 /// separate point sites. More kinds may come (circular arcs), so a `match`

@@ -13,7 +13,7 @@
 //! pixel that holds the true one is then decided exactly
 //! ([`PixelGrid::crossing_pixel`]).
 
-use super::expansion::Expansion;
+use super::arithmetic::expansion::Expansion;
 use super::predicates::exact_orientation;
 use super::Point;
 

@@ -5,7 +5,7 @@
 //! numbers find no circle. The position is stored as the fault-injection
 //! build perturbs it (`as_stored`).
 
-use super::bigfloat::BigFloat;
+use super::arithmetic::bigfloat::BigFloat;
 use super::fault;
 use super::oracle;
 use super::point::Point;
