@@ -15,16 +15,17 @@
 //! are perturbed here (`fault`), one draw per quantity, in the order the
 //! questions are asked.
 
-use super::arithmetic::double_double::DoubleDouble;
-use super::arithmetic::real::norm;
-use super::edge_curve::EdgeCurve;
-use super::fault;
-use super::oracle::{self, Reach};
-use super::point::Point;
-use super::predicates::{orientation, CirclePosition, Orientation};
-use super::segment_solvers;
-use super::site::Site;
+use super::oracle;
+use super::reach::Reach;
 use super::vertex_placement;
+use crate::geometry::arithmetic::double_double::DoubleDouble;
+use crate::geometry::arithmetic::real::norm;
+use crate::geometry::curves::edge_curve::EdgeCurve;
+use crate::geometry::fault;
+use crate::geometry::point::Point;
+use crate::geometry::predicates::{orientation, CirclePosition, Orientation};
+use crate::geometry::site::Site;
+use crate::geometry::solvers::segment_solvers;
 
 /// How far a new segment reaches into the circle of a finite vertex: the
 /// signed depth, negative inside, never NaN.
