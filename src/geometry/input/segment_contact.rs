@@ -8,8 +8,8 @@ use std::cell::OnceCell;
 use std::cmp::Ordering;
 
 use crate::geometry::arithmetic::bigfloat::BigFloat;
+use crate::geometry::point::Point;
 use crate::geometry::predicates::{exact_orientation as orientation, strictly_between, Orientation};
-use crate::geometry::Point;
 
 /// How two distinct, non-degenerate segments `s` and `t` meet, if they meet
 /// in anything other than a common endpoint.

@@ -14,8 +14,8 @@
 //! ([`PixelGrid::crossing_pixel`]).
 
 use crate::geometry::arithmetic::expansion::Expansion;
+use crate::geometry::point::Point;
 use crate::geometry::predicates::exact_orientation;
-use crate::geometry::Point;
 
 /// A pixel by its integer centre coordinates: the centre is `m · size`.
 pub(crate) type Pixel = [i64; 2];
