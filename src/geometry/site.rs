@@ -1,4 +1,4 @@
-//! The geometric view of a site of the separated diagram (DESIGN §1).
+//! The geometric view of a site of the separated diagram.
 //!
 //! Every input segment becomes three sites: its two endpoints (point sites)
 //! and the *open* segment between them. The open segment's own region is the

@@ -1,5 +1,5 @@
 //! How two closed segments meet, and whether a point lies inside a
-//! segment: the contact rules of the input (DESIGN §1), decided exactly —
+//! segment: the contact rules of the input, decided exactly —
 //! exact orientation signs ([`exact_orientation`], never perturbed by fault
 //! injection) and coordinate comparisons ([`strictly_between`]), no epsilon
 //! anywhere. The input check (`construct/input_check/`) asks these.

@@ -264,7 +264,7 @@ impl LeftDegree {
     }
 
     /// How clearly an edge has the site `left` on its left of the segment
-    /// and the site `right` on its right (seed 000's characteristic 3), for
+    /// and the site `right` on its right, for
     /// ranking: the smaller of the two degrees in those directions, `-∞`
     /// when the numbers failed, and at most `f64::MAX` (below a start that
     /// is a vertex of `R(b)`, ranked `+∞`).

@@ -1,6 +1,5 @@
 #![allow(dead_code)] // used by segment insertion (issue 3), not wired yet
-//! Voronoi-vertex solvers for every combination of point and segment sites
-//! (seed 000 §5.2, DESIGN §2.3).
+//! Voronoi-vertex solvers for every combination of point and segment sites.
 //!
 //! A Voronoi vertex of sites `a`, `b`, `c` is the centre of a circle that
 //! touches the three sites: it passes through point sites and is tangent to
