@@ -82,10 +82,10 @@ pub mod fault_injection {
 
 /// Diagnostics for benchmarks and tests: how the segment predicates of
 /// the builds on this thread were decided (the `f64` filter, or one of the
-/// refinement stages of `geometry::oracle`). Rust only; not part of the C
+/// refinement stages of `geometry::segments::oracle`). Rust only; not part of the C
 /// API.
 pub mod diagnostics {
-    pub use crate::geometry::oracle::{take_predicate_counts, PredicateCounts};
+    pub use crate::geometry::segments::oracle::{take_predicate_counts, PredicateCounts};
 }
 
 /// The README's Rust quick start, run as a doctest so it cannot rot.

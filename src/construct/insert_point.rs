@@ -27,7 +27,7 @@
 use super::insertion_order::insertion_order;
 use super::state::{infinite_rotation, Construction};
 use crate::diagram::{SiteId, VertexId, NONE};
-use crate::geometry::point_predicates::{self, VertexCircle};
+use crate::geometry::predicates::point_predicates::{self, VertexCircle};
 use crate::geometry::predicates::{
     in_circle, in_half_plane_circle, orientation, strictly_closer_given, CirclePosition, Orientation,
 };

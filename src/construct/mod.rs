@@ -45,8 +45,8 @@ pub use restart::set_restart_budget;
 
 use crate::diagram::Diagram;
 use crate::error::{Error, ErrorKind};
+use crate::geometry::input::segment_contact;
 use crate::geometry::scale::Scale;
-use crate::geometry::segment_contact;
 use crate::geometry::Point;
 pub(crate) use input_check::Conflict;
 use input_check::{check_segments, first_conflict, CheckedInput, Vertex};

@@ -41,7 +41,7 @@ use super::polygon_input::RingInput;
 use super::split::{split_rings, Piece};
 use crate::diagram::{Diagram, SplitPieces};
 use crate::error::{Error, ErrorKind};
-use crate::geometry::segment_contact::lex_cmp;
+use crate::geometry::input::segment_contact::lex_cmp;
 use crate::geometry::Point;
 
 /// The pieces of the checked input (input coordinates, each input segment

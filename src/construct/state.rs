@@ -12,12 +12,12 @@
 //! Every question about kinds goes through `ends_of` / `is_segment` here.
 //!
 //! This file does no arithmetic on coordinates: positions come from
-//! `geometry::vertex_placement`.
+//! `geometry::segments::vertex_placement`.
 
 use crate::diagram::Store;
 use crate::diagram::{HalfEdgeId, SiteId, VertexId, NONE};
+use crate::geometry::segments::vertex_placement;
 use crate::geometry::site::Site;
-use crate::geometry::vertex_placement;
 use crate::geometry::Point;
 
 /// The id of the point at infinity inside the construction.
@@ -121,7 +121,7 @@ impl Construction {
     }
 
     /// Computes the position and clearance of `v` from its three sites
-    /// (`geometry::vertex_placement`): a vertex at infinity stores the
+    /// (`geometry::segments::vertex_placement`): a vertex at infinity stores the
     /// direction of its edge and an infinite clearance.
     pub(super) fn place_vertex(&mut self, v: VertexId) {
         let sites = self.store.sites_of(v);

@@ -4,36 +4,36 @@
 //! Nothing here knows about the diagram. Every numerical question the
 //! construction asks is answered here, from sites, vertex positions and
 //! radii: signs as enums — [`predicates`] for points (exact),
-//! `segment_predicates` for a new segment (certified by `oracle`) — with
-//! magnitudes only for ranking (`point_predicates` ranks the conflicts of a
-//! new point), and vertex positions from `vertex_placement`. So no other
-//! module compares a raw determinant with zero, and the fault-injection
-//! build perturbs numbers only here (`fault`).
+//! `segments::segment_predicates` for a new segment (certified by
+//! `segments::oracle`) — with magnitudes only for ranking
+//! (`predicates::point_predicates` ranks the conflicts of a new point), and
+//! vertex positions from `segments::vertex_placement`. So no other module
+//! compares a raw determinant with zero, and the fault-injection build
+//! perturbs numbers only here (`fault`).
+//!
+//! The rooms, from the ground up; each imports only the ones below it:
+//! - `arithmetic`: the numbers (expansions, double-double, big floats,
+//!   certified balls, the radical tower, the `Real` trait); no geometry.
+//! - the basics, in this folder: [`point`], [`site`], [`scale`] (the
+//!   power-of-two normalisation), `fault` (fault injection).
+//! - [`predicates`]: exact signs on points, and rankings for a new point.
+//! - [`solvers`]: Voronoi vertices from their sites; `input`: the exact
+//!   contacts of input segments and the snap-rounding grid; `curves`:
+//!   edges as parabolic or straight curves and as tracks for the offsets.
+//! - `segments`: what the insertion of a segment asks, the certified
+//!   oracle that answers it, and where each new vertex goes.
 
-mod bigfloat;
-mod certified;
-mod double_double;
-pub(crate) mod edge_curve;
-pub(crate) mod edge_track;
-mod expansion;
+mod arithmetic;
+pub(crate) mod curves;
 pub(crate) mod fault;
-pub(crate) mod oracle;
-pub(crate) mod parabola;
+pub(crate) mod input;
 pub mod point;
-pub(crate) mod point_predicates;
 pub mod predicates;
-mod quadratic_vertex;
-mod radical_tower;
-pub(crate) mod real;
 #[doc(hidden)] // the CLI's picture normalises with it; not stable API
 pub mod scale;
-pub(crate) mod segment_contact;
-pub(crate) mod segment_predicates;
-pub(crate) mod segment_solvers;
+pub(crate) mod segments;
 pub mod site;
-pub(crate) mod snap;
 pub mod solvers;
-pub(crate) mod vertex_placement;
 
 pub use point::Point;
 pub use site::Site;

@@ -1,5 +1,7 @@
 //! The coordinate type shared by the whole crate.
 
+use super::arithmetic::real::norm;
+
 /// A point of the plane, in `f64` coordinates.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Point {
@@ -81,21 +83,5 @@ impl From<(f64, f64)> for Point {
 impl From<Point> for [f64; 2] {
     fn from(p: Point) -> Self {
         [p.x, p.y]
-    }
-}
-
-/// `sqrt(dx² + dy²)` without overflow or underflow in between: the plain
-/// formula (within an ulp or two of `hypot`, and several times faster) while
-/// the sum of squares is finite and far from the subnormal range, so that a
-/// square lost to underflow would not matter; `hypot` otherwise.
-#[inline]
-pub(crate) fn norm(dx: f64, dy: f64) -> f64 {
-    /// Below this a lost square could matter; about 2^-897.
-    const SMALLEST_SAFE: f64 = 1e-270;
-    let sum = dx * dx + dy * dy;
-    if (SMALLEST_SAFE..=f64::MAX).contains(&sum) {
-        sum.sqrt()
-    } else {
-        dx.hypot(dy)
     }
 }

@@ -1,4 +1,4 @@
-//! The geometric view of a site of the separated diagram (DESIGN §1).
+//! The geometric view of a site of the separated diagram.
 //!
 //! Every input segment becomes three sites: its two endpoints (point sites)
 //! and the *open* segment between them. The open segment's own region is the
@@ -15,7 +15,8 @@
 //! each endpoint once and hands the same coordinates to the point site and to
 //! the segment site, so no tolerance is wanted (or safe) here.
 
-use super::point::{norm, Point};
+use super::arithmetic::real::norm;
+use super::point::Point;
 
 /// A site as geometry: a point, or an open segment whose endpoints are
 /// separate point sites. More kinds may come (circular arcs), so a `match`

@@ -7,7 +7,7 @@
 //! solved: where the topology is not the exact diagram's, whatever the
 //! rounded positions say.
 
-use crate::geometry::oracle::audit_depth;
+use crate::geometry::segments::oracle::audit_depth;
 use crate::{Builder, Diagram, Site};
 
 /// The vertices of `diagram` whose circle holds another site, with the

@@ -25,8 +25,8 @@
 //! points are the vertex positions themselves, so that drawings join up.
 
 use crate::diagram::{Diagram, EdgeId, SiteId};
-use crate::geometry::edge_curve::EdgeCurve;
-use crate::geometry::parabola::{focus_and_directrix, Parabola};
+use crate::geometry::curves::edge_curve::EdgeCurve;
+use crate::geometry::curves::parabola::{focus_and_directrix, Parabola};
 use crate::geometry::predicates::{orientation, Orientation};
 use crate::geometry::{Point, Site};
 use crate::query::EdgeEnd;

@@ -17,14 +17,14 @@
 //! from the sites, not from the rounded positions (true edges of 1e-15 of
 //! the extent are common in real data): exactly for points
 //! (`predicates::in_circle`), by the certified segment predicate
-//! (`geometry::oracle`) otherwise. [`ZERO_LENGTH`] is a tolerance a user may
+//! (`geometry::segments::oracle`) otherwise. [`ZERO_LENGTH`] is a tolerance a user may
 //! ask for instead ([`TopologyOptions::zero_length_tolerance`]).
 
 use crate::query::partition::Partition;
 use std::fmt::Write;
 
 use crate::diagram::{Diagram, SiteId, VertexId};
-use crate::geometry::oracle;
+use crate::geometry::segments::oracle;
 
 /// A relative length below which an edge may be taken as zero-length, for
 /// users who want a tolerance ([`TopologyOptions::zero_length_tolerance`]).

@@ -1,11 +1,11 @@
 //! A pair's conflict, named by input indices, and where the pair first
 //! meets: two kept segments, by the exact contact test of
-//! `geometry::segment_contact`. An endpoint of one inside the other is no
+//! `geometry::input::segment_contact`. An endpoint of one inside the other is no
 //! conflict (the sweep splits the segment there).
 
 use super::normalise::Normalised;
 use super::Conflict;
-use crate::geometry::segment_contact::{first_contact, segment_contact, ContactPoint, SegmentContact};
+use crate::geometry::input::segment_contact::{first_contact, segment_contact, ContactPoint, SegmentContact};
 
 /// The conflict for kept segments `i < j` (positions in `norm.segments`),
 /// with the pair's first contact point: a crossing or an overlap; `None`

@@ -35,7 +35,7 @@
 //! # Exactness
 //! Every decision is an exact orientation sign (never perturbed by fault
 //! injection) or a coordinate comparison, made by `geometry::predicates`
-//! and `geometry::segment_contact`; no epsilon anywhere. Crossing points
+//! and `geometry::input::segment_contact`; no epsilon anywhere. Crossing points
 //! (to rank conflicts) are rational points compared exactly, in big
 //! numbers wide enough never to round (`segment_contact::ContactPoint`). The checker works in
 //! the builder's coordinates: the input multiplied by the build's one power
@@ -53,7 +53,7 @@
 //! testing, the conflict reported and every split: a Shamos–Hoey sweep,
 //! O(n log n) expected for every input), `classify.rs` (a pair's conflict,
 //! named by input indices, and its contact point); the contact test itself
-//! is `geometry::segment_contact`.
+//! is `geometry::input::segment_contact`.
 
 mod classify;
 mod normalise;
@@ -61,8 +61,8 @@ mod sweep;
 #[cfg(test)]
 mod tests;
 
+use crate::geometry::input::segment_contact::lex_cmp;
 use crate::geometry::scale::Scale;
-use crate::geometry::segment_contact::lex_cmp;
 use crate::geometry::Point;
 use normalise::normalise;
 use sweep::{find_conflict, sweep};

@@ -4,7 +4,7 @@
 use std::collections::HashSet;
 
 use super::PointSource;
-use crate::geometry::segment_contact::lex_key;
+use crate::geometry::input::segment_contact::lex_key;
 use crate::geometry::Point;
 
 /// The input after normalisation, in internal (scaled) coordinates.

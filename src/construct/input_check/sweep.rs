@@ -62,7 +62,7 @@
 //! # Which conflict is reported, and why it is seen
 //! Every conflict found (a crossing or an overlap) is ranked by its
 //! *contact point*, the lexicographically smallest point the two segments
-//! share (`geometry::segment_contact::first_contact`; a crossing point is a
+//! share (`geometry::input::segment_contact::first_contact`; a crossing point is a
 //! rational point, compared exactly); the smallest contact point wins, and
 //! among conflicts found at the same contact point, the smaller pair of
 //! input indices (smaller index first). The sweep stops at the first event
@@ -142,8 +142,8 @@ use super::classify::segment_conflict_at;
 use super::normalise::Normalised;
 use super::{Conflict, PointSource, Split, Vertex};
 use crate::construct::status_treap::{Treap, NIL};
+use crate::geometry::input::segment_contact::{lex_cmp, lex_key, segment_contact, ContactPoint};
 use crate::geometry::predicates::{exact_orientation, Orientation};
-use crate::geometry::segment_contact::{lex_cmp, lex_key, segment_contact, ContactPoint};
 use crate::geometry::Point;
 
 /// The conflict whose contact point is lexicographically smallest (see

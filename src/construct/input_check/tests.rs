@@ -7,8 +7,8 @@ use super::normalise::{normalise, Normalised};
 use super::sweep::{find_conflict, find_conflict_at, sweep, PRESORTED_FROM};
 use super::*;
 use crate::construct::input_scale;
-use crate::geometry::segment_contact::ContactPoint;
-use crate::geometry::segment_contact::{inside_segment, lex_key};
+use crate::geometry::input::segment_contact::ContactPoint;
+use crate::geometry::input::segment_contact::{inside_segment, lex_key};
 use proptest::prelude::*;
 use std::cmp::Ordering;
 

@@ -2,11 +2,11 @@
 //! conflict and strip criteria), with the edges whose two ends are deleted
 //! but whose middle stays out of the new cell cut twice: which edge of each
 //! closed cycle that is, by its margin (from the vertices the cuts would
-//! create: `geometry::segment_predicates::middle_margin`).
+//! create: `geometry::segments::segment_predicates::middle_margin`).
 
 use crate::construct::state::Construction;
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
-use crate::geometry::segment_predicates::{self, in_strip, EdgeContact, EdgeMiddle, FiniteEdge, MiddleMargin};
+use crate::geometry::segments::segment_predicates::{self, in_strip, EdgeContact, EdgeMiddle, FiniteEdge, MiddleMargin};
 use crate::geometry::Point;
 
 impl Construction {

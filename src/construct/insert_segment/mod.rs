@@ -29,8 +29,8 @@
 //!
 //! This module and its children do no arithmetic: they decide which vertex,
 //! edge or site to ask about, fetch its sites and positions from the store,
-//! and ask `geometry::segment_predicates` (conflict depth, left-degree,
-//! strip, the margin of an edge cut twice) and `geometry::vertex_placement`.
+//! and ask `geometry::segments::segment_predicates` (conflict depth, left-degree,
+//! strip, the margin of an edge cut twice) and `geometry::segments::vertex_placement`.
 //!
 //! A vertex at infinity `(x, y, ∞)` conflicts with `e` exactly when
 //! `{x, y} = {a, b}` (then `e` is a convex-hull edge): decided without
@@ -54,7 +54,7 @@ use super::insertion_order::insertion_order;
 use super::state::{infinite_rotation, Construction, INFINITE};
 use crate::diagram::{SiteId, VertexId, NONE};
 use crate::geometry::predicates::CirclePosition;
-use crate::geometry::segment_predicates::{self, AtEndpoint, Contact, LeftDegree, SegmentDepth, SiteSeen};
+use crate::geometry::segments::segment_predicates::{self, AtEndpoint, Contact, LeftDegree, SegmentDepth, SiteSeen};
 use crate::geometry::{Point, Site};
 
 /// Inserts the segments into the diagram of the points; those listed in

@@ -11,7 +11,7 @@ use std::hash::{BuildHasherDefault, Hash, Hasher};
 use crate::construct::state::Construction;
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
 use crate::geometry::predicates::{CirclePosition, Orientation};
-use crate::geometry::segment_predicates::{EdgeMiddle, LeftDegree};
+use crate::geometry::segments::segment_predicates::{EdgeMiddle, LeftDegree};
 use crate::geometry::Point;
 
 /// A path of P4: its vertices, and the half-edge by which each vertex after

@@ -46,9 +46,9 @@ use std::collections::{BinaryHeap, HashSet};
 
 use super::Layout;
 use crate::construct::status_treap::{Treap, NIL};
+use crate::geometry::input::segment_contact::{inside_segment, lex_cmp, segment_contact, ContactPoint, SegmentContact};
+use crate::geometry::input::snap::{Pixel, PixelGrid};
 use crate::geometry::predicates::{exact_turn, Orientation};
-use crate::geometry::segment_contact::{inside_segment, lex_cmp, segment_contact, ContactPoint, SegmentContact};
-use crate::geometry::snap::{Pixel, PixelGrid};
 use crate::geometry::Point;
 
 /// How many contacts of each kind one search found.

@@ -4,7 +4,7 @@
 //! rounding.
 //!
 //! # The method
-//! The plane is cut into square pixels of side δ (`geometry::snap`: δ is
+//! The plane is cut into square pixels of side δ (`geometry::input::snap`: δ is
 //! 2^-46 of the power of two above the largest coordinate, so that centres
 //! are exact doubles). A pixel is *hot* when two items meet inside it other
 //! than at a common endpoint: the pixel holding a crossing point (decided
@@ -49,8 +49,8 @@ mod rings;
 mod route;
 
 use crate::error::{Error, ErrorKind};
+use crate::geometry::input::snap::PixelGrid;
 use crate::geometry::scale::Scale;
-use crate::geometry::snap::PixelGrid;
 use crate::geometry::{Point, Site};
 pub(crate) use build::diagram_of_split;
 use contacts::{contact_pixels, ContactCounts};

@@ -16,8 +16,8 @@
 //! side of the segment's line (exact orientations); a pixel in a leaf is
 //! met when [`PixelGrid::meets`] says so. The tree decides nothing itself.
 
+use crate::geometry::input::snap::{Pixel, PixelGrid};
 use crate::geometry::predicates::{exact_orientation, Orientation};
-use crate::geometry::snap::{Pixel, PixelGrid};
 use crate::geometry::Point;
 
 /// Pixels per leaf: below this, testing each is cheaper than descending.

@@ -7,7 +7,7 @@ use std::collections::{HashMap, HashSet};
 
 use super::pixel_tree::PixelTree;
 use super::Piece;
-use crate::geometry::snap::{Pixel, PixelGrid};
+use crate::geometry::input::snap::{Pixel, PixelGrid};
 use crate::geometry::Point;
 
 /// The hot pixels of every round so far.

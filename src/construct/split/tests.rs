@@ -1,5 +1,5 @@
 use super::*;
-use crate::geometry::segment_contact::{inside_segment, segment_contact};
+use crate::geometry::input::segment_contact::{inside_segment, segment_contact};
 use crate::splitmix::SplitMix64;
 
 fn p(x: f64, y: f64) -> Point {

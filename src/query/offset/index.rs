@@ -8,7 +8,7 @@
 use super::interval_tree::IntervalTree;
 use super::level_tree::LevelTree;
 use crate::diagram::{Diagram, EdgeId, SiteId};
-use crate::geometry::edge_track::{EdgeTrack, TrackEnd};
+use crate::geometry::curves::edge_track::{EdgeTrack, TrackEnd};
 use crate::geometry::Site;
 use crate::query::{EdgeEnd, HalfEdge, Location};
 

@@ -1,6 +1,6 @@
 //! The loops at one distance, traced through the cells of the diagram.
 //!
-//! The clearance is quasi-convex along every edge (`geometry::edge_track`),
+//! The clearance is quasi-convex along every edge (`geometry::curves::edge_track`),
 //! so an edge crosses the level `r` at most twice. Which edges cross it,
 //! and how often, follows from the vertices' stored clearances and the
 //! lowest clearance inside each edge, never from a recomputed position: an

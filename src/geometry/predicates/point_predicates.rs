@@ -2,8 +2,8 @@
 //! deep it lies inside the circle of a vertex (the sign of conflict itself
 //! is exact, in `predicates`).
 
-use super::fault;
-use super::point::Point;
+use crate::geometry::fault;
+use crate::geometry::point::Point;
 
 /// The circle of a vertex of point sites, as the construction stores it.
 #[derive(Clone, Copy, Debug, PartialEq)]

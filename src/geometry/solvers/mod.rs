@@ -6,8 +6,15 @@
 //! circle's radius also for needle-shaped triangles, and with the
 //! denominator's sign always right. A solver that finds no solution says so, and the caller (the
 //! topology) decides what to store.
+//!
+//! This room holds the vertex solvers, in `f64` or any `Real` arithmetic:
+//! the circumcircle of three points here, every mix of point and segment
+//! sites in `segment_solvers`. They use the sign predicates to choose a
+//! root; the certified polish of a segment vertex is in `segments`.
 
 use super::point::Point;
+
+pub(crate) mod segment_solvers;
 
 /// The centre and radius of the circle through three points, or `None` when
 /// the points are collinear (as computed), where no such circle exists.

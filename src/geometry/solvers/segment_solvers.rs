@@ -1,6 +1,5 @@
 #![allow(dead_code)] // used by segment insertion (issue 3), not wired yet
-//! Voronoi-vertex solvers for every combination of point and segment sites
-//! (seed 000 §5.2, DESIGN §2.3).
+//! Voronoi-vertex solvers for every combination of point and segment sites.
 //!
 //! A Voronoi vertex of sites `a`, `b`, `c` is the centre of a circle that
 //! touches the three sites: it passes through point sites and is tangent to
@@ -23,7 +22,7 @@
 //!
 //! The cases, named by the site types after rotating to a canonical order
 //! (points first; any rotation of the arguments gives the same answer):
-//! - `PPP`: circumcircle ([`super::solvers::circumcircle`]).
+//! - `PPP`: circumcircle ([`crate::geometry::solvers::circumcircle`]).
 //! - `PPS`: circle through two points tangent to a line (quadratic).
 //! - `PPS`, one point an endpoint of the segment: bisector ∩ perpendicular.
 //! - `PSS`: parabola ∩ angle bisector (quadratic).
@@ -38,7 +37,7 @@
 //! the topology has already decided that the vertex exists, and a tangent
 //! point a rounding error beyond an endpoint must not erase it. A caller that
 //! wants the check has [`Site::nearest_point`] and
-//! [`super::site::segment_parameter`].
+//! [`crate::geometry::site::segment_parameter`].
 //!
 //! Precision (all cases): not exact. Every solver works relative to a local
 //! origin (a point site or a segment endpoint of the triple), turns sides and
@@ -50,11 +49,11 @@
 //! a perturbation `δ` of the input moves the answer by up to `√δ`, which no
 //! formula avoids. Non-finite intermediate results give `None`, never a panic.
 
-use super::point::Point;
-use super::predicates::{orientation, turn, Orientation};
-use super::real::Real;
-use super::site::{segment_parameter, Site};
-use super::solvers::circumcircle;
+use crate::geometry::arithmetic::real::Real;
+use crate::geometry::point::Point;
+use crate::geometry::predicates::{orientation, turn, Orientation};
+use crate::geometry::site::{segment_parameter, Site};
+use crate::geometry::solvers::circumcircle;
 
 /// The centre and radius of the circle touching `a`, `b`, `c` with touching
 /// points in counter-clockwise order (see the module documentation), or `None`
@@ -1400,8 +1399,8 @@ mod tests {
         // bisector of the two lines is lost (their unit normals agree to
         // ten digits) and no circle is found; double-double finds it, and
         // 400-bit floats agree to 1e-15.
-        use super::super::bigfloat::BigFloat;
-        use super::super::double_double::DoubleDouble;
+        use crate::geometry::arithmetic::bigfloat::BigFloat;
+        use crate::geometry::arithmetic::double_double::DoubleDouble;
         let q = kinked_chain();
         let sites = [Site::Segment { a: q[0], b: q[1] }, Site::Point(q[3]), Site::Segment { a: q[1], b: q[2] }];
         let dd = vertex_in(&sites, &DoubleDouble::from_f64).expect("a circle").map(|v| v.to_f64());
@@ -1425,7 +1424,7 @@ mod tests {
         // from there; the rounded unit normals, 7e-11 apart, have no
         // reliable orientation as points, so the order comes from the
         // exact turns between the pieces' directions.
-        use super::super::double_double::DoubleDouble;
+        use crate::geometry::arithmetic::double_double::DoubleDouble;
         let q = kinked_chain();
         let s = [0, 1, 2].map(|i| Site::Segment { a: q[i], b: q[i + 1] });
         let far = vertex_in(&[s[1], s[0], s[2]], &DoubleDouble::from_f64).expect("a circle").map(|v| v.to_f64());

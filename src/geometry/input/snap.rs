@@ -13,9 +13,9 @@
 //! pixel that holds the true one is then decided exactly
 //! ([`PixelGrid::crossing_pixel`]).
 
-use super::expansion::Expansion;
-use super::predicates::exact_orientation;
-use super::Point;
+use crate::geometry::arithmetic::expansion::Expansion;
+use crate::geometry::point::Point;
+use crate::geometry::predicates::exact_orientation;
 
 /// A pixel by its integer centre coordinates: the centre is `m · size`.
 pub(crate) type Pixel = [i64; 2];

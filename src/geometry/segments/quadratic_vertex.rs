@@ -29,10 +29,10 @@
 //! refused (`None`) when the coordinates' lowest set bits lie below
 //! `2^-44` (a degree-24 product could underflow) or a value overflows.
 
-use super::expansion::Expansion;
-use super::oracle::Reach;
-use super::point::Point;
-use super::predicates::CirclePosition;
+use super::reach::Reach;
+use crate::geometry::arithmetic::expansion::Expansion;
+use crate::geometry::point::Point;
+use crate::geometry::predicates::CirclePosition;
 
 /// The lowest binary exponent of a coordinate's set bits for which every
 /// product of degree 24 stays above the subnormal range.
@@ -50,7 +50,7 @@ pub(crate) fn answer(
     centre: Point,
     question: &Reach,
 ) -> Option<CirclePosition> {
-    let points = [p, q, a, b].into_iter().chain(question_points(question));
+    let points = [p, q, a, b].into_iter().chain(question.points());
     if !points.flat_map(|p| [p.x, p.y]).all(|x| low_bits_fit(x, LOWEST_BIT)) {
         return None;
     }
@@ -82,13 +82,6 @@ pub(crate) fn answer(
         1 => CirclePosition::Outside,
         _ => CirclePosition::On,
     })
-}
-
-fn question_points(question: &Reach) -> [Point; 2] {
-    match *question {
-        Reach::Distance { a, b } => [a, b],
-        Reach::Entering { from, to } => [from, to],
-    }
 }
 
 /// Whether `x` is zero or finite with its lowest set bit at `2^lowest`

@@ -5,13 +5,13 @@
 //! numbers find no circle. The position is stored as the fault-injection
 //! build perturbs it (`as_stored`).
 
-use super::bigfloat::BigFloat;
-use super::fault;
 use super::oracle;
-use super::point::Point;
-use super::segment_solvers;
-use super::site::Site;
-use super::solvers::{circumcircle, left_normal};
+use crate::geometry::arithmetic::bigfloat::BigFloat;
+use crate::geometry::fault;
+use crate::geometry::point::Point;
+use crate::geometry::site::Site;
+use crate::geometry::solvers::segment_solvers;
+use crate::geometry::solvers::{circumcircle, left_normal};
 
 /// The centre and radius of the vertex of three point sites `a`, `b`, `c`.
 pub(crate) fn circle_of_points(a: Point, b: Point, c: Point) -> (Point, f64) {

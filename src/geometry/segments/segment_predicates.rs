@@ -15,15 +15,17 @@
 //! are perturbed here (`fault`), one draw per quantity, in the order the
 //! questions are asked.
 
-use super::double_double::DoubleDouble;
-use super::edge_curve::EdgeCurve;
-use super::fault;
-use super::oracle::{self, Reach};
-use super::point::{norm, Point};
-use super::predicates::{orientation, CirclePosition, Orientation};
-use super::segment_solvers;
-use super::site::Site;
+use super::oracle;
+use super::reach::Reach;
 use super::vertex_placement;
+use crate::geometry::arithmetic::double_double::DoubleDouble;
+use crate::geometry::arithmetic::real::norm;
+use crate::geometry::curves::edge_curve::EdgeCurve;
+use crate::geometry::fault;
+use crate::geometry::point::Point;
+use crate::geometry::predicates::{orientation, CirclePosition, Orientation};
+use crate::geometry::site::Site;
+use crate::geometry::solvers::segment_solvers;
 
 /// How far a new segment reaches into the circle of a finite vertex: the
 /// signed depth, negative inside, never NaN.
@@ -262,7 +264,7 @@ impl LeftDegree {
     }
 
     /// How clearly an edge has the site `left` on its left of the segment
-    /// and the site `right` on its right (seed 000's characteristic 3), for
+    /// and the site `right` on its right, for
     /// ranking: the smaller of the two degrees in those directions, `-∞`
     /// when the numbers failed, and at most `f64::MAX` (below a start that
     /// is a vertex of `R(b)`, ranked `+∞`).

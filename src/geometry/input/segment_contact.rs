@@ -1,5 +1,5 @@
 //! How two closed segments meet, and whether a point lies inside a
-//! segment: the contact rules of the input (DESIGN §1), decided exactly —
+//! segment: the contact rules of the input, decided exactly —
 //! exact orientation signs ([`exact_orientation`], never perturbed by fault
 //! injection) and coordinate comparisons ([`strictly_between`]), no epsilon
 //! anywhere. The input check (`construct/input_check/`) asks these.
@@ -7,9 +7,9 @@
 use std::cell::OnceCell;
 use std::cmp::Ordering;
 
-use super::bigfloat::BigFloat;
-use super::predicates::{exact_orientation as orientation, strictly_between, Orientation};
-use super::Point;
+use crate::geometry::arithmetic::bigfloat::BigFloat;
+use crate::geometry::point::Point;
+use crate::geometry::predicates::{exact_orientation as orientation, strictly_between, Orientation};
 
 /// How two distinct, non-degenerate segments `s` and `t` meet, if they meet
 /// in anything other than a common endpoint.
@@ -363,7 +363,7 @@ mod tests {
     }
 
     fn turn_is_not_zero(s: [Point; 2], t: [Point; 2]) -> bool {
-        super::super::predicates::exact_turn(s[0], s[1], t[0], t[1]) != Orientation::Collinear
+        crate::geometry::predicates::exact_turn(s[0], s[1], t[0], t[1]) != Orientation::Collinear
     }
 
     #[test]

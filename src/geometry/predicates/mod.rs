@@ -13,10 +13,18 @@
 //!
 //! In the `fault-injection` test build these predicates can be told to lie
 //! (see `fault`); the construction must stay valid whatever they answer.
+//!
+//! This room holds the signs every other part of `geometry` stands on:
+//! these exact predicates on points and `point_predicates` (how deep a new
+//! point lies in a vertex's circle, to rank). The questions of a new
+//! segment, which need the vertex solvers and a certified stage, are a
+//! floor higher (`segments`).
 
-use super::expansion::Expansion;
+use super::arithmetic::expansion::Expansion;
 use super::fault;
 use super::point::Point;
+
+pub(crate) mod point_predicates;
 
 /// Which side of a directed line a point lies on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -67,29 +67,20 @@
 //! numbers are honest): its purpose is to show that the topology survives
 //! lying numbers, and a refinement would make them honest again.
 
-use super::bigfloat::{dyadic, BigFloat};
-use super::certified::{certified_evaluation, Certified};
-use super::double_double::DoubleDouble;
-use super::expansion::Expansion;
-use super::point::{norm, Point};
-use super::predicates::{exact_orientation, in_circle, strictly_between, CirclePosition, Orientation};
 use super::quadratic_vertex;
-use super::radical_tower::{exact_evaluation, Algebraic};
-use super::real::Real;
-use super::scale::Scale;
-use super::segment_solvers;
-use super::site::Site;
-
-/// The question asked about a vertex and a new segment.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Reach {
-    /// Does the closed segment `a b` come nearer to the centre than the
-    /// radius: `dist(c, ab) − r`, negative inside.
-    Distance { a: Point, b: Point },
-    /// Does the segment leave `from` (a point on the circle) towards the
-    /// inside: `−(c − from)·(to − from)`, negative inside.
-    Entering { from: Point, to: Point },
-}
+use super::reach::Reach;
+use crate::geometry::arithmetic::bigfloat::{dyadic, BigFloat};
+use crate::geometry::arithmetic::certified::{certified_evaluation, Certified};
+use crate::geometry::arithmetic::double_double::DoubleDouble;
+use crate::geometry::arithmetic::expansion::Expansion;
+use crate::geometry::arithmetic::radical_tower::{exact_evaluation, Algebraic};
+use crate::geometry::arithmetic::real::norm;
+use crate::geometry::arithmetic::real::Real;
+use crate::geometry::point::Point;
+use crate::geometry::predicates::{exact_orientation, in_circle, strictly_between, CirclePosition, Orientation};
+use crate::geometry::scale::Scale;
+use crate::geometry::site::Site;
+use crate::geometry::solvers::segment_solvers;
 
 /// The precision of double-double arithmetic, in bits (a little under).
 const DOUBLE_DOUBLE_BITS: u64 = 100;
@@ -698,14 +689,6 @@ fn sign_position(depth: f64) -> CirclePosition {
 }
 
 impl Reach {
-    /// The two points the question names (`a`, `b` or `from`, `to`).
-    fn points(&self) -> [Point; 2] {
-        match *self {
-            Reach::Distance { a, b } => [a, b],
-            Reach::Entering { from, to } => [from, to],
-        }
-    }
-
     /// The size of the configuration: the scale of every error bound of
     /// the filter and the refinement. The distances are taken in the L1
     /// norm (no square roots on the filter's hot path): at least the
@@ -1243,7 +1226,7 @@ pub(crate) fn audit_depth(sites: &[Site; 3], other: &Site) -> Option<(Point, f64
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::segment_solvers;
+    use crate::geometry::solvers::segment_solvers;
 
     fn point(x: f64, y: f64) -> Site {
         Site::Point(Point::new(x, y))

@@ -22,9 +22,9 @@
 //! magnitude, as the edge drawings are.
 
 use super::parabola::{focus_and_directrix, Parabola};
-use super::point::Point;
-use super::predicates::foot_strictly_inside;
-use super::site::Site;
+use crate::geometry::point::Point;
+use crate::geometry::predicates::foot_strictly_inside;
+use crate::geometry::site::Site;
 
 /// One end of an edge, in the diagram's internal coordinates.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -15,8 +15,8 @@
 //! Precision: not exact. Each point is a few ulps of `|s| + p + s^2 / p`
 //! from the true parabola.
 
-use super::point::Point;
-use super::site::Site;
+use crate::geometry::point::Point;
+use crate::geometry::site::Site;
 
 /// The parabola of points equidistant from `focus` and the line through
 /// `directrix[0]` and `directrix[1]`, in the coordinates of the module doc.
@@ -149,7 +149,7 @@ fn cross_accurately(a: Point, b: Point, c: Point) -> f64 {
     if cross.abs() >= (l.abs() + r.abs()) * 2f64.powi(-10) {
         return cross;
     }
-    use super::double_double::DoubleDouble as Dd;
+    use crate::geometry::arithmetic::double_double::DoubleDouble as Dd;
     let d = |p: f64, q: f64| Dd::from_f64(p).sub(Dd::from_f64(q));
     d(b.x, a.x).mul(d(c.y, a.y)).sub(d(b.y, a.y).mul(d(c.x, a.x))).to_f64()
 }

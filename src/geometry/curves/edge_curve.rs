@@ -7,8 +7,8 @@
 //! edge is the piece of it between the positions of its two vertices.
 
 use super::parabola::Parabola;
-use super::point::Point;
-use super::site::Site;
+use crate::geometry::point::Point;
+use crate::geometry::site::Site;
 
 /// A finite edge between two vertex positions: a straight piece, or an arc
 /// of a parabola between the parameters of its ends. Its own parameter
