@@ -89,8 +89,11 @@ pub(super) fn renumber(
         // scaled back (an input near f64::MAX scaled down), or have
         // overflowed on the way (an internal coordinate of ±∞), and
         // saturates the same way, with an infinite clearance.
-        let unscaled = |x: f64| if x.abs() == f64::MAX { x } else { (x * scale.to_input).clamp(-f64::MAX, f64::MAX) };
         let p = store.position[v];
+        if scale.is_identity() && p.x.is_finite() && p.y.is_finite() {
+            continue;
+        }
+        let unscaled = |x: f64| if x.abs() == f64::MAX { x } else { (x * scale.to_input).clamp(-f64::MAX, f64::MAX) };
         let q = Point::new(unscaled(p.x), unscaled(p.y));
         store.position[v] = q;
         store.clearance[v] *= scale.to_input;
