@@ -316,10 +316,15 @@ pub unsafe extern "C" fn segvoronoi_builder_point_count(builder: *const segvoron
 ///
 /// Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments cross or
 /// overlap or a point lies inside a segment (the message names both input
-/// indices). `SEGVORONOI_STATUS_INTERNAL` when the construction could not
-/// complete a valid diagram, or panicked: a bug in segvoronoi (none is
-/// known), never an invalid diagram; `segvoronoi_builder_last_error` says
-/// what failed. Please report the input.
+/// indices). `SEGVORONOI_STATUS_UNSUPPORTED_RANGE` when the input's
+/// coordinates span more than the exact range (largest magnitude over
+/// `2^480`, about 3e144, times the smallest nonzero magnitude or difference
+/// between coordinates) and the build at that span did not check out (see
+/// the README's "exact range"): not a bug. `SEGVORONOI_STATUS_INTERNAL` when
+/// the construction could not complete a valid diagram, or panicked: a bug
+/// in segvoronoi (none is known), never an invalid diagram;
+/// `segvoronoi_last_error_message` says what failed. Please report the
+/// input.
 ///
 /// Ownership: on success the caller owns `*out` and frees it with
 /// `segvoronoi_diagram_free`. On any error `*out` is set to NULL.
