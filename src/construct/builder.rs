@@ -257,7 +257,11 @@ impl Builder {
     /// A diagram that could not be completed is never returned: that is
     /// [`ErrorKind::Internal`], a bug in segvoronoi (none is known; with
     /// sound arithmetic it does not happen), with a message saying what
-    /// failed. The builder stays as it was.
+    /// failed. An input whose coordinates span more than the exact range
+    /// (its largest magnitude over `2^480` times its smallest nonzero
+    /// magnitude or difference) is built and its result checked; when it
+    /// does not check out the error is [`ErrorKind::UnsupportedRange`]
+    /// instead. The builder stays as it was.
     pub fn build(&self) -> Result<Diagram, Error> {
         super::exact_range::checked_build(&self.points, &self.segments, || self.build_at_any_span())
     }
