@@ -62,6 +62,25 @@ pub struct Domain<'a> {
     pub tolerance: f64,
 }
 
+/// The exact power of two `2^-e` with `2^e <= max_abs < 2^(e+1)`, `e`
+/// clamped to the normal exponents so that the factor itself is finite
+/// (subnormal inputs then land a little below 1); 1 for zero or a value
+/// that is not finite. Multiplying by it is exact, so the picture's
+/// geometry is the input's, only nearer 1.
+fn to_unit(max_abs: f64) -> f64 {
+    if max_abs == 0.0 || !max_abs.is_finite() {
+        return 1.0;
+    }
+    // The biased exponent field; a subnormal has 0 there and its leading
+    // bit among the 52 fraction bits.
+    let bits = max_abs.abs().to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    let e = if biased == 0 { 63 - bits.leading_zeros() as i32 - 1074 } else { biased - 1023 };
+    let e = e.clamp(-1022, 1022);
+    // 2^-e built from its bits: a normal number for every clamped e.
+    f64::from_bits(((1023 - e) as u64) << 52)
+}
+
 /// Maps input coordinates to normalised ones and those to pixels.
 struct Frame {
     /// Exact power of two: input × `to_unit` = normalised.
@@ -76,7 +95,7 @@ struct Frame {
 impl Frame {
     fn new(sites: &[Point]) -> Frame {
         let max_abs = sites.iter().fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-        let to_unit = segvoronoi::geometry::scale::Scale::to_unit(max_abs).to_internal;
+        let to_unit = to_unit(max_abs);
         let unit: Vec<Point> = sites.iter().map(|&p| Point::new(p.x * to_unit, p.y * to_unit)).collect();
         let (mut low, mut high) = (Point::new(-1.0, -1.0), Point::new(1.0, 1.0));
         if let Some(&first) = unit.first() {
@@ -763,5 +782,26 @@ mod tests {
             // The picture's size is rounded up to whole pixels.
             assert!((l[1] - l[3]).abs() >= height - 1.0, "not full height: {l:?} of {height}");
         }
+    }
+}
+
+#[cfg(test)]
+mod normalisation_tests {
+    use super::to_unit;
+
+    #[test]
+    fn to_unit_brings_the_largest_magnitude_into_one_to_two() {
+        for v in [1.0, 1.5, 3.0, 1e300, 1e-300, f64::MIN_POSITIVE, 0.75] {
+            let u = v * to_unit(v);
+            assert!((1.0..2.0).contains(&u), "{v}: {u}");
+            assert_eq!(to_unit(v).to_bits() & ((1 << 52) - 1), 0, "{v}: a power of two");
+        }
+        // The top exponent is clamped too (2^-1023 is subnormal): below 4.
+        assert_eq!(f64::MAX * to_unit(f64::MAX), 4.0 - 2f64.powi(-51));
+        // Subnormals: clamped, a little below 1 but not zero.
+        let tiny = f64::MIN_POSITIVE / 8.0;
+        assert_eq!(tiny * to_unit(tiny), 0.125);
+        assert_eq!(to_unit(0.0), 1.0);
+        assert_eq!(to_unit(f64::INFINITY), 1.0);
     }
 }
