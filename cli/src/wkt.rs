@@ -1,25 +1,23 @@
-//! Well-known text (WKT) input, read by hand: the CLI needs seven geometry
-//! types and good error positions, which does not justify a dependency (and
-//! the library's dependency list stays as it is).
+//! WKT and EWKT input through georust's `wkt` crate, and GeoJSON through
+//! the `geojson` crate, both flattened into the shapes the builder takes.
 //!
-//! Accepted: `POINT`, `MULTIPOINT`, `LINESTRING`, `MULTILINESTRING`,
-//! `POLYGON`, `MULTIPOLYGON`, `GEOMETRYCOLLECTION`, each possibly `EMPTY`,
-//! keywords in any case, an optional dimension (`Z`, `M`, `ZM`, as a
-//! separate word or glued to the keyword as in `POINTZ`) whose extra
-//! ordinates are read and ignored, and any number of geometries one after
-//! the other (one per line or concatenated). Without a dimension a
-//! position may have two to four ordinates; with one it must have exactly
-//! as many as the dimension says. Numbers are Rust's `f64` syntax
-//! (`-1.5e-3`); a number too large for `f64` becomes infinite and is then
-//! refused by the builder as any non-finite coordinate.
+//! A WKT file may hold any number of geometries one after the other (one
+//! per line or concatenated): `split` cuts the text into them by their
+//! parentheses, and each is parsed alone, so that an error names the line
+//! of the geometry it is in. EWKT's `SRID=n;` prefix (PostGIS's output) is
+//! taken off and reported; the coordinates are used as they are.
+//!
+//! The crates' messages carry no position (`wkt`) or a line and column
+//! (`serde_json`, below `geojson`): either way the error quotes at most
+//! `QUOTE` characters of the text around the problem, never the whole file.
 
 use std::fmt;
 
 /// A position: the first two ordinates.
 pub type Xy = [f64; 2];
 
-/// One geometry as the builder takes it: multi-geometries and collections
-/// are flattened into their members.
+/// One geometry as the builder takes it: multi-geometries, collections,
+/// features and feature collections are flattened into their members.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
     Point(Xy),
@@ -28,460 +26,351 @@ pub enum Shape {
     Polygon(Vec<Vec<Xy>>),
 }
 
-/// Where the text stops making sense and what would have made sense there.
+/// The shapes of a file and the SRID its EWKT declared, if any.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Shapes {
+    pub shapes: Vec<Shape>,
+    pub srid: Option<i64>,
+}
+
+/// The most characters an error quotes.
+const QUOTE: usize = 80;
+
+/// Where the text stops making sense: a line (1-based), a column when the
+/// reader knows one, what is wrong and the text around it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ParseError {
-    /// 1-based.
     pub line: usize,
-    /// 1-based, in characters.
-    pub column: usize,
+    pub column: Option<usize>,
     pub message: String,
+    /// At most `QUOTE` characters of the input, on one line.
+    pub near: String,
 }
 
 impl fmt::Display for ParseError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "line {}, column {}: {}", self.line, self.column, self.message)
+        match self.column {
+            Some(column) => write!(f, "line {}, column {column}: {}", self.line, self.message)?,
+            None => write!(f, "line {}: {}", self.line, self.message)?,
+        }
+        write!(f, "\n  near: {}", self.near)
     }
 }
 
-/// The geometry types.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Tag {
-    Point,
-    MultiPoint,
-    LineString,
-    MultiLineString,
-    Polygon,
-    MultiPolygon,
-    Collection,
-}
-
-const TAGS: [(&str, Tag); 7] = [
-    ("POINT", Tag::Point),
-    ("MULTIPOINT", Tag::MultiPoint),
-    ("LINESTRING", Tag::LineString),
-    ("MULTILINESTRING", Tag::MultiLineString),
-    ("POLYGON", Tag::Polygon),
-    ("MULTIPOLYGON", Tag::MultiPolygon),
-    ("GEOMETRYCOLLECTION", Tag::Collection),
-];
-
-/// How many ordinates a dimension word declares.
-fn dimension(word: &str) -> Option<usize> {
-    match word {
-        "Z" | "M" => Some(3),
-        "ZM" => Some(4),
-        _ => None,
+/// At most `QUOTE` characters of `text` from byte `at` on (moved back to a
+/// character boundary), a little before it for context, line breaks as
+/// spaces, `...` where it is cut.
+fn quote(text: &str, at: usize) -> String {
+    let mut start = at.min(text.len()).saturating_sub(QUOTE / 4);
+    while !text.is_char_boundary(start) {
+        start -= 1;
     }
+    let piece: String = text[start..].chars().take(QUOTE).collect();
+    let cut = start + piece.len() < text.trim_end().len();
+    let piece = piece.split_whitespace().collect::<Vec<_>>().join(" ");
+    format!("{}{piece}{}", if start > 0 { "..." } else { "" }, if cut { "..." } else { "" })
 }
 
-/// A geometry keyword (upper case), possibly with its dimension glued on
-/// (`POINTZ`, `LINESTRINGZM`): the tag and the declared ordinate count.
-fn keyword(word: &str) -> Option<(Tag, Option<usize>)> {
-    let tag = |w: &str| TAGS.iter().find(|(name, _)| *name == w).map(|&(_, t)| t);
-    if let Some(t) = tag(word) {
-        return Some((t, None));
-    }
-    // No tag ends in Z or M, so a glued suffix is never ambiguous.
-    ["ZM", "Z", "M"].iter().find_map(|suffix| Some((tag(word.strip_suffix(suffix)?)?, dimension(suffix))))
+/// 1-based line and column (in characters) of byte `at`.
+fn line_and_column(text: &str, at: usize) -> (usize, usize) {
+    let before = &text[..at];
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().unwrap_or("").chars().count() + 1;
+    (line, column)
 }
 
-/// Whether the text's first word is a geometry keyword: how the CLI tells
-/// WKT from Boost.Polygon's text format (which starts with a number).
+/// The WKT geometry keywords, upper case, also with a glued dimension.
+const KEYWORDS: [&str; 7] =
+    ["POINT", "MULTIPOINT", "LINESTRING", "MULTILINESTRING", "POLYGON", "MULTIPOLYGON", "GEOMETRYCOLLECTION"];
+
+/// Whether the text starts (after white space) with a WKT keyword or an
+/// EWKT `SRID=`.
 pub fn looks_like_wkt(text: &str) -> bool {
-    let word: String = text.trim_start().chars().take_while(char::is_ascii_alphabetic).collect();
-    keyword(&word.to_ascii_uppercase()).is_some()
+    let first: String =
+        text.trim_start().chars().take_while(|c| c.is_ascii_alphabetic()).collect::<String>().to_ascii_uppercase();
+    first == "SRID" || KEYWORDS.iter().any(|k| first.strip_prefix(k).is_some_and(|rest| ["", "Z", "M", "ZM"].contains(&rest)))
 }
 
-/// Every geometry of the text, flattened, in order.
-pub fn parse(text: &str) -> Result<Vec<Shape>, ParseError> {
-    let mut parser = Parser { tokens: tokenize(text)?, next: 0 };
-    let mut shapes = Vec::new();
-    while parser.peek().kind != Kind::End {
-        parser.geometry(&mut shapes)?;
-    }
-    Ok(shapes)
-}
-
-#[derive(Clone, Debug, PartialEq)]
-enum Kind {
-    /// Letters, upper-cased.
-    Word(String),
-    Number(f64),
-    Open,
-    Close,
-    Comma,
-    End,
-}
-
-#[derive(Clone, Debug)]
-struct Token {
-    kind: Kind,
-    /// As written, for messages.
-    text: String,
-    line: usize,
-    column: usize,
-}
-
-impl Token {
-    /// The token as a message names it.
-    fn describe(&self) -> String {
-        match self.kind {
-            Kind::End => "the end of the input".into(),
-            _ => format!("'{}'", self.text),
+/// Reads every geometry of a WKT or EWKT text.
+pub fn parse(text: &str) -> Result<Shapes, ParseError> {
+    let mut out = Shapes::default();
+    for (start, end) in split(text)? {
+        let mut piece = &text[start..end];
+        let mut offset = start;
+        // EWKT: `SRID=4326;` before a geometry (PostGIS writes one per
+        // geometry; the first one is kept).
+        if piece.get(..5).is_some_and(|s| s.eq_ignore_ascii_case("SRID=")) {
+            let error = |message: &str| {
+                let (line, column) = line_and_column(text, offset);
+                ParseError { line, column: Some(column), message: message.into(), near: quote(text, offset) }
+            };
+            let semicolon = piece.find(';').ok_or_else(|| error("an EWKT SRID=n needs a ';' before its geometry"))?;
+            let srid = piece[5..semicolon].trim().parse().map_err(|_| error("an EWKT SRID=n needs an integer n"))?;
+            out.srid.get_or_insert(srid);
+            offset += semicolon + 1;
+            piece = &piece[semicolon + 1..];
         }
+        check_tokens(text, offset, offset + piece.len())?;
+        let geometry: wkt::Wkt<f64> = piece.parse().map_err(|message: &str| {
+            let skipped = offset + (piece.len() - piece.trim_start().len());
+            let (line, _) = line_and_column(text, skipped);
+            ParseError { line, column: None, message: format!("not valid WKT ({message})"), near: quote(text, skipped) }
+        })?;
+        flatten_wkt(&geometry, &mut out.shapes);
     }
+    Ok(out)
 }
 
-/// The tokens of the text, ending with `Kind::End`; a character that
-/// starts no token or a malformed number is an error at its position.
-fn tokenize(text: &str) -> Result<Vec<Token>, ParseError> {
-    let mut tokens = Vec::new();
-    let (mut line, mut column) = (1, 1);
-    let mut chars = text.chars().peekable();
-    while let Some(&c) = chars.peek() {
-        let (start_line, start_column) = (line, column);
-        let mut word = String::new();
-        // Moves the characters that `keep` accepts from `chars` to `word`.
-        let mut take = |keep: &dyn Fn(char) -> bool| {
-            while let Some(c) = chars.next_if(|&c| keep(c)) {
-                word.push(c);
-                column += 1;
-            }
-        };
-        let kind = match c {
-            '\n' => {
-                chars.next();
-                (line, column) = (line + 1, 1);
-                continue;
-            }
-            c if c.is_whitespace() => {
-                take(&|k: char| k.is_whitespace() && k != '\n');
-                continue;
-            }
-            '(' | ')' | ',' => {
-                chars.next();
-                column += 1;
-                word.push(c);
-                match c {
-                    '(' => Kind::Open,
-                    ')' => Kind::Close,
-                    _ => Kind::Comma,
-                }
-            }
-            c if c.is_ascii_alphabetic() => {
-                take(&|k: char| k.is_ascii_alphabetic());
-                Kind::Word(word.to_ascii_uppercase())
-            }
-            c if c.is_ascii_digit() || matches!(c, '+' | '-' | '.') => {
-                // Letters too, so that `1x` is one bad number rather than a
-                // number and a surprising word.
-                take(&|k: char| k.is_ascii_alphanumeric() || matches!(k, '+' | '-' | '.'));
-                match word.parse::<f64>() {
-                    // `parse` also takes `inf` and `nan`, which cannot start here,
-                    // but `1e999` is infinite: the builder names it.
-                    Ok(v) => Kind::Number(v),
-                    Err(_) => {
-                        return Err(ParseError {
-                            line: start_line,
-                            column: start_column,
-                            message: format!("expected a number, found '{word}'"),
-                        })
-                    }
-                }
-            }
-            other => {
-                return Err(ParseError {
-                    line: start_line,
-                    column: start_column,
-                    message: format!("unexpected character '{other}'"),
-                })
-            }
-        };
-        tokens.push(Token { kind, text: word, line: start_line, column: start_column });
-    }
-    tokens.push(Token { kind: Kind::End, text: String::new(), line, column });
-    Ok(tokens)
-}
-
-struct Parser {
-    tokens: Vec<Token>,
-    next: usize,
-}
-
-impl Parser {
-    fn peek(&self) -> &Token {
-        &self.tokens[self.next]
-    }
-
-    fn advance(&mut self) -> Token {
-        let token = self.tokens[self.next].clone();
-        // `End` is never passed, so `peek` always has a token.
-        if token.kind != Kind::End {
-            self.next += 1;
+/// The byte ranges of the geometries one after the other: each runs from
+/// its keyword (or `SRID=`) to the `)` that closes its first `(`, or to
+/// `EMPTY`. Unbalanced parentheses are the error here, at the stray one.
+fn split(text: &str) -> Result<Vec<(usize, usize)>, ParseError> {
+    let error = |at: usize, message: &str| {
+        let (line, column) = line_and_column(text, at);
+        ParseError { line, column: Some(column), message: message.into(), near: quote(text, at) }
+    };
+    let bytes = text.as_bytes();
+    let mut ranges = Vec::new();
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i].is_ascii_whitespace() {
+            i += 1;
+            continue;
         }
-        token
-    }
-
-    /// An error at the next token: what was expected and what is there.
-    fn expected<T>(&self, what: &str) -> Result<T, ParseError> {
-        let token = self.peek();
-        Err(ParseError {
-            line: token.line,
-            column: token.column,
-            message: format!("expected {what}, found {}", token.describe()),
-        })
-    }
-
-    /// Consumes the next token if it is `kind`.
-    fn accept(&mut self, kind: &Kind) -> bool {
-        let here = &self.peek().kind == kind;
-        if here {
-            self.advance();
-        }
-        here
-    }
-
-    fn accept_word(&mut self, word: &str) -> bool {
-        self.accept(&Kind::Word(word.into()))
-    }
-
-    /// `( item, item, ... )`, at least one item.
-    fn list<T>(&mut self, what: &str, mut item: impl FnMut(&mut Self) -> Result<T, ParseError>) -> Result<Vec<T>, ParseError> {
-        if !self.accept(&Kind::Open) {
-            return self.expected(&format!("'(' or EMPTY before {what}"));
-        }
-        let mut items = vec![item(self)?];
+        let start = i;
+        let mut depth = 0usize;
         loop {
-            if self.accept(&Kind::Comma) {
-                items.push(item(self)?);
-            } else if self.accept(&Kind::Close) {
-                return Ok(items);
-            } else {
-                return self.expected(&format!("',' or ')' after {what}"));
-            }
-        }
-    }
-
-    /// One geometry (a collection's members included) appended to `out`.
-    fn geometry(&mut self, out: &mut Vec<Shape>) -> Result<(), ParseError> {
-        const KEYWORDS: &str = "a geometry keyword (POINT, LINESTRING, POLYGON, MULTIPOINT, MULTILINESTRING, \
-                                MULTIPOLYGON or GEOMETRYCOLLECTION)";
-        let Kind::Word(word) = &self.peek().kind else { return self.expected(KEYWORDS) };
-        let Some((tag, mut dims)) = keyword(word) else { return self.expected(KEYWORDS) };
-        self.advance();
-        if dims.is_none() {
-            if let Kind::Word(word) = &self.peek().kind {
-                dims = dimension(word);
-                if dims.is_some() {
-                    self.advance();
+            if i == bytes.len() {
+                if depth > 0 {
+                    return Err(error(start, "a '(' of this geometry is never closed"));
                 }
+                break;
             }
-        }
-        if self.accept_word("EMPTY") {
-            return Ok(());
-        }
-        match tag {
-            Tag::Point => out.push(Shape::Point(self.point(dims)?)),
-            Tag::MultiPoint => {
-                let points = self.list("a point", |p| p.multipoint_member(dims))?;
-                out.extend(points.into_iter().flatten().map(Shape::Point));
-            }
-            Tag::LineString => out.push(Shape::LineString(self.positions(dims)?)),
-            Tag::MultiLineString => {
-                let lines = self.list("a linestring", |p| p.or_empty(|p| p.positions(dims)))?;
-                out.extend(lines.into_iter().flatten().map(Shape::LineString));
-            }
-            Tag::Polygon => out.push(Shape::Polygon(self.rings(dims)?)),
-            Tag::MultiPolygon => {
-                let polygons = self.list("a polygon", |p| p.or_empty(|p| p.rings(dims)))?;
-                out.extend(polygons.into_iter().flatten().map(Shape::Polygon));
-            }
-            Tag::Collection => {
-                self.list("a geometry", |p| p.geometry(out))?;
-            }
-        }
-        Ok(())
-    }
-
-    /// `EMPTY` (`None`) or what `body` reads.
-    fn or_empty<T>(&mut self, body: impl FnOnce(&mut Self) -> Result<T, ParseError>) -> Result<Option<T>, ParseError> {
-        if self.accept_word("EMPTY") {
-            return Ok(None);
-        }
-        body(self).map(Some)
-    }
-
-    /// A member of a MULTIPOINT: `(x y)`, `x y` (both are in use) or EMPTY.
-    fn multipoint_member(&mut self, dims: Option<usize>) -> Result<Option<Xy>, ParseError> {
-        if self.accept_word("EMPTY") {
-            return Ok(None);
-        }
-        if self.peek().kind == Kind::Open {
-            return self.point(dims).map(Some);
-        }
-        self.position(dims).map(Some)
-    }
-
-    /// `(x y)`.
-    fn point(&mut self, dims: Option<usize>) -> Result<Xy, ParseError> {
-        if !self.accept(&Kind::Open) {
-            return self.expected("'(' or EMPTY before a position");
-        }
-        let p = self.position(dims)?;
-        if !self.accept(&Kind::Close) {
-            return self.expected("')' after the point's position");
-        }
-        Ok(p)
-    }
-
-    /// `(x y, x y, ...)`.
-    fn positions(&mut self, dims: Option<usize>) -> Result<Vec<Xy>, ParseError> {
-        self.list("a position", |p| p.position(dims))
-    }
-
-    /// `((x y, ...), (x y, ...))`.
-    fn rings(&mut self, dims: Option<usize>) -> Result<Vec<Vec<Xy>>, ParseError> {
-        self.list("a ring", |p| p.positions(dims))
-    }
-
-    /// `x y` and the ordinates the dimension adds (two to four when none is
-    /// declared), of which only `x y` are kept.
-    fn position(&mut self, dims: Option<usize>) -> Result<Xy, ParseError> {
-        const NAMES: [&str; 4] = ["x", "y", "the third ordinate", "the fourth ordinate"];
-        let (least, most) = dims.map_or((2, 4), |n| (n, n));
-        let mut xy = [0.0; 2];
-        for (k, name) in NAMES.iter().enumerate().take(most) {
-            match self.peek().kind {
-                Kind::Number(v) => {
-                    if k < 2 {
-                        xy[k] = v;
+            match bytes[i] {
+                b'(' => depth += 1,
+                b')' if depth == 0 => return Err(error(i, "a ')' closes nothing")),
+                b')' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        i += 1;
+                        break;
                     }
-                    self.advance();
                 }
-                _ if k >= least => break,
-                _ => return self.expected(&format!("a number ({name})")),
+                _ if depth == 0 && bytes[i..].get(..5).is_some_and(|w| w.eq_ignore_ascii_case(b"EMPTY")) => {
+                    i += 5;
+                    break;
+                }
+                _ => {}
             }
+            i += 1;
         }
-        Ok(xy)
+        ranges.push((start, i));
     }
+    Ok(ranges)
+}
+
+/// A word that is neither a number, a keyword nor a dimension: named with
+/// its line and column before the crate, which would only say "invalid".
+fn check_tokens(text: &str, start: usize, end: usize) -> Result<(), ParseError> {
+    let separator = |c: char| c.is_whitespace() || "(),".contains(c);
+    let mut chars = text[start..end].char_indices().map(|(i, c)| (start + i, c)).peekable();
+    while let Some(&(here, c)) = chars.peek() {
+        if separator(c) {
+            chars.next();
+            continue;
+        }
+        let mut stop = end;
+        while let Some(&(i, c)) = chars.peek() {
+            if separator(c) {
+                stop = i;
+                break;
+            }
+            chars.next();
+        }
+        let token = &text[here..stop];
+        let upper = token.to_ascii_uppercase();
+        let known = token.parse::<f64>().is_ok() || looks_like_wkt(token) || ["Z", "M", "ZM", "EMPTY"].contains(&upper.as_str());
+        if !known {
+            let (line, column) = line_and_column(text, here);
+            return Err(ParseError {
+                line,
+                column: Some(column),
+                message: format!("expected a number or a WKT keyword, found '{token}'"),
+                near: quote(text, here),
+            });
+        }
+    }
+    Ok(())
+}
+
+fn xy(c: &wkt::types::Coord<f64>) -> Xy {
+    [c.x, c.y]
+}
+
+/// Appends the shapes of `geometry`; an EMPTY one adds nothing.
+fn flatten_wkt(geometry: &wkt::Wkt<f64>, out: &mut Vec<Shape>) {
+    use wkt::Wkt;
+    let start = out.len();
+    let polygon = |p: &wkt::types::Polygon<f64>| Shape::Polygon(p.0.iter().map(|r| r.0.iter().map(xy).collect()).collect());
+    match geometry {
+        Wkt::Point(p) => out.extend(p.0.as_ref().map(|c| Shape::Point(xy(c)))),
+        Wkt::LineString(l) => out.push(Shape::LineString(l.0.iter().map(xy).collect())),
+        Wkt::Polygon(p) => out.push(polygon(p)),
+        Wkt::MultiPoint(m) => out.extend(m.0.iter().filter_map(|p| p.0.as_ref().map(|c| Shape::Point(xy(c))))),
+        Wkt::MultiLineString(m) => out.extend(m.0.iter().map(|l| Shape::LineString(l.0.iter().map(xy).collect()))),
+        Wkt::MultiPolygon(m) => out.extend(m.0.iter().map(polygon)),
+        Wkt::GeometryCollection(c) => c.0.iter().for_each(|g| flatten_wkt(g, out)),
+    }
+    drop_empty(out, start);
+}
+
+/// Drops the shapes from `start` on that have no position (`POLYGON
+/// EMPTY`, `[]` coordinates): they add nothing to the diagram.
+fn drop_empty(out: &mut Vec<Shape>, start: usize) {
+    let mut k = start;
+    while k < out.len() {
+        let empty = match &out[k] {
+            Shape::Point(_) => false,
+            Shape::LineString(points) => points.is_empty(),
+            Shape::Polygon(rings) => rings.iter().all(Vec::is_empty),
+        };
+        if empty {
+            out.remove(k);
+        } else {
+            k += 1;
+        }
+    }
+}
+
+/// Whether the text looks like JSON (GeoJSON is an object).
+pub fn looks_like_json(text: &str) -> bool {
+    text.trim_start().starts_with('{')
+}
+
+/// Reads a GeoJSON geometry, Feature or FeatureCollection: every polygon
+/// and multipolygon becomes rings of the domain, lines polylines, points
+/// points; a feature without a geometry adds nothing.
+pub fn parse_geojson(text: &str) -> Result<Shapes, ParseError> {
+    let value: serde_json::Value = serde_json::from_str(text).map_err(|e| {
+        let at = byte_of(text, e.line(), e.column());
+        // serde_json's message ends in its own "at line L column C".
+        let message = e.to_string();
+        let message = message.split(" at line ").next().unwrap_or(&message).to_string();
+        ParseError {
+            line: e.line(),
+            column: Some(e.column()),
+            message: format!("not valid JSON ({message})"),
+            near: quote(text, at),
+        }
+    })?;
+    let geojson = geojson::GeoJson::from_json_value(value).map_err(|e| {
+        // Valid JSON that is not GeoJSON: no position from the crate; quote
+        // the object's start (its "type") rather than the file.
+        let at = text.find("\"type\"").unwrap_or(0);
+        let (line, _) = line_and_column(text, at);
+        ParseError { line, column: None, message: format!("not valid GeoJSON ({e})"), near: quote(text, at) }
+    })?;
+    let mut out = Shapes::default();
+    match &geojson {
+        geojson::GeoJson::Geometry(g) => flatten_geojson(&g.value, &mut out.shapes),
+        geojson::GeoJson::Feature(f) => f.geometry.iter().for_each(|g| flatten_geojson(&g.value, &mut out.shapes)),
+        geojson::GeoJson::FeatureCollection(c) => {
+            c.features.iter().flat_map(|f| &f.geometry).for_each(|g| flatten_geojson(&g.value, &mut out.shapes))
+        }
+    }
+    Ok(out)
+}
+
+/// The byte offset of a 1-based line and column (serde_json counts the
+/// column in bytes; 0 at the start of a line).
+fn byte_of(text: &str, line: usize, column: usize) -> usize {
+    let start: usize = text.split_inclusive('\n').take(line.saturating_sub(1)).map(str::len).sum();
+    (start + column.saturating_sub(1)).min(text.len())
+}
+
+fn flatten_geojson(value: &geojson::Value, out: &mut Vec<Shape>) {
+    use geojson::Value;
+    let start = out.len();
+    // A position has at least two ordinates (the crate checks); more are
+    // heights, ignored as WKT's Z.
+    let xy = |p: &Vec<f64>| [p[0], p.get(1).copied().unwrap_or(f64::NAN)];
+    let line = |l: &Vec<Vec<f64>>| l.iter().map(xy).collect::<Vec<_>>();
+    let polygon = |p: &Vec<Vec<Vec<f64>>>| Shape::Polygon(p.iter().map(line).collect());
+    match value {
+        Value::Point(p) => out.push(Shape::Point(xy(p))),
+        Value::MultiPoint(m) => out.extend(m.iter().map(|p| Shape::Point(xy(p)))),
+        Value::LineString(l) => out.push(Shape::LineString(line(l))),
+        Value::MultiLineString(m) => out.extend(m.iter().map(|l| Shape::LineString(line(l)))),
+        Value::Polygon(p) => out.push(polygon(p)),
+        Value::MultiPolygon(m) => out.extend(m.iter().map(polygon)),
+        Value::GeometryCollection(c) => c.iter().for_each(|g| flatten_geojson(&g.value, out)),
+    }
+    drop_empty(out, start);
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn error(text: &str) -> ParseError {
-        parse(text).expect_err(text)
-    }
-
     #[test]
-    fn every_geometry_type() {
-        let shapes = parse(
-            "POINT (1 2)\n\
-             MULTIPOINT ((3 4), 5 6, EMPTY)\n\
-             LINESTRING (0 0, 1 1, 2 0)\n\
-             MULTILINESTRING ((0 0, 1 0), EMPTY, (2 2, 3 3))\n\
-             POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 2 1, 2 2))\n\
-             MULTIPOLYGON (((0 0, 1 0, 1 1)), EMPTY, ((5 5, 6 5, 6 6)))\n\
-             GEOMETRYCOLLECTION (POINT (7 8), LINESTRING (9 9, 10 10), GEOMETRYCOLLECTION EMPTY)",
+    fn several_geometries_one_after_the_other() {
+        let s = parse(
+            "POINT (1 2)\nLINESTRING (0 0, 1 1)POLYGON EMPTY\nMULTIPOLYGON (((0 0, 1 0, 0 1, 0 0)), ((5 5, 6 5, 5 6, 5 5)))",
         )
         .unwrap();
-        let line = |v: &[Xy]| Shape::LineString(v.to_vec());
-        let polygon = |rings: &[&[Xy]]| Shape::Polygon(rings.iter().map(|r| r.to_vec()).collect());
-        assert_eq!(
-            shapes,
-            vec![
-                Shape::Point([1.0, 2.0]),
-                Shape::Point([3.0, 4.0]),
-                Shape::Point([5.0, 6.0]),
-                line(&[[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]]),
-                line(&[[0.0, 0.0], [1.0, 0.0]]),
-                line(&[[2.0, 2.0], [3.0, 3.0]]),
-                polygon(&[&[[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0], [0.0, 0.0]], &[[1.0, 1.0], [2.0, 1.0], [2.0, 2.0]]]),
-                polygon(&[&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]]),
-                polygon(&[&[[5.0, 5.0], [6.0, 5.0], [6.0, 6.0]]]),
-                Shape::Point([7.0, 8.0]),
-                line(&[[9.0, 9.0], [10.0, 10.0]]),
-            ]
-        );
+        assert_eq!(s.shapes.len(), 4);
+        assert_eq!(s.shapes[0], Shape::Point([1.0, 2.0]));
+        assert_eq!(s.shapes[1], Shape::LineString(vec![[0.0, 0.0], [1.0, 1.0]]));
+        assert!(matches!(&s.shapes[3], Shape::Polygon(r) if r[0][0] == [5.0, 5.0]));
+        assert_eq!(s.srid, None);
     }
 
     #[test]
-    fn case_dimensions_empty_and_concatenation() {
-        let shapes = parse(
-            "point z (1 2 3)PoInT M(4 5 6) pointzm (7 8 9 10) POINTZ(1 1 1)\
-             linestring(1e0 -2.5, +.5 3.)\tPOINT EMPTY POLYGON Z EMPTY POINT (1 2 3 4)",
-        )
-        .unwrap();
-        assert_eq!(
-            shapes,
-            vec![
-                Shape::Point([1.0, 2.0]),
-                Shape::Point([4.0, 5.0]),
-                Shape::Point([7.0, 8.0]),
-                Shape::Point([1.0, 1.0]),
-                Shape::LineString(vec![[1.0, -2.5], [0.5, 3.0]]),
-                Shape::Point([1.0, 2.0]),
-            ]
-        );
-        assert_eq!(parse("  \n ").unwrap(), vec![]);
+    fn ewkt_srid_is_taken_off() {
+        let s = parse("SRID=4326;POLYGON Z ((0 0 1, 1 0 1, 0 1 1, 0 0 1))").unwrap();
+        assert_eq!(s.srid, Some(4326));
+        assert_eq!(s.shapes, [Shape::Polygon(vec![vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [0.0, 0.0]]])]);
+        assert!(looks_like_wkt("  srid=3857;POINT(1 2)") && looks_like_wkt("pointz (1 2 3)") && !looks_like_wkt("3\n0 0"));
+        assert!(parse("SRID=x;POINT (1 2)").unwrap_err().message.contains("integer"));
     }
 
     #[test]
-    fn recognised_by_the_first_word() {
-        assert!(looks_like_wkt("\n  polygon ((0 0, 1 0, 1 1))"));
-        assert!(looks_like_wkt("MULTIPOINTZM EMPTY"));
-        assert!(!looks_like_wkt("3\n0 0\n"));
-        assert!(!looks_like_wkt("CIRCLE (0 0)"));
-        assert!(!looks_like_wkt(""));
+    fn errors_name_the_line_and_quote_only_nearby_text() {
+        let long = format!("POINT (1 2)\nPOLYGON ((0 0, 4 0, 4 two, 0 0{}))\n", ", 1 1".repeat(200));
+        let e = parse(&long).unwrap_err();
+        assert_eq!((e.line, e.column), (2, Some(23)), "{e}");
+        assert!(e.message.contains("'two'") && e.near.contains("4 two") && e.near.chars().count() <= QUOTE + 6, "{e}");
+        let e = parse("POINT (1 2)\n\nPOINT (1 2").unwrap_err();
+        assert_eq!(e.line, 3, "{e}");
+        let e = parse("POINT (1 2))").unwrap_err();
+        assert_eq!((e.line, e.column), (1, Some(12)), "{e}");
+        let e = parse("POINT (1 2 3 4 5)").unwrap_err();
+        assert!(e.to_string().starts_with("line 1: not valid WKT"), "{e}");
     }
 
     #[test]
-    fn errors_name_line_column_and_what_was_expected() {
-        let e = error("POINT (1 2)\nLINESTRING (0 0, 1)");
-        assert_eq!((e.line, e.column), (2, 19), "{e}");
-        assert!(e.message.contains("a number (y)") && e.message.contains("')'"), "{e}");
+    fn geojson_features_and_collections() {
+        let text = r#"{"type": "FeatureCollection", "features": [
+            {"type": "Feature", "properties": {"name": "a"}, "geometry": {"type": "MultiPolygon", "coordinates": [[[[0,0],[4,0],[4,4],[0,0]]], [[[9,9],[10,9],[10,10],[9,9]]]]}},
+            {"type": "Feature", "properties": null, "geometry": null},
+            {"type": "Feature", "properties": {}, "geometry": {"type": "GeometryCollection", "geometries": [
+                {"type": "LineString", "coordinates": [[1,1,7],[2,1,7]]}, {"type": "Point", "coordinates": [3, 1]}]}}]}"#;
+        let s = parse_geojson(text).unwrap();
+        assert_eq!(s.shapes.len(), 4);
+        assert!(matches!(&s.shapes[1], Shape::Polygon(r) if r[0].len() == 4 && r[0][1] == [10.0, 9.0]));
+        assert_eq!(s.shapes[2], Shape::LineString(vec![[1.0, 1.0], [2.0, 1.0]]));
+        assert_eq!(s.shapes[3], Shape::Point([3.0, 1.0]));
+        let s = parse_geojson(r#"{"type": "Polygon", "coordinates": [[[0,0],[1,0],[0,1],[0,0]]]}"#).unwrap();
+        assert_eq!(s.shapes.len(), 1);
+    }
 
-        let e = error("POLYGON ((0 0, 1 0, 1 1)");
-        assert_eq!((e.line, e.column), (1, 25), "{e}");
-        assert!(e.message.contains("',' or ')'") && e.message.contains("end of the input"), "{e}");
-
-        let e = error("CIRCLE (0 0 1)");
-        assert_eq!((e.line, e.column), (1, 1), "{e}");
-        assert!(e.message.contains("geometry keyword") && e.message.contains("'CIRCLE'"), "{e}");
-
-        let e = error("POINT (1 two)");
-        assert_eq!((e.line, e.column), (1, 10), "{e}");
-        assert!(e.message.contains("a number (y)") && e.message.contains("'two'"), "{e}");
-
-        let e = error("POINT (1 2x)");
-        assert_eq!((e.line, e.column), (1, 10), "{e}");
-        assert!(e.message.contains("expected a number, found '2x'"), "{e}");
-
-        let e = error("\n\n  POINT Z (1 2)");
-        assert_eq!((e.line, e.column), (3, 15), "{e}");
-        assert!(e.message.contains("the third ordinate"), "{e}");
-
-        let e = error("POINT (1 2 3 4 5)");
-        assert_eq!((e.line, e.column), (1, 16), "{e}");
-        assert!(e.message.contains("')'"), "{e}");
-
-        let e = error("POINT (1 2, 3 4)");
-        assert!(e.message.contains("')' after the point's position"), "{e}");
-
-        let e = error("LINESTRING (0 0, 1 1,)");
-        assert_eq!((e.line, e.column), (1, 22), "{e}");
-
-        let e = error("POINT 1 2");
-        assert!(e.message.contains("'(' or EMPTY"), "{e}");
-
-        let e = error("POINT (1 2) ; POINT (3 4)");
-        assert_eq!((e.line, e.column), (1, 13), "{e}");
-        assert!(e.message.contains("unexpected character ';'"), "{e}");
-
-        let e = error("GEOMETRYCOLLECTION (POINT (1 2), 7)");
-        assert!(e.message.contains("geometry keyword") && e.message.contains("'7'"), "{e}");
-        assert_eq!(e.to_string(), format!("line 1, column 34: {}", e.message));
+    #[test]
+    fn geojson_errors_quote_only_nearby_text() {
+        let text = format!("{{\"type\": \"MultiPoint\",\n \"coordinates\": [{} [1, x]]}}", "[0, 0], ".repeat(100));
+        let e = parse_geojson(&text).unwrap_err();
+        assert_eq!(e.line, 2, "{e}");
+        assert!(e.near.contains("[1, x]") && e.near.chars().count() <= QUOTE + 6, "{e}");
+        let e = parse_geojson(r#"{"type": "Polygon", "coordinates": 7}"#).unwrap_err();
+        assert!(e.message.contains("GeoJSON"), "{e}");
     }
 }

@@ -300,7 +300,9 @@ fn usage_errors_and_help() {
     assert!(stderr(&o).contains("cannot read"), "{}", stderr(&o));
     let o = run(&["--help"]);
     assert!(o.status.success());
-    assert!(stdout(&o).starts_with("Usage: segvoronoi"));
+    assert!(stdout(&o).contains("Usage: segvoronoi") && stdout(&o).contains("GeoJSON"), "{}", stdout(&o));
+    let o = run(&["--version"]);
+    assert_eq!(stdout(&o), format!("segvoronoi {}\n", segvoronoi::VERSION));
 }
 
 #[test]
@@ -441,11 +443,12 @@ fn malformed_wkt_names_line_and_column() {
     assert_eq!(o.status.code(), Some(2));
     assert!(!temp_path("never.wkt").exists());
     let err = stderr(&o);
-    assert!(err.contains("malformed.wkt: line 2, column 23: expected a number (y), found 'two'"), "{err}");
+    assert!(err.contains("malformed.wkt: line 2, column 23: expected a number or a WKT keyword, found 'two'"), "{err}");
+    assert!(err.contains("near: ...") && err.contains("4 two"), "{err}");
     // Recognised by its first word on standard input too.
     let o = run_with_stdin(&["-"], "LineString (0 0, 1 1");
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("line 1, column 21: expected ',' or ')'"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("line 1, column 1: a '(' of this geometry is never closed"), "{}", stderr(&o));
 }
 
 #[test]
