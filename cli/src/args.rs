@@ -63,6 +63,10 @@ struct Cli {
     #[arg(long)]
     svg_diagram: bool,
 
+    /// The name of the input's unit for the --svg scale bar (e.g. km, m, deg; default: "units", or "deg" for EWKT with SRID 4326)
+    #[arg(long, value_name = "NAME")]
+    units: Option<String>,
+
     /// Print the canonical topology text on standard output
     #[arg(long)]
     topology: bool,
@@ -150,6 +154,8 @@ pub struct Options {
     pub svg: Option<PathBuf>,
     /// `--svg-diagram`: the Voronoi diagram in the picture of a domain too.
     pub svg_diagram: bool,
+    /// `--units`: the scale bar's unit.
+    pub units: Option<String>,
     pub topology: bool,
     pub voronoi_pairs: bool,
     pub stats: bool,
@@ -220,6 +226,7 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Options, Stop> {
         },
         svg: cli.svg,
         svg_diagram: cli.svg_diagram,
+        units: cli.units,
         topology: cli.topology || cli.voronoi_pairs,
         voronoi_pairs: cli.voronoi_pairs,
         stats: cli.stats,

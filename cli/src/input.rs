@@ -178,6 +178,22 @@ impl Input {
 }
 
 impl Input {
+    /// The linestrings and points of a WKT or GeoJSON input (the
+    /// obstacles, drawn when the picture leaves the diagram out).
+    pub fn obstacles(&self) -> (Vec<Vec<Xy>>, Vec<Xy>) {
+        let (mut lines, mut points) = (Vec::new(), Vec::new());
+        if let Input::Shapes(Shapes { shapes, .. }) = self {
+            for shape in shapes {
+                match shape {
+                    Shape::LineString(line) => lines.push(line.clone()),
+                    Shape::Point(p) => points.push(*p),
+                    Shape::Polygon(_) => {}
+                }
+            }
+        }
+        (lines, points)
+    }
+
     /// The SRID an EWKT input declared (its coordinates are used as they
     /// are: the diagram is planar).
     pub fn srid(&self) -> Option<i64> {

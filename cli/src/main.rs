@@ -92,8 +92,15 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     let axis = if needs_axis { medial_axis(&diagram, &options) } else { MedialAxis::default() };
     if let Some(path) = &options.svg {
         let rings = input.rings();
-        let domain = svg::Domain { rings: &rings, axis: &axis, tolerance };
-        write_file(path, &svg::render(&diagram, diagram.has_domain().then_some(&domain), &offsets))?;
+        let (lines, points) = input.obstacles();
+        let domain = svg::Domain { rings: &rings, axis: &axis, tolerance, lines: &lines, points: &points };
+        let look = svg::Look {
+            title: Some(title(&name, &diagram, builder.segment_count())),
+            // EWKT's SRID 4326 is longitude and latitude in degrees.
+            units: options.units.clone().or_else(|| (input.srid() == Some(4326)).then(|| "deg".to_string())),
+            diagram: options.svg_diagram,
+        };
+        write_file(path, &svg::render(&diagram, diagram.has_domain().then_some(&domain), &offsets, &look))?;
     }
     if let Some((path, format)) = &options.medial_axis {
         let text = match format {
@@ -158,6 +165,13 @@ fn sites_as_built(diagram: &Diagram, points: usize) -> String {
     let segments: Vec<[f64; 4]> =
         (0..diagram.piece_count()).filter_map(|p| diagram.piece(p)).map(|[a, b]| [a.x, a.y, b.x, b.y]).collect();
     segvoronoi::boost_text::write(&points, &segments)
+}
+
+/// The picture's title: the input's file name and what it holds.
+fn title(name: &str, diagram: &Diagram, segments: usize) -> String {
+    let name = Path::new(name).file_name().map_or(name.to_string(), |n| n.to_string_lossy().into_owned());
+    let what = if diagram.has_domain() { "medial axis" } else { "Voronoi diagram" };
+    format!("{name}: {what}, {} sites ({segments} segments)", diagram.site_count())
 }
 
 /// The medial axis, filtered as the options ask (no option: no filter).
