@@ -356,7 +356,7 @@ pub fn render(diagram: &Diagram, domain: Option<&Domain>, offsets: &[Offset], lo
 fn write_diagram(out: &mut String, frame: &Frame, diagram: &Diagram) {
     let _ = writeln!(out, r#"<g id="edges" stroke="{EDGE_COLOUR}" stroke-width="1.2" stroke-linecap="round" fill="none">"#);
     for edge in diagram.edges() {
-        match visible_piece(diagram, &frame, &edge) {
+        match visible_piece(diagram, frame, &edge) {
             Some(Piece::Line(p, q)) => {
                 if let (Some((x1, y1)), Some((x2, y2))) = (frame.pixel(p), frame.pixel(q)) {
                     let _ = writeln!(out, r#"<line x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}"/>"#);
@@ -474,7 +474,7 @@ impl Band {
             ));
             let top = domain_top(diagram, domain);
             entries.push((
-                format!(r#"<rect x="0" y="3" width="24" height="6" fill="url(#clearance-ramp)"/>"#),
+                r#"<rect x="0" y="3" width="24" height="6" fill="url(#clearance-ramp)"/>"#.to_string(),
                 format!("medial axis, clearance 0 to {}", short(top)),
             ));
             if let Some((_, r)) = diagram.max_inscribed_circle() {
