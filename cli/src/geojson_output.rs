@@ -2,7 +2,7 @@
 //! `geojson` crate: the same samples as the WKT writers, so a GIS reads
 //! what the WKT says, with the clearance and the distance as properties.
 
-use geojson::{Feature, FeatureCollection, Geometry, JsonObject, Value};
+use geojson::{Feature, FeatureCollection, Geometry, GeometryValue, JsonObject};
 use segvoronoi::{Diagram, MedialAxis, Offset};
 use serde_json::json;
 
@@ -18,9 +18,8 @@ pub fn medial_axis(diagram: &Diagram, axis: &MedialAxis, tolerance: f64) -> Stri
     let lines: Vec<Vec<[f64; 3]>> =
         axis.chains.iter().filter_map(|chain| medial_output::sample(diagram, chain, tolerance)).collect();
     let clearance: Vec<Vec<f64>> = lines.iter().map(|line| line.iter().map(|p| p[2]).collect()).collect();
-    let geometry = (!lines.is_empty()).then(|| {
-        Geometry::new(Value::MultiLineString(lines.iter().map(|line| line.iter().map(|p| p.to_vec()).collect()).collect()))
-    });
+    let geometry = (!lines.is_empty())
+        .then(|| Geometry::new(GeometryValue::new_multi_line_string(lines.iter().map(|line| line.iter().copied()))));
     let mut properties = JsonObject::new();
     properties.insert("kind".into(), json!("medial axis"));
     properties.insert("domain".into(), json!(diagram.has_domain()));
@@ -39,7 +38,7 @@ pub fn offsets(offsets: &[Offset], tolerance: f64) -> String {
     let features = offsets
         .iter()
         .map(|offset| {
-            let polygons: Vec<Vec<Vec<Vec<f64>>>> = offset
+            let polygons: Vec<Vec<Vec<[f64; 2]>>> = offset
                 .polygons()
                 .iter()
                 .map(|loops| {
@@ -47,7 +46,7 @@ pub fn offsets(offsets: &[Offset], tolerance: f64) -> String {
                         .iter()
                         .map(|&k| {
                             let points = offset.loops[k].polyline(tolerance).unwrap_or_default();
-                            points.iter().chain(points.first()).map(|p| vec![p.x, p.y]).collect()
+                            points.iter().chain(points.first()).map(|p| [p.x, p.y]).collect()
                         })
                         .collect()
                 })
@@ -56,7 +55,7 @@ pub fn offsets(offsets: &[Offset], tolerance: f64) -> String {
             properties.insert("distance".into(), json!(offset.distance));
             properties.insert("area".into(), json!(offset.area()));
             Feature {
-                geometry: Some(Geometry::new(Value::MultiPolygon(polygons))),
+                geometry: Some(Geometry::new(GeometryValue::new_multi_polygon(polygons))),
                 properties: Some(properties),
                 ..Feature::default()
             }

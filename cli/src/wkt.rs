@@ -211,15 +211,18 @@ fn xy(c: &wkt::types::Coord<f64>) -> Xy {
 fn flatten_wkt(geometry: &wkt::Wkt<f64>, out: &mut Vec<Shape>) {
     use wkt::Wkt;
     let start = out.len();
-    let polygon = |p: &wkt::types::Polygon<f64>| Shape::Polygon(p.0.iter().map(|r| r.0.iter().map(xy).collect()).collect());
+    let polygon =
+        |p: &wkt::types::Polygon<f64>| Shape::Polygon(p.rings().iter().map(|r| r.coords().iter().map(xy).collect()).collect());
     match geometry {
-        Wkt::Point(p) => out.extend(p.0.as_ref().map(|c| Shape::Point(xy(c)))),
-        Wkt::LineString(l) => out.push(Shape::LineString(l.0.iter().map(xy).collect())),
+        Wkt::Point(p) => out.extend(p.coord().map(|c| Shape::Point(xy(c)))),
+        Wkt::LineString(l) => out.push(Shape::LineString(l.coords().iter().map(xy).collect())),
         Wkt::Polygon(p) => out.push(polygon(p)),
-        Wkt::MultiPoint(m) => out.extend(m.0.iter().filter_map(|p| p.0.as_ref().map(|c| Shape::Point(xy(c))))),
-        Wkt::MultiLineString(m) => out.extend(m.0.iter().map(|l| Shape::LineString(l.0.iter().map(xy).collect()))),
-        Wkt::MultiPolygon(m) => out.extend(m.0.iter().map(polygon)),
-        Wkt::GeometryCollection(c) => c.0.iter().for_each(|g| flatten_wkt(g, out)),
+        Wkt::MultiPoint(m) => out.extend(m.points().iter().filter_map(|p| p.coord().map(|c| Shape::Point(xy(c))))),
+        Wkt::MultiLineString(m) => {
+            out.extend(m.line_strings().iter().map(|l| Shape::LineString(l.coords().iter().map(xy).collect())))
+        }
+        Wkt::MultiPolygon(m) => out.extend(m.polygons().iter().map(polygon)),
+        Wkt::GeometryCollection(c) => c.geometries().iter().for_each(|g| flatten_wkt(g, out)),
     }
     drop_empty(out, start);
 }
@@ -263,7 +266,7 @@ pub fn parse_geojson(text: &str) -> Result<Shapes, ParseError> {
             near: quote(text, at),
         }
     })?;
-    let geojson = geojson::GeoJson::from_json_value(value).map_err(|e| {
+    let geojson: geojson::GeoJson = serde_json::from_value(value).map_err(|e| {
         // Valid JSON that is not GeoJSON: no position from the crate; quote
         // the object's start (its "type") rather than the file.
         let at = text.find("\"type\"").unwrap_or(0);
@@ -288,22 +291,22 @@ fn byte_of(text: &str, line: usize, column: usize) -> usize {
     (start + column.saturating_sub(1)).min(text.len())
 }
 
-fn flatten_geojson(value: &geojson::Value, out: &mut Vec<Shape>) {
-    use geojson::Value;
+fn flatten_geojson(value: &geojson::GeometryValue, out: &mut Vec<Shape>) {
+    use geojson::{GeometryValue as V, Position};
     let start = out.len();
     // A position has at least two ordinates (the crate checks); more are
     // heights, ignored as WKT's Z.
-    let xy = |p: &Vec<f64>| [p[0], p.get(1).copied().unwrap_or(f64::NAN)];
-    let line = |l: &Vec<Vec<f64>>| l.iter().map(xy).collect::<Vec<_>>();
-    let polygon = |p: &Vec<Vec<Vec<f64>>>| Shape::Polygon(p.iter().map(line).collect());
+    let xy = |p: &Position| [p[0], p.as_slice().get(1).copied().unwrap_or(f64::NAN)];
+    let line = |l: &Vec<Position>| l.iter().map(xy).collect::<Vec<_>>();
+    let polygon = |p: &Vec<Vec<Position>>| Shape::Polygon(p.iter().map(line).collect());
     match value {
-        Value::Point(p) => out.push(Shape::Point(xy(p))),
-        Value::MultiPoint(m) => out.extend(m.iter().map(|p| Shape::Point(xy(p)))),
-        Value::LineString(l) => out.push(Shape::LineString(line(l))),
-        Value::MultiLineString(m) => out.extend(m.iter().map(|l| Shape::LineString(line(l)))),
-        Value::Polygon(p) => out.push(polygon(p)),
-        Value::MultiPolygon(m) => out.extend(m.iter().map(polygon)),
-        Value::GeometryCollection(c) => c.iter().for_each(|g| flatten_geojson(&g.value, out)),
+        V::Point { coordinates } => out.push(Shape::Point(xy(coordinates))),
+        V::MultiPoint { coordinates } => out.extend(coordinates.iter().map(|p| Shape::Point(xy(p)))),
+        V::LineString { coordinates } => out.push(Shape::LineString(line(coordinates))),
+        V::MultiLineString { coordinates } => out.extend(coordinates.iter().map(|l| Shape::LineString(line(l)))),
+        V::Polygon { coordinates } => out.push(polygon(coordinates)),
+        V::MultiPolygon { coordinates } => out.extend(coordinates.iter().map(polygon)),
+        V::GeometryCollection { geometries } => geometries.iter().for_each(|g| flatten_geojson(&g.value, out)),
     }
     drop_empty(out, start);
 }
