@@ -1,14 +1,14 @@
 //! The writers of `--medial-axis`: the chains sampled as one WKT
-//! `MULTILINESTRING Z` (z the clearance), or exactly as JSON, written by
-//! hand (the program has no dependencies besides the library).
+//! `MULTILINESTRING Z` (z the clearance), or exactly as JSON through
+//! `serde_json`.
 //!
-//! Numbers are written with Rust's shortest round-trip formatting (`{}` on
-//! `f64`), which never uses an exponent: every WKT and JSON reader takes it,
-//! and it reads back to the same `f64`.
-
-use std::fmt::Write;
+//! WKT numbers are written with Rust's shortest round-trip formatting (`{}`
+//! on `f64`), which never uses an exponent: every WKT reader takes it, and
+//! it reads back to the same `f64`; `serde_json`'s numbers (`ryu`) read
+//! back to the same `f64` too.
 
 use segvoronoi::{Chain, Diagram, EdgeEnd, EdgeShape, MedialAxis, Point};
+use serde_json::{json, Value};
 
 /// The sampled points `[x, y, clearance]` of a chain within `tolerance`.
 /// The pieces that reach infinity (only without a domain) are cut off: they
@@ -49,56 +49,72 @@ pub fn wkt(diagram: &Diagram, axis: &MedialAxis, tolerance: f64) -> String {
 /// end `{"vertex": id, "point": [x, y]}` or `{"direction": [dx, dy]}` (at
 /// infinity, where the clearance is `null`).
 pub fn json(diagram: &Diagram, axis: &MedialAxis) -> String {
-    let mut out = String::new();
-    let _ = writeln!(out, "{{\"domain\": {}, \"chains\": [", diagram.has_domain());
-    for (c, chain) in axis.chains.iter().enumerate() {
-        let _ = writeln!(out, "  {{\"closed\": {}, \"pieces\": [", chain.closed);
-        for (k, piece) in chain.pieces.iter().enumerate() {
-            let ends = piece.ends.map(|end| match end {
-                EdgeEnd::Vertex(v) => {
-                    let at = diagram.vertex(v).map_or(Point::new(f64::NAN, f64::NAN), |v| v.position);
-                    format!("{{\"vertex\": {}, \"point\": {}}}", v.index(), point(at))
-                }
-                EdgeEnd::Infinite { direction } => format!("{{\"direction\": {}}}", point(direction)),
-            });
-            let kind = match diagram.edge_shape(piece.edge).unwrap_or(EdgeShape::Line) {
-                EdgeShape::Parabola { focus, directrix: [a, b] } => {
-                    format!("\"parabola\", \"focus\": {}, \"directrix\": [{}, {}]", point(focus), point(a), point(b))
-                }
-                EdgeShape::Line => "\"line\"".into(),
-                // `EdgeShape` may grow (curved sites); no such edge exists yet.
-                _ => "\"other\"".into(),
-            };
-            let _ = write!(
-                out,
-                "    {{\"edge\": {}, \"reversed\": {}, \"ends\": [{}, {}], \"clearance\": [{}, {}], \"kind\": {kind}}}",
-                piece.edge.index(),
-                piece.reversed,
-                ends[0],
-                ends[1],
-                number(piece.clearance[0]),
-                number(piece.clearance[1]),
-            );
-            out.push_str(if k + 1 < chain.pieces.len() { ",\n" } else { "\n" });
-        }
-        out.push_str(if c + 1 < axis.chains.len() { "  ]},\n" } else { "  ]}\n" });
-    }
-    out.push_str("]}\n");
-    out
+    let chains: Vec<Value> = axis
+        .chains
+        .iter()
+        .map(|chain| {
+            let pieces: Vec<Value> = chain
+                .pieces
+                .iter()
+                .map(|piece| {
+                    let ends = piece.ends.map(|end| match end {
+                        EdgeEnd::Vertex(v) => {
+                            let at = diagram.vertex(v).map_or(Point::new(f64::NAN, f64::NAN), |v| v.position);
+                            json!({"vertex": v.index(), "point": point(at)})
+                        }
+                        EdgeEnd::Infinite { direction } => json!({"direction": point(direction)}),
+                    });
+                    let mut piece_json = json!({
+                        "edge": piece.edge.index(),
+                        "reversed": piece.reversed,
+                        "ends": ends,
+                        "clearance": [number(piece.clearance[0]), number(piece.clearance[1])],
+                    });
+                    let fields = piece_json.as_object_mut().expect("an object");
+                    match diagram.edge_shape(piece.edge).unwrap_or(EdgeShape::Line) {
+                        EdgeShape::Parabola { focus, directrix: [a, b] } => {
+                            fields.insert("kind".into(), json!("parabola"));
+                            fields.insert("focus".into(), point(focus));
+                            fields.insert("directrix".into(), json!([point(a), point(b)]));
+                        }
+                        EdgeShape::Line => {
+                            fields.insert("kind".into(), json!("line"));
+                        }
+                        // `EdgeShape` may grow (curved sites); no such edge exists yet.
+                        _ => {
+                            fields.insert("kind".into(), json!("other"));
+                        }
+                    }
+                    piece_json
+                })
+                .collect();
+            json!({"closed": chain.closed, "pieces": pieces})
+        })
+        .collect();
+    pretty(&json!({"domain": diagram.has_domain(), "chains": chains}))
 }
 
-/// A JSON number, `null` when not finite (JSON has no infinity).
-pub fn number(v: f64) -> String {
+/// The document, indented, with a final newline.
+pub fn pretty(value: &Value) -> String {
+    let mut text = serde_json::to_string_pretty(value).expect("a Value always serialises");
+    text.push('\n');
+    text
+}
+
+/// A JSON number, `null` when not finite (JSON has no infinity): what
+/// `serde_json` makes of a non-finite `f64`, said here so that the
+/// writers do not depend on it silently.
+pub fn number(v: f64) -> Value {
     if v.is_finite() {
-        v.to_string()
+        json!(v)
     } else {
-        "null".into()
+        Value::Null
     }
 }
 
 /// A JSON point `[x, y]` (see [`number`]).
-pub fn point(p: Point) -> String {
-    format!("[{}, {}]", number(p.x), number(p.y))
+pub fn point(p: Point) -> Value {
+    json!([number(p.x), number(p.y)])
 }
 
 #[cfg(test)]
@@ -142,9 +158,15 @@ mod tests {
         b.add_points([[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]]).unwrap();
         let d = b.build().unwrap();
         assert_eq!(wkt(&d, &d.medial_axis(), 1e-3), "MULTILINESTRING Z EMPTY\n");
-        let json = json(&d, &d.medial_axis());
-        assert_eq!(json.matches("\"direction\"").count(), 3, "{json}");
-        assert_eq!(json.matches("null").count(), 3, "{json}");
+        let json: Value = serde_json::from_str(&json(&d, &d.medial_axis())).unwrap();
+        let pieces: Vec<&Value> = json["chains"].as_array().unwrap().iter().map(|c| &c["pieces"][0]).collect();
+        assert_eq!(pieces.len(), 3, "{json}");
+        for piece in pieces {
+            // one end a vertex, the other at infinity, where the clearance is null
+            let directions = piece["ends"].as_array().unwrap().iter().filter(|e| e.get("direction").is_some()).count();
+            assert_eq!(directions, 1, "{piece}");
+            assert_eq!(piece["clearance"].as_array().unwrap().iter().filter(|c| c.is_null()).count(), 1, "{piece}");
+        }
     }
 
     #[test]
@@ -155,8 +177,19 @@ mod tests {
         b.add_segment([[0.0, 0.0], [4.0, 0.0]]).unwrap();
         let d = b.build().unwrap();
         let text = json(&d, &d.medial_axis());
-        assert!(text.starts_with("{\"domain\": false, \"chains\": [\n") && text.ends_with("]}\n"), "{text}");
-        assert!(text.contains("\"kind\": \"parabola\", \"focus\": [2, 2], \"directrix\": [[0, 0], [4, 0]]"), "{text}");
-        assert!(!text.contains("NaN") && !text.contains("inf"), "{text}");
+        assert!(text.ends_with("}\n") && !text.contains("NaN") && !text.contains("inf"), "{text}");
+        let value: Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(value["domain"], json!(false));
+        let parabolas: Vec<&Value> = value["chains"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .flat_map(|c| c["pieces"].as_array().unwrap())
+            .filter(|p| p["kind"] == "parabola")
+            .collect();
+        assert!(!parabolas.is_empty(), "{text}");
+        for p in parabolas {
+            assert_eq!((&p["focus"], &p["directrix"]), (&json!([2.0, 2.0]), &json!([[0.0, 0.0], [4.0, 0.0]])), "{p}");
+        }
     }
 }
