@@ -48,7 +48,14 @@ const RAMP: [[f64; 3]; 2] = [[0.0, 158.0, 158.0], [200.0, 0.0, 125.0]];
 /// Stroke width of the medial axis, in pixels.
 const AXIS_WIDTH: f64 = 3.5;
 const CIRCLE_COLOUR: &str = "#444444";
-const OFFSET_COLOUR: &str = "#2f9e44";
+/// One colour per offset distance, in the order given (repeating after
+/// eight): distinct hues that stand apart from the axis ramp and the shade.
+const OFFSET_COLOURS: [&str; 8] = ["#2f9e44", "#e8590c", "#1971c2", "#ae3ec9", "#f08c00", "#0c8599", "#c2255c", "#5c940d"];
+/// The domain's outline and the obstacles when the diagram is not drawn.
+const OUTLINE_COLOUR: &str = "#495057";
+/// Steps of the clearance ramp: consecutive stretches of one step share a
+/// polyline, which keeps a large axis to a few elements per chain.
+const RAMP_STEPS: f64 = 32.0;
 /// Stroke width of the offset loops, in pixels.
 const OFFSET_WIDTH: f64 = 1.8;
 
@@ -60,6 +67,43 @@ pub struct Domain<'a> {
     pub axis: &'a MedialAxis,
     /// Chord tolerance of its samples, in input units.
     pub tolerance: f64,
+    /// The linestrings and points of the input (obstacles), drawn when the
+    /// diagram is not.
+    pub lines: &'a [Vec<[f64; 2]>],
+    pub points: &'a [[f64; 2]],
+}
+
+/// What the picture explains itself with. `Look::default()` is the bare
+/// picture (the tests' frame); the program always gives a title.
+#[derive(Clone, Debug, Default)]
+pub struct Look {
+    /// With a title: a band below the picture with the title, the legend
+    /// and a scale bar.
+    pub title: Option<String>,
+    /// The name of the input's unit, for the scale bar (`None`: "units").
+    pub units: Option<String>,
+    /// Draw the Voronoi diagram (edges, vertices, sites) also with a
+    /// domain; without one it is always drawn, being all there is.
+    pub diagram: bool,
+}
+
+/// The exact power of two `2^-e` with `2^e <= max_abs < 2^(e+1)`, `e`
+/// clamped to the normal exponents so that the factor itself is finite
+/// (subnormal inputs then land a little below 1); 1 for zero or a value
+/// that is not finite. Multiplying by it is exact, so the picture's
+/// geometry is the input's, only nearer 1.
+fn to_unit(max_abs: f64) -> f64 {
+    if max_abs == 0.0 || !max_abs.is_finite() {
+        return 1.0;
+    }
+    // The biased exponent field; a subnormal has 0 there and its leading
+    // bit among the 52 fraction bits.
+    let bits = max_abs.abs().to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    let e = if biased == 0 { 63 - bits.leading_zeros() as i32 - 1074 } else { biased - 1023 };
+    let e = e.clamp(-1022, 1022);
+    // 2^-e built from its bits: a normal number for every clamped e.
+    f64::from_bits(((1023 - e) as u64) << 52)
 }
 
 /// Maps input coordinates to normalised ones and those to pixels.
@@ -71,12 +115,22 @@ struct Frame {
     high: Point,
     /// Pixels per normalised unit.
     px: f64,
+    /// The longer side in pixels.
+    size_px: f64,
+    /// Factor of every stroke width and dot radius: below 1 where the
+    /// sites are so dense that full-width strokes would cover each other.
+    stroke: f64,
 }
 
 impl Frame {
     fn new(sites: &[Point]) -> Frame {
+        Frame::sized(sites, SIZE_PX)
+    }
+
+    /// A frame whose longer side is `size_px` pixels.
+    fn sized(sites: &[Point], size_px: f64) -> Frame {
         let max_abs = sites.iter().fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-        let to_unit = segvoronoi::geometry::scale::Scale::to_unit(max_abs).to_internal;
+        let to_unit = to_unit(max_abs);
         let unit: Vec<Point> = sites.iter().map(|&p| Point::new(p.x * to_unit, p.y * to_unit)).collect();
         let (mut low, mut high) = (Point::new(-1.0, -1.0), Point::new(1.0, 1.0));
         if let Some(&first) = unit.first() {
@@ -98,7 +152,9 @@ impl Frame {
             to_unit,
             low: Point::new(centre.x - hx, centre.y - hy),
             high: Point::new(centre.x + hx, centre.y + hy),
-            px: SIZE_PX / (2.0 * hx.max(hy)),
+            px: size_px / (2.0 * hx.max(hy)),
+            size_px,
+            stroke: 1.0,
         }
     }
 
@@ -222,7 +278,8 @@ fn site_middle(site: Site) -> Point {
 
 /// The SVG document for a diagram, with its domain when there is one and
 /// the offset loops of `offsets`.
-pub fn render(diagram: &Diagram, domain: Option<&Domain>, offsets: &[Offset]) -> String {
+pub fn render(diagram: &Diagram, domain: Option<&Domain>, offsets: &[Offset], look: &Look) -> String {
+    let show_diagram = look.diagram || domain.is_none();
     // The picture frames every point site; segment endpoints are point sites.
     let points: Vec<Point> = diagram.site_ids().filter_map(|s| diagram.site(s)?.as_point()).collect();
     let segments: Vec<(Point, Point)> = diagram
@@ -232,8 +289,20 @@ pub fn render(diagram: &Diagram, domain: Option<&Domain>, offsets: &[Offset]) ->
             _ => None,
         })
         .collect();
-    let frame = Frame::new(&grown_box(&points, offsets));
-    let (width, height) = (frame.width(), frame.height());
+    let mut frame = Frame::new(&grown_box(&points, offsets));
+    if look.title.is_some() {
+        // Sized by what it shows: about 16 pixels between neighbouring
+        // sites where that fits in 4000 pixels, at least 800; the strokes
+        // thinner where even that is too dense. (The bare picture of the
+        // tests keeps 800 pixels and full strokes.)
+        let spacing = |size: f64| size / (points.len().max(1) as f64).sqrt();
+        let size = (16.0 * SIZE_PX / spacing(SIZE_PX)).clamp(SIZE_PX, 5.0 * SIZE_PX);
+        frame = Frame::sized(&grown_box(&points, offsets), size);
+        frame.stroke = (spacing(size) / 16.0).clamp(0.25, 1.0);
+    }
+    let (width, picture_height) = (frame.width(), frame.height());
+    let band = look.title.as_ref().map(|title| Band::new(title, &frame, diagram, domain, offsets, show_diagram, look));
+    let height = picture_height + band.as_ref().map_or(0.0, |b| b.height);
     let mut out = String::new();
     let _ = writeln!(
         out,
@@ -248,13 +317,46 @@ pub fn render(diagram: &Diagram, domain: Option<&Domain>, offsets: &[Offset]) ->
         diagram.edge_count()
     );
     let _ = writeln!(out, r#"<rect width="100%" height="100%" fill="white"/>"#);
-    if let Some(domain) = domain {
-        write_domain(&mut out, &frame, domain.rings);
+    if let Some(title) = &look.title {
+        let _ = writeln!(out, "<title>{}</title>", escape(title));
     }
+    if domain.is_some() {
+        // The clearance ramp as a gradient, for the legend's swatch.
+        let _ = writeln!(
+            out,
+            r#"<defs><linearGradient id="clearance-ramp"><stop offset="0" stop-color="{}"/><stop offset="1" stop-color="{}"/></linearGradient></defs>"#,
+            ramp(0.0),
+            ramp(1.0)
+        );
+    }
+    if let Some(domain) = domain {
+        write_domain(&mut out, &frame, domain.rings, !show_diagram);
+    }
+    if show_diagram {
+        write_diagram(&mut out, &frame, diagram);
+    } else if let Some(domain) = domain {
+        write_obstacles(&mut out, &frame, domain);
+    }
+    if let Some(domain) = domain {
+        write_axis(&mut out, &frame, diagram, domain);
+    }
+    write_offsets(&mut out, &frame, offsets);
+    if show_diagram {
+        write_sites(&mut out, &frame, &points, &segments);
+    }
+    if let Some(band) = band {
+        band.write(&mut out, picture_height, width);
+    }
+    out.push_str("</svg>\n");
+    out
+}
 
+/// The Voronoi edges: lines and rays clipped to the picture, parabolic arcs
+/// as quadratic Béziers; then the vertices in the picture.
+fn write_diagram(out: &mut String, frame: &Frame, diagram: &Diagram) {
     let _ = writeln!(out, r#"<g id="edges" stroke="{EDGE_COLOUR}" stroke-width="1.2" stroke-linecap="round" fill="none">"#);
     for edge in diagram.edges() {
-        match visible_piece(diagram, &frame, &edge) {
+        match visible_piece(diagram, frame, &edge) {
             Some(Piece::Line(p, q)) => {
                 if let (Some((x1, y1)), Some((x2, y2))) = (frame.pixel(p), frame.pixel(q)) {
                     let _ = writeln!(out, r#"<line x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}"/>"#);
@@ -269,23 +371,24 @@ pub fn render(diagram: &Diagram, domain: Option<&Domain>, offsets: &[Offset]) ->
         }
     }
     let _ = writeln!(out, "</g>");
-
-    if let Some(domain) = domain {
-        write_axis(&mut out, &frame, diagram, domain);
-    }
-    write_offsets(&mut out, &frame, offsets);
-
     let _ = writeln!(out, r#"<g id="vertices" fill="{VERTEX_COLOUR}">"#);
     for v in diagram.vertices() {
         let p = frame.unit(v.position);
         if frame.contains(p) {
-            write_dot(&mut out, &frame, p, VERTEX_RADIUS);
+            write_dot(out, frame, p, VERTEX_RADIUS * frame.stroke);
         }
     }
     let _ = writeln!(out, "</g>");
+}
 
-    let _ = writeln!(out, r#"<g id="segments" stroke="{SITE_COLOUR}" stroke-width="{SEGMENT_WIDTH}" stroke-linecap="round">"#);
-    for &(a, b) in &segments {
+/// The sites: segments as thick lines, points as dots.
+fn write_sites(out: &mut String, frame: &Frame, points: &[Point], segments: &[(Point, Point)]) {
+    let _ = writeln!(
+        out,
+        r#"<g id="segments" stroke="{SITE_COLOUR}" stroke-width="{}" stroke-linecap="round">"#,
+        SEGMENT_WIDTH * frame.stroke
+    );
+    for &(a, b) in segments {
         if let (Some((x1, y1)), Some((x2, y2))) = (frame.pixel(frame.unit(a)), frame.pixel(frame.unit(b))) {
             let _ = writeln!(out, r#"<line x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}"/>"#);
         }
@@ -293,16 +396,230 @@ pub fn render(diagram: &Diagram, domain: Option<&Domain>, offsets: &[Offset]) ->
     let _ = writeln!(out, "</g>");
 
     let _ = writeln!(out, r#"<g id="sites" fill="{SITE_COLOUR}">"#);
-    for &p in &points {
-        write_dot(&mut out, &frame, frame.unit(p), SITE_RADIUS);
+    for &p in points {
+        write_dot(out, frame, frame.unit(p), SITE_RADIUS * frame.stroke);
     }
     let _ = writeln!(out, "</g>");
-    out.push_str("</svg>\n");
-    out
+}
+
+/// Without the diagram: the input's linestrings as one thin path and its
+/// points as dots (the rings are the domain's outline).
+fn write_obstacles(out: &mut String, frame: &Frame, domain: &Domain) {
+    let mut d = String::new();
+    for line in domain.lines {
+        d.push_str(&polyline_data(frame, line));
+    }
+    let _ = writeln!(
+        out,
+        r#"<path id="obstacles" fill="none" stroke="{OUTLINE_COLOUR}" stroke-width="1.5" stroke-linejoin="round" d="{}"/>"#,
+        d.trim_end()
+    );
+    let _ = writeln!(out, r#"<g id="points" fill="{OUTLINE_COLOUR}">"#);
+    for &[x, y] in domain.points {
+        write_dot(out, frame, frame.unit(Point::new(x, y)), SITE_RADIUS * frame.stroke);
+    }
+    let _ = writeln!(out, "</g>");
+}
+
+/// `M x y L x y ...` of input points in pixels, not finite ones left out.
+fn polyline_data(frame: &Frame, line: &[[f64; 2]]) -> String {
+    let mut d = String::new();
+    let pixels = line.iter().filter_map(|&[x, y]| frame.pixel(frame.unit(Point::new(x, y))));
+    for (k, (x, y)) in pixels.enumerate() {
+        let _ = write!(d, "{}{x:.2} {y:.2} ", if k == 0 { "M " } else { "L " });
+    }
+    d
+}
+
+/// The band below the picture: the title on its first row with the scale
+/// bar at the right, then the legend, its entries wrapped into rows as wide
+/// as the picture.
+struct Band {
+    title: String,
+    /// Entries: a swatch (SVG drawn in a 24 × 12 box at the origin) and a
+    /// label.
+    entries: Vec<(String, String)>,
+    /// The scale bar: its length in pixels and its label.
+    scale: Option<(f64, String)>,
+    /// Rows of entries: the index of each row's first entry.
+    rows: Vec<usize>,
+    /// In the picture's pixels: the band is laid out for an 800-pixel
+    /// picture and drawn `zoom` times as large, so that a larger picture
+    /// (a large input) shows it at the same size when fitted to a screen.
+    height: f64,
+    zoom: f64,
+}
+
+/// Pixels per character of the 12 px labels, a safe estimate for
+/// sans-serif text (no font metrics in a plain SVG writer).
+const CHAR_PX: f64 = 6.6;
+const ROW_PX: f64 = 20.0;
+const TITLE_PX: f64 = 30.0;
+
+impl Band {
+    fn new(
+        title: &str,
+        frame: &Frame,
+        diagram: &Diagram,
+        domain: Option<&Domain>,
+        offsets: &[Offset],
+        show_diagram: bool,
+        look: &Look,
+    ) -> Band {
+        let mut entries = Vec::new();
+        if let Some(domain) = domain {
+            entries.push((
+                format!(r#"<rect x="1" y="1" width="22" height="10" fill="{DOMAIN_FILL}" stroke="{OUTLINE_COLOUR}" stroke-width="0.8"/>"#),
+                "domain".to_string(),
+            ));
+            let top = domain_top(diagram, domain);
+            entries.push((
+                r#"<rect x="0" y="3" width="24" height="6" fill="url(#clearance-ramp)"/>"#.to_string(),
+                format!("medial axis, clearance 0 to {}", short(top)),
+            ));
+            if let Some((_, r)) = diagram.max_inscribed_circle() {
+                entries.push((
+                    format!(r#"<circle cx="12" cy="6" r="5" fill="none" stroke="{CIRCLE_COLOUR}" stroke-width="1.5" stroke-dasharray="3 2"/>"#),
+                    format!("largest inscribed circle, r = {}", short(r)),
+                ));
+            }
+        }
+        for (k, offset) in offsets.iter().enumerate() {
+            let colour = OFFSET_COLOURS[k % OFFSET_COLOURS.len()];
+            entries.push((
+                format!(r#"<line x1="0" y1="6" x2="24" y2="6" stroke="{colour}" stroke-width="{OFFSET_WIDTH}"/>"#),
+                format!("offset {}", short(offset.distance)),
+            ));
+        }
+        if show_diagram {
+            entries.push((
+                format!(r#"<line x1="0" y1="6" x2="24" y2="6" stroke="{EDGE_COLOUR}" stroke-width="1.2"/>"#),
+                "Voronoi edges".to_string(),
+            ));
+            entries.push((format!(r#"<circle cx="12" cy="6" r="{SITE_RADIUS}" fill="{SITE_COLOUR}"/>"#), "sites".to_string()));
+        }
+        // Rows: an entry is 24 px of swatch, 6 of gap, its label, 16 after.
+        let zoom = frame.size_px / SIZE_PX;
+        let width = frame.width() / zoom;
+        let mut rows = vec![0];
+        let mut x = 10.0;
+        for (k, (_, label)) in entries.iter().enumerate() {
+            let w = 30.0 + CHAR_PX * label.chars().count() as f64 + 16.0;
+            if x + w > width && k > *rows.last().unwrap() {
+                rows.push(k);
+                x = 10.0;
+            }
+            x += w;
+        }
+        let units = look.units.clone().unwrap_or_else(|| "units".into());
+        let scale = scale_bar(frame, width / 4.0 * zoom).map(|(px, length)| (px / zoom, format!("{} {units}", short(length))));
+        let rows_used = if entries.is_empty() { 0 } else { rows.len() };
+        Band { title: title.to_string(), entries, scale, rows, height: (TITLE_PX + ROW_PX * rows_used as f64 + 8.0) * zoom, zoom }
+    }
+
+    /// Draws the band from `top` on, `width` pixels wide.
+    fn write(&self, out: &mut String, top: f64, width: f64) {
+        let _ = writeln!(
+            out,
+            r##"<g id="legend" font-family="sans-serif" font-size="12" fill="#212529" transform="translate(0 {top}) scale({})">"##,
+            self.zoom
+        );
+        // From here on the band's own coordinates.
+        let (y0, width) = (0.0, width / self.zoom);
+        let _ = writeln!(out, r##"<rect x="0" y="{y0}" width="{width}" height="{}" fill="#f8f9fa"/>"##, self.height / self.zoom);
+        let _ = writeln!(
+            out,
+            r#"<text x="10" y="{:.1}" font-size="15" font-weight="bold">{}</text>"#,
+            y0 + 21.0,
+            escape(&self.title)
+        );
+        if let Some((px, label)) = &self.scale {
+            // Right-aligned on the title row: the bar, ticks at both ends,
+            // the length above.
+            let (x1, x2, y) = (width - 10.0 - px, width - 10.0, y0 + 22.0);
+            let _ = writeln!(
+                out,
+                r##"<g id="scale-bar" stroke="#212529" stroke-width="1.5"><line x1="{x1:.2}" y1="{y:.1}" x2="{x2:.2}" y2="{y:.1}"/><line x1="{x1:.2}" y1="{:.1}" x2="{x1:.2}" y2="{y:.1}"/><line x1="{x2:.2}" y1="{:.1}" x2="{x2:.2}" y2="{y:.1}"/></g>"##,
+                y - 5.0,
+                y - 5.0
+            );
+            let _ = writeln!(
+                out,
+                r#"<text x="{:.2}" y="{:.1}" text-anchor="middle">{}</text>"#,
+                (x1 + x2) / 2.0,
+                y - 7.0,
+                escape(label)
+            );
+        }
+        for (r, &first) in self.rows.iter().enumerate() {
+            let end = self.rows.get(r + 1).copied().unwrap_or(self.entries.len());
+            let y = y0 + TITLE_PX + ROW_PX * r as f64;
+            let mut x = 10.0;
+            for (swatch, label) in &self.entries[first..end] {
+                let _ = writeln!(out, r#"<g transform="translate({x:.1} {y:.1})">{swatch}</g>"#);
+                let _ = writeln!(out, r#"<text x="{:.1}" y="{:.1}">{}</text>"#, x + 30.0, y + 10.5, escape(label));
+                x += 30.0 + CHAR_PX * label.chars().count() as f64 + 16.0;
+            }
+        }
+        let _ = writeln!(out, "</g>");
+    }
+}
+
+/// A round length (1, 2 or 5 times a power of ten, in input units) whose
+/// bar is at most `max_px` long, and that bar's pixels.
+fn scale_bar(frame: &Frame, max_px: f64) -> Option<(f64, f64)> {
+    let px_per_unit = frame.to_unit * frame.px;
+    let most = max_px / px_per_unit;
+    if !(most.is_finite() && most > 0.0) {
+        return None;
+    }
+    let power = 10f64.powf(most.log10().floor());
+    let length = [5.0, 2.0, 1.0].into_iter().map(|m| m * power).find(|&l| l <= most)?;
+    let px = length * px_per_unit;
+    (px.is_finite() && px > 0.0).then_some((px, length))
+}
+
+/// A number for a label: four significant digits, no trailing zeros,
+/// scientific notation outside 1e-3 .. 1e6.
+fn short(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let magnitude = v.abs().log10().floor();
+    if !(-3.0..6.0).contains(&magnitude) {
+        return format!("{v:.3e}");
+    }
+    let decimals = (3.0 - magnitude).max(0.0) as usize;
+    let text = format!("{v:.decimals$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
+}
+
+/// Text for an SVG text node.
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
+}
+
+/// The top of the clearance ramp: the largest clearance of the drawn axis,
+/// and at least the largest inscribed circle's.
+fn domain_top(diagram: &Diagram, domain: &Domain) -> f64 {
+    let circle = diagram.max_inscribed_circle();
+    domain
+        .axis
+        .chains
+        .iter()
+        .filter_map(|c| medial_output::sample(diagram, c, domain.tolerance))
+        .flatten()
+        .fold(circle.map_or(0.0, |(_, r)| r), |m, p| m.max(p[2]))
 }
 
 /// The domain's inside: one path of every ring, filled even-odd.
-fn write_domain(out: &mut String, frame: &Frame, rings: &[Vec<[f64; 2]>]) {
+/// With `outline` (the diagram, whose segment sites would show the rings,
+/// is not drawn) also its boundary, thin.
+fn write_domain(out: &mut String, frame: &Frame, rings: &[Vec<[f64; 2]>], outline: bool) {
     let mut d = String::new();
     for ring in rings {
         let pixels: Vec<(f64, f64)> = ring.iter().filter_map(|&[x, y]| frame.pixel(frame.unit(Point::new(x, y)))).collect();
@@ -313,7 +630,12 @@ fn write_domain(out: &mut String, frame: &Frame, rings: &[Vec<[f64; 2]>]) {
             d.push_str("Z ");
         }
     }
-    let _ = writeln!(out, r#"<path id="domain" fill="{DOMAIN_FILL}" fill-rule="evenodd" stroke="none" d="{}"/>"#, d.trim_end());
+    let stroke = if outline {
+        format!(r#"stroke="{OUTLINE_COLOUR}" stroke-width="0.8" stroke-linejoin="round""#)
+    } else {
+        r#"stroke="none""#.into()
+    };
+    let _ = writeln!(out, r#"<path id="domain" fill="{DOMAIN_FILL}" fill-rule="evenodd" {stroke} d="{}"/>"#, d.trim_end());
 }
 
 /// The medial axis, sampled as `--medial-axis` samples it (rays cut), each
@@ -328,15 +650,33 @@ fn write_axis(out: &mut String, frame: &Frame, diagram: &Diagram, domain: &Domai
     let top = chains.iter().flatten().fold(circle.map_or(0.0, |(_, r)| r), |m, p| m.max(p[2]));
     let _ = writeln!(
         out,
-        r#"<g id="medial-axis" stroke-width="{AXIS_WIDTH}" stroke-linecap="round" fill="none" data-max-clearance="{top}">"#
+        r#"<g id="medial-axis" stroke-width="{}" stroke-linecap="round" stroke-linejoin="round" fill="none" data-max-clearance="{top}">"#,
+        AXIS_WIDTH * frame.stroke
     );
     for points in &chains {
-        for w in points.windows(2) {
-            let (p, q) = (frame.unit(Point::new(w[0][0], w[0][1])), frame.unit(Point::new(w[1][0], w[1][1])));
-            if let (Some((x1, y1)), Some((x2, y2))) = (frame.pixel(p), frame.pixel(q)) {
-                let colour = ramp(if top > 0.0 { (w[0][2] + w[1][2]) / 2.0 / top } else { 0.0 });
-                let _ = writeln!(out, r#"<line x1="{x1:.2}" y1="{y1:.2}" x2="{x2:.2}" y2="{y2:.2}" stroke="{colour}"/>"#);
+        // Runs of stretches whose clearance falls in one ramp step, each a
+        // polyline of that step's colour (the runs share their end points).
+        let step = |w: &[[f64; 3]]| {
+            let t = if top > 0.0 { (w[0][2] + w[1][2]) / 2.0 / top } else { 0.0 };
+            (t.clamp(0.0, 1.0) * RAMP_STEPS).floor().min(RAMP_STEPS - 1.0)
+        };
+        let mut k = 0;
+        while k + 1 < points.len() {
+            let level = step(&points[k..k + 2]);
+            let mut end = k + 1;
+            while end + 1 < points.len() && step(&points[end..end + 2]) == level {
+                end += 1;
             }
+            let run: Vec<String> = points[k..=end]
+                .iter()
+                .filter_map(|p| frame.pixel(frame.unit(Point::new(p[0], p[1]))))
+                .map(|(x, y)| format!("{x:.2},{y:.2}"))
+                .collect();
+            if run.len() >= 2 {
+                let colour = ramp((level + 0.5) / RAMP_STEPS);
+                let _ = writeln!(out, r#"<polyline stroke="{colour}" points="{}"/>"#, run.join(" "));
+            }
+            k = end;
         }
     }
     let _ = writeln!(out, "</g>");
@@ -375,14 +715,13 @@ fn write_offsets(out: &mut String, frame: &Frame, offsets: &[Offset]) {
     if offsets.is_empty() {
         return;
     }
-    let _ = writeln!(
-        out,
-        r#"<g id="offsets" stroke="{OFFSET_COLOUR}" stroke-width="{OFFSET_WIDTH}" stroke-linejoin="round" fill="none">"#
-    );
-    for offset in offsets {
+    let _ =
+        writeln!(out, r#"<g id="offsets" stroke-width="{}" stroke-linejoin="round" fill="none">"#, OFFSET_WIDTH * frame.stroke);
+    for (k, offset) in offsets.iter().enumerate() {
+        let colour = OFFSET_COLOURS[k % OFFSET_COLOURS.len()];
         for l in &offset.loops {
             if let Some(d) = loop_path(frame, l) {
-                let _ = writeln!(out, r#"<path data-distance="{}" d="{d}"/>"#, offset.distance);
+                let _ = writeln!(out, r#"<path stroke="{colour}" data-distance="{}" d="{d}"/>"#, offset.distance);
             }
         }
     }
@@ -521,7 +860,7 @@ mod tests {
         // vertical rays down from (0,2) and (4,2). A direction made up from
         // the sites' middles would tilt them.
         let d = with_segments(&[[2.0, 2.0]], &[[[0.0, 0.0], [4.0, 0.0]]]);
-        let svg = render(&d, None, &[]);
+        let svg = render(&d, None, &[], &Look::default());
         check_numbers(&svg);
         let height: f64 = svg.split('"').nth(5).unwrap().parse().unwrap();
         let vertical: Vec<[f64; 4]> = lines(&svg).into_iter().filter(|l| (l[0] - l[2]).abs() < 1e-9).collect();
@@ -538,7 +877,7 @@ mod tests {
     #[test]
     fn parabolic_arcs_are_bezier_paths_from_vertex_to_vertex() {
         let d = with_segments(&[[2.0, 2.0], [6.0, 3.0]], &[[[0.0, 0.0], [4.0, 0.0]], [[1.0, 4.0], [3.0, 5.5]]]);
-        let svg = render(&d, None, &[]);
+        let svg = render(&d, None, &[], &Look::default());
         check_numbers(&svg);
         let arcs: Vec<[Point; 3]> = d.edges().filter_map(|e| d.edge_bezier(e.id)).collect();
         assert!(arcs.len() >= 2);
@@ -560,7 +899,7 @@ mod tests {
 
     #[test]
     fn rays_reach_the_border_and_segments_stay_inside() {
-        let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0]]), None, &[]);
+        let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [1.0, 1.0]]), None, &[], &Look::default());
         check_numbers(&svg);
         let (w, h) = (SIZE_PX, SIZE_PX);
         let on_border = |x: f64, y: f64| x.abs() < 0.01 || y.abs() < 0.01 || (x - w).abs() < 0.01 || (y - h).abs() < 0.01;
@@ -592,7 +931,7 @@ mod tests {
         ];
         for points in cases {
             let d = diagram(points);
-            let svg = render(&d, None, &[]);
+            let svg = render(&d, None, &[], &Look::default());
             assert!(svg.starts_with("<svg"), "{svg}");
             check_numbers(&svg);
             assert_eq!(svg.matches("<circle").count(), d.site_count() + d.vertex_count(), "{points:?}: {svg}");
@@ -608,11 +947,16 @@ mod tests {
         b.add_polygon(&rings).unwrap();
         let d = b.build().unwrap();
         let axis = d.medial_axis();
-        let svg = render(&d, Some(&Domain { rings: &rings, axis: &axis, tolerance: 1e-3 }), &[]);
+        let svg = render(
+            &d,
+            Some(&Domain { rings: &rings, axis: &axis, tolerance: 1e-3, lines: &[], points: &[] }),
+            &[],
+            &Look::default(),
+        );
         check_numbers(&svg);
         let path = svg.lines().find(|l| l.starts_with(r#"<path id="domain""#)).expect(&svg);
         assert!(path.contains(r#"fill-rule="evenodd""#) && path.matches('M').count() == 2 && path.matches('Z').count() == 2);
-        let drawn = group(&svg, "medial-axis").matches("<line").count();
+        let drawn = group(&svg, "medial-axis").matches(',').count();
         assert!(drawn > axis.chains.len(), "{drawn} stretches");
         // the largest disk touches the hole or the outer ring: radius below 1
         let circle = svg.lines().find(|l| l.starts_with(r#"<circle id="inscribed-circle""#)).expect(&svg);
@@ -712,7 +1056,12 @@ mod tests {
         let d = b.build().unwrap();
         let offsets = d.offsets(&[1.0, -0.5, -1.0]).unwrap();
         let axis = d.medial_axis();
-        let svg = render(&d, Some(&Domain { rings: &rings, axis: &axis, tolerance: 1e-3 }), &offsets);
+        let svg = render(
+            &d,
+            Some(&Domain { rings: &rings, axis: &axis, tolerance: 1e-3, lines: &[], points: &[] }),
+            &offsets,
+            &Look::default(),
+        );
         check_numbers(&svg);
         let frame = Frame::new(&grown_box(&d.site_ids().filter_map(|s| d.site(s)?.as_point()).collect::<Vec<_>>(), &offsets));
         let loops: Vec<&OffsetLoop> = offsets.iter().flat_map(|o| &o.loops).collect();
@@ -734,7 +1083,7 @@ mod tests {
                 }
             }
         }
-        assert!(!render(&d, None, &[]).contains("offsets"));
+        assert!(!render(&d, None, &[], &Look::default()).contains("offsets"));
     }
 
     #[test]
@@ -742,7 +1091,7 @@ mod tests {
         let d = diagram(&[[0.0, 0.0], [10.0, 0.0]]);
         let offsets = d.offsets(&[1.0]).unwrap();
         assert_eq!(offsets[0].loops.len(), 2);
-        let svg = render(&d, None, &offsets);
+        let svg = render(&d, None, &offsets, &Look::default());
         let frame = Frame::new(&grown_box(&[Point::new(0.0, 0.0), Point::new(10.0, 0.0)], &offsets));
         let loops: Vec<&OffsetLoop> = offsets[0].loops.iter().collect();
         assert_eq!(check_arcs(&frame, &svg, &loops), 2);
@@ -754,7 +1103,7 @@ mod tests {
     #[test]
     fn collinear_bisectors_cross_the_whole_picture() {
         // Sites on the x axis: bisectors are vertical lines, top to bottom.
-        let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [6.0, 0.0]]), None, &[]);
+        let svg = render(&diagram(&[[0.0, 0.0], [2.0, 0.0], [6.0, 0.0]]), None, &[], &Look::default());
         let ls = lines(&svg);
         assert_eq!(ls.len(), 2);
         let height: f64 = svg.split('"').nth(5).unwrap().parse().unwrap();
@@ -763,5 +1112,70 @@ mod tests {
             // The picture's size is rounded up to whole pixels.
             assert!((l[1] - l[3]).abs() >= height - 1.0, "not full height: {l:?} of {height}");
         }
+    }
+
+    #[test]
+    fn the_program_s_picture_explains_itself() {
+        let rings = vec![vec![[0.0, 0.0], [10.0, 0.0], [10.0, 4.0], [0.0, 4.0]]];
+        let mut b = Builder::new();
+        b.add_polygon(&rings).unwrap();
+        let d = b.build().unwrap();
+        let axis = d.medial_axis();
+        let offsets = d.offsets(&[-0.5, -1.0, 1.0]).unwrap();
+        let domain = Domain { rings: &rings, axis: &axis, tolerance: 1e-3, lines: &[], points: &[[5.0, 2.0]] };
+        let look = Look { title: Some("box <1>".into()), units: Some("m".into()), diagram: false };
+        let svg = render(&d, Some(&domain), &offsets, &look);
+        check_numbers(&svg);
+        assert!(svg.contains("<title>box &lt;1&gt;</title>") && svg.contains(r#"id="legend""#), "{svg}");
+        // The scale bar: a round length, at most a quarter of the picture.
+        assert!(svg.contains(">2 m</text>"), "{svg}");
+        for label in ["domain", "medial axis, clearance 0 to 2", "largest inscribed circle, r = 2", "offset -0.5", "offset 1"] {
+            assert!(svg.contains(&format!(">{label}</text>")), "no {label}: {svg}");
+        }
+        // The diagram is off by default with a domain, on when asked.
+        assert!(!svg.contains(r#"id="edges""#) && !svg.contains("Voronoi edges") && svg.contains(r#"id="points""#), "{svg}");
+        let with = render(&d, Some(&domain), &offsets, &Look { diagram: true, ..look.clone() });
+        assert!(with.contains(r#"id="edges""#) && with.contains(">Voronoi edges</text>"));
+        // Each distance its own colour.
+        let colours: std::collections::BTreeSet<&str> =
+            group(&svg, "offsets").lines().filter_map(|l| l.split(r#"stroke=""#).nth(1)?.split('"').next()).collect();
+        assert_eq!(colours.len(), 3, "{svg}");
+        // The band lies below the picture: the document is taller.
+        let bare = render(&d, Some(&domain), &offsets, &Look::default());
+        let height = |svg: &str| svg.split('"').nth(5).unwrap().parse::<f64>().unwrap();
+        assert!(height(&svg) > height(&bare) + 40.0);
+    }
+
+    #[test]
+    fn labels_and_scale_lengths_are_round() {
+        assert_eq!(
+            (short(68.8234), short(0.5), short(-15.0), short(1234567.0)),
+            ("68.82".into(), "0.5".into(), "-15".into(), "1.235e6".into())
+        );
+        let frame = Frame::new(&[Point::new(0.0, 0.0), Point::new(1000.0, 0.0)]);
+        let (px, length) = scale_bar(&frame, 200.0).unwrap();
+        assert_eq!(length, 200.0);
+        assert!(px <= 200.0 && px > 100.0, "{px}");
+    }
+}
+
+#[cfg(test)]
+mod normalisation_tests {
+    use super::to_unit;
+
+    #[test]
+    fn to_unit_brings_the_largest_magnitude_into_one_to_two() {
+        for v in [1.0, 1.5, 3.0, 1e300, 1e-300, f64::MIN_POSITIVE, 0.75] {
+            let u = v * to_unit(v);
+            assert!((1.0..2.0).contains(&u), "{v}: {u}");
+            assert_eq!(to_unit(v).to_bits() & ((1 << 52) - 1), 0, "{v}: a power of two");
+        }
+        // The top exponent is clamped too (2^-1023 is subnormal): below 4.
+        assert_eq!(f64::MAX * to_unit(f64::MAX), 4.0 - 2f64.powi(-51));
+        // Subnormals: clamped, a little below 1 but not zero.
+        let tiny = f64::MIN_POSITIVE / 8.0;
+        assert_eq!(tiny * to_unit(tiny), 0.125);
+        assert_eq!(to_unit(0.0), 1.0);
+        assert_eq!(to_unit(f64::INFINITY), 1.0);
     }
 }

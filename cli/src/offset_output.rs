@@ -1,13 +1,14 @@
 //! The writers of `--offsets`: per distance, the region sampled as one WKT
-//! `MULTIPOLYGON`, or the exact loops as JSON, written by hand as
-//! `medial_output` writes the medial axis and with its number formatting
-//! (shortest round trip, no exponent, `null` when not finite).
+//! `MULTIPOLYGON`, or the exact loops as JSON through `serde_json`, as
+//! `medial_output` writes the medial axis (`null` where not finite).
 
 use std::fmt::Write;
 
 use segvoronoi::{Offset, OffsetPiece};
 
-use crate::medial_output::{number, point};
+use serde_json::{json, Value};
+
+use crate::medial_output::{number, point, pretty};
 
 /// One `MULTIPOLYGON` line per offset, in order: per outer loop (see
 /// [`Offset::polygons`]) its ring and then its holes, each sampled within
@@ -53,43 +54,45 @@ fn ring(points: &[segvoronoi::Point]) -> String {
 /// "radius": r, "counter_clockwise": bool` (a whole circle has `from` equal
 /// to `to`). The region is on the left of every loop.
 pub fn json(offsets: &[Offset]) -> String {
-    let mut out = String::from("{\"offsets\": [\n");
-    for (o, offset) in offsets.iter().enumerate() {
-        let _ = writeln!(out, "  {{\"distance\": {}, \"area\": {}, \"loops\": [", number(offset.distance), number(offset.area()));
-        for (l, lp) in offset.loops.iter().enumerate() {
-            let parent = lp.parent.map_or("null".to_string(), |p| p.to_string());
-            let _ = writeln!(
-                out,
-                "    {{\"parent\": {parent}, \"hole\": {}, \"signed_area\": {}, \"pieces\": [",
-                lp.hole,
-                number(lp.signed_area())
-            );
-            for (k, piece) in lp.pieces.iter().enumerate() {
-                let ends = format!(
-                    "\"site\": {}, \"from\": {}, \"to\": {}",
-                    piece.site().index(),
-                    point(piece.from()),
-                    point(piece.to())
-                );
-                let _ = match *piece {
-                    OffsetPiece::Line { .. } => write!(out, "      {{\"kind\": \"line\", {ends}}}"),
-                    OffsetPiece::Arc { centre, radius, counter_clockwise, .. } => write!(
-                        out,
-                        "      {{\"kind\": \"arc\", {ends}, \"centre\": {}, \"radius\": {}, \"counter_clockwise\": {counter_clockwise}}}",
-                        point(centre),
-                        number(radius)
-                    ),
-                    // `OffsetPiece` may grow (curved sites); no such piece exists yet.
-                    _ => write!(out, "      {{\"kind\": \"other\", {ends}}}"),
-                };
-                out.push_str(if k + 1 < lp.pieces.len() { ",\n" } else { "\n" });
-            }
-            out.push_str(if l + 1 < offset.loops.len() { "    ]},\n" } else { "    ]}\n" });
-        }
-        out.push_str(if o + 1 < offsets.len() { "  ]},\n" } else { "  ]}\n" });
-    }
-    out.push_str("]}\n");
-    out
+    let offsets: Vec<Value> = offsets
+        .iter()
+        .map(|offset| {
+            let loops: Vec<Value> = offset
+                .loops
+                .iter()
+                .map(|lp| {
+                    let pieces: Vec<Value> = lp
+                        .pieces
+                        .iter()
+                        .map(|piece| {
+                            let (kind, arc) = match *piece {
+                                OffsetPiece::Line { .. } => ("line", None),
+                                OffsetPiece::Arc { centre, radius, counter_clockwise, .. } => (
+                                    "arc",
+                                    Some(json!({"centre": point(centre), "radius": number(radius), "counter_clockwise": counter_clockwise})),
+                                ),
+                                // `OffsetPiece` may grow (curved sites); no such piece exists yet.
+                                _ => ("other", None),
+                            };
+                            let mut value = json!({
+                                "kind": kind,
+                                "site": piece.site().index(),
+                                "from": point(piece.from()),
+                                "to": point(piece.to()),
+                            });
+                            if let (Some(Value::Object(arc)), Some(fields)) = (arc, value.as_object_mut()) {
+                                fields.extend(arc);
+                            }
+                            value
+                        })
+                        .collect();
+                    json!({"parent": lp.parent, "hole": lp.hole, "signed_area": number(lp.signed_area()), "pieces": pieces})
+                })
+                .collect();
+            json!({"distance": number(offset.distance), "area": number(offset.area()), "loops": loops})
+        })
+        .collect();
+    pretty(&json!({ "offsets": offsets }))
 }
 
 #[cfg(test)]
@@ -212,24 +215,43 @@ mod tests {
         }
     }
 
+    /// The pieces of every loop of every offset of a JSON document.
+    fn pieces(value: &Value) -> Vec<&Value> {
+        value["offsets"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .flat_map(|o| o["loops"].as_array().unwrap())
+            .flat_map(|l| l["pieces"].as_array().unwrap())
+            .collect()
+    }
+
     #[test]
     fn json_names_pieces_and_nesting() {
         let d = rectangle();
         let text = json(&d.offsets(&[1.0, -0.5]).unwrap());
-        assert!(text.starts_with("{\"offsets\": [\n  {\"distance\": 1, \"area\": ") && text.ends_with("]}\n"), "{text}");
-        assert!(text.contains("{\"distance\": -0.5, \"area\": 3, \"loops\": ["), "{text}");
+        assert!(text.ends_with("}\n") && !text.contains("NaN") && !text.contains("inf"), "{text}");
+        let value: Value = serde_json::from_str(&text).unwrap();
+        let offsets = value["offsets"].as_array().unwrap();
+        assert_eq!((offsets[0]["distance"].as_f64(), offsets[1]["distance"].as_f64()), (Some(1.0), Some(-0.5)));
+        assert_eq!(offsets[1]["area"].as_f64(), Some(3.0));
         // grown: four lines and four quarter circles around the corners
-        assert_eq!(text.matches("\"kind\": \"line\"").count(), 4 + 4, "{text}");
-        assert_eq!(text.matches("\"kind\": \"arc\"").count(), 4, "{text}");
-        assert!(text.contains("\"centre\": [4, 2], \"radius\": 1, \"counter_clockwise\": true}"), "{text}");
-        assert_eq!(text.matches("{\"parent\": null, \"hole\": false, \"signed_area\": ").count(), 2, "{text}");
-        assert!(!text.contains("NaN") && !text.contains("inf"), "{text}");
-        assert_eq!(text.matches('{').count(), text.matches('}').count());
-        assert_eq!(text.matches('[').count(), text.matches(']').count());
+        let grown = pieces(&json!({"offsets": [offsets[0].clone()]})).into_iter().cloned().collect::<Vec<_>>();
+        assert_eq!(grown.iter().filter(|p| p["kind"] == "line").count(), 4, "{text}");
+        let arcs: Vec<&Value> = grown.iter().filter(|p| p["kind"] == "arc").collect();
+        assert_eq!(arcs.len(), 4, "{text}");
+        assert!(arcs.iter().any(|a| a["centre"] == json!([4.0, 2.0]) && a["radius"] == 1.0 && a["counter_clockwise"] == true));
+        assert_eq!(pieces(&value).iter().filter(|p| p["kind"] == "line").count(), 4 + 4, "{text}");
+        // one outer loop per distance, no parent
+        for o in offsets {
+            let loops = o["loops"].as_array().unwrap();
+            assert_eq!(loops.len(), 1);
+            assert!(loops[0]["parent"].is_null() && loops[0]["hole"] == false && loops[0]["signed_area"].as_f64().unwrap() > 0.0);
+        }
         // site ids are the diagram's
-        let sites: Vec<usize> = d.site_ids().map(|s| s.index()).collect();
-        for id in text.split("\"site\": ").skip(1).map(|t| t.split(',').next().unwrap().parse::<usize>().unwrap()) {
-            assert!(sites.contains(&id), "{id}");
+        let sites: Vec<u64> = d.site_ids().map(|s| s.index() as u64).collect();
+        for p in pieces(&value) {
+            assert!(sites.contains(&p["site"].as_u64().unwrap()), "{p}");
         }
     }
 
@@ -238,13 +260,15 @@ mod tests {
         let mut b = Builder::new();
         b.add_point([1.0, 2.0]).unwrap();
         let d = b.build().unwrap();
-        let text = json(&[d.offset(0.5).unwrap()]);
-        assert!(
-            text.contains(
-                "{\"kind\": \"arc\", \"site\": 0, \"from\": [1.5, 2], \"to\": [1.5, 2], \"centre\": [1, 2], \"radius\": 0.5, \"counter_clockwise\": true}"
-            ),
-            "{text}"
+        let value: Value = serde_json::from_str(&json(&[d.offset(0.5).unwrap()])).unwrap();
+        assert_eq!(
+            pieces(&value),
+            [
+                &json!({"kind": "arc", "site": 0, "from": [1.5, 2.0], "to": [1.5, 2.0], "centre": [1.0, 2.0], "radius": 0.5, "counter_clockwise": true})
+            ]
         );
-        assert_eq!(json(&[]), "{\"offsets\": [\n]}\n");
+        // the keys in the documented order
+        assert!(json(&[d.offset(0.5).unwrap()]).contains("\"kind\": \"arc\",\n"));
+        assert_eq!(serde_json::from_str::<Value>(&json(&[])).unwrap(), json!({"offsets": []}));
     }
 }

@@ -1,13 +1,13 @@
 //! The input: read from the demo, standard input or a file, in
-//! Boost.Polygon's text format (`segvoronoi::boost_text`) or as WKT
-//! (`wkt`), and added to a builder.
+//! Boost.Polygon's text format (`segvoronoi::boost_text`), as WKT or EWKT,
+//! or as GeoJSON (`wkt`), and added to a builder.
 
 use std::io::Read;
 
 use segvoronoi::{boost_text, Builder, Error};
 
 use crate::args::Source;
-use crate::wkt::{self, Shape, Xy};
+use crate::wkt::{self, Shape, Shapes, Xy};
 use crate::{bad_input, demo, Failure};
 
 /// Where the builder's input indices came from: lines of a Boost.Polygon
@@ -69,35 +69,57 @@ impl Origins {
     }
 }
 
-/// The input in either format.
+/// The input: Boost.Polygon's points and segments, or the shapes of a WKT,
+/// EWKT or GeoJSON text.
 pub enum Input {
     Boost(boost_text::Input),
-    Wkt(Vec<Shape>),
+    Shapes(Shapes),
+}
+
+/// The text formats, chosen by the file's extension or else its start.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    Boost,
+    Wkt,
+    GeoJson,
+}
+
+/// `.wkt`/`.ewkt` and `.geojson`/`.json` decide; any other name (and
+/// standard input) is judged by its first characters: a WKT keyword or
+/// `SRID=`, a `{`, else Boost.Polygon's numbers.
+fn kind(extension: Option<&str>, text: &str) -> Kind {
+    match extension.map(str::to_ascii_lowercase).as_deref() {
+        Some("wkt" | "ewkt") => Kind::Wkt,
+        Some("geojson" | "json") => Kind::GeoJson,
+        _ if wkt::looks_like_wkt(text) => Kind::Wkt,
+        _ if wkt::looks_like_json(text) => Kind::GeoJson,
+        _ => Kind::Boost,
+    }
 }
 
 /// The chosen input and a name for it in messages. WKT when the file name
 /// ends in `.wkt` or the text starts with a WKT keyword; Boost.Polygon's
 /// text format otherwise.
 pub fn read(source: &Source) -> Result<(String, Input), Failure> {
-    let (name, bytes, wkt_name) = match source {
+    let (name, bytes, extension) = match source {
         Source::Demo => return Ok(("demo input".into(), Input::Boost(demo::input()))),
         Source::Stdin => {
             let mut bytes = Vec::new();
             std::io::stdin().read_to_end(&mut bytes).map_err(|e| bad_input(format!("cannot read standard input: {e}")))?;
-            ("standard input".to_string(), bytes, false)
+            ("standard input".to_string(), bytes, None)
         }
         Source::File(path) => {
             let bytes = std::fs::read(path).map_err(|e| bad_input(format!("cannot read {}: {e}", path.display())))?;
-            let wkt_name = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("wkt"));
-            (path.display().to_string(), bytes, wkt_name)
+            let extension = path.extension().and_then(|e| e.to_str()).map(str::to_string);
+            (path.display().to_string(), bytes, extension)
         }
     };
     // Invalid UTF-8 becomes U+FFFD and so a parse error at the right place.
     let text = String::from_utf8_lossy(&bytes);
-    let input = if wkt_name || wkt::looks_like_wkt(&text) {
-        wkt::parse(&text).map(Input::Wkt).map_err(|e| e.to_string())
-    } else {
-        boost_text::parse(&text).map(Input::Boost)
+    let input = match kind(extension.as_deref(), &text) {
+        Kind::Wkt => wkt::parse(&text).map(Input::Shapes).map_err(|e| e.to_string()),
+        Kind::GeoJson => wkt::parse_geojson(&text).map(Input::Shapes).map_err(|e| e.to_string()),
+        Kind::Boost => boost_text::parse(&text).map(Input::Boost),
     };
     let input = input.map_err(|e| bad_input(format!("{name}: {e}")))?;
     Ok((name, input))
@@ -116,7 +138,7 @@ impl Input {
                 origins.point_lines.clone_from(&input.point_lines);
                 origins.segment_lines.clone_from(&input.segment_lines);
             }
-            Input::Wkt(shapes) => {
+            Input::Shapes(Shapes { shapes, .. }) => {
                 for (k, shape) in shapes.iter().enumerate() {
                     match shape {
                         Shape::Point(p) => {
@@ -144,7 +166,7 @@ impl Input {
     pub fn rings(&self) -> Vec<Vec<Xy>> {
         match self {
             Input::Boost(_) => Vec::new(),
-            Input::Wkt(shapes) => shapes
+            Input::Shapes(Shapes { shapes, .. }) => shapes
                 .iter()
                 .flat_map(|s| match s {
                     Shape::Polygon(rings) => rings.clone(),
@@ -152,5 +174,48 @@ impl Input {
                 })
                 .collect(),
         }
+    }
+}
+
+impl Input {
+    /// The linestrings and points of a WKT or GeoJSON input (the
+    /// obstacles, drawn when the picture leaves the diagram out).
+    pub fn obstacles(&self) -> (Vec<Vec<Xy>>, Vec<Xy>) {
+        let (mut lines, mut points) = (Vec::new(), Vec::new());
+        if let Input::Shapes(Shapes { shapes, .. }) = self {
+            for shape in shapes {
+                match shape {
+                    Shape::LineString(line) => lines.push(line.clone()),
+                    Shape::Point(p) => points.push(*p),
+                    Shape::Polygon(_) => {}
+                }
+            }
+        }
+        (lines, points)
+    }
+
+    /// The SRID an EWKT input declared (its coordinates are used as they
+    /// are: the diagram is planar).
+    pub fn srid(&self) -> Option<i64> {
+        match self {
+            Input::Shapes(shapes) => shapes.srid,
+            Input::Boost(_) => None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn extension_decides_else_the_start() {
+        assert_eq!(kind(Some("WKT"), "3\n0 0"), Kind::Wkt);
+        assert_eq!(kind(Some("ewkt"), ""), Kind::Wkt);
+        assert_eq!(kind(Some("GeoJSON"), "POINT (1 2)"), Kind::GeoJson);
+        assert_eq!(kind(Some("json"), ""), Kind::GeoJson);
+        assert_eq!(kind(Some("txt"), " SRID=4326;POINT (1 2)"), Kind::Wkt);
+        assert_eq!(kind(None, "\n {\"type\": \"Point\"}"), Kind::GeoJson);
+        assert_eq!(kind(None, "2\n0 0\n1 1\n"), Kind::Boost);
     }
 }

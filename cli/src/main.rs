@@ -6,6 +6,7 @@
 
 mod args;
 mod demo;
+mod geojson_output;
 mod input;
 mod medial_output;
 mod offset_output;
@@ -18,7 +19,7 @@ use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use args::{Command, Format, Options};
+use args::{Format, Options, Stop};
 use segvoronoi::{Builder, Diagram, MedialAxis, MedialAxisFilter, TopologyOptions};
 
 /// Why the program stops early: an exit status and a message for the user.
@@ -49,10 +50,18 @@ fn main() -> ExitCode {
 
 fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     let options = match args::parse(arguments) {
-        Ok(Command::Run(options)) => options,
-        Ok(Command::Help) => return print(args::USAGE),
-        Ok(Command::Version) => return print(&format!("segvoronoi {}\n", segvoronoi::VERSION)),
-        Err(message) => return Err(bad_input(format!("{message}\nTry 'segvoronoi --help'."))),
+        Ok(options) => options,
+        // Help and version on standard output with status 0, clap's own
+        // usage errors (which name the flag and point to --help) with 2.
+        Err(Stop::Clap(e)) => {
+            let status = if e.use_stderr() { 2 } else { 0 };
+            let text = if e.use_stderr() { e.to_string() } else { e.render().to_string() };
+            if status == 0 {
+                return print(&text);
+            }
+            return Err(bad_input(text.trim_start_matches("error: ").trim_end().to_string()));
+        }
+        Err(Stop::Usage(message)) => return Err(bad_input(format!("{message}\nTry 'segvoronoi --help'."))),
     };
     let (name, input) = input::read(&options.source)?;
 
@@ -83,12 +92,20 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     let axis = if needs_axis { medial_axis(&diagram, &options) } else { MedialAxis::default() };
     if let Some(path) = &options.svg {
         let rings = input.rings();
-        let domain = svg::Domain { rings: &rings, axis: &axis, tolerance };
-        write_file(path, &svg::render(&diagram, diagram.has_domain().then_some(&domain), &offsets))?;
+        let (lines, points) = input.obstacles();
+        let domain = svg::Domain { rings: &rings, axis: &axis, tolerance, lines: &lines, points: &points };
+        let look = svg::Look {
+            title: Some(title(&name, &diagram, builder.segment_count())),
+            // EWKT's SRID 4326 is longitude and latitude in degrees.
+            units: options.units.clone().or_else(|| (input.srid() == Some(4326)).then(|| "deg".to_string())),
+            diagram: options.svg_diagram,
+        };
+        write_file(path, &svg::render(&diagram, diagram.has_domain().then_some(&domain), &offsets, &look))?;
     }
     if let Some((path, format)) = &options.medial_axis {
         let text = match format {
             Format::Wkt => medial_output::wkt(&diagram, &axis, tolerance),
+            Format::GeoJson => geojson_output::medial_axis(&diagram, &axis, tolerance),
             Format::Json => medial_output::json(&diagram, &axis),
         };
         write_file(path, &text)?;
@@ -96,6 +113,7 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     if let Some((path, format)) = &options.offsets {
         let text = match format {
             Format::Wkt => offset_output::wkt(&offsets, tolerance),
+            Format::GeoJson => geojson_output::offsets(&offsets, tolerance),
             Format::Json => offset_output::json(&offsets),
         };
         write_file(path, &text)?;
@@ -116,6 +134,11 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     }
     if options.stats {
         eprint!("{}", stats::report(&diagram, build_s));
+        if let Some(srid) = input.srid() {
+            // EWKT's SRID is reported, not used: the diagram is planar in
+            // the coordinates as given.
+            eprintln!("input_srid={srid}");
+        }
     }
     if !wants_output(&options) {
         // Nothing asked for: say what was built and how to see it.
@@ -142,6 +165,13 @@ fn sites_as_built(diagram: &Diagram, points: usize) -> String {
     let segments: Vec<[f64; 4]> =
         (0..diagram.piece_count()).filter_map(|p| diagram.piece(p)).map(|[a, b]| [a.x, a.y, b.x, b.y]).collect();
     segvoronoi::boost_text::write(&points, &segments)
+}
+
+/// The picture's title: the input's file name and what it holds.
+fn title(name: &str, diagram: &Diagram, segments: usize) -> String {
+    let name = Path::new(name).file_name().map_or(name.to_string(), |n| n.to_string_lossy().into_owned());
+    let what = if diagram.has_domain() { "medial axis" } else { "Voronoi diagram" };
+    format!("{name}: {what}, {} sites ({segments} segments)", diagram.site_count())
 }
 
 /// The medial axis, filtered as the options ask (no option: no filter).
