@@ -366,7 +366,11 @@ fn domains_at_the_ends_of_the_range_are_located_exactly() {
 /// `split_crossings`. The vertex at the polyline's far end gets a NaN
 /// clearance (saturated to infinite) and is located inside the triangle, so
 /// the largest inscribed circle is infinite. Within the exact range (span 9
-/// bits): a bug, not a range limit.
+/// bits), and not a matter of magnitude: the input scaled by `2^-1000` gives
+/// a vertex at y = -9e15 inside a triangle of size 5. The vertex is that of
+/// the triangle's top edge, the polyline's last piece (parallel to it and
+/// one ulp below) and its end point: a near-degenerate configuration whose
+/// far vertex the domain locates inside.
 #[test]
 #[ignore = "open: a vertex at a polyline's end at -f64::MAX is located inside (issue 28 note)"]
 fn polyline_to_minus_max_crossing_a_triangle() {
