@@ -65,10 +65,7 @@ impl Scale {
     /// The scale for inputs with these coordinates (`for_magnitudes` of
     /// their largest magnitude and their smallest nonzero one).
     pub fn for_coordinates(values: impl IntoIterator<Item = f64>) -> Scale {
-        let (max_abs, min_abs) = values.into_iter().fold((0.0f64, f64::INFINITY), |(max, min), v| {
-            let v = v.abs();
-            (max.max(v), if v > 0.0 { min.min(v) } else { min })
-        });
+        let (max_abs, min_abs) = extreme_magnitudes(values);
         Scale::for_magnitudes(max_abs, min_abs)
     }
 
@@ -138,10 +135,7 @@ impl Magnitudes {
     /// looked at (a sort) only where the magnitudes alone leave room for
     /// them to matter (`ORDINARY_SPAN`).
     pub fn of_points<'a>(points: impl Iterator<Item = &'a Point> + Clone) -> Magnitudes {
-        let (max_abs, min_abs) = points.clone().flat_map(|p| [p.x, p.y]).fold((0.0f64, f64::INFINITY), |(max, min), v| {
-            let v = v.abs();
-            (max.max(v), if v > 0.0 { min.min(v) } else { min })
-        });
+        let (max_abs, min_abs) = extreme_magnitudes(points.clone().flat_map(|p| [p.x, p.y]));
         let ordinary = Magnitudes { max_abs, smallest: min_abs };
         if !(max_abs.is_finite() && min_abs.is_finite()) || ordinary.span() + 53 <= ORDINARY_SPAN {
             return ordinary;
@@ -185,6 +179,15 @@ fn tiny_input_target(span: i32) -> i32 {
     } else {
         TINY_INPUT_TARGET
     }
+}
+
+/// The largest magnitude of `values` and the smallest nonzero one (`∞`
+/// when none is nonzero).
+fn extreme_magnitudes(values: impl IntoIterator<Item = f64>) -> (f64, f64) {
+    values.into_iter().fold((0.0f64, f64::INFINITY), |(max, min), v| {
+        let v = v.abs();
+        (max.max(v), if v > 0.0 { min.min(v) } else { min })
+    })
 }
 
 /// The span in bits from `smallest` up to `max_abs` (both positive).
