@@ -676,6 +676,13 @@ segvoronoi_cgal_fixture_test(nudged_joints_two_spokes_4seg)
 foreach(_fixture nudged_joint_ulp_3seg nudged_chain_two_joints_3seg nudged_chain_baseline_3seg subnormal_nudged_joint_2seg)
   segvoronoi_cgal_fixture_test(${_fixture})
 endforeach()
+# a segment an ulp (or 2e-10) beside a longer parallel one, a point on its
+# far side: the middle margin of the edge between its two endpoints, sampled
+# at 1e9 out, was rounding noise and cut the wrong edge twice (issue 28's
+# open case, minimised; the vertices it made lay beyond the range of f64)
+foreach(_fixture parallel_ulp_apart_point_below parallel_2e-10_apart_point_below parallel_ulp_apart_chain_3seg)
+  segvoronoi_cgal_fixture_test(${_fixture})
+endforeach()
 unset(_fixture)
 unset(_labels)
 unset(_name)

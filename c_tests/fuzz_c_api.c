@@ -124,11 +124,6 @@ static int nseen = 0;
 static const char *const KNOWN[] = {
     /* found by this driver at f47f2fe, not in the text */
     "INCONSISTENT segvoronoi_builder_check disagrees with build",
-    /* open: a vertex at a polyline's end at -DBL_MAX located inside a triangle
-     * it crosses near 5e300, with splitting (tests/magnitudes.rs,
-     * polyline_to_minus_max_crossing_a_triangle; seed 1, case 0x98e14134e143ddc0) */
-    "NONFINITE segvoronoi_diagram_max_inscribed_circle",
-    "NONFINITE segvoronoi_diagram_inscribed_circles",
     NULL,
 };
 static int is_known(const char *sig) {

@@ -21,7 +21,8 @@ pub enum ErrorKind {
     InvalidArgument,
     /// Memory for a size the caller asked for (such as
     /// [`Builder::reserve_points`](crate::Builder::reserve_points)) could not
-    /// be allocated; nothing was changed.
+    /// be allocated, or the memory a build of this size needs at its peak
+    /// was refused before it started; nothing was changed.
     OutOfMemory,
     /// The construction could not complete a valid diagram: a bug in
     /// segvoronoi, not in the input (none is known; with sound arithmetic it

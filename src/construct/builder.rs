@@ -261,8 +261,13 @@ impl Builder {
     /// (its largest magnitude over `2^480` times its smallest nonzero
     /// magnitude or difference) is built and its result checked; when it
     /// does not check out the error is [`ErrorKind::UnsupportedRange`]
-    /// instead. The builder stays as it was.
+    /// instead. A build whose estimated peak memory (about 256 bytes a
+    /// point and 1 KiB a segment) the allocator refuses is not started:
+    /// [`ErrorKind::OutOfMemory`] (under a memory limit such as `ulimit -v`;
+    /// see `construct/headroom.rs` for what that cannot cover). The builder
+    /// stays as it was.
     pub fn build(&self) -> Result<Diagram, Error> {
+        super::headroom::ensure_headroom(self.points.len(), self.segments.len())?;
         super::exact_range::checked_build(&self.points, &self.segments, || self.build_at_any_span())
     }
 

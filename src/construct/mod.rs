@@ -2,7 +2,8 @@
 //! topology-oriented method (DESIGN §2). The steps, each in its own file:
 //!
 //! 1. `builder.rs`: [`Builder`] collects the input (finite coordinates,
-//!    the size limit).
+//!    the size limit); `headroom.rs` refuses a build whose memory the
+//!    allocator will not grant, before it starts.
 //! 2. Here, [`diagram_of`]: scale (one power of two for the whole input,
 //!    `geometry::scale`) → check (`input_check/`: normalisation, the
 //!    classification of a pair, the candidate search; on large inputs beside
@@ -27,6 +28,7 @@ mod builder;
 mod collinear;
 mod deletion_tree;
 mod exact_range;
+mod headroom;
 mod input_check;
 mod insert_point;
 mod insert_segment;

@@ -15,7 +15,7 @@
 //! each endpoint once and hands the same coordinates to the point site and to
 //! the segment site, so no tolerance is wanted (or safe) here.
 
-use super::arithmetic::real::norm;
+use super::arithmetic::real::{norm, Real};
 use super::point::Point;
 
 /// A site as geometry: a point, or an open segment whose endpoints are
@@ -152,6 +152,38 @@ impl Site {
                     cross.abs() / norm(ux, uy)
                 } else {
                     p.distance(a).min(p.distance(b))
+                }
+            }
+        }
+    }
+}
+
+/// [`Site::distance`] in the arithmetic `T` (`lift` turns an `f64` into
+/// it): with double-double, a distance whose comparison with another is
+/// within the rounding of `f64` (a point 1e9 units out, a margin of 1e-9)
+/// still has its sign. The differences of coordinates are exact in
+/// double-double; which part of the segment is nearest (its interior or an
+/// endpoint) is decided in `f64`, where the two formulas agree.
+pub(crate) fn distance_in<T: Real>(site: &Site, p: Point, lift: &impl Fn(f64) -> T) -> T {
+    let between = |q: Point| (lift(p.x).sub(&lift(q.x)), lift(p.y).sub(&lift(q.y)));
+    let to_point = |q: Point| {
+        let (dx, dy) = between(q);
+        T::hypot(&dx, &dy)
+    };
+    match *site {
+        Site::Point(q) => to_point(q),
+        Site::Segment { a, b } => {
+            let t = segment_parameter(a, b, p);
+            if t > 0.0 && t < 1.0 {
+                let (ux, uy) = (lift(b.x).sub(&lift(a.x)), lift(b.y).sub(&lift(a.y)));
+                let (vx, vy) = between(a);
+                ux.mul(&vy).sub(&uy.mul(&vx)).abs().div(&T::hypot(&ux, &uy))
+            } else {
+                let (da, db) = (to_point(a), to_point(b));
+                if da.sub(&db).signum() <= 0 {
+                    da
+                } else {
+                    db
                 }
             }
         }

@@ -106,3 +106,56 @@ fn every_small_fixture_passes_the_audit() {
     assert!(checked > 20, "only {checked} fixtures checked");
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// Two parallel segments a few ulps to a billionth apart, one shorter than
+/// the other and beside it, with points and a segment near them: the
+/// configuration of a ring's vertex an ulp off a neighbouring ring's side
+/// (issue 28's open case, minimised into the `parallel_*` fixtures). The
+/// circle through two points an ulp nearer one line than the other is
+/// far out, and the margin of an edge there is below the rounding of its
+/// distances: each diagram must still be the exact one. Horizontal and
+/// vertical pairs (exactly parallel at any offset), mirrored and in both
+/// orders.
+#[test]
+fn parallel_segments_an_ulp_apart_pass_the_audit() {
+    use crate::splitmix::SplitMix64;
+    let mut rng = SplitMix64(28);
+    let mut failures = Vec::new();
+    for case in 0..240 {
+        let mut coordinate = |lo: f64, hi: f64| lo + (hi - lo) * rng.unit();
+        let y = coordinate(0.5, 4.0) * if case % 5 < 2 { -1.0 } else { 1.0 };
+        let (x0, x1) = (coordinate(-4.0, 0.0), coordinate(0.5, 4.0));
+        let (inner0, inner1) = (coordinate(x0, x1), coordinate(x0, x1));
+        let (inner0, inner1) = (inner0.min(inner1), inner0.max(inner1));
+        let ulps = [1u64, 2, 7, 1 << 10, 1 << 20, 1 << 30][case % 6];
+        // the shorter segment above the longer one or below it, with the
+        // point and the leg on its far side
+        let up = (case / 6) % 2 == 0;
+        let side = if up { 1.0 } else { -1.0 };
+        let bits = y.to_bits();
+        let y_inner = f64::from_bits(if (y > 0.0) == up { bits + ulps } else { bits - ulps });
+        let points =
+            [[coordinate(-4.0, 4.0), coordinate(-4.0, 4.0) + 9.0 * side], [inner0, y_inner + side * coordinate(0.1, 1.0)]];
+        let mut segments = vec![[[x0, y], [x1, y]], [[inner0, y_inner], [inner1, y_inner]]];
+        if case % 3 == 0 {
+            // a leg from the shorter one's end towards the point
+            segments.push([[inner0, y_inner + side * 0.05], [inner0, y_inner]]);
+        }
+        let transform = |[x, y]: [f64; 2]| match (case / 12) % 4 {
+            0 => [x, y],
+            1 => [-x, y],
+            2 => [y, x],
+            _ => [-y, -x],
+        };
+        let mut builder = Builder::new();
+        let order: Vec<usize> = if case % 2 == 0 { (0..segments.len()).collect() } else { (0..segments.len()).rev().collect() };
+        builder.add_points(points.map(transform)).expect("points");
+        builder.add_segments(order.iter().map(|&k| segments[k].map(transform))).expect("segments");
+        let Ok(diagram) = builder.build() else {
+            failures.push(format!("case {case}: no diagram"));
+            continue;
+        };
+        failures.extend(audit(&diagram, false).into_iter().map(|line| format!("case {case}: {line}")));
+    }
+    assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
+}

@@ -24,7 +24,7 @@ use crate::geometry::curves::edge_curve::EdgeCurve;
 use crate::geometry::fault;
 use crate::geometry::point::Point;
 use crate::geometry::predicates::{orientation, CirclePosition, Orientation};
-use crate::geometry::site::Site;
+use crate::geometry::site::{distance_in, Site};
 use crate::geometry::solvers::segment_solvers;
 
 /// How far a new segment reaches into the circle of a finite vertex: the
@@ -468,7 +468,15 @@ pub(crate) fn middle_margin(edge: FiniteEdge, contact: EdgeContact, segment: (Po
         // of whose ends the cell takes, is covered whole. (The sampled
         // excess there is noise when a point is an ulp from the segment.)
         None if !fault::active() && points_on_opposite_sides(&edge) => f64::NEG_INFINITY,
-        None => sampled_maximum(&|t| edge.excess(t)),
+        // The sampled excess is rounding noise where the edge lies far out
+        // against the segment's distance from the edge's sites (two points
+        // an ulp nearer the segment's line than its parallel neighbour: the
+        // excess is -1e-9 on distances of 1e9): it is evaluated again at the
+        // best sample in double-double, where its sign holds.
+        None => match sampled_maximum(&|t| edge.excess(t)) {
+            (t, excess) if !fault::active() && excess.abs() <= EXCESS_NOISE * edge.size(t) => edge.fine_excess(t),
+            (_, excess) => excess,
+        },
     };
     MiddleMargin(fault::perturb(margin))
 }
@@ -563,11 +571,41 @@ impl EdgeUnderSegment {
             e
         }
     }
+
+    /// [`EdgeUnderSegment::excess`] at the same point of the edge, its
+    /// distances in double-double. The point itself is the `f64` point of
+    /// the edge; off the edge by its rounding, it moves the mean distance
+    /// to the edge's two sites only at second order (that mean grows along
+    /// the edge, not across it), so the sign of an excess far below the
+    /// coordinates' ulp holds.
+    fn fine_excess(&self, t: f64) -> f64 {
+        let dd = DoubleDouble::from_f64;
+        let q = self.arc.point(t);
+        let e = match self.segment {
+            Site::Segment { a: pa, b: pb } if self.touches_end => {
+                let (dx, dy) = (dd(pb.x).sub(dd(pa.x)), dd(pb.y).sub(dd(pa.y)));
+                let along = |from: Point, to: Point| dd(to.x).sub(dd(from.x)).mul(dx).add(dd(to.y).sub(dd(from.y)).mul(dy));
+                let (beyond_b, beyond_a) = (along(pb, q), along(q, pa));
+                let beyond = if beyond_a.sub(beyond_b).signum() > 0 { beyond_a } else { beyond_b };
+                beyond.div(dx.mul(dx).add(dy.mul(dy)).sqrt())
+            }
+            _ => {
+                let own = distance_in(&self.left, q, &dd).add(distance_in(&self.right, q, &dd));
+                distance_in(&self.segment, q, &dd).sub(own.mul(dd(0.5)))
+            }
+        }
+        .to_f64();
+        if e.is_nan() {
+            f64::NEG_INFINITY
+        } else {
+            e
+        }
+    }
 }
 
-/// The largest value of `f` over `[0, 1]` as far as sampling finds it:
-/// evenly spaced samples, the best refined by golden-section search.
-fn sampled_maximum(f: &impl Fn(f64) -> f64) -> f64 {
+/// The largest value of `f` over `[0, 1]` as far as sampling finds it, and
+/// where: evenly spaced samples, the best refined by golden-section search.
+fn sampled_maximum(f: &impl Fn(f64) -> f64) -> (f64, f64) {
     const SAMPLES: usize = 16;
     const REFINEMENTS: usize = 40;
     let step = 1.0 / (SAMPLES + 1) as f64;
@@ -596,5 +634,5 @@ fn sampled_maximum(f: &impl Fn(f64) -> f64) -> f64 {
             e1 = f(x1);
         }
     }
-    best.max(e1).max(e2)
+    [(best_t, best), (x1, e1), (x2, e2)].into_iter().fold((best_t, best), |a, b| if b.1 > a.1 { b } else { a })
 }
