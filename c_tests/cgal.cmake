@@ -507,6 +507,13 @@ foreach(_run "16 0" "64 1" "256 2" "16 7" "256 7" "1024 3" "1024 4")
   segvoronoi_cgal_seeded_test(ulp-off-line ${_run})
   segvoronoi_cgal_seeded_test(ulp-ends ${_run})
 endforeach()
+# A segment 1 ulp to 2^30 ulps beside a longer parallel one, a point on its
+# far side (issue 28's open case as a family): seeds 1 and 2 at 16 differed
+# before the sampled middle margin was evaluated again in double-double.
+foreach(_run "16 0" "16 1" "16 2" "64 3" "256 4" "1024 1")
+  separate_arguments(_run)
+  segvoronoi_cgal_seeded_test(ulp-parallel ${_run})
+endforeach()
 # Joints open by one ulp agree since the middle margin orders crossings
 # closer than 1e-6 of an edge in double-double (segment_predicates
 # `crossing_order`). Before, a vertex at the gap, certified in conflict,

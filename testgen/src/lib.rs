@@ -133,6 +133,7 @@ pub const FAMILIES: &[(&str, bool)] = &[
     ("ulp-off-line", false),
     ("ulp-ends", false),
     ("glyph", false),
+    ("ulp-parallel", false),
 ];
 
 /// The families of [`FAMILIES`] that make chains or rings (polylines,
@@ -200,7 +201,7 @@ pub fn generate(family: &str, n: usize, seed: u64) -> Option<Input> {
         "polygon-holes" => 3 * 4 + 3,
         "seg-lattice" => 4,
         "parallel" | "fan" | "kinked-chain" | "ulp-ends" => 2,
-        "ulp-off-line" => 1,
+        "ulp-off-line" | "ulp-parallel" => 1,
         "glyph" => 6,
         _ => 0,
     };
@@ -241,6 +242,7 @@ pub fn generate(family: &str, n: usize, seed: u64) -> Option<Input> {
         "fan" => *segments = nd::fan(n, seed, rng),
         "kinked-chain" => *segments = nd::kinked_chain(n, seed, rng),
         "ulp-off-line" => nd::ulp_off_line(n, seed, rng, &mut input),
+        "ulp-parallel" => nd::ulp_parallel(n, seed, rng, &mut input),
         "ulp-ends" => *segments = nd::ulp_ends(n, seed, rng),
         "glyph" => *segments = nd::glyph(n, seed, rng),
         _ => return None,

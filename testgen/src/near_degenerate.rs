@@ -144,3 +144,39 @@ pub fn glyph(n: usize, seed: u64, rng: &mut Rng) -> Vec<Segment> {
     }
     out
 }
+
+/// In the cells of a grid (scaled by seed_scale(seed)): a long segment,
+/// a shorter one parallel to it and 1, 2, 7, 2^10, 2^20 or 2^30 ulps (by
+/// cell) to one side of it, within its extent, a point on the shorter
+/// one's far side, and in every other cell a leg from the shorter one's end
+/// towards the point. Horizontal, or vertical (exactly parallel at any
+/// offset) mirrored across the diagonal into the negative quadrant, by cell. Issue 28's open case: the circle through the
+/// shorter one's endpoints tangent to the long one lies at 1e9 and beyond,
+/// and the margin of their edge is below the rounding of its distances.
+pub fn ulp_parallel(n: usize, seed: u64, rng: &mut Rng, input: &mut Input) {
+    const OFFSETS: [u32; 6] = [1, 2, 7, 1 << 10, 1 << 20, 1 << 30];
+    let scale = seed_scale(seed);
+    let side = (n as f64).sqrt().ceil() as usize;
+    for k in 0..n {
+        let (cx, cy) = ((k % side) as f64 * 6.0, (k / side) as f64 * 6.0);
+        let y = scale * (cy + 2.0 + rng.unit());
+        let (x0, x1) = (scale * (cx + rng.unit()), scale * (cx + 3.0 + rng.unit()));
+        let (u, v) = (x0 + (x1 - x0) * (0.1 + 0.3 * rng.unit()), x0 + (x1 - x0) * (0.6 + 0.3 * rng.unit()));
+        let up = rng.unit() < 0.5;
+        // y > 0: the bit pattern grows upward
+        let ulps = u64::from(OFFSETS[k % OFFSETS.len()]);
+        let y_short = f64::from_bits(if up { y.to_bits() + ulps } else { y.to_bits() - ulps });
+        let away = if up { scale } else { -scale };
+        let point = [u + (v - u) * rng.unit(), y_short + away * (0.1 + 0.8 * rng.unit())];
+        let mut cell = vec![[[x0, y], [x1, y]], [[u, y_short], [v, y_short]]];
+        if k % 2 == 0 {
+            cell.push([[u, y_short], [u, y_short + away * 0.05]]);
+        }
+        // vertical cells mirrored across the diagonal into the negative
+        // quadrant (exact: the offsets stay those ulps)
+        let vertical = (k / 2) % 2 == 1;
+        let place = |[x, y]: [f64; 2]| if vertical { [-y, -x] } else { [x, y] };
+        input.segments.extend(cell.into_iter().map(|s| s.map(place)));
+        input.points.push(place(point));
+    }
+}
