@@ -33,7 +33,7 @@
 
 use crate::construct::polygon_input::RingInput;
 use crate::diagram::{Diagram, EdgeId, SiteId, VertexId};
-use crate::geometry::predicates::{orientation, Orientation};
+use crate::geometry::predicates::Orientation;
 use crate::geometry::{Point, Site};
 use crate::query::EdgeEnd;
 
@@ -568,25 +568,6 @@ impl Diagram {
             }
         }
         inside_if(inside)
-    }
-
-    /// The exact orientation of `a`, `b`, `c` (input coordinates), asked in
-    /// the construction's coordinates: the power of two that keeps the
-    /// input's products within `f64` (`geometry::scale`), so that an input
-    /// of 1e300 (whose products overflow as they are) is decided exactly
-    /// too. A point that does not scale exactly (a query point far beyond
-    /// the input) is asked as it is.
-    fn turn(&self, a: Point, b: Point, c: Point) -> Orientation {
-        let k = self.scale.to_internal;
-        let exact = |p: Point| {
-            let q = p.scaled(k);
-            q.x.is_finite() && q.y.is_finite() && q.scaled(self.scale.to_input) == p
-        };
-        if [a, b, c].into_iter().all(exact) {
-            orientation(a.scaled(k), b.scaled(k), c.scaled(k))
-        } else {
-            orientation(a, b, c)
-        }
     }
 
     /// The coordinates of a point site.

@@ -5,6 +5,7 @@ mod access;
 #[cfg(test)]
 pub(crate) mod audit;
 mod domain;
+mod exact_turn;
 mod medial_axis;
 mod medial_axis_filter;
 mod navigation;

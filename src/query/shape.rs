@@ -27,7 +27,7 @@
 use crate::diagram::{Diagram, EdgeId, SiteId};
 use crate::geometry::curves::edge_curve::EdgeCurve;
 use crate::geometry::curves::parabola::{focus_and_directrix, Parabola};
-use crate::geometry::predicates::{orientation, Orientation};
+use crate::geometry::predicates::Orientation;
 use crate::geometry::{Point, Site};
 use crate::query::EdgeEnd;
 
@@ -57,13 +57,11 @@ pub enum EdgeShape {
 }
 
 impl EdgeShape {
-    /// The shape of the edge between two sites (see the module doc);
-    /// `to_internal` is the diagram's power-of-two scale, under which the
-    /// exact orientation test cannot overflow.
-    fn between(first: Site, second: Site, to_internal: f64) -> EdgeShape {
+    /// The shape of the edge between two sites (see the module doc), with
+    /// `turn` the diagram's exact orientation of input points.
+    fn between(first: Site, second: Site, turn: impl Fn(Point, Point, Point) -> Orientation) -> EdgeShape {
         let Some((focus, a, b)) = focus_and_directrix(&first, &second) else { return EdgeShape::Line };
-        let f = to_internal;
-        if orientation(a.scaled(f), b.scaled(f), focus.scaled(f)) == Orientation::Collinear {
+        if turn(a, b, focus) == Orientation::Collinear {
             return EdgeShape::Line;
         }
         EdgeShape::Parabola { focus, directrix: [a, b] }
@@ -111,7 +109,7 @@ impl Diagram {
             return EdgeShape::Line;
         }
         let [first, second] = sites.map(|s| self.sites[s.index()]);
-        EdgeShape::between(first, second, self.scale.to_internal)
+        EdgeShape::between(first, second, |a, b, c| self.turn(a, b, c))
     }
 
     /// A polyline along a finite edge, from the position of `ends[0]` to
