@@ -1,0 +1,101 @@
+"""Many geometries in one call: the same results as one by one, on any
+number of threads, with the GIL released, and interruptible by Ctrl-C
+between geometries."""
+
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+import shapely
+
+import segvoronoi
+from conftest import random_polygon_with_holes
+
+
+@pytest.fixture(scope="module")
+def polygons():
+    polys = [random_polygon_with_holes(s) for s in range(40)]
+    polys.insert(5, None)
+    polys.insert(9, shapely.MultiPolygon([polys[0], shapely.box(500, 500, 510, 520)]))
+    return polys
+
+
+def same(a, b):
+    return all(
+        (x is None and y is None) or shapely.equals_exact(x, y, 0)
+        for x, y in zip(np.asarray(a, dtype=object).ravel(), np.asarray(b, dtype=object).ravel())
+    )
+
+
+def test_medial_axis_many_equals_one_by_one(polygons):
+    one = [segvoronoi.medial_axis(p) for p in polygons]
+    for threads in (1, 2, 3):
+        many = segvoronoi.medial_axis(polygons, threads=threads)
+        assert isinstance(many, np.ndarray) and many.shape == (len(polygons),)
+        assert same(many, one)
+    assert same(segvoronoi.medial_axis(np.array(polygons, dtype=object)), one)
+    assert same(segvoronoi.medial_axis(tuple(polygons), corner_angle=150), [segvoronoi.medial_axis(p, corner_angle=150) for p in polygons])
+
+
+def test_circles_and_offsets_many(polygons):
+    circles = segvoronoi.max_inscribed_circle(polygons, threads=2)
+    for p, row in zip(polygons, circles):
+        one = segvoronoi.max_inscribed_circle(p)
+        assert (one is None and np.isnan(row).all()) or tuple(row) == one
+    table = segvoronoi.offsets(polygons, [-2.0, 1.0, 4.0], tolerance=1e-3, threads=2)
+    assert table.shape == (len(polygons), 3)
+    for p, row in zip(polygons, table):
+        assert same(row, segvoronoi.offsets(p, [-2.0, 1.0, 4.0], tolerance=1e-3))
+    single = segvoronoi.offset(polygons, 1.0, tolerance=1e-3, threads=1)
+    assert same(single, table[:, 1])
+
+
+def test_geopandas_series_keeps_index_and_crs(polygons):
+    geopandas = pytest.importorskip("geopandas")
+    s = geopandas.GeoSeries(polygons, index=[f"p{i}" for i in range(len(polygons))], crs="EPSG:3857")
+    out = segvoronoi.medial_axis(s)
+    assert isinstance(out, geopandas.GeoSeries) and list(out.index) == list(s.index) and out.crs == s.crs
+    assert same(out.values, segvoronoi.medial_axis(polygons))
+    frame = geopandas.GeoDataFrame({"name": list(s.index)}, geometry=s)
+    assert same(segvoronoi.medial_axis(frame).values, out.values)
+
+
+def test_gil_is_released(polygons):
+    """A Python thread keeps running while a vectorised call works."""
+    many = polygons * 30
+    ticks = []
+    stop = threading.Event()
+
+    def count():
+        while not stop.is_set():
+            ticks.append(1)
+            time.sleep(0.001)
+
+    t = threading.Thread(target=count)
+    t.start()
+    time.sleep(0.01)
+    before = len(ticks)
+    start = time.perf_counter()
+    segvoronoi.medial_axis(many, threads=1)
+    took = time.perf_counter() - start
+    during = len(ticks) - before
+    stop.set()
+    t.join()
+    # with the GIL held the counter would not move at all during the call
+    assert took < 0.05 or during > 5, (took, during)
+
+
+@pytest.mark.skipif(threading.current_thread() is not threading.main_thread(), reason="signals need the main thread")
+def test_ctrl_c_interrupts_a_batch(countries):
+    many = list(countries.values()) * 200  # tens of seconds of work
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.perf_counter()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        segvoronoi.medial_axis(many, threads=2)
+    took = time.perf_counter() - start
+    timer.join()
+    assert took < 10, took
