@@ -44,7 +44,10 @@ impl PyDiagram {
     }
 
     /// `(positions (V, 2), clearances (V,), sites (V, 3))`.
-    fn vertex_arrays<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray2<i64>>)> {
+    fn vertex_arrays<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray2<i64>>)> {
         let d = &self.inner;
         let (mut pos, mut clearance, mut sites) = (Vec::new(), Vec::new(), Vec::new());
         for v in d.vertices() {
@@ -59,7 +62,10 @@ impl PyDiagram {
 
     /// `(sites (E, 2), vertices (E, 2) with -1 at infinity, directions
     /// (E, 2, 2) of the ends at infinity, NaN at finite ends)`.
-    fn edge_arrays<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyArray2<i64>>, Bound<'py, PyArray2<i64>>, Bound<'py, PyArray3<f64>>)> {
+    fn edge_arrays<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyArray2<i64>>, Bound<'py, PyArray2<i64>>, Bound<'py, PyArray3<f64>>)> {
         let d = &self.inner;
         let (mut sites, mut ends, mut dirs) = (Vec::new(), Vec::new(), Vec::new());
         for e in d.edges() {
@@ -78,12 +84,19 @@ impl PyDiagram {
             }
         }
         let n = d.edge_count();
-        Ok((sites.into_pyarray(py).reshape([n, 2])?, ends.into_pyarray(py).reshape([n, 2])?, dirs.into_pyarray(py).reshape([n, 2, 2])?))
+        Ok((
+            sites.into_pyarray(py).reshape([n, 2])?,
+            ends.into_pyarray(py).reshape([n, 2])?,
+            dirs.into_pyarray(py).reshape([n, 2, 2])?,
+        ))
     }
 
     /// `(kinds (S,) 0 point / 1 segment, coordinates (S, 2, 2) (a point
     /// twice), segment input index (S,) or -1 for points)`.
-    fn site_arrays<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyArray1<i8>>, Bound<'py, PyArray3<f64>>, Bound<'py, PyArray1<i64>>)> {
+    fn site_arrays<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyArray1<i8>>, Bound<'py, PyArray3<f64>>, Bound<'py, PyArray1<i64>>)> {
         let d = &self.inner;
         let (mut kinds, mut coords, mut input) = (Vec::new(), Vec::new(), Vec::new());
         for s in d.site_ids() {
@@ -132,7 +145,9 @@ impl PyDiagram {
         let d = &self.inner;
         let lines: Vec<Vec<[f64; 2]>> = py.detach(|| {
             (0..d.edge_count())
-                .map(|e| d.edge_polyline(EdgeId::from_index(e), tolerance).unwrap_or_default().iter().map(|p| [p.x, p.y]).collect())
+                .map(|e| {
+                    d.edge_polyline(EdgeId::from_index(e), tolerance).unwrap_or_default().iter().map(|p| [p.x, p.y]).collect()
+                })
                 .collect()
         });
         lines.into_iter().map(|l| ravel2(py, l)).collect()
@@ -161,7 +176,12 @@ impl PyDiagram {
     /// -1 outside, -2 no domain.
     fn locate<'py>(&self, py: Python<'py>, xy: PyReadonlyArray2<'py, f64>) -> Bound<'py, PyArray1<i8>> {
         let d = &self.inner;
-        xy.as_array().rows().into_iter().map(|r| location_code(d.locate_point(Point::new(r[0], r[1])))).collect::<Vec<i8>>().into_pyarray(py)
+        xy.as_array()
+            .rows()
+            .into_iter()
+            .map(|r| location_code(d.locate_point(Point::new(r[0], r[1]))))
+            .collect::<Vec<i8>>()
+            .into_pyarray(py)
     }
 
     /// Where each vertex and each edge is (codes as `locate`).
@@ -180,7 +200,13 @@ impl PyDiagram {
 
     /// `(xyz, line_offsets)` of the medial axis.
     #[pyo3(signature = (tolerance, corner_angle, prune_spurs))]
-    fn medial_axis<'py>(&self, py: Python<'py>, tolerance: Option<f64>, corner_angle: Option<f64>, prune_spurs: Option<f64>) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray1<i64>>)> {
+    fn medial_axis<'py>(
+        &self,
+        py: Python<'py>,
+        tolerance: Option<f64>,
+        corner_angle: Option<f64>,
+        prune_spurs: Option<f64>,
+    ) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray1<i64>>)> {
         let d = &self.inner;
         let mut lines = py.detach(|| outputs::medial_axis(d, AxisOptions { tolerance, corner_angle, prune_spurs }));
         lines.off.push(lines.xyz.len());
@@ -197,7 +223,12 @@ impl PyDiagram {
     /// The offsets at `distances`, packed as `offsets_batch` packs them for
     /// one geometry; a failure is returned as the last element.
     #[pyo3(signature = (distances, tolerance))]
-    fn offsets<'py>(&self, py: Python<'py>, distances: PyReadonlyArray1<'py, f64>, tolerance: Option<f64>) -> PyResult<PolygonBatch<'py>> {
+    fn offsets<'py>(
+        &self,
+        py: Python<'py>,
+        distances: PyReadonlyArray1<'py, f64>,
+        tolerance: Option<f64>,
+    ) -> PyResult<PolygonBatch<'py>> {
         let distances: Vec<f64> = distances.as_array().iter().copied().collect();
         let d = &self.inner;
         let (mut polygons, mut multi) = (Polygons::default(), Vec::new());

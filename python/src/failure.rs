@@ -24,12 +24,19 @@ impl Failure {
     /// (from which the point where two segments meet is found).
     pub fn of(error: &Error, builder: Option<&Builder>, geometry: Option<usize>) -> Failure {
         let point = match (error.kind(), builder, error.indices()) {
-            (ErrorKind::Intersecting, Some(b), &[i, j]) => b.segment(i).zip(b.segment(j)).and_then(|(s, t)| {
-                common_point([[s[0].x, s[0].y], [s[1].x, s[1].y]], [[t[0].x, t[0].y], [t[1].x, t[1].y]])
-            }),
+            (ErrorKind::Intersecting, Some(b), &[i, j]) => b
+                .segment(i)
+                .zip(b.segment(j))
+                .and_then(|(s, t)| common_point([[s[0].x, s[0].y], [s[1].x, s[1].y]], [[t[0].x, t[0].y], [t[1].x, t[1].y]])),
             _ => None,
         };
-        Failure { geometry, kind: kind_name(error.kind()), message: error.message().to_string(), indices: error.indices().to_vec(), point }
+        Failure {
+            geometry,
+            kind: kind_name(error.kind()),
+            message: error.message().to_string(),
+            indices: error.indices().to_vec(),
+            point,
+        }
     }
 
     /// A failure of an argument (a tolerance, a distance) that never got to

@@ -73,8 +73,7 @@ fn pairs(flat: Vec<f64>) -> Vec<[f64; 2]> {
 impl Batch {
     pub fn from_args(a: &PackedArgs<'_>) -> PyResult<Batch> {
         let pt_xy = pairs(xy(&a.pt_xy, "points", 2)?);
-        let seg: Vec<[[f64; 2]; 2]> =
-            xy(&a.seg, "segments", 4)?.chunks_exact(4).map(|c| [[c[0], c[1]], [c[2], c[3]]]).collect();
+        let seg: Vec<[[f64; 2]; 2]> = xy(&a.seg, "segments", 4)?.chunks_exact(4).map(|c| [[c[0], c[1]], [c[2], c[3]]]).collect();
         let poly_xy = pairs(xy(&a.poly_xy, "polygon points", 2)?);
         let line_xy = pairs(xy(&a.line_xy, "line points", 2)?);
         let ring_off = offsets(&a.ring_off, "ring offsets", poly_xy.len())?;

@@ -104,8 +104,7 @@ fn inscribed_circle_batch<'py>(
 ) -> PyResult<(Bound<'py, PyArray2<f64>>, Vec<FailureTuple>)> {
     let batch = Batch::from_args(&packed)?;
     let job = |g: usize| {
-        build_one(&batch, g, split_crossings)
-            .map(|d| d.max_inscribed_circle().map_or([f64::NAN; 3], |(c, r)| [c.x, c.y, r]))
+        build_one(&batch, g, split_crossings).map(|d| d.max_inscribed_circle().map_or([f64::NAN; 3], |(c, r)| [c.x, c.y, r]))
     };
     let mut results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
     let errors = failures(&mut results);
@@ -124,7 +123,13 @@ pub(crate) type PolygonBatch<'py> = (
 /// The offsets of one diagram at every distance, into `out`, one
 /// multipolygon per distance (`multi` gets its polygon offsets). Without a
 /// domain a negative distance is empty, as shapely's buffer of a line is.
-pub(crate) fn offsets_into(diagram: &Diagram, distances: &[f64], tolerance: Option<f64>, out: &mut Polygons, multi: &mut Vec<usize>) -> Result<(), Failure> {
+pub(crate) fn offsets_into(
+    diagram: &Diagram,
+    distances: &[f64],
+    tolerance: Option<f64>,
+    out: &mut Polygons,
+    multi: &mut Vec<usize>,
+) -> Result<(), Failure> {
     let tolerance = tolerance.unwrap_or_else(|| outputs::default_tolerance(diagram));
     let asked: Vec<f64> = distances.iter().copied().filter(|&d| diagram.has_domain() || !(d < 0.0)).collect();
     let offsets = diagram.offsets(&asked).map_err(|e| Failure::of(&e, None, None))?;
@@ -138,7 +143,12 @@ pub(crate) fn offsets_into(diagram: &Diagram, distances: &[f64], tolerance: Opti
     Ok(())
 }
 
-pub(crate) fn finish_polygons(py: Python<'_>, mut all: Polygons, mut multi: Vec<usize>, errors: Vec<FailureTuple>) -> PyResult<PolygonBatch<'_>> {
+pub(crate) fn finish_polygons(
+    py: Python<'_>,
+    mut all: Polygons,
+    mut multi: Vec<usize>,
+    errors: Vec<FailureTuple>,
+) -> PyResult<PolygonBatch<'_>> {
     all.ring_off.push(all.xy.len());
     all.poly_off.push(all.ring_off.len() - 1);
     multi.push(all.poly_off.len() - 1);
@@ -188,16 +198,26 @@ fn offsets_batch<'py>(
 /// `(None, failure)`.
 #[pyfunction]
 #[pyo3(signature = (packed, split_crossings))]
-fn build<'py>(py: Python<'py>, packed: PackedArgs<'py>, split_crossings: bool) -> PyResult<(Option<diagram::PyDiagram>, Option<FailureTuple>)> {
+fn build<'py>(
+    py: Python<'py>,
+    packed: PackedArgs<'py>,
+    split_crossings: bool,
+) -> PyResult<(Option<diagram::PyDiagram>, Option<FailureTuple>)> {
     let batch = Batch::from_args(&packed)?;
-    let mut result = parallel::map(py, batch.len().min(1), Some(1), |g| build_one(&batch, g, split_crossings), |g, m| Err(panicked(g, m)))?;
+    let mut result =
+        parallel::map(py, batch.len().min(1), Some(1), |g| build_one(&batch, g, split_crossings), |g, m| Err(panicked(g, m)))?;
     match result.pop() {
         Some(Ok(d)) => Ok((Some(diagram::PyDiagram::new(d)), None)),
         Some(Err(mut f)) => {
             f.geometry = None;
             Ok((None, Some(f.into_tuple())))
         }
-        None => Ok((Some(diagram::PyDiagram::new(segvoronoi::Builder::new().build().map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?)), None)),
+        None => Ok((
+            Some(diagram::PyDiagram::new(
+                segvoronoi::Builder::new().build().map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?,
+            )),
+            None,
+        )),
     }
 }
 

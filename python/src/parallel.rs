@@ -61,8 +61,7 @@ where
         std::thread::scope(|scope| {
             let helpers: Vec<_> = (1..threads).map(|_| scope.spawn(|| work(false))).collect();
             let mine = work(true);
-            let theirs: Vec<_> =
-                helpers.into_iter().map(|h| h.join().unwrap_or_else(|_| Ok(Vec::new()))).collect();
+            let theirs: Vec<_> = helpers.into_iter().map(|h| h.join().unwrap_or_else(|_| Ok(Vec::new()))).collect();
             (mine, theirs)
         })
     });
