@@ -59,7 +59,7 @@ def test_geopandas_series_keeps_index_and_crs(polygons):
     out = segvoronoi.medial_axis(s)
     assert isinstance(out, geopandas.GeoSeries) and list(out.index) == list(s.index) and out.crs == s.crs
     assert same(out.values, segvoronoi.medial_axis(polygons))
-    frame = geopandas.GeoDataFrame({"name": list(s.index)}, geometry=s)
+    frame = geopandas.GeoDataFrame({"name": list(s.index)}, geometry=s, index=s.index)
     assert same(segvoronoi.medial_axis(frame).values, out.values)
 
 
