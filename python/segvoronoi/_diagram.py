@@ -10,9 +10,9 @@ import numpy as np
 import shapely
 
 from . import _native
-from ._api import check_corner_angle, check_positive
-from ._errors import InvalidArgumentError, raise_failure
-from ._pack import as_points, as_segments, pack_one
+from ._api import check_corner_angle, check_errors, check_positive, check_threads
+from ._errors import InvalidArgumentError, error_of, raise_failure
+from ._pack import as_points, as_segments, is_many, pack_many, pack_one
 from ._shapes import multilinestrings, multipolygons
 
 __all__ = ["Diagram", "voronoi"]
@@ -24,7 +24,9 @@ def voronoi(
     geometry: Any = None,
     *,
     split_crossings: bool = False,
-) -> "Diagram":
+    threads: Optional[int] = None,
+    errors: str = "raise",
+) -> Any:
     """The Voronoi diagram of points, segments and a geometry.
 
     Args:
@@ -38,6 +40,10 @@ def voronoi(
             :meth:`Diagram.offsets`), its lines and points are obstacles.
             Its points come after ``points`` and its segments after
             ``segments``.
+            A list, array or GeoSeries of geometries (without ``points``
+            and ``segments``) gives an array of diagrams, built on up to
+            ``threads`` threads; ``errors='coerce'`` puts None where a
+            geometry fails instead of raising.
         split_crossings: split crossings and overlaps by snap rounding
             instead of raising (the diagram is then that of the pieces).
 
@@ -58,13 +64,29 @@ def voronoi(
     P0 P2 P3
     P1 P2 P3
     <BLANKLINE>
+    >>> from shapely import box
+    >>> [d.edge_count for d in voronoi(geometry=[box(0, 0, 1, 1), box(0, 0, 2, 1), None])]
+    [13, 13, 0]
     """
+    if is_many(geometry):
+        if points is not None or segments is not None:
+            raise InvalidArgumentError("points and segments go with one geometry, not with many")
+        check_threads(threads)
+        check_errors(errors)
+        results = _native.build_batch(pack_many(geometry), bool(split_crossings), threads)
+        out = np.empty(len(results), dtype=object)
+        for k, (built, failure) in enumerate(results):
+            if failure is not None and errors == "raise":
+                raise error_of(failure, True)
+            out[k] = None if built is None else Diagram(built)
+        return out
     pts = None if points is None else as_points(points)
     segs = None if segments is None else as_segments(segments)
     packed = _merge(pack_one(geometry), pts, segs)
     built, failure = _native.build(packed, bool(split_crossings))
-    if failure is not None:
-        raise_failure(failure)
+    if failure is not None or built is None:
+        raise_failure(failure or (-1, "Internal", "no diagram and no error", (), None))
+    assert built is not None
     return Diagram(built, 0 if pts is None else len(pts))
 
 

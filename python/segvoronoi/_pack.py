@@ -10,7 +10,7 @@ costs no Python loop per parcel.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple, Optional, Sequence
+from typing import Any, NamedTuple, Optional, Sequence, Union
 
 import numpy as np
 import shapely
@@ -158,7 +158,7 @@ def as_segments(segments: Any) -> np.ndarray:
     return np.ascontiguousarray(a)
 
 
-def pack(geoms: Sequence[Any]) -> Packed:
+def pack(geoms: Union[Sequence[Any], np.ndarray]) -> Packed:
     """Packs ``geoms`` (shapely or None, see :func:`as_geometry_array`)."""
     arr = geoms if isinstance(geoms, np.ndarray) else as_geometry_array(geoms)
     n = len(arr)

@@ -221,6 +221,27 @@ fn build<'py>(
     }
 }
 
+/// The diagram of each geometry: a list of `(Diagram, None)` or
+/// `(None, failure)`, built on up to `threads` threads.
+#[pyfunction]
+#[pyo3(signature = (packed, split_crossings, threads))]
+fn build_batch<'py>(
+    py: Python<'py>,
+    packed: PackedArgs<'py>,
+    split_crossings: bool,
+    threads: Option<usize>,
+) -> PyResult<Vec<(Option<diagram::PyDiagram>, Option<FailureTuple>)>> {
+    let batch = Batch::from_args(&packed)?;
+    let built = parallel::map(py, batch.len(), threads, |g| build_one(&batch, g, split_crossings), |g, m| Err(panicked(g, m)))?;
+    Ok(built
+        .into_iter()
+        .map(|r| match r {
+            Ok(d) => (Some(diagram::PyDiagram::new(d)), None),
+            Err(f) => (None, Some(f.into_tuple())),
+        })
+        .collect())
+}
+
 /// The module.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -229,6 +250,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(inscribed_circle_batch, m)?)?;
     m.add_function(wrap_pyfunction!(offsets_batch, m)?)?;
     m.add_function(wrap_pyfunction!(build, m)?)?;
+    m.add_function(wrap_pyfunction!(build_batch, m)?)?;
     m.add_class::<diagram::PyDiagram>()?;
     Ok(())
 }

@@ -99,3 +99,18 @@ def test_ctrl_c_interrupts_a_batch(countries):
     took = time.perf_counter() - start
     timer.join()
     assert took < 10, took
+
+
+def test_diagrams_many(polygons):
+    diagrams = segvoronoi.voronoi(geometry=polygons, threads=2)
+    assert diagrams.shape == (len(polygons),)
+    for p, d in zip(polygons, diagrams):
+        assert d.topology() == segvoronoi.voronoi(geometry=p).topology()
+        assert d.has_domain == (p is not None)
+    bad = shapely.Polygon([(0, 0), (2, 2), (2, 0), (0, 2)])
+    with pytest.raises(segvoronoi.IntersectingError) as info:
+        segvoronoi.voronoi(geometry=[polygons[0], bad])
+    assert info.value.geometry_index == 1
+    assert segvoronoi.voronoi(geometry=[bad, polygons[0]], errors="coerce")[0] is None
+    with pytest.raises(segvoronoi.InvalidArgumentError):
+        segvoronoi.voronoi(points=[[0, 0]], geometry=polygons)
