@@ -8,8 +8,12 @@
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
 
 use pyo3::prelude::*;
+
+/// How often the calling thread looks for Ctrl-C between jobs.
+const CHECK_EVERY: Duration = Duration::from_millis(20);
 
 /// The number of threads for `threads=` (None: every core).
 pub fn thread_count(threads: Option<usize>, jobs: usize) -> usize {
@@ -42,13 +46,18 @@ where
     // asked; the caller's worker checks for signals between its jobs.
     let work = |check_signals: bool| -> Result<Vec<(usize, T)>, PyErr> {
         let mut done = Vec::new();
+        // Taking the GIL can wait for another Python thread's switch
+        // interval (5 ms), so the caller looks for signals at most every
+        // CHECK_EVERY, not after every small job.
+        let mut last_check = Instant::now();
         while !stop.load(Ordering::Relaxed) {
             let g = next.fetch_add(1, Ordering::Relaxed);
             if g >= n {
                 break;
             }
             done.push((g, run(g)));
-            if check_signals && n > 1 {
+            if check_signals && n > 1 && last_check.elapsed() >= CHECK_EVERY {
+                last_check = Instant::now();
                 if let Err(e) = Python::attach(|py| py.check_signals()) {
                     stop.store(true, Ordering::Relaxed);
                     return Err(e);
