@@ -77,6 +77,11 @@ def main() -> None:
     ap.add_argument("--polygons", type=int, default=1000)
     ap.add_argument("--segments", type=int, default=100_000)
     ap.add_argument("--skip-centerline", action="store_true", help="skip the slow `centerline` package")
+    ap.add_argument(
+        "--sections",
+        default="centerlines,offsets,diagram,threads",
+        help="comma-separated sections to run (default: all)",
+    )
     args = ap.parse_args()
 
     polygons = [random_polygon_with_holes(s) for s in range(args.polygons)]
@@ -90,7 +95,25 @@ def main() -> None:
     print(f"# {len(polygons)} polygons, {vertices} vertices; load average {os.getloadavg()}", flush=True)
     print("| task | tool | seconds | note |\n|---|---|---|---|", flush=True)
 
-    # 1. centerlines
+    sections = set(args.sections.split(","))
+
+    if "centerlines" in sections:
+        centerlines(polygons, row, args.skip_centerline)
+    if "offsets" in sections:
+        offsets(polygons, row)
+    if "diagram" in sections:
+        diagram(args.segments, row)
+    if "threads" in sections:
+        for threads in (1, 2):
+            wall, cpu = time.perf_counter(), time.process_time()
+            segvoronoi.medial_axis(polygons, threads=threads)
+            wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
+            row("vectorised medial axis", f"threads={threads}", wall, f"{cpu / wall:.2f} cores busy on average")
+    print(f"\n{platform.processor() or platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
+          f"segvoronoi {segvoronoi.__version__}; load average after {os.getloadavg()}")
+
+
+def centerlines(polygons, row, skip_centerline: bool) -> None:
     t, axes = timed(lambda: segvoronoi.medial_axis(polygons))
     row("centerlines of %d polygons" % len(polygons), "segvoronoi.medial_axis (all cores)", t, f"{sum(len(a.geoms) for a in axes)} lines")
     t, _ = timed(lambda: segvoronoi.medial_axis(polygons, corner_angle=150, prune_spurs=1.5))
@@ -104,7 +127,7 @@ def main() -> None:
         row("", "pygeoops.centerline (defaults)", t, f"{failed} failed")
     except ImportError:
         row("", "pygeoops.centerline", math.nan, "not installed")
-    if not args.skip_centerline:
+    if not skip_centerline:
         try:
             from centerline.geometry import Centerline
 
@@ -113,20 +136,22 @@ def main() -> None:
         except ImportError:
             row("", "centerline.Centerline", math.nan, "not installed")
 
-    # 2. offsets at 10 distances
+
+def offsets(polygons, row) -> None:
     distances = [-8.0, -4.0, -2.0, -1.0, -0.5, 0.5, 1.0, 2.0, 4.0, 8.0]
-    t, table = timed(lambda: segvoronoi.offsets(polygons, distances))
+    t, _ = timed(lambda: segvoronoi.offsets(polygons, distances))
     row("offsets at 10 distances", "segvoronoi.offsets (all cores)", t, "chords within 1e-4 of the diagonal")
     t, _ = timed(lambda: segvoronoi.offsets(polygons, distances, threads=1))
     row("", "segvoronoi.offsets, 1 thread", t)
     arr = np.array(polygons)
-    t, ref = timed(lambda: [shapely.buffer(arr, d) for d in distances])
+    t, _ = timed(lambda: [shapely.buffer(arr, d) for d in distances])
     row("", "shapely.buffer (quad_segs=8), per distance", t, "arcs of 8 chords per quarter")
     t, _ = timed(lambda: [shapely.buffer(arr, d, quad_segs=64) for d in distances])
-    row("", "shapely.buffer (quad_segs=64), per distance", t, "about our chord accuracy at d = 8")
+    row("", "shapely.buffer (quad_segs=64), per distance", t, "error 0.0006 at d = 8 (ours: 0.003 at every d)")
 
-    # 3. a diagram of many segments
-    segs = grid_segments(args.segments)
+
+def diagram(count: int, row) -> None:
+    segs = grid_segments(count)
     t, d = timed(lambda: segvoronoi.voronoi(segments=segs))
     row(f"diagram of {len(segs)} segments", "segvoronoi.voronoi", t, f"{d.vertex_count} vertices")
     t, _ = timed(lambda: (d.vertices, d.edge_sites, d.vertex_sites))
@@ -147,13 +172,6 @@ def main() -> None:
         row("", "pyvoronoi: GetVertices", t)
     except ImportError:
         row("", "pyvoronoi", math.nan, "not installed")
-
-    # 4. threads
-    for threads in (1, 2):
-        t, _ = timed(lambda: segvoronoi.medial_axis(polygons, threads=threads))
-        row("vectorised medial axis", f"threads={threads}", t)
-    print(f"\n{platform.processor() or platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
-          f"segvoronoi {segvoronoi.__version__}; load average after {os.getloadavg()}")
 
 
 if __name__ == "__main__":
