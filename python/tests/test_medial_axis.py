@@ -96,3 +96,36 @@ def test_multipolygon_and_collection():
     check_clearances(MultiPolygon([a, b]), axis)
     both = segvoronoi.medial_axis(shapely.GeometryCollection([a, b]))
     assert shapely.equals_exact(axis, both, 0)
+
+
+def test_overlapping_glyphs_split():
+    """Composite glyphs whose rings overlap: refused as they are, and with
+    split_crossings the axis of their even-odd region (every point at its
+    distance from the boundary, up to the snapping, a pixel of 2^-46)."""
+    from conftest import DATA, even_odd, read_rings
+
+    paths = sorted(DATA.glob("overlap_*.rings"))
+    assert len(paths) >= 3
+    refused = 0
+    for path in paths:
+        rings = read_rings(path)
+        region = even_odd(rings)
+        raw = shapely.MultiPolygon([Polygon(r) for r in rings])  # rings as given, overlapping
+        try:
+            segvoronoi.medial_axis(raw)
+        except segvoronoi.IntersectingError as e:
+            # the indices count the rings' segments in order (closing
+            # segment last); the point lies on both
+            segments = [
+                shapely.LineString([c[k], c[(k + 1) % len(c)]])
+                for poly in raw.geoms
+                for c in [np.asarray(poly.exterior.coords)[:-1]]
+                for k in range(len(c))
+            ]
+            assert len(e.indices) == 2 and e.point is not None
+            p = shapely.Point(e.point)
+            assert all(segments[i].distance(p) <= 1e-9 * extent(region) for i in e.indices), (e, path)
+            refused += 1
+        axis = segvoronoi.medial_axis(raw, split_crossings=True)
+        check_clearances(region, axis, rel=1e-8)
+    assert refused >= 3
