@@ -237,7 +237,7 @@ impl PyDiagram {
             Ok(()) => Vec::new(),
             Err(f) => {
                 (polygons, multi) = (Polygons::default(), vec![0; distances.len()]);
-                vec![f.into_tuple()]
+                vec![f.to_tuple()]
             }
         };
         finish_polygons(py, polygons, multi, errors)

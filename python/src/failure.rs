@@ -4,7 +4,6 @@
 //! keeping the classes in Python keeps them documented, typed and picklable
 //! (Dask ships exceptions between processes).
 
-use pyo3::prelude::*;
 use segvoronoi::{Builder, Error, ErrorKind};
 
 /// What Python gets: `(geometry, kind, message, indices, point)`;
@@ -39,29 +38,14 @@ impl Failure {
         }
     }
 
-    /// A failure of an argument (a tolerance, a distance) that never got to
-    /// the library.
-    pub fn argument(message: String) -> Failure {
-        Failure { geometry: None, kind: "InvalidArgument", message, indices: Vec::new(), point: None }
-    }
-
     pub fn at(mut self, geometry: usize) -> Failure {
         self.geometry = Some(geometry);
         self
     }
 
-    pub fn into_tuple(self) -> FailureTuple {
-        (self.geometry.map_or(-1, |g| g as i64), self.kind, self.message, self.indices, self.point.map(|[x, y]| (x, y)))
-    }
-}
-
-impl<'py> IntoPyObject<'py> for Failure {
-    type Target = PyAny;
-    type Output = Bound<'py, PyAny>;
-    type Error = PyErr;
-
-    fn into_pyobject(self, py: Python<'py>) -> Result<Self::Output, Self::Error> {
-        Ok(self.into_tuple().into_pyobject(py)?.into_any())
+    pub fn to_tuple(&self) -> FailureTuple {
+        let geometry = self.geometry.map_or(-1, |g| g as i64);
+        (geometry, self.kind, self.message.clone(), self.indices.clone(), self.point.map(|[x, y]| (x, y)))
     }
 }
 

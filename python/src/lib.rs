@@ -37,15 +37,8 @@ fn panicked(g: usize, message: String) -> Failure {
 }
 
 /// Failures of a vectorised call, for the Python side to raise or keep.
-fn failures<T>(results: &mut [Result<T, Failure>]) -> Vec<FailureTuple> {
-    let mut out = Vec::new();
-    for r in results.iter_mut() {
-        if let Err(f) = r {
-            let taken = std::mem::replace(f, Failure::argument(String::new()));
-            out.push(taken.into_tuple());
-        }
-    }
-    out
+fn failures<T>(results: &[Result<T, Failure>]) -> Vec<FailureTuple> {
+    results.iter().filter_map(|r| r.as_ref().err()).map(Failure::to_tuple).collect()
 }
 
 pub(crate) fn ravel2<'py, const N: usize>(py: Python<'py>, rows: Vec<[f64; N]>) -> PyResult<Bound<'py, PyArray2<f64>>> {
@@ -76,8 +69,8 @@ fn medial_axis_batch<'py>(
     let batch = Batch::from_args(&packed)?;
     let options = AxisOptions { tolerance, corner_angle, prune_spurs };
     let job = |g: usize| build_one(&batch, g, split_crossings).map(|d| outputs::medial_axis(&d, options));
-    let mut results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
-    let errors = failures(&mut results);
+    let results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
+    let errors = failures(&results);
     // geometry g's lines are geom[g]..geom[g+1]; a failed geometry has none
     let (mut all, mut geom) = (Lines::default(), vec![0usize]);
     for lines in results {
@@ -106,8 +99,8 @@ fn inscribed_circle_batch<'py>(
     let job = |g: usize| {
         build_one(&batch, g, split_crossings).map(|d| d.max_inscribed_circle().map_or([f64::NAN; 3], |(c, r)| [c.x, c.y, r]))
     };
-    let mut results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
-    let errors = failures(&mut results);
+    let results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
+    let errors = failures(&results);
     let rows: Vec<[f64; 3]> = results.into_iter().map(|r| r.unwrap_or([f64::NAN; 3])).collect();
     Ok((ravel2(py, rows)?, errors))
 }
@@ -176,8 +169,8 @@ fn offsets_batch<'py>(
         offsets_into(&diagram, &distances, tolerance, &mut polygons, &mut multi).map_err(|f| f.at(g))?;
         Ok((polygons, multi))
     };
-    let mut results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
-    let errors = failures(&mut results);
+    let results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
+    let errors = failures(&results);
     let (mut all, mut multi) = (Polygons::default(), Vec::new());
     for r in results {
         match r {
@@ -210,7 +203,7 @@ fn build<'py>(
         Some(Ok(d)) => Ok((Some(diagram::PyDiagram::new(d)), None)),
         Some(Err(mut f)) => {
             f.geometry = None;
-            Ok((None, Some(f.into_tuple())))
+            Ok((None, Some(f.to_tuple())))
         }
         None => Ok((
             Some(diagram::PyDiagram::new(
@@ -237,7 +230,7 @@ fn build_batch<'py>(
         .into_iter()
         .map(|r| match r {
             Ok(d) => (Some(diagram::PyDiagram::new(d)), None),
-            Err(f) => (None, Some(f.into_tuple())),
+            Err(f) => (None, Some(f.to_tuple())),
         })
         .collect())
 }
