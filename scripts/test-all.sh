@@ -21,10 +21,11 @@ if [ ${#need_packages[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${need_packages[@]}" >/dev/null
 fi
 
-step "formatting (rustfmt.toml; cargo fmt --check over the workspace and bench/)"
+step "formatting (rustfmt.toml; cargo fmt --check over the workspace, bench/ and python/)"
 cargo fmt --version >/dev/null 2>&1 || rustup component add rustfmt
 cargo fmt --all -- --check
 (cd bench && cargo fmt -- --check)
+(cd python && cargo fmt -- --check)
 
 step "cargo test (workspace: library, C API via cc, header, properties, doctests)"
 cargo test --workspace --quiet
@@ -47,3 +48,6 @@ fi
 
 step "examples/c: the C quick start through find_package and pkg-config; stripped install, Runtime component"
 CARGO_TARGET_DIR="$package_target" bash scripts/test-c-examples.sh
+
+step "Python package: pip install ./python into a fresh venv, pytest and doctests"
+bash scripts/test-python.sh

@@ -1,0 +1,249 @@
+//! `segvoronoi._native`: the compiled half of the Python package. It takes
+//! packed arrays (`input`), runs the library on many geometries at once
+//! with the GIL released (`parallel`), and hands back flat arrays
+//! (`outputs`) and failures as data (`failure`); everything users see —
+//! shapely geometries, exception classes, argument checks — is in the
+//! Python modules of `segvoronoi/`.
+
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
+use pyo3::prelude::*;
+use segvoronoi::Diagram;
+
+mod diagram;
+mod failure;
+mod input;
+mod outputs;
+mod parallel;
+
+use failure::{Failure, FailureTuple};
+use input::{Batch, PackedArgs};
+use outputs::{AxisOptions, Lines, Polygons};
+
+/// Builds geometry `g` of `batch` (errors carry the geometry index when the
+/// call is vectorised).
+fn build_one(batch: &Batch, g: usize, split_crossings: bool) -> Result<Diagram, Failure> {
+    let builder = batch.builder(g, split_crossings).map_err(|e| Failure::of(&e, None, Some(g)))?;
+    builder.build().map_err(|e| Failure::of(&e, Some(&builder), Some(g)))
+}
+
+fn panicked(g: usize, message: String) -> Failure {
+    Failure {
+        geometry: Some(g),
+        kind: "Internal",
+        message: format!("segvoronoi panicked: {message} (please report the input)"),
+        indices: Vec::new(),
+        point: None,
+    }
+}
+
+/// Failures of a vectorised call, for the Python side to raise or keep.
+fn failures<T>(results: &[Result<T, Failure>]) -> Vec<FailureTuple> {
+    results.iter().filter_map(|r| r.as_ref().err()).map(Failure::to_tuple).collect()
+}
+
+pub(crate) fn ravel2<'py, const N: usize>(py: Python<'py>, rows: Vec<[f64; N]>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let n = rows.len();
+    let flat: Vec<f64> = rows.into_iter().flatten().collect();
+    Ok(flat.into_pyarray(py).reshape([n, N])?)
+}
+
+pub(crate) fn index_array(py: Python<'_>, v: Vec<usize>) -> Bound<'_, PyArray1<i64>> {
+    v.into_iter().map(|x| x as i64).collect::<Vec<i64>>().into_pyarray(py)
+}
+
+type AxisBatch<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray1<i64>>, Bound<'py, PyArray1<i64>>, Vec<FailureTuple>);
+
+/// The medial axis of each geometry: `(xyz, line_offsets, geometry_offsets,
+/// failures)`; a geometry that failed has no lines.
+#[pyfunction]
+#[pyo3(signature = (packed, tolerance, corner_angle, prune_spurs, split_crossings, threads))]
+fn medial_axis_batch<'py>(
+    py: Python<'py>,
+    packed: PackedArgs<'py>,
+    tolerance: Option<f64>,
+    corner_angle: Option<f64>,
+    prune_spurs: Option<f64>,
+    split_crossings: bool,
+    threads: Option<usize>,
+) -> PyResult<AxisBatch<'py>> {
+    let batch = Batch::from_args(&packed)?;
+    let options = AxisOptions { tolerance, corner_angle, prune_spurs };
+    let job = |g: usize| build_one(&batch, g, split_crossings).map(|d| outputs::medial_axis(&d, options));
+    let results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
+    let errors = failures(&results);
+    // geometry g's lines are geom[g]..geom[g+1]; a failed geometry has none
+    let (mut all, mut geom) = (Lines::default(), vec![0usize]);
+    for lines in results {
+        if let Ok(lines) = lines {
+            let base = all.xyz.len();
+            all.off.extend(lines.off.iter().map(|o| o + base));
+            all.xyz.extend(lines.xyz);
+        }
+        geom.push(all.off.len());
+    }
+    all.off.push(all.xyz.len());
+    Ok((ravel2(py, all.xyz)?, index_array(py, all.off), index_array(py, geom), errors))
+}
+
+/// The largest inscribed circle of each geometry: `((G, 3) array of x, y,
+/// r, NaN where there is none or the geometry failed), failures)`.
+#[pyfunction]
+#[pyo3(signature = (packed, split_crossings, threads))]
+fn inscribed_circle_batch<'py>(
+    py: Python<'py>,
+    packed: PackedArgs<'py>,
+    split_crossings: bool,
+    threads: Option<usize>,
+) -> PyResult<(Bound<'py, PyArray2<f64>>, Vec<FailureTuple>)> {
+    let batch = Batch::from_args(&packed)?;
+    let job = |g: usize| {
+        build_one(&batch, g, split_crossings).map(|d| d.max_inscribed_circle().map_or([f64::NAN; 3], |(c, r)| [c.x, c.y, r]))
+    };
+    let results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
+    let errors = failures(&results);
+    let rows: Vec<[f64; 3]> = results.into_iter().map(|r| r.unwrap_or([f64::NAN; 3])).collect();
+    Ok((ravel2(py, rows)?, errors))
+}
+
+pub(crate) type PolygonBatch<'py> = (
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray1<i64>>,
+    Bound<'py, PyArray1<i64>>,
+    Bound<'py, PyArray1<i64>>,
+    Vec<FailureTuple>,
+);
+
+/// The offsets of one diagram at every distance, into `out`, one
+/// multipolygon per distance (`multi` gets its polygon offsets). Without a
+/// domain a negative distance is empty, as shapely's buffer of a line is.
+pub(crate) fn offsets_into(
+    diagram: &Diagram,
+    distances: &[f64],
+    tolerance: Option<f64>,
+    out: &mut Polygons,
+    multi: &mut Vec<usize>,
+) -> Result<(), Failure> {
+    let tolerance = tolerance.unwrap_or_else(|| outputs::default_tolerance(diagram));
+    let asked: Vec<f64> = distances.iter().copied().filter(|&d| diagram.has_domain() || !(d < 0.0)).collect();
+    let offsets = diagram.offsets(&asked).map_err(|e| Failure::of(&e, None, None))?;
+    let mut next = offsets.iter();
+    for &d in distances {
+        multi.push(out.poly_off.len());
+        if diagram.has_domain() || !(d < 0.0) {
+            outputs::offset_polygons(next.next().expect("one per distance asked"), tolerance, out);
+        }
+    }
+    Ok(())
+}
+
+pub(crate) fn finish_polygons(
+    py: Python<'_>,
+    mut all: Polygons,
+    mut multi: Vec<usize>,
+    errors: Vec<FailureTuple>,
+) -> PyResult<PolygonBatch<'_>> {
+    all.ring_off.push(all.xy.len());
+    all.poly_off.push(all.ring_off.len() - 1);
+    multi.push(all.poly_off.len() - 1);
+    Ok((ravel2(py, all.xy)?, index_array(py, all.ring_off), index_array(py, all.poly_off), index_array(py, multi), errors))
+}
+
+/// The offsets of each geometry at each distance: `(xy, ring_offsets,
+/// polygon_offsets, multipolygon_offsets, failures)` with `G * D`
+/// multipolygons, geometry-major; a failed geometry's are empty.
+#[pyfunction]
+#[pyo3(signature = (packed, distances, tolerance, split_crossings, threads))]
+fn offsets_batch<'py>(
+    py: Python<'py>,
+    packed: PackedArgs<'py>,
+    distances: PyReadonlyArray1<'py, f64>,
+    tolerance: Option<f64>,
+    split_crossings: bool,
+    threads: Option<usize>,
+) -> PyResult<PolygonBatch<'py>> {
+    let batch = Batch::from_args(&packed)?;
+    let distances: Vec<f64> = distances.as_array().iter().copied().collect();
+    let job = |g: usize| -> Result<(Polygons, Vec<usize>), Failure> {
+        let diagram = build_one(&batch, g, split_crossings)?;
+        let (mut polygons, mut multi) = (Polygons::default(), Vec::new());
+        offsets_into(&diagram, &distances, tolerance, &mut polygons, &mut multi).map_err(|f| f.at(g))?;
+        Ok((polygons, multi))
+    };
+    let results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
+    let errors = failures(&results);
+    let (mut all, mut multi) = (Polygons::default(), Vec::new());
+    for r in results {
+        match r {
+            Ok((p, m)) => {
+                let (xy0, ring0, poly0) = (all.xy.len(), all.ring_off.len(), all.poly_off.len());
+                all.xy.extend(p.xy);
+                all.ring_off.extend(p.ring_off.iter().map(|o| o + xy0));
+                all.poly_off.extend(p.poly_off.iter().map(|o| o + ring0));
+                multi.extend(m.iter().map(|o| o + poly0));
+            }
+            Err(_) => multi.extend(std::iter::repeat(all.poly_off.len()).take(distances.len())),
+        }
+    }
+    finish_polygons(py, all, multi, errors)
+}
+
+/// Builds the diagram of one packed geometry: `(Diagram, None)` or
+/// `(None, failure)`.
+#[pyfunction]
+#[pyo3(signature = (packed, split_crossings))]
+fn build<'py>(
+    py: Python<'py>,
+    packed: PackedArgs<'py>,
+    split_crossings: bool,
+) -> PyResult<(Option<diagram::PyDiagram>, Option<FailureTuple>)> {
+    let batch = Batch::from_args(&packed)?;
+    let mut result =
+        parallel::map(py, batch.len().min(1), Some(1), |g| build_one(&batch, g, split_crossings), |g, m| Err(panicked(g, m)))?;
+    match result.pop() {
+        Some(Ok(d)) => Ok((Some(diagram::PyDiagram::new(d)), None)),
+        Some(Err(mut f)) => {
+            f.geometry = None;
+            Ok((None, Some(f.to_tuple())))
+        }
+        None => Ok((
+            Some(diagram::PyDiagram::new(
+                segvoronoi::Builder::new().build().map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?,
+            )),
+            None,
+        )),
+    }
+}
+
+/// The diagram of each geometry: a list of `(Diagram, None)` or
+/// `(None, failure)`, built on up to `threads` threads.
+#[pyfunction]
+#[pyo3(signature = (packed, split_crossings, threads))]
+fn build_batch<'py>(
+    py: Python<'py>,
+    packed: PackedArgs<'py>,
+    split_crossings: bool,
+    threads: Option<usize>,
+) -> PyResult<Vec<(Option<diagram::PyDiagram>, Option<FailureTuple>)>> {
+    let batch = Batch::from_args(&packed)?;
+    let built = parallel::map(py, batch.len(), threads, |g| build_one(&batch, g, split_crossings), |g, m| Err(panicked(g, m)))?;
+    Ok(built
+        .into_iter()
+        .map(|r| match r {
+            Ok(d) => (Some(diagram::PyDiagram::new(d)), None),
+            Err(f) => (None, Some(f.to_tuple())),
+        })
+        .collect())
+}
+
+/// The module.
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("VERSION", segvoronoi::VERSION)?;
+    m.add_function(wrap_pyfunction!(medial_axis_batch, m)?)?;
+    m.add_function(wrap_pyfunction!(inscribed_circle_batch, m)?)?;
+    m.add_function(wrap_pyfunction!(offsets_batch, m)?)?;
+    m.add_function(wrap_pyfunction!(build, m)?)?;
+    m.add_function(wrap_pyfunction!(build_batch, m)?)?;
+    m.add_class::<diagram::PyDiagram>()?;
+    Ok(())
+}
