@@ -1,8 +1,11 @@
-# Builds the crate with cargo and defines the build-tree targets
-# segvoronoi::segvoronoi (shared) and segvoronoi::segvoronoi_static.
+# Builds the C API crate (capi/, package segvoronoi-capi) with cargo and
+# defines the build-tree targets segvoronoi::segvoronoi (shared) and
+# segvoronoi::segvoronoi_static. cargo names its staticlib after the crate's
+# lib, libsegvoronoi_capi.a; the files here are libsegvoronoi.a and
+# libsegvoronoi.so, as installed.
 #
 # Sets for SegvoronoiInstall.cmake:
-#   SEGVORONOI_SOVERSION          ABI version in the SONAME (see build.rs)
+#   SEGVORONOI_SOVERSION          ABI version in the SONAME (see capi/build.rs)
 #   SEGVORONOI_SHARED_FILE        versioned shared library in the build tree
 #   SEGVORONOI_SONAME_LINK        its SONAME link, libsegvoronoi.so.SOVERSION
 #   SEGVORONOI_DEV_LINK           the unversioned link libsegvoronoi.so
@@ -12,7 +15,7 @@
 find_program(SEGVORONOI_CARGO cargo HINTS "$ENV{CARGO_HOME}/bin" "$ENV{HOME}/.cargo/bin" REQUIRED)
 find_program(SEGVORONOI_RUSTC rustc HINTS "$ENV{CARGO_HOME}/bin" "$ENV{HOME}/.cargo/bin" REQUIRED)
 
-# Same rule as build.rs: before 1.0 every minor release may break the ABI.
+# Same rule as capi/build.rs: before 1.0 every minor release may break the ABI.
 if(PROJECT_VERSION_MAJOR EQUAL 0)
   set(SEGVORONOI_SOVERSION "0.${PROJECT_VERSION_MINOR}")
 else()
@@ -89,10 +92,10 @@ endforeach()
 # copies keep the installed names stable whatever cargo's layout.
 add_custom_target(segvoronoi_cargo ALL
   COMMAND "${SEGVORONOI_CARGO}" build --lib --locked ${_segvoronoi_profile_flag}
-          --manifest-path "${PROJECT_SOURCE_DIR}/Cargo.toml"
+          --manifest-path "${PROJECT_SOURCE_DIR}/capi/Cargo.toml"
           --target-dir "${_segvoronoi_cargo_dir}"
   COMMAND "${CMAKE_COMMAND}" -E make_directory "${CMAKE_CURRENT_BINARY_DIR}/lib"
-  COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${_segvoronoi_out}/libsegvoronoi.a" "${SEGVORONOI_STATIC_FILE}"
+  COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${_segvoronoi_out}/libsegvoronoi_capi.a" "${SEGVORONOI_STATIC_FILE}"
   COMMAND "${CMAKE_C_COMPILER}" -shared -o "${SEGVORONOI_SHARED_FILE}"
           -Wl,--whole-archive "${SEGVORONOI_STATIC_FILE}" -Wl,--no-whole-archive
           "-Wl,--version-script=${CMAKE_CURRENT_BINARY_DIR}/segvoronoi.map"
@@ -113,7 +116,7 @@ add_library(segvoronoi_shared SHARED IMPORTED GLOBAL)
 set_target_properties(segvoronoi_shared PROPERTIES
   IMPORTED_LOCATION "${SEGVORONOI_SHARED_FILE}"
   IMPORTED_SONAME "libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
-  INTERFACE_INCLUDE_DIRECTORIES "${PROJECT_SOURCE_DIR}/include")
+  INTERFACE_INCLUDE_DIRECTORIES "${PROJECT_SOURCE_DIR}/capi/include")
 add_dependencies(segvoronoi_shared segvoronoi_cargo)
 add_library(segvoronoi::segvoronoi ALIAS segvoronoi_shared)
 
@@ -122,6 +125,6 @@ set_target_properties(segvoronoi_static PROPERTIES
   IMPORTED_LOCATION "${SEGVORONOI_STATIC_FILE}"
   IMPORTED_LINK_INTERFACE_LANGUAGES C
   INTERFACE_LINK_LIBRARIES "${SEGVORONOI_STATIC_SYSTEM_LIBS}"
-  INTERFACE_INCLUDE_DIRECTORIES "${PROJECT_SOURCE_DIR}/include")
+  INTERFACE_INCLUDE_DIRECTORIES "${PROJECT_SOURCE_DIR}/capi/include")
 add_dependencies(segvoronoi_static segvoronoi_cargo)
 add_library(segvoronoi::segvoronoi_static ALIAS segvoronoi_static)

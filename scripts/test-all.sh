@@ -29,8 +29,8 @@ cargo fmt --all -- --check
 step "cargo test (workspace: library, C API via cc, header, properties, doctests)"
 cargo test --workspace --quiet
 
-step "fault injection (predicates perturbed or random)"
-cargo test --quiet --release --features fault-injection --test fault_injection
+step "fault injection (predicates perturbed or random; through Rust and through the C API)"
+cargo test --quiet --release -p segvoronoi -p segvoronoi-capi --features segvoronoi-capi/fault-injection --test fault_injection
 
 # The package steps build the library with cargo in one shared target
 # directory (CMake honours CARGO_TARGET_DIR), so the second compiles nothing.
