@@ -45,5 +45,5 @@ if [ "${SEGVORONOI_TSAN_RUST:-0}" = 1 ]; then
   CARGO_TARGET_DIR="$package_target" bash scripts/fuzz-c-api.sh --tsan-rust
 fi
 
-step "examples/c: the C quick start through find_package and pkg-config; stripped install, Runtime component"
+step "examples/c: the C quick start through find_package and pkg-config, also fully static; stripped install, Runtime component; the program (SEGVORONOI_INSTALL_CLI)"
 CARGO_TARGET_DIR="$package_target" bash scripts/test-c-examples.sh
