@@ -1,18 +1,23 @@
-# Builds the crate with cargo and defines the build-tree targets
-# segvoronoi::segvoronoi (shared) and segvoronoi::segvoronoi_static.
+# Builds the C API crate (capi/, package segvoronoi-capi) with cargo and
+# defines the build-tree targets segvoronoi::segvoronoi (shared) and
+# segvoronoi::segvoronoi_static. cargo names its staticlib after the crate's
+# lib, libsegvoronoi_capi.a; the files here are libsegvoronoi.a and
+# libsegvoronoi.so, as installed.
 #
 # Sets for SegvoronoiInstall.cmake:
-#   SEGVORONOI_SOVERSION          ABI version in the SONAME (see build.rs)
+#   SEGVORONOI_SOVERSION          ABI version in the SONAME (see capi/build.rs)
 #   SEGVORONOI_SHARED_FILE        versioned shared library in the build tree
 #   SEGVORONOI_SONAME_LINK        its SONAME link, libsegvoronoi.so.SOVERSION
 #   SEGVORONOI_DEV_LINK           the unversioned link libsegvoronoi.so
 #   SEGVORONOI_STATIC_FILE        static library in the build tree
-#   SEGVORONOI_STATIC_SYSTEM_LIBS system libraries a static link needs
+#   SEGVORONOI_CLI_FILE           the segvoronoi program (SEGVORONOI_INSTALL_CLI)
+#   SEGVORONOI_STATIC_SYSTEM_LIBS system libraries a program linking the
+#                                 static library names (rustc's list less gcc_s)
 
 find_program(SEGVORONOI_CARGO cargo HINTS "$ENV{CARGO_HOME}/bin" "$ENV{HOME}/.cargo/bin" REQUIRED)
 find_program(SEGVORONOI_RUSTC rustc HINTS "$ENV{CARGO_HOME}/bin" "$ENV{HOME}/.cargo/bin" REQUIRED)
 
-# Same rule as build.rs: before 1.0 every minor release may break the ABI.
+# Same rule as capi/build.rs: before 1.0 every minor release may break the ABI.
 if(PROJECT_VERSION_MAJOR EQUAL 0)
   set(SEGVORONOI_SOVERSION "0.${PROJECT_VERSION_MINOR}")
 else()
@@ -63,12 +68,21 @@ if(NOT _segvoronoi_probe_result EQUAL 0 OR NOT CMAKE_MATCH_1)
   message(FATAL_ERROR "could not ask rustc which system libraries a static link needs:\n${_segvoronoi_probe_out}")
 endif()
 separate_arguments(_segvoronoi_native_flags UNIX_COMMAND "${CMAKE_MATCH_1}")
-set(SEGVORONOI_STATIC_SYSTEM_LIBS "")
+set(_segvoronoi_rustc_system_libs "")
 foreach(_flag IN LISTS _segvoronoi_native_flags)
   string(REGEX REPLACE "^-l" "" _lib "${_flag}")
-  list(APPEND SEGVORONOI_STATIC_SYSTEM_LIBS "${_lib}")
+  list(APPEND _segvoronoi_rustc_system_libs "${_lib}")
 endforeach()
-list(REMOVE_DUPLICATES SEGVORONOI_STATIC_SYSTEM_LIBS)
+list(REMOVE_DUPLICATES _segvoronoi_rustc_system_libs)
+# What a program linking libsegvoronoi.a names (the static target's link
+# interface, Libs.private of segvoronoi.pc): the same less gcc_s. Its unwinder
+# (Rust's std unwinds panics to the C API's boundary) comes with the C
+# compiler driver: gcc and clang link libgcc_s as needed into a dynamic
+# program and libgcc_eh, its static twin, into a `-static` one, where an
+# explicit -lgcc_s fails (there is no libgcc_s.a). The shared library below
+# is linked with rustc's whole list.
+set(SEGVORONOI_STATIC_SYSTEM_LIBS ${_segvoronoi_rustc_system_libs})
+list(REMOVE_ITEM SEGVORONOI_STATIC_SYSTEM_LIBS gcc_s)
 message(STATUS "segvoronoi: a static link needs ${SEGVORONOI_STATIC_SYSTEM_LIBS}")
 
 # The shared library is linked here from the static one, not copied from
@@ -81,7 +95,7 @@ message(STATUS "segvoronoi: a static link needs ${SEGVORONOI_STATIC_SYSTEM_LIBS}
 # drops what no export reaches. c_tests/symbols.cmake checks the result.
 configure_file("${CMAKE_CURRENT_LIST_DIR}/segvoronoi.map.in" "${CMAKE_CURRENT_BINARY_DIR}/segvoronoi.map" @ONLY)
 set(_segvoronoi_system_link_flags "")
-foreach(_lib IN LISTS SEGVORONOI_STATIC_SYSTEM_LIBS)
+foreach(_lib IN LISTS _segvoronoi_rustc_system_libs)
   list(APPEND _segvoronoi_system_link_flags "-l${_lib}")
 endforeach()
 
@@ -89,10 +103,10 @@ endforeach()
 # copies keep the installed names stable whatever cargo's layout.
 add_custom_target(segvoronoi_cargo ALL
   COMMAND "${SEGVORONOI_CARGO}" build --lib --locked ${_segvoronoi_profile_flag}
-          --manifest-path "${PROJECT_SOURCE_DIR}/Cargo.toml"
+          --manifest-path "${PROJECT_SOURCE_DIR}/capi/Cargo.toml"
           --target-dir "${_segvoronoi_cargo_dir}"
   COMMAND "${CMAKE_COMMAND}" -E make_directory "${CMAKE_CURRENT_BINARY_DIR}/lib"
-  COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${_segvoronoi_out}/libsegvoronoi.a" "${SEGVORONOI_STATIC_FILE}"
+  COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${_segvoronoi_out}/libsegvoronoi_capi.a" "${SEGVORONOI_STATIC_FILE}"
   COMMAND "${CMAKE_C_COMPILER}" -shared -o "${SEGVORONOI_SHARED_FILE}"
           -Wl,--whole-archive "${SEGVORONOI_STATIC_FILE}" -Wl,--no-whole-archive
           "-Wl,--version-script=${CMAKE_CURRENT_BINARY_DIR}/segvoronoi.map"
@@ -113,7 +127,7 @@ add_library(segvoronoi_shared SHARED IMPORTED GLOBAL)
 set_target_properties(segvoronoi_shared PROPERTIES
   IMPORTED_LOCATION "${SEGVORONOI_SHARED_FILE}"
   IMPORTED_SONAME "libsegvoronoi.so.${SEGVORONOI_SOVERSION}"
-  INTERFACE_INCLUDE_DIRECTORIES "${PROJECT_SOURCE_DIR}/include")
+  INTERFACE_INCLUDE_DIRECTORIES "${PROJECT_SOURCE_DIR}/capi/include")
 add_dependencies(segvoronoi_shared segvoronoi_cargo)
 add_library(segvoronoi::segvoronoi ALIAS segvoronoi_shared)
 
@@ -122,6 +136,27 @@ set_target_properties(segvoronoi_static PROPERTIES
   IMPORTED_LOCATION "${SEGVORONOI_STATIC_FILE}"
   IMPORTED_LINK_INTERFACE_LANGUAGES C
   INTERFACE_LINK_LIBRARIES "${SEGVORONOI_STATIC_SYSTEM_LIBS}"
-  INTERFACE_INCLUDE_DIRECTORIES "${PROJECT_SOURCE_DIR}/include")
+  INTERFACE_INCLUDE_DIRECTORIES "${PROJECT_SOURCE_DIR}/capi/include")
 add_dependencies(segvoronoi_static segvoronoi_cargo)
 add_library(segvoronoi::segvoronoi_static ALIAS segvoronoi_static)
+
+# The segvoronoi program (cli/, package segvoronoi-cli), when asked for: the
+# same cargo, profile and target directory, in a cargo run of its own, so that
+# the C library is the same with or without it (one run would unify the
+# features of their dependencies). After the library's build, so that the two
+# runs do not wait on each other's lock of the target directory.
+if(SEGVORONOI_INSTALL_CLI)
+  set(SEGVORONOI_CLI_FILE "${CMAKE_CURRENT_BINARY_DIR}/bin/segvoronoi")
+  add_custom_target(segvoronoi_cli ALL
+    COMMAND "${SEGVORONOI_CARGO}" build --bin segvoronoi --locked ${_segvoronoi_profile_flag}
+            --manifest-path "${PROJECT_SOURCE_DIR}/cli/Cargo.toml"
+            --target-dir "${_segvoronoi_cargo_dir}"
+    COMMAND "${CMAKE_COMMAND}" -E make_directory "${CMAKE_CURRENT_BINARY_DIR}/bin"
+    COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${_segvoronoi_out}/segvoronoi" "${SEGVORONOI_CLI_FILE}"
+    BYPRODUCTS ${SEGVORONOI_CLI_FILE}
+    WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}"
+    COMMENT "cargo build segvoronoi-cli (${_segvoronoi_profile_dir})"
+    USES_TERMINAL
+    VERBATIM)
+  add_dependencies(segvoronoi_cli segvoronoi_cargo)
+endif()

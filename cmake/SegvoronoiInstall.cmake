@@ -9,7 +9,9 @@
 #                all a program linked against the library needs to run;
 #   Development  the unversioned link libsegvoronoi.so (what -lsegvoronoi
 #                finds at link time), the static library, the header, the CMake
-#                package files and segvoronoi.pc.
+#                package files and segvoronoi.pc;
+#   Cli          bin/segvoronoi, the program, with -DSEGVORONOI_INSTALL_CLI=ON
+#                (it links the library statically, as every Rust program does).
 #   cmake --install build --component Runtime --prefix /usr
 #
 # Stripping: like every CMake project, the plain install keeps the symbol
@@ -28,19 +30,24 @@ install(FILES "${SEGVORONOI_SHARED_FILE}" "${SEGVORONOI_SONAME_LINK}"
         PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
 install(FILES "${SEGVORONOI_DEV_LINK}" DESTINATION "${CMAKE_INSTALL_LIBDIR}" COMPONENT Development)
 install(FILES "${SEGVORONOI_STATIC_FILE}" DESTINATION "${CMAKE_INSTALL_LIBDIR}" COMPONENT Development)
-install(FILES "${PROJECT_SOURCE_DIR}/include/segvoronoi.h"
+install(FILES "${PROJECT_SOURCE_DIR}/capi/include/segvoronoi.h"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}" COMPONENT Development)
 
-# `cmake --install --strip` (CMAKE_INSTALL_DO_STRIP) for the two libraries.
-function(_segvoronoi_install_strip component flag file)
+if(SEGVORONOI_INSTALL_CLI)
+  install(PROGRAMS "${SEGVORONOI_CLI_FILE}" DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT Cli)
+endif()
+
+# `cmake --install --strip` (CMAKE_INSTALL_DO_STRIP) for the two libraries
+# and the program: `file` as installed in `dir`.
+function(_segvoronoi_install_strip component flag file dir)
   if(NOT CMAKE_STRIP)
     return()
   endif()
   get_filename_component(_name "${file}" NAME)
-  if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}")
-    set(_installed "\$ENV{DESTDIR}${CMAKE_INSTALL_LIBDIR}/${_name}")
+  if(IS_ABSOLUTE "${dir}")
+    set(_installed "\$ENV{DESTDIR}${dir}/${_name}")
   else()
-    set(_installed "\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/${_name}")
+    set(_installed "\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${dir}/${_name}")
   endif()
   install(CODE "
     if(CMAKE_INSTALL_DO_STRIP)
@@ -51,8 +58,11 @@ function(_segvoronoi_install_strip component flag file)
       endif()
     endif()" COMPONENT ${component})
 endfunction()
-_segvoronoi_install_strip(Runtime --strip-unneeded "${SEGVORONOI_SHARED_FILE}")
-_segvoronoi_install_strip(Development --strip-debug "${SEGVORONOI_STATIC_FILE}")
+_segvoronoi_install_strip(Runtime --strip-unneeded "${SEGVORONOI_SHARED_FILE}" "${CMAKE_INSTALL_LIBDIR}")
+_segvoronoi_install_strip(Development --strip-debug "${SEGVORONOI_STATIC_FILE}" "${CMAKE_INSTALL_LIBDIR}")
+if(SEGVORONOI_INSTALL_CLI)
+  _segvoronoi_install_strip(Cli --strip-unneeded "${SEGVORONOI_CLI_FILE}" "${CMAKE_INSTALL_BINDIR}")
+endif()
 
 set(SEGVORONOI_CMAKE_DIR "${CMAKE_INSTALL_LIBDIR}/cmake/segvoronoi")
 configure_package_config_file(

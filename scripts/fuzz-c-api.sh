@@ -45,16 +45,16 @@ if [ "$mode" = tsan-rust ]; then
   target="${CARGO_TARGET_DIR:-$repo/target}/tsan"
   RUSTFLAGS="-Zsanitizer=thread -Cunsafe-allow-abi-mismatch=sanitizer" \
     cargo +nightly build --quiet --lib --release --locked --target x86_64-unknown-linux-gnu \
-    --manifest-path "$repo/Cargo.toml" --target-dir "$target"
+    --manifest-path "$repo/capi/Cargo.toml" --target-dir "$target"
   # gcc's libtsan lacks symbols rustc's instrumentation calls (__tsan_memcpy):
   # link the C side against rustc's own TSan runtime instead.
   lib="$work/lib"
   mkdir -p "$lib"
-  cp "$target/x86_64-unknown-linux-gnu/release/libsegvoronoi.so" "$lib/"
+  cp "$target/x86_64-unknown-linux-gnu/release/libsegvoronoi_capi.so" "$lib/libsegvoronoi.so"
   soname="$(readelf -d "$lib/libsegvoronoi.so" | sed -n 's/.*Library soname: \[\(.*\)\]/\1/p')"
   [ -z "$soname" ] || ln -sf libsegvoronoi.so "$lib/$soname"
   rt="$(rustc +nightly --print sysroot)/lib/rustlib/x86_64-unknown-linux-gnu/lib/librustc-nightly_rt.tsan.a"
-  "$cc" "${strict[@]}" -O1 -fsanitize=thread -I"$repo/include" -c "$repo/c_tests/tsan_readers.c" -o "$work/tsan_readers.o"
+  "$cc" "${strict[@]}" -O1 -fsanitize=thread -I"$repo/capi/include" -c "$repo/c_tests/tsan_readers.c" -o "$work/tsan_readers.o"
   "$cc" "$work/tsan_readers.o" -o "$work/tsan_readers" -Wl,--whole-archive "$rt" -Wl,--no-whole-archive \
     -L"$lib" -lsegvoronoi -lm -pthread -ldl -lstdc++ -Wl,-rpath,"$lib"
   TSAN_OPTIONS="halt_on_error=1:exitcode=66 ${TSAN_OPTIONS:-}" "$work/tsan_readers" "${driver_args[@]}"

@@ -30,8 +30,8 @@ cargo fmt --all -- --check
 step "cargo test (workspace: library, C API via cc, header, properties, doctests)"
 cargo test --workspace --quiet
 
-step "fault injection (predicates perturbed or random)"
-cargo test --quiet --release --features fault-injection --test fault_injection
+step "fault injection (predicates perturbed or random; through Rust and through the C API)"
+cargo test --quiet --release -p segvoronoi -p segvoronoi-capi --features segvoronoi-capi/fault-injection --test fault_injection
 
 # The package steps build the library with cargo in one shared target
 # directory (CMake honours CARGO_TARGET_DIR), so the second compiles nothing.
@@ -46,7 +46,7 @@ if [ "${SEGVORONOI_TSAN_RUST:-0}" = 1 ]; then
   CARGO_TARGET_DIR="$package_target" bash scripts/fuzz-c-api.sh --tsan-rust
 fi
 
-step "examples/c: the C quick start through find_package and pkg-config; stripped install, Runtime component"
+step "examples/c: the C quick start through find_package and pkg-config, also fully static; stripped install, Runtime component; the program (SEGVORONOI_INSTALL_CLI)"
 CARGO_TARGET_DIR="$package_target" bash scripts/test-c-examples.sh
 
 step "Python package: pip install ./python into a fresh venv, pytest and doctests"

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Builds and runs examples/c, the README's C quick start, as an outside project
-# would: with CMake through find_package(segvoronoi) (shared and static) and
-# with make through pkg-config. On the way it checks the install itself:
-# `cmake --install --strip` strips both libraries, and the Runtime component
-# alone (the versioned library and its SONAME link) runs a program linked
-# against the shared library.
+# would: with CMake through find_package(segvoronoi) (shared, static and fully
+# static) and with make through pkg-config (shared and `cc -static`). On the
+# way it checks the install itself: `cmake --install --strip` strips both
+# libraries, the Runtime component alone (the versioned library and its SONAME
+# link) runs a program linked against the shared library, and with
+# -DSEGVORONOI_INSTALL_CLI=ON the program bin/segvoronoi (component Cli) reads
+# every file of examples/data.
 #
 #   bash scripts/test-c-examples.sh
 #
@@ -33,12 +35,13 @@ awk '/^### Offsets in C/ { s = 1 } s && /^```c$/ { c = 1; next } c && /^```$/ { 
 diff -u "$work/readme_offsets.c" "$repo/examples/c/offsets.c" \
   || fail "the C block under '### Offsets in C' in README.md and examples/c/offsets.c differ"
 
-echo "--- package: configure, build, install with --strip, and the Runtime component alone"
-cmake -S "$repo" -B "$work/build" -DCMAKE_BUILD_TYPE=Release >"$work/configure.log" 2>&1 \
+echo "--- package with the program: configure, build, install with --strip, the Runtime and Cli components alone"
+cmake -S "$repo" -B "$work/build" -DCMAKE_BUILD_TYPE=Release -DSEGVORONOI_INSTALL_CLI=ON >"$work/configure.log" 2>&1 \
   || { cat "$work/configure.log"; exit 1; }
 cmake --build "$work/build" -j "$jobs" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
 cmake --install "$work/build" --prefix "$work/prefix" --strip >/dev/null
 cmake --install "$work/build" --prefix "$work/runtime" --component Runtime >/dev/null
+cmake --install "$work/build" --prefix "$work/cli" --component Cli >/dev/null
 
 libdir="$(dirname "$(ls "$work"/prefix/lib*/libsegvoronoi.so)")"
 shared="$(ls "$libdir"/libsegvoronoi.so.*.*.*)"
@@ -60,6 +63,27 @@ expected_runtime="$(printf '%s\n' "$(basename "$shared")" "$soname" | sort | tr 
   || fail "the Runtime component holds '$runtime_files', expected '$expected_runtime'"
 echo "stripped; Runtime component: $runtime_files"
 
+echo "--- bin/segvoronoi: stripped, alone in the Cli component, reads every file of examples/data"
+program="$work/prefix/bin/segvoronoi"
+readelf -S "$program" >"$work/program_sections.txt"
+! grep -q '\.symtab' "$work/program_sections.txt" || fail "$program is not stripped"
+cli_files="$(cd "$work/cli" && find . ! -type d | sort | tr '\n' ' ')"
+[ "$cli_files" = "./bin/segvoronoi " ] || fail "the Cli component holds '$cli_files', expected './bin/segvoronoi '"
+"$program" --version | grep -qx "segvoronoi $(sed -n 's/^version = "\(.*\)"/\1/p' "$repo/Cargo.toml" | head -n1)" \
+  || fail "segvoronoi --version: $("$program" --version)"
+mkdir "$work/cli-out"
+for input in "$repo"/examples/data/*; do
+  name="$(basename "$input")"
+  case "$name" in README.md) continue ;; esac
+  out="$work/cli-out/$name"
+  "$program" "$input" --stats --medial-axis "$out.axis.geojson" --offset -1 --offsets "$out.offsets.wkt" --svg "$out.svg" \
+    2>"$out.stats" || { cat "$out.stats" >&2; fail "segvoronoi $name failed"; }
+  grep -q '^segment_sites=[1-9]' "$out.stats" || fail "segvoronoi $name: no segment sites in --stats"
+  grep -q '"MultiLineString"' "$out.axis.geojson" || fail "segvoronoi $name: no GeoJSON medial axis"
+  tail -c 16 "$out.svg" | grep -q '</svg>' || fail "segvoronoi $name: the SVG is not complete"
+done
+echo "segvoronoi read $(ls "$work/cli-out"/*.svg | wc -l) files of examples/data"
+
 mkdir "$work/example"
 cp "$repo"/examples/c/{quickstart.c,medial_axis.c,offsets.c,CMakeLists.txt,Makefile} "$work/example/"
 
@@ -71,10 +95,19 @@ cmake --build "$work/example-cmake" -j "$jobs" >"$work/example-build.log" 2>&1 \
   || { cat "$work/example-build.log"; exit 1; }
 "$work/example-cmake/quickstart" >"$work/out_cmake_shared.txt"
 "$work/example-cmake/quickstart_static" >"$work/out_cmake_static.txt"
+[ -x "$work/example-cmake/quickstart_fully_static" ] || fail "examples/c found no static libc: quickstart_fully_static not built"
+"$work/example-cmake/quickstart_fully_static" >"$work/out_cmake_fully_static.txt"
 
-echo "--- examples/c through make and pkg-config"
+echo "--- examples/c through make and pkg-config, shared and fully static (cc -static)"
 make -s -C "$work/example" PKG_CONFIG_PATH="$libdir/pkgconfig" CFLAGS="-O2 $strict" >/dev/null
 "$work/example/quickstart" >"$work/out_pkg_config.txt" # found through its RUNPATH
+make -s -C "$work/example" PKG_CONFIG_PATH="$libdir/pkgconfig" CFLAGS="-O2 $strict" quickstart-static \
+  >"$work/static-link.log" 2>&1 || { cat "$work/static-link.log"; fail "cc -static through pkg-config --static failed"; }
+"$work/example/quickstart-static" >"$work/out_pkg_config_fully_static.txt"
+for program in "$work/example/quickstart-static" "$work/example-cmake/quickstart_fully_static"; do
+  readelf -lW "$program" >"$work/program_headers.txt"
+  ! grep -q 'INTERP\|DYNAMIC' "$work/program_headers.txt" || fail "$program is not fully static"
+done
 
 # The three circumcentres of the four points, whatever their numbering.
 cat >"$work/expected.txt" <<'EOF'
@@ -116,4 +149,4 @@ for program in "$work/example-cmake/quickstart" "$work/example/quickstart"; do
   LD_LIBRARY_PATH="$runtime_libdir" "$program" | cmp -s - "$work/out_cmake_shared.txt" \
     || fail "$program does not run against the Runtime component alone"
 done
-echo "--- examples/c: all passed (CMake shared and static, pkg-config, Runtime component)"
+echo "--- examples/c: all passed (CMake shared, static and fully static, pkg-config shared and fully static, Runtime component, the program)"

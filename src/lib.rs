@@ -43,18 +43,21 @@
 //!   topology-oriented insertion of points and segments.
 //! - `query`: iteration over vertices, edges and cells, canonical topology,
 //!   the domain, the medial axis, offsets.
-//! - `ffi`: the C API (`include/segvoronoi.h`), which only converts and
-//!   delegates.
+//!
+//! The C API (`segvoronoi.h`, `libsegvoronoi.so` and `.a`) is the crate
+//! `segvoronoi-capi` in the repository's `capi/`, built on this one's public
+//! API, so a Rust dependant builds no C artefact.
 
-// An undocumented public item (and so an undocumented C export) fails the build.
+// An undocumented public item fails the build.
 #![deny(missing_docs)]
+// The `unsafe` of the C API is in its own crate (`capi/`).
+#![forbid(unsafe_code)]
 
 #[doc(hidden)]
 pub mod boost_text;
 mod construct;
 mod diagram;
 mod error;
-pub mod ffi;
 pub mod geometry;
 mod query;
 #[doc(hidden)]

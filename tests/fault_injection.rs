@@ -9,7 +9,7 @@
 mod common;
 
 use common::*;
-use segvoronoi::fault_injection::{set_fault_mode, set_restart_budget, FaultMode};
+use segvoronoi::fault_injection::{set_fault_mode, FaultMode};
 use segvoronoi::{Builder, Diagram, Error, ErrorKind};
 
 /// `builder.build()` under faults, held to the contract: a diagram that
@@ -211,30 +211,6 @@ fn shared_endpoint_inputs() -> [PointsAndSegments; 4] {
     ]
 }
 
-/// Sets this thread's restart budget for as long as it lives.
-struct RestartBudget;
-
-impl RestartBudget {
-    fn set(restarts: usize) -> RestartBudget {
-        set_restart_budget(restarts);
-        RestartBudget
-    }
-}
-
-impl Drop for RestartBudget {
-    fn drop(&mut self) {
-        set_restart_budget(16);
-    }
-}
-
-/// Closed chains around a point at the centre of a lattice square (on the
-/// circle of its four corners, equidistant from its four sides) and one
-/// elsewhere: the ties make lying numbers misplace the points against the
-/// chains, so several seeds need a restart (`construct::restart::insert_all_from`).
-fn closed_chains() -> (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>) {
-    (vec![[0.5, 0.5], [2.3, 1.7]], unit_segment_lattice(6))
-}
-
 /// With too few restarts allowed, the closed chains that need them give up
 /// with `ErrorKind::Internal`, naming the segment that found no path,
 /// instead of handing out the invalid last attempt; the builder is
@@ -278,53 +254,6 @@ fn exhausted_restarts_give_internal_not_an_invalid_diagram() {
     let d = b.build().unwrap();
     d.validate().unwrap();
     assert_eq!(d.stats().input_segments, segs.len());
-}
-
-/// The same through the C API: `SEGVORONOI_STATUS_INTERNAL`, `*out`
-/// cleared, the message from `segvoronoi_builder_last_error`; the builder
-/// still builds.
-#[test]
-fn exhausted_restarts_through_the_c_api() {
-    use segvoronoi::ffi::*;
-    use std::ffi::CStr;
-
-    let _budget = RestartBudget::set(0);
-    let (pts, segs) = closed_chains();
-    let flat: Vec<f64> = pts.iter().flatten().copied().collect();
-    let flat_segs: Vec<f64> = segs.iter().flatten().flatten().copied().collect();
-    let mut gave_up = 0;
-    for seed in 0..32 {
-        // SAFETY: a live builder, buffers of the stated lengths, out written by build.
-        unsafe {
-            let builder = segvoronoi_builder_new();
-            assert!(!builder.is_null());
-            assert_eq!(segvoronoi_builder_add_points(builder, flat.as_ptr(), pts.len()), segvoronoi_status::Ok);
-            assert_eq!(segvoronoi_builder_add_segments(builder, flat_segs.as_ptr(), segs.len()), segvoronoi_status::Ok);
-            let mut out = std::ptr::NonNull::<segvoronoi_diagram>::dangling().as_ptr();
-            set_fault_mode(FaultMode::Noise(1e-9), seed);
-            let status = segvoronoi_builder_build(builder, &mut out);
-            set_fault_mode(FaultMode::Off, 0);
-            let message = CStr::from_ptr(segvoronoi_builder_last_error(builder)).to_str().unwrap().to_owned();
-            if status == segvoronoi_status::Ok {
-                assert_eq!(segvoronoi_diagram_validate(out), segvoronoi_status::Ok);
-                assert_eq!(message, "");
-            } else {
-                gave_up += 1;
-                assert_eq!(status, segvoronoi_status::Internal, "{message}");
-                assert!(out.is_null(), "*out not cleared");
-                assert!(message.starts_with("construction could not complete: segment "), "{message}");
-                assert!(message.ends_with("; please report this input"), "{message}");
-                assert_eq!(segvoronoi_builder_segment_count(builder), segs.len());
-                assert_eq!(segvoronoi_builder_point_count(builder), pts.len());
-                assert_eq!(segvoronoi_builder_build(builder, &mut out), segvoronoi_status::Ok);
-                assert_eq!(segvoronoi_diagram_validate(out), segvoronoi_status::Ok);
-                assert_eq!(CStr::from_ptr(segvoronoi_builder_last_error(builder)).to_bytes(), b"");
-            }
-            segvoronoi_diagram_free(out);
-            segvoronoi_builder_free(builder);
-        }
-    }
-    assert!(gave_up > 0, "no seed needed a restart: the test proves nothing");
 }
 
 /// Polygons with holes built with lying arithmetic: the domain and the

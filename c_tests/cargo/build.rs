@@ -4,11 +4,11 @@
 fn main() {
     println!("cargo:rerun-if-changed=../test_c_api.c");
     println!("cargo:rerun-if-changed=../misuse.c");
-    println!("cargo:rerun-if-changed=../../include/segvoronoi.h");
+    println!("cargo:rerun-if-changed=../../capi/include/segvoronoi.h");
     cc::Build::new()
         .file("../test_c_api.c")
         .file("../misuse.c")
-        .include("../../include")
+        .include("../../capi/include")
         .define("SEGVORONOI_C_TESTS_NO_MAIN", None)
         .std("c99")
         .warnings(true)

@@ -14,7 +14,7 @@
 //! The rooms, from the ground up; each imports only the ones below it:
 //! - `arithmetic`: the numbers (expansions, double-double, big floats,
 //!   certified balls, the radical tower, the `Real` trait); no geometry.
-//! - the basics, in this folder: [`point`], [`site`], [`scale`] (the
+//! - the basics, in this folder: [`point`], [`site`], `scale` (the
 //!   power-of-two normalisation), `fault` (fault injection).
 //! - [`predicates`]: exact signs on points, and rankings for a new point.
 //! - [`solvers`]: Voronoi vertices from their sites; `input`: the exact
@@ -29,8 +29,7 @@ pub(crate) mod fault;
 pub(crate) mod input;
 pub mod point;
 pub mod predicates;
-#[doc(hidden)] // the CLI's picture normalises with it; not stable API
-pub mod scale;
+pub(crate) mod scale;
 pub(crate) mod segments;
 pub mod site;
 pub mod solvers;

@@ -310,7 +310,7 @@ impl Diagram {
     /// count stops at the first piece that takes it past `limit` (then it
     /// is above `limit`, and the later pieces are not looked at), so that
     /// a tolerance that asks for too many points costs no more than `limit`.
-    pub(crate) fn chain_sample_len(&self, chain: &Chain, tolerance: f64, limit: usize) -> Option<usize> {
+    pub fn chain_sample_len(&self, chain: &Chain, tolerance: f64, limit: usize) -> Option<usize> {
         let mut total = 0usize;
         for (k, piece) in chain.pieces.iter().enumerate() {
             // each piece after the first starts where the one before ended
@@ -327,12 +327,7 @@ impl Diagram {
     /// last first), allocating nothing; `None` where `sample_chain` gives
     /// `None`, found before anything is emitted only when
     /// `chain_sample_len` said so first.
-    pub(crate) fn for_each_chain_sample(
-        &self,
-        chain: &Chain,
-        tolerance: f64,
-        mut emit: impl FnMut(usize, [f64; 3]),
-    ) -> Option<usize> {
+    pub fn for_each_chain_sample(&self, chain: &Chain, tolerance: f64, mut emit: impl FnMut(usize, [f64; 3])) -> Option<usize> {
         let mut base = 0usize;
         for (k, piece) in chain.pieces.iter().enumerate() {
             let sampled = self.sampled_piece(piece, tolerance)?;

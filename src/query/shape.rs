@@ -159,7 +159,7 @@ impl Diagram {
     /// order, allocating nothing (the C API counts and writes into the
     /// caller's buffer this way); `None`, and no call, where
     /// `edge_polyline` gives `None`.
-    pub(crate) fn for_each_edge_polyline_point(&self, id: EdgeId, tolerance: f64, emit: impl FnMut(Point)) -> Option<()> {
+    pub fn for_each_edge_polyline_point(&self, id: EdgeId, tolerance: f64, emit: impl FnMut(Point)) -> Option<()> {
         if tolerance.is_nan() || tolerance <= 0.0 {
             return None;
         }

@@ -288,3 +288,30 @@ pub fn cut_rings(rings: &[Vec<[f64; 2]>], share: f64, nudge: bool, seed: u64) ->
     let straight = Straight { share, min_cuts: 1, max_cuts: 3, nudge, snap_bits: 36 };
     cut_rings(rings, &straight, &mut variant_rng(seed))
 }
+
+/// Sets this thread's restart budget for as long as it lives.
+#[cfg(feature = "fault-injection")]
+pub struct RestartBudget;
+
+#[cfg(feature = "fault-injection")]
+impl RestartBudget {
+    pub fn set(restarts: usize) -> RestartBudget {
+        segvoronoi::fault_injection::set_restart_budget(restarts);
+        RestartBudget
+    }
+}
+
+#[cfg(feature = "fault-injection")]
+impl Drop for RestartBudget {
+    fn drop(&mut self) {
+        segvoronoi::fault_injection::set_restart_budget(16);
+    }
+}
+
+/// Closed chains around a point at the centre of a lattice square (on the
+/// circle of its four corners, equidistant from its four sides) and one
+/// elsewhere: the ties make lying numbers misplace the points against the
+/// chains, so several seeds need a restart (`construct::restart::insert_all_from`).
+pub fn closed_chains() -> (Vec<[f64; 2]>, Vec<[[f64; 2]; 2]>) {
+    (vec![[0.5, 0.5], [2.3, 1.7]], unit_segment_lattice(6))
+}

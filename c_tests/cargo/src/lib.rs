@@ -1,4 +1,5 @@
 //! Carrier crate for the C API tests in `c_tests/test_c_api.c`; see
-//! `tests/c_api.rs`. Re-exports segvoronoi so the test links its C symbols.
+//! `tests/c_api.rs`. Re-exports segvoronoi-capi so the test links its C
+//! symbols.
 
-pub use segvoronoi;
+pub use segvoronoi_capi;

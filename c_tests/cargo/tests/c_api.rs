@@ -9,9 +9,9 @@ extern "C" {
 
 #[test]
 fn c_api_tests_pass() {
-    // Keeps the segvoronoi rlib, and with it the exported C functions the C
-    // code calls, in the link.
-    let version = segvoronoi_c_tests::segvoronoi::ffi::segvoronoi_version();
+    // Keeps the segvoronoi-capi rlib, and with it the exported C functions
+    // the C code calls, in the link.
+    let version = segvoronoi_c_tests::segvoronoi_capi::segvoronoi_version();
     assert!(!version.is_null());
     // SAFETY: a plain C function with no arguments.
     let failures = unsafe { segvoronoi_run_c_tests() };
@@ -20,7 +20,7 @@ fn c_api_tests_pass() {
 
 #[test]
 fn misuse_table_passes() {
-    assert!(!segvoronoi_c_tests::segvoronoi::ffi::segvoronoi_version().is_null());
+    assert!(!segvoronoi_c_tests::segvoronoi_capi::segvoronoi_version().is_null());
     // SAFETY: a plain C function with no arguments.
     let failures = unsafe { segvoronoi_run_misuse_tests() };
     assert_eq!(failures, 0, "misuse checks failed; see stderr");

@@ -139,7 +139,7 @@ impl OffsetLoop {
     /// How many points `polyline(tolerance)` has (saturating at
     /// `usize::MAX`), without making them; `None` when `tolerance` is not
     /// positive.
-    pub(crate) fn polyline_len(&self, tolerance: f64) -> Option<usize> {
+    pub fn polyline_len(&self, tolerance: f64) -> Option<usize> {
         if tolerance.is_nan() || tolerance <= 0.0 {
             return None;
         }
@@ -149,7 +149,7 @@ impl OffsetLoop {
     /// Calls `emit` with each point of `polyline(tolerance)`, in order,
     /// allocating nothing; `None` (and no call) when `tolerance` is not
     /// positive.
-    pub(crate) fn for_each_polyline_point(&self, tolerance: f64, mut emit: impl FnMut(Point)) -> Option<()> {
+    pub fn for_each_polyline_point(&self, tolerance: f64, mut emit: impl FnMut(Point)) -> Option<()> {
         if tolerance.is_nan() || tolerance <= 0.0 {
             return None;
         }

@@ -4,7 +4,7 @@
 use super::diagram::{segvoronoi_diagram, with_diagram};
 use super::out::{check_polyline_len, require_buffer, versioned, write_indexed, write_versioned};
 use super::plumbing::{fail, fail_with, guard, guard_or, out_of_range, require_non_null, segvoronoi_status, try_box};
-use crate::{Offset, OffsetLoop, OffsetPiece};
+use segvoronoi::{Offset, OffsetLoop, OffsetPiece};
 
 /// `segvoronoi_loop_piece.kind` of a straight piece, parallel to a
 /// segment site.

@@ -1,6 +1,8 @@
-//! The C API. Declared in `include/segvoronoi.h`, which cbindgen generates
-//! from this module (`tests/header.rs` regenerates it and fails on any
-//! difference).
+//! The C API of segvoronoi. Declared in `include/segvoronoi.h`, which
+//! cbindgen generates from this crate (`tests/header.rs` regenerates it and
+//! fails on any difference). Built on the library's public API only; the
+//! CMake package at the repository's root links this crate's staticlib into
+//! `libsegvoronoi.a` and `libsegvoronoi.so` and installs them.
 //!
 //! Conventions, as in every export below:
 //! - names are `segvoronoi_<type>_<verb>`; handles are opaque;
@@ -26,8 +28,11 @@
 //!   threads may read one at once. A medial axis shares its diagram (an
 //!   `Arc`). A builder is used by one thread at a time.
 //!
-//! This is the only module with `unsafe` code; it converts and delegates.
+//! The library forbids `unsafe` code: all of it is here, and this crate
+//! converts and delegates.
 
+// An undocumented public item (and so an undocumented C export) fails the build.
+#![deny(missing_docs)]
 #![allow(non_camel_case_types)]
 #![allow(clippy::missing_safety_doc)]
 

@@ -11,7 +11,7 @@ use super::out::{
 };
 use super::plumbing::{fail, guard, guard_or, out_of_range, require_non_null, segvoronoi_status, try_box};
 use super::SEGVORONOI_MAX_POLYLINE_POINTS;
-use crate::{Diagram, EdgeEnd, MedialAxis, MedialAxisFilter};
+use segvoronoi::{Diagram, EdgeEnd, MedialAxis, MedialAxisFilter};
 
 /// A medial axis (`segvoronoi_diagram_medial_axis`). Opaque and immutable.
 /// Free it with `segvoronoi_medial_axis_free`.
@@ -165,7 +165,7 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_free(axis: *mut segvoronoi_media
 fn with_chain(
     axis: *const segvoronoi_medial_axis,
     chain: usize,
-    f: impl FnOnce(&segvoronoi_medial_axis, &crate::Chain) -> segvoronoi_status,
+    f: impl FnOnce(&segvoronoi_medial_axis, &segvoronoi::Chain) -> segvoronoi_status,
 ) -> segvoronoi_status {
     require_non_null!(axis);
     guard(|| {
@@ -185,7 +185,7 @@ fn with_piece(
     axis: *const segvoronoi_medial_axis,
     chain: usize,
     piece: usize,
-    f: impl FnOnce(&Diagram, &crate::Piece) -> segvoronoi_status,
+    f: impl FnOnce(&Diagram, &segvoronoi::Piece) -> segvoronoi_status,
 ) -> segvoronoi_status {
     with_chain(axis, chain, |axis, c| match c.pieces.get(piece) {
         Some(p) => f(&axis.diagram, p),

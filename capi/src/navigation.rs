@@ -7,7 +7,7 @@
 use super::diagram::{segvoronoi_diagram, site_id, with_diagram};
 use super::out::{require_buffer, write_buffer, write_out};
 use super::plumbing::{out_of_range, require_non_null, segvoronoi_status};
-use crate::{Diagram, HalfEdge, VertexId};
+use segvoronoi::{Diagram, HalfEdge, VertexId};
 
 /// Runs `f` on half-edge `h` of the diagram and writes its answer to
 /// `*out`: `OUT_OF_RANGE` past the half-edges (`2 * edge_count`).

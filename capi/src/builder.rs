@@ -7,8 +7,8 @@ use super::out::{require_buffer, write_buffer};
 use super::plumbing::{
     fail, fail_with, guard, guard_or, last_error_string, require_non_null, segvoronoi_status, set_last_error, try_box,
 };
-use crate::error::Error;
-use crate::{Builder, MAX_POINTS};
+use segvoronoi::Error;
+use segvoronoi::{Builder, MAX_POINTS};
 
 /// Collects input sites. Opaque. Create with `segvoronoi_builder_new`, free
 /// with `segvoronoi_builder_free`.
@@ -115,7 +115,8 @@ pub unsafe extern "C" fn segvoronoi_builder_add_points(
     // SAFETY: passed on from the caller (see `add_flat`).
     unsafe {
         add_flat::<2>(builder, xy, count, Builder::reserve_points, |b, c| {
-            b.add_points(c.chunks_exact(2).map(|c| [c[0], c[1]])).map(|_| ())
+            let r = b.inner.add_points(c.chunks_exact(2).map(|c| [c[0], c[1]]));
+            b.record(r.map(|_| ()))
         })
     }
 }
@@ -159,7 +160,8 @@ pub unsafe extern "C" fn segvoronoi_builder_add_segments(
     // SAFETY: passed on from the caller (see `add_flat`).
     unsafe {
         add_flat::<4>(builder, xy, count, Builder::reserve_segments, |b, c| {
-            b.add_segments(c.chunks_exact(4).map(|c| [[c[0], c[1]], [c[2], c[3]]])).map(|_| ())
+            let r = b.inner.add_segments(c.chunks_exact(4).map(|c| [[c[0], c[1]], [c[2], c[3]]]));
+            b.record(r.map(|_| ()))
         })
     }
 }
@@ -214,18 +216,15 @@ pub unsafe extern "C" fn segvoronoi_builder_add_polygon(
         add_flat::<2>(builder, xy, total, Builder::reserve_segments, |b, coords| {
             let mut rings: Vec<Vec<[f64; 2]>> = Vec::new();
             if rings.try_reserve(lengths.len()).is_err() {
-                return Err(Error::new(
-                    crate::ErrorKind::OutOfMemory,
-                    format!("out of memory: no room for {} rings", lengths.len()),
-                    Vec::new(),
-                ));
+                return b.refuse(segvoronoi_status::OutOfMemory, &format!("out of memory: no room for {} rings", lengths.len()));
             }
             let mut at = 0;
             for &n in lengths {
                 rings.push(coords[2 * at..2 * (at + n)].chunks_exact(2).map(|c| [c[0], c[1]]).collect());
                 at += n;
             }
-            b.add_polygon(&rings).map(|_| ())
+            let r = b.inner.add_polygon(&rings);
+            b.record(r.map(|_| ()))
         })
     }
 }
@@ -246,7 +245,8 @@ pub unsafe extern "C" fn segvoronoi_builder_add_polyline(
     unsafe {
         add_flat::<2>(builder, xy, count, Builder::reserve_segments, |b, c| {
             let points: Vec<[f64; 2]> = c.chunks_exact(2).map(|c| [c[0], c[1]]).collect();
-            b.add_polyline(&points).map(|_| ())
+            let r = b.inner.add_polyline(&points);
+            b.record(r.map(|_| ()))
         })
     }
 }
@@ -263,7 +263,7 @@ unsafe fn add_flat<const STRIDE: usize>(
     xy: *const f64,
     count: usize,
     reserve: impl FnOnce(&mut Builder, usize) -> Result<(), Error>,
-    add: impl FnOnce(&mut Builder, &[f64]) -> Result<(), Error>,
+    add: impl FnOnce(&mut segvoronoi_builder, &[f64]) -> segvoronoi_status,
 ) -> segvoronoi_status {
     require_non_null!(builder);
     guard(|| {
@@ -286,8 +286,7 @@ unsafe fn add_flat<const STRIDE: usize>(
         // (the caller's promise), and that many doubles span at most
         // isize::MAX bytes (checked above).
         let coords: &[f64] = if count == 0 { &[] } else { unsafe { std::slice::from_raw_parts(xy, doubles) } };
-        let r = add(&mut b.inner, coords);
-        b.record(r)
+        add(b, coords)
     })
 }
 

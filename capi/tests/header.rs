@@ -29,7 +29,7 @@ fn header_is_up_to_date() {
     let committed = std::fs::read_to_string(&path).unwrap_or_default();
     assert!(
         committed == generated,
-        "include/segvoronoi.h is stale: run `SEGVORONOI_BLESS=1 cargo test --test header` and commit it"
+        "include/segvoronoi.h is stale: run `SEGVORONOI_BLESS=1 cargo test -p segvoronoi-capi --test header` and commit it"
     );
 }
 
@@ -45,14 +45,14 @@ fn header_versions_match_cargo_toml() {
     for line in expect {
         assert!(header.contains(&line), "header lacks `{line}`");
     }
-    let v = unsafe { std::ffi::CStr::from_ptr(segvoronoi::ffi::segvoronoi_version()) };
+    let v = unsafe { std::ffi::CStr::from_ptr(segvoronoi_capi::segvoronoi_version()) };
     assert_eq!(v.to_str().unwrap(), env!("CARGO_PKG_VERSION"));
     let part = |s: &str| s.parse::<u32>().unwrap();
     let number = part(env!("CARGO_PKG_VERSION_MAJOR")) * 10000
         + part(env!("CARGO_PKG_VERSION_MINOR")) * 100
         + part(env!("CARGO_PKG_VERSION_PATCH"));
-    assert_eq!(segvoronoi::ffi::segvoronoi_version_number(), number);
-    assert_eq!(segvoronoi::ffi::SEGVORONOI_VERSION_NUMBER, number);
+    assert_eq!(segvoronoi_capi::segvoronoi_version_number(), number);
+    assert_eq!(segvoronoi_capi::SEGVORONOI_VERSION_NUMBER, number);
     assert!(header.contains("#define SEGVORONOI_VERSION_NUMBER ("), "header lacks SEGVORONOI_VERSION_NUMBER");
 }
 

@@ -7,7 +7,7 @@
 use super::diagram::{count, segvoronoi_diagram, with_diagram};
 use super::out::{require_buffer, write_buffer, write_out};
 use super::plumbing::{fail, out_of_range, require_non_null, segvoronoi_status};
-use crate::{Diagram, EdgeId, Location, Point, SiteId, VertexId};
+use segvoronoi::{Diagram, EdgeId, Location, Point, SiteId, VertexId};
 
 /// In the domain's interior.
 pub const SEGVORONOI_LOCATION_INSIDE: u32 = 0;

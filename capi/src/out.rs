@@ -78,7 +78,7 @@ macro_rules! versioned {
         // SAFETY: `struct_size: usize` is the first field (checked below),
         // the struct is `#[repr(C)]` (declared with it beside this call),
         // and FIRST_SIZE ends at one of its fields.
-        unsafe impl $crate::ffi::out::Versioned for $t {
+        unsafe impl $crate::out::Versioned for $t {
             const FIRST_SIZE: usize = std::mem::offset_of!($t, $last) + std::mem::size_of::<$last_type>();
         }
         const _: () = assert!(std::mem::offset_of!($t, struct_size) == 0);
@@ -148,9 +148,9 @@ pub(super) unsafe fn read_versioned<T: FromAnyBytes + Default>(p: *const T) -> R
 /// `buffer` is non-NULL or `capacity` is 0.
 macro_rules! require_buffer {
     ($buffer:expr, $capacity:expr, $count:expr) => {
-        $crate::ffi::plumbing::require_non_null!($count);
+        $crate::plumbing::require_non_null!($count);
         if $capacity > 0 {
-            $crate::ffi::plumbing::require_non_null!($buffer);
+            $crate::plumbing::require_non_null!($buffer);
         }
     };
 }

@@ -5,7 +5,7 @@
 use super::diagram::{count, segvoronoi_diagram, with_diagram};
 use super::out::{require_buffer, write_buffer, write_out};
 use super::plumbing::{out_of_range, require_non_null, segvoronoi_status};
-use crate::Diagram;
+use segvoronoi::Diagram;
 
 /// The number of segments the diagram was built from: the pieces of a split
 /// input, else the input segments. 0 for NULL.

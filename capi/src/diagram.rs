@@ -4,9 +4,11 @@ use std::ffi::c_char;
 use std::sync::Arc;
 
 use super::out::{require_buffer, versioned, write_buffer, write_out, write_versioned};
-use super::plumbing::{fail, guard, guard_or, into_c_string, out_of_range, require_non_null, segvoronoi_status, try_box};
-use crate::query::ZERO_LENGTH;
-use crate::{Diagram, EdgeEnd, EdgeId, SiteId, TopologyOptions, VertexId};
+use super::plumbing::{
+    fail, guard, guard_or, into_c_string, out_of_range, require_non_null, segvoronoi_status, try_box, unknown_variant,
+};
+use segvoronoi::ZERO_LENGTH;
+use segvoronoi::{Diagram, EdgeEnd, EdgeId, Site, SiteId, TopologyOptions, VertexId};
 
 /// Marks an edge end at infinity in `segvoronoi_edge_end::vertex`.
 pub const SEGVORONOI_NO_VERTEX: u32 = u32::MAX;
@@ -273,8 +275,11 @@ pub unsafe extern "C" fn segvoronoi_diagram_site(
         let Some(site) = site_id(d, index).and_then(|s| d.site(s)) else {
             return out_of_range("site", index, d.site_count());
         };
-        let kind = if site.is_point() { SEGVORONOI_SITE_POINT } else { SEGVORONOI_SITE_SEGMENT };
-        let [a, b] = site.ends();
+        let (kind, [a, b]) = match site {
+            Site::Point(p) => (SEGVORONOI_SITE_POINT, [p, p]),
+            Site::Segment { a, b } => (SEGVORONOI_SITE_SEGMENT, [a, b]),
+            _ => return unknown_variant("a site kind"),
+        };
         write_versioned(out, segvoronoi_site { kind, x: a.x, y: a.y, x2: b.x, y2: b.y, ..Default::default() })
     })
 }
@@ -300,7 +305,7 @@ pub(super) fn site_id(d: &Diagram, index: usize) -> Option<SiteId> {
 fn with_cell(
     d: *const segvoronoi_diagram,
     site: usize,
-    f: impl FnOnce(crate::Cell<'_>) -> segvoronoi_status,
+    f: impl FnOnce(segvoronoi::Cell<'_>) -> segvoronoi_status,
 ) -> segvoronoi_status {
     with_diagram(d, |d| match site_id(d, site).and_then(|s| d.cell(s)) {
         Some(cell) => f(cell),
@@ -518,7 +523,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_nearest_site(
 ) -> segvoronoi_status {
     require_non_null!(out_site);
     with_diagram(diagram, |d| {
-        let p = crate::Point::new(x, y);
+        let p = segvoronoi::Point::new(x, y);
         if !p.is_finite() {
             return fail(segvoronoi_status::InvalidCoordinate, format!("the query point ({x}, {y}) is not finite"));
         }
@@ -609,10 +614,9 @@ pub unsafe extern "C" fn segvoronoi_diagram_topology(
         return fail(segvoronoi_status::InvalidArgument, format!("unknown flag bits {unknown:#x} in `flags`"));
     }
     with_diagram(diagram, |d| {
-        let options = TopologyOptions {
-            voronoi_pairs: flags & SEGVORONOI_TOPOLOGY_VORONOI_PAIRS != 0,
-            zero_length_tolerance: (flags & SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE != 0).then_some(ZERO_LENGTH),
-        };
+        let options = TopologyOptions::default()
+            .with_voronoi_pairs(flags & SEGVORONOI_TOPOLOGY_VORONOI_PAIRS != 0)
+            .with_zero_length_tolerance((flags & SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE != 0).then_some(ZERO_LENGTH));
         let (ptr, len) = into_c_string(d.topology(options));
         if !length.is_null() {
             write_out(length, len);

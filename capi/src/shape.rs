@@ -5,8 +5,8 @@
 use super::diagram::{segvoronoi_diagram, with_diagram};
 use super::offset::not_positive;
 use super::out::{check_polyline_len, require_buffer, versioned, write_indexed, write_out, write_versioned};
-use super::plumbing::{fail, out_of_range, require_non_null, segvoronoi_status};
-use crate::{Diagram, EdgeId, EdgeShape};
+use super::plumbing::{fail, out_of_range, require_non_null, segvoronoi_status, unknown_variant};
+use segvoronoi::{Diagram, EdgeId, EdgeShape};
 
 /// `segvoronoi_edge_shape.kind` of a straight edge: between two points,
 /// between two segments, or between a segment and one of its endpoints.
@@ -73,6 +73,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_shape(
                 ..Default::default()
             },
             EdgeShape::Line => segvoronoi_edge_shape { kind: SEGVORONOI_EDGE_LINE, ..Default::default() },
+            _ => return unknown_variant("an edge shape"),
         };
         write_versioned(out, shape)
     })

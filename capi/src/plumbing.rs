@@ -29,7 +29,7 @@ use std::ffi::{c_char, c_int, CStr, CString};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::Once;
 
-use crate::error::{Error, ErrorKind};
+use segvoronoi::{Error, ErrorKind};
 
 /// Result of every fallible call. The numbers are stable across versions.
 #[repr(C)]
@@ -108,6 +108,8 @@ impl From<&Error> for segvoronoi_status {
             ErrorKind::InvalidPolygon => segvoronoi_status::InvalidPolygon,
             ErrorKind::InvalidArgument => segvoronoi_status::InvalidArgument,
             ErrorKind::OutOfMemory => segvoronoi_status::OutOfMemory,
+            // `#[non_exhaustive]`: see `unknown_variant`.
+            _ => segvoronoi_status::Internal,
         }
     }
 }
@@ -156,6 +158,16 @@ pub(crate) fn fail(status: segvoronoi_status, message: impl AsRef<str>) -> segvo
 /// Records a Rust error (its message) and returns its status.
 pub(crate) fn fail_with(error: &Error) -> segvoronoi_status {
     fail(segvoronoi_status::from(error), error.message())
+}
+
+/// `INTERNAL` for a value of one of the library's `#[non_exhaustive]` enums
+/// (`Site`, `EdgeShape`) that this C API has no name for. It does not
+/// happen: this crate is built with the library of its own commit (a path
+/// dependency; it is not published), and the change that adds a variant
+/// gives it its C name; the arm is what a match outside the library's crate
+/// needs.
+pub(crate) fn unknown_variant(what: &str) -> segvoronoi_status {
+    fail(segvoronoi_status::Internal, format!("{what} unknown to this version of the C API"))
 }
 
 /// `OUT_OF_RANGE` with a message naming the index and the valid range.
@@ -250,8 +262,8 @@ macro_rules! require_non_null {
     ($($p:expr),+) => {
         $(
             if $p.is_null() {
-                return $crate::ffi::plumbing::fail(
-                    $crate::ffi::plumbing::segvoronoi_status::NullArgument,
+                return $crate::plumbing::fail(
+                    $crate::plumbing::segvoronoi_status::NullArgument,
                     concat!("argument `", stringify!($p), "` is NULL"),
                 );
             }
