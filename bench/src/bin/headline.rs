@@ -33,6 +33,8 @@
 #[path = "../cgal_split.rs"]
 #[cfg(has_cgal_split)]
 mod cgal_split;
+#[path = "../child.rs"]
+mod child;
 #[path = "../contenders.rs"]
 #[allow(dead_code)]
 mod contenders;
@@ -50,15 +52,17 @@ mod roads;
 mod segments;
 #[path = "../sheet.rs"]
 mod sheet;
+#[path = "../text.rs"]
+mod text;
 
-use std::io::Read;
 use std::path::{Path, PathBuf};
-use std::process::{exit, Command, Stdio};
+use std::process::{exit, Command};
 use std::time::{Duration, Instant};
 
 use contenders::Contender;
 use segments::Seg;
 use segvoronoi::Builder;
+use text::thousands;
 
 /// The peers, in the table's column order (ours first).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -311,18 +315,6 @@ fn scaled(n: usize, options: &Options) -> usize {
     ((n as f64 * options.scale).round() as usize).max(100)
 }
 
-fn thousands(n: usize) -> String {
-    let s = n.to_string();
-    let mut out = String::new();
-    for (i, ch) in s.chars().enumerate() {
-        if i > 0 && (s.len() - i) % 3 == 0 {
-            out.push(',');
-        }
-        out.push(ch);
-    }
-    out
-}
-
 /// Makes the row's input (a file for the segment workloads) and its label.
 fn prepare(workload: Workload, options: &Options, dir: &Path) -> Result<Prepared, String> {
     let file = |name: &str, segments: &[Seg]| -> Result<String, String> {
@@ -469,43 +461,13 @@ fn coast_segments(path: &Path) -> Result<(Vec<Seg>, usize), String> {
 /// `RESULT <peak KiB> <median seconds> <runs> <detail...>`.
 fn run_child(workload: Workload, peer: Peer, arg: &str, options: &Options) -> Result<Report, String> {
     let exe = std::env::current_exe().map_err(|e| format!("cannot find own executable: {e}"))?;
-    let mut child = Command::new(exe)
-        .args(["--child", workload.name(), peer.name(), &options.runs.to_string(), arg])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .map_err(|e| format!("cannot start child: {e}"))?;
-    let drain = |pipe: Option<Box<dyn Read + Send>>| {
-        std::thread::spawn(move || {
-            let mut text = String::new();
-            if let Some(mut pipe) = pipe {
-                let _ = pipe.read_to_string(&mut text);
-            }
-            text
-        })
-    };
-    let stdout = drain(child.stdout.take().map(|p| Box::new(p) as Box<dyn Read + Send>));
-    let stderr = drain(child.stderr.take().map(|p| Box::new(p) as Box<dyn Read + Send>));
-    let start = Instant::now();
-    let status = loop {
-        match child.try_wait().map_err(|e| format!("cannot wait for child: {e}"))? {
-            Some(status) => break Some(status),
-            None if start.elapsed() > options.timeout => {
-                let _ = child.kill();
-                let _ = child.wait();
-                break None;
-            }
-            None => std::thread::sleep(Duration::from_millis(20)),
-        }
-    };
-    let (stdout, stderr) = (stdout.join().unwrap_or_default(), stderr.join().unwrap_or_default());
-    let Some(status) = status else {
-        return Err(format!("timed out (> {:.0} s)", options.timeout.as_secs_f64()));
-    };
-    if !status.success() {
-        let last = stderr.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("");
-        return Err(format!("failed ({status}: {last})"));
-    }
+    let mut command = Command::new(exe);
+    command.args(["--child", workload.name(), peer.name(), &options.runs.to_string(), arg]);
+    // a cell has room for one line: a timeout, or the child's last words
+    let stdout = child::run(command, options.timeout).map_err(|e| match e.lines().last() {
+        Some(last) if e.starts_with("child exited") => format!("failed: {}", last.rsplit(": ").next().unwrap_or(last)),
+        _ => e,
+    })?;
     let line = stdout.lines().find_map(|l| l.strip_prefix("RESULT ")).ok_or("no RESULT line")?;
     let mut words = line.splitn(4, ' ');
     let bad = || format!("malformed RESULT line {line:?}");

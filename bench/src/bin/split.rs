@@ -32,10 +32,13 @@
 
 #[path = "../roads.rs"]
 mod roads;
+#[path = "../text.rs"]
+mod text;
 
 use roads::{roads, Segment};
 use segvoronoi::Builder;
 use std::time::Instant;
+use text::thousands;
 
 /// Where a row's input comes from.
 enum Source {
@@ -166,18 +169,6 @@ fn seconds(t: f64) -> String {
     } else {
         format!("{t:.2} s")
     }
-}
-
-fn thousands(n: usize) -> String {
-    let s = n.to_string();
-    let mut out = String::new();
-    for (i, ch) in s.chars().enumerate() {
-        if i > 0 && (s.len() - i) % 3 == 0 {
-            out.push(',');
-        }
-        out.push(ch);
-    }
-    out
 }
 
 fn main() {
