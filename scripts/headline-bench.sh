@@ -3,8 +3,8 @@
 # (points, short and long segments, polygons, real coastlines, medial axis,
 # offsets, splitting) against every peer that does it (Boost.Polygon's C++
 # builder, boostvoronoi, spade, CGAL, GEOS, Clipper), in one run, printed as
-# markdown on standard output (progress on standard error). About 10 minutes
-# on a 2-core machine.
+# markdown on standard output (progress on standard error). 4 to 8 minutes
+# on a 2-core machine, by its load.
 #
 #   bash scripts/headline-bench.sh                 # the table as published
 #   bash scripts/headline-bench.sh --scale 0.05    # 1/20 the sizes (the real data stays whole)
