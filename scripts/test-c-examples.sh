@@ -21,19 +21,19 @@ jobs="$(nproc 2>/dev/null || echo 2)"
 strict="-Wall -Wextra -pedantic -Werror"
 fail() { echo "test-c-examples: $*" >&2; exit 1; }
 
-echo "--- the README's C quick start is examples/c/quickstart.c"
+echo "--- the README's C quick start is examples/c/quickstart.c, docs/c-api.md's examples are medial_axis.c and offsets.c"
 awk '/^## C quick start/ { s = 1 } s && /^```c$/ { c = 1; next } c && /^```$/ { exit } c' "$repo/README.md" \
   >"$work/readme_quickstart.c"
 diff -u "$work/readme_quickstart.c" "$repo/examples/c/quickstart.c" \
   || fail "the C block under '## C quick start' in README.md and examples/c/quickstart.c differ"
-awk '/^### The medial axis in C/ { s = 1 } s && /^```c$/ { c = 1; next } c && /^```$/ { exit } c' "$repo/README.md" \
+awk '/^### The medial axis in C/ { s = 1 } s && /^```c$/ { c = 1; next } c && /^```$/ { exit } c' "$repo/docs/c-api.md" \
   >"$work/readme_medial_axis.c"
 diff -u "$work/readme_medial_axis.c" "$repo/examples/c/medial_axis.c" \
-  || fail "the C block under '### The medial axis in C' in README.md and examples/c/medial_axis.c differ"
-awk '/^### Offsets in C/ { s = 1 } s && /^```c$/ { c = 1; next } c && /^```$/ { exit } c' "$repo/README.md" \
+  || fail "the C block under '### The medial axis in C' in docs/c-api.md and examples/c/medial_axis.c differ"
+awk '/^### Offsets in C/ { s = 1 } s && /^```c$/ { c = 1; next } c && /^```$/ { exit } c' "$repo/docs/c-api.md" \
   >"$work/readme_offsets.c"
 diff -u "$work/readme_offsets.c" "$repo/examples/c/offsets.c" \
-  || fail "the C block under '### Offsets in C' in README.md and examples/c/offsets.c differ"
+  || fail "the C block under '### Offsets in C' in docs/c-api.md and examples/c/offsets.c differ"
 
 echo "--- package with the program: configure, build, install with --strip, the Runtime and Cli components alone"
 cmake -S "$repo" -B "$work/build" -DCMAKE_BUILD_TYPE=Release -DSEGVORONOI_INSTALL_CLI=ON >"$work/configure.log" 2>&1 \

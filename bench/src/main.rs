@@ -28,14 +28,15 @@
 //! that readers can subtract. Segment inputs are generated and checked once
 //! per size by this parent and handed to the children as a file.
 
+mod child;
 mod contenders;
 mod input;
 mod report;
 mod segments;
+mod text;
 
-use std::io::Read;
 use std::path::{Path, PathBuf};
-use std::process::{exit, Command, Stdio};
+use std::process::{exit, Command};
 use std::time::{Duration, Instant};
 
 use contenders::{measure, measure_segments, Contender, Measured};
@@ -391,39 +392,7 @@ fn run_child(workload: Workload, who: Who, n: usize, options: &Options, file: Op
     if let Some(file) = file {
         command.arg(file);
     }
-    let mut child =
-        command.stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().map_err(|e| format!("cannot start child: {e}"))?;
-    // Drained on threads so a chatty child never blocks on a full pipe.
-    let drain = |pipe: Option<Box<dyn Read + Send>>| {
-        std::thread::spawn(move || {
-            let mut text = String::new();
-            if let Some(mut pipe) = pipe {
-                let _ = pipe.read_to_string(&mut text);
-            }
-            text
-        })
-    };
-    let stdout = drain(child.stdout.take().map(|p| Box::new(p) as Box<dyn Read + Send>));
-    let stderr = drain(child.stderr.take().map(|p| Box::new(p) as Box<dyn Read + Send>));
-    let start = Instant::now();
-    let status = loop {
-        match child.try_wait().map_err(|e| format!("cannot wait for child: {e}"))? {
-            Some(status) => break Some(status),
-            None if start.elapsed() > options.timeout => {
-                let _ = child.kill();
-                let _ = child.wait();
-                break None;
-            }
-            None => std::thread::sleep(Duration::from_millis(20)),
-        }
-    };
-    let (stdout, stderr) = (stdout.join().unwrap_or_default(), stderr.join().unwrap_or_default());
-    let Some(status) = status else {
-        return Err(format!("timed out after {:?} (killed)", options.timeout));
-    };
-    if !status.success() {
-        return Err(format!("child exited with {status}: {}", stderr.trim()));
-    }
+    let stdout = child::run(command, options.timeout)?;
     let line = stdout
         .lines()
         .find_map(|l| l.strip_prefix("RESULT "))

@@ -1,6 +1,7 @@
 //! The markdown tables printed at the end of a run.
 
 use crate::contenders::{Contender, Measured};
+use crate::text::thousands;
 use crate::{InputInfo, Row, Who, Workload};
 
 pub fn print_all(rows: &[Row], runs: usize) {
@@ -308,17 +309,4 @@ pub fn median(m: &Measured) -> f64 {
 
 fn min(m: &Measured) -> f64 {
     m.seconds.iter().copied().fold(f64::INFINITY, f64::min)
-}
-
-/// 1000000 as "1,000,000", so sizes read at a glance.
-fn thousands(n: usize) -> String {
-    let digits = n.to_string();
-    let mut out = String::new();
-    for (i, ch) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i) % 3 == 0 {
-            out.push(',');
-        }
-        out.push(ch);
-    }
-    out
 }

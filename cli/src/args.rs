@@ -6,6 +6,8 @@ use std::path::{Path, PathBuf};
 
 use clap::{Parser, ValueEnum};
 
+use crate::progress::When;
+
 /// What the long help says about the input, after the one-line summary.
 const INPUT_HELP: &str = "\
 Builds the Voronoi diagram of the points and line segments in INPUT.
@@ -120,6 +122,14 @@ struct Cli {
     /// Write the points and segments actually built (the pieces, where segments were cut) in Boost.Polygon's text format, each coordinate exactly
     #[arg(long, value_name = "OUT", value_parser = file_name)]
     write_sites: Option<PathBuf>,
+
+    /// Show the phases (reading, building, medial axis, offsets, writing) and the time on standard error; by default shown only on a terminal for an input file of 4 MiB or more
+    #[arg(long, conflicts_with = "quiet")]
+    progress: bool,
+
+    /// Never show the phases on standard error (errors and --stats still go there)
+    #[arg(long, short = 'q')]
+    quiet: bool,
 }
 
 /// The format of `--medial-axis` and `--offsets`.
@@ -177,6 +187,8 @@ pub struct Options {
     pub split_crossings: bool,
     /// `--write-sites`: where to write the input as built.
     pub write_sites: Option<PathBuf>,
+    /// `--progress`, `--quiet` or neither.
+    pub progress: When,
 }
 
 /// Why the arguments do not make a run: clap's own outcome (help, version
@@ -239,6 +251,11 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Options, Stop> {
         offsets,
         split_crossings: cli.split_crossings,
         write_sites: cli.write_sites,
+        progress: match (cli.progress, cli.quiet) {
+            (true, _) => When::Always,
+            (_, true) => When::Never,
+            _ => When::Auto,
+        },
     })
 }
 

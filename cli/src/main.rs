@@ -10,6 +10,7 @@ mod geojson_output;
 mod input;
 mod medial_output;
 mod offset_output;
+mod progress;
 mod stats;
 mod svg;
 mod wkt;
@@ -19,7 +20,8 @@ use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use args::{Format, Options, Stop};
+use args::{Format, Options, Source, Stop};
+use progress::Progress;
 use segvoronoi::{Builder, Diagram, MedialAxis, MedialAxisFilter, TopologyOptions};
 
 /// Why the program stops early: an exit status and a message for the user.
@@ -63,6 +65,16 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
         }
         Err(Stop::Usage(message)) => return Err(bad_input(format!("{message}\nTry 'segvoronoi --help'."))),
     };
+    let input_bytes = match &options.source {
+        Source::File(path) => std::fs::metadata(path).ok().map(|m| m.len()),
+        _ => None,
+    };
+    let progress = Progress::new(options.progress, input_bytes);
+    progress.phase(&match &options.source {
+        Source::File(path) => format!("reading {}", path.display()),
+        Source::Stdin => "reading standard input".to_string(),
+        Source::Demo => "making the demo input".to_string(),
+    });
     let (name, input) = input::read(&options.source)?;
 
     // Library errors (a non-finite coordinate, crossing segments or rings,
@@ -71,6 +83,12 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     let mut builder = Builder::new();
     let origins = input.add_to(&mut builder).map_err(|e| failed(format!("{name}: {e}")))?;
     builder.split_crossings(options.split_crossings);
+    progress.phase(&format!(
+        "building: the input check{}, then the diagram of {} points and {} segments",
+        if options.split_crossings { " and the split" } else { "" },
+        builder.point_count(),
+        builder.segment_count()
+    ));
     // Only the construction is timed: not reading, not writing.
     let start = Instant::now();
     let diagram = builder.build().map_err(|e| failed(format!("{name}: {}", origins.describe(&e, &builder))))?;
@@ -83,13 +101,22 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     // without a domain) is its error: status 1 with its message.
     let offsets = match options.offset_distances.as_slice() {
         [] => Vec::new(),
-        distances => diagram.offsets(distances).map_err(|e| failed(format!("{name}: {e}")))?,
+        distances => {
+            progress.phase(&format!("offsets at {} distance{}", distances.len(), if distances.len() == 1 { "" } else { "s" }));
+            diagram.offsets(distances).map_err(|e| failed(format!("{name}: {e}")))?
+        }
     };
 
     let tolerance = options.tolerance.unwrap_or_else(|| default_tolerance(&diagram));
     // The axis is computed once, for the file and the picture alike.
     let needs_axis = options.medial_axis.is_some() || (options.svg.is_some() && diagram.has_domain());
-    let axis = if needs_axis { medial_axis(&diagram, &options) } else { MedialAxis::default() };
+    let axis = if needs_axis {
+        progress.phase("medial axis");
+        medial_axis(&diagram, &options)
+    } else {
+        MedialAxis::default()
+    };
+    progress.phase("writing");
     if let Some(path) = &options.svg {
         let rings = input.rings();
         let (lines, points) = input.obstacles();
@@ -121,6 +148,7 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     if let Some(path) = &options.write_sites {
         write_file(path, &sites_as_built(&diagram, builder.point_count()))?;
     }
+    progress.finish();
     if options.topology {
         print(&diagram.topology(TopologyOptions::default().with_voronoi_pairs(options.voronoi_pairs)))?;
     }

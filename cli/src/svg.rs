@@ -45,12 +45,17 @@ const SEGMENT_WIDTH: f64 = 3.0;
 const DOMAIN_FILL: &str = "#e4ecf4";
 /// The clearance ramp's ends: clearance 0 and the largest.
 const RAMP: [[f64; 3]; 2] = [[0.0, 158.0, 158.0], [200.0, 0.0, 125.0]];
-/// Stroke width of the medial axis, in pixels.
+/// Stroke width of the medial axis where its clearance is the largest, in
+/// pixels; it thins towards clearance 0 down to `AXIS_THINNEST` of that,
+/// so that on a detailed outline the branches into its many corners do not
+/// bury the outline and the offsets near it.
 const AXIS_WIDTH: f64 = 3.5;
+const AXIS_THINNEST: f64 = 0.3;
 const CIRCLE_COLOUR: &str = "#444444";
 /// One colour per offset distance, in the order given (repeating after
-/// eight): distinct hues that stand apart from the axis ramp and the shade.
-const OFFSET_COLOURS: [&str; 8] = ["#2f9e44", "#e8590c", "#1971c2", "#ae3ec9", "#f08c00", "#0c8599", "#c2255c", "#5c940d"];
+/// eight): distinct hues that stand apart from the axis ramp (teal to
+/// magenta, so no green-blue, purple or crimson here) and the shade.
+const OFFSET_COLOURS: [&str; 8] = ["#e8590c", "#1864ab", "#f59f00", "#343a40", "#e03131", "#5c940d", "#8d5524", "#4263eb"];
 /// The domain's outline and the obstacles when the diagram is not drawn.
 const OUTLINE_COLOUR: &str = "#495057";
 /// Steps of the clearance ramp: consecutive stretches of one step share a
@@ -653,9 +658,12 @@ fn write_axis(out: &mut String, frame: &Frame, diagram: &Diagram, domain: &Domai
         r#"<g id="medial-axis" stroke-width="{}" stroke-linecap="round" stroke-linejoin="round" fill="none" data-max-clearance="{top}">"#,
         AXIS_WIDTH * frame.stroke
     );
+    // Runs of stretches whose clearance falls in one ramp step, each a
+    // polyline (the runs share their end points), gathered by step: one
+    // group per step with its colour and width, the lowest clearance first
+    // so that the axis's trunk lies on top of its branches.
+    let mut by_step: Vec<Vec<String>> = vec![Vec::new(); RAMP_STEPS as usize];
     for points in &chains {
-        // Runs of stretches whose clearance falls in one ramp step, each a
-        // polyline of that step's colour (the runs share their end points).
         let step = |w: &[[f64; 3]]| {
             let t = if top > 0.0 { (w[0][2] + w[1][2]) / 2.0 / top } else { 0.0 };
             (t.clamp(0.0, 1.0) * RAMP_STEPS).floor().min(RAMP_STEPS - 1.0)
@@ -673,11 +681,19 @@ fn write_axis(out: &mut String, frame: &Frame, diagram: &Diagram, domain: &Domai
                 .map(|(x, y)| format!("{x:.2},{y:.2}"))
                 .collect();
             if run.len() >= 2 {
-                let colour = ramp((level + 0.5) / RAMP_STEPS);
-                let _ = writeln!(out, r#"<polyline stroke="{colour}" points="{}"/>"#, run.join(" "));
+                by_step[level as usize].push(run.join(" "));
             }
             k = end;
         }
+    }
+    for (level, runs) in by_step.iter().enumerate().filter(|(_, runs)| !runs.is_empty()) {
+        let t = (level as f64 + 0.5) / RAMP_STEPS;
+        let width = AXIS_WIDTH * frame.stroke * (AXIS_THINNEST + (1.0 - AXIS_THINNEST) * t);
+        let _ = writeln!(out, r#"<g stroke="{}" stroke-width="{width:.2}">"#, ramp(t));
+        for run in runs {
+            let _ = writeln!(out, r#"<polyline points="{run}"/>"#);
+        }
+        let _ = writeln!(out, "</g>");
     }
     let _ = writeln!(out, "</g>");
     if let Some((centre, r)) = circle {
@@ -807,11 +823,26 @@ mod tests {
         values
     }
 
-    /// The text of the group with this id.
+    /// The text of the group with this id (with the groups inside it).
     fn group<'a>(svg: &'a str, id: &str) -> &'a str {
         let start = svg.find(&format!(r#"<g id="{id}""#)).unwrap_or_else(|| panic!("no group {id}"));
-        let len = svg[start..].find("</g>").unwrap();
-        &svg[start..start + len]
+        let mut depth = 0;
+        let mut at = start;
+        loop {
+            let (open, close) = (svg[at + 1..].find("<g ").map(|i| i + at + 1), svg[at..].find("</g>").map(|i| i + at));
+            match (open, close) {
+                (Some(o), Some(c)) if o < c => {
+                    depth += 1;
+                    at = o;
+                }
+                (_, Some(c)) if depth > 0 => {
+                    depth -= 1;
+                    at = c + 4;
+                }
+                (_, Some(c)) => return &svg[start..c],
+                _ => panic!("group {id} is not closed"),
+            }
+        }
     }
 
     /// The straight edges: `<line>` elements of the edges group.

@@ -924,3 +924,59 @@ fn several_countries_give_their_medial_axes_and_offsets() {
     assert!(a["geometry"]["coordinates"].as_array().unwrap().len() >= 3);
     assert!(b["features"][0]["geometry"]["coordinates"].as_array().unwrap().len() >= 3);
 }
+
+/// `--progress` names every phase on standard error, one line each when
+/// standard error is not a terminal, and leaves standard output as it was;
+/// `--quiet` shows nothing; the two together are a usage error.
+#[test]
+fn progress_shows_the_phases_on_stderr_only() {
+    let glyph = concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/data/glyph_B.wkt");
+    let axis = temp_path("progress-axis.wkt");
+    let offsets = temp_path("progress-offsets.wkt");
+    let args = |extra: &[&str]| -> Vec<String> {
+        let mut a: Vec<String> = [glyph, "--topology", "--medial-axis", axis.to_str().unwrap(), "--offset", "-20"]
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
+        a.extend(["--offsets".to_string(), offsets.to_str().unwrap().to_string()]);
+        a.extend(extra.iter().map(|s| s.to_string()));
+        a
+    };
+    let call = |extra: &[&str]| {
+        let a = args(extra);
+        run(&a.iter().map(String::as_str).collect::<Vec<_>>())
+    };
+    let plain = call(&[]);
+    assert!(plain.status.success(), "{}", stderr(&plain));
+    assert_eq!(stderr(&plain), "", "no progress by default off a terminal");
+    let axis_plain = std::fs::read_to_string(&axis).unwrap();
+
+    let shown = call(&["--progress"]);
+    assert!(shown.status.success(), "{}", stderr(&shown));
+    assert_eq!(stdout(&shown), stdout(&plain), "standard output unchanged");
+    assert_eq!(std::fs::read_to_string(&axis).unwrap(), axis_plain, "files unchanged");
+    let lines: Vec<String> = stderr(&shown).lines().map(str::to_string).collect();
+    let phases = [
+        "reading ",
+        "building: the input check, then the diagram of ",
+        "offsets at 1 distance",
+        "medial axis",
+        "writing",
+        "done",
+    ];
+    assert_eq!(lines.len(), phases.len(), "{lines:?}");
+    for (line, phase) in lines.iter().zip(phases) {
+        let (time, what) = line.strip_prefix("segvoronoi: [").and_then(|l| l.split_once(" s] ")).expect(line);
+        assert!(time.trim().parse::<f64>().is_ok_and(|t| t >= 0.0), "{line}");
+        assert!(what.starts_with(phase), "{line} should be {phase}");
+    }
+
+    let quiet = call(&["--quiet"]);
+    assert!(quiet.status.success());
+    assert_eq!((stdout(&quiet), stderr(&quiet)), (stdout(&plain), String::new()));
+    let both = call(&["--progress", "--quiet"]);
+    assert_eq!(both.status.code(), Some(2), "{}", stderr(&both));
+    for path in [axis, offsets] {
+        let _ = std::fs::remove_file(path);
+    }
+}

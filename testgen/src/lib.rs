@@ -19,6 +19,13 @@
 // families stay bit-identical), not the `std::f64::consts` they round to.
 #![allow(clippy::approx_constant, clippy::unusual_byte_groupings)]
 
+/// The Rust guide (`docs/guide.md`), run as doctests so that it cannot rot:
+/// the library's own doctests run the README's blocks, and this crate,
+/// which depends on the library, runs the guide's.
+#[cfg(doctest)]
+#[doc = include_str!("../../docs/guide.md")]
+struct RustGuideDoctests;
+
 pub mod bench;
 pub mod exact;
 pub mod long_segments;

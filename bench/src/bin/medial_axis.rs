@@ -13,24 +13,12 @@
 //! filters on (`medial_axis_filtered`). The medians are printed as a table,
 //! each step also as a fraction of the build.
 
+#[path = "../sheet.rs"]
+mod sheet;
+
 use segvoronoi::{Builder, MedialAxisFilter};
-use segvoronoi_testgen::{shapes::star_ring, Rng};
+use sheet::{Polygon, HOLE, OUTER};
 use std::time::Instant;
-
-const OUTER: usize = 400;
-const HOLE: usize = 100;
-
-/// The rings of `polygons` star polygons with holes on a square grid.
-fn polygons(polygons: usize, seed: u64) -> Vec<[Vec<[f64; 2]>; 2]> {
-    let mut rng = Rng(seed);
-    let side = (polygons as f64).sqrt().ceil() as usize;
-    (0..polygons)
-        .map(|k| {
-            let (cx, cy) = ((k % side) as f64 * 2.2, (k / side) as f64 * 2.2);
-            [star_ring(OUTER, cx, cy, 0.8, 1.0, &mut rng), star_ring(HOLE, cx, cy, 0.2, 0.35, &mut rng)]
-        })
-        .collect()
-}
 
 struct Times {
     build: f64,
@@ -41,7 +29,7 @@ struct Times {
     chains: usize,
 }
 
-fn measure(input: &[[Vec<[f64; 2]>; 2]]) -> Times {
+fn measure(input: &[Polygon]) -> Times {
     let start = Instant::now();
     let mut b = Builder::new();
     for rings in input {
@@ -82,7 +70,7 @@ fn main() {
     println!("| segments | build | medial_axis | sampling | axis + sampling | filtered axis | chains | samples |");
     println!("|---|---|---|---|---|---|---|---|");
     for n in sizes {
-        let input = polygons(n.div_ceil(OUTER + HOLE), 1);
+        let input = sheet::for_segments(n);
         let segments = input.len() * (OUTER + HOLE);
         let times: Vec<Times> = (0..runs).map(|_| measure(&input)).collect();
         let m = |f: fn(&Times) -> f64| median(times.iter().map(f).collect());

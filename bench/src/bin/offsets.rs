@@ -39,33 +39,24 @@
 #[path = "../offsets_outline.rs"]
 mod outline;
 
+#[path = "../offset_peers.rs"]
+mod offset_peers;
+#[path = "../peak.rs"]
+mod peak;
+#[path = "../sheet.rs"]
+mod sheet;
+
+#[cfg(has_clipper)]
+use offset_peers::clipper;
+#[cfg(has_geos)]
+use offset_peers::geos;
+use offset_peers::quadsegs_within;
 use segvoronoi::Builder;
-use segvoronoi_testgen::{shapes::star_ring, Rng};
-use std::f64::consts::PI;
+use sheet::{Polygon, HOLE, OUTER};
 use std::time::Instant;
 
-const OUTER: usize = 400;
-const HOLE: usize = 100;
 const TOLERANCE: f64 = 1e-4;
 const ONE: f64 = -0.1;
-
-type Polygon = [Vec<[f64; 2]>; 2];
-
-/// `polygons` star polygons with holes on a square grid; the holes run
-/// clockwise (as Clipper wants them).
-fn polygons(polygons: usize, seed: u64) -> Vec<Polygon> {
-    let mut rng = Rng(seed);
-    let side = (polygons as f64).sqrt().ceil() as usize;
-    (0..polygons)
-        .map(|k| {
-            let (cx, cy) = ((k % side) as f64 * 2.2, (k / side) as f64 * 2.2);
-            let outer = star_ring(OUTER, cx, cy, 0.8, 1.0, &mut rng);
-            let mut hole = star_ring(HOLE, cx, cy, 0.2, 0.35, &mut rng);
-            hole.reverse();
-            [outer, hole]
-        })
-        .collect()
-}
 
 fn distances() -> Vec<f64> {
     (0..100).map(|k| -(0.003 + (0.3 - 0.003) * k as f64 / 99.0)).collect()
@@ -75,14 +66,6 @@ fn distances() -> Vec<f64> {
 /// tolerance they give.
 fn quadsegs(d: f64) -> (i32, f64) {
     quadsegs_within(d, TOLERANCE)
-}
-
-/// GEOS's quadrant segments for tolerance `tolerance` at `d` (the fewest
-/// whose chords stay within it), and the tolerance they give.
-fn quadsegs_within(d: f64, tolerance: f64) -> (i32, f64) {
-    let r = d.abs();
-    let q = (PI / (4.0 * (1.0 - (tolerance / r).min(1.0)).acos())).ceil().max(1.0);
-    (q as i32, r * (1.0 - (PI / (4.0 * q)).cos()))
 }
 
 fn median(mut v: Vec<f64>) -> f64 {
@@ -175,113 +158,6 @@ fn other(ds: &[f64], budget: f64, mut run: impl FnMut(f64) -> (usize, usize)) ->
     }
 }
 
-#[cfg(has_geos)]
-mod geos {
-    use super::quadsegs_within;
-    use std::ffi::c_void;
-
-    extern "C" {
-        fn geos_bench_new(xy: *const f64, lengths: *const usize, rings: *const usize, n_polygons: usize) -> *mut c_void;
-        fn geos_bench_buffer(input: *mut c_void, distance: f64, quadsegs: i32, vertices: *mut usize, rings: *mut usize) -> i32;
-        fn geos_bench_free(input: *mut c_void);
-    }
-
-    /// The input as one GEOS MultiPolygon.
-    pub struct Input(*mut c_void);
-
-    impl Input {
-        /// Polygons, each its outer ring and then its holes.
-        pub fn new<P: AsRef<[Vec<[f64; 2]>]>>(input: &[P]) -> Input {
-            let xy: Vec<f64> = input.iter().flat_map(|p| p.as_ref().iter().flatten().flatten().copied()).collect();
-            let lengths: Vec<usize> = input.iter().flat_map(|p| p.as_ref().iter().map(Vec::len)).collect();
-            let rings: Vec<usize> = input.iter().map(|p| p.as_ref().len()).collect();
-            // SAFETY: the arrays hold what the lengths say; GEOS copies them.
-            let raw = unsafe { geos_bench_new(xy.as_ptr(), lengths.as_ptr(), rings.as_ptr(), input.len()) };
-            assert!(!raw.is_null(), "GEOS input");
-            Input(raw)
-        }
-
-        /// Buffer at `d` with the benchmark's tolerance: (vertices, rings).
-        pub fn buffer(&self, d: f64) -> (usize, usize) {
-            self.buffer_within(d, super::TOLERANCE)
-        }
-
-        /// Buffer at `d` within `tolerance`: (vertices, rings).
-        pub fn buffer_within(&self, d: f64, tolerance: f64) -> (usize, usize) {
-            let (mut vertices, mut rings) = (0, 0);
-            // SAFETY: a live handle and two out-parameters.
-            let status = unsafe { geos_bench_buffer(self.0, d, quadsegs_within(d, tolerance).0, &mut vertices, &mut rings) };
-            assert_eq!(status, 0, "GEOS buffer failed");
-            (vertices, rings)
-        }
-    }
-
-    impl Drop for Input {
-        fn drop(&mut self) {
-            // SAFETY: made by geos_bench_new, freed once.
-            unsafe { geos_bench_free(self.0) }
-        }
-    }
-}
-
-#[cfg(has_clipper)]
-mod clipper {
-    use super::{quadsegs, Polygon};
-    use std::ffi::c_void;
-
-    extern "C" {
-        fn clipper_bench_new(xy: *const i64, lengths: *const usize, n_rings: usize) -> *mut c_void;
-        fn clipper_bench_offset(
-            paths: *const c_void,
-            delta: f64,
-            arc_tolerance: f64,
-            vertices: *mut usize,
-            rings: *mut usize,
-        ) -> i32;
-        fn clipper_bench_free(paths: *mut c_void);
-    }
-
-    /// The input's rings on Clipper's integer grid (2^28 over the extent).
-    pub struct Input {
-        paths: *mut c_void,
-        scale: f64,
-    }
-
-    impl Input {
-        pub fn new(input: &[Polygon]) -> Input {
-            let points = || input.iter().flat_map(|p| p.iter().flatten());
-            let (lo, hi) = points().fold(([f64::MAX; 2], [f64::MIN; 2]), |(lo, hi), p| {
-                ([lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])])
-            });
-            let scale = 2f64.powi(28) / (hi[0] - lo[0]).max(hi[1] - lo[1]);
-            let xy: Vec<i64> = points()
-                .flat_map(|p| [((p[0] - lo[0]) * scale).round() as i64, ((p[1] - lo[1]) * scale).round() as i64])
-                .collect();
-            let lengths: Vec<usize> = input.iter().flat_map(|p| p.iter().map(Vec::len)).collect();
-            // SAFETY: the arrays hold what the lengths say; Clipper copies them.
-            let paths = unsafe { clipper_bench_new(xy.as_ptr(), lengths.as_ptr(), lengths.len()) };
-            Input { paths, scale }
-        }
-
-        /// Offset at `d` with the benchmark's tolerance: (vertices, rings).
-        pub fn offset(&self, d: f64) -> (usize, usize) {
-            let (mut vertices, mut rings) = (0, 0);
-            let tolerance = quadsegs(d).1 * self.scale;
-            // SAFETY: a live handle and two out-parameters.
-            let status = unsafe { clipper_bench_offset(self.paths, d * self.scale, tolerance, &mut vertices, &mut rings) };
-            assert_eq!(status, 0, "Clipper offset failed");
-            (vertices, rings)
-        }
-    }
-
-    impl Drop for Input {
-        fn drop(&mut self) {
-            // SAFETY: made by clipper_bench_new, freed once.
-            unsafe { clipper_bench_free(self.paths) }
-        }
-    }
-}
-
 fn seconds(s: f64) -> String {
     if s >= 100.0 {
         format!("{s:.0} s")
@@ -318,7 +194,7 @@ fn main() {
     let mut times = Vec::new();
     let mut counts = Vec::new();
     for n in sizes {
-        let input = polygons(n.div_ceil(OUTER + HOLE), 1);
+        let input = sheet::for_segments(n);
         let segments = input.len() * (OUTER + HOLE);
         eprintln!("{segments} segments: ours");
         let results: Vec<Ours> = (0..runs).map(|_| ours(&input, &ds)).collect();
@@ -332,14 +208,14 @@ fn main() {
             eprintln!("{segments} segments: GEOS");
             let g = geos::Input::new(&input);
             let b = if segments > hundred_up_to { 0.0 } else { budget };
-            others.push(("GEOS", other(&ds, b, |d| g.buffer(d))));
+            others.push(("GEOS", other(&ds, b, |d| g.buffer_within(d, TOLERANCE))));
         }
         #[cfg(has_clipper)]
         {
             eprintln!("{segments} segments: Clipper");
             let c = clipper::Input::new(&input);
             let b = if segments > hundred_up_to { 0.0 } else { budget };
-            others.push(("Clipper", other(&ds, b, |d| c.offset(d))));
+            others.push(("Clipper", other(&ds, b, |d| c.offset(d, quadsegs(d).1))));
         }
         let ours_one = build + one + one_s;
         let ours_hundred = hundred + hundred_s;

@@ -30,25 +30,15 @@
 //! whose estimate (the last size's time times the size ratio) exceeds the
 //! budget is not run, and the table gives the estimate.
 
+#[path = "../roads.rs"]
+mod roads;
+#[path = "../text.rs"]
+mod text;
+
+use roads::{roads, Segment};
 use segvoronoi::Builder;
-use segvoronoi_testgen::Rng;
 use std::time::Instant;
-
-type Segment = [[f64; 2]; 2];
-
-/// `n` random segments of length `c / sqrt(n)` from uniform points of the
-/// unit square in uniform directions.
-fn roads(n: usize, c: f64, seed: u64) -> Vec<Segment> {
-    let mut rng = Rng(seed);
-    let length = c / (n as f64).sqrt();
-    (0..n)
-        .map(|_| {
-            let (x, y) = (rng.unit(), rng.unit());
-            let a = rng.unit() * std::f64::consts::TAU;
-            [[x, y], [x + length * a.cos(), y + length * a.sin()]]
-        })
-        .collect()
-}
+use text::thousands;
 
 /// Where a row's input comes from.
 enum Source {
@@ -128,21 +118,8 @@ fn ours(input: &[Segment]) -> Ours {
 }
 
 #[cfg(has_cgal_split)]
-mod cgal {
-    extern "C" {
-        fn cgal_split_bench(xy: *const f64, n: usize, sites: *mut usize, crossings: *mut usize, vertices: *mut usize) -> i32;
-    }
-
-    /// CGAL's graph of the segments: (sites, intersection points, faces).
-    pub fn build(input: &[super::Segment]) -> (usize, usize, usize) {
-        let xy: Vec<f64> = input.iter().flatten().flatten().copied().collect();
-        let (mut sites, mut crossings, mut vertices) = (0, 0, 0);
-        // SAFETY: xy holds 4 n doubles; three out-parameters.
-        let status = unsafe { cgal_split_bench(xy.as_ptr(), input.len(), &mut sites, &mut crossings, &mut vertices) };
-        assert_eq!(status, 0, "CGAL threw");
-        (sites, crossings, vertices)
-    }
-}
+#[path = "../cgal_split.rs"]
+mod cgal;
 
 /// The CGAL cell of the table and the ratio to ours (`total`), timing it
 /// unless the last size's time scaled by the size exceeds `budget`.
@@ -192,18 +169,6 @@ fn seconds(t: f64) -> String {
     } else {
         format!("{t:.2} s")
     }
-}
-
-fn thousands(n: usize) -> String {
-    let s = n.to_string();
-    let mut out = String::new();
-    for (i, ch) in s.chars().enumerate() {
-        if i > 0 && (s.len() - i) % 3 == 0 {
-            out.push(',');
-        }
-        out.push(ch);
-    }
-    out
 }
 
 fn main() {
