@@ -31,7 +31,7 @@ step "cargo test (workspace: library, C API via cc, header, properties, doctests
 cargo test --workspace --quiet
 
 step "fault injection (predicates perturbed or random; through Rust and through the C API)"
-cargo test --quiet --release -p segvoronoi -p segvoronoi-capi --features segvoronoi-capi/fault-injection --test fault_injection
+cargo test --quiet --release -p segvoronoi-integration-tests -p segvoronoi-capi --features segvoronoi-integration-tests/fault-injection,segvoronoi-capi/fault-injection --test fault_injection
 
 # The package steps build the library with cargo in one shared target
 # directory (CMake honours CARGO_TARGET_DIR), so the second compiles nothing.

@@ -4,7 +4,7 @@
 //! `tests/edge_shape.rs` checks against the geometry), with the list and
 //! error conventions of the header.
 
-#[path = "../../tests/common/mod.rs"]
+#[path = "../../integration/tests/common/mod.rs"]
 mod common;
 
 use common::build_sites as build;

@@ -4,7 +4,7 @@
 //! `cargo test -p segvoronoi-capi --features fault-injection --test fault_injection`.
 #![cfg(feature = "fault-injection")]
 
-#[path = "../../tests/common/mod.rs"]
+#[path = "../../integration/tests/common/mod.rs"]
 mod common;
 
 use common::{closed_chains, RestartBudget};

@@ -3,7 +3,7 @@
 //! API gives, which `tests/navigation.rs` checks against the edges' own ends
 //! and sites.
 
-#[path = "../../tests/common/mod.rs"]
+#[path = "../../integration/tests/common/mod.rs"]
 mod common;
 
 use common::{build_sites, segment_grid};

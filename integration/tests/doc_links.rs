@@ -16,8 +16,9 @@ const PAGES: &[&str] = &[
     "cli/README.md",
 ];
 
+/// The repository (this test's package is `integration/` in it).
 fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
 }
 
 /// The markdown files of `PAGES` (a folder stands for its `*.md`).

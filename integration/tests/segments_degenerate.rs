@@ -167,7 +167,7 @@ fn near_vertical_segments() {
 #[test]
 fn a_straight_joint_has_the_same_topology_text_in_every_order() {
     use segvoronoi::{Builder, TopologyOptions};
-    let text = include_str!("../c_tests/fixtures/straight_joint_zero_length_4seg.txt");
+    let text = include_str!("../../c_tests/fixtures/straight_joint_zero_length_4seg.txt");
     let input = segvoronoi::boost_text::parse(text).unwrap();
     let segments: Vec<Segment> = input.segments.iter().map(|&[x0, y0, x1, y1]| [[x0, y0], [x1, y1]]).collect();
     let shape = |order: &[usize]| {

@@ -4,8 +4,8 @@
 //! `// --- as in README.md ---` and `// --- beyond the README ---`. (The
 //! README's blocks also run as doctests, so both compile and run.)
 
-const README: &str = include_str!("../README.md");
-const EXAMPLE: &str = include_str!("../examples/quickstart.rs");
+const README: &str = include_str!("../../README.md");
+const EXAMPLE: &str = include_str!("../../examples/quickstart.rs");
 
 /// The first ```rust block after the heading `## Rust quick start`,
 /// without the lines rustdoc hides (`# ...`).

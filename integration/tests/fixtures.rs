@@ -62,7 +62,7 @@ fn read_boost_text(path: &Path) -> Result<Fixture, String> {
 }
 
 fn fixture_files() -> Vec<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("c_tests/fixtures");
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../c_tests/fixtures");
     let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
         .map(|entry| entry.unwrap().path())

@@ -167,7 +167,7 @@ fn polygons_sharing_an_edge_merge_and_a_bow_tie_is_two_triangles() {
 /// their even-odd region.
 #[test]
 fn overlapping_glyph_outlines() {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data");
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data");
     let mut seen = 0;
     for entry in std::fs::read_dir(dir).unwrap() {
         let path = entry.unwrap().path();

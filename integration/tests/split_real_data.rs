@@ -13,7 +13,7 @@ use common::{check_pieces, Segment};
 use segvoronoi::{Builder, ErrorKind};
 
 fn fixtures() -> Vec<(String, Vec<Segment>)> {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data");
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data");
     let mut out = Vec::new();
     for entry in std::fs::read_dir(dir).unwrap() {
         let path = entry.unwrap().path();

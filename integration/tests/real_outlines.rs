@@ -23,7 +23,8 @@ use segvoronoi_testgen::rings::read_rings;
 /// `SEGVORONOI_OUTLINES` (to try others: `scripts/country_rings.py CODE
 /// --out DIR`).
 fn countries() -> Vec<(String, Vec<Vec<[f64; 2]>>)> {
-    let dir = std::env::var("SEGVORONOI_OUTLINES").unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data").into());
+    let dir =
+        std::env::var("SEGVORONOI_OUTLINES").unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data").into());
     let mut out = Vec::new();
     for entry in std::fs::read_dir(dir).unwrap() {
         let path = entry.unwrap().path();
