@@ -15,7 +15,7 @@
 //! each endpoint once and hands the same coordinates to the point site and to
 //! the segment site, so no tolerance is wanted (or safe) here.
 
-use super::arithmetic::real::{norm, Real};
+use super::arithmetic::real::Real;
 use super::point::Point;
 
 /// A site as geometry: a point, or an open segment whose endpoints are
@@ -141,29 +141,20 @@ impl Site {
     ///
     /// Precision: as [`Site::distance_squared`], without the squaring's
     /// overflow or underflow.
+    #[inline]
     pub fn distance(&self, p: Point) -> f64 {
-        match *self {
-            Site::Point(q) => p.distance(q),
-            Site::Segment { a, b } => {
-                let t = segment_parameter(a, b, p);
-                if t > 0.0 && t < 1.0 {
-                    let (ux, uy) = (b.x - a.x, b.y - a.y);
-                    let cross = ux * (p.y - a.y) - uy * (p.x - a.x);
-                    cross.abs() / norm(ux, uy)
-                } else {
-                    p.distance(a).min(p.distance(b))
-                }
-            }
-        }
+        distance_in(self, p, &|x| x)
     }
 }
 
 /// [`Site::distance`] in the arithmetic `T` (`lift` turns an `f64` into
-/// it): with double-double, a distance whose comparison with another is
-/// within the rounding of `f64` (a point 1e9 units out, a margin of 1e-9)
-/// still has its sign. The differences of coordinates are exact in
-/// double-double; which part of the segment is nearest (its interior or an
-/// endpoint) is decided in `f64`, where the two formulas agree.
+/// it; with `f64` itself this is `Site::distance`, operation for
+/// operation): with double-double, a distance whose comparison with
+/// another is within the rounding of `f64` (a point 1e9 units out, a margin
+/// of 1e-9) still has its sign. The differences of coordinates are exact
+/// in double-double; which part of the segment is nearest (its interior or
+/// an endpoint) is decided in `f64`, where the two formulas agree.
+#[inline]
 pub(crate) fn distance_in<T: Real>(site: &Site, p: Point, lift: &impl Fn(f64) -> T) -> T {
     let between = |q: Point| (lift(p.x).sub(&lift(q.x)), lift(p.y).sub(&lift(q.y)));
     let to_point = |q: Point| {
@@ -179,14 +170,20 @@ pub(crate) fn distance_in<T: Real>(site: &Site, p: Point, lift: &impl Fn(f64) ->
                 let (vx, vy) = between(a);
                 ux.mul(&vy).sub(&uy.mul(&vx)).abs().div(&T::hypot(&ux, &uy))
             } else {
-                let (da, db) = (to_point(a), to_point(b));
-                if da.sub(&db).signum() <= 0 {
-                    da
-                } else {
-                    db
-                }
+                smaller(to_point(a), to_point(b))
             }
         }
+    }
+}
+
+/// The smaller of two values as `f64::min` picks it (a NaN loses).
+#[inline]
+pub(crate) fn smaller<T: Real>(x: T, y: T) -> T {
+    let (fx, fy) = (x.to_f64(), y.to_f64());
+    if fy < fx || fx.is_nan() {
+        y
+    } else {
+        x
     }
 }
 

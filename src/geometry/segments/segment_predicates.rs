@@ -20,11 +20,12 @@ use super::reach::Reach;
 use super::vertex_placement;
 use crate::geometry::arithmetic::double_double::DoubleDouble;
 use crate::geometry::arithmetic::real::norm;
+use crate::geometry::arithmetic::real::Real;
 use crate::geometry::curves::edge_curve::EdgeCurve;
 use crate::geometry::fault;
 use crate::geometry::point::Point;
 use crate::geometry::predicates::{orientation, CirclePosition, Orientation};
-use crate::geometry::site::{distance_in, Site};
+use crate::geometry::site::{distance_in, smaller, Site};
 use crate::geometry::solvers::segment_solvers;
 
 /// How far a new segment reaches into the circle of a finite vertex: the
@@ -552,24 +553,7 @@ impl EdgeUnderSegment {
     /// edge's own sites, at the point of the edge at parameter `t` (0 at its
     /// origin, 1 at its target); NaN gives `-∞`.
     fn excess(&self, t: f64) -> f64 {
-        let q = self.arc.point(t);
-        let e = match self.segment {
-            // On an edge of R(a) or R(b) the distances to the segment and to
-            // its endpoint agree outside the strip, so the signed distance
-            // beyond the perpendiculars decides, without cancellation.
-            Site::Segment { a: pa, b: pb } if self.touches_end => {
-                let (dx, dy) = (pb.x - pa.x, pb.y - pa.y);
-                let beyond_b = (q.x - pb.x) * dx + (q.y - pb.y) * dy;
-                let beyond_a = (pa.x - q.x) * dx + (pa.y - q.y) * dy;
-                beyond_a.max(beyond_b) / norm(dx, dy)
-            }
-            _ => self.segment.distance(q) - 0.5 * (self.left.distance(q) + self.right.distance(q)),
-        };
-        if e.is_nan() {
-            f64::NEG_INFINITY
-        } else {
-            e
-        }
+        self.excess_in(t, &|x| x)
     }
 
     /// [`EdgeUnderSegment::excess`] at the same point of the edge, its
@@ -579,19 +563,29 @@ impl EdgeUnderSegment {
     /// the edge, not across it), so the sign of an excess far below the
     /// coordinates' ulp holds.
     fn fine_excess(&self, t: f64) -> f64 {
-        let dd = DoubleDouble::from_f64;
+        self.excess_in(t, &DoubleDouble::from_f64)
+    }
+
+    /// The excess at parameter `t`, computed in the arithmetic `T` and
+    /// rounded to `f64`; NaN gives `-∞`.
+    #[inline]
+    fn excess_in<T: Real>(&self, t: f64, lift: &impl Fn(f64) -> T) -> f64 {
         let q = self.arc.point(t);
         let e = match self.segment {
+            // On an edge of R(a) or R(b) the distances to the segment and to
+            // its endpoint agree outside the strip, so the signed distance
+            // beyond the perpendiculars decides, without cancellation.
             Site::Segment { a: pa, b: pb } if self.touches_end => {
-                let (dx, dy) = (dd(pb.x).sub(dd(pa.x)), dd(pb.y).sub(dd(pa.y)));
-                let along = |from: Point, to: Point| dd(to.x).sub(dd(from.x)).mul(dx).add(dd(to.y).sub(dd(from.y)).mul(dy));
-                let (beyond_b, beyond_a) = (along(pb, q), along(q, pa));
-                let beyond = if beyond_a.sub(beyond_b).signum() > 0 { beyond_a } else { beyond_b };
-                beyond.div(dx.mul(dx).add(dy.mul(dy)).sqrt())
+                let (dx, dy) = (lift(pb.x).sub(&lift(pa.x)), lift(pb.y).sub(&lift(pa.y)));
+                let along =
+                    |from: Point, to: Point| lift(to.x).sub(&lift(from.x)).mul(&dx).add(&lift(to.y).sub(&lift(from.y)).mul(&dy));
+                // the larger, as `f64::max` picks it
+                let beyond = smaller(along(pa, q), along(q, pb)).neg();
+                beyond.div(&T::hypot(&dx, &dy))
             }
             _ => {
-                let own = distance_in(&self.left, q, &dd).add(distance_in(&self.right, q, &dd));
-                distance_in(&self.segment, q, &dd).sub(own.mul(dd(0.5)))
+                let own = distance_in(&self.left, q, lift).add(&distance_in(&self.right, q, lift));
+                distance_in(&self.segment, q, lift).sub(&own.mul(&lift(0.5)))
             }
         }
         .to_f64();
