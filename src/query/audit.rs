@@ -115,7 +115,8 @@ fn every_small_fixture_passes_the_audit() {
 /// far out, and the margin of an edge there is below the rounding of its
 /// distances: each diagram must still be the exact one. Horizontal and
 /// vertical pairs (exactly parallel at any offset), mirrored and in both
-/// orders.
+/// orders, near the origin and at 2^30, with the shorter one cut at a
+/// straight vertex or a point exactly on the longer one.
 #[test]
 fn parallel_segments_an_ulp_apart_pass_the_audit() {
     use crate::splitmix::SplitMix64;
@@ -123,8 +124,10 @@ fn parallel_segments_an_ulp_apart_pass_the_audit() {
     let mut failures = Vec::new();
     for case in 0..240 {
         let mut coordinate = |lo: f64, hi: f64| lo + (hi - lo) * rng.unit();
-        let y = coordinate(0.5, 4.0) * if case % 5 < 2 { -1.0 } else { 1.0 };
-        let (x0, x1) = (coordinate(-4.0, 0.0), coordinate(0.5, 4.0));
+        // every other 48 cases far from the origin (2^30: an ulp is 2^-22)
+        let base = if (case / 48) % 2 == 1 { 1_073_741_824.0 } else { 0.0 };
+        let y = base + coordinate(0.5, 4.0) * if case % 5 < 2 { -1.0 } else { 1.0 };
+        let (x0, x1) = (base + coordinate(-4.0, 0.0), base + coordinate(0.5, 4.0));
         let (inner0, inner1) = (coordinate(x0, x1), coordinate(x0, x1));
         let (inner0, inner1) = (inner0.min(inner1), inner0.max(inner1));
         let ulps = [1u64, 2, 7, 1 << 10, 1 << 20, 1 << 30][case % 6];
@@ -134,9 +137,22 @@ fn parallel_segments_an_ulp_apart_pass_the_audit() {
         let side = if up { 1.0 } else { -1.0 };
         let bits = y.to_bits();
         let y_inner = f64::from_bits(if (y > 0.0) == up { bits + ulps } else { bits - ulps });
-        let points =
-            [[coordinate(-4.0, 4.0), coordinate(-4.0, 4.0) + 9.0 * side], [inner0, y_inner + side * coordinate(0.1, 1.0)]];
-        let mut segments = vec![[[x0, y], [x1, y]], [[inner0, y_inner], [inner1, y_inner]]];
+        let mut points = vec![
+            [base + coordinate(-4.0, 4.0), y + (9.0 + coordinate(0.0, 4.0)) * side],
+            [inner0, y_inner + side * coordinate(0.1, 1.0)],
+        ];
+        let mut segments = vec![[[x0, y], [x1, y]]];
+        let middle = 0.5 * (inner0 + inner1);
+        if case % 4 == 2 && inner0 < middle && middle < inner1 {
+            // the shorter one in two pieces with a straight (180°) vertex
+            segments.extend([[[inner0, y_inner], [middle, y_inner]], [[middle, y_inner], [inner1, y_inner]]]);
+        } else {
+            segments.push([[inner0, y_inner], [inner1, y_inner]]);
+        }
+        if case % 4 == 3 {
+            // a point exactly on the longer one (it splits it there)
+            points.push([0.5 * (x0 + x1), y]);
+        }
         if case % 3 == 0 {
             // a leg from the shorter one's end towards the point
             segments.push([[inner0, y_inner + side * 0.05], [inner0, y_inner]]);
@@ -149,7 +165,7 @@ fn parallel_segments_an_ulp_apart_pass_the_audit() {
         };
         let mut builder = Builder::new();
         let order: Vec<usize> = if case % 2 == 0 { (0..segments.len()).collect() } else { (0..segments.len()).rev().collect() };
-        builder.add_points(points.map(transform)).expect("points");
+        builder.add_points(points.iter().map(|&p| transform(p))).expect("points");
         builder.add_segments(order.iter().map(|&k| segments[k].map(transform))).expect("segments");
         let Ok(diagram) = builder.build() else {
             failures.push(format!("case {case}: no diagram"));
