@@ -16,6 +16,10 @@ pub enum ErrorKind {
     /// A polygon ring has fewer than three distinct points;
     /// [`Error::indices`] holds the polygon's and the ring's index.
     InvalidPolygon,
+    /// A circular arc is not one: equal endpoints, a zero or non-finite
+    /// bulge, three points on a line, or a circle beyond `f64`; the message
+    /// says which.
+    InvalidArc,
     /// An argument of a query is out of its domain (such as an offset
     /// distance that is NaN, infinite or zero); the message says which.
     InvalidArgument,

@@ -63,10 +63,10 @@ mod query;
 #[doc(hidden)]
 pub mod splitmix;
 
-pub use construct::{Builder, MAX_POINTS};
+pub use construct::{Builder, ChainPiece, MAX_POINTS};
 pub use diagram::{BuildStats, Diagram, EdgeId, SiteId, ValidationError, VertexId};
 pub use error::{Error, ErrorKind};
-pub use geometry::{Point, Site};
+pub use geometry::{CircularArc, Point, Site};
 pub use query::EdgeShape;
 pub use query::{
     Cell, Chain, Edge, EdgeEnd, HalfEdge, Indices, Location, MedialAxis, MedialAxisFilter, Offset, OffsetLoop, OffsetPiece,

@@ -6,7 +6,7 @@
 
 use crate::diagram::Diagram;
 use crate::error::{Error, ErrorKind};
-use crate::geometry::Point;
+use crate::geometry::{CircularArc, Point};
 
 use super::polygon_input::{name_rings, RingInput};
 
@@ -36,6 +36,8 @@ pub const MAX_POINTS: usize = 600_000_000;
 pub struct Builder {
     points: Vec<Point>,
     segments: Vec<[Point; 2]>,
+    /// Circular arcs (`add_arc`), each with its own input index.
+    arcs: Vec<CircularArc>,
     /// The rings of the polygons added (`polygon_input`), which bound the
     /// domain, and how many polygons there are.
     pub(super) rings: Vec<RingInput>,
@@ -61,6 +63,125 @@ impl Builder {
     /// Number of segments added so far (repeats and zero-length ones included).
     pub fn segment_count(&self) -> usize {
         self.segments.len()
+    }
+
+    /// Number of circular arcs added so far.
+    pub fn arc_count(&self) -> usize {
+        self.arcs.len()
+    }
+
+    /// The arc with input index `index`, as added; `None` past the end.
+    pub fn arc(&self, index: usize) -> Option<CircularArc> {
+        self.arcs.get(index).copied()
+    }
+
+    /// Adds a circular arc and returns its input index (the number of arcs
+    /// added before it; arcs are numbered apart from points and segments).
+    /// Its endpoints are input points like a segment's, shared exactly with
+    /// the segments and arcs that continue it.
+    ///
+    /// Arcs may share endpoints with any number of segments and arcs;
+    /// whether they cross, overlap or touch inside is checked by
+    /// [`Builder::build`]. Fails with [`ErrorKind::TooLarge`] when its
+    /// endpoints would pass [`MAX_POINTS`]; the builder is then unchanged.
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, CircularArc, Site};
+    /// let mut b = Builder::new();
+    /// // a slot: two half circles joined by two segments
+    /// b.add_segment([[0.0, 0.0], [4.0, 0.0]])?;
+    /// b.add_arc(CircularArc::from_bulge([4.0, 0.0], [4.0, 2.0], 1.0)?)?;
+    /// b.add_segment([[4.0, 2.0], [0.0, 2.0]])?;
+    /// b.add_arc(CircularArc::from_bulge([0.0, 2.0], [0.0, 0.0], 1.0)?)?;
+    /// let d = b.build()?;
+    /// let arc = d.site_of_arc(1).unwrap();
+    /// assert!(matches!(d.site(arc), Some(Site::Arc(_))));
+    /// assert!(d.validate().is_ok());
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn add_arc(&mut self, arc: CircularArc) -> Result<usize, Error> {
+        let endpoints = self.points.len().saturating_add(2 * (self.segments.len() + self.arcs.len() + 1));
+        check_capacity(endpoints)?;
+        self.arcs.try_reserve(1).map_err(|_| out_of_memory("arcs", 1, std::mem::size_of::<CircularArc>()))?;
+        self.arcs.push(arc);
+        Ok(self.arcs.len() - 1)
+    }
+
+    /// Adds a chain of vertices with a bulge each, as DXF's LWPOLYLINE
+    /// holds it: the piece from vertex `k` to vertex `k + 1` is a segment
+    /// where `bulge` is 0 and an arc with that bulge otherwise; `closed`
+    /// joins the last vertex to the first with the last bulge. Repeated
+    /// consecutive vertices are dropped (with their piece). Returns what
+    /// each piece became, in order. A polyline is an obstacle: it does not
+    /// bound the domain.
+    ///
+    /// Errors, with nothing added: a non-finite coordinate or bulge
+    /// ([`ErrorKind::InvalidCoordinate`], naming the vertex), or
+    /// [`ErrorKind::TooLarge`].
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, ChainPiece};
+    /// let mut b = Builder::new();
+    /// // a rounded rectangle's outline: four sides, four quarter arcs
+    /// let q = (std::f64::consts::PI / 8.0).tan();
+    /// let made = b.add_bulged_polyline(
+    ///     &[([1.0, 0.0], 0.0), ([3.0, 0.0], q), ([4.0, 1.0], 0.0), ([4.0, 2.0], q),
+    ///       ([3.0, 3.0], 0.0), ([1.0, 3.0], q), ([0.0, 2.0], 0.0), ([0.0, 1.0], q)],
+    ///     true,
+    /// )?;
+    /// assert_eq!(made.len(), 8);
+    /// assert_eq!(made[1], ChainPiece::Arc(0));
+    /// assert_eq!((b.segment_count(), b.arc_count()), (4, 4));
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn add_bulged_polyline<P: Into<Point> + Copy>(
+        &mut self,
+        vertices: &[(P, f64)],
+        closed: bool,
+    ) -> Result<Vec<ChainPiece>, Error> {
+        let mut chain: Vec<(Point, f64)> = Vec::with_capacity(vertices.len());
+        for (k, &(p, bulge)) in vertices.iter().enumerate() {
+            let p: Point = p.into();
+            if !p.is_finite() || !bulge.is_finite() {
+                return Err(Error::new(
+                    ErrorKind::InvalidCoordinate,
+                    format!("polyline vertex {k} has a non-finite coordinate or bulge ({}, {}) bulge {bulge}", p.x, p.y),
+                    vec![k],
+                ));
+            }
+            match chain.last_mut() {
+                // a repeat: its piece has no length; the bulge after it counts
+                Some(last) if last.0 == p => last.1 = bulge,
+                _ => chain.push((p, bulge)),
+            }
+        }
+        if closed && chain.len() > 1 && chain.first().map(|f| f.0) == chain.last().map(|l| l.0) {
+            chain.pop();
+        }
+        let pieces = if closed && chain.len() > 2 { chain.len() } else { chain.len().saturating_sub(1) };
+        let mut made = Vec::with_capacity(pieces);
+        let (segments, arcs) = (self.segments.len(), self.arcs.len());
+        let dropped = vertices.len() - chain.len();
+        for k in 0..pieces {
+            let ((p, bulge), (q, _)) = (chain[k], chain[(k + 1) % chain.len()]);
+            let piece = if bulge == 0.0 {
+                self.add_segment([p, q]).map(ChainPiece::Segment)
+            } else {
+                CircularArc::from_bulge(p, q, bulge)
+                    .map_err(|e| Error::new(e.kind(), format!("polyline vertex {k}: {}", e.message()), vec![k]))
+                    .and_then(|arc| self.add_arc(arc).map(ChainPiece::Arc))
+            };
+            match piece {
+                Ok(piece) => made.push(piece),
+                Err(e) => {
+                    self.segments.truncate(segments);
+                    self.arcs.truncate(arcs);
+                    return Err(e);
+                }
+            }
+        }
+        self.dropped_chain_points += dropped;
+        Ok(made)
     }
 
     /// The point with input index `index`, as added; `None` past the end.
@@ -273,6 +394,9 @@ impl Builder {
 
     /// `build` without the check of inputs beyond the exact range.
     fn build_at_any_span(&self) -> Result<Diagram, Error> {
+        if !self.arcs.is_empty() {
+            return super::with_arcs::diagram_with_arcs(&self.points, &self.segments, &self.arcs, self.split_crossings, !self.rings.is_empty());
+        }
         if self.split_crossings && !self.segments.is_empty() {
             let mut diagram = super::split::diagram_of_split(&self.points, &self.segments, &self.rings)?;
             diagram.stats.dropped_chain_points = self.dropped_chain_points;
@@ -434,6 +558,16 @@ impl Builder {
         self.dropped_chain_points += points.len() - chain.len();
         Ok(made)
     }
+}
+
+/// What a piece of [`Builder::add_bulged_polyline`] became: the input index
+/// of a segment or of an arc.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ChainPiece {
+    /// A straight piece: this segment input index.
+    Segment(usize),
+    /// A curved piece: this arc input index.
+    Arc(usize),
 }
 
 /// The points with repeated consecutive ones dropped, or the error for the

@@ -38,10 +38,11 @@ mod renumber;
 mod restart;
 mod shared_stretches;
 mod split;
+mod with_arcs;
 mod state;
 mod status_treap;
 
-pub use builder::{Builder, MAX_POINTS};
+pub use builder::{Builder, ChainPiece, MAX_POINTS};
 #[cfg(feature = "fault-injection")]
 pub use restart::set_restart_budget;
 

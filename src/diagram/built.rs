@@ -92,6 +92,13 @@ pub struct Diagram {
     /// Per input segment: the site it became (a repeat: the first one; a
     /// zero-length segment: its point).
     pub(crate) segment_site: Vec<SiteId>,
+    /// Number of arc sites, the last ones (`sites[sites.len() - arcs..]`);
+    /// their endpoints follow the segments' in `segment_ends`.
+    pub(crate) arc_sites: usize,
+    /// Per arc site (id minus the first arc site's): its input index.
+    pub(crate) arc_input: Vec<u32>,
+    /// Per input arc: the site it became.
+    pub(crate) arc_site: Vec<SiteId>,
     pub(crate) finite_vertices: usize,
     /// Per public edge: its canonical half-edge.
     pub(crate) edges: Vec<HalfEdgeId>,

@@ -23,6 +23,7 @@
 //! - `segments`: what the insertion of a segment asks, the certified
 //!   oracle that answers it, and where each new vertex goes.
 
+pub mod arc;
 mod arithmetic;
 pub(crate) mod curves;
 pub(crate) mod fault;
@@ -34,5 +35,6 @@ pub(crate) mod segments;
 pub mod site;
 pub mod solvers;
 
+pub use arc::CircularArc;
 pub use point::Point;
 pub use site::Site;

@@ -15,6 +15,7 @@
 //! each endpoint once and hands the same coordinates to the point site and to
 //! the segment site, so no tolerance is wanted (or safe) here.
 
+use super::arc::CircularArc;
 use super::arithmetic::real::Real;
 use super::point::Point;
 
@@ -34,6 +35,8 @@ pub enum Site {
         /// The other endpoint.
         b: Point,
     },
+    /// An open circular arc; its endpoints are separate point sites.
+    Arc(CircularArc),
 }
 
 impl Site {
@@ -48,19 +51,17 @@ impl Site {
     pub fn as_point(&self) -> Option<Point> {
         match *self {
             Site::Point(p) => Some(p),
-            Site::Segment { .. } => None,
+            Site::Segment { .. } | Site::Arc(_) => None,
         }
     }
 
-    /// One point that stands for the site: the point itself, or a
-    /// segment's midpoint (what a vertex at infinity sees of it, and where
-    /// a vertex no solver can place goes).
+    /// The two ends of a segment or an arc; a point twice.
     #[inline]
-    /// The two ends of a segment; a point twice.
     pub(crate) fn ends(&self) -> [Point; 2] {
         match *self {
             Site::Point(p) => [p, p],
             Site::Segment { a, b } => [a, b],
+            Site::Arc(arc) => [arc.start(), arc.end()],
         }
     }
 
@@ -69,13 +70,18 @@ impl Site {
         match *self {
             Site::Point(p) => Site::Point(p.scaled(factor)),
             Site::Segment { a, b } => Site::Segment { a: a.scaled(factor), b: b.scaled(factor) },
+            Site::Arc(arc) => Site::Arc(arc.scaled(factor)),
         }
     }
 
+    /// One point that stands for the site: the point itself, or a
+    /// segment's or arc's midpoint (what a vertex at infinity sees of it,
+    /// and where a vertex no solver can place goes).
     pub(crate) fn midpoint(&self) -> Point {
         match *self {
             Site::Point(p) => p,
             Site::Segment { a, b } => Point::new(0.5 * a.x + 0.5 * b.x, 0.5 * a.y + 0.5 * b.y),
+            Site::Arc(arc) => arc.midpoint(),
         }
     }
 
@@ -86,6 +92,7 @@ impl Site {
         match *self {
             Site::Point(_) => false,
             Site::Segment { a, b } => a == p || b == p,
+            Site::Arc(arc) => arc.start() == p || arc.end() == p,
         }
     }
 
@@ -96,6 +103,8 @@ impl Site {
         match *self {
             Site::Segment { a, b } if a == p => Some(b),
             Site::Segment { a, b } if b == p => Some(a),
+            Site::Arc(arc) if arc.start() == p => Some(arc.end()),
+            Site::Arc(arc) if arc.end() == p => Some(arc.start()),
             _ => None,
         }
     }
@@ -120,6 +129,7 @@ impl Site {
                     a
                 }
             }
+            Site::Arc(arc) => arc.nearest_point(p),
         }
     }
 
@@ -173,6 +183,10 @@ pub(crate) fn distance_in<T: Real>(site: &Site, p: Point, lift: &impl Fn(f64) ->
                 smaller(to_point(a), to_point(b))
             }
         }
+        // the circle's centre and radius are f64 roundings already: the
+        // distance to the circle in `T` is as good as the circle
+        Site::Arc(arc) if arc.spans(p) => to_point(arc.centre()).sub(&lift(arc.radius())).abs(),
+        Site::Arc(arc) => smaller(to_point(arc.start()), to_point(arc.end())),
     }
 }
 

@@ -125,15 +125,34 @@ impl Diagram {
         self.segment_input.get(k).map(|&j| j as usize)
     }
 
-    /// The endpoint sites of a segment site, in the order of its
-    /// [`Site::Segment`] `a` and `b`; `None` for a point site or an id out
-    /// of range.
+    /// Number of arc sites: the last ids, after the open segments.
+    pub fn arc_site_count(&self) -> usize {
+        self.arc_sites
+    }
+
+    /// The input index of an arc site (what the topology text calls
+    /// `A<j>`), or `None` for another site or an id out of range.
+    pub fn arc_input_index(&self, site: SiteId) -> Option<usize> {
+        let k = site.index().checked_sub(self.sites.len() - self.arc_sites)?;
+        self.arc_input.get(k).map(|&j| j as usize)
+    }
+
+    /// The site that the `index`-th input arc became, or `None` if there is
+    /// no such input arc.
+    pub fn site_of_arc(&self, index: usize) -> Option<SiteId> {
+        self.arc_site.get(index).copied()
+    }
+
+    /// The endpoint sites of a segment or arc site, in the order of its
+    /// [`Site::Segment`] `a` and `b` (an arc's start and end); `None` for a
+    /// point site or an id out of range.
     pub fn segment_endpoints(&self, site: SiteId) -> Option<[SiteId; 2]> {
         let k = site.index().checked_sub(self.point_sites)?;
         let [p, q] = *self.segment_ends.get(k)?;
         // The construction keeps the two ends in either order.
         let first_is_a = match self.sites[site.index()] {
             Site::Segment { a, .. } => self.sites[p.index()] == Site::Point(a),
+            Site::Arc(arc) => self.sites[p.index()] == Site::Point(arc.start()),
             _ => true,
         };
         Some(if first_is_a { [p, q] } else { [q, p] })
@@ -204,7 +223,7 @@ impl Diagram {
         let (sites, p) = (&self.sites, p.scaled(f));
         let site = |s: SiteId| match sites[s.index()] {
             Site::Point(q) => q.scaled(f),
-            Site::Segment { a, .. } => a.scaled(f), // not reached: points only here
+            other => other.ends()[0].scaled(f), // not reached: points only here
         };
         Some(self.store.descend(
             start,

@@ -573,8 +573,7 @@ impl Diagram {
     /// The coordinates of a point site.
     fn point_of(&self, s: SiteId) -> Point {
         match self.sites[s.index()] {
-            Site::Point(p) => p,
-            Site::Segment { a, .. } => a,
+            other => other.ends()[0],
         }
     }
 }

@@ -81,8 +81,7 @@ impl Diagram {
     pub fn piece(&self, piece: usize) -> Option<[Point; 2]> {
         let site = self.site_of_segment(piece)?;
         match self.site(site)? {
-            crate::Site::Segment { a, b } => Some([a, b]),
-            crate::Site::Point(p) => Some([p, p]),
+            site => Some(site.ends()),
         }
     }
 

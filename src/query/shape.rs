@@ -54,12 +54,26 @@ pub enum EdgeShape {
         /// is their supporting line.
         directrix: [Point; 2],
     },
+    /// A piece of the conic of points equidistant from two sites of which
+    /// one (at least) is a circular arc: a line, parabola, ellipse or
+    /// hyperbola branch. [`Diagram::edge_polyline`] samples it within a
+    /// tolerance; [`Diagram::edge_rational_bezier`] gives the piece as a
+    /// rational quadratic Bézier.
+    Conic {
+        /// The two sites, in input coordinates (the edge's left one first).
+        sites: [Site; 2],
+    },
 }
 
 impl EdgeShape {
     /// The shape of the edge between two sites (see the module doc), with
     /// `turn` the diagram's exact orientation of input points.
     fn between(first: Site, second: Site, turn: impl Fn(Point, Point, Point) -> Orientation) -> EdgeShape {
+        if let Some(arc) = [first, second].into_iter().find_map(|s| if let Site::Arc(arc) = s { Some(arc) } else { None }) {
+            // an arc and one of its own endpoints: the radial separator
+            let own_end = [first, second].iter().any(|s| s.as_point().is_some_and(|p| p == arc.start() || p == arc.end()));
+            return if own_end { EdgeShape::Line } else { EdgeShape::Conic { sites: [first, second] } };
+        }
         let Some((focus, a, b)) = focus_and_directrix(&first, &second) else { return EdgeShape::Line };
         if turn(a, b, focus) == Orientation::Collinear {
             return EdgeShape::Line;

@@ -322,6 +322,8 @@ fn line_of_sites(sites: [&Site; 2]) -> Option<(Point, Point)> {
             let line = unit(u.x + v.x, u.y + v.y).filter(|_| u.x * v.x + u.y * v.y > -1.0 + 1e-12).or(unit(-u.y, u.x))?;
             Some((corner, line))
         }
+        // a conic bisector: no line
+        _ => None,
     }
 }
 

@@ -125,6 +125,8 @@ impl Memo {
             let (kind, a, b) = match *site {
                 Site::Point(p) => (1, p, p),
                 Site::Segment { a, b } => (2, a, b),
+                // (not reached: arcs are placed by `arcs::arc_vertex`)
+                Site::Arc(arc) => (3, arc.start(), arc.end()),
             };
             key[0] |= kind << (8 * k);
             key[1 + 4 * k..5 + 4 * k].copy_from_slice(&[a.x, a.y, b.x, b.y].map(f64::to_bits));

@@ -149,6 +149,7 @@ fn rotate_smallest_first(sites: [Site; 3]) -> [Site; 3] {
         match *s {
             Site::Point(p) => [p.x, p.y, 0.0, 0.0],
             Site::Segment { a, b } => [a.x, a.y, b.x, b.y],
+            Site::Arc(arc) => [arc.start().x, arc.start().y, arc.end().x, arc.end().y],
         }
     };
     let less = |s: &Site, t: &Site| {
@@ -167,14 +168,14 @@ fn rotate_smallest_first(sites: [Site; 3]) -> [Site; 3] {
 fn point_of(s: Site) -> Option<Point> {
     match s {
         Site::Point(p) => Some(p),
-        Site::Segment { .. } => None,
+        Site::Segment { .. } | Site::Arc(_) => None,
     }
 }
 
 fn segment_of(s: Site) -> Option<(Point, Point)> {
     match s {
         Site::Segment { a, b } => Some((a, b)),
-        Site::Point(_) => None,
+        Site::Point(_) | Site::Arc(_) => None,
     }
 }
 

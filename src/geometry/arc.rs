@@ -1,0 +1,414 @@
+//! Circular arcs as input: [`CircularArc`], an arc between two exact input
+//! points on a circle fixed by a third exact datum, and the floating-point
+//! geometry every part of the library asks of it (centre, radius, the
+//! angular span, distances, nearest points, tangents).
+//!
+//! The third datum is kept as given: DXF's *bulge* `tan(θ/4)` (θ the signed
+//! angle swept from start to end, positive counter-clockwise), or a point
+//! the arc passes through. Either fixes the circle as an exact rational
+//! one: its centre is `(s + e)/2 + k · perp(e − s)` with `k` rational in
+//! the datum (`(1 − β²) / 4β` for a bulge; from the circumcentre for a
+//! point). The arc's endpoints are the input's own points, so a chain of
+//! segments and arcs stays closed exactly. The centre and radius held here
+//! are `f64` roundings of the exact ones, for the floating-point stages;
+//! the exact input check goes back to the datum.
+//!
+//! As with segments, the diagram sees an arc as three sites: its two
+//! endpoints, and the open arc. The open arc's region lies within its
+//! *cone of influence*: the wedge at the centre between the rays through
+//! the endpoints. Beyond it the endpoints are nearer.
+
+use super::point::Point;
+use crate::error::{Error, ErrorKind};
+
+/// What fixes an arc's circle besides its endpoints.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Datum {
+    /// DXF's bulge: `tan(θ/4)`, θ the signed sweep (positive
+    /// counter-clockwise); finite and nonzero.
+    Bulge(f64),
+    /// A point strictly inside the arc, not on the chord's line.
+    Through(Point),
+}
+
+/// A circular arc from `start` to `end`, less than a full turn, on a
+/// circle fixed exactly by a bulge or by a third point on the arc.
+///
+/// ```
+/// use segvoronoi::{CircularArc, Point};
+///
+/// // the upper half of the unit circle, counter-clockwise from (1, 0)
+/// let half = CircularArc::from_bulge([1.0, 0.0], [-1.0, 0.0], 1.0)?;
+/// assert_eq!(half.centre(), Point::new(0.0, 0.0));
+/// assert_eq!(half.radius(), 1.0);
+/// assert!(half.is_counter_clockwise());
+/// let same = CircularArc::through([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0])?;
+/// assert_eq!(same.centre(), half.centre());
+/// assert!((half.distance(Point::new(0.0, 3.0)) - 2.0).abs() < 1e-15);
+/// # Ok::<(), segvoronoi::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CircularArc {
+    start: Point,
+    end: Point,
+    datum: Datum,
+    /// The rounded centre and radius, from the datum.
+    centre: Point,
+    radius: f64,
+    counter_clockwise: bool,
+    /// Whether the sweep is less than a half turn (decided from the datum).
+    minor: bool,
+}
+
+impl CircularArc {
+    /// The arc from `start` to `end` with DXF's `bulge`: `tan(θ/4)` for the
+    /// signed sweep θ (positive: counter-clockwise; 1: a half circle; the
+    /// sweep grows toward a full turn as `|bulge|` grows).
+    ///
+    /// Errors ([`ErrorKind::InvalidArc`]): a non-finite coordinate or
+    /// bulge, a zero bulge (a straight segment: add it as one), equal
+    /// endpoints, or a circle too large or small for `f64`.
+    pub fn from_bulge(start: impl Into<Point>, end: impl Into<Point>, bulge: f64) -> Result<CircularArc, Error> {
+        let (start, end) = (start.into(), end.into());
+        let name = || format!("arc ({}, {}) - ({}, {}) with bulge {bulge}", start.x, start.y, end.x, end.y);
+        check_ends(start, end, &name)?;
+        if !bulge.is_finite() || bulge == 0.0 {
+            return Err(invalid(format!("{}: the bulge must be finite and nonzero (zero is a segment)", name())));
+        }
+        CircularArc::new(start, end, Datum::Bulge(bulge), name)
+    }
+
+    /// The arc from `start` through `via` to `end`.
+    ///
+    /// Errors ([`ErrorKind::InvalidArc`]): a non-finite coordinate, two of
+    /// the three points equal or all three on one line, or a circle too
+    /// large or small for `f64`.
+    pub fn through(start: impl Into<Point>, via: impl Into<Point>, end: impl Into<Point>) -> Result<CircularArc, Error> {
+        let (start, via, end) = (start.into(), via.into(), end.into());
+        let name = || format!("arc ({}, {}) through ({}, {}) to ({}, {})", start.x, start.y, via.x, via.y, end.x, end.y);
+        check_ends(start, end, &name)?;
+        if !via.is_finite() {
+            return Err(invalid(format!("{}: a coordinate is not finite", name())));
+        }
+        if via == start || via == end {
+            return Err(invalid(format!("{}: the middle point repeats an endpoint", name())));
+        }
+        if super::predicates::exact_orientation(start, via, end) == super::predicates::Orientation::Collinear {
+            return Err(invalid(format!("{}: the three points are on one line (a segment)", name())));
+        }
+        CircularArc::new(start, end, Datum::Through(via), name)
+    }
+
+    fn new(start: Point, end: Point, datum: Datum, name: impl Fn() -> String) -> Result<CircularArc, Error> {
+        let (centre, counter_clockwise, minor) = match datum {
+            Datum::Bulge(b) => (bulge_centre(start, end, b), b > 0.0, b.abs() < 1.0),
+            Datum::Through(m) => {
+                let ccw = super::predicates::exact_orientation(start, m, end)
+                    == super::predicates::Orientation::CounterClockwise;
+                // less than a half turn: the angle at `m` is obtuse
+                (circumcentre(start, m, end), ccw, dot(m, start, end) < 0.0)
+            }
+        };
+        let radius = 0.5 * (centre.distance(start) + centre.distance(end));
+        if !centre.is_finite() || !radius.is_finite() || radius <= 0.0 {
+            return Err(invalid(format!("{}: its circle is out of the range of f64", name())));
+        }
+        Ok(CircularArc { start, end, datum, centre, radius, counter_clockwise, minor })
+    }
+
+    /// The first endpoint.
+    #[inline]
+    pub fn start(&self) -> Point {
+        self.start
+    }
+
+    /// The last endpoint.
+    #[inline]
+    pub fn end(&self) -> Point {
+        self.end
+    }
+
+    /// The centre of the circle (rounded to `f64`).
+    #[inline]
+    pub fn centre(&self) -> Point {
+        self.centre
+    }
+
+    /// The radius of the circle (rounded to `f64`: the mean of the rounded
+    /// centre's distances to the endpoints).
+    #[inline]
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+
+    /// Whether the arc runs counter-clockwise from start to end.
+    #[inline]
+    pub fn is_counter_clockwise(&self) -> bool {
+        self.counter_clockwise
+    }
+
+    /// The bulge as given, or for an arc given by a third point the bulge
+    /// of that arc (rounded).
+    pub fn bulge(&self) -> f64 {
+        match self.datum {
+            Datum::Bulge(b) => b,
+            Datum::Through(_) => {
+                let sweep = self.sweep();
+                (sweep / 4.0).tan()
+            }
+        }
+    }
+
+    /// The point the arc was given through, if it was given so.
+    pub fn via(&self) -> Option<Point> {
+        match self.datum {
+            Datum::Through(m) => Some(m),
+            Datum::Bulge(_) => None,
+        }
+    }
+
+    /// The signed angle swept from start to end (positive:
+    /// counter-clockwise), in `(-2π, 2π)`.
+    pub fn sweep(&self) -> f64 {
+        let angle = |p: Point| (p.y - self.centre.y).atan2(p.x - self.centre.x);
+        let mut sweep = angle(self.end) - angle(self.start);
+        let full = 2.0 * std::f64::consts::PI;
+        if self.counter_clockwise {
+            if sweep <= 0.0 {
+                sweep += full;
+            }
+        } else if sweep >= 0.0 {
+            sweep -= full;
+        }
+        sweep
+    }
+
+    /// The point at fraction `t` of the sweep (`0`: start, `1`: end).
+    pub fn point_at(&self, t: f64) -> Point {
+        if t <= 0.0 {
+            return self.start;
+        }
+        if t >= 1.0 {
+            return self.end;
+        }
+        let angle = (self.start.y - self.centre.y).atan2(self.start.x - self.centre.x) + t * self.sweep();
+        Point::new(self.centre.x + self.radius * angle.cos(), self.centre.y + self.radius * angle.sin())
+    }
+
+    /// The point halfway along the arc.
+    pub fn midpoint(&self) -> Point {
+        match self.datum {
+            // exact in reals: (s + e)/2 - (β/2) perp(e - s)
+            Datum::Bulge(b) => {
+                let (dx, dy) = (self.end.x - self.start.x, self.end.y - self.start.y);
+                Point::new(0.5 * (self.start.x + self.end.x) + 0.5 * b * dy, 0.5 * (self.start.y + self.end.y) - 0.5 * b * dx)
+            }
+            Datum::Through(_) => self.point_at(0.5),
+        }
+    }
+
+    /// The arc with start and end swapped (the same point set).
+    pub fn reversed(&self) -> CircularArc {
+        let datum = match self.datum {
+            Datum::Bulge(b) => Datum::Bulge(-b),
+            through => through,
+        };
+        CircularArc { start: self.end, end: self.start, datum, counter_clockwise: !self.counter_clockwise, ..*self }
+    }
+
+    /// The arc with every coordinate multiplied by `factor` (a power of two
+    /// keeps it exact), the centre and radius recomputed.
+    pub(crate) fn scaled(&self, factor: f64) -> CircularArc {
+        let datum = match self.datum {
+            Datum::Through(m) => Datum::Through(m.scaled(factor)),
+            bulge => bulge,
+        };
+        let (start, end) = (self.start.scaled(factor), self.end.scaled(factor));
+        CircularArc::new(start, end, datum, String::new).unwrap_or(CircularArc {
+            start,
+            end,
+            datum,
+            centre: self.centre.scaled(factor),
+            radius: self.radius * factor.abs(),
+            counter_clockwise: self.counter_clockwise,
+            minor: self.minor,
+        })
+    }
+
+    /// The exact datum, for the exact input check: `(Some(bulge), None)` or
+    /// `(None, Some(via))`.
+    pub(crate) fn datum(&self) -> (Option<f64>, Option<Point>) {
+        match self.datum {
+            Datum::Bulge(b) => (Some(b), None),
+            Datum::Through(m) => (None, Some(m)),
+        }
+    }
+
+    /// Whether the direction from the centre to `p` lies within the arc's
+    /// angular span (the cone of influence), ends included. Floating point:
+    /// near the bounding rays the answer may be either.
+    pub fn spans(&self, p: Point) -> bool {
+        let c = self.centre;
+        let cross = |u: Point, v: Point| (u.x - c.x) * (v.y - c.y) - (u.y - c.y) * (v.x - c.x);
+        // counter-clockwise from `from` to `to`
+        let (from, to) = if self.counter_clockwise { (self.start, self.end) } else { (self.end, self.start) };
+        let (after_from, before_to) = (cross(from, p) >= 0.0, cross(p, to) >= 0.0);
+        if self.minor {
+            after_from && before_to
+        } else {
+            after_from || before_to
+        }
+    }
+
+    /// The distance from `p` to the closed arc: to the circle where `p`'s
+    /// direction from the centre lies in the span, else to the nearer
+    /// endpoint.
+    pub fn distance(&self, p: Point) -> f64 {
+        if self.spans(p) {
+            (self.centre.distance(p) - self.radius).abs()
+        } else {
+            self.start.distance(p).min(self.end.distance(p))
+        }
+    }
+
+    /// The point of the closed arc nearest to `p`.
+    pub fn nearest_point(&self, p: Point) -> Point {
+        if self.spans(p) {
+            let d = self.centre.distance(p);
+            if d > 0.0 {
+                let k = self.radius / d;
+                return Point::new(self.centre.x + k * (p.x - self.centre.x), self.centre.y + k * (p.y - self.centre.y));
+            }
+            return self.midpoint();
+        }
+        if self.start.distance_squared(p) <= self.end.distance_squared(p) {
+            self.start
+        } else {
+            self.end
+        }
+    }
+
+    /// The unit tangent at the endpoint `at` (start or end), pointing into
+    /// the arc.
+    pub(crate) fn tangent_into(&self, at: Point) -> Point {
+        let (rx, ry) = ((at.x - self.centre.x) / self.radius, (at.y - self.centre.y) / self.radius);
+        // counter-clockwise motion at the start is the left turn of the radius
+        let forward = if self.counter_clockwise { Point::new(-ry, rx) } else { Point::new(ry, -rx) };
+        if at == self.start {
+            forward
+        } else {
+            Point::new(-forward.x, -forward.y)
+        }
+    }
+
+    /// The signed distance of `p` from the circle, positive on the arc's
+    /// left (toward the centre for a counter-clockwise arc).
+    pub(crate) fn left_of(&self, p: Point) -> f64 {
+        let inside = self.radius - self.centre.distance(p);
+        if self.counter_clockwise {
+            inside
+        } else {
+            -inside
+        }
+    }
+}
+
+fn dot(c: Point, u: Point, v: Point) -> f64 {
+    (u.x - c.x) * (v.x - c.x) + (u.y - c.y) * (v.y - c.y)
+}
+
+fn check_ends(start: Point, end: Point, name: &impl Fn() -> String) -> Result<(), Error> {
+    if !start.is_finite() || !end.is_finite() {
+        return Err(invalid(format!("{}: a coordinate is not finite", name())));
+    }
+    if start == end {
+        return Err(invalid(format!("{}: the endpoints are equal (a full circle is two arcs)", name())));
+    }
+    Ok(())
+}
+
+fn invalid(message: String) -> Error {
+    Error::new(ErrorKind::InvalidArc, message, Vec::new())
+}
+
+/// `(s + e)/2 + k perp(e − s)` with `k = (1 − β²) / 4β`, `perp` the left
+/// turn: the centre lies left of `s → e` for a counter-clockwise arc of
+/// less than a half turn.
+fn bulge_centre(s: Point, e: Point, bulge: f64) -> Point {
+    let k = if bulge.abs() > 1e150 { -bulge / 4.0 } else { (1.0 - bulge * bulge) / (4.0 * bulge) };
+    let (dx, dy) = (e.x - s.x, e.y - s.y);
+    Point::new(0.5 * (s.x + e.x) - k * dy, 0.5 * (s.y + e.y) + k * dx)
+}
+
+/// The centre of the circle through three points not on one line,
+/// computed relative to the first.
+fn circumcentre(a: Point, b: Point, c: Point) -> Point {
+    let (bx, by, cx, cy) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
+    let d = 2.0 * (bx * cy - by * cx);
+    let (b2, c2) = (bx * bx + by * by, cx * cx + cy * cy);
+    Point::new(a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    #[test]
+    fn bulge_and_third_point_give_the_same_circle() {
+        let quarter = CircularArc::from_bulge([1.0, 0.0], [0.0, 1.0], (std::f64::consts::PI / 8.0).tan()).unwrap();
+        let by_point = CircularArc::through([1.0, 0.0], [0.5f64.sqrt(), 0.5f64.sqrt()], [0.0, 1.0]).unwrap();
+        for arc in [quarter, by_point] {
+            assert!(arc.centre().distance(p(0.0, 0.0)) < 1e-15, "{arc:?}");
+            assert!((arc.radius() - 1.0).abs() < 1e-15);
+            assert!(arc.is_counter_clockwise());
+            assert!((arc.sweep() - std::f64::consts::FRAC_PI_2).abs() < 1e-14);
+        }
+        assert!((by_point.bulge() - quarter.bulge()).abs() < 1e-15);
+    }
+
+    #[test]
+    fn clockwise_three_quarters() {
+        // from (0, 1) clockwise to (-1, 0): through (1, 0) and (0, -1)
+        let arc = CircularArc::through([0.0, 1.0], [1.0, 0.0], [-1.0, 0.0]).unwrap();
+        assert!(!arc.is_counter_clockwise());
+        assert!((arc.sweep() + 1.5 * std::f64::consts::PI).abs() < 1e-14);
+        assert!(arc.spans(p(0.0, -5.0)) && arc.spans(p(3.0, 0.1)));
+        assert!(!arc.spans(p(-1.0, 1.0)), "the missing quarter");
+        assert!((arc.distance(p(-1.0, 1.0)) - 1.0).abs() < 1e-15);
+        assert!((arc.distance(p(0.0, -3.0)) - 2.0).abs() < 1e-15);
+        assert_eq!(arc.nearest_point(p(-2.0, 2.0)), p(0.0, 1.0));
+        let bulge = (arc.sweep() / 4.0).tan();
+        let again = CircularArc::from_bulge(arc.start(), arc.end(), bulge).unwrap();
+        assert!(again.centre().distance(arc.centre()) < 1e-15);
+        assert_eq!(arc.reversed().reversed(), arc);
+        assert!(arc.reversed().is_counter_clockwise());
+    }
+
+    #[test]
+    fn tangents_point_into_the_arc() {
+        let arc = CircularArc::from_bulge([1.0, 0.0], [-1.0, 0.0], 1.0).unwrap();
+        let t = arc.tangent_into(arc.start());
+        assert!((t.x - 0.0).abs() < 1e-15 && (t.y - 1.0).abs() < 1e-15, "{t:?}");
+        let t = arc.tangent_into(arc.end());
+        assert!((t.x - 0.0).abs() < 1e-15 && (t.y - 1.0).abs() < 1e-15, "{t:?}");
+        assert!(arc.left_of(p(0.0, 0.5)) > 0.0 && arc.reversed().left_of(p(0.0, 0.5)) < 0.0);
+        assert_eq!(arc.midpoint(), p(0.0, 1.0));
+    }
+
+    #[test]
+    fn bad_arcs_are_refused_with_their_reason() {
+        let e = CircularArc::from_bulge([0.0, 0.0], [1.0, 0.0], 0.0).unwrap_err();
+        assert_eq!(e.kind(), ErrorKind::InvalidArc);
+        assert!(e.message().contains("zero is a segment"), "{e}");
+        assert!(CircularArc::from_bulge([0.0, 0.0], [0.0, 0.0], 1.0).is_err());
+        assert!(CircularArc::from_bulge([0.0, f64::NAN], [0.0, 1.0], 1.0).is_err());
+        assert!(CircularArc::through([0.0, 0.0], [1.0, 1.0], [2.0, 2.0]).unwrap_err().message().contains("one line"));
+        assert!(CircularArc::from_bulge([0.0, 0.0], [1.0, 0.0], 1e-300).is_err(), "a circle beyond f64");
+        let nearly_full = CircularArc::from_bulge([0.0, 0.0], [1e-3, 0.0], 1e6).unwrap();
+        assert!(nearly_full.sweep() > 6.28);
+    }
+}
