@@ -1200,6 +1200,7 @@ pub(crate) fn audit_depth(sites: &[Site; 3], other: &Site) -> Option<(Point, f64
     let question = match *other {
         Site::Point(p) => Reach::Distance { a: p, b: p },
         Site::Segment { a, b } => Reach::Distance { a, b },
+        _ => return None,
     };
     // magnitudes far apart: 400 bits lose the small ones
     let spread = coordinate_exponent_spread(sites.iter().chain(std::iter::once(other)).flat_map(Site::ends));

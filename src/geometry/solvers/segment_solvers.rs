@@ -961,6 +961,7 @@ mod tests {
                 let t = segment_parameter(a, b, centre);
                 angle(Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)))
             }
+            Site::Arc(_) => angle(site.nearest_point(centre)),
         }
     }
 
