@@ -407,7 +407,8 @@ mod tests {
         assert!(CircularArc::from_bulge([0.0, 0.0], [0.0, 0.0], 1.0).is_err());
         assert!(CircularArc::from_bulge([0.0, f64::NAN], [0.0, 1.0], 1.0).is_err());
         assert!(CircularArc::through([0.0, 0.0], [1.0, 1.0], [2.0, 2.0]).unwrap_err().message().contains("one line"));
-        assert!(CircularArc::from_bulge([0.0, 0.0], [1.0, 0.0], 1e-300).is_err(), "a circle beyond f64");
+        assert!(CircularArc::from_bulge([0.0, 0.0], [1.0, 0.0], 1e-310).is_err(), "a circle beyond f64");
+        assert!(CircularArc::from_bulge([0.0, 0.0], [1.0, 0.0], 1e-300).is_ok(), "nearly straight, still a circle");
         let nearly_full = CircularArc::from_bulge([0.0, 0.0], [1e-3, 0.0], 1e6).unwrap();
         assert!(nearly_full.sweep() > 6.28);
     }
