@@ -17,7 +17,13 @@ INPUT is read by its extension, else by its first characters:
     MULTILINESTRING, POLYGON, MULTIPOLYGON, GEOMETRYCOLLECTION, any case,
     EMPTY allowed, Z/M/ZM ordinates ignored), any number of geometries one
     after the other; EWKT too: a leading `SRID=4326;` is accepted and
-    reported with --stats (coordinates are used as they are);
+    reported with --stats (coordinates are used as they are); curves as
+    PostGIS writes them: CIRCULARSTRING (start, a point on the arc, end;
+    two more points per further arc; three points on a line are a segment,
+    start = end a full circle), COMPOUNDCURVE, CURVEPOLYGON, MULTICURVE,
+    MULTISURFACE: circular arcs are sites of the diagram (with arcs the
+    rings of a CURVEPOLYGON are obstacles: no domain, medial axis, offsets
+    or inscribed circle yet);
   .geojson/.json, or text starting with `{`: a GeoJSON geometry, Feature
     or FeatureCollection (every polygon and multipolygon becomes rings of
     the domain, lines polylines, points points; properties are ignored);
@@ -80,6 +86,10 @@ struct Cli {
     /// Print key=value statistics on standard error
     #[arg(long)]
     stats: bool,
+
+    /// Write the whole diagram as JSON, for any input (points, segments, arcs): its sites (id, name, kind point, segment or arc, coordinates, input index; an arc's centre, radius, bulge and direction), its vertices (id, position, clearance, the three sites) and its edges (id, kind line, parabola or conic, the two sites, both ends: a vertex id or a direction to infinity)
+    #[arg(long, value_name = "OUT.json", value_parser = file_name)]
+    diagram: Option<PathBuf>,
 
     /// Write the medial axis (the Voronoi edges inside the domain that are not separators; without polygons every such edge). OUT.wkt: one MULTILINESTRING Z, a linestring per chain sampled within the tolerance, z the clearance at each point; the pieces of a chain that reach infinity (only without polygons) are cut off. OUT.geojson: a Feature with a MultiLineString of the same samples and z the clearance, and the property `clearance` (one array per line). OUT.json: the exact chains, each with `closed` and its pieces: Voronoi edge id, kind (line or parabola), both ends (a vertex id and point, or a direction to infinity), the clearance at both ends (null at infinity), for a parabola its focus and directrix
     #[arg(long, value_name = "OUT", value_parser = file_name)]
@@ -169,6 +179,8 @@ pub struct Options {
     pub topology: bool,
     pub voronoi_pairs: bool,
     pub stats: bool,
+    /// `--diagram`: where to write the diagram as JSON.
+    pub diagram: Option<PathBuf>,
     /// `--medial-axis`: where and in which format.
     pub medial_axis: Option<(PathBuf, Format)>,
     /// `--tolerance`: positive and finite.
@@ -242,6 +254,7 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Options, Stop> {
         topology: cli.topology || cli.voronoi_pairs,
         voronoi_pairs: cli.voronoi_pairs,
         stats: cli.stats,
+        diagram: cli.diagram,
         medial_axis,
         tolerance: cli.tolerance,
         corner_angle: cli.corner_angle,
@@ -331,7 +344,8 @@ mod tests {
 
     #[test]
     fn flags_in_any_order() {
-        let o = run(&["--stats", "in.txt", "--svg", "out.svg", "--topology"]).unwrap();
+        let o = run(&["--stats", "in.txt", "--svg", "out.svg", "--topology", "--diagram", "d.json"]).unwrap();
+        assert_eq!(o.diagram, Some(PathBuf::from("d.json")));
         assert_eq!(o.source, Source::File("in.txt".into()));
         assert_eq!(o.svg, Some(PathBuf::from("out.svg")));
         assert!(o.topology && o.stats && !o.voronoi_pairs);

@@ -3,11 +3,12 @@
 //! or as GeoJSON (`wkt`), and added to a builder.
 
 use std::io::Read;
+use std::ops::Range;
 
 use segvoronoi::{boost_text, Builder, Error};
 
 use crate::args::Source;
-use crate::wkt::{self, Shape, Shapes, Xy};
+use crate::wkt::{self, Shape, Shapes, Step, Xy};
 use crate::{bad_input, demo, Failure};
 
 /// Where the builder's input indices came from: lines of a Boost.Polygon
@@ -20,6 +21,8 @@ pub struct Origins {
     wkt_points: Vec<(usize, usize)>,
     /// (segment indices, geometry, ring of a polygon)
     wkt_segments: Vec<(std::ops::Range<usize>, usize, Option<usize>)>,
+    /// (arc indices, geometry, ring of a CURVEPOLYGON)
+    wkt_arcs: Vec<(std::ops::Range<usize>, usize, Option<usize>)>,
 }
 
 impl Origins {
@@ -32,6 +35,16 @@ impl Origins {
         Some(match ring {
             Some(r) => format!("geometry {k} (a polygon), ring {r}"),
             None => format!("geometry {k} (a linestring)"),
+        })
+    }
+
+    /// Where input arc `j` is, e.g. `geometry 2 (a curve polygon), ring 0`.
+    #[allow(dead_code)] // for the arcs' input check, coming with the build
+    pub fn of_arc(&self, j: usize) -> Option<String> {
+        let (_, k, ring) = self.wkt_arcs.iter().find(|(range, _, _)| range.contains(&j))?;
+        Some(match ring {
+            Some(r) => format!("geometry {k} (a curve polygon), ring {r}"),
+            None => format!("geometry {k} (a curve)"),
         })
     }
 
@@ -154,6 +167,18 @@ impl Input {
                                 origins.wkt_segments.push((made, k, Some(r)));
                             }
                         }
+                        Shape::Curve(steps) => {
+                            let (segments, arcs) = add_steps(builder, steps)?;
+                            origins.wkt_segments.push((segments, k, None));
+                            origins.wkt_arcs.push((arcs, k, None));
+                        }
+                        Shape::CurveRings(rings) => {
+                            for (r, steps) in rings.iter().enumerate() {
+                                let (segments, arcs) = add_steps(builder, steps)?;
+                                origins.wkt_segments.push((segments, k, Some(r)));
+                                origins.wkt_arcs.push((arcs, k, Some(r)));
+                            }
+                        }
                     }
                 }
             }
@@ -187,11 +212,22 @@ impl Input {
                 match shape {
                     Shape::LineString(line) => lines.push(line.clone()),
                     Shape::Point(p) => points.push(*p),
-                    Shape::Polygon(_) => {}
+                    Shape::Polygon(_) | Shape::Curve(_) | Shape::CurveRings(_) => {}
                 }
             }
         }
         (lines, points)
+    }
+
+    /// Whether the input has a circular arc (a WKT curve with one): then
+    /// there is no domain, medial axis or offsets yet (issue 32).
+    pub fn has_arcs(&self) -> bool {
+        match self {
+            Input::Shapes(Shapes { shapes, .. }) => {
+                shapes.iter().any(|s| matches!(s, Shape::Curve(_) | Shape::CurveRings(_)))
+            }
+            Input::Boost(_) => false,
+        }
     }
 
     /// The SRID an EWKT input declared (its coordinates are used as they
@@ -202,6 +238,20 @@ impl Input {
             Input::Boost(_) => None,
         }
     }
+}
+
+/// Adds a chain of segments and arcs piece by piece (an arc's endpoints
+/// are the coordinates of the pieces around it, so the chain stays closed
+/// exactly); returns the segment and arc indices it made.
+fn add_steps(builder: &mut Builder, steps: &[Step]) -> Result<(Range<usize>, Range<usize>), Error> {
+    let (segments, arcs) = (builder.segment_count(), builder.arc_count());
+    for step in steps {
+        match *step {
+            Step::Segment(ends) => builder.add_segment(ends).map(drop)?,
+            Step::Arc(arc) => builder.add_arc(arc).map(drop)?,
+        }
+    }
+    Ok((segments..builder.segment_count(), arcs..builder.arc_count()))
 }
 
 #[cfg(test)]

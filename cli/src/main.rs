@@ -6,6 +6,7 @@
 
 mod args;
 mod demo;
+mod diagram_output;
 mod geojson_output;
 mod input;
 mod medial_output;
@@ -76,6 +77,15 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
         Source::Demo => "making the demo input".to_string(),
     });
     let (name, input) = input::read(&options.source)?;
+    let arcs = input.has_arcs();
+    if arcs {
+        refuse_with_arcs(&options).map_err(|flag| {
+            failed(format!(
+                "{name}: {flag} is not available yet when the input has circular arcs: domains, the medial axis and offsets \
+                 of arcs are still to come (issue 32); the diagram itself is (--diagram, --topology, --svg, --stats)"
+            ))
+        })?;
+    }
 
     // Library errors (a non-finite coordinate, crossing segments or rings,
     // a ring of fewer than three points) name the input indices: exit
@@ -84,10 +94,11 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     let origins = input.add_to(&mut builder).map_err(|e| failed(format!("{name}: {e}")))?;
     builder.split_crossings(options.split_crossings);
     progress.phase(&format!(
-        "building: the input check{}, then the diagram of {} points and {} segments",
+        "building: the input check{}, then the diagram of {} points and {} segments{}",
         if options.split_crossings { " and the split" } else { "" },
         builder.point_count(),
-        builder.segment_count()
+        builder.segment_count(),
+        if arcs { format!(" and {} arcs", builder.arc_count()) } else { String::new() }
     ));
     // Only the construction is timed: not reading, not writing.
     let start = Instant::now();
@@ -109,7 +120,10 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
 
     let tolerance = options.tolerance.unwrap_or_else(|| default_tolerance(&diagram));
     // The axis is computed once, for the file and the picture alike.
-    let needs_axis = options.medial_axis.is_some() || (options.svg.is_some() && diagram.has_domain());
+    // With arcs there is no domain yet (the options that need one were
+    // refused above): the picture is the diagram's.
+    let has_domain = diagram.has_domain() && !arcs;
+    let needs_axis = options.medial_axis.is_some() || (options.svg.is_some() && has_domain);
     let axis = if needs_axis {
         progress.phase("medial axis");
         medial_axis(&diagram, &options)
@@ -122,12 +136,12 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
         let (lines, points) = input.obstacles();
         let domain = svg::Domain { rings: &rings, axis: &axis, tolerance, lines: &lines, points: &points };
         let look = svg::Look {
-            title: Some(title(&name, &diagram, builder.segment_count())),
+            title: Some(title(&name, &diagram, &builder)),
             // EWKT's SRID 4326 is longitude and latitude in degrees.
             units: options.units.clone().or_else(|| (input.srid() == Some(4326)).then(|| "deg".to_string())),
             diagram: options.svg_diagram,
         };
-        write_file(path, &svg::render(&diagram, diagram.has_domain().then_some(&domain), &offsets, &look))?;
+        write_file(path, &svg::render(&diagram, has_domain.then_some(&domain), &offsets, &look))?;
     }
     if let Some((path, format)) = &options.medial_axis {
         let text = match format {
@@ -144,6 +158,9 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
             Format::Json => offset_output::json(&offsets),
         };
         write_file(path, &text)?;
+    }
+    if let Some(path) = &options.diagram {
+        write_file(path, &diagram_output::json(&diagram, builder.point_count()))?;
     }
     if let Some(path) = &options.write_sites {
         write_file(path, &sites_as_built(&diagram, builder.point_count()))?;
@@ -171,7 +188,7 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     if !wants_output(&options) {
         // Nothing asked for: say what was built and how to see it.
         print(&format!(
-            "{name}: {} sites, {} vertices, {} edges (see --svg, --topology, --stats, --medial-axis, --offset)\n",
+            "{name}: {} sites, {} vertices, {} edges (see --svg, --diagram, --topology, --stats, --medial-axis, --offset)\n",
             diagram.site_count(),
             diagram.vertex_count(),
             diagram.edge_count()
@@ -196,10 +213,28 @@ fn sites_as_built(diagram: &Diagram, points: usize) -> String {
 }
 
 /// The picture's title: the input's file name and what it holds.
-fn title(name: &str, diagram: &Diagram, segments: usize) -> String {
+fn title(name: &str, diagram: &Diagram, builder: &Builder) -> String {
     let name = Path::new(name).file_name().map_or(name.to_string(), |n| n.to_string_lossy().into_owned());
-    let what = if diagram.has_domain() { "medial axis" } else { "Voronoi diagram" };
-    format!("{name}: {what}, {} sites ({segments} segments)", diagram.site_count())
+    let arcs = builder.arc_count();
+    let what = if diagram.has_domain() && arcs == 0 { "medial axis" } else { "Voronoi diagram" };
+    let segments = builder.segment_count();
+    let arcs = if arcs > 0 { format!(", {arcs} arcs") } else { String::new() };
+    format!("{name}: {what}, {} sites ({segments} segments{arcs})", diagram.site_count())
+}
+
+/// The first option given that needs what arcs do not have yet (a domain,
+/// the medial axis, offsets; Boost.Polygon's text for --write-sites has no
+/// arcs), by its flag.
+fn refuse_with_arcs(options: &Options) -> Result<(), &'static str> {
+    let refused = [
+        (options.medial_axis.is_some(), "--medial-axis"),
+        (options.offsets.is_some() || !options.offset_distances.is_empty(), "--offsets"),
+        (options.max_inscribed_circle, "--max-inscribed-circle"),
+        (options.corner_angle.is_some(), "--corner-angle"),
+        (options.prune_spurs.is_some(), "--prune-spurs"),
+        (options.write_sites.is_some(), "--write-sites (Boost.Polygon's text has no arcs)"),
+    ];
+    refused.iter().find(|(given, _)| *given).map_or(Ok(()), |&(_, flag)| Err(flag))
 }
 
 /// The medial axis, filtered as the options ask (no option: no filter).
@@ -227,6 +262,7 @@ fn default_tolerance(diagram: &segvoronoi::Diagram) -> f64 {
 
 fn wants_output(options: &Options) -> bool {
     options.svg.is_some()
+        || options.diagram.is_some()
         || options.topology
         || options.stats
         || options.medial_axis.is_some()

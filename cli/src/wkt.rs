@@ -11,7 +11,11 @@
 //! (`serde_json`, below `geojson`): either way the error quotes at most
 //! `QUOTE` characters of the text around the problem, never the whole file.
 
+mod curves;
+
 use std::fmt;
+
+pub use curves::Step;
 
 /// A position: the first two ordinates.
 pub type Xy = [f64; 2];
@@ -24,6 +28,13 @@ pub enum Shape {
     LineString(Vec<Xy>),
     /// Its rings, the outer one first (the domain is even-odd anyway).
     Polygon(Vec<Vec<Xy>>),
+    /// A chain of segments and at least one arc (a CIRCULARSTRING or
+    /// COMPOUNDCURVE, a member of a MULTICURVE): an obstacle.
+    Curve(Vec<Step>),
+    /// The rings of a CURVEPOLYGON with at least one arc: obstacles, as
+    /// there is no domain with arcs yet (a CURVEPOLYGON without arcs is a
+    /// `Polygon`).
+    CurveRings(Vec<Vec<Step>>),
 }
 
 /// The shapes of a file and the SRID its EWKT declared, if any.
@@ -79,9 +90,22 @@ fn line_and_column(text: &str, at: usize) -> (usize, usize) {
     (line, column)
 }
 
-/// The WKT geometry keywords, upper case, also with a glued dimension.
-const KEYWORDS: [&str; 7] =
-    ["POINT", "MULTIPOINT", "LINESTRING", "MULTILINESTRING", "POLYGON", "MULTIPOLYGON", "GEOMETRYCOLLECTION"];
+/// The WKT geometry keywords, upper case, also with a glued dimension
+/// (the curve types are read by `curves`).
+const KEYWORDS: [&str; 12] = [
+    "POINT",
+    "MULTIPOINT",
+    "LINESTRING",
+    "MULTILINESTRING",
+    "POLYGON",
+    "MULTIPOLYGON",
+    "GEOMETRYCOLLECTION",
+    "CIRCULARSTRING",
+    "COMPOUNDCURVE",
+    "CURVEPOLYGON",
+    "MULTICURVE",
+    "MULTISURFACE",
+];
 
 /// Whether the text starts (after white space) with a WKT keyword or an
 /// EWKT `SRID=`.
@@ -111,6 +135,12 @@ pub fn parse(text: &str) -> Result<Shapes, ParseError> {
             piece = &piece[semicolon + 1..];
         }
         check_tokens(text, offset, offset + piece.len())?;
+        if curves::has_curve(piece) {
+            let start = out.shapes.len();
+            curves::parse_geometry(text, offset, offset + piece.len(), &mut out.shapes)?;
+            drop_empty(&mut out.shapes, start);
+            continue;
+        }
         let geometry: wkt::Wkt<f64> = piece.parse().map_err(|message: &str| {
             let skipped = offset + (piece.len() - piece.trim_start().len());
             let (line, _) = line_and_column(text, skipped);
@@ -236,6 +266,8 @@ fn drop_empty(out: &mut Vec<Shape>, start: usize) {
             Shape::Point(_) => false,
             Shape::LineString(points) => points.is_empty(),
             Shape::Polygon(rings) => rings.iter().all(Vec::is_empty),
+            Shape::Curve(steps) => steps.is_empty(),
+            Shape::CurveRings(rings) => rings.iter().all(Vec::is_empty),
         };
         if empty {
             out.remove(k);
