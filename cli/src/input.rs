@@ -223,9 +223,7 @@ impl Input {
     /// there is no domain, medial axis or offsets yet (issue 32).
     pub fn has_arcs(&self) -> bool {
         match self {
-            Input::Shapes(Shapes { shapes, .. }) => {
-                shapes.iter().any(|s| matches!(s, Shape::Curve(_) | Shape::CurveRings(_)))
-            }
+            Input::Shapes(Shapes { shapes, .. }) => shapes.iter().any(|s| matches!(s, Shape::Curve(_) | Shape::CurveRings(_))),
             Input::Boost(_) => false,
         }
     }

@@ -9,8 +9,11 @@
 //!                every site whose cell touches it
 //! ```
 //! Site names: `P<k>` for point site `k`, `S<j>` for the open segment of
-//! input segment `j`. Names in a line are sorted (`P` before
-//! `S`, then by index), and lines are sorted by their sequence of names.
+//! input segment `j`, `A<j>` for the open arc of input arc `j` (the
+//! builder numbers arcs apart from segments). Names in a line are sorted
+//! (`P` before `S` before `A`, then by index), and lines are sorted by
+//! their sequence of names. Without arcs the text is the one the CGAL
+//! cross-check compares, byte for byte.
 //! An edge has zero length when its two vertices are one point: when the
 //! fourth site (the one of the second vertex that the first lacks) lies
 //! exactly on the first vertex's circle — cocircular sites. That is decided
@@ -64,7 +67,7 @@ impl TopologyOptions {
     }
 }
 
-/// A site name: kind (0 = point, 1 = segment) and index.
+/// A site name: kind (0 = point, 1 = segment, 2 = arc) and index.
 type Name = (u8, u32);
 
 fn write_section(out: &mut String, title: &str, mut lines: Vec<Vec<Name>>) {
@@ -77,7 +80,7 @@ fn write_section(out: &mut String, title: &str, mut lines: Vec<Vec<Name>>) {
         let mut first = true;
         for &(kind, index) in l {
             let sep = if first { "" } else { " " };
-            let letter = if kind == 0 { 'P' } else { 'S' };
+            let letter = ['P', 'S', 'A'][usize::from(kind)];
             let _ = write!(out, "{sep}{letter}{index}");
             first = false;
         }
@@ -87,6 +90,11 @@ fn write_section(out: &mut String, title: &str, mut lines: Vec<Vec<Name>>) {
 
 impl Diagram {
     fn name(&self, site: SiteId) -> Name {
+        // arcs are the last sites: asked first, so that no arc is ever
+        // taken for a segment
+        if let Some(j) = self.arc_input_index(site) {
+            return (2, j as u32);
+        }
         match self.segment_input_index(site) {
             Some(j) => (1, j as u32),
             None => (0, site.0),
@@ -168,5 +176,18 @@ impl Diagram {
             }
         }
         write_section(out, "VVERTICES", groups.into_values().collect());
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn arcs_are_named_last() {
+        let mut out = String::new();
+        let lines = vec![vec![(2, 0), (0, 3)], vec![(2, 0), (1, 1)], vec![(1, 0), (0, 12)], vec![(2, 1), (2, 0), (0, 2)]];
+        write_section(&mut out, "FACES", lines);
+        assert_eq!(out, "FACES 4\nP2 A0 A1\nP3 A0\nP12 S0\nS1 A0\n");
     }
 }

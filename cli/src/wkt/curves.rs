@@ -576,7 +576,8 @@ mod tests {
         let Shape::Curve(steps) = &s.shapes[0] else { panic!("{:?}", s.shapes) };
         assert_eq!(steps.len(), 2);
         assert_eq!(steps[1], Step::Segment([[1.0, 0.0], [0.0, 1.0]]));
-        let s = parse("COMPOUNDCURVE Z ((2 0 1, 3 0 1), CIRCULARSTRING Z (3 0 1, 4 1 1, 5 0 1), LINESTRING Z (5 0 1, 6 0 1))").unwrap();
+        let s = parse("COMPOUNDCURVE Z ((2 0 1, 3 0 1), CIRCULARSTRING Z (3 0 1, 4 1 1, 5 0 1), LINESTRING Z (5 0 1, 6 0 1))")
+            .unwrap();
         let Shape::Curve(steps) = &s.shapes[0] else { panic!() };
         assert_eq!(steps.len(), 3);
         let e = parse("COMPOUNDCURVE((0 0, 1 0), CIRCULARSTRING(2 0, 3 1, 4 0))").unwrap_err();
