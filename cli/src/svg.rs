@@ -3,7 +3,11 @@
 //! quadratic Bézier curves the library gives (`<path d="M .. Q .. .."/>`),
 //! rays and lines clipped to the picture; vertices as small dots, point
 //! sites as bigger dots of another colour, segment sites as thick lines of
-//! that colour (their endpoints are point sites: dots). With a domain
+//! that colour (their endpoints are point sites: dots), arc sites as thick
+//! SVG arcs (`A`) of that colour. Edges beside an arc site (conics) are
+//! drawn as the library's polylines within a quarter pixel; a conic edge
+//! that reaches infinity, which has no polyline, as a straight ray from its
+//! vertex (only its direction at infinity is known). With a domain
 //! (polygons) also, beneath the edges, its inside lightly shaded (the rings
 //! filled even-odd, as the library's domain), and above them the medial
 //! axis, thick, each sampled stretch coloured by its clearance (a linear
@@ -23,7 +27,7 @@
 use std::f64::consts::PI;
 use std::fmt::Write;
 
-use segvoronoi::{Diagram, Edge, EdgeEnd, MedialAxis, Offset, OffsetLoop, OffsetPiece, Point, Site};
+use segvoronoi::{CircularArc, Diagram, Edge, EdgeEnd, EdgeShape, MedialAxis, Offset, OffsetLoop, OffsetPiece, Point, Site};
 
 use crate::medial_output;
 
@@ -240,11 +244,12 @@ fn line_anchor(diagram: &Diagram, edge: &Edge) -> Point {
     }
 }
 
-/// How an edge is drawn, normalised: a straight piece or a quadratic Bézier
-/// curve `[start, control, end]`.
+/// How an edge is drawn, normalised: a straight piece, a quadratic Bézier
+/// curve `[start, control, end]` or a polyline.
 enum Piece {
     Line(Point, Point),
     Curve([Point; 3]),
+    Polyline(Vec<Point>),
 }
 
 /// The visible piece of an edge, normalised, or `None` if it misses the
@@ -258,6 +263,14 @@ fn visible_piece(diagram: &Diagram, frame: &Frame, edge: &Edge) -> Option<Piece>
             if let Some(curve) = diagram.edge_bezier(edge.id) {
                 let curve = curve.map(|p| frame.unit(p));
                 return frame.touches_hull(&curve).then_some(Piece::Curve(curve));
+            }
+            if matches!(diagram.edge_shape(edge.id), Some(EdgeShape::Conic { .. })) {
+                // a quarter pixel, in input units
+                let tolerance = 0.25 / (frame.px * frame.to_unit);
+                if let Some(line) = diagram.edge_polyline(edge.id, tolerance).filter(|l| l.len() > 2) {
+                    let line: Vec<Point> = line.into_iter().map(|p| frame.unit(p)).collect();
+                    return frame.touches_hull(&line).then_some(Piece::Polyline(line));
+                }
             }
             let (p, q) = (vertex(a), vertex(b));
             frame.clip(p, Point::new(q.x - p.x, q.y - p.y), 0.0, 1.0).map(|(p, q)| Piece::Line(p, q))
@@ -277,6 +290,7 @@ fn site_middle(site: Site) -> Point {
     match site {
         Site::Point(p) => p,
         Site::Segment { a, b } => Point::new(a.x / 2.0 + b.x / 2.0, a.y / 2.0 + b.y / 2.0),
+        Site::Arc(arc) => arc.midpoint(),
         other => unreachable!("a site kind this drawing does not know: {other:?}"),
     }
 }
@@ -294,7 +308,18 @@ pub fn render(diagram: &Diagram, domain: Option<&Domain>, offsets: &[Offset], lo
             _ => None,
         })
         .collect();
-    let mut frame = Frame::new(&grown_box(&points, offsets));
+    let arcs: Vec<CircularArc> = diagram
+        .site_ids()
+        .filter_map(|s| match diagram.site(s)? {
+            Site::Arc(arc) => Some(arc),
+            _ => None,
+        })
+        .collect();
+    // The frame holds the arcs' bulges too (sixteen points along each; the
+    // margin covers the rest).
+    let framed: Vec<Point> =
+        points.iter().copied().chain(arcs.iter().flat_map(|a| (1..16).map(|k| a.point_at(f64::from(k) / 16.0)))).collect();
+    let mut frame = Frame::new(&grown_box(&framed, offsets));
     if look.title.is_some() {
         // Sized by what it shows: about 16 pixels between neighbouring
         // sites where that fits in 4000 pixels, at least 800; the strokes
@@ -302,7 +327,7 @@ pub fn render(diagram: &Diagram, domain: Option<&Domain>, offsets: &[Offset], lo
         // tests keeps 800 pixels and full strokes.)
         let spacing = |size: f64| size / (points.len().max(1) as f64).sqrt();
         let size = (16.0 * SIZE_PX / spacing(SIZE_PX)).clamp(SIZE_PX, 5.0 * SIZE_PX);
-        frame = Frame::sized(&grown_box(&points, offsets), size);
+        frame = Frame::sized(&grown_box(&framed, offsets), size);
         frame.stroke = (spacing(size) / 16.0).clamp(0.25, 1.0);
     }
     let (width, picture_height) = (frame.width(), frame.height());
@@ -315,9 +340,10 @@ pub fn render(diagram: &Diagram, domain: Option<&Domain>, offsets: &[Offset], lo
     );
     let _ = writeln!(
         out,
-        "<!-- segvoronoi: {} sites ({} segments), {} vertices, {} edges -->",
+        "<!-- segvoronoi: {} sites ({} segments{}), {} vertices, {} edges -->",
         diagram.site_count(),
         segments.len(),
+        if arcs.is_empty() { String::new() } else { format!(", {} arcs", arcs.len()) },
         diagram.vertex_count(),
         diagram.edge_count()
     );
@@ -347,7 +373,7 @@ pub fn render(diagram: &Diagram, domain: Option<&Domain>, offsets: &[Offset], lo
     }
     write_offsets(&mut out, &frame, offsets);
     if show_diagram {
-        write_sites(&mut out, &frame, &points, &segments);
+        write_sites(&mut out, &frame, &points, &segments, &arcs);
     }
     if let Some(band) = band {
         band.write(&mut out, picture_height, width);
@@ -372,6 +398,13 @@ fn write_diagram(out: &mut String, frame: &Frame, diagram: &Diagram) {
                     let _ = writeln!(out, r#"<path d="M {x0:.2} {y0:.2} Q {cx:.2} {cy:.2} {x1:.2} {y1:.2}"/>"#);
                 }
             }
+            Some(Piece::Polyline(line)) => {
+                let pixels: Option<Vec<(f64, f64)>> = line.iter().map(|&p| frame.pixel(p)).collect();
+                if let Some(pixels) = pixels {
+                    let points: Vec<String> = pixels.iter().map(|(x, y)| format!("{x:.2},{y:.2}")).collect();
+                    let _ = writeln!(out, r#"<polyline points="{}"/>"#, points.join(" "));
+                }
+            }
             None => {}
         }
     }
@@ -386,8 +419,9 @@ fn write_diagram(out: &mut String, frame: &Frame, diagram: &Diagram) {
     let _ = writeln!(out, "</g>");
 }
 
-/// The sites: segments as thick lines, points as dots.
-fn write_sites(out: &mut String, frame: &Frame, points: &[Point], segments: &[(Point, Point)]) {
+/// The sites: segments as thick lines, arcs as thick SVG arcs, points as
+/// dots.
+fn write_sites(out: &mut String, frame: &Frame, points: &[Point], segments: &[(Point, Point)], arcs: &[CircularArc]) {
     let _ = writeln!(
         out,
         r#"<g id="segments" stroke="{SITE_COLOUR}" stroke-width="{}" stroke-linecap="round">"#,
@@ -399,6 +433,19 @@ fn write_sites(out: &mut String, frame: &Frame, points: &[Point], segments: &[(P
         }
     }
     let _ = writeln!(out, "</g>");
+    if !arcs.is_empty() {
+        let _ = writeln!(
+            out,
+            r#"<g id="arcs" stroke="{SITE_COLOUR}" stroke-width="{}" stroke-linecap="round" fill="none">"#,
+            SEGMENT_WIDTH * frame.stroke
+        );
+        for arc in arcs {
+            if let Some(d) = arc_path(frame, arc) {
+                let _ = writeln!(out, r#"<path d="{d}"/>"#);
+            }
+        }
+        let _ = writeln!(out, "</g>");
+    }
 
     let _ = writeln!(out, r#"<g id="sites" fill="{SITE_COLOUR}">"#);
     for &p in points {
@@ -785,6 +832,26 @@ fn loop_path(frame: &Frame, l: &OffsetLoop) -> Option<String> {
     Some(d)
 }
 
+/// An arc site as an SVG path `M start A r r 0 large sweep end`, flagged
+/// as `loop_path` flags the arcs of offsets (y down: counter-clockwise in
+/// the input is sweep flag 0); `None` if not finite in pixels. Ends on
+/// one pixel position (an arc too small to see) are drawn as a dot's worth
+/// of line, which SVG shows, rather than an arc it would drop.
+fn arc_path(frame: &Frame, arc: &CircularArc) -> Option<String> {
+    let pixel = |p: Point| frame.pixel(frame.unit(p)).map(|(x, y)| format!("{x:.2} {y:.2}"));
+    let (start, end) = (pixel(arc.start())?, pixel(arc.end())?);
+    let r = arc.radius() * frame.to_unit * frame.px;
+    if !r.is_finite() {
+        return None;
+    }
+    if start == end {
+        return Some(format!("M {start} L {end}"));
+    }
+    let large = u8::from(arc.sweep().abs() > PI);
+    let sweep = u8::from(!arc.is_counter_clockwise());
+    Some(format!("M {start} A {r:.2} {r:.2} 0 {large} {sweep} {end}"))
+}
+
 /// The colour at `t` in `[0, 1]` of the clearance ramp (`RAMP`).
 fn ramp(t: f64) -> String {
     let t = if t.is_finite() { t.clamp(0.0, 1.0) } else { 1.0 };
@@ -1072,6 +1139,39 @@ mod tests {
             assert!(drawn.next().is_none(), "{commands:?}");
         }
         arcs
+    }
+
+    #[test]
+    fn arc_sites_are_svg_arcs_with_their_flags() {
+        let frame = Frame::new(&[Point::new(-2.0, -2.0), Point::new(2.0, 2.0)]);
+        let pixel = |p: Point| frame.pixel(frame.unit(p)).unwrap();
+        let arcs = [
+            // a quarter counter-clockwise, three quarters clockwise, a half
+            CircularArc::from_bulge([1.0, 0.0], [0.0, 1.0], (PI / 8.0).tan()).unwrap(),
+            CircularArc::through([0.0, 1.0], [1.0, 0.0], [-1.0, 0.0]).unwrap(),
+            CircularArc::from_bulge([-1.0, 0.0], [1.0, 0.0], 1.0).unwrap(),
+        ];
+        let mut out = String::new();
+        write_sites(&mut out, &frame, &[], &[], &arcs);
+        let drawn = group(&out, "arcs");
+        assert!(drawn.contains(r#"fill="none""#), "{drawn}");
+        let paths: Vec<Vec<f64>> = drawn
+            .split("<path d=\"")
+            .skip(1)
+            .map(|d| d.split('"').next().unwrap().split(' ').filter_map(|t| t.parse().ok()).collect())
+            .collect();
+        assert_eq!(paths.len(), 3);
+        for (v, arc) in paths.iter().zip(&arcs) {
+            assert_eq!(v.len(), 9, "{v:?}");
+            let start = pixel(arc.start());
+            assert!((v[0] - start.0).abs() < 0.006 && (v[1] - start.1).abs() < 0.006);
+            assert!((v[2] - arc.radius() * frame.to_unit * frame.px).abs() < 0.006 && v[2] == v[3]);
+            let (centre, turn) = svg_arc([v[0], v[1]], [v[7], v[8]], v[2], v[5] == 1.0, v[6] == 1.0);
+            let c = pixel(arc.centre());
+            assert!((centre[0] - c.0).abs() < 0.05 && (centre[1] - c.1).abs() < 0.05, "{centre:?} vs {c:?}");
+            // counter-clockwise in the input turns negative on screen
+            assert!((turn + arc.sweep()).abs() < 1e-2, "{turn} on screen for a sweep of {}", arc.sweep());
+        }
     }
 
     #[test]
