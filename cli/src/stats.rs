@@ -8,24 +8,28 @@ use segvoronoi::{Diagram, EdgeEnd, EdgeShape};
 /// The report for a diagram whose construction took `build_s` seconds.
 pub fn report(diagram: &Diagram, build_s: f64) -> String {
     let stats = diagram.stats();
-    let (mut segments, mut rays, mut lines, mut arcs) = (0usize, 0usize, 0usize, 0usize);
+    let (mut segments, mut rays, mut lines, mut arcs, mut conics) = (0usize, 0usize, 0usize, 0usize, 0usize);
     for edge in diagram.edges() {
         match edge.ends {
             [EdgeEnd::Vertex(_), EdgeEnd::Vertex(_)] => segments += 1,
             [EdgeEnd::Infinite { .. }, EdgeEnd::Infinite { .. }] => lines += 1,
             _ => rays += 1,
         }
-        if matches!(diagram.edge_shape(edge.id), Some(EdgeShape::Parabola { .. })) {
-            arcs += 1;
+        match diagram.edge_shape(edge.id) {
+            Some(EdgeShape::Parabola { .. }) => arcs += 1,
+            Some(EdgeShape::Conic { .. }) => conics += 1,
+            _ => {}
         }
     }
-    let segment_sites = diagram.site_count() - diagram.point_site_count();
+    let arc_sites = diagram.arc_site_count();
+    let segment_sites = diagram.site_count() - diagram.point_site_count() - arc_sites;
     let mut out = String::new();
-    let figures: [(&str, &dyn std::fmt::Display); 23] = [
+    let figures: [(&str, &dyn std::fmt::Display); 25] = [
         ("input_points", &stats.input_points),
         ("input_segments", &stats.input_segments),
         ("sites", &stats.sites),
         ("segment_sites", &segment_sites),
+        ("arc_sites", &arc_sites),
         ("duplicates", &stats.duplicate_points),
         ("duplicate_segments", &stats.duplicate_segments),
         ("zero_length_segments", &stats.zero_length_segments),
@@ -36,6 +40,7 @@ pub fn report(diagram: &Diagram, build_s: f64) -> String {
         ("rays", &rays),
         ("lines", &lines),
         ("parabolic_edges", &arcs),
+        ("conic_edges", &conics),
         ("pieces", &stats.pieces),
         ("split_at_vertices", &stats.split_at_vertices),
         ("cancelled_ring_pieces", &stats.cancelled_ring_pieces),
