@@ -131,10 +131,10 @@ fn point(p: Point) -> Value {
     json!([number(p.x), number(p.y)])
 }
 
-/// A number, or `null` where JSON has none (not finite).
+/// A number (`-0` as `0`), or `null` where JSON has none (not finite).
 fn number(v: f64) -> Value {
     if v.is_finite() {
-        json!(v)
+        json!(v + 0.0)
     } else {
         Value::Null
     }
