@@ -19,10 +19,29 @@ pub struct Origins {
     segment_lines: Vec<usize>,
     /// (point index, geometry)
     wkt_points: Vec<(usize, usize)>,
-    /// (segment indices, geometry, ring of a polygon)
-    wkt_segments: Vec<(std::ops::Range<usize>, usize, Option<usize>)>,
-    /// (arc indices, geometry, ring of a CURVEPOLYGON)
-    wkt_arcs: Vec<(std::ops::Range<usize>, usize, Option<usize>)>,
+    /// segment indices and where they came from
+    wkt_segments: Vec<(Range<usize>, Place)>,
+    /// arc indices and where they came from
+    wkt_arcs: Vec<(Range<usize>, Place)>,
+}
+
+/// A WKT geometry (its index among the shapes, what it is) and the ring of
+/// a polygon.
+#[derive(Clone, Copy, Debug)]
+struct Place {
+    geometry: usize,
+    what: &'static str,
+    ring: Option<usize>,
+}
+
+impl Place {
+    fn describe(&self) -> String {
+        let Place { geometry, what, ring } = self;
+        match ring {
+            Some(r) => format!("geometry {geometry} ({what}), ring {r}"),
+            None => format!("geometry {geometry} ({what})"),
+        }
+    }
 }
 
 impl Origins {
@@ -31,21 +50,15 @@ impl Origins {
         if let Some(line) = self.segment_lines.get(j) {
             return Some(format!("line {line}"));
         }
-        let (_, k, ring) = self.wkt_segments.iter().find(|(range, _, _)| range.contains(&j))?;
-        Some(match ring {
-            Some(r) => format!("geometry {k} (a polygon), ring {r}"),
-            None => format!("geometry {k} (a linestring)"),
-        })
+        let (_, place) = self.wkt_segments.iter().find(|(range, _)| range.contains(&j))?;
+        Some(place.describe())
     }
 
     /// Where input arc `j` is, e.g. `geometry 2 (a curve polygon), ring 0`.
     #[allow(dead_code)] // for the arcs' input check, coming with the build
     pub fn of_arc(&self, j: usize) -> Option<String> {
-        let (_, k, ring) = self.wkt_arcs.iter().find(|(range, _, _)| range.contains(&j))?;
-        Some(match ring {
-            Some(r) => format!("geometry {k} (a curve polygon), ring {r}"),
-            None => format!("geometry {k} (a curve)"),
-        })
+        let (_, place) = self.wkt_arcs.iter().find(|(range, _)| range.contains(&j))?;
+        Some(place.describe())
     }
 
     fn of_point(&self, i: usize) -> Option<String> {
@@ -160,23 +173,25 @@ impl Input {
                         }
                         Shape::LineString(points) => {
                             let made = builder.add_polyline(points)?;
-                            origins.wkt_segments.push((made, k, None));
+                            origins.wkt_segments.push((made, Place { geometry: k, what: "a linestring", ring: None }));
                         }
                         Shape::Polygon(rings) => {
                             for (r, made) in builder.add_polygon(rings)?.into_iter().enumerate() {
-                                origins.wkt_segments.push((made, k, Some(r)));
+                                origins.wkt_segments.push((made, Place { geometry: k, what: "a polygon", ring: Some(r) }));
                             }
                         }
                         Shape::Curve(steps) => {
                             let (segments, arcs) = add_steps(builder, steps)?;
-                            origins.wkt_segments.push((segments, k, None));
-                            origins.wkt_arcs.push((arcs, k, None));
+                            let place = Place { geometry: k, what: "a curve", ring: None };
+                            origins.wkt_segments.push((segments, place));
+                            origins.wkt_arcs.push((arcs, place));
                         }
                         Shape::CurveRings(rings) => {
                             for (r, steps) in rings.iter().enumerate() {
                                 let (segments, arcs) = add_steps(builder, steps)?;
-                                origins.wkt_segments.push((segments, k, Some(r)));
-                                origins.wkt_arcs.push((arcs, k, Some(r)));
+                                let place = Place { geometry: k, what: "a curve polygon", ring: Some(r) };
+                                origins.wkt_segments.push((segments, place));
+                                origins.wkt_arcs.push((arcs, place));
                             }
                         }
                     }
@@ -265,5 +280,33 @@ mod tests {
         assert_eq!(kind(Some("txt"), " SRID=4326;POINT (1 2)"), Kind::Wkt);
         assert_eq!(kind(None, "\n {\"type\": \"Point\"}"), Kind::GeoJson);
         assert_eq!(kind(None, "2\n0 0\n1 1\n"), Kind::Boost);
+        assert_eq!(kind(None, "CircularString (0 0, 1 1, 2 0)"), Kind::Wkt);
+        assert_eq!(kind(None, "SRID=4326;MULTISURFACE EMPTY"), Kind::Wkt);
+    }
+
+    #[test]
+    fn curves_become_segments_and_arcs_sharing_their_ends() {
+        let text =
+            "POINT (7 7)\nCOMPOUNDCURVE((0 0, 4 0), CIRCULARSTRING(4 0, 5 1, 4 2), (4 2, 0 2), CIRCULARSTRING(0 2, -1 1, 0 0))\n\
+                    CURVEPOLYGON(CIRCULARSTRING(10 0, 12 0, 10 0), (10.5 0, 11 0.5, 11.5 0, 10.5 0))";
+        let input = Input::Shapes(wkt::parse(text).unwrap());
+        assert!(input.has_arcs() && input.rings().is_empty());
+        let mut b = Builder::new();
+        let origins = input.add_to(&mut b).unwrap();
+        assert_eq!((b.point_count(), b.segment_count(), b.arc_count()), (1, 5, 4));
+        let (s0, a0, s1, a1) = (b.segment(0).unwrap(), b.arc(0).unwrap(), b.segment(1).unwrap(), b.arc(1).unwrap());
+        assert_eq!(
+            (s0[1], a0.start(), a0.end(), s1[0]),
+            ((4.0, 0.0).into(), (4.0, 0.0).into(), (4.0, 2.0).into(), (4.0, 2.0).into())
+        );
+        assert_eq!((a1.start(), a1.end(), s0[0]), ((0.0, 2.0).into(), (0.0, 0.0).into(), (0.0, 0.0).into()));
+        assert_eq!((a0.centre(), a0.radius(), a0.is_counter_clockwise()), ((4.0, 1.0).into(), 1.0, true));
+        // the circle: two half arcs through (12 0)
+        let (a2, a3) = (b.arc(2).unwrap(), b.arc(3).unwrap());
+        assert_eq!((a2.end(), a3.start(), a3.end()), ((12.0, 0.0).into(), (12.0, 0.0).into(), (10.0, 0.0).into()));
+        assert_eq!(origins.of_arc(1).as_deref(), Some("geometry 1 (a curve)"));
+        assert_eq!(origins.of_arc(3).as_deref(), Some("geometry 2 (a curve polygon), ring 0"));
+        assert_eq!(origins.of_segment(4).as_deref(), Some("geometry 2 (a curve polygon), ring 1"));
+        assert_eq!(origins.of_segment(0).as_deref(), Some("geometry 1 (a curve)"));
     }
 }
