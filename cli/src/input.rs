@@ -54,8 +54,37 @@ impl Origins {
         Some(place.describe())
     }
 
+    /// A line for each site a message names ("arc 2", "segment 5",
+    /// "point 1"): where it is in the file and its coordinates. With arcs
+    /// an error's indices may be of either numbering, so the message's
+    /// own words say which.
+    fn named_places(&self, message: &str, builder: &Builder) -> String {
+        let mut text = String::new();
+        let words: Vec<&str> = message.split(|c: char| !c.is_ascii_alphanumeric()).collect();
+        for pair in words.windows(2) {
+            let Ok(index) = pair[1].parse::<usize>() else { continue };
+            let (place, coordinates) = match pair[0] {
+                "arc" => (
+                    self.of_arc(index),
+                    builder.arc(index).map(|a| {
+                        let (s, e, c) = (a.start(), a.end(), a.centre());
+                        format!("({}, {}) - ({}, {}) around ({}, {})", s.x, s.y, e.x, e.y, c.x, c.y)
+                    }),
+                ),
+                "segment" => (
+                    self.of_segment(index),
+                    builder.segment(index).map(|[a, b]| format!("({}, {}) - ({}, {})", a.x, a.y, b.x, b.y)),
+                ),
+                "point" => (self.of_point(index), builder.point(index).map(|p| format!("({}, {})", p.x, p.y))),
+                _ => continue,
+            };
+            let place = place.map(|p| format!(", {p}")).unwrap_or_default();
+            text.push_str(&format!("\n  {} {index}{place}: {}", pair[0], coordinates.unwrap_or_default()));
+        }
+        text
+    }
+
     /// Where input arc `j` is, e.g. `geometry 2 (a curve polygon), ring 0`.
-    #[allow(dead_code)] // for the arcs' input check, coming with the build
     pub fn of_arc(&self, j: usize) -> Option<String> {
         let (_, place) = self.wkt_arcs.iter().find(|(range, _)| range.contains(&j))?;
         Some(place.describe())
@@ -74,6 +103,10 @@ impl Origins {
     pub fn describe(&self, error: &Error, builder: &Builder) -> String {
         let mut text = error.to_string();
         if error.kind() != segvoronoi::ErrorKind::Intersecting {
+            return text;
+        }
+        if builder.arc_count() > 0 && error.message().contains("arc") {
+            text.push_str(&self.named_places(error.message(), builder));
             return text;
         }
         // A point inside a segment names the point first, then the segment;
@@ -282,6 +315,16 @@ mod tests {
         assert_eq!(kind(None, "2\n0 0\n1 1\n"), Kind::Boost);
         assert_eq!(kind(None, "CircularString (0 0, 1 1, 2 0)"), Kind::Wkt);
         assert_eq!(kind(None, "SRID=4326;MULTISURFACE EMPTY"), Kind::Wkt);
+    }
+
+    #[test]
+    fn an_error_naming_arcs_says_where_they_are() {
+        let input = Input::Shapes(wkt::parse("LINESTRING (0 0, 1 0)\nCIRCULARSTRING (0 1, 1 2, 2 1)").unwrap());
+        let mut b = Builder::new();
+        let origins = input.add_to(&mut b).unwrap();
+        let text = origins.named_places("arc 0 crosses segment 0", &b);
+        assert!(text.contains("\n  arc 0, geometry 1 (a curve): (0, 1) - (2, 1) around (1, 1)"), "{text}");
+        assert!(text.contains("\n  segment 0, geometry 0 (a linestring): (0, 0) - (1, 0)"), "{text}");
     }
 
     #[test]
