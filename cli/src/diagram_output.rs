@@ -12,7 +12,9 @@
 //! {"id": 0, "position": [x, y], "clearance": r, "sites": [s, t, u]}
 //! ],
 //! "edges": [
-//! {"id": 0, "kind": "line", "sites": [s, t], "separator": false, "ends": [{"vertex": v}, {"direction": [dx, dy]}]}
+//! {"id": 0, "kind": "line", "sites": [s, t], "separator": false, "ends": [{"vertex": v}, {"direction": [dx, dy]}]},
+//! {"id": 1, "kind": "parabola", "sites": [s, t], "separator": false, "ends": [{"vertex": v}, {"vertex": w}],
+//!  "bezier": {"points": [[x, y], [x, y], [x, y]], "weight": 1.0}}
 //! ]}
 //! ```
 //!
@@ -24,12 +26,14 @@
 //! distance to each (`null` beyond the range of `f64`). An edge's `sites`
 //! are the one on its left and on its right walking from `ends[0]` to
 //! `ends[1]`; an end is a finite vertex or, at infinity, the unit direction
-//! the edge runs off in. Numbers are `serde_json`'s shortest round-trip
+//! the edge runs off in. A finite curved edge has `bezier`: the rational
+//! quadratic Bézier curve that it is, from the position of `ends[0]` to
+//! that of `ends[1]`, its control point's weight 1 for a parabola. Numbers are `serde_json`'s shortest round-trip
 //! decimals.
 
 use std::fmt::Write;
 
-use segvoronoi::{Diagram, EdgeEnd, EdgeShape, Point, Site, SiteId};
+use segvoronoi::{Diagram, EdgeEnd, EdgeId, EdgeShape, Point, Site, SiteId};
 use serde_json::{json, Value};
 
 /// The diagram as JSON (see the module doc), ending with a newline.
@@ -58,13 +62,17 @@ pub fn json(diagram: &Diagram, input_points: usize) -> String {
             EdgeEnd::Vertex(v) => json!({"vertex": v.index()}),
             EdgeEnd::Infinite { direction } => json!({"direction": point(direction)}),
         });
-        json!({
+        let mut edge = json!({
             "id": e.id.index(),
             "kind": kind,
             "sites": e.sites.map(SiteId::index),
             "separator": diagram.is_separator(e.id).unwrap_or(false),
             "ends": ends,
-        })
+        });
+        if let Some((points, weight)) = curve(diagram, e.id) {
+            edge["bezier"] = json!({"points": points.map(point), "weight": number(weight)});
+        }
+        edge
     });
     let mut out = String::from("{");
     section(&mut out, "sites", sites);
@@ -74,6 +82,12 @@ pub fn json(diagram: &Diagram, input_points: usize) -> String {
     section(&mut out, "edges", edges);
     out.push_str("}\n");
     out
+}
+
+/// A finite curved edge as the rational quadratic Bézier curve it is:
+/// start, control, end and the control point's weight (1 for a parabola).
+fn curve(diagram: &Diagram, edge: EdgeId) -> Option<([Point; 3], f64)> {
+    diagram.edge_bezier(edge).map(|points| (points, 1.0))
 }
 
 /// `"title": [` and the items, one a line, then `]`: each item is
@@ -175,6 +189,13 @@ mod tests {
         assert_eq!(edges.len(), d.edge_count());
         assert!(edges.iter().any(|e| e["kind"] == "parabola") && edges.iter().any(|e| e["separator"] == true));
         assert!(edges.iter().any(|e| e["ends"][1]["direction"].is_array()));
+        for e in edges.iter().filter(|e| e["kind"] == "parabola") {
+            let bezier = &e["bezier"];
+            assert_eq!((bezier["points"].as_array().unwrap().len(), bezier["weight"].as_f64()), (3, Some(1.0)), "{e}");
+            let start = &v["vertices"][e["ends"][0]["vertex"].as_u64().unwrap() as usize]["position"];
+            assert_eq!(&bezier["points"][0], start);
+        }
+        assert!(edges.iter().filter(|e| e["kind"] == "line").all(|e| e.get("bezier").is_none()));
         // one item a line
         assert_eq!(text.lines().count(), 6 + d.site_count() + d.vertex_count() + d.edge_count());
     }

@@ -149,6 +149,15 @@ fn check_dump(d: &Value) -> usize {
         for s in e["sites"].as_array().unwrap() {
             assert!((s.as_u64().unwrap() as usize) < sites.len(), "{e}");
         }
+        if let Some(bezier) = e.get("bezier") {
+            // from the position of one end to that of the other
+            assert_ne!(e["kind"], "line", "{e}");
+            let points = bezier["points"].as_array().unwrap();
+            assert!(points.len() == 3 && bezier["weight"].as_f64().unwrap() > 0.0, "{e}");
+            for (k, end) in [(0, &e["ends"][0]), (2, &e["ends"][1])] {
+                assert_eq!(points[k], vertices[end["vertex"].as_u64().unwrap() as usize]["position"], "{e}");
+            }
+        }
         for end in e["ends"].as_array().unwrap() {
             match (end.get("vertex"), end.get("direction")) {
                 (Some(v), None) => assert!((v.as_u64().unwrap() as usize) < vertices.len(), "{e}"),
