@@ -21,9 +21,9 @@ INPUT is read by its extension, else by its first characters:
     PostGIS writes them: CIRCULARSTRING (start, a point on the arc, end;
     two more points per further arc; three points on a line are a segment,
     start = end a full circle), COMPOUNDCURVE, CURVEPOLYGON, MULTICURVE,
-    MULTISURFACE: circular arcs are sites of the diagram (with arcs the
-    rings of a CURVEPOLYGON are obstacles: no domain, medial axis, offsets
-    or inscribed circle yet);
+    MULTISURFACE: circular arcs are sites of the diagram (with arcs every
+    ring is an obstacle: no domain, medial axis, offsets or inscribed
+    circle yet);
   .geojson/.json, or text starting with `{`: a GeoJSON geometry, Feature
     or FeatureCollection (every polygon and multipolygon becomes rings of
     the domain, lines polylines, points points; properties are ignored);

@@ -28,7 +28,9 @@
 //! `ends[1]`; an end is a finite vertex or, at infinity, the unit direction
 //! the edge runs off in. A finite curved edge has `bezier`: the rational
 //! quadratic Bézier curve that it is, from the position of `ends[0]` to
-//! that of `ends[1]`, its control point's weight 1 for a parabola. Numbers are `serde_json`'s shortest round-trip
+//! that of `ends[1]`, its control point's weight 1 for a parabola (below 1
+//! for an ellipse, above for a hyperbola; absent for a conic piece that
+//! turns by half a turn or more). Numbers are `serde_json`'s shortest round-trip
 //! decimals.
 
 use std::fmt::Write;
@@ -85,9 +87,11 @@ pub fn json(diagram: &Diagram, input_points: usize) -> String {
 }
 
 /// A finite curved edge as the rational quadratic Bézier curve it is:
-/// start, control, end and the control point's weight (1 for a parabola).
+/// start, control, end and the control point's weight (1 for a parabola,
+/// below 1 for an ellipse, above for a hyperbola); `None` also for a conic
+/// piece that turns by half a turn or more, which has no such curve.
 fn curve(diagram: &Diagram, edge: EdgeId) -> Option<([Point; 3], f64)> {
-    diagram.edge_bezier(edge).map(|points| (points, 1.0))
+    diagram.edge_rational_bezier(edge)
 }
 
 /// `"title": [` and the items, one a line, then `]`: each item is

@@ -186,8 +186,10 @@ pub fn read(source: &Source) -> Result<(String, Input), Failure> {
 
 impl Input {
     /// Adds everything to `builder`: WKT polygons one `add_polygon` each
-    /// (so that the domain is theirs), linestrings as polylines. Returns
-    /// where each input index came from, for messages.
+    /// (so that the domain is theirs; with arcs in the input their rings
+    /// as closed polylines, obstacles), linestrings as polylines, curves
+    /// piece by piece. Returns where each input index came from, for
+    /// messages.
     pub fn add_to(&self, builder: &mut Builder) -> Result<Origins, Error> {
         let mut origins = Origins::default();
         match self {
@@ -198,6 +200,7 @@ impl Input {
                 origins.segment_lines.clone_from(&input.segment_lines);
             }
             Input::Shapes(Shapes { shapes, .. }) => {
+                let arcs = self.has_arcs();
                 for (k, shape) in shapes.iter().enumerate() {
                     match shape {
                         Shape::Point(p) => {
@@ -207,6 +210,14 @@ impl Input {
                         Shape::LineString(points) => {
                             let made = builder.add_polyline(points)?;
                             origins.wkt_segments.push((made, Place { geometry: k, what: "a linestring", ring: None }));
+                        }
+                        // With arcs there is no domain yet (the library takes
+                        // no polygons beside arcs): rings are obstacles.
+                        Shape::Polygon(rings) if arcs => {
+                            for (r, ring) in rings.iter().enumerate() {
+                                let made = builder.add_polyline(ring)?;
+                                origins.wkt_segments.push((made, Place { geometry: k, what: "a polygon", ring: Some(r) }));
+                            }
                         }
                         Shape::Polygon(rings) => {
                             for (r, made) in builder.add_polygon(rings)?.into_iter().enumerate() {
