@@ -278,7 +278,7 @@ fn rounded_rectangle_and_slot_end_to_end() {
     }
     for (name, wkt, arcs, segments) in [("rounded", ROUNDED_RECTANGLE, 4, 4), ("slot", SLOT, 2, 2)] {
         let svg = temp_path(&format!("{name}.svg"));
-        let (d, o) = diagram_of(name, wkt, &["--topology", "--stats", "--svg", svg.to_str().unwrap()]);
+        let (d, o) = diagram_of(name, wkt, &["--voronoi-pairs", "--stats", "--svg", svg.to_str().unwrap()]);
         assert_eq!(check_dump(&d), arcs, "{name}");
         let sites = d["sites"].as_array().unwrap();
         assert_eq!(sites.iter().filter(|s| s["kind"] == "segment").count(), segments, "{name}");
@@ -288,6 +288,8 @@ fn rounded_rectangle_and_slot_end_to_end() {
         for j in 0..arcs {
             assert!(topology.contains(&format!("A{j}")), "{name}: {topology}");
         }
+        let faces = format!("FACES {}\n", d["vertices"].as_array().unwrap().len());
+        assert!(topology.contains(&faces) && topology.contains("\nVPAIRS ") && topology.contains("\nVVERTICES "), "{topology}");
         assert!(stderr(&o).contains(&format!("arc_sites={arcs}")), "{}", stderr(&o));
         let picture = std::fs::read_to_string(&svg).unwrap();
         std::fs::remove_file(&svg).unwrap();
