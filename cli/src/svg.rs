@@ -6,8 +6,9 @@
 //! that colour (their endpoints are point sites: dots), arc sites as thick
 //! SVG arcs (`A`) of that colour. Edges beside an arc site (conics) are
 //! drawn as the library's polylines within a quarter pixel; a conic edge
-//! that reaches infinity, which has no polyline, as a straight ray from its
-//! vertex (only its direction at infinity is known). With a domain
+//! that reaches infinity, which has no polyline from the library, is traced
+//! here from its vertex along the points equidistant from its two sites
+//! until it leaves the picture (`trace_conic_ray`). With a domain
 //! (polygons) also, beneath the edges, its inside lightly shaded (the rings
 //! filled even-odd, as the library's domain), and above them the medial
 //! axis, thick, each sampled stretch coloured by its clearance (a linear
@@ -277,12 +278,124 @@ fn visible_piece(diagram: &Diagram, frame: &Frame, edge: &Edge) -> Option<Piece>
         }
         // Both directions point away from the finite end, towards infinity.
         [EdgeEnd::Vertex(a), EdgeEnd::Infinite { direction }] | [EdgeEnd::Infinite { direction }, EdgeEnd::Vertex(a)] => {
+            if matches!(diagram.edge_shape(edge.id), Some(EdgeShape::Conic { .. })) {
+                if let Some(line) = trace_conic_ray(diagram, frame, edge, a, direction) {
+                    return Some(Piece::Polyline(line));
+                }
+            }
             frame.clip(vertex(a), direction, 0.0, f64::INFINITY).map(|(p, q)| Piece::Line(p, q))
         }
         [EdgeEnd::Infinite { .. }, EdgeEnd::Infinite { direction }] => frame
             .clip(frame.unit(line_anchor(diagram, edge)), direction, f64::NEG_INFINITY, f64::INFINITY)
             .map(|(p, q)| Piece::Line(p, q)),
     }
+}
+
+/// The point of a site nearest to `p` (the closed segment or arc).
+fn nearest_on(site: Site, p: Point) -> Option<Point> {
+    match site {
+        Site::Point(q) => Some(q),
+        Site::Segment { a, b } => {
+            let (dx, dy) = (b.x - a.x, b.y - a.y);
+            let t = (((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+            Some(Point::new(a.x + t * dx, a.y + t * dy))
+        }
+        Site::Arc(arc) => Some(arc.nearest_point(p)),
+        _ => None,
+    }
+}
+
+/// The distance from `p` to a site and its gradient there (the unit
+/// vector from the site's nearest point).
+fn distance_and_gradient(site: Site, p: Point) -> Option<(f64, Point)> {
+    let q = nearest_on(site, p)?;
+    let d = q.distance(p);
+    (d > 0.0 && d.is_finite()).then(|| (d, Point::new((p.x - q.x) / d, (p.y - q.y) / d)))
+}
+
+/// A conic ray (an edge beside an arc with one end at infinity, for which
+/// the library gives no polyline), traced in the picture: from its vertex
+/// along the curve of points equidistant from its two sites, in steps of
+/// two pixels, each step corrected back onto the curve by Newton's method
+/// on the difference of the two distances, until it leaves the picture.
+/// Normalised coordinates; `None` where the tracing loses the curve (the
+/// caller then draws the straight ray).
+fn trace_conic_ray(
+    diagram: &Diagram,
+    frame: &Frame,
+    edge: &Edge,
+    from: segvoronoi::VertexId,
+    direction: Point,
+) -> Option<Vec<Point>> {
+    let vertex = diagram.vertex(from)?;
+    let [first, second] = edge.sites.map(|s| diagram.site(s));
+    let (first, second) = (first?, second?);
+    let third = vertex.sites.iter().find(|s| !edge.sites.contains(s)).and_then(|&s| diagram.site(s));
+    let step = 2.0 / (frame.px * frame.to_unit);
+    let scale = vertex.clearance.max(step);
+    // the difference of the distances and its gradient
+    let f = |p: Point| -> Option<(f64, Point)> {
+        let ((d1, g1), (d2, g2)) = (distance_and_gradient(first, p)?, distance_and_gradient(second, p)?);
+        Some((d1 - d2, Point::new(g1.x - g2.x, g1.y - g2.y)))
+    };
+    let onto_curve = |mut p: Point| -> Option<Point> {
+        for _ in 0..8 {
+            let (value, g) = f(p)?;
+            let g2 = g.x * g.x + g.y * g.y;
+            if g2 < 1e-12 {
+                return None;
+            }
+            p = Point::new(p.x - value / g2 * g.x, p.y - value / g2 * g.y);
+            if value.abs() <= 1e-12 * scale {
+                return Some(p);
+            }
+        }
+        let (value, _) = f(p)?;
+        (value.abs() <= 1e-6 * scale).then_some(p)
+    };
+    let tangent = |p: Point, like: Point| -> Option<Point> {
+        let (_, g) = f(p)?;
+        let n = g.x.hypot(g.y);
+        let t = Point::new(-g.y / n, g.x / n);
+        if !t.x.is_finite() || !t.y.is_finite() {
+            return None;
+        }
+        Some(if t.x * like.x + t.y * like.y < 0.0 { Point::new(-t.x, -t.y) } else { t })
+    };
+    // Which way the edge leaves its vertex: into the side where the
+    // vertex's third site is farther than the edge's two (without one,
+    // the side of the direction at infinity).
+    let mut p = vertex.position;
+    let mut t = tangent(p, direction)?;
+    if let Some(third) = third {
+        let ahead = Point::new(p.x + 4.0 * step * t.x, p.y + 4.0 * step * t.y);
+        if third.distance(ahead) < first.distance(ahead) {
+            t = Point::new(-t.x, -t.y);
+        }
+    }
+    let mut line = vec![frame.unit(p)];
+    let limit = (4.0 * frame.size_px) as usize;
+    for _ in 0..limit {
+        let ahead = Point::new(p.x + step * t.x, p.y + step * t.y);
+        let next = onto_curve(ahead)?;
+        t = tangent(next, t)?;
+        p = next;
+        let u = frame.unit(p);
+        line.push(u);
+        let (w, h) = (frame.high.x - frame.low.x, frame.high.y - frame.low.y);
+        if u.x < frame.low.x - 0.1 * w
+            || u.x > frame.high.x + 0.1 * w
+            || u.y < frame.low.y - 0.1 * h
+            || u.y > frame.high.y + 0.1 * h
+        {
+            return Some(line);
+        }
+    }
+    // still in the picture after all those steps: draw what was traced,
+    // then straight on
+    let (a, b) = frame.clip(frame.unit(p), direction, 0.0, f64::INFINITY)?;
+    line.extend([a, b]);
+    Some(line)
 }
 
 /// The middle of a site: the point, or a segment's midpoint.
@@ -1172,6 +1285,38 @@ mod tests {
             // counter-clockwise in the input turns negative on screen
             assert!((turn + arc.sweep()).abs() < 1e-2, "{turn} on screen for a sweep of {}", arc.sweep());
         }
+    }
+
+    #[test]
+    fn conic_rays_are_traced_along_their_curve() {
+        let mut b = Builder::new();
+        b.add_arc(CircularArc::from_bulge([1.0, 0.0], [3.0, 0.0], 1.0).unwrap()).unwrap();
+        b.add_arc(CircularArc::from_bulge([3.0, 0.0], [1.0, 0.0], 1.0).unwrap()).unwrap();
+        b.add_segment([[4.0, -1.0], [5.0, 1.0]]).unwrap();
+        let d = b.build().unwrap();
+        let framed: Vec<Point> = [(0.0, -2.0), (6.0, 2.0)].map(Point::from).to_vec();
+        let frame = Frame::new(&framed);
+        let mut traced = 0;
+        for e in d.edges().filter(|e| e.is_infinite() && matches!(d.edge_shape(e.id), Some(EdgeShape::Conic { .. }))) {
+            let (v, direction) = match e.ends {
+                [EdgeEnd::Vertex(v), EdgeEnd::Infinite { direction }] | [EdgeEnd::Infinite { direction }, EdgeEnd::Vertex(v)] => {
+                    (v, direction)
+                }
+                _ => continue,
+            };
+            let line = trace_conic_ray(&d, &frame, &e, v, direction).expect("traced");
+            assert!(line.len() > 10, "{line:?}");
+            let [first, second] = e.sites.map(|s| d.site(s).unwrap());
+            for u in &line {
+                let p = Point::new(u.x / frame.to_unit, u.y / frame.to_unit);
+                assert!((first.distance(p) - second.distance(p)).abs() < 1e-9, "{p:?} off the curve of edge {}", e.id);
+            }
+            // it ends outside the picture
+            let last = line.last().unwrap();
+            assert!(!frame.contains(*last), "{last:?}");
+            traced += 1;
+        }
+        assert!(traced > 0);
     }
 
     #[test]
