@@ -10,7 +10,8 @@ use crate::progress::When;
 
 /// What the long help says about the input, after the one-line summary.
 const INPUT_HELP: &str = "\
-Builds the Voronoi diagram of the points and line segments in INPUT.
+Builds the Voronoi diagram of the points, line segments and circular arcs
+in INPUT.
 
 INPUT is read by its extension, else by its first characters:
   .wkt, or text starting with a WKT keyword (POINT, MULTIPOINT, LINESTRING,
@@ -58,7 +59,7 @@ unreadable or malformed input (the message names the line and quotes the
 offending text).";
 
 #[derive(Parser, Debug)]
-#[command(name = "segvoronoi", version = segvoronoi::VERSION, about = "Builds the Voronoi diagram, medial axis and offsets of points, segments and polygons.", long_about = INPUT_HELP, after_long_help = AFTER_HELP, allow_negative_numbers = true)]
+#[command(name = "segvoronoi", version = segvoronoi::VERSION, about = "Builds the Voronoi diagram, medial axis and offsets of points, segments, arcs and polygons.", long_about = INPUT_HELP, after_long_help = AFTER_HELP, allow_negative_numbers = true)]
 struct Cli {
     /// The input file (WKT, EWKT, GeoJSON or Boost.Polygon text), `-` for standard input; none: the built-in demo
     input: Option<String>,
