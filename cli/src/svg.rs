@@ -362,24 +362,37 @@ fn trace_conic_ray(
         }
         Some(if t.x * like.x + t.y * like.y < 0.0 { Point::new(-t.x, -t.y) } else { t })
     };
+    // one step along the curve from `p` in about the direction `t`
+    let advance = |p: Point, t: Point| -> Option<(Point, Point)> {
+        let next = onto_curve(Point::new(p.x + step * t.x, p.y + step * t.y))?;
+        Some((next, tangent(next, t)?))
+    };
     // Which way the edge leaves its vertex: into the side where the
-    // vertex's third site is farther than the edge's two (without one,
-    // the side of the direction at infinity).
+    // vertex's third site is farther than the edge's two, judged a few
+    // steps along each way (at the vertex itself the third site may be
+    // tangent to the curve); without one, the side of the direction at
+    // infinity.
     let mut p = vertex.position;
     let mut t = tangent(p, direction)?;
     if let Some(third) = third {
-        let ahead = Point::new(p.x + 4.0 * step * t.x, p.y + 4.0 * step * t.y);
-        if third.distance(ahead) < first.distance(ahead) {
-            t = Point::new(-t.x, -t.y);
+        let margin = |t: Point| -> Option<f64> {
+            let (mut q, mut t) = (p, t);
+            for _ in 0..8 {
+                (q, t) = advance(q, t)?;
+            }
+            Some(third.distance(q) - first.distance(q))
+        };
+        let back = Point::new(-t.x, -t.y);
+        if let (forward, Some(backward)) = (margin(t), margin(back)) {
+            if forward.is_none_or(|forward| backward > forward) {
+                t = back;
+            }
         }
     }
     let mut line = vec![frame.unit(p)];
     let limit = (4.0 * frame.size_px) as usize;
     for _ in 0..limit {
-        let ahead = Point::new(p.x + step * t.x, p.y + step * t.y);
-        let next = onto_curve(ahead)?;
-        t = tangent(next, t)?;
-        p = next;
+        (p, t) = advance(p, t)?;
         let u = frame.unit(p);
         line.push(u);
         let (w, h) = (frame.high.x - frame.low.x, frame.high.y - frame.low.y);
