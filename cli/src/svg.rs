@@ -1302,34 +1302,53 @@ mod tests {
 
     #[test]
     fn conic_rays_are_traced_along_their_curve() {
-        let mut b = Builder::new();
-        b.add_arc(CircularArc::from_bulge([1.0, 0.0], [3.0, 0.0], 1.0).unwrap()).unwrap();
-        b.add_arc(CircularArc::from_bulge([3.0, 0.0], [1.0, 0.0], 1.0).unwrap()).unwrap();
-        b.add_segment([[4.0, -1.0], [5.0, 1.0]]).unwrap();
-        let d = b.build().unwrap();
-        let framed: Vec<Point> = [(0.0, -2.0), (6.0, 2.0)].map(Point::from).to_vec();
-        let frame = Frame::new(&framed);
-        let mut traced = 0;
-        for e in d.edges().filter(|e| e.is_infinite() && matches!(d.edge_shape(e.id), Some(EdgeShape::Conic { .. }))) {
-            let (v, direction) = match e.ends {
-                [EdgeEnd::Vertex(v), EdgeEnd::Infinite { direction }] | [EdgeEnd::Infinite { direction }, EdgeEnd::Vertex(v)] => {
-                    (v, direction)
+        // a circle and a segment; a slot, a point off its round end (the
+        // arc's endpoint tangent to the curve at the vertex) and an arc
+        let circle = |b: &mut Builder| {
+            b.add_arc(CircularArc::from_bulge([1.0, 0.0], [3.0, 0.0], 1.0).unwrap()).unwrap();
+            b.add_arc(CircularArc::from_bulge([3.0, 0.0], [1.0, 0.0], 1.0).unwrap()).unwrap();
+            b.add_segment([[4.0, -1.0], [5.0, 1.0]]).unwrap();
+        };
+        let slot = |b: &mut Builder| {
+            b.add_segment([[0.0, 0.0], [4.0, 0.0]]).unwrap();
+            b.add_arc(CircularArc::through([4.0, 0.0], [5.0, 1.0], [4.0, 2.0]).unwrap()).unwrap();
+            b.add_segment([[4.0, 2.0], [0.0, 2.0]]).unwrap();
+            b.add_arc(CircularArc::through([0.0, 2.0], [-1.0, 1.0], [0.0, 0.0]).unwrap()).unwrap();
+            b.add_point([6.0, 3.0]).unwrap();
+            b.add_arc(CircularArc::through([-2.0, 3.0], [-1.0, 4.0], [0.0, 4.5]).unwrap()).unwrap();
+        };
+        let adders: [&dyn Fn(&mut Builder); 2] = [&circle, &slot];
+        for (k, add) in adders.into_iter().enumerate() {
+            let mut b = Builder::new();
+            add(&mut b);
+            let d = b.build().unwrap();
+            let framed: Vec<Point> = [(-2.0, -2.0), (6.0, 4.5)].map(Point::from).to_vec();
+            let frame = Frame::new(&framed);
+            let sites: Vec<Site> = d.site_ids().map(|s| d.site(s).unwrap()).collect();
+            let mut traced = 0;
+            for e in d.edges().filter(|e| e.is_infinite() && matches!(d.edge_shape(e.id), Some(EdgeShape::Conic { .. }))) {
+                let (v, direction) = match e.ends {
+                    [EdgeEnd::Vertex(v), EdgeEnd::Infinite { direction }]
+                    | [EdgeEnd::Infinite { direction }, EdgeEnd::Vertex(v)] => (v, direction),
+                    _ => continue,
+                };
+                let line = trace_conic_ray(&d, &frame, &e, v, direction).expect("traced");
+                assert!(line.len() > 10, "{line:?}");
+                let [first, second] = e.sites.map(|s| d.site(s).unwrap());
+                for u in &line {
+                    // on the curve, and no site nearer: on the edge
+                    let p = Point::new(u.x / frame.to_unit, u.y / frame.to_unit);
+                    let r = first.distance(p);
+                    assert!((r - second.distance(p)).abs() < 1e-9, "input {k}: {p:?} off the curve of edge {}", e.id);
+                    assert!(sites.iter().all(|s| s.distance(p) >= r - 1e-9), "input {k}: {p:?} off edge {}", e.id);
                 }
-                _ => continue,
-            };
-            let line = trace_conic_ray(&d, &frame, &e, v, direction).expect("traced");
-            assert!(line.len() > 10, "{line:?}");
-            let [first, second] = e.sites.map(|s| d.site(s).unwrap());
-            for u in &line {
-                let p = Point::new(u.x / frame.to_unit, u.y / frame.to_unit);
-                assert!((first.distance(p) - second.distance(p)).abs() < 1e-9, "{p:?} off the curve of edge {}", e.id);
+                // it ends outside the picture
+                let last = line.last().unwrap();
+                assert!(!frame.contains(*last), "{last:?}");
+                traced += 1;
             }
-            // it ends outside the picture
-            let last = line.last().unwrap();
-            assert!(!frame.contains(*last), "{last:?}");
-            traced += 1;
+            assert!(traced > 0, "input {k}");
         }
-        assert!(traced > 0);
     }
 
     #[test]
