@@ -190,4 +190,24 @@ mod tests {
         write_section(&mut out, "FACES", lines);
         assert_eq!(out, "FACES 4\nP2 A0 A1\nP3 A0\nP12 S0\nS1 A0\n");
     }
+
+    #[test]
+    fn a_slot_names_its_arcs_by_input_index() {
+        use crate::{Builder, CircularArc};
+        let mut b = Builder::new();
+        b.add_segment([[0.0, 0.0], [4.0, 0.0]]).unwrap();
+        b.add_arc(CircularArc::from_bulge([4.0, 0.0], [4.0, 2.0], 1.0).unwrap()).unwrap();
+        b.add_segment([[4.0, 2.0], [0.0, 2.0]]).unwrap();
+        b.add_arc(CircularArc::from_bulge([0.0, 2.0], [0.0, 0.0], 1.0).unwrap()).unwrap();
+        let d = b.build().unwrap();
+        let text = d.topology(TopologyOptions::default());
+        let names: std::collections::BTreeSet<&str> =
+            text.split(['\n', ' ']).filter(|w| w.starts_with(['P', 'S', 'A'])).collect();
+        // four endpoints, two segments, two arcs: each named once, arcs
+        // apart from segments
+        let expected: std::collections::BTreeSet<&str> = ["P0", "P1", "P2", "P3", "S0", "S1", "A0", "A1"].into();
+        assert_eq!(names, expected, "{text}");
+        let faces = text.lines().find(|l| l.starts_with("FACES ")).unwrap();
+        assert_eq!(faces, format!("FACES {}", d.vertex_count()));
+    }
 }
