@@ -32,9 +32,17 @@ use crate::geometry::site::Site;
 /// counter-clockwise order given; `None` when no candidate fits (the
 /// caller falls back as for other sites).
 pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
+    // near the origin and of size about 1 (a power of two: exact), so
+    // that the tolerances below mean the same at every magnitude
     let origin = local_origin(sites);
-    let local = sites.map(|s| shifted(&s, origin));
-    let scale = local.iter().map(site_size).fold(0.0f64, f64::max).max(f64::MIN_POSITIVE);
+    let shifted_sites = sites.map(|s| shifted(&s, origin));
+    let size = shifted_sites.iter().map(site_size).fold(0.0f64, f64::max);
+    if !(size > 0.0 && size.is_finite()) {
+        return None;
+    }
+    let unit = 2f64.powi(-(size.log2().round() as i32));
+    let local = shifted_sites.map(|s| s.scaled(unit));
+    let scale = local.iter().map(site_size).fold(0.0f64, f64::max);
     let mut best: Option<(f64, Point, f64)> = None;
     let options = local.map(|s| touchings(&s));
     for &t0 in &options[0] {
@@ -53,7 +61,8 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     }
     let (_, centre, radius) = best?;
     let (centre, radius) = polish(&local, centre, radius);
-    Some((Point::new(centre.x + origin.x, centre.y + origin.y), radius.max(0.0)))
+    let back = 1.0 / unit;
+    Some((Point::new(centre.x * back + origin.x, centre.y * back + origin.y), radius.max(0.0) * back))
 }
 
 /// Where a vertex may touch a site: a point at itself; a segment or an arc
@@ -277,7 +286,30 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
         }
     }
     let residual: f64 = sites.iter().map(|s| (s.distance(centre) - radius.max(0.0)).abs()).sum();
-    let touching = sites.map(|s| s.nearest_point(centre));
+    // where two sites touch at one point (a piece at its end, beside that
+    // end's point site or another piece ending there), the piece is taken
+    // a hair along itself from there: the limit order of the touching
+    // points as the vertex moves off the separator to its side
+    let plain = sites.map(|s| s.nearest_point(centre));
+    let near = 1e-9 * (scale + radius.abs());
+    let touching: [Point; 3] = std::array::from_fn(|k| {
+        let [a, b] = sites[k].ends();
+        let end = [a, b].into_iter().find(|&e| {
+            plain[k].distance(e) <= near && (0..3).any(|j| j != k && plain[j].distance(e) <= near)
+        });
+        match (sites[k], end) {
+            (Site::Segment { .. }, Some(e)) => {
+                let far = if e == a { b } else { a };
+                Point::new(e.x + 1e-6 * (far.x - e.x), e.y + 1e-6 * (far.y - e.y))
+            }
+            (Site::Arc(arc), Some(e)) => {
+                let t = arc.tangent_into(e);
+                let step = 1e-6 * arc.radius().min(arc.start().distance(arc.end()));
+                Point::new(e.x + step * t.x, e.y + step * t.y)
+            }
+            _ => plain[k],
+        }
+    });
     let order = orientation_value(touching[0], touching[1], touching[2]);
     // touching points apart and in clockwise order: the other circle
     if order < -1e-12 * scale * scale {
@@ -288,6 +320,78 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
 
 fn orientation_value(a: Point, b: Point, c: Point) -> f64 {
     (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)
+}
+
+/// The unit direction of the edge at infinity between hull sites `x → y`
+/// (the outside on the left) when an arc is among them: where the two
+/// reach equally far out (their support functions agree) and `x`'s
+/// farthest point comes before `y`'s along the supporting line, the root
+/// nearest `guess`. `None` when no root is found.
+pub(crate) fn direction_at_infinity(x: &Site, y: &Site, guess: Point) -> Option<Point> {
+    // an arc and its own endpoint: their separator, the radial ray out
+    // through the endpoint (the support functions only touch there)
+    for (s, t) in [(x, y), (y, x)] {
+        if let (Site::Arc(arc), Some(e)) = (*s, t.as_point()) {
+            if arc.start() == e || arc.end() == e {
+                let (dx, dy) = (e.x - arc.centre().x, e.y - arc.centre().y);
+                let n = dx.hypot(dy);
+                return (n > 0.0).then(|| Point::new(dx / n, dy / n));
+            }
+        }
+    }
+    let origin = local_origin(&[*x, *y, *x]);
+    let (x, y) = (shifted(x, origin), shifted(y, origin));
+    let support = |s: &Site, d: Point| -> (f64, Point) {
+        match *s {
+            Site::Arc(arc) if arc.spans(Point::new(arc.centre().x + d.x, arc.centre().y + d.y)) => {
+                let c = arc.centre();
+                (d.x * c.x + d.y * c.y + arc.radius(), Point::new(c.x + arc.radius() * d.x, c.y + arc.radius() * d.y))
+            }
+            _ => {
+                let [p, q] = s.ends();
+                let (hp, hq) = (d.x * p.x + d.y * p.y, d.x * q.x + d.y * q.y);
+                if hp >= hq {
+                    (hp, p)
+                } else {
+                    (hq, q)
+                }
+            }
+        }
+    };
+    let at = |theta: f64| Point::new(theta.cos(), theta.sin());
+    let f = |theta: f64| support(&x, at(theta)).0 - support(&y, at(theta)).0;
+    const STEPS: usize = 2048;
+    let step = 2.0 * std::f64::consts::PI / STEPS as f64;
+    let mut best: Option<(f64, Point)> = None;
+    for k in 0..STEPS {
+        let (mut lo, mut hi) = (k as f64 * step, (k + 1) as f64 * step);
+        let (mut flo, fhi) = (f(lo), f(hi));
+        if flo == 0.0 || flo.signum() == fhi.signum() {
+            continue;
+        }
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            let fm = f(mid);
+            if fm.signum() == flo.signum() {
+                lo = mid;
+                flo = fm;
+            } else {
+                hi = mid;
+            }
+        }
+        let d = at(0.5 * (lo + hi));
+        let (tx, ty) = (support(&x, d).1, support(&y, d).1);
+        // d is the left normal of tx → ty (as for two points)
+        let left = (ty.x - tx.x) * d.y - (ty.y - tx.y) * d.x;
+        if left < 0.0 {
+            continue; // infinity would lie right of x → y
+        }
+        let closeness = d.x * guess.x + d.y * guess.y;
+        if best.map_or(true, |(c, _)| closeness > c) {
+            best = Some((closeness, d));
+        }
+    }
+    best.map(|(_, d)| d)
 }
 
 /// A few Newton steps on the true distances `d_k(x) − t = 0`.
@@ -422,8 +526,9 @@ mod debug_tests {
     #[test]
     fn debug_triple() {
         let p = Point::new;
-        let arc = CircularArc::from_bulge(p(2.5653053577611127, 0.49907584082533846), p(2.4460306712080997, 0.5367825416772518), -1.3448508542112902).unwrap();
-        let sites = [Site::Point(p(2.698588263057324, 2.7544267987067874)), Site::Point(p(2.5653053577611127, 0.49907584082533846)), Site::Arc(arc)];
+        let arc = CircularArc::through(p(0.5860536738139531, 1.688329738735034), p(0.6774860034388183, 1.393360214496651), p(0.37412067599131615, 1.3355989019014738)).unwrap();
+        let (a, b) = (p(1.5862830710843003, 1.2351925335102054), p(1.7091949701180797, 1.2075232970850867));
+        let sites = [Site::Segment { a, b }, Site::Point(b), Site::Arc(arc)];
         let origin = local_origin(&sites);
         let local = sites.map(|s| shifted(&s, origin));
         let scale = local.iter().map(site_size).fold(0.0f64, f64::max);
