@@ -289,7 +289,6 @@ fn a_point_beside_an_arc() {
 }
 
 #[test]
-#[ignore = "the core's direction at infinity of an arc's separator ray is not the radius through the endpoint yet"]
 fn arc_separator_rays_are_radii() {
     if !arcs_build() {
         return; // waits for the library's build of arcs (see the module doc)
