@@ -512,3 +512,43 @@ fn tiny_arcs_and_far_from_the_origin() {
     let far: Vec<Piece> = rounded_rectangle(1e6, 1e6, 10.0, 6.0, 1.5);
     check_all_ways("far", &far, 1e6, 10);
 }
+
+/// Lying arithmetic: every decided quantity perturbed, or random; arcs'
+/// builds still end in a valid diagram or `Internal`, never a panic or an
+/// invalid diagram. `cargo test --features fault-injection --test arcs`.
+#[cfg(feature = "fault-injection")]
+#[test]
+fn arcs_under_fault_injection_stay_valid() {
+    use segvoronoi::fault_injection::{set_fault_mode, FaultMode};
+    let mut inputs: Vec<Vec<Piece>> = (0..6).map(|seed| random_cells(seed, 3 + seed as usize % 3)).collect();
+    inputs.extend((0..4).map(stars));
+    inputs.push(rounded_rectangle(0.0, 0.0, 10.0, 6.0, 1.5));
+    let (mut built, mut internal) = (0, 0);
+    for (k, pieces) in inputs.iter().enumerate() {
+        for (mode, seed) in [(FaultMode::Noise(1e-3), k as u64), (FaultMode::Random, k as u64 + 100), (FaultMode::Noise(1e-9), k as u64)] {
+            let mut b = Builder::new();
+            for piece in pieces {
+                let _ = match *piece {
+                    Piece::Point(p) => b.add_point(p),
+                    Piece::Segment(p, q) => b.add_segment([p, q]),
+                    Piece::Arc(arc) => b.add_arc(arc),
+                };
+            }
+            set_fault_mode(mode, seed);
+            let result = b.build();
+            set_fault_mode(FaultMode::Off, 0);
+            match result {
+                Ok(d) => {
+                    d.validate().unwrap_or_else(|e| panic!("input {k} {mode:?}: invalid: {e}"));
+                    built += 1;
+                }
+                Err(e) => {
+                    assert_eq!(e.kind(), segvoronoi::ErrorKind::Internal, "input {k} {mode:?}: {e}");
+                    internal += 1;
+                }
+            }
+        }
+    }
+    println!("{built} built, {internal} refused as Internal");
+    assert!(built > internal, "most builds complete under faults");
+}
