@@ -430,3 +430,25 @@ fn curves_without_arcs_are_lines_and_polygons() {
     std::fs::remove_file(&axis).unwrap();
     assert!(text.starts_with("MULTILINESTRING Z ("), "{text}");
 }
+
+#[test]
+fn an_ewkt_parcel_far_from_the_origin() {
+    if !arcs_build() {
+        return; // waits for the library's build of arcs (see the module doc)
+    }
+    // a parcel with two rounded corners in Swiss LV95 coordinates, as
+    // PostGIS's ST_AsEWKT writes it (the points on the arcs to the mm)
+    let parcel = "SRID=2056;CURVEPOLYGON(COMPOUNDCURVE((2600000.0 1200000.0,2600040.5 1200000.0),\
+        CIRCULARSTRING(2600040.5 1200000.0,2600047.571 1200002.929,2600050.5 1200010.0),\
+        (2600050.5 1200010.0,2600050.5 1200030.25,2600010.0 1200030.25),\
+        CIRCULARSTRING(2600010.0 1200030.25,2600002.929 1200027.321,2600000.0 1200020.25),\
+        (2600000.0 1200020.25,2600000.0 1200000.0)))\nSRID=2056;POINT(2600025.0 1200015.0)\n";
+    let (d, o) = diagram_of("parcel", parcel, &["--stats"]);
+    assert_eq!(check_dump(&d), 2);
+    assert!(stderr(&o).contains("input_srid=2056") && stderr(&o).contains("segment_sites=4"), "{}", stderr(&o));
+    // the corner arcs' circles: radius about 10 around the corners' centres
+    for arc in d["sites"].as_array().unwrap().iter().filter(|s| s["kind"] == "arc") {
+        assert!((arc["radius"].as_f64().unwrap() - 10.0).abs() < 1e-3, "{arc}");
+        assert_eq!(arc["ccw"].as_bool(), Some(true), "{arc}");
+    }
+}
