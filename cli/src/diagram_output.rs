@@ -38,6 +38,8 @@ use std::fmt::Write;
 use segvoronoi::{Diagram, EdgeEnd, EdgeId, EdgeShape, Point, Site, SiteId};
 use serde_json::{json, Value};
 
+use crate::medial_output::{number, point};
+
 /// The diagram as JSON (see the module doc), ending with a newline.
 /// `input_points` is how many points the builder was given.
 pub fn json(diagram: &Diagram, input_points: usize) -> String {
@@ -142,19 +144,6 @@ fn site_json(diagram: &Diagram, site: SiteId, inputs: &[usize]) -> Value {
         }
         // a site kind this writer does not know yet: its id and nothing more
         _ => json!({"id": id, "kind": "unknown"}),
-    }
-}
-
-fn point(p: Point) -> Value {
-    json!([number(p.x), number(p.y)])
-}
-
-/// A number (`-0` as `0`), or `null` where JSON has none (not finite).
-fn number(v: f64) -> Value {
-    if v.is_finite() {
-        json!(v + 0.0)
-    } else {
-        Value::Null
     }
 }
 

@@ -291,24 +291,10 @@ fn visible_piece(diagram: &Diagram, frame: &Frame, edge: &Edge) -> Option<Piece>
     }
 }
 
-/// The point of a site nearest to `p` (the closed segment or arc).
-fn nearest_on(site: Site, p: Point) -> Option<Point> {
-    match site {
-        Site::Point(q) => Some(q),
-        Site::Segment { a, b } => {
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            let t = (((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
-            Some(Point::new(a.x + t * dx, a.y + t * dy))
-        }
-        Site::Arc(arc) => Some(arc.nearest_point(p)),
-        _ => None,
-    }
-}
-
 /// The distance from `p` to a site and its gradient there (the unit
 /// vector from the site's nearest point).
 fn distance_and_gradient(site: Site, p: Point) -> Option<(f64, Point)> {
-    let q = nearest_on(site, p)?;
+    let q = site.nearest_point(p);
     let d = q.distance(p);
     (d > 0.0 && d.is_finite()).then(|| (d, Point::new((p.x - q.x) / d, (p.y - q.y) / d)))
 }
