@@ -331,3 +331,252 @@ impl YStructure {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::splitmix::SplitMix64;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    fn bulged(s: [f64; 2], e: [f64; 2], bulge: f64) -> CircularArc {
+        CircularArc::from_bulge(s, e, bulge).unwrap()
+    }
+
+    fn through(s: [f64; 2], via: [f64; 2], e: [f64; 2]) -> CircularArc {
+        CircularArc::through(s, via, e).unwrap()
+    }
+
+    /// Every pair with an arc, tested exactly, the least by rank: what the
+    /// sweep must find.
+    fn brute_force(points: &[Point], segments: &[[Point; 2]], arcs: &[CircularArc]) -> Option<ArcConflict> {
+        let exact: Vec<ExactArc> = arcs.iter().map(ExactArc::new).collect();
+        let mut all = Vec::new();
+        for (a, x) in exact.iter().enumerate() {
+            for (i, &q) in points.iter().enumerate() {
+                if x.contains_point(q) {
+                    all.push(ArcConflict::PointOnArc { point: i, arc: a });
+                }
+            }
+            for (i, &s) in segments.iter().enumerate() {
+                if let Some(contact) = segment_arc_contact(x, s) {
+                    all.push(ArcConflict::ArcSegment { arc: a, segment: i, contact });
+                }
+            }
+            for (b, y) in exact.iter().enumerate().skip(a + 1) {
+                if let Some(contact) = arc_arc_contact(x, y) {
+                    all.push(ArcConflict::Arcs { first: a, second: b, contact });
+                }
+            }
+        }
+        all.into_iter().min_by_key(|c| c.rank())
+    }
+
+    #[test]
+    fn messages_and_indices_name_both_inputs() {
+        let circle = [bulged([0.0, -5.0], [0.0, 5.0], 1.0), bulged([0.0, 5.0], [0.0, -5.0], 1.0)];
+        assert_eq!(first_arc_conflict(&[p(7.0, 0.0)], &[[p(5.0, -1.0), p(6.0, 9.0)]], &circle), None);
+
+        let c = first_arc_conflict(&[p(1.0, 1.0), p(1.0, 2.0), p(-3.0, -4.0)], &[], &circle).unwrap();
+        assert_eq!(c, ArcConflict::PointOnArc { point: 2, arc: 1 });
+        let e = arc_conflict_error(&c);
+        assert_eq!((e.kind(), e.message(), e.indices()), (ErrorKind::Intersecting, "point 2 lies on arc 1", &[2, 1][..]));
+
+        let segments = [[p(9.0, 9.0), p(9.0, 10.0)], [p(5.0, -1.0), p(5.0, 1.0)], [p(0.0, 0.0), p(10.0, 0.0)]];
+        let c = first_arc_conflict(&[], &segments, &circle).unwrap();
+        assert_eq!(c, ArcConflict::ArcSegment { arc: 0, segment: 1, contact: SegmentArcContact::Tangent });
+        assert!(c.message().starts_with("arc 0 and segment 1 touch"), "{}", c.message());
+        assert_eq!(arc_conflict_error(&c).indices(), [0, 1]);
+        let c = first_arc_conflict(&[], &segments[2..], &circle).unwrap();
+        assert_eq!(c.message(), "arc 0 and segment 0 cross");
+        let c = first_arc_conflict(&[], &[[p(0.0, 0.0), p(4.0, 3.0)]], &circle).unwrap();
+        assert_eq!(c.message(), "arc 0 and segment 0 touch (an end of the segment lies inside the arc)");
+
+        let mut arcs = circle.to_vec();
+        arcs.push(through([3.0, 4.0], [6.0, 5.0], [11.0, 0.0]));
+        arcs.push(circle[1].reversed());
+        let c = first_arc_conflict(&[], &[], &arcs).unwrap();
+        assert_eq!(c.message(), "arcs 0 and 2 touch (an end of arc 2 lies inside arc 0)");
+        assert_eq!(check_arcs(&[], &[], &arcs).unwrap_err().indices(), [0, 2]);
+        let c = first_arc_conflict(&[], &[], &[arcs[1], arcs[3]]).unwrap();
+        assert_eq!((c.message(), c.indices()), ("arcs 0 and 1 overlap".to_string(), [0, 1]));
+        let crossing = through([6.0, 5.0], [1.0, 0.0], [6.0, -5.0]);
+        let c = first_arc_conflict(&[], &[], &[crossing, circle[0]]).unwrap();
+        assert_eq!(c.message(), "arcs 0 and 1 cross");
+        assert!(check_arcs(&[p(0.0, 5.0)], &[[p(0.0, 5.0), p(-7.0, 5.0)]], &circle).is_ok(), "shared ends, tangent");
+    }
+
+    #[test]
+    fn the_least_conflict_is_reported_whatever_the_order() {
+        // point 1 on arc 2 and on arc 0; segment 0 crosses arc 0; arcs 1 and 2 cross
+        let arcs = [
+            bulged([0.0, -5.0], [0.0, 5.0], 1.0),
+            through([6.0, 5.0], [1.0, 0.0], [6.0, -5.0]),
+            bulged([0.0, 5.0], [0.0, -5.0], -1.0),
+        ];
+        let points = [p(20.0, 20.0), p(5.0, 0.0)];
+        let segments = [[p(0.0, 0.0), p(9.0, 1.0)]];
+        let expected = ArcConflict::PointOnArc { point: 1, arc: 0 };
+        assert_eq!(first_arc_conflict(&points, &segments, &arcs), Some(expected));
+        assert_eq!(brute_force(&points, &segments, &arcs), Some(expected));
+        assert_eq!(
+            first_arc_conflict(&[], &segments, &arcs),
+            Some(ArcConflict::ArcSegment { arc: 0, segment: 0, contact: SegmentArcContact::Cross })
+        );
+        assert_eq!(first_arc_conflict(&[], &[], &arcs).map(|c| c.indices()), Some([0, 1]));
+        assert_eq!(first_arc_conflict(&[], &[], &arcs[1..]).map(|c| c.indices()), Some([0, 1]));
+    }
+
+    #[test]
+    fn chains_and_circles_pass() {
+        // a rounded rectangle (sides and quarter arcs, tangent-continuous), a
+        // full circle as two arcs inside it, a slot, and points at centres
+        let mut segments = vec![];
+        let mut arcs = vec![];
+        let q = (std::f64::consts::PI / 8.0).tan();
+        let corners =
+            [([10.0, 0.0], [12.0, 2.0]), ([12.0, 8.0], [10.0, 10.0]), ([0.0, 10.0], [-2.0, 8.0]), ([-2.0, 2.0], [0.0, 0.0])];
+        for (k, (a, b)) in corners.iter().enumerate() {
+            arcs.push(bulged(*a, *b, q));
+            let next = corners[(k + 1) % 4].0;
+            segments.push([p(b[0], b[1]), p(next[0], next[1])]);
+        }
+        arcs.push(bulged([3.0, 5.0], [7.0, 5.0], 1.0));
+        arcs.push(bulged([7.0, 5.0], [3.0, 5.0], 1.0));
+        // the slot's caps bulge outward: clockwise as the ring runs
+        arcs.push(bulged([1.0, 8.0], [1.0, 9.0], -1.0));
+        arcs.push(bulged([4.0, 9.0], [4.0, 8.0], -1.0));
+        segments.push([p(1.0, 9.0), p(4.0, 9.0)]);
+        segments.push([p(4.0, 8.0), p(1.0, 8.0)]);
+        let points = [p(5.0, 5.0), p(10.0, 2.0), p(0.0, 2.0)];
+        assert_eq!(first_arc_conflict(&points, &segments, &arcs), None);
+        assert_eq!(brute_force(&points, &segments, &arcs), None);
+        // the slot's end touched from outside by a tangent segment: a conflict
+        let mut more = segments.clone();
+        more.push([p(4.5, 7.0), p(4.5, 10.0)]);
+        assert_eq!(
+            first_arc_conflict(&points, &more, &arcs),
+            Some(ArcConflict::ArcSegment { arc: 7, segment: 6, contact: SegmentArcContact::Tangent })
+        );
+    }
+
+    /// Boxes of random items, with every pair the sweep reports against
+    /// the O(n²) list of overlapping boxes with an arc among them.
+    #[test]
+    fn the_sweep_reports_exactly_the_overlapping_boxes() {
+        let mut rng = SplitMix64(31);
+        for round in 0..200 {
+            let n = 1 + (rng.next_u64() % 40) as usize;
+            let grid = 1 + rng.next_u64() % 12;
+            let coordinate = |rng: &mut SplitMix64| (rng.next_u64() % grid) as f64 - 3.0;
+            let items: Vec<Item> = (0..n)
+                .map(|i| {
+                    let kind = [Kind::Point, Kind::Segment, Kind::Arc][(rng.next_u64() % 3) as usize];
+                    let (x0, y0) = (coordinate(&mut rng), coordinate(&mut rng));
+                    let (x1, y1) = if kind == Kind::Point { (x0, y0) } else { (coordinate(&mut rng), coordinate(&mut rng)) };
+                    Item { kind, index: i, bx: [x0.min(x1), x0.max(x1), y0.min(y1), y0.max(y1)] }
+                })
+                .collect();
+            let mut swept = Vec::new();
+            box_sweep(&items, |i, j| swept.push((i.min(j), i.max(j))));
+            swept.sort_unstable();
+            let mut expected = Vec::new();
+            for i in 0..n {
+                for j in i + 1..n {
+                    let (a, b) = (items[i].bx, items[j].bx);
+                    let overlap = a[0] <= b[1] && b[0] <= a[1] && a[2] <= b[3] && b[2] <= a[3];
+                    if overlap && (items[i].kind == Kind::Arc || items[j].kind == Kind::Arc) {
+                        expected.push((i, j));
+                    }
+                }
+            }
+            assert_eq!(swept, expected, "round {round}");
+        }
+    }
+
+    /// Random small inputs on a grid, full of exact degeneracies (points on
+    /// circles, shared endpoints, tangencies, arcs of one circle): the
+    /// sweep finds what testing every pair finds, at every power-of-two
+    /// scale and far from the origin; and every arc lies inside its box.
+    #[test]
+    fn the_sweep_agrees_with_every_pair_on_random_grids() {
+        let mut rng = SplitMix64(2026);
+        let bulges = [0.5, -0.5, 1.0, -1.0, 2.0, -2.0, 0.25, -3.0, 1.0 / 3.0];
+        let mut conflicts = 0;
+        for round in 0..400 {
+            let grid = 3 + rng.next_u64() % 6;
+            let mut coordinate = || (rng.next_u64() % grid) as f64 * 2.0 - grid as f64;
+            let mut pts = Vec::new();
+            for _ in 0..12 {
+                pts.push(p(coordinate(), coordinate()));
+            }
+            let (scale, offset) =
+                [(1.0, 0.0), (f64::from_bits(24 << 52), 0.0), (2f64.powi(900), 0.0), (1.0, 2f64.powi(30))][round % 4];
+            let place = |q: Point| p(q.x * scale + offset, q.y * scale - offset);
+            let mut next = 0;
+            let mut take = |k: usize| {
+                next += 1;
+                place(pts[(next * 7 + k) % pts.len()])
+            };
+            let points: Vec<Point> = (0..(round % 3)).map(|k| take(k)).collect();
+            let segments: Vec<[Point; 2]> = (0..(round % 4)).map(|k| [take(k), take(k + 1)]).collect();
+            let mut arcs = Vec::new();
+            for k in 0..2 + round % 4 {
+                let (s, e, m) = (take(k), take(k + 2), take(k + 5));
+                let arc = if k % 2 == 0 {
+                    CircularArc::from_bulge(s, e, bulges[(k + round) % bulges.len()])
+                } else {
+                    CircularArc::through(s, m, e)
+                };
+                arcs.extend(arc.ok());
+            }
+            let found = first_arc_conflict(&points, &segments, &arcs);
+            assert_eq!(found, brute_force(&points, &segments, &arcs), "round {round}: {points:?} {segments:?} {arcs:?}");
+            conflicts += usize::from(found.is_some());
+            for arc in &arcs {
+                let bx = arc_box(arc, &ExactArc::new(arc));
+                for i in 0..=64 {
+                    let q = arc.point_at(i as f64 / 64.0);
+                    let slack = 1e-9 * arc.radius();
+                    let inside = q.x >= bx[0] - slack && q.x <= bx[1] + slack && q.y >= bx[2] - slack && q.y <= bx[3] + slack;
+                    assert!(inside, "round {round}: {q:?} outside {bx:?} of {arc:?}");
+                }
+            }
+        }
+        assert!(conflicts > 100 && conflicts < 390, "{conflicts} conflicts: the inputs should mix both");
+    }
+
+    /// Extreme finite inputs: nothing panics, and the sweep still agrees
+    /// with testing every pair.
+    #[test]
+    fn extreme_inputs_do_not_panic() {
+        let mut rng = SplitMix64(7);
+        let magnitudes = [1e308, -1e308, 1e-308, 5e-324, 0.0, 1.0, -3.5, 1e154, 1e-160, f64::MAX, -f64::MAX];
+        let bulges = [1e308, -1e300, 1e-300, 1e150, -1e-150, 1.0, 2f64.powi(60), -(2f64.powi(-60))];
+        let (mut accepted, mut conflicts) = (0, 0);
+        for round in 0..300 {
+            let mut value = || {
+                let m = magnitudes[(rng.next_u64() % magnitudes.len() as u64) as usize];
+                m * (1.0 + (rng.next_u64() % 4) as f64 / 4.0).min(if m.abs() > 1e300 { 1.0 } else { 2.0 })
+            };
+            let mut pts: Vec<Point> = (0..8).map(|_| p(value(), value())).collect();
+            pts.push(p(0.0, 0.0));
+            let pick = |k: usize| pts[k % pts.len()];
+            let mut arcs = Vec::new();
+            for k in 0..4 {
+                let b = bulges[(round + k) % bulges.len()];
+                arcs.extend(CircularArc::from_bulge(pick(round + k), pick(round + 3 * k + 1), b).ok());
+                arcs.extend(CircularArc::through(pick(round + k), pick(round + 2 * k + 5), pick(round + 3 * k + 1)).ok());
+            }
+            let segments = [[pick(round), pick(round + 1)], [pick(round + 2), pick(round + 2)]];
+            let points = [pick(round + 3), pick(round + 4)];
+            let found = first_arc_conflict(&points, &segments, &arcs);
+            assert_eq!(found, brute_force(&points, &segments, &arcs), "round {round}");
+            accepted += arcs.len();
+            conflicts += usize::from(found.is_some());
+        }
+        assert!(accepted > 200 && conflicts > 20, "{accepted} arcs, {conflicts} conflicts");
+    }
+}
