@@ -579,4 +579,48 @@ mod tests {
         }
         assert!(accepted > 200 && conflicts > 20, "{accepted} arcs, {conflicts} conflicts");
     }
+
+    /// The cost of the check on 100k arcs (run with `--ignored
+    /// --nocapture`, in release): a tangent-continuous chain of half
+    /// circles, a chain of shallow arcs with a segment beside each, and
+    /// separate random arcs on a grid with a point at each centre.
+    #[test]
+    #[ignore]
+    fn cost_of_the_check() {
+        let n = 100_000;
+        let time = |name: &str, points: &[Point], segments: &[[Point; 2]], arcs: &[CircularArc]| {
+            let start = std::time::Instant::now();
+            let found = first_arc_conflict(points, segments, arcs);
+            let took = start.elapsed();
+            eprintln!(
+                "{name}: {} arcs, {} segments, {} points: {:?} ({:.2} µs per arc)",
+                arcs.len(),
+                segments.len(),
+                points.len(),
+                took,
+                took.as_secs_f64() * 1e6 / arcs.len() as f64
+            );
+            assert_eq!(found, None, "{name}");
+        };
+        let chain: Vec<CircularArc> =
+            (0..n).map(|i| bulged([i as f64, 0.0], [i as f64 + 1.0, 0.0], if i % 2 == 0 { 1.0 } else { -1.0 })).collect();
+        time("tangent chain", &[], &[], &chain);
+        let shallow: Vec<CircularArc> =
+            (0..n).map(|i| bulged([i as f64 * 0.75, 0.5], [i as f64 * 0.75 + 0.75, 0.5], 0.3)).collect();
+        let beside: Vec<[Point; 2]> = (0..n).map(|i| [p(i as f64 * 0.75, -1.0), p(i as f64 * 0.75 + 0.75, -1.0)]).collect();
+        time("shallow chain beside segments", &[], &beside, &shallow);
+        let mut rng = SplitMix64(5);
+        let mut random = Vec::new();
+        let mut centres = Vec::new();
+        for i in 0..n {
+            let (cx, cy) = ((i % 316) as f64 * 4.0, (i / 316) as f64 * 4.0);
+            let a = rng.unit() * 6.0;
+            let b = a + 0.2 + rng.unit() * 5.0;
+            let r = 0.5 + rng.unit();
+            let at = |t: f64| [cx + r * t.cos(), cy + r * t.sin()];
+            random.push(through(at(a), at(0.5 * (a + b)), at(b)));
+            centres.push(p(cx, cy));
+        }
+        time("random arcs, a point at each centre", &centres, &[], &random);
+    }
 }

@@ -760,6 +760,9 @@ mod tests {
         let inner_from_tangent = through([5.0, 0.0], [4.0, 2.0], [2.5, 2.5]);
         let lower_quarter = through([0.0, -5.0], [3.0, -4.0], [5.0, 0.0]);
         let s_curve = through([5.0, 0.0], [6.0, 3.0], [10.0, 5.0]);
+        let lens = through([0.0, -5.0], [-1.0, 0.0], [0.0, 5.0]);
+        let crescent = through([0.0, 5.0], [8.0, 0.0], [0.0, -5.0]);
+        let wide = through([0.0, 5.0], [8.0, 0.0], [3.0, -4.0]);
         let right_reversed = right.reversed();
         let cases: Vec<(&CircularArc, &CircularArc, Option<ArcArcContact>, &str)> = vec![
             (&right, &left, None, "a full circle as two arcs"),
@@ -781,6 +784,10 @@ mod tests {
             (&lower_quarter, &inner_from_tangent, None, "a tangent-continuous join inside"),
             (&lower_quarter, &s_curve, None, "a tangent-continuous S"),
             (&quarter, &s_curve, None, "meeting at an endpoint of both, not tangent"),
+            (&right, &lens, None, "a lens: two circles through both endpoints"),
+            (&right, &crescent, None, "a crescent: both bulging right from one chord"),
+            (&left, &lens, None, "a lens the other way"),
+            (&right, &wide, Some(EndOfSecondOnFirst), "through both circle points, one inside the arc"),
         ];
         for (a, b, expected, why) in cases {
             assert_eq!(arc_arc_contact(&ExactArc::new(a), &ExactArc::new(b)), expected, "{why}");
@@ -800,5 +807,108 @@ mod tests {
         assert_eq!(ratio_to_f64(&d(1.0), &d(3.0)), 1.0 / 3.0);
         assert_eq!(ratio_to_f64(&d(-1e300), &d(1e-300)), f64::NEG_INFINITY);
         assert_eq!(ratio_to_f64(&d(f64::MIN_POSITIVE), &d(4.0)), f64::MIN_POSITIVE / 4.0);
+    }
+
+    /// What dense sampling can tell about a closed piece `samples` (in
+    /// order along it) against an arc: a clear crossing of the open arc at
+    /// a clearly interior stretch of the piece, clearly apart, or unclear.
+    #[derive(Debug, PartialEq)]
+    enum Sampled {
+        Crosses,
+        Apart,
+        Unclear,
+    }
+
+    fn sample_against(arc: &CircularArc, samples: &[Point], spacing: f64) -> Sampled {
+        let (c, r) = (arc.centre(), arc.radius());
+        let (s, e) = (arc.start(), arc.end());
+        let tau = if arc.is_counter_clockwise() { -1.0 } else { 1.0 };
+        let tol = 1e-7 * r.max(spacing);
+        let side = |q: Point| tau * ((e.x - s.x) * (q.y - s.y) - (e.y - s.y) * (q.x - s.x)) / s.distance(e);
+        let power = |q: Point| q.distance(c) - r;
+        let inner = &samples[2..samples.len() - 2];
+        for w in inner.windows(2) {
+            let (h0, h1) = (power(w[0]), power(w[1]));
+            if h0.abs() > tol && h1.abs() > tol && (h0 < 0.0) != (h1 < 0.0) && side(w[0]) > tol && side(w[1]) > tol {
+                return Sampled::Crosses;
+            }
+        }
+        let nearest = samples.iter().map(|&q| arc.distance(q)).fold(f64::INFINITY, f64::min);
+        if nearest > spacing + tol {
+            Sampled::Apart
+        } else {
+            Sampled::Unclear
+        }
+    }
+
+    /// Random small arcs and segments, on a coarse grid (many exact
+    /// contacts) or anywhere: wherever dense sampling is clear, the exact
+    /// answer agrees (a clear crossing is a conflict, clearly apart is
+    /// none). Sampling decides nothing near tangencies or endpoints.
+    #[test]
+    fn sampling_confirms_the_clear_cases() {
+        let mut rng = crate::splitmix::SplitMix64(99);
+        let (mut crosses, mut apart) = (0, 0);
+        for round in 0..3000 {
+            let coarse = round % 2 == 0;
+            let mut value = || {
+                let v = rng.unit() * 8.0 - 4.0;
+                if coarse {
+                    (v * 2.0).round() / 2.0
+                } else {
+                    v
+                }
+            };
+            let mut pt = || p(value(), value());
+            let (a, b, m) = (pt(), pt(), pt());
+            let Ok(arc) = (if round % 3 == 0 {
+                CircularArc::from_bulge(a, b, (m.x / 2.0).clamp(-3.0, 3.0) + 0.01)
+            } else {
+                CircularArc::through(a, m, b)
+            }) else {
+                continue;
+            };
+            let (c, d, n) = (pt(), pt(), pt());
+            let exact = ExactArc::new(&arc);
+            const M: usize = 4000;
+            if round % 2 == 0 {
+                let spacing = c.distance(d) / M as f64;
+                let samples: Vec<Point> = (0..=M)
+                    .map(|i| {
+                        let t = i as f64 / M as f64;
+                        p(c.x + t * (d.x - c.x), c.y + t * (d.y - c.y))
+                    })
+                    .collect();
+                let got = segment_arc_contact(&exact, [c, d]);
+                match sample_against(&arc, &samples, spacing) {
+                    Sampled::Crosses => {
+                        crosses += 1;
+                        assert!(got.is_some(), "{arc:?} {c:?} {d:?}")
+                    }
+                    Sampled::Apart => {
+                        apart += 1;
+                        assert_eq!(got, None, "{arc:?} {c:?} {d:?}")
+                    }
+                    Sampled::Unclear => {}
+                }
+            } else {
+                let Ok(other) = CircularArc::through(c, n, d) else { continue };
+                let spacing = other.radius() * other.sweep().abs() / M as f64;
+                let samples: Vec<Point> = (0..=M).map(|i| other.point_at(i as f64 / M as f64)).collect();
+                let got = arc_arc_contact(&exact, &ExactArc::new(&other));
+                match sample_against(&arc, &samples, spacing) {
+                    Sampled::Crosses => {
+                        crosses += 1;
+                        assert!(got.is_some(), "{arc:?} {other:?}")
+                    }
+                    Sampled::Apart => {
+                        apart += 1;
+                        assert_eq!(got, None, "{arc:?} {other:?}")
+                    }
+                    Sampled::Unclear => {}
+                }
+            }
+        }
+        assert!(crosses > 300 && apart > 300, "{crosses} crossings and {apart} apart confirmed");
     }
 }
