@@ -520,7 +520,7 @@ mod tests {
                 next += 1;
                 place(pts[(next * 7 + k) % pts.len()])
             };
-            let points: Vec<Point> = (0..(round % 3)).map(|k| take(k)).collect();
+            let points: Vec<Point> = (0..(round % 3)).map(&mut take).collect();
             let segments: Vec<[Point; 2]> = (0..(round % 4)).map(|k| [take(k), take(k + 1)]).collect();
             let mut arcs = Vec::new();
             for k in 0..2 + round % 4 {

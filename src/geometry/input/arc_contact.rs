@@ -546,9 +546,12 @@ mod tests {
         -up(-x)
     }
 
+    /// A named map of the plane and a power-of-two factor.
+    type Transform = (&'static str, fn(Point) -> Point, f64);
+
     /// The transforms that keep every contact: power-of-two scalings, the
     /// mirror in the y axis, and with it the swap of the axes.
-    fn transforms() -> Vec<(&'static str, fn(Point) -> Point, f64)> {
+    fn transforms() -> Vec<Transform> {
         vec![
             ("identity", |q| q, 1.0),
             ("mirror", |q| p(-q.x, q.y), 1.0),
