@@ -29,6 +29,18 @@
 //! arcs only, so pairs of segments cost nothing. With `k` pairs of
 //! overlapping boxes, the sweep costs O((n + k) log n) for `n` inputs.
 //!
+//! # Cost
+//! Each arc is prepared once in big numbers (its circle's equation and
+//! the exact offset of its centre, for the box), and each pair is first
+//! put to `f64` filters with proven slack (a point clearly off the circle,
+//! a segment clearly missing it, disjoint circles) and to rational
+//! shortcuts for a common endpoint; exact big-number work remains for
+//! pieces that really meet. Measured in release on the development
+//! machine (the ignored test `cost_of_the_check`): 100k half circles in a
+//! tangent-continuous chain, 0.18 s (1.8 µs an arc); 100k shallow arcs in
+//! a chain beside 100k segments, 0.42 s; 100k random arcs with a point at
+//! each centre, 0.38 s.
+//!
 //! # Which conflict is reported
 //! The least by (kind, arc index, other index), kinds in the order
 //! arc–point, arc–segment, arc–arc, and for two arcs the smaller index
@@ -147,7 +159,8 @@ pub(crate) fn check_arcs(points: &[Point], segments: &[[Point; 2]], arcs: &[Circ
 /// The conflict of the input with arcs that the module documentation
 /// says is reported, if any: over all pairs with at least one arc.
 /// Coordinates must be finite (the builder's rule); any finite values
-/// are handled exactly.
+/// are handled exactly. Fewer than `2^32` inputs in all (the builder's
+/// 32-bit ids).
 pub(crate) fn first_arc_conflict(points: &[Point], segments: &[[Point; 2]], arcs: &[CircularArc]) -> Option<ArcConflict> {
     if arcs.is_empty() {
         return None;
