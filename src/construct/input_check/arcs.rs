@@ -572,6 +572,31 @@ mod tests {
             let found = first_arc_conflict(&points, &segments, &arcs);
             assert_eq!(found, brute_force(&points, &segments, &arcs), "round {round}: {points:?} {segments:?} {arcs:?}");
             conflicts += usize::from(found.is_some());
+            // the same figure reversed, mirrored, or scaled by 2^∓600: the
+            // same conflict (mirroring flips each arc's turn, not its set)
+            let reversed: Vec<CircularArc> = arcs.iter().map(|a| a.reversed()).collect();
+            assert_eq!(first_arc_conflict(&points, &segments, &reversed), found, "round {round}: reversed");
+            let mirror = |q: Point| p(-q.x, q.y);
+            let mirrored_arcs: Vec<CircularArc> = arcs
+                .iter()
+                .map(|a| match a.datum() {
+                    (Some(b), _) => CircularArc::from_bulge(mirror(a.start()), mirror(a.end()), -b).unwrap(),
+                    (_, via) => CircularArc::through(mirror(a.start()), mirror(via.unwrap()), mirror(a.end())).unwrap(),
+                })
+                .collect();
+            let mirrored_points: Vec<Point> = points.iter().map(|&q| mirror(q)).collect();
+            let mirrored_segments: Vec<[Point; 2]> = segments.iter().map(|s| [mirror(s[0]), mirror(s[1])]).collect();
+            assert_eq!(
+                first_arc_conflict(&mirrored_points, &mirrored_segments, &mirrored_arcs),
+                found,
+                "round {round}: mirrored"
+            );
+            // 2^-600, or 2^600 for the inputs already near 2^-1000
+            let tiny = f64::from_bits(if scale < 1.0 { 1623 << 52 } else { 423 << 52 });
+            let scaled_arcs: Vec<CircularArc> = arcs.iter().map(|a| a.scaled(tiny)).collect();
+            let scaled_points: Vec<Point> = points.iter().map(|q| q.scaled(tiny)).collect();
+            let scaled_segments: Vec<[Point; 2]> = segments.iter().map(|s| [s[0].scaled(tiny), s[1].scaled(tiny)]).collect();
+            assert_eq!(first_arc_conflict(&scaled_points, &scaled_segments, &scaled_arcs), found, "round {round}: scaled");
             for arc in &arcs {
                 let bx = arc_box(arc, &ExactArc::new(arc));
                 for i in 0..=64 {
