@@ -640,6 +640,15 @@ mod tests {
             conflicts += usize::from(found.is_some());
         }
         assert!(accepted > 200 && conflicts > 20, "{accepted} arcs, {conflicts} conflicts");
+        // arcs that only the crate's own scaling into underflow can make
+        // (endpoints merged, or the third point on the chord): no panic
+        let under = f64::from_bits(1); // 2^-1074
+        let degenerate = [
+            bulged([0.0, 0.0], [1.0, 0.0], 1.0).scaled(under / 2.0),
+            through([0.0, 0.0], [3.0, 1e-300], [6.0, 0.0]).scaled(under),
+            bulged([1.0, 1.0], [3.0, 1.0], 0.5),
+        ];
+        let _ = first_arc_conflict(&[p(0.0, 0.0)], &[[p(-1.0, 0.0), p(1.0, 0.0)]], &degenerate);
     }
 
     /// The cost of the check on 100k arcs (run with `--ignored

@@ -300,7 +300,8 @@ impl Approx {
 }
 
 impl ExactArc {
-    /// The exact form of `arc` (any arc [`CircularArc`] accepts).
+    /// The exact form of `arc` (any arc [`CircularArc`]'s constructors
+    /// accept).
     pub(crate) fn new(arc: &CircularArc) -> ExactArc {
         let (s, e) = (arc.start(), arc.end());
         let (sd, ed) = (DPoint::from_point(s), DPoint::from_point(e));
@@ -337,7 +338,10 @@ impl ExactArc {
         let c = &c_rel - &(&two_a * &sd.y);
         let f = &(&(&a * &sd.norm2()) - &(&b_rel * &sd.x)) - &(&c_rel * &sd.y);
         let tau = cross(&d, &q.sub(&sd)).sign();
-        debug_assert!(tau != 0 && a.sign() > 0, "an arc's third point is off its chord: {arc:?}");
+        // tau ≠ 0 and A > 0 for every arc the constructors accept (the third
+        // point is off the chord). A degenerate one (only `scaled` into
+        // underflow could make it) gets some answer, never a panic: nothing
+        // below divides, and its box is the whole plane.
         // centre − s = −(B_rel, C_rel)/2A, and cross(d, centre − s) = k|d|²
         let k_num = -&cross(&d, &DPoint { x: b_rel, y: c_rel });
         let k = ratio_to_f64(&k_num, &(&a.times_pow2(1) * &d.norm2()));
