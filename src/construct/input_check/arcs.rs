@@ -30,11 +30,14 @@
 //! overlapping boxes, the sweep costs O((n + k) log n) for `n` inputs.
 //!
 //! # Cost
-//! Each arc is prepared once in big numbers (its circle's equation and
-//! the exact offset of its centre, for the box), and each pair is first
-//! put to `f64` filters with proven slack (a point clearly off the circle,
-//! a segment clearly missing it, disjoint circles) and to rational
-//! shortcuts for a common endpoint; exact big-number work remains for
+//! An arc's box comes from its circle in `f64` (for a third point, from a
+//! few exact products rounded once). Its exact form (the circle's equation
+//! in big numbers) is made at its first exact test and dropped when the
+//! sweep has passed it, so the memory is that of the arcs the sweep line
+//! meets. Each pair is first put to `f64` filters with proven slack (a
+//! point clearly off the circle, a segment clearly missing it, disjoint
+//! circles) and to rational shortcuts for a common endpoint; exact
+//! big-number work remains for
 //! pieces that really meet. Measured in release on the development
 //! machine (the ignored test `cost_of_the_check`): 100k half circles in a
 //! tangent-continuous chain, 0.18 s (1.8 µs an arc); 100k shallow arcs in
@@ -165,7 +168,6 @@ pub(crate) fn first_arc_conflict(points: &[Point], segments: &[[Point; 2]], arcs
     if arcs.is_empty() {
         return None;
     }
-    let exact: Vec<ExactArc> = arcs.iter().map(ExactArc::new).collect();
     let mut items: Vec<Item> = Vec::with_capacity(points.len() + segments.len() + arcs.len());
     items.extend(points.iter().enumerate().map(|(i, p)| Item { kind: Kind::Point, index: i, bx: [p.x, p.x, p.y, p.y] }));
     items.extend(segments.iter().enumerate().map(|(i, [a, b])| Item {
@@ -173,19 +175,27 @@ pub(crate) fn first_arc_conflict(points: &[Point], segments: &[[Point; 2]], arcs
         index: i,
         bx: [a.x.min(b.x), a.x.max(b.x), a.y.min(b.y), a.y.max(b.y)],
     }));
-    items.extend(arcs.iter().zip(&exact).enumerate().map(|(i, (arc, x))| Item {
-        kind: Kind::Arc,
-        index: i,
-        bx: arc_box(arc, x),
-    }));
+    items.extend(arcs.iter().enumerate().map(|(i, arc)| Item { kind: Kind::Arc, index: i, bx: arc_box(arc) }));
     for item in &mut items {
         // +0.0 for -0.0, so that the bit-keyed orders below are numeric
         for v in &mut item.bx {
             *v += 0.0;
         }
     }
+    // The exact form of an arc, made at its first exact test and dropped
+    // when the sweep has passed it: the memory is that of the active arcs.
+    let mut exact: Vec<Option<ExactArc>> = (0..arcs.len()).map(|_| None).collect();
     let mut best: Option<ArcConflict> = None;
-    box_sweep(&items, |i, j| {
+    box_sweep(&items, |event| {
+        let (i, j) = match event {
+            Event::Pair(i, j) => (i, j),
+            Event::Retire(i) => {
+                if items[i].kind == Kind::Arc {
+                    exact[items[i].index] = None;
+                }
+                return;
+            }
+        };
         let (a, b) = (&items[i], &items[j]);
         let (arc, other) = if a.kind == Kind::Arc && (b.kind != Kind::Arc || a.index < b.index) { (a, b) } else { (b, a) };
         let rank = match other.kind {
@@ -196,7 +206,14 @@ pub(crate) fn first_arc_conflict(points: &[Point], segments: &[[Point; 2]], arcs
         if best.is_some_and(|c| c.rank() <= rank) {
             return;
         }
-        let x = &exact[arc.index];
+        let mut prepare = |k: usize| {
+            exact[k].get_or_insert_with(|| ExactArc::new(&arcs[k]));
+        };
+        prepare(arc.index);
+        if other.kind == Kind::Arc {
+            prepare(other.index);
+        }
+        let Some(x) = exact[arc.index].as_ref() else { return };
         let found = match other.kind {
             Kind::Point => {
                 x.contains_point(points[other.index]).then_some(ArcConflict::PointOnArc { point: other.index, arc: arc.index })
@@ -206,7 +223,7 @@ pub(crate) fn first_arc_conflict(points: &[Point], segments: &[[Point; 2]], arcs
                 segment: other.index,
                 contact,
             }),
-            Kind::Arc => arc_arc_contact(x, &exact[other.index]).map(|contact| ArcConflict::Arcs {
+            Kind::Arc => exact[other.index].as_ref().and_then(|y| arc_arc_contact(x, y)).map(|contact| ArcConflict::Arcs {
                 first: arc.index,
                 second: other.index,
                 contact,
@@ -217,6 +234,16 @@ pub(crate) fn first_arc_conflict(points: &[Point], segments: &[[Point; 2]], arcs
         }
     });
     best
+}
+
+/// What the sweep reports.
+#[derive(Clone, Copy, Debug)]
+enum Event {
+    /// Two items (positions in the item list) whose boxes overlap, one of
+    /// them an arc; reported once.
+    Pair(usize, usize),
+    /// An item the sweep line has passed: no pair with it follows.
+    Retire(usize),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -245,10 +272,11 @@ fn key(v: f64) -> u64 {
     }
 }
 
-/// Calls `pair(i, j)` once for every pair of items whose closed boxes
+/// Reports ([`Event::Pair`]) once every pair of items whose closed boxes
 /// overlap and of which at least one is an arc (see the module
-/// documentation).
-fn box_sweep(items: &[Item], mut pair: impl FnMut(usize, usize)) {
+/// documentation), and each item that no later pair involves
+/// ([`Event::Retire`]).
+fn box_sweep(items: &[Item], mut visit: impl FnMut(Event)) {
     // the y bounds, compressed to ranks: equal values, equal ranks
     let mut ys: Vec<f64> = items.iter().flat_map(|it| [it.bx[2], it.bx[3]]).collect();
     ys.sort_unstable_by(|a, b| cmp_f64(*a, *b));
@@ -274,6 +302,7 @@ fn box_sweep(items: &[Item], mut pair: impl FnMut(usize, usize)) {
             by_end.pop();
             alive[j as usize] = false;
             groups[group_of(j as usize)].remove(j, ranks[j as usize][0]);
+            visit(Event::Retire(j as usize));
         }
         let [lo, hi] = ranks[i];
         found.clear();
@@ -283,7 +312,7 @@ fn box_sweep(items: &[Item], mut pair: impl FnMut(usize, usize)) {
             groups[g].overlapping(lo, hi, &alive, &mut found);
         }
         for &j in &found {
-            pair(j as usize, i);
+            visit(Event::Pair(j as usize, i));
         }
         groups[group_of(i)].insert(i as u32, lo, hi);
         alive[i] = true;
@@ -517,7 +546,17 @@ mod tests {
                 })
                 .collect();
             let mut swept = Vec::new();
-            box_sweep(&items, |i, j| swept.push((i.min(j), i.max(j))));
+            let mut retired = vec![false; n];
+            box_sweep(&items, |event| match event {
+                Event::Pair(i, j) => {
+                    assert!(!retired[i] && !retired[j], "round {round}: a pair after retirement");
+                    swept.push((i.min(j), i.max(j)));
+                }
+                Event::Retire(i) => {
+                    assert!(!retired[i]);
+                    retired[i] = true;
+                }
+            });
             swept.sort_unstable();
             let mut expected = Vec::new();
             for i in 0..n {
@@ -598,7 +637,7 @@ mod tests {
             let scaled_segments: Vec<[Point; 2]> = segments.iter().map(|s| [s[0].scaled(tiny), s[1].scaled(tiny)]).collect();
             assert_eq!(first_arc_conflict(&scaled_points, &scaled_segments, &scaled_arcs), found, "round {round}: scaled");
             for arc in &arcs {
-                let bx = arc_box(arc, &ExactArc::new(arc));
+                let bx = arc_box(arc);
                 for i in 0..=64 {
                     let q = arc.point_at(i as f64 / 64.0);
                     let slack = 1e-9 * arc.radius();

@@ -37,6 +37,7 @@
 //!   here: the build splits the segment there. Contacts at the arc's
 //!   endpoints are never conflicts of the arc.
 
+use std::cell::OnceCell;
 use std::cmp::Ordering;
 use std::ops::{Add, Mul, Neg, Sub};
 
@@ -187,31 +188,42 @@ fn sign_with_root(u: &Dyadic, v: &Dyadic, d: &Dyadic) -> i32 {
 /// chord on which the open arc lies.
 #[derive(Clone, Debug)]
 pub(crate) struct ExactArc {
+    arc: CircularArc,
     s: Point,
     e: Point,
+    /// The sign of `orient(s, e, q)`: the side of the chord `s → e` the open
+    /// arc lies on (never 0; -1 for a counter-clockwise arc).
+    tau: i32,
+    /// The circle in `f64` with its error bound, for the filters and the
+    /// box; `None` where it is beyond `f64`'s range.
+    approx: Option<Approx>,
+    /// The exact circle, made when a test first needs it (the filters
+    /// settle most pairs without it).
+    circle: OnceCell<Circle>,
+}
+
+/// An arc's exact data: its points and its circle's equation
+/// `A|p|² + Bx + Cy + F = 0`, `A > 0`.
+#[derive(Clone, Debug)]
+struct Circle {
     sd: DPoint,
     /// `e − s`.
     d: DPoint,
     /// A point strictly inside the arc (its midpoint or its `via`).
     q: DPoint,
-    /// The sign of `orient(s, e, q)`: the side of the chord `s → e` the open
-    /// arc lies on (never 0; -1 for a counter-clockwise arc).
-    tau: i32,
     a: Dyadic,
     b: Dyadic,
     c: Dyadic,
     f: Dyadic,
-    /// The circle in `f64` with its error bound, for the filters and the
-    /// box; `None` where it is beyond `f64`'s range.
-    approx: Option<Approx>,
 }
 
 /// An arc's circle in `f64`: `centre = (s + e)/2 + k·perp(e − s)`,
-/// `radius = |e − s|·h` with `h = √(1/4 + k²)`, from the exact `k` rounded
-/// once. The true centre lies within `err` of `centre` in each coordinate
-/// and the true radius within `err` of `radius`: the rounding errors are a
-/// few units of `2^-53` of the magnitudes (and `2^-1074` where subnormal),
-/// `err` is `2^-40` of them (and `2^-1060`), a thousandfold margin.
+/// `radius = |e − s|·h` with `h = √(1/4 + k²)`, from `k` within `3·2^-53·h`
+/// ([`Approx::of`]). The true centre lies within `err` of `centre` in each
+/// coordinate and the true radius within `err` of `radius`: the rounding
+/// errors are a few units of `2^-53` of the magnitudes (and `2^-1074`
+/// where subnormal), `err` is `2^-40` of them (and `2^-1060`), a
+/// thousandfold margin.
 #[derive(Clone, Copy, Debug)]
 struct Approx {
     k: f64,
@@ -234,6 +246,32 @@ fn magnitude(p: Point) -> f64 {
 }
 
 impl Approx {
+    /// The circle of `arc` in `f64`, and the exact side `tau` of the chord
+    /// the open arc lies on (as in [`ExactArc`]). `k` is rounded once from
+    /// an exact value: for a bulge β, `(1 − β²)/4β` in `f64` is within
+    /// `3·2^-53·h` of it (`h = (1 + β²)/4|β|`), which moves the centre by at
+    /// most `3·2^-53` of the radius; for a third point `q`, with `Q = q − s`
+    /// and `E = e − s`, `k = Q·(E − Q) / 2 cross(Q, E)`, computed exactly
+    /// and rounded once (a few products: far cheaper than the circle's
+    /// equation).
+    fn of(arc: &CircularArc) -> (Option<Approx>, i32) {
+        let (s, e) = (arc.start(), arc.end());
+        let (k, tau) = match arc.datum() {
+            // for |β| > 1e150, 1/4β is below 2^-53 of β/4 (and β² would
+            // overflow); the side of the midpoint is −(β/2)|e − s|²
+            (Some(b), _) => (if b.abs() > 1e150 { -b / 4.0 } else { (1.0 - b * b) / (4.0 * b) }, if b > 0.0 { -1 } else { 1 }),
+            (_, Some(via)) => {
+                let (sd, ed, qd) = (DPoint::from_point(s), DPoint::from_point(e), DPoint::from_point(via));
+                let (q, e_rel) = (qd.sub(&sd), ed.sub(&sd));
+                let den = cross(&q, &e_rel).times_pow2(1);
+                let k = ratio_to_f64(&dot(&q, &e_rel.sub(&q)), &den);
+                (k, -den.sign())
+            }
+            (None, None) => (f64::NAN, 1),
+        };
+        (Approx::new(s, e, k), tau)
+    }
+
     fn new(s: Point, e: Point, k: f64) -> Option<Approx> {
         let (dx, dy) = (e.x - s.x, e.y - s.y);
         let len = dx.hypot(dy);
@@ -299,12 +337,9 @@ impl Approx {
     }
 }
 
-impl ExactArc {
-    /// The exact form of `arc` (any arc [`CircularArc`]'s constructors
-    /// accept).
-    pub(crate) fn new(arc: &CircularArc) -> ExactArc {
-        let (s, e) = (arc.start(), arc.end());
-        let (sd, ed) = (DPoint::from_point(s), DPoint::from_point(e));
+impl Circle {
+    fn new(arc: &CircularArc) -> Circle {
+        let (sd, ed) = (DPoint::from_point(arc.start()), DPoint::from_point(arc.end()));
         let d = ed.sub(&sd);
         let q = match arc.datum() {
             (_, Some(via)) => DPoint::from_point(via),
@@ -317,7 +352,7 @@ impl ExactArc {
                     y: &(&sd.y + &ed.y).times_pow2(-1) - &(&half_bulge * &d.x),
                 }
             }
-            (None, None) => unreachable!("an arc has a bulge or a third point"),
+            (None, None) => sd.clone(), // no arc: every arc has a datum
         };
         // The incircle determinant of (s, q, e, p) relative to s, expanded
         // along p's row: A|P|² + B_rel·P.x + C_rel·P.y with P = p − s.
@@ -337,34 +372,44 @@ impl ExactArc {
         let b = &b_rel - &(&two_a * &sd.x);
         let c = &c_rel - &(&two_a * &sd.y);
         let f = &(&(&a * &sd.norm2()) - &(&b_rel * &sd.x)) - &(&c_rel * &sd.y);
-        let tau = cross(&d, &q.sub(&sd)).sign();
-        // tau ≠ 0 and A > 0 for every arc the constructors accept (the third
-        // point is off the chord). A degenerate one (only `scaled` into
-        // underflow could make it) gets some answer, never a panic: nothing
-        // below divides, and its box is the whole plane.
-        // centre − s = −(B_rel, C_rel)/2A, and cross(d, centre − s) = k|d|²
-        let k_num = -&cross(&d, &DPoint { x: b_rel, y: c_rel });
-        let k = ratio_to_f64(&k_num, &(&a.times_pow2(1) * &d.norm2()));
-        let approx = Approx::new(s, e, k);
-        ExactArc { s, e, sd, d, q, tau, a, b, c, f, approx }
+        // A > 0 for every arc the constructors accept (the third point is
+        // off the chord). A degenerate one (only `scaled` into underflow
+        // could make it) gets some answer, never a panic: nothing divides.
+        Circle { sd, d, q, a, b, c, f }
+    }
+}
+
+impl ExactArc {
+    /// The exact form of `arc` (any arc [`CircularArc`]'s constructors
+    /// accept): cheap, the circle in big numbers comes when needed.
+    pub(crate) fn new(arc: &CircularArc) -> ExactArc {
+        let (approx, tau) = Approx::of(arc);
+        ExactArc { arc: *arc, s: arc.start(), e: arc.end(), tau, approx, circle: OnceCell::new() }
+    }
+
+    /// The exact circle.
+    fn circle(&self) -> &Circle {
+        self.circle.get_or_init(|| Circle::new(&self.arc))
     }
 
     /// `G(p)`: zero on the circle (its sign: outside positive).
     fn power(&self, p: &DPoint) -> Dyadic {
-        let quad = &self.a * &p.norm2();
-        let lin = &(&self.b * &p.x) + &(&self.c * &p.y);
-        &(&quad + &lin) + &self.f
+        let quad = &self.circle().a * &p.norm2();
+        let lin = &(&self.circle().b * &p.x) + &(&self.circle().c * &p.y);
+        &(&quad + &lin) + &self.circle().f
     }
 
     /// The sign of `orient(s, e, p)`.
     fn side(&self, p: &DPoint) -> i32 {
-        cross(&self.d, &p.sub(&self.sd)).sign()
+        cross(&self.circle().d, &p.sub(&self.circle().sd)).sign()
     }
 
     /// Whether the two arcs lie on one circle (proportional equations).
     fn same_circle(&self, other: &ExactArc) -> bool {
-        let prop = |x: &Dyadic, y: &Dyadic| (&(&other.a * x) - &(&self.a * y)).is_zero();
-        prop(&self.b, &other.b) && prop(&self.c, &other.c) && prop(&self.f, &other.f)
+        let prop = |x: &Dyadic, y: &Dyadic| (&(&other.circle().a * x) - &(&self.circle().a * y)).is_zero();
+        prop(&self.circle().b, &other.circle().b)
+            && prop(&self.circle().c, &other.circle().c)
+            && prop(&self.circle().f, &other.circle().f)
     }
 
     /// Whether the input point `p` lies on the open arc.
@@ -470,11 +515,11 @@ fn segment_arc_contact_by<const FAST: bool>(arc: &ExactArc, seg: [Point; 2]) -> 
     // α = A|w|² > 0, β = 2A(a·w) + B w.x + C w.y, γ = G(a).
     let (ad, bd) = (DPoint::from_point(a), DPoint::from_point(b));
     let w = bd.sub(&ad);
-    let alpha = &arc.a * &w.norm2();
-    let beta = &(&(&arc.a * &dot(&ad, &w)).times_pow2(1) + &(&arc.b * &w.x)) + &(&arc.c * &w.y);
+    let alpha = &arc.circle().a * &w.norm2();
+    let beta = &(&(&arc.circle().a * &dot(&ad, &w)).times_pow2(1) + &(&arc.circle().b * &w.x)) + &(&arc.circle().c * &w.y);
     let gamma = arc.power(&ad);
-    let kappa = cross(&arc.d, &w);
-    let sigma_a = cross(&arc.d, &ad.sub(&arc.sd));
+    let kappa = cross(&arc.circle().d, &w);
+    let sigma_a = cross(&arc.circle().d, &ad.sub(&arc.circle().sd));
     if FAST && gamma.is_zero() {
         // `a` on the circle (a common endpoint, most often): the roots are
         // 0 and t' = −β/α, rational. t' is inside the open segment when
@@ -553,7 +598,7 @@ fn arc_arc_contact_by<const FAST: bool>(first: &ExactArc, second: &ExactArc) -> 
             || second.on_circle_inside(&s1)
             || second.on_circle_inside(&e1);
         let same_ends = (first.s == second.s && first.e == second.e) || (first.s == second.e && first.e == second.s);
-        let same_side = same_ends && first.on_circle_inside(&second.q);
+        let same_side = same_ends && first.on_circle_inside(&second.circle().q);
         return (inside || same_side).then_some(ArcArcContact::Overlap);
     }
     if let Some(contact) = crossing_of_circles::<FAST>(first, second) {
@@ -575,9 +620,9 @@ fn arc_arc_contact_by<const FAST: bool>(first: &ExactArc, second: &ExactArc) -> 
 /// a tangency.
 fn crossing_of_circles<const FAST: bool>(first: &ExactArc, second: &ExactArc) -> Option<ArcArcContact> {
     // The radical line A₂G₁ − A₁G₂ = 0: Lx·x + Ly·y + L0 = 0.
-    let lx = &(&second.a * &first.b) - &(&first.a * &second.b);
-    let ly = &(&second.a * &first.c) - &(&first.a * &second.c);
-    let l0 = &(&second.a * &first.f) - &(&first.a * &second.f);
+    let lx = &(&second.circle().a * &first.circle().b) - &(&first.circle().a * &second.circle().b);
+    let ly = &(&second.circle().a * &first.circle().c) - &(&first.circle().a * &second.circle().c);
+    let l0 = &(&second.circle().a * &first.circle().f) - &(&first.circle().a * &second.circle().f);
     if lx.is_zero() && ly.is_zero() {
         return None; // concentric, distinct: disjoint
     }
@@ -593,19 +638,23 @@ fn crossing_of_circles<const FAST: bool>(first: &ExactArc, second: &ExactArc) ->
         // an endpoint of both). Its side for arc i, times A₁N > 0:
         // A₁N·cross(dᵢ, p − sᵢ) − β·cross(dᵢ, W).
         let pd = DPoint::from_point(p);
-        let beta = &(&(&first.a * &dot(&pd, &w)).times_pow2(1) + &(&first.b * &w.x)) + &(&first.c * &w.y);
+        let beta =
+            &(&(&first.circle().a * &dot(&pd, &w)).times_pow2(1) + &(&first.circle().b * &w.x)) + &(&first.circle().c * &w.y);
         if beta.is_zero() {
             return None;
         }
-        let an = &first.a * &(&lx.square() + &ly.square());
-        let side = |arc: &ExactArc| (&(&an * &cross(&arc.d, &pd.sub(&arc.sd))) - &(&beta * &cross(&arc.d, &w))).sign();
+        let an = &first.circle().a * &(&lx.square() + &ly.square());
+        let side = |arc: &ExactArc| {
+            (&(&an * &cross(&arc.circle().d, &pd.sub(&arc.circle().sd))) - &(&beta * &cross(&arc.circle().d, &w))).sign()
+        };
         return (side(first) == first.tau && side(second) == second.tau).then_some(ArcArcContact::Cross);
     }
     let n = &lx.square() + &ly.square();
     let p0 = DPoint { x: -&(&l0 * &lx), y: -&(&l0 * &ly) };
-    let alpha = &first.a;
-    let beta = &(&first.b * &w.x) + &(&first.c * &w.y);
-    let gamma = &(&(alpha * &l0.square()) - &(&l0 * &(&(&first.b * &lx) + &(&first.c * &ly)))) + &(&n * &first.f);
+    let alpha = &first.circle().a;
+    let beta = &(&first.circle().b * &w.x) + &(&first.circle().c * &w.y);
+    let gamma = &(&(alpha * &l0.square()) - &(&l0 * &(&(&first.circle().b * &lx) + &(&first.circle().c * &ly))))
+        + &(&n * &first.circle().f);
     let disc = &beta.square() - &(alpha * &gamma).times_pow2(2);
     if disc.sign() < 0 {
         return None;
@@ -613,8 +662,8 @@ fn crossing_of_circles<const FAST: bool>(first: &ExactArc, second: &ExactArc) ->
     // With t = (−β ± √Δ)/2α: 2α·N·σᵢ(p) = U + V(−β ± √Δ)... for arc i,
     // U = 2α(cross(dᵢ, P0) − N·cross(dᵢ, sᵢ)), V = cross(dᵢ, W).
     let side_terms = |arc: &ExactArc| {
-        let v = cross(&arc.d, &w);
-        let u = &(&(&cross(&arc.d, &p0) - &(&n * &cross(&arc.d, &arc.sd))) * alpha).times_pow2(1);
+        let v = cross(&arc.circle().d, &w);
+        let u = &(&(&cross(&arc.circle().d, &p0) - &(&n * &cross(&arc.circle().d, &arc.circle().sd))) * alpha).times_pow2(1);
         (u - &(&v * &beta), v)
     };
     let (u1, v1) = side_terms(first);
@@ -634,10 +683,11 @@ fn crossing_of_circles<const FAST: bool>(first: &ExactArc, second: &ExactArc) ->
 /// rightmost, lowest, highest) unless it is clearly outside the arc's span,
 /// each widened by far more than the rounding of the centre and radius.
 /// Infinite where the circle is beyond `f64`'s range.
-pub(crate) fn arc_box(arc: &CircularArc, exact: &ExactArc) -> [f64; 4] {
+pub(crate) fn arc_box(arc: &CircularArc) -> [f64; 4] {
     let (s, e) = (arc.start(), arc.end());
     let mut bx = [s.x.min(e.x), s.x.max(e.x), s.y.min(e.y), s.y.max(e.y)];
-    let Some(Approx { k, len, h, centre, radius: r, err }) = exact.approx else {
+    let (approx, tau) = Approx::of(arc);
+    let Some(Approx { k, len, h, centre, radius: r, err }) = approx else {
         return [f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY];
     };
     let (cx, cy) = (centre.x, centre.y);
@@ -648,7 +698,7 @@ pub(crate) fn arc_box(arc: &CircularArc, exact: &ExactArc) -> [f64; 4] {
     let in_span = |cross_du: f64| {
         let value = k + h * (cross_du / len);
         let tolerance = 1e-9 * (k.abs() + h);
-        value * exact.tau as f64 > -tolerance
+        value * tau as f64 > -tolerance
     };
     if in_span(-dy) {
         bx[1] = bx[1].max(cx + r + margin); // u = (1, 0)
@@ -770,7 +820,7 @@ mod tests {
                 for seg in [seg, [seg[1], seg[0]]] {
                     assert_eq!(segment_arc_contact(&exact, seg), expected, "{name}: {arc:?} and {seg:?}");
                 }
-                let bx = arc_box(&arc, &exact);
+                let bx = arc_box(&arc);
                 if expected.is_some() {
                     let meets = |q: Point| q.x >= bx[0] && q.x <= bx[1] && q.y >= bx[2] && q.y <= bx[3];
                     let sb = [seg[0].x.min(seg[1].x), seg[0].x.max(seg[1].x), seg[0].y.min(seg[1].y), seg[0].y.max(seg[1].y)];
@@ -804,7 +854,7 @@ mod tests {
                     assert_eq!(arc_arc_contact(&x, &y), expected, "{name}: {a:?} and {b:?}");
                     assert_eq!(arc_arc_contact(&y, &x), swapped(expected), "{name}: {b:?} and {a:?}");
                     if expected.is_some() {
-                        let (p, q) = (arc_box(&a, &x), arc_box(&b, &y));
+                        let (p, q) = (arc_box(&a), arc_box(&b));
                         assert!(p[0] <= q[1] && q[0] <= p[1] && p[2] <= q[3] && q[2] <= p[3], "{name}: boxes {p:?} {q:?}");
                     }
                 }
