@@ -37,10 +37,9 @@
 //! meets. Each pair is first put to `f64` filters with proven slack (a
 //! point clearly off the circle, a segment clearly missing it, disjoint
 //! circles) and to rational shortcuts for a common endpoint; exact
-//! big-number work remains for
-//! pieces that really meet. Measured in release (the ignored test
-//! `cost_of_the_check`, best of three on a 2-core machine shared with other
-//! builds): 100k half circles in a tangent-continuous chain, 0.17 s
+//! big-number work remains for pieces that really meet. Measured in
+//! release (the ignored test `cost_of_the_check`, best of three on a
+//! 2-core machine shared with other builds): 100k half circles in a tangent-continuous chain, 0.17 s
 //! (1.7 µs an arc); 100k shallow arcs in a chain beside 100k segments,
 //! 0.40 s; 100k random arcs given by three points with a point at each
 //! centre, 0.25 s.
