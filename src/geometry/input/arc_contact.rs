@@ -9,8 +9,14 @@
 //! the arithmetic below is on dyadic rationals with big-integer mantissas
 //! ([`Dyadic`]): sums, differences and products only, never rounded, so
 //! no sign is ever wrong and no finite input overflows. The rounded
-//! `centre()` and `radius()` of [`CircularArc`] decide nothing here; they
-//! only size the conservative bounding box ([`arc_box`]).
+//! `centre()` and `radius()` of [`CircularArc`] are not used. An `f64`
+//! circle of our own, with a proven bound on its error ([`Approx`]), sizes
+//! the conservative bounding box ([`arc_box`]) and serves as a filter that
+//! only ever claims the *absence* of a contact, and only when it is certain
+//! (a point clearly off the circle, a segment clearly missing it, disjoint
+//! circles); everything else is decided in big numbers. When two pieces
+//! share an endpoint, their other common point is rational and no square
+//! root is needed.
 //!
 //! The circle is `G(p) = A|p|² + B·x + C·y + F = 0` (`A > 0`), the
 //! incircle determinant of `s, q, e, p`. The chord line `s e` meets the
@@ -183,9 +189,9 @@ fn sign_with_root(u: &Dyadic, v: &Dyadic, d: &Dyadic) -> i32 {
     }
 }
 
-/// An arc prepared for the exact tests: its three dyadic points, its
-/// circle `A|p|² + Bx + Cy + F = 0` with `A > 0`, and the side of the
-/// chord on which the open arc lies.
+/// An arc prepared for the tests: the side of the chord on which the open
+/// arc lies, its `f64` circle for the filters, and (made on demand) its
+/// three dyadic points and exact circle `A|p|² + Bx + Cy + F = 0`, `A > 0`.
 #[derive(Clone, Debug)]
 pub(crate) struct ExactArc {
     arc: CircularArc,
