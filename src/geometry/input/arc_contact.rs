@@ -324,7 +324,8 @@ impl Approx {
         // rounded cross and dot products of rounded vectors: within a few
         // 2^-53 of |w|·|c − a|, and the centre's own error times |w|
         let size = magnitude(a) + magnitude(b) + magnitude(self.centre) + self.radius;
-        if !(lw * size > f64::MIN_POSITIVE * (1u64 << 60) as f64) {
+        let scale = lw * size;
+        if scale.is_nan() || scale <= f64::MIN_POSITIVE * (1u64 << 60) as f64 {
             // products near the subnormal range lose their relative
             // precision (and the slack underflows): no claim
             return false;
