@@ -631,3 +631,57 @@ fn a_major_arc_around_everything_is_refused_and_its_halves_build() {
     ];
     check_all_ways("major arc in halves", &pieces, 5e-6, 11);
 }
+
+/// Crossing, touching and overlapping inputs are refused, exactly and
+/// naming both, by `check` and `build` alike; a shared end, a tangent join
+/// and an arc's end inside a segment (which splits it) are not.
+#[test]
+fn the_input_check_names_both() {
+    let p = Point::new;
+    let half = |s: Point, e: Point| CircularArc::from_bulge(s, e, 1.0).unwrap();
+    let refused = |b: &Builder, message: &str| {
+        let e = b.check().unwrap_err();
+        assert_eq!(e.kind(), segvoronoi::ErrorKind::Intersecting, "{e}");
+        assert!(e.message().contains(message), "{e}");
+        assert_eq!(b.build().unwrap_err(), e);
+    };
+    // an arc and a segment across it
+    let mut b = Builder::new();
+    b.add_arc(half(p(1.0, 0.0), p(-1.0, 0.0))).unwrap();
+    b.add_segment([[0.0, 0.0], [0.0, 2.0]]).unwrap();
+    refused(&b, "arc 0 and segment 0 cross");
+    // a segment tangent to the arc at its top: touching inside
+    let mut b = Builder::new();
+    b.add_arc(half(p(1.0, 0.0), p(-1.0, 0.0))).unwrap();
+    b.add_segment([[-1.0, 1.0], [1.0, 1.0]]).unwrap();
+    refused(&b, "arc 0 and segment 0");
+    // two crossing arcs, and an arc overlapping another on one circle
+    let mut b = Builder::new();
+    b.add_arc(half(p(1.0, 0.0), p(-1.0, 0.0))).unwrap();
+    b.add_arc(half(p(2.5, 0.0), p(0.5, 0.0))).unwrap();
+    refused(&b, "arcs 0 and 1");
+    let mut b = Builder::new();
+    b.add_arc(half(p(1.0, 0.0), p(-1.0, 0.0))).unwrap();
+    b.add_arc(CircularArc::through(p(0.0, 1.0), p(-0.6, 0.8), p(-0.8, -0.6)).unwrap()).unwrap();
+    refused(&b, "arcs 0 and 1"); // an end of one inside the other, on one circle
+    // a point on the arc
+    let mut b = Builder::new();
+    b.add_arc(half(p(5.0, 0.0), p(-5.0, 0.0))).unwrap();
+    b.add_point([3.0, 4.0]).unwrap();
+    refused(&b, "point 0 lies on arc 0");
+    // fine: a tangent join, a full circle as two arcs, an arc's end inside
+    // a segment (the segment is split there)
+    let mut b = Builder::new();
+    b.add_segment([[-3.0, 1.0], [1.0, 1.0]]).unwrap();
+    b.add_arc(CircularArc::from_bulge([1.0, 1.0], [1.0, -1.0], -1.0).unwrap()).unwrap();
+    b.add_arc(half(p(8.0, 0.0), p(6.0, 0.0))).unwrap();
+    b.add_arc(half(p(6.0, 0.0), p(8.0, 0.0))).unwrap();
+    b.add_arc(half(p(-1.0, 1.0), p(-2.0, 1.0))).unwrap();
+    if let Err(e) = b.check() {
+        panic!("{e}");
+    }
+    let d = b.build().unwrap();
+    d.validate().unwrap();
+    assert!(audit(&d, 1e-7).is_empty());
+    assert_eq!(d.stats().split_at_vertices, 2, "the segment is cut at both ends of the last arc");
+}
