@@ -540,8 +540,7 @@ fn random_grids_of_arcs_points_and_segments() {
         // The library's vertices of an endpoint, its segment and an arc
         // stray from the segment's perpendicular by up to about 1e-9 of
         // the input's scale here (seeds 16, 20 and 24; the rest 1e-11 or
-        // far less): a coarse bound, and
-        // the figure on standard error.
+        // far less): a coarse bound, and the figure on standard error.
         let (_, worst) = check_separator_rays(&d, 1e-6);
         eprintln!("seed {seed}: separator rays miss their endpoints by {worst:.1e} of the scale at most");
         let faces = format!("FACES {}\n", d["vertices"].as_array().unwrap().len());
