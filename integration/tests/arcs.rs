@@ -475,6 +475,7 @@ fn tiny_arcs_and_far_from_the_origin() {
     let ulp = f64::EPSILON;
     let pieces = vec![
         Piece::Arc(CircularArc::from_bulge(p(1.0, 0.0), p(1.0, 4.0 * ulp), 0.5).unwrap()),
+        Piece::Arc(CircularArc::from_bulge(p(0.5, 0.0), p(0.5, ulp / 2.0), -0.5).unwrap()), // one ulp of 0.5
         Piece::Arc(CircularArc::from_bulge(p(0.0, 0.0), p(1e-9, 0.0), -0.7).unwrap()),
         Piece::Point(p(0.5, 0.5)),
         Piece::Segment(p(0.0, 1.0), p(1.0, 1.0)),
