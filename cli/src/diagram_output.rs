@@ -30,12 +30,12 @@
 //! quadratic Bézier curve that it is, from the position of `ends[0]` to
 //! that of `ends[1]`, its control point's weight 1 for a parabola (below 1
 //! for an ellipse, above for a hyperbola; absent for a conic piece that
-//! turns by half a turn or more). Numbers are `serde_json`'s shortest round-trip
-//! decimals.
+//! turns by half a turn or more). Numbers are `serde_json`'s shortest
+//! round-trip decimals.
 
 use std::fmt::Write;
 
-use segvoronoi::{Diagram, EdgeEnd, EdgeId, EdgeShape, Point, Site, SiteId};
+use segvoronoi::{Diagram, EdgeEnd, EdgeShape, Site, SiteId};
 use serde_json::{json, Value};
 
 use crate::medial_output::{number, point};
@@ -73,7 +73,7 @@ pub fn json(diagram: &Diagram, input_points: usize) -> String {
             "separator": diagram.is_separator(e.id).unwrap_or(false),
             "ends": ends,
         });
-        if let Some((points, weight)) = curve(diagram, e.id) {
+        if let Some((points, weight)) = diagram.edge_rational_bezier(e.id) {
             edge["bezier"] = json!({"points": points.map(point), "weight": number(weight)});
         }
         edge
@@ -86,14 +86,6 @@ pub fn json(diagram: &Diagram, input_points: usize) -> String {
     section(&mut out, "edges", edges);
     out.push_str("}\n");
     out
-}
-
-/// A finite curved edge as the rational quadratic Bézier curve it is:
-/// start, control, end and the control point's weight (1 for a parabola,
-/// below 1 for an ellipse, above for a hyperbola); `None` also for a conic
-/// piece that turns by half a turn or more, which has no such curve.
-fn curve(diagram: &Diagram, edge: EdgeId) -> Option<([Point; 3], f64)> {
-    diagram.edge_rational_bezier(edge)
 }
 
 /// `"title": [` and the items, one a line, then `]`: each item is
