@@ -235,15 +235,16 @@ impl CircularArc {
         })
     }
 
-    /// The arc moved by `(dx, dy)` (rounded: for computing near a local
-    /// origin, not for deciding).
-    pub(crate) fn translated(&self, dx: f64, dy: f64) -> CircularArc {
-        let t = |p: Point| Point::new(p.x + dx, p.y + dy);
+    /// The arc moved by `-origin` and then scaled by `unit`, its centre
+    /// and radius with it (rounded: for computing near a local origin, not
+    /// for deciding).
+    pub(crate) fn transformed(&self, origin: Point, unit: f64) -> CircularArc {
+        let t = |p: Point| Point::new((p.x - origin.x) * unit, (p.y - origin.y) * unit);
         let datum = match self.datum {
             Datum::Through(m) => Datum::Through(t(m)),
             bulge => bulge,
         };
-        CircularArc { start: t(self.start), end: t(self.end), datum, centre: t(self.centre), ..*self }
+        CircularArc { start: t(self.start), end: t(self.end), datum, centre: t(self.centre), radius: self.radius * unit, ..*self }
     }
 
     /// The exact datum, for the exact input check: `(Some(bulge), None)` or
