@@ -39,6 +39,15 @@ impl Construction {
         self.fresh_epoch();
         let found = self.find_segment_path(a, b);
         self.grow_segment_tree(a, b);
+        if std::env::var_os("SEGV_DEBUG").is_some() {
+            eprintln!("arc {a:?}->{b:?} found {found} sites {:?} {:?}", self.sites[a.index()], self.sites[b.index()]);
+            for v in 0..self.store.vertex_count() {
+                let v = VertexId::from_index(v);
+                let inf = self.store.is_at_infinity(v);
+                let depth = if inf { f64::NAN } else { self.segment_depth(v, a, b).depth() };
+                eprintln!("  v{} sites {:?} pos {:?} r {} depth {depth:e} conflict {} tree {}", v.index(), self.store.sites_of(v), self.store.position[v.index()], self.store.clearance[v.index()], self.segment_conflict(v, a, b), self.tree.contains(&v));
+            }
+        }
         self.replace_tree(e);
         self.inserting_arc = None;
         if found {
@@ -106,8 +115,13 @@ impl Construction {
                 }
             }
         };
+        // along a tangent join the arc reaches exactly as far out as the
+        // piece it continues, in the direction of their common separator:
+        // a tie, which is no conflict; rounding must not make it one
         let reach = arc.radius() * d.x.hypot(d.y);
-        reach > support(x).max(support(y))
+        let support = support(x).max(support(y));
+        let size = reach.abs() + support.abs() + (d.x * c.x).abs() + (d.y * c.y).abs();
+        reach - support > 1e-12 * size
     }
 
     /// The left-degree of site `g` seen from `v` against the new arc
