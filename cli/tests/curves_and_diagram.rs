@@ -306,7 +306,9 @@ fn arc_separator_rays_are_radii() {
     if !arcs_build() {
         return; // waits for the library's build of arcs (see the module doc)
     }
-    for (name, wkt) in [("slot-rays", SLOT), ("arc-rays", "CIRCULARSTRING (0 2, 1 3, 2 2.5)")] {
+    for (name, wkt) in
+        [("rounded-rays", ROUNDED_RECTANGLE), ("slot-rays", SLOT), ("arc-rays", "CIRCULARSTRING (0 2, 1 3, 2 2.5)")]
+    {
         let (d, _) = diagram_of(name, wkt, &[]);
         assert!(check_separator_rays(&d, 1e-9).0 > 0, "{name}");
     }
@@ -361,7 +363,6 @@ fn a_slot_end_to_end() {
 }
 
 #[test]
-#[ignore = "the core cannot build it now (Internal: a vertex of arc 0 misses its sites; it built at 8ce652e)"]
 fn a_rounded_rectangle_end_to_end() {
     if !arcs_build() {
         return; // waits for the library's build of arcs (see the module doc)
@@ -370,7 +371,6 @@ fn a_rounded_rectangle_end_to_end() {
 }
 
 #[test]
-#[ignore = "the core cannot build it now (Internal: a vertex of arc 0 misses its sites)"]
 fn a_segment_then_a_tangent_quarter_arc() {
     if !arcs_build() {
         return; // waits for the library's build of arcs (see the module doc)
