@@ -92,7 +92,7 @@ typedef struct {
 static size_t op_doubles(const op *o) { return o->kind == OP_SEGMENTS ? 4 * o->n : 2 * o->n; }
 
 /* ---- Outcome bookkeeping. ------------------------------------------------ */
-#define N_STATUS 12
+#define N_STATUS 13
 #define MAX_SIGS 16
 #define SIG_LEN 320
 typedef struct {

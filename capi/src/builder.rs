@@ -17,7 +17,7 @@ use segvoronoi::{Builder, MAX_POINTS};
 /// (nothing in it is tied to the thread that made it), but two calls on it
 /// must not overlap; calls on different builders may.
 pub struct segvoronoi_builder {
-    inner: Builder,
+    pub(crate) inner: Builder,
     last_error: CString,
     /// The input indices of the last error (`Error::indices`).
     last_error_indices: Vec<usize>,
@@ -26,7 +26,7 @@ pub struct segvoronoi_builder {
 impl segvoronoi_builder {
     /// Keeps the outcome of a call as this builder's last error and the
     /// thread's (`segvoronoi_last_error_message`).
-    fn record(&mut self, result: Result<(), Error>) -> segvoronoi_status {
+    pub(crate) fn record(&mut self, result: Result<(), Error>) -> segvoronoi_status {
         match result {
             Ok(()) => {
                 self.set_error(CString::default(), Vec::new());
@@ -42,8 +42,14 @@ impl segvoronoi_builder {
     /// A failure found at the boundary (a NULL buffer, a count too large to
     /// describe one): the builder's message too, so that it never keeps the
     /// message of an earlier call.
-    fn refuse(&mut self, status: segvoronoi_status, message: &str) -> segvoronoi_status {
-        self.set_error(CString::new(message).unwrap_or_default(), Vec::new());
+    pub(crate) fn refuse(&mut self, status: segvoronoi_status, message: &str) -> segvoronoi_status {
+        self.refuse_naming(status, message, Vec::new())
+    }
+
+    /// A failure found at the boundary that names input indices (kept for
+    /// `segvoronoi_builder_last_error_indices`).
+    pub(crate) fn refuse_naming(&mut self, status: segvoronoi_status, message: &str, indices: Vec<usize>) -> segvoronoi_status {
+        self.set_error(CString::new(message.replace('\0', " ")).unwrap_or_default(), indices);
         fail(status, message)
     }
 
