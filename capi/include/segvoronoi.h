@@ -98,7 +98,8 @@
 // segment site.
 #define SEGVORONOI_OFFSET_LINE 0
 
-// `segvoronoi_loop_piece.kind` of a circular arc around a point site.
+// `segvoronoi_loop_piece.kind` of a circular arc around a point site (or
+// concentric with a circular-arc site).
 #define SEGVORONOI_OFFSET_ARC 1
 
 // `segvoronoi_loop.parent` of an outermost loop.
@@ -1101,7 +1102,8 @@ enum segvoronoi_status segvoronoi_medial_axis_sample_chain(const struct segvoron
 // as `{x, y, clearance}` in `xyr[0..3]`.
 //
 // Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (chain or piece), `INVALID_ARGUMENT`
-// (`t` outside `[0, 1]`, or a piece that reaches infinity),
+// (`t` outside `[0, 1]`, or a piece that reaches infinity, or a conic
+// piece beside a circular arc where the library cannot evaluate one),
 // `UNSUPPORTED_RANGE` (a point that f64 cannot compute, only on inputs
 // beyond the exact range); then `xyr` is untouched.
 enum segvoronoi_status segvoronoi_medial_axis_piece_at(const struct segvoronoi_medial_axis *axis,
@@ -1166,7 +1168,9 @@ enum segvoronoi_status segvoronoi_diagram_cell_half_edges(const struct segvorono
 // Ownership: the caller frees `*out` with `segvoronoi_offset_free`.
 // Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (a distance that is NaN,
 // infinite or zero, or not positive without polygons, or one at which the
-// input's extent plus twice the distance exceeds `2^510`, about 3e153),
+// input's extent plus twice the distance exceeds `2^510`, about 3e153; or
+// an offset that runs along a circular-arc site, which this version does
+// not trace yet),
 // `UNSUPPORTED_RANGE` (loops that f64 cannot trace, only on inputs beyond
 // the exact range); then `*out` is untouched.
 enum segvoronoi_status segvoronoi_diagram_offset(const struct segvoronoi_diagram *diagram,

@@ -11,7 +11,7 @@ use super::out::{
 };
 use super::plumbing::{fail, guard, guard_or, out_of_range, require_non_null, segvoronoi_status, try_box};
 use super::SEGVORONOI_MAX_POLYLINE_POINTS;
-use segvoronoi::{Diagram, EdgeEnd, MedialAxis, MedialAxisFilter};
+use segvoronoi::{Diagram, EdgeEnd, EdgeShape, MedialAxis, MedialAxisFilter};
 
 /// A medial axis (`segvoronoi_diagram_medial_axis`). Opaque and immutable.
 /// Free it with `segvoronoi_medial_axis_free`.
@@ -291,7 +291,8 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_sample_chain(
 /// as `{x, y, clearance}` in `xyr[0..3]`.
 ///
 /// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (chain or piece), `INVALID_ARGUMENT`
-/// (`t` outside `[0, 1]`, or a piece that reaches infinity),
+/// (`t` outside `[0, 1]`, or a piece that reaches infinity, or a conic
+/// piece beside a circular arc where the library cannot evaluate one),
 /// `UNSUPPORTED_RANGE` (a point that f64 cannot compute, only on inputs
 /// beyond the exact range); then `xyr` is untouched.
 #[no_mangle]
@@ -310,6 +311,13 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_piece_at(
         None if p.ends.iter().any(|end| matches!(end, EdgeEnd::Infinite { .. })) => fail(
             segvoronoi_status::InvalidArgument,
             format!("piece {piece} of chain {chain} reaches infinity: it has no point at a parameter"),
+        ),
+        None if matches!(d.edge_shape(p.edge), Some(EdgeShape::Conic { .. })) => fail(
+            segvoronoi_status::InvalidArgument,
+            format!(
+                "piece {piece} of chain {chain} is a conic edge beside a circular arc, which this version cannot \
+                 evaluate at a parameter (segvoronoi_diagram_edge_polyline samples it)"
+            ),
         ),
         None => fail(
             segvoronoi_status::UnsupportedRange,
