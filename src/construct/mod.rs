@@ -50,7 +50,7 @@ use crate::diagram::Diagram;
 use crate::error::{Error, ErrorKind};
 use crate::geometry::input::segment_contact;
 use crate::geometry::scale::Scale;
-use crate::geometry::Point;
+use crate::geometry::{CircularArc, Point};
 pub(crate) use input_check::Conflict;
 use input_check::{check_segments, first_conflict, CheckedInput, Vertex};
 use insert_point::insert_points;
@@ -101,7 +101,7 @@ fn build_points(input: &[Point]) -> (Diagram, Outcome) {
     let scale = input_scale(input, &[]);
     let points = to_internal(input, scale);
     let (diagram, site_of_input, _, outcome) = insert_all(&points, &[]);
-    (renumber::renumber(diagram, &site_of_input, input, &[], scale), outcome)
+    (renumber::renumber(diagram, &site_of_input, input, &[], &[], scale), outcome)
 }
 
 /// What [`build_sites`] made.
@@ -124,6 +124,12 @@ enum Sites {
 /// first and second endpoint), insert the points and then the segments,
 /// renumber.
 fn build_sites(points: &[Point], segments: &[[Point; 2]], ring: &[bool]) -> Result<Sites, Error> {
+    build_sites_and_arcs(points, segments, ring, &[])
+}
+
+/// [`build_sites`] with circular arcs too, inserted after the segments:
+/// `points` ends with each arc's start and end (`with_arcs`).
+fn build_sites_and_arcs(points: &[Point], segments: &[[Point; 2]], ring: &[bool], arcs: &[CircularArc]) -> Result<Sites, Error> {
     // P<k> numbers the distinct points of this list by first appearance.
     let mut all: Vec<Point> = Vec::with_capacity(points.len() + 2 * segments.len());
     all.extend_from_slice(points);
@@ -151,16 +157,17 @@ fn build_sites(points: &[Point], segments: &[[Point; 2]], ring: &[bool]) -> Resu
     }
     let stage = stage.unwrap_or_else(|| insert_points(&scaled, segments.len()));
     if !checked.splits.is_empty() {
-        let (diagram, outcome) = build_split(stage, &checked, points, segments, &all, &scaled, scale);
+        let (diagram, outcome) = build_split(stage, &checked, points, segments, &all, &scaled, scale, arcs)?;
         return Ok(Sites::Built(Box::new(diagram), outcome));
     }
 
     let kept: Vec<usize> = checked.segments.iter().map(|&(j, _)| j).collect();
     let pairs: Vec<[usize; 2]> = kept.iter().map(|&j| endpoint_index(points.len(), j)).collect();
-    let (built, site_of_input, segment_sites, outcome) = insert_all_from(stage, &scaled, &pairs);
+    let (mut built, site_of_input, segment_sites, outcome) = insert_all_from(stage, &scaled, &pairs);
     let described: Vec<SegmentSite> =
         kept.iter().zip(segment_sites).map(|(&j, internal)| SegmentSite { input: j, internal, ends: segments[j] }).collect();
-    let mut diagram = renumber::renumber(built, &site_of_input, &all, &described, scale);
+    let arc_sites = with_arcs::insert_arcs(&mut built, &site_of_input, points.len() - 2 * arcs.len(), arcs, scale, &outcome)?;
+    let mut diagram = renumber::renumber(built, &site_of_input, &all, &described, &arc_sites, scale);
     renumber::number_segment_inputs(&mut diagram, &checked, points.len(), segments.len());
     Ok(Sites::Built(Box::new(diagram), outcome))
 }
@@ -174,6 +181,7 @@ fn build_sites(points: &[Point], segments: &[[Point; 2]], ring: &[bool]) -> Resu
 /// and so on (an input segment not split is one piece; a zero-length one a
 /// zero-length piece); `Diagram::pieces_of_input` and `inputs_of_piece`
 /// map between the two.
+#[allow(clippy::too_many_arguments)]
 fn build_split(
     stage: insert_point::PointStage,
     checked: &CheckedInput,
@@ -182,17 +190,19 @@ fn build_split(
     all: &[Point],
     scaled: &[Point],
     scale: Scale,
-) -> (Diagram, Outcome) {
+    arcs: &[CircularArc],
+) -> Result<(Diagram, Outcome), Error> {
     let pieces = Pieces::of(checked, points.len(), segments);
     let pairs: Vec<[usize; 2]> = pieces.kept.iter().map(|&p| pieces.ends[p]).collect();
-    let (built, site_of_input, segment_sites, outcome) = insert_all_from(stage, scaled, &pairs);
+    let (mut built, site_of_input, segment_sites, outcome) = insert_all_from(stage, scaled, &pairs);
+    let arc_sites = with_arcs::insert_arcs(&mut built, &site_of_input, points.len() - 2 * arcs.len(), arcs, scale, &outcome)?;
     let described: Vec<SegmentSite> = pieces
         .kept
         .iter()
         .zip(segment_sites)
         .map(|(&p, internal)| SegmentSite { input: p, internal, ends: pieces.ends[p].map(|k| all[k]) })
         .collect();
-    let mut diagram = renumber::renumber(built, &site_of_input, all, &described, scale);
+    let mut diagram = renumber::renumber(built, &site_of_input, all, &described, &arc_sites, scale);
     let first_segment_site = diagram.point_sites;
     diagram.segment_site = (0..pieces.ends.len())
         .map(|p| match pieces.kept_of[p] {
@@ -212,7 +222,7 @@ fn build_split(
     stats.duplicate_segments = checked.duplicate_segments;
     stats.zero_length_segments = checked.degenerate_segments;
     stats.split_at_vertices = checked.splits.len();
-    (diagram, outcome)
+    Ok((diagram, outcome))
 }
 
 /// The pieces of the input segments cut at the input vertices inside them.

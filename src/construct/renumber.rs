@@ -16,6 +16,14 @@ pub(super) struct SegmentSite {
     pub ends: [Point; 2],
 }
 
+/// An arc site for the renumbering: its input index, its internal id and
+/// the arc in input coordinates.
+pub(super) struct ArcSite {
+    pub input: usize,
+    pub internal: SiteId,
+    pub arc: crate::geometry::CircularArc,
+}
+
 /// Renumbers `built` to public ids: point sites by first appearance in
 /// `input` (whose `i`-th point became internal site `site_of_input[i]`),
 /// then `segments` in the order given. The diagram's per-input maps are
@@ -25,6 +33,7 @@ pub(super) fn renumber(
     site_of_input: &[SiteId],
     input: &[Point],
     segments: &[SegmentSite],
+    arcs: &[ArcSite],
     scale: Scale,
 ) -> Diagram {
     let Parts { mut store, sites: internal_sites, segment_ends: internal_ends } = built.into_parts();
@@ -51,9 +60,15 @@ pub(super) fn renumber(
         sites.push(Site::Segment { a: a.canonical_zero(), b: b.canonical_zero() });
         segment_input.push(seg.input as u32);
     }
-    let segment_ends: Vec<[SiteId; 2]> = segments
-        .iter()
-        .map(|seg| internal_ends[seg.internal.index() - first_internal_segment].map(|e| SiteId(public_of[e.index()])))
+    let mut arc_input = Vec::with_capacity(arcs.len());
+    for arc in arcs {
+        public_of[arc.internal.index()] = sites.len() as u32;
+        sites.push(Site::Arc(arc.arc));
+        arc_input.push(arc.input as u32);
+    }
+    let internals = segments.iter().map(|seg| seg.internal).chain(arcs.iter().map(|arc| arc.internal));
+    let segment_ends: Vec<[SiteId; 2]> = internals
+        .map(|internal| internal_ends[internal.index() - first_internal_segment].map(|e| SiteId(public_of[e.index()])))
         .collect();
     let infinite = SiteId(sites.len() as u32);
     public_of[INFINITE.index()] = infinite.0;
@@ -131,8 +146,8 @@ pub(super) fn renumber(
         segment_input,
         segment_ends,
         segment_site: Vec::new(),
-        arc_sites: 0,
-        arc_input: Vec::new(),
+        arc_sites: arcs.len(),
+        arc_input,
         arc_site: Vec::new(),
         finite_vertices,
         edges,

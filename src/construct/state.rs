@@ -18,7 +18,7 @@ use crate::diagram::Store;
 use crate::diagram::{HalfEdgeId, SiteId, VertexId, NONE};
 use crate::geometry::segments::vertex_placement;
 use crate::geometry::site::Site;
-use crate::geometry::Point;
+use crate::geometry::{CircularArc, Point};
 
 /// The id of the point at infinity inside the construction.
 pub(crate) const INFINITE: SiteId = SiteId(0);
@@ -50,8 +50,17 @@ pub(crate) struct Construction {
     pub(super) twice_cut: Vec<HalfEdgeId>,
     /// Site ids from here on are open segments (`u32::MAX`: none yet).
     first_segment: u32,
-    /// Per segment site (id minus `first_segment`): its two endpoint sites.
+    /// Per segment site (id minus `first_segment`): its two endpoint sites;
+    /// arcs' too, after the segments'.
     segment_ends: Vec<[SiteId; 2]>,
+    /// Site ids from here on are open arcs (`u32::MAX`: none yet); they go
+    /// in after every segment.
+    first_arc: u32,
+    /// Per arc site (id minus `first_arc`): its geometry.
+    arcs: Vec<CircularArc>,
+    /// The arc being inserted: the insertion's questions go to the arcs'
+    /// predicates (`insert_segment/arc_questions.rs`) while it is set.
+    pub(super) inserting_arc: Option<CircularArc>,
 }
 
 impl Construction {
@@ -73,6 +82,9 @@ impl Construction {
             twice_cut: Vec::new(),
             first_segment: u32::MAX,
             segment_ends: Vec::new(),
+            first_arc: u32::MAX,
+            arcs: Vec::new(),
+            inserting_arc: None,
         }
         .with_marks()
     }
@@ -85,6 +97,17 @@ impl Construction {
     /// The store and the site coordinates, scratch space dropped.
     pub(super) fn into_parts(self) -> Parts {
         Parts { store: self.store, sites: self.sites, segment_ends: self.segment_ends }
+    }
+
+    /// Adds the open arc between its endpoint sites `a` (its start) and
+    /// `b` (its end), after every segment.
+    pub(super) fn add_arc_site(&mut self, a: SiteId, b: SiteId, arc: CircularArc) -> SiteId {
+        let s = self.add_segment_site(a, b);
+        if self.first_arc == u32::MAX {
+            self.first_arc = s.0;
+        }
+        self.arcs.push(arc);
+        s
     }
 
     /// Adds a point site (before any segment: see the module doc).
@@ -168,6 +191,9 @@ impl Construction {
 
     /// The geometry of a real site (not the point at infinity).
     pub(super) fn site_geometry(&self, s: SiteId) -> Site {
+        if s.0 >= self.first_arc {
+            return Site::Arc(self.arcs[(s.0 - self.first_arc) as usize]);
+        }
         match self.ends_of(s) {
             Some([a, b]) => Site::Segment { a: self.sites[a.index()], b: self.sites[b.index()] },
             None => Site::Point(self.sites[s.index()]),

@@ -1,16 +1,95 @@
-//! Diagrams with circular arcs among the sites.
+//! Diagrams with circular arcs among the sites: the points, segments and
+//! arcs' endpoints are built as before (`build_sites`, which splits
+//! segments at arc endpoints inside them like at any input vertex), then
+//! each arc goes in (`insert_segment::arc_questions`), then the diagram is
+//! renumbered with the arcs as the last sites.
+//!
+//! Not yet with arcs (each refused with a clear error rather than built
+//! wrong): splitting crossings, and polygons (the domain and what stands
+//! on it: location, medial axis, offsets).
 
-use crate::diagram::Diagram;
+use super::renumber::ArcSite;
+use super::restart::Outcome;
+use super::state::Construction;
+use super::Sites;
+use crate::diagram::{Diagram, SiteId};
 use crate::error::{Error, ErrorKind};
+use crate::geometry::scale::Scale;
 use crate::geometry::{CircularArc, Point};
 
-/// The diagram of points, segments and arcs.
+/// The diagram of points, segments and arcs (`Builder::build` with arcs).
 pub(super) fn diagram_with_arcs(
-    _points: &[Point],
-    _segments: &[[Point; 2]],
-    _arcs: &[CircularArc],
-    _split: bool,
-    _rings: bool,
+    points: &[Point],
+    segments: &[[Point; 2]],
+    arcs: &[CircularArc],
+    split: bool,
+    rings: bool,
 ) -> Result<Diagram, Error> {
-    Err(Error::new(ErrorKind::Internal, "arcs: under construction".to_string(), Vec::new()))
+    if split {
+        return Err(Error::new(
+            ErrorKind::InvalidArgument,
+            "splitting crossings is not supported with arcs yet: arcs must not cross".to_string(),
+            Vec::new(),
+        ));
+    }
+    if rings {
+        return Err(Error::new(
+            ErrorKind::InvalidArgument,
+            "polygons together with arcs are not supported yet: add the outline with add_bulged_polyline (an obstacle, no domain)"
+                .to_string(),
+            Vec::new(),
+        ));
+    }
+    let mut all = Vec::with_capacity(points.len() + 2 * arcs.len());
+    all.extend_from_slice(points);
+    for arc in arcs {
+        all.push(arc.start());
+        all.push(arc.end());
+    }
+    let (mut diagram, outcome) = match super::build_sites_and_arcs(&all, segments, &[], arcs)? {
+        Sites::Built(diagram, outcome) => (*diagram, outcome),
+        Sites::Shared(..) => unreachable!("stretches are shared only by polygon rings"),
+    };
+    // the arcs' endpoints were input points of the construction only
+    diagram.input_site.truncate(points.len());
+    diagram.stats.input_points = points.len();
+    diagram.stats.input_arcs = arcs.len();
+    let first_arc = diagram.sites.len() - diagram.arc_sites;
+    diagram.arc_site = (0..diagram.arc_sites).map(|k| SiteId::from_index(first_arc + k)).collect();
+    let diagram = super::accept(diagram, outcome, &all, segments)?;
+    Ok(diagram)
+}
+
+/// Inserts the arcs into the construction of the points and segments;
+/// arc `k`'s start and end are the construction's points
+/// `first_end + 2k` and `first_end + 2k + 1`. Returns the arcs' sites for
+/// the renumbering, or the error for an arc that found no path.
+pub(super) fn insert_arcs(
+    built: &mut Construction,
+    site_of_input: &[SiteId],
+    first_end: usize,
+    arcs: &[CircularArc],
+    scale: Scale,
+    outcome: &Outcome,
+) -> Result<Vec<ArcSite>, Error> {
+    if arcs.is_empty() || outcome.stuck.is_some() {
+        return Ok(Vec::new());
+    }
+    let mut sites = Vec::with_capacity(arcs.len());
+    for (k, arc) in arcs.iter().enumerate() {
+        let (a, b) = (site_of_input[first_end + 2 * k], site_of_input[first_end + 2 * k + 1]);
+        let internal = built.insert_arc(a, b, arc.scaled(scale.to_internal)).map_err(|_| {
+            let (s, e) = (arc.start(), arc.end());
+            Error::new(
+                ErrorKind::Internal,
+                format!(
+                    "construction could not complete: arc {k} ({}, {}) - ({}, {}) found no path; please report this input",
+                    s.x, s.y, e.x, e.y
+                ),
+                vec![k],
+            )
+        })?;
+        sites.push(ArcSite { input: k, internal, arc: *arc });
+    }
+    Ok(sites)
 }

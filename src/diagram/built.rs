@@ -15,6 +15,8 @@ pub struct BuildStats {
     pub input_points: usize,
     /// Segments given to the builder.
     pub input_segments: usize,
+    /// Circular arcs given to the builder.
+    pub input_arcs: usize,
     /// Distinct sites in the diagram: points (isolated ones and segment
     /// endpoints) and open segments.
     pub sites: usize,

@@ -235,6 +235,17 @@ impl CircularArc {
         })
     }
 
+    /// The arc moved by `(dx, dy)` (rounded: for computing near a local
+    /// origin, not for deciding).
+    pub(crate) fn translated(&self, dx: f64, dy: f64) -> CircularArc {
+        let t = |p: Point| Point::new(p.x + dx, p.y + dy);
+        let datum = match self.datum {
+            Datum::Through(m) => Datum::Through(t(m)),
+            bulge => bulge,
+        };
+        CircularArc { start: t(self.start), end: t(self.end), datum, centre: t(self.centre), ..*self }
+    }
+
     /// The exact datum, for the exact input check: `(Some(bulge), None)` or
     /// `(None, Some(via))`.
     pub(crate) fn datum(&self) -> (Option<f64>, Option<Point>) {

@@ -24,6 +24,7 @@
 //!   oracle that answers it, and where each new vertex goes.
 
 pub mod arc;
+pub(crate) mod arcs;
 mod arithmetic;
 pub(crate) mod curves;
 pub(crate) mod fault;

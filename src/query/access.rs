@@ -357,12 +357,16 @@ impl Diagram {
     /// (the separator, on the perpendicular there), and the two endpoints'
     /// cells share none: they lie beyond the two perpendiculars, on either
     /// side of the segment's strip, and can never touch (no circle through
-    /// both endpoints misses the open segment between them).
+    /// both endpoints misses the open segment between them). An arc's
+    /// endpoints may be neighbours: their bisector runs through the arc's
+    /// centre, and beyond it (on the side away from the arc's middle) stays
+    /// theirs.
     fn validate_separators(&self) -> Result<(), ValidationError> {
+        let first_arc = self.segment_ends.len() - self.arc_sites;
         for k in 0..self.segment_ends.len() {
             let s = SiteId::from_index(self.point_sites + k);
             let [a, b] = self.segment_ends[k];
-            if self.store.cell_boundary(a).any(|h| self.store.right(h) == b) {
+            if k < first_arc && self.store.cell_boundary(a).any(|h| self.store.right(h) == b) {
                 return Err(ValidationError(format!("the endpoints {a} and {b} of segment site {s} are neighbours")));
             }
             for end in self.segment_ends[k] {

@@ -25,6 +25,7 @@
 //! points are the vertex positions themselves, so that drawings join up.
 
 use crate::diagram::{Diagram, EdgeId, SiteId};
+use crate::geometry::arcs::bisector::bisector_point;
 use crate::geometry::curves::edge_curve::EdgeCurve;
 use crate::geometry::curves::parabola::{focus_and_directrix, Parabola};
 use crate::geometry::predicates::Orientation;
@@ -118,8 +119,10 @@ impl Diagram {
     /// The shape of the edge between two sites (in either order).
     pub(crate) fn shape_between(&self, sites: [SiteId; 2]) -> EdgeShape {
         // two points or two segments (told apart by id): straight, without
-        // a look at either
-        if (sites[0].index() < self.point_sites) == (sites[1].index() < self.point_sites) {
+        // a look at either; an arc (the last ids) makes a conic
+        let first_arc = self.sites.len() - self.arc_sites;
+        let any_arc = sites.iter().any(|s| s.index() >= first_arc && s.index() < self.sites.len());
+        if !any_arc && (sites[0].index() < self.point_sites) == (sites[1].index() < self.point_sites) {
             return EdgeShape::Line;
         }
         let [first, second] = sites.map(|s| self.sites[s.index()]);
@@ -197,6 +200,10 @@ impl Diagram {
         tolerance: f64,
         mut emit: impl FnMut(Point),
     ) {
+        if let EdgeShape::Conic { sites } = shape {
+            conic_polyline(&sites, start, end, tolerance, &mut emit);
+            return;
+        }
         let Some((parabola, s0, s1)) = self.arc_of_shape(shape, start, end) else {
             emit(start);
             emit(end);
@@ -254,6 +261,32 @@ impl Diagram {
         control.is_finite().then_some([start, control, end])
     }
 
+    /// The rational quadratic Bézier curve `([start, control, end], w)`
+    /// that is a finite curved edge: `start` and `end` are the positions of
+    /// `ends[0]` and `ends[1]`, `control` is where the edge's tangents at
+    /// them meet, and `w` the weight of `control` (the ends' weights are
+    /// 1), so that
+    /// `((1-u)² start + 2u(1-u) w control + u² end) / ((1-u)² + 2u(1-u) w + u²)`
+    /// runs along the edge: a parabola has `w = 1`, an ellipse `w < 1`, a
+    /// hyperbola `w > 1`. Conics are exactly rational quadratics, so this is
+    /// the edge itself, to the rounding of its four numbers; the weight of
+    /// a conic edge is fitted through the edge's point halfway between its
+    /// ends.
+    ///
+    /// `None` when the id is out of range, for a straight edge, for rays
+    /// and lines, and for an edge whose tangents at its ends do not meet
+    /// ahead of both (a piece that turns by half a turn or more: cut it
+    /// with [`Diagram::edge_polyline`] instead).
+    pub fn edge_rational_bezier(&self, id: EdgeId) -> Option<([Point; 3], f64)> {
+        let edge = self.edge(id)?;
+        let (start, end) = self.finite_ends(&edge)?;
+        match self.shape_of(&edge) {
+            EdgeShape::Conic { sites } => conic_bezier(&sites, start, end),
+            EdgeShape::Parabola { .. } => self.edge_bezier(id).map(|b| (b, 1.0)),
+            _ => None,
+        }
+    }
+
     /// The positions of both ends of a finite edge.
     fn finite_ends(&self, e: &crate::query::Edge) -> Option<(Point, Point)> {
         match e.ends {
@@ -295,4 +328,69 @@ impl Diagram {
         let [first, second] = edge.sites.map(|s| self.sites[s.index()].scaled(f));
         EdgeCurve::between(&first, &second, start.scaled(f), end.scaled(f))
     }
+}
+
+/// The polyline of a conic edge between `sites` from `start` to `end`
+/// (input coordinates): each chord halved, its middle put on the edge
+/// (`bisector_point`), until the edge's middle lies within `tolerance` of
+/// the chord, at most `MAX_POLYLINE_POINTS` points.
+fn conic_polyline(sites: &[Site; 2], start: Point, end: Point, tolerance: f64, emit: &mut impl FnMut(Point)) {
+    let [left, right] = sites;
+    let mut points = 2usize;
+    emit(start);
+    // a stack of chords still to draw, the nearest last
+    let mut stack = vec![(start, end, 0u32)];
+    while let Some((p, q, depth)) = stack.pop() {
+        let m = bisector_point(left, right, p, q, 0.5);
+        let chord_middle = Point::new(0.5 * (p.x + q.x), 0.5 * (p.y + q.y));
+        let off = m.distance(chord_middle);
+        if depth < 40 && points < MAX_POLYLINE_POINTS && off > tolerance && m.is_finite() {
+            points += 1;
+            stack.push((m, q, depth + 1));
+            stack.push((p, m, depth + 1));
+        } else {
+            emit(q);
+        }
+    }
+}
+
+/// The rational quadratic Bézier of a conic edge (see
+/// `Diagram::edge_rational_bezier`).
+fn conic_bezier(sites: &[Site; 2], start: Point, end: Point) -> Option<([Point; 3], f64)> {
+    let [left, right] = sites;
+    // the edge's tangent at `x`: across the difference of the two sites'
+    // unit directions toward `x`
+    let tangent = |x: Point| {
+        let unit = |s: &Site| {
+            let q = s.nearest_point(x);
+            let (dx, dy) = (x.x - q.x, x.y - q.y);
+            let n = dx.hypot(dy);
+            (dx / n, dy / n)
+        };
+        let ((ax, ay), (bx, by)) = (unit(left), unit(right));
+        Point::new(-(ay - by), ax - bx)
+    };
+    let (t0, t2) = (tangent(start), tangent(end));
+    // where start + s t0 = end + u t2
+    let cross = t0.x * t2.y - t0.y * t2.x;
+    if !(cross.abs() > 1e-12 * t0.x.hypot(t0.y) * t2.x.hypot(t2.y)) {
+        return None;
+    }
+    let (dx, dy) = (end.x - start.x, end.y - start.y);
+    let s = (dx * t2.y - dy * t2.x) / cross;
+    let control = Point::new(start.x + s * t0.x, start.y + s * t0.y);
+    // ahead of `start` along the edge and behind `end`: the control point
+    // is on the chord's side where the edge's middle is
+    let middle = bisector_point(left, right, start, end, 0.5);
+    let side = |p: Point| (end.x - start.x) * (p.y - start.y) - (end.y - start.y) * (p.x - start.x);
+    if !(side(middle) * side(control) > 0.0) || !control.is_finite() {
+        return None;
+    }
+    // the weight from the middle's barycentric coordinates in the control
+    // triangle: w² = τ1² / (4 τ0 τ2)
+    let area = |a: Point, b: Point, c: Point| (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    let whole = area(start, control, end);
+    let (tau0, tau1, tau2) = (area(middle, control, end) / whole, area(start, middle, end) / whole, area(start, control, middle) / whole);
+    let w = tau1 / (2.0 * (tau0 * tau2).sqrt());
+    (w.is_finite() && w > 0.0).then_some(([start, control, end], w))
 }

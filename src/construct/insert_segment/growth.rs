@@ -66,6 +66,9 @@ impl Construction {
         if self.store.is_at_infinity(u) {
             return true;
         }
+        if let Some(arc) = self.inserting_arc {
+            return crate::geometry::arcs::arc_predicates::in_cone(&arc, self.store.position[u.index()]);
+        }
         let sites = self.store.sites_of(u);
         (sites.contains(&a) && sites.contains(&b))
             || in_strip(self.store.position[u.index()], self.store.clearance[u.index()], (pa, pb), || {
@@ -197,6 +200,9 @@ impl Construction {
         };
         let [left, right] = sides.map(|s| self.site_geometry(s));
         let (from, to) = (self.store.position[h.origin().index()], self.store.position[self.store.target(h).index()]);
+        if let Some(arc) = self.inserting_arc {
+            return crate::geometry::arcs::arc_predicates::arc_middle_margin(FiniteEdge { left, right, from, to }, contact, &arc);
+        }
         segment_predicates::middle_margin(FiniteEdge { left, right, from, to }, contact, self.segment_between(a, b))
     }
 }

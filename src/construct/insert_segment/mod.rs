@@ -43,6 +43,7 @@
 //! path of P4 is in `path.rs`, the growth of P3/P5 and the edges cut twice
 //! in `growth.rs`; both end in `deletion_tree.rs`'s `replace_tree`.
 
+mod arc_questions;
 mod growth;
 mod path;
 #[cfg(test)]
@@ -136,6 +137,9 @@ impl Construction {
     /// `ab` reaches (`segment_predicates::segment_depth`), from which of
     /// `a` and `b` are among its sites.
     fn segment_depth(&self, v: VertexId, a: SiteId, b: SiteId) -> SegmentDepth {
+        if let Some(arc) = self.inserting_arc {
+            return self.arc_depth(v, a, b, &arc);
+        }
         let sites = self.store.sites_of(v);
         let contact = match (sites.contains(&a), sites.contains(&b)) {
             (true, true) => Contact::BothEnds,
@@ -170,6 +174,7 @@ impl Construction {
     /// vertices at infinity).
     fn segment_conflict(&self, v: VertexId, a: SiteId, b: SiteId) -> bool {
         match infinite_rotation(self.store.sites_of(v)) {
+            Some((x, y)) if self.inserting_arc.is_some() => self.arc_conflict_at_infinity(v, (x, y), a, b),
             Some((x, y)) => (x == a && y == b) || (x == b && y == a),
             None => self.segment_depth(v, a, b).position() == CirclePosition::Inside,
         }
@@ -181,6 +186,9 @@ impl Construction {
     /// any other site from `v`'s position, or as a whole from a vertex at
     /// infinity.
     fn left_degree(&self, v: VertexId, g: SiteId, (a, b): (SiteId, SiteId), segment: (Point, Point)) -> LeftDegree {
+        if let Some(arc) = self.inserting_arc {
+            return self.arc_left_degree(v, g, (a, b), &arc);
+        }
         let seen = if g == INFINITE {
             SiteSeen::Infinity
         } else if let Some(o) = self.far_end(g, a).or_else(|| self.far_end(g, b)) {

@@ -121,7 +121,10 @@ impl Construction {
         let mut vertices: Vec<VertexId> = entered_by.iter().map(|h| h.origin()).collect();
         vertices.push(self.store.target(*entered_by.last()?));
         let distinct = vertices.iter().collect::<HashSet<_>>().len() == vertices.len();
-        let usable = distinct && vertices.iter().all(|&v| self.walkable(v, a, b));
+        // (an arc's endpoints' bisector runs through its centre, beyond
+        // which it stays theirs: only where all of it conflicts)
+        let arc_conflicts = self.inserting_arc.is_none() || vertices.iter().all(|&v| self.segment_conflict(v, a, b));
+        let usable = distinct && arc_conflicts && vertices.iter().all(|&v| self.walkable(v, a, b));
         usable.then_some(Path { vertices, entered_by })
     }
 

@@ -34,6 +34,12 @@ use crate::geometry::solvers::segment_solvers;
 pub(crate) struct SegmentDepth(f64);
 
 impl SegmentDepth {
+    /// A depth computed elsewhere (the arcs' predicates), NaN as outside.
+    #[inline]
+    pub(crate) fn of(depth: f64) -> SegmentDepth {
+        SegmentDepth(if depth.is_nan() { f64::INFINITY } else { depth })
+    }
+
     /// Whether the segment enters the open disk (`Inside`: the vertex is in
     /// conflict with it), touches the circle, or stays outside.
     #[inline]
@@ -243,6 +249,12 @@ pub(crate) enum SiteSeen {
 pub(crate) struct LeftDegree(f64);
 
 impl LeftDegree {
+    /// A degree computed elsewhere (the arcs' predicates).
+    #[inline]
+    pub(crate) fn of(degree: f64) -> LeftDegree {
+        LeftDegree(degree)
+    }
+
     /// The side of `a → b` the site lies on: `CounterClockwise` (left) when
     /// the degree is positive, `Clockwise` when negative, `Collinear`
     /// otherwise (zero, or NaN).
@@ -393,6 +405,12 @@ pub(crate) enum EdgeMiddle {
 }
 
 impl MiddleMargin {
+    /// A margin computed elsewhere (the arcs' predicates).
+    #[inline]
+    pub(crate) fn of(margin: f64) -> MiddleMargin {
+        MiddleMargin(margin)
+    }
+
     /// `Stays` when the margin is positive.
     #[inline]
     pub fn middle(self) -> EdgeMiddle {

@@ -26,6 +26,10 @@ pub(crate) fn circle_of_points(a: Point, b: Point, c: Point) -> (Point, f64) {
 /// segments.
 #[inline]
 pub(crate) fn circle_of_sites(sites: &[Site; 3]) -> (Point, f64) {
+    if sites.iter().any(|s| matches!(s, Site::Arc(_))) {
+        // arcs: their own solver, in floating point (`arcs::arc_vertex`)
+        return crate::geometry::arcs::arc_vertex::arc_vertex(sites).unwrap_or_else(|| among_sites(sites));
+    }
     // No circle in `f64`: one beyond its range, or (only when the
     // predicates were made to lie) none; then keep the topology, place the
     // vertex among its sites.

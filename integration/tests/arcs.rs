@@ -1,0 +1,277 @@
+//! Diagrams with circular arcs, checked by brute force (there is no CGAL
+//! for arcs): every vertex is equidistant from its three sites with no
+//! site nearer (an empty circle), and points along every finite edge are
+//! equidistant from its two sites with no site nearer. On families nobody
+//! tuned for: random arcs, segments and points in the cells of a grid;
+//! rounded rectangles, slots, concentric arcs and tangent chains; each
+//! also reversed, shuffled, mirrored and scaled by powers of two.
+
+use segvoronoi::splitmix::SplitMix64;
+use segvoronoi::{Builder, CircularArc, Diagram, Point, Site};
+
+/// One input piece.
+#[derive(Clone, Copy, Debug)]
+enum Piece {
+    Point(Point),
+    Segment(Point, Point),
+    Arc(CircularArc),
+}
+
+/// The distance from `p` to a site, computed here apart from the library.
+fn distance(site: &Site, p: Point) -> f64 {
+    match *site {
+        Site::Point(q) => q.distance(p),
+        Site::Segment { a, b } => {
+            let (ux, uy) = (b.x - a.x, b.y - a.y);
+            let t = (((p.x - a.x) * ux + (p.y - a.y) * uy) / (ux * ux + uy * uy)).clamp(0.0, 1.0);
+            Point::new(a.x + t * ux, a.y + t * uy).distance(p)
+        }
+        Site::Arc(arc) => {
+            // by angles, not by the library's span test
+            let c = arc.centre();
+            let angle = |q: Point| (q.y - c.y).atan2(q.x - c.x);
+            let sweep = arc.sweep();
+            let mut along = angle(p) - angle(arc.start());
+            let full = 2.0 * std::f64::consts::PI;
+            if sweep > 0.0 {
+                along = along.rem_euclid(full);
+            } else {
+                along = -(-along).rem_euclid(full);
+            }
+            let inside = along.abs() <= sweep.abs();
+            let ends = arc.start().distance(p).min(arc.end().distance(p));
+            if inside {
+                (c.distance(p) - arc.radius()).abs().min(ends)
+            } else {
+                ends
+            }
+        }
+        _ => unreachable!("no other site kinds"),
+    }
+}
+
+/// The failures of the brute-force audit at tolerance `tol` (absolute).
+fn audit(d: &Diagram, tol: f64) -> Vec<String> {
+    let sites: Vec<Site> = d.site_ids().map(|s| d.site(s).unwrap()).collect();
+    let mut failures = Vec::new();
+    let nearest = |p: Point| sites.iter().map(|s| distance(s, p)).fold(f64::INFINITY, f64::min);
+    for v in d.vertices() {
+        let r = v.clearance;
+        for s in v.sites {
+            let ds = distance(&sites[s.index()], v.position);
+            if !((ds - r).abs() <= tol + 1e-12 * r) {
+                failures.push(format!("vertex {:?} at {:?} r {r}: its site {:?} at {ds}", v.id, v.position, sites[s.index()]));
+            }
+        }
+        let tol = tol + 1e-12 * r; // far vertices: relative to their distance
+        let (k, n) = sites.iter().enumerate().map(|(k, s)| (k, distance(s, v.position))).fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+        if n < r - tol {
+            failures.push(format!(
+                "vertex {:?} at {:?} r {r} of {:?}: site {k} {:?} nearer at {n}",
+                v.id,
+                v.position,
+                v.sites.map(|s| sites[s.index()]),
+                sites[k]
+            ));
+        }
+    }
+    for e in d.edges() {
+        let Some(poly) = d.edge_polyline(e.id, tol * 10.0) else { continue };
+        let [a, b] = e.sites.map(|s| sites[s.index()]);
+        for &q in &poly[1..poly.len() - 1] {
+            let (da, db) = (distance(&a, q), distance(&b, q));
+            if !((da - db).abs() <= 10.0 * tol) || nearest(q) < da.min(db) - 10.0 * tol {
+                failures.push(format!("edge {:?} between {a:?} and {b:?}: point {q:?} at {da} / {db}, nearest {}", e.id, nearest(q)));
+                break;
+            }
+        }
+    }
+    failures
+}
+
+fn build(pieces: &[Piece]) -> Diagram {
+    let mut b = Builder::new();
+    for piece in pieces {
+        match *piece {
+            Piece::Point(p) => drop(b.add_point(p).unwrap()),
+            Piece::Segment(p, q) => drop(b.add_segment([p, q]).unwrap()),
+            Piece::Arc(arc) => drop(b.add_arc(arc).unwrap()),
+        }
+    }
+    match b.build() {
+        Ok(d) => d,
+        Err(e) => panic!("{e}: {pieces:?}"),
+    }
+}
+
+/// Builds `pieces` and its variants (reversed arcs and segments, shuffled,
+/// mirrored, scaled by 2^-20 and 2^20) and audits each; returns the number
+/// of finite vertices of the plain build.
+fn check_all_ways(name: &str, pieces: &[Piece], size: f64, seed: u64) -> usize {
+    let tol = 1e-8 * size;
+    let reversed: Vec<Piece> = pieces
+        .iter()
+        .map(|&p| match p {
+            Piece::Segment(a, b) => Piece::Segment(b, a),
+            Piece::Arc(arc) => Piece::Arc(arc.reversed()),
+            other => other,
+        })
+        .collect();
+    let mut shuffled = pieces.to_vec();
+    let mut rng = SplitMix64(seed);
+    for i in (1..shuffled.len()).rev() {
+        shuffled.swap(i, (rng.next_u64() % (i as u64 + 1)) as usize);
+    }
+    let map = |f: &dyn Fn(Point) -> Point, flip: bool| -> Vec<Piece> {
+        pieces
+            .iter()
+            .map(|&p| match p {
+                Piece::Point(q) => Piece::Point(f(q)),
+                Piece::Segment(a, b) => Piece::Segment(f(a), f(b)),
+                Piece::Arc(arc) => {
+                    let bulge = if flip { -arc.bulge() } else { arc.bulge() };
+                    Piece::Arc(match arc.via() {
+                        Some(m) => CircularArc::through(f(arc.start()), f(m), f(arc.end())).unwrap(),
+                        None => CircularArc::from_bulge(f(arc.start()), f(arc.end()), bulge).unwrap(),
+                    })
+                }
+            })
+            .collect()
+    };
+    let mirrored = map(&|q: Point| Point::new(-q.x, q.y), true);
+    let small = map(&|q: Point| Point::new(q.x * 2f64.powi(-20), q.y * 2f64.powi(-20)), false);
+    let large = map(&|q: Point| Point::new(q.x * 2f64.powi(20), q.y * 2f64.powi(20)), false);
+    let mut count = 0;
+    for (way, input, scale) in [
+        ("plain", pieces.to_vec(), 1.0),
+        ("reversed", reversed, 1.0),
+        ("shuffled", shuffled, 1.0),
+        ("mirrored", mirrored, 1.0),
+        ("scaled down", small, 2f64.powi(-20)),
+        ("scaled up", large, 2f64.powi(20)),
+    ] {
+        let d = build(&input);
+        d.validate().unwrap_or_else(|e| panic!("{name} {way}: invalid: {e:?}"));
+        let f = audit(&d, tol * scale);
+        assert!(f.is_empty(), "{name} {way}: {} failures, first:\n{}", f.len(), f[..f.len().min(5)].join("\n"));
+        if way == "plain" {
+            count = d.vertex_count();
+        } else {
+            assert_eq!(d.vertex_count(), count, "{name} {way}: another vertex count");
+        }
+    }
+    count
+}
+
+/// A random arc inside the unit cell at `(x, y)`: a chord inside it and a
+/// bulge such that the whole circle fits in the cell.
+fn random_arc(rng: &mut SplitMix64, x: f64, y: f64) -> CircularArc {
+    loop {
+        let c = Point::new(x + 0.5, y + 0.5);
+        let r = 0.05 + 0.35 * rng.unit();
+        let a0 = 2.0 * std::f64::consts::PI * rng.unit();
+        let sweep = (0.05 + 1.9 * rng.unit()) * std::f64::consts::PI * if rng.unit() < 0.5 { 1.0 } else { -1.0 };
+        let at = |t: f64| Point::new(c.x + r * t.cos(), c.y + r * t.sin());
+        let (s, e) = (at(a0), at(a0 + sweep));
+        let arc = if rng.unit() < 0.5 {
+            CircularArc::from_bulge(s, e, (sweep / 4.0).tan())
+        } else {
+            CircularArc::through(s, at(a0 + 0.5 * sweep), e)
+        };
+        if let Ok(arc) = arc {
+            return arc;
+        }
+    }
+}
+
+fn random_cells(seed: u64, side: usize) -> Vec<Piece> {
+    let mut rng = SplitMix64(seed);
+    let mut pieces = Vec::new();
+    for i in 0..side {
+        for j in 0..side {
+            let (x, y) = (i as f64, j as f64);
+            let cell = |rng: &mut SplitMix64| Point::new(x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit());
+            match rng.next_u64() % 4 {
+                0 => pieces.push(Piece::Point(cell(&mut rng))),
+                1 => pieces.push(Piece::Segment(cell(&mut rng), cell(&mut rng))),
+                _ => pieces.push(Piece::Arc(random_arc(&mut rng, x, y))),
+            }
+        }
+    }
+    pieces
+}
+
+#[test]
+fn random_arcs_segments_and_points_in_cells() {
+    for seed in 0..12 {
+        let side = 2 + (seed as usize % 4);
+        check_all_ways(&format!("cells seed {seed}"), &random_cells(seed, side), side as f64, seed);
+    }
+}
+
+/// A rounded rectangle `w × h` at `(x, y)` with corner radius `r`, as
+/// pieces: sides and quarter arcs, tangent-continuous.
+fn rounded_rectangle(x: f64, y: f64, w: f64, h: f64, r: f64) -> Vec<Piece> {
+    let q = (std::f64::consts::PI / 8.0).tan();
+    let p = Point::new;
+    let corners = [
+        (p(x + r, y), p(x + w - r, y), p(x + w, y + r)),
+        (p(x + w, y + r), p(x + w, y + h - r), p(x + w - r, y + h)),
+        (p(x + w - r, y + h), p(x + r, y + h), p(x, y + h - r)),
+        (p(x, y + h - r), p(x, y + r), p(x + r, y)),
+    ];
+    let mut pieces = Vec::new();
+    for (a, b, c) in corners {
+        pieces.push(Piece::Segment(a, b));
+        pieces.push(Piece::Arc(CircularArc::from_bulge(b, c, q).unwrap()));
+    }
+    pieces
+}
+
+#[test]
+fn rounded_rectangles_nested_and_apart() {
+    let mut pieces = rounded_rectangle(0.0, 0.0, 10.0, 6.0, 1.5);
+    pieces.extend(rounded_rectangle(2.0, 2.0, 3.0, 2.0, 0.5));
+    pieces.extend(rounded_rectangle(12.0, 0.5, 4.0, 4.0, 2.0)); // a circle of four arcs... and no sides
+    pieces.push(Piece::Point(Point::new(7.5, 3.0)));
+    check_all_ways("rounded rectangles", &pieces, 16.0, 1);
+}
+
+#[test]
+fn slots_and_a_point_at_an_arc_centre() {
+    let p = Point::new;
+    let mut pieces = vec![
+        Piece::Segment(p(0.0, 0.0), p(4.0, 0.0)),
+        Piece::Arc(CircularArc::from_bulge(p(4.0, 0.0), p(4.0, 2.0), 1.0).unwrap()),
+        Piece::Segment(p(4.0, 2.0), p(0.0, 2.0)),
+        Piece::Arc(CircularArc::from_bulge(p(0.0, 2.0), p(0.0, 0.0), 1.0).unwrap()),
+    ];
+    check_all_ways("slot", &pieces, 4.0, 2);
+    pieces.push(Piece::Point(p(4.0, 1.0)));
+    check_all_ways("slot with its centre", &pieces, 4.0, 3);
+}
+
+#[test]
+fn concentric_arcs() {
+    let mut pieces = Vec::new();
+    for k in 1..6 {
+        let r = k as f64;
+        let at = |t: f64| Point::new(r * t.cos(), r * t.sin());
+        pieces.push(Piece::Arc(CircularArc::through(at(0.1 * k as f64), at(1.0 + 0.1 * k as f64), at(2.5)).unwrap()));
+    }
+    pieces.push(Piece::Point(Point::new(0.0, 0.0)));
+    check_all_ways("concentric", &pieces, 10.0, 4);
+}
+
+#[test]
+fn a_full_circle_as_two_arcs_around_points() {
+    let p = Point::new;
+    let pieces = vec![
+        Piece::Arc(CircularArc::from_bulge(p(3.0, 0.0), p(-3.0, 0.0), 1.0).unwrap()),
+        Piece::Arc(CircularArc::from_bulge(p(-3.0, 0.0), p(3.0, 0.0), 1.0).unwrap()),
+        Piece::Point(p(0.5, 0.25)),
+        Piece::Point(p(-1.0, 1.0)),
+        Piece::Segment(p(-1.0, -1.0), p(1.0, -1.5)),
+    ];
+    check_all_ways("full circle", &pieces, 6.0, 5);
+}

@@ -1,0 +1,262 @@
+//! The questions the insertion of an open arc asks (see `arcs`): the same
+//! four as for a segment (`segments::segment_predicates`), answered in
+//! floating point, with the tangent and curvature rules where the vertex
+//! touches one of the arc's endpoints.
+
+use super::bisector::bisector_point;
+use crate::geometry::arc::CircularArc;
+use crate::geometry::fault;
+use crate::geometry::point::Point;
+use crate::geometry::segments::segment_predicates::{EdgeContact, FiniteEdge, LeftDegree, MiddleMargin, SegmentDepth};
+use crate::geometry::site::Site;
+
+/// Which endpoints of the new arc are sites of the vertex asked about.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum ArcContact {
+    /// Both: the vertex is on the bisector of the endpoints, a line through
+    /// the arc's centre.
+    BothEnds,
+    /// The endpoint `end`, with the directions (pointing away from `end`)
+    /// of the pieces ending there that are the vertex's sites just after
+    /// and just before `end`, counter-clockwise.
+    OneEnd { end: Point, after: Option<Point>, before: Option<Point> },
+    /// Neither.
+    NoEnd,
+}
+
+/// How far inside the circle of a finite vertex (`centre`, `radius`) the
+/// open arc reaches (negative: it enters), perturbed in fault injection.
+///
+/// With an endpoint of the arc among the vertex's sites, that endpoint is
+/// on the circle; the arc enters when its tangent there points into the
+/// disk, and where the tangent runs along the circle (a tangent join of a
+/// chain), when it curves into the disk more sharply than the circle.
+pub(crate) fn arc_depth(arc: &CircularArc, contact: ArcContact, centre: Point, radius: f64) -> SegmentDepth {
+    let depth = match contact {
+        ArcContact::NoEnd => arc.distance(centre) - radius,
+        ArcContact::BothEnds => {
+            // on the line through the arc's centre: the side of the arc's
+            // middle is nearer the arc than its ends (the whole ray, when
+            // it lies in the span)
+            if arc.spans(centre) {
+                -(arc.start().distance(centre) - arc.distance(centre)).abs().max(f64::MIN_POSITIVE)
+            } else {
+                0.0
+            }
+        }
+        ArcContact::OneEnd { end, after, before } => endpoint_depth(arc, end, after, before, centre, radius),
+    };
+    SegmentDepth::of(fault::perturb(depth))
+}
+
+/// [`arc_depth`] for a vertex with the arc's endpoint `end` among its sites.
+fn endpoint_depth(arc: &CircularArc, end: Point, after: Option<Point>, before: Option<Point>, centre: Point, radius: f64) -> f64 {
+    let leaving = direction_leaving(arc, end);
+    let (nx, ny) = (centre.x - end.x, centre.y - end.y);
+    let n = nx.hypot(ny);
+    if let (Some(from), Some(to)) = (after, before) {
+        if n <= 1e-12 * (radius.abs() + end.x.abs().max(end.y.abs())) {
+            // a vertex of radius 0 at `end`, standing for the sector from
+            // one piece to the next: entered when the arc leaves into it
+            return if in_sector(from, to, leaving) { -f64::MIN_POSITIVE } else { f64::MIN_POSITIVE };
+        }
+    }
+    if !(n > 0.0) {
+        return 0.0;
+    }
+    let tangent = arc.tangent_into(end);
+    let along = (tangent.x * nx + tangent.y * ny) / n;
+    if along.abs() > 1e-12 {
+        return -along * radius.abs().max(f64::MIN_POSITIVE);
+    }
+    // along the circle's tangent: the arc enters when it curves toward the
+    // vertex's centre, on a smaller circle
+    let (cx, cy) = (arc.centre().x - end.x, arc.centre().y - end.y);
+    let towards = cx * nx + cy * ny > 0.0;
+    let sharper = arc.radius() < radius;
+    let size = (radius - arc.radius()).abs().max(f64::MIN_POSITIVE);
+    if towards && sharper {
+        -size
+    } else if towards && arc.radius() == radius {
+        0.0
+    } else {
+        size
+    }
+}
+
+/// The direction in which the arc leaves its endpoint `end`, bent a hair
+/// toward its centre, so that where it leaves along another piece's
+/// direction (a tangent join) the side it curves to decides.
+pub(crate) fn direction_leaving(arc: &CircularArc, end: Point) -> Point {
+    let t = arc.tangent_into(end);
+    let bend = 1e-7;
+    let (cx, cy) = ((arc.centre().x - end.x) / arc.radius(), (arc.centre().y - end.y) / arc.radius());
+    Point::new(t.x + bend * cx, t.y + bend * cy)
+}
+
+/// The direction in which a piece ending at `end` leaves it: a segment
+/// toward its other end, an arc as [`direction_leaving`].
+pub(crate) fn piece_direction(site: &Site, end: Point) -> Option<Point> {
+    match *site {
+        Site::Segment { .. } => {
+            let far = site.other_endpoint(end)?;
+            let (dx, dy) = (far.x - end.x, far.y - end.y);
+            let len = dx.hypot(dy);
+            Some(Point::new(dx / len, dy / len))
+        }
+        Site::Arc(arc) if arc.start() == end || arc.end() == end => Some(direction_leaving(&arc, end)),
+        _ => None,
+    }
+}
+
+/// Whether the direction `d` lies strictly inside the sector swept
+/// counter-clockwise from the direction `from` to `to`.
+fn in_sector(from: Point, to: Point, d: Point) -> bool {
+    let cross = |u: Point, v: Point| u.x * v.y - u.y * v.x;
+    let (after_from, before_to) = (cross(from, d) > 0.0, cross(d, to) > 0.0);
+    if cross(from, to) > 0.0 {
+        after_from && before_to
+    } else {
+        after_from || before_to
+    }
+}
+
+/// A site as the left-degree of an arc sees it from a vertex.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum ArcSiteSeen {
+    /// The point at infinity: on neither side.
+    Infinity,
+    /// A piece sharing the endpoint `end` with the new arc: its side near
+    /// `end`.
+    SharingEndpoint { site: Site, end: Point },
+    /// Any other site, seen from a finite vertex at `from`, or from a
+    /// vertex at infinity (`None`: the site's midpoint).
+    Other { site: Site, from: Option<Point> },
+}
+
+/// The left-degree against the directed arc (start → end): positive when
+/// the site lies on its left (toward the centre of a counter-clockwise
+/// arc, away from it for a clockwise one), by the circle's side of the
+/// site's point nearest to the vertex. Perturbed in fault injection.
+pub(crate) fn arc_left_degree(arc: &CircularArc, seen: ArcSiteSeen) -> LeftDegree {
+    let q = match seen {
+        ArcSiteSeen::Infinity => return LeftDegree::of(0.0),
+        ArcSiteSeen::SharingEndpoint { site, end } => return LeftDegree::of(fault::perturb(side_near_end(arc, &site, end))),
+        ArcSiteSeen::Other { site, from: Some(v) } => site.nearest_point(v),
+        ArcSiteSeen::Other { site, from: None } => site.midpoint(),
+    };
+    LeftDegree::of(fault::perturb(arc.left_of(q)))
+}
+
+/// The side of the arc's circle (left positive) on which the piece `site`
+/// leaves their common endpoint `end`: by its direction against the
+/// inward normal, and along the tangent by its curvature (a segment stays
+/// outside the circle; an arc curving the same way on a smaller circle
+/// inside). Reported as certain (infinite) when the direction decides.
+fn side_near_end(arc: &CircularArc, site: &Site, end: Point) -> f64 {
+    let inward = Point::new(arc.centre().x - end.x, arc.centre().y - end.y);
+    let scale = inward.x.hypot(inward.y);
+    let inside = match piece_direction(site, end) {
+        None => {
+            return arc.left_of(site.midpoint());
+        }
+        Some(d) => {
+            let dot = (d.x * inward.x + d.y * inward.y) / scale;
+            if dot.abs() > 1e-6 {
+                dot > 0.0
+            } else {
+                match *site {
+                    Site::Arc(other) => {
+                        let same_side = (other.centre().x - end.x) * inward.x + (other.centre().y - end.y) * inward.y > 0.0;
+                        same_side && other.radius() < arc.radius()
+                    }
+                    _ => false,
+                }
+            }
+        }
+    };
+    let left = inside == arc.is_counter_clockwise();
+    if left {
+        f64::INFINITY
+    } else {
+        f64::NEG_INFINITY
+    }
+}
+
+/// Whether a vertex (`centre`) lies in the arc's cone of influence, the
+/// wedge at its centre between the rays through its endpoints (the arcs'
+/// criterion 2.2); a vertex of both endpoints lies on their bisector, in
+/// the cone when on the side of the arc's middle.
+pub(crate) fn in_cone(arc: &CircularArc, centre: Point) -> bool {
+    if fault::active() {
+        let c = arc.centre();
+        let jiggled = Point::new(c.x + fault::perturb(centre.x - c.x), c.y + fault::perturb(centre.y - c.y));
+        return arc.spans(jiggled);
+    }
+    arc.spans(centre)
+}
+
+/// How clearly the middle of a finite edge stays out of the new arc's cell
+/// when both its ends are in it: the largest excess of the distance to the
+/// arc over the distance to the edge's own sites, at points along the
+/// edge (positive: a middle piece stays). Perturbed in fault injection.
+pub(crate) fn arc_middle_margin(edge: FiniteEdge, _contact: EdgeContact, arc: &CircularArc) -> MiddleMargin {
+    const SAMPLES: usize = 24;
+    let site = Site::Arc(*arc);
+    let mut best = f64::NEG_INFINITY;
+    for k in 1..SAMPLES {
+        let t = k as f64 / SAMPLES as f64;
+        let q = bisector_point(&edge.left, &edge.right, edge.from, edge.to, t);
+        let own = 0.5 * (edge.left.distance(q) + edge.right.distance(q));
+        let excess = site.distance(q) - own;
+        if excess > best || best.is_nan() {
+            best = excess;
+        }
+    }
+    MiddleMargin::of(fault::perturb(best))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    #[test]
+    fn depth_from_outside_and_at_an_endpoint() {
+        let arc = CircularArc::from_bulge([1.0, 0.0], [-1.0, 0.0], 1.0).unwrap();
+        // a circle around (0, 3) of radius 1.5 reaches the arc's top (0, 1)
+        assert!(arc_depth(&arc, ArcContact::NoEnd, p(0.0, 3.0), 2.5).depth() < 0.0);
+        assert!(arc_depth(&arc, ArcContact::NoEnd, p(0.0, 3.0), 1.5).depth() > 0.0);
+        // a circle through the start (1, 0) centred at (1, 2): the arc
+        // leaves (1, 0) straight up, into it
+        let at_start = ArcContact::OneEnd { end: p(1.0, 0.0), after: None, before: None };
+        assert!(arc_depth(&arc, at_start, p(1.0, 2.0), 2.0).depth() < 0.0);
+        assert!(arc_depth(&arc, at_start, p(1.0, -2.0), 2.0).depth() > 0.0);
+        // tangent at the start: centred at (3, 0), radius 2, the arc curves away
+        assert!(arc_depth(&arc, at_start, p(3.0, 0.0), 2.0).depth() > 0.0);
+        // centred at (0.5, 0), radius 0.5: tangent, the arc's circle is larger: misses
+        assert!(arc_depth(&arc, at_start, p(0.5, 0.0), 0.5).depth() > 0.0);
+        // centred at (-1, 0), radius 2: tangent, the arc's circle (radius 1) is sharper: enters
+        assert!(arc_depth(&arc, at_start, p(-1.0, 0.0), 2.0).depth() < 0.0);
+    }
+
+    #[test]
+    fn sides_of_an_arc() {
+        let ccw = CircularArc::from_bulge([1.0, 0.0], [-1.0, 0.0], 1.0).unwrap();
+        let inside = Site::Point(p(0.0, 0.5));
+        assert!(arc_left_degree(&ccw, ArcSiteSeen::Other { site: inside, from: None }).side()
+            == crate::geometry::predicates::Orientation::CounterClockwise);
+        let cw = ccw.reversed();
+        assert!(arc_left_degree(&cw, ArcSiteSeen::Other { site: inside, from: None }).side()
+            == crate::geometry::predicates::Orientation::Clockwise);
+        // a segment continuing the arc's tangent at its start stays outside
+        let tangent = Site::Segment { a: p(1.0, 0.0), b: p(1.0, -3.0) };
+        let seen = ArcSiteSeen::SharingEndpoint { site: tangent, end: p(1.0, 0.0) };
+        assert!(arc_left_degree(&ccw, seen).certainty().is_infinite());
+        assert!(arc_left_degree(&ccw, seen).side() == crate::geometry::predicates::Orientation::Clockwise);
+        assert!(in_cone(&ccw, p(0.3, 5.0)) && !in_cone(&ccw, p(0.3, -5.0)));
+    }
+}

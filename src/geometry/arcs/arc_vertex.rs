@@ -1,0 +1,445 @@
+//! The Voronoi vertex of three sites among which is a circular arc: the
+//! circle tangent to all three, touching them in the counter-clockwise
+//! order given (Apollonius' problem and its mixed cases).
+//!
+//! Near a vertex, each site acts as one of three curves, and the vertex
+//! `(x, t)` (centre `x`, radius `t`) satisfies one equation per site:
+//! - a point `p`: `|x − p|² = t²`;
+//! - a segment touched inside, on the side `σ = ±1` of its line (unit
+//!   normal `n`): `n · (x − a) = σ t`;
+//! - an arc's circle `(c, ρ)` touched from outside (`σ = +1`) or inside
+//!   (`σ = −1`): `|x − c|² = (ρ + σ t)²`.
+//!
+//! Every quadratic equation has the same quadratic part `|x|² − t²`, so
+//! the differences of two of them are linear: whatever the mix, the
+//! system is two linear equations in `(x, y, t)` (a line of solutions)
+//! and one quadratic along that line, up to two roots. Each choice of the
+//! sides `σ` is solved; a candidate counts when `t ≥ 0`, every site is
+//! touched within its own extent (a segment's foot inside it, an arc's
+//! direction within its span) and the touching points lie around the
+//! centre in the order given. The root chosen is the one that fits best
+//! (the residuals of the true distances), so the answer is the circle
+//! whose tangency pattern the topology asked for.
+//!
+//! Precision: floating point, relative to a local origin, then a few
+//! Newton steps on the true distances. Not certified: the arcs' decisions
+//! in `arc_predicates` compare these positions with tolerances.
+
+use crate::geometry::point::Point;
+use crate::geometry::site::Site;
+
+/// The circle of three sites of which at least one is an arc, in the
+/// counter-clockwise order given; `None` when no candidate fits (the
+/// caller falls back as for other sites).
+pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
+    let origin = local_origin(sites);
+    let local = sites.map(|s| shifted(&s, origin));
+    let scale = local.iter().map(site_size).fold(0.0f64, f64::max).max(f64::MIN_POSITIVE);
+    let mut best: Option<(f64, Point, f64)> = None;
+    let options = local.map(|s| touchings(&s));
+    for &t0 in &options[0] {
+        for &t1 in &options[1] {
+            for &t2 in &options[2] {
+                let touch = [t0, t1, t2];
+                let Some(equations) = equations_of(&local, touch) else { continue };
+                for (centre, radius) in solve(&equations) {
+                    let Some(score) = fit(&local, touch, centre, radius, scale) else { continue };
+                    if best.map_or(true, |(s, _, _)| score < s) {
+                        best = Some((score, centre, radius));
+                    }
+                }
+            }
+        }
+    }
+    let (_, centre, radius) = best?;
+    let (centre, radius) = polish(&local, centre, radius);
+    Some((Point::new(centre.x + origin.x, centre.y + origin.y), radius.max(0.0)))
+}
+
+/// Where a vertex may touch a site: a point at itself; a segment or an arc
+/// inside, on one side (`σ`: left of a segment, outside an arc's circle,
+/// when `+1`), or at one of its ends.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Touching {
+    Itself,
+    Inside(f64),
+    AtEnd(Point),
+}
+
+fn touchings(site: &Site) -> Vec<Touching> {
+    match *site {
+        Site::Point(_) => vec![Touching::Itself],
+        _ => {
+            let [a, b] = site.ends();
+            vec![Touching::Inside(1.0), Touching::Inside(-1.0), Touching::AtEnd(a), Touching::AtEnd(b)]
+        }
+    }
+}
+
+/// The equations of `sites` touched as `touch` says. Where two sites are
+/// touched at one point (an endpoint they share, or a point site and a
+/// piece ending there), the second's equation would repeat the first's;
+/// the vertex then lies on the piece's separator there (its normal line),
+/// which takes its place.
+fn equations_of(sites: &[Site; 3], touch: [Touching; 3]) -> Option<[Equation; 3]> {
+    let point_of = |k: usize| match touch[k] {
+        Touching::Itself => sites[k].as_point(),
+        Touching::AtEnd(e) => Some(e),
+        Touching::Inside(_) => None,
+    };
+    // A piece is touched at an end only on its separator there, which
+    // takes a second site touched at that point to say: alone, an end
+    // would be a circle through it tangent to nothing (another vertex).
+    for k in 0..3 {
+        if let Touching::AtEnd(e) = touch[k] {
+            if !(0..3).any(|j| j != k && point_of(j) == Some(e)) {
+                return None;
+            }
+        }
+    }
+    let mut equations = [Equation::Circle { c: Point::new(0.0, 0.0), rho: 0.0, sigma: 1.0 }; 3];
+    for k in 0..3 {
+        equations[k] = match touch[k] {
+            Touching::Inside(sigma) => Equation::of(&sites[k], sigma),
+            Touching::Itself | Touching::AtEnd(_) => {
+                let e = point_of(k)?;
+                let repeats = (0..k).any(|j| point_of(j) == Some(e));
+                if repeats {
+                    let normal = separator_normal(&sites[k], e)
+                        .or_else(|| (0..k).find(|&j| point_of(j) == Some(e)).and_then(|j| separator_normal(&sites[j], e)))?;
+                    Equation::Line { n: normal, offset: normal.x * e.x + normal.y * e.y, sigma: 0.0 }
+                } else {
+                    Equation::Circle { c: e, rho: 0.0, sigma: 1.0 }
+                }
+            }
+        };
+    }
+    Some(equations)
+}
+
+/// For a piece ending at `e`: the unit direction along it there, which is
+/// the normal of its separator at `e` (the line through `e` across it).
+fn separator_normal(site: &Site, e: Point) -> Option<Point> {
+    let (dx, dy) = match *site {
+        Site::Segment { a, b } => (b.x - a.x, b.y - a.y),
+        Site::Arc(arc) => (-(e.y - arc.centre().y), e.x - arc.centre().x),
+        _ => return None,
+    };
+    let n = dx.hypot(dy);
+    (n > 0.0 && n.is_finite()).then(|| Point::new(dx / n, dy / n))
+}
+
+/// One site's equation, in the local frame: quadratic
+/// `|x|² − 2 c·x + |c|² − (ρ + σ t)² = 0`, or linear `n·x − n·a − σ t = 0`
+/// (`σ = 0`: a line the centre lies on).
+#[derive(Clone, Copy, Debug)]
+enum Equation {
+    Circle { c: Point, rho: f64, sigma: f64 },
+    Line { n: Point, offset: f64, sigma: f64 },
+}
+
+impl Equation {
+    fn of(site: &Site, sigma: f64) -> Equation {
+        match *site {
+            Site::Point(p) => Equation::Circle { c: p, rho: 0.0, sigma: 1.0 },
+            Site::Segment { a, b } => {
+                let (dx, dy) = (b.x - a.x, b.y - a.y);
+                let len = dx.hypot(dy);
+                let n = Point::new(-dy / len, dx / len);
+                Equation::Line { n, offset: n.x * a.x + n.y * a.y, sigma }
+            }
+            Site::Arc(arc) => Equation::Circle { c: arc.centre(), rho: arc.radius(), sigma },
+        }
+    }
+
+    /// As a linear form `[x, y, t, constant]`, for a line; for a circle,
+    /// its part besides `|x|² − t²`.
+    fn linear_part(&self) -> [f64; 4] {
+        match *self {
+            Equation::Circle { c, rho, sigma } => [-2.0 * c.x, -2.0 * c.y, -2.0 * rho * sigma, c.x * c.x + c.y * c.y - rho * rho],
+            Equation::Line { n, offset, sigma } => [n.x, n.y, -sigma, -offset],
+        }
+    }
+
+    fn is_circle(&self) -> bool {
+        matches!(self, Equation::Circle { .. })
+    }
+}
+
+/// The solutions `(centre, radius)` of three equations (at most two).
+fn solve(equations: &[Equation; 3]) -> Vec<(Point, f64)> {
+    let Some(q) = equations.iter().position(Equation::is_circle) else { return Vec::new() };
+    let base = equations[q].linear_part();
+    // two linear equations: lines as they are, circles minus the base one
+    let linear: Vec<[f64; 4]> = (0..3)
+        .filter(|&k| k != q)
+        .map(|k| {
+            let e = equations[k].linear_part();
+            if equations[k].is_circle() {
+                std::array::from_fn(|i| e[i] - base[i])
+            } else {
+                e
+            }
+        })
+        .collect();
+    let (n1, n2) = ([linear[0][0], linear[0][1], linear[0][2]], [linear[1][0], linear[1][1], linear[1][2]]);
+    let (d1, d2) = (-linear[0][3], -linear[1][3]);
+    let d = cross3(n1, n2);
+    let dd = dot3(d, d);
+    let size = dot3(n1, n1).sqrt() * dot3(n2, n2).sqrt();
+    if !(dd > 1e-24 * size * size) {
+        return Vec::new();
+    }
+    // the point of the line nearest the origin
+    let (u, v) = (cross3(n2, d), cross3(d, n1));
+    let p: [f64; 3] = std::array::from_fn(|i| (d1 * u[i] + d2 * v[i]) / dd);
+    // the base quadratic along p + λ d: |x|² − t² + base · (x, y, t, 1)
+    let quad = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] - a[2] * b[2];
+    let qa = quad(d, d);
+    let qb = 2.0 * quad(p, d) + base[0] * d[0] + base[1] * d[1] + base[2] * d[2];
+    let qc = quad(p, p) + base[0] * p[0] + base[1] * p[1] + base[2] * p[2] + base[3];
+    let at = |l: f64| (Point::new(p[0] + l * d[0], p[1] + l * d[1]), p[2] + l * d[2]);
+    let mut roots = Vec::with_capacity(2);
+    if qa.abs() <= 1e-14 * (qb.abs() + qc.abs()).max(f64::MIN_POSITIVE) {
+        if qb != 0.0 {
+            roots.push(at(-qc / qb));
+        }
+        return roots;
+    }
+    let disc = qb * qb - 4.0 * qa * qc;
+    // a discriminant within rounding of zero is a double root
+    let disc = if disc < 0.0 && disc > -1e-12 * qb * qb { 0.0 } else { disc };
+    if disc < 0.0 {
+        return roots;
+    }
+    let s = disc.sqrt();
+    // the stable pair of roots
+    let w = -0.5 * (qb + s.copysign(qb));
+    if w != 0.0 {
+        roots.push(at(w / qa));
+        roots.push(at(qc / w));
+    } else {
+        roots.push(at(0.0));
+    }
+    roots
+}
+
+/// How well `(centre, radius)` fits as the vertex of `sites` touched as
+/// `touch` says (smaller is better); `None` when it is not one: a negative
+/// radius, a site touched elsewhere than said, or the touching points in
+/// the wrong order.
+fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scale: f64) -> Option<f64> {
+    if !centre.is_finite() || !radius.is_finite() {
+        return None;
+    }
+    let slack = 1e-9 * (scale + radius.abs());
+    if radius < -slack {
+        return None;
+    }
+    for (site, touching) in sites.iter().zip(touch) {
+        match (*site, touching) {
+            (Site::Segment { a, b }, Touching::Inside(sigma)) => {
+                // on the side σ (or on the line), the foot inside
+                let (dx, dy) = (b.x - a.x, b.y - a.y);
+                let cross = (dx * (centre.y - a.y) - dy * (centre.x - a.x)) / dx.hypot(dy);
+                if sigma * cross < -slack {
+                    return None;
+                }
+                let t = crate::geometry::site::segment_parameter(a, b, centre);
+                if !(t > -1e-9 && t < 1.0 + 1e-9) {
+                    return None;
+                }
+            }
+            (Site::Arc(arc), Touching::Inside(sigma)) => {
+                let d = arc.centre().distance(centre);
+                if sigma < 0.0 && d > arc.radius() + slack || sigma > 0.0 && d < arc.radius() - slack {
+                    return None;
+                }
+                // touched inside the span (or within rounding of an end):
+                // a circle tangent to the arc's circle elsewhere is not a
+                // vertex of the arc, even where it passes through an end
+                if !arc.spans(centre) {
+                    let c = arc.centre();
+                    let k = arc.radius() / d;
+                    let q = Point::new(c.x + k * (centre.x - c.x), c.y + k * (centre.y - c.y));
+                    if q.distance(arc.start()).min(q.distance(arc.end())) > 1e3 * slack {
+                        return None;
+                    }
+                }
+            }
+            (_, Touching::AtEnd(e)) => {
+                // the nearest point is that end (or as near)
+                if (site.distance(centre) - e.distance(centre)).abs() > 1e3 * slack {
+                    return None;
+                }
+            }
+            _ => {}
+        }
+    }
+    let residual: f64 = sites.iter().map(|s| (s.distance(centre) - radius.max(0.0)).abs()).sum();
+    let touching = sites.map(|s| s.nearest_point(centre));
+    let order = orientation_value(touching[0], touching[1], touching[2]);
+    // touching points apart and in clockwise order: the other circle
+    if order < -1e-12 * scale * scale {
+        return None;
+    }
+    Some(residual)
+}
+
+fn orientation_value(a: Point, b: Point, c: Point) -> f64 {
+    (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)
+}
+
+/// A few Newton steps on the true distances `d_k(x) − t = 0`.
+fn polish(sites: &[Site; 3], mut centre: Point, mut radius: f64) -> (Point, f64) {
+    for _ in 0..3 {
+        let f = sites.map(|s| s.distance(centre) - radius);
+        let size = f.iter().map(|x| x.abs()).sum::<f64>();
+        if !(size > 0.0) {
+            break;
+        }
+        let h = 1e-7 * (radius.abs() + centre.x.abs().max(centre.y.abs())).max(1e-300);
+        let grad = |k: usize| {
+            let dx = (sites[k].distance(Point::new(centre.x + h, centre.y)) - sites[k].distance(Point::new(centre.x - h, centre.y))) / (2.0 * h);
+            let dy = (sites[k].distance(Point::new(centre.x, centre.y + h)) - sites[k].distance(Point::new(centre.x, centre.y - h))) / (2.0 * h);
+            [dx, dy, -1.0]
+        };
+        let j = [grad(0), grad(1), grad(2)];
+        let Some(step) = solve3(j, [-f[0], -f[1], -f[2]]) else { break };
+        let next = (Point::new(centre.x + step[0], centre.y + step[1]), radius + step[2]);
+        let next_size: f64 = sites.iter().map(|s| (s.distance(next.0) - next.1).abs()).sum();
+        if !(next_size < size) || !next.0.is_finite() {
+            break;
+        }
+        (centre, radius) = next;
+    }
+    (centre, radius)
+}
+
+/// Cramer's rule for a 3×3 system; `None` when singular.
+fn solve3(m: [[f64; 3]; 3], r: [f64; 3]) -> Option<[f64; 3]> {
+    let det = |m: [[f64; 3]; 3]| dot3(m[0], cross3(m[1], m[2]));
+    let d = det(m);
+    if !(d.abs() > 1e-300) || !d.is_finite() {
+        return None;
+    }
+    let column = |k: usize| {
+        let mut c = m;
+        for i in 0..3 {
+            c[i][k] = r[i];
+        }
+        det(c) / d
+    };
+    Some([column(0), column(1), column(2)])
+}
+
+fn cross3(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+fn dot3(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// A point near the sites, to compute relative to.
+fn local_origin(sites: &[Site; 3]) -> Point {
+    let m = sites.map(|s| s.midpoint());
+    Point::new((m[0].x + m[1].x + m[2].x) / 3.0, (m[0].y + m[1].y + m[2].y) / 3.0)
+}
+
+fn shifted(site: &Site, o: Point) -> Site {
+    let s = |p: Point| Point::new(p.x - o.x, p.y - o.y);
+    match *site {
+        Site::Point(p) => Site::Point(s(p)),
+        Site::Segment { a, b } => Site::Segment { a: s(a), b: s(b) },
+        Site::Arc(arc) => Site::Arc(arc.translated(-o.x, -o.y)),
+    }
+}
+
+/// The size of a site in the local frame: how far it reaches from the origin.
+fn site_size(site: &Site) -> f64 {
+    let [a, b] = site.ends();
+    let far = |p: Point| p.x.abs().max(p.y.abs());
+    match *site {
+        Site::Arc(arc) => far(a).max(far(b)).max(arc.radius()),
+        _ => far(a).max(far(b)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::CircularArc;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    fn check(sites: [Site; 3], centre: Point, radius: f64) {
+        let (c, r) = arc_vertex(&sites).unwrap_or_else(|| panic!("no vertex for {sites:?}"));
+        assert!(c.distance(centre) < 1e-9 && (r - radius).abs() < 1e-9, "{c:?} {r} against {centre:?} {radius}");
+    }
+
+    #[test]
+    fn three_circles_of_apollonius() {
+        // the upper half of the unit circle, and two points above it: the
+        // circle through (-1, 3) and (1, 3) tangent to the arc from outside
+        // is centred at (0, y) with √(1 + (3 − y)²) = y − 1: y = 9/4... (1 + 9 − 6y + y² = y² − 2y + 1 → y = 9/4)
+        let arc = Site::Arc(CircularArc::from_bulge([1.0, 0.0], [-1.0, 0.0], 1.0).unwrap());
+        check([Site::Point(p(1.0, 3.0)), Site::Point(p(-1.0, 3.0)), arc], p(0.0, 2.25), 1.25);
+        // the other order: the circle inside, below the points? none for
+        // points outside the circle touching from inside; the order picks
+        assert!(arc_vertex(&[Site::Point(p(-1.0, 3.0)), Site::Point(p(1.0, 3.0)), arc]).map_or(true, |(c, _)| c.y < 2.0));
+    }
+
+    #[test]
+    fn inside_an_arc_with_a_segment() {
+        // a segment along y = 0 from -2 to 2, and the upper half circle of
+        // radius 2: the circle tangent to both inside, touching the arc at
+        // its top, centred at (0, 1) with radius 1; the third site a point
+        // at (0, 0)... instead the tangency with a point on the x axis
+        let arc = Site::Arc(CircularArc::from_bulge([2.0, 0.0], [-2.0, 0.0], 1.0).unwrap());
+        let seg = Site::Segment { a: p(-1.5, 0.0), b: p(1.5, 0.0) };
+        // with a point (1, 0)? on the segment; use the point (0, 1.9): the
+        // circle tangent to the arc (inside), the line y = 0 and through
+        // the point; solve numerically and check the tangencies
+        let pt = Site::Point(p(0.5, 1.2));
+        for sites in [[seg, arc, pt], [arc, pt, seg], [pt, seg, arc]] {
+            if let Some((c, r)) = arc_vertex(&sites) {
+                for s in &sites {
+                    assert!((s.distance(c) - r).abs() < 1e-9, "{s:?} at {c:?} {r}");
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod debug_tests {
+    use super::*;
+    use crate::geometry::CircularArc;
+
+    #[test]
+    fn debug_triple() {
+        let p = Point::new;
+        let arc = CircularArc::from_bulge(p(2.5653053577611127, 0.49907584082533846), p(2.4460306712080997, 0.5367825416772518), -1.3448508542112902).unwrap();
+        let sites = [Site::Point(p(2.698588263057324, 2.7544267987067874)), Site::Point(p(2.5653053577611127, 0.49907584082533846)), Site::Arc(arc)];
+        let origin = local_origin(&sites);
+        let local = sites.map(|s| shifted(&s, origin));
+        let scale = local.iter().map(site_size).fold(0.0f64, f64::max);
+        let options = local.map(|s| touchings(&s));
+        for &t0 in &options[0] {
+            for &t1 in &options[1] {
+                for &t2 in &options[2] {
+                    let touch = [t0, t1, t2];
+                    let Some(equations) = equations_of(&local, touch) else { continue };
+                    for (centre, radius) in solve(&equations) {
+                        let f = fit(&local, touch, centre, radius, scale);
+                        println!("{touch:?}: {:?} r {radius} fit {f:?}", Point::new(centre.x + origin.x, centre.y + origin.y));
+                    }
+                }
+            }
+        }
+        println!("{:?}", arc_vertex(&sites));
+    }
+}

@@ -1,0 +1,17 @@
+//! What the insertion of a circular arc asks of the current diagram, and
+//! where the vertices of arcs go: the arc's conflict with a vertex's
+//! circle, the side of the arc a site lies on (the left-degree of the path
+//! search), the cone of influence (the arcs' strip), the margin of an edge
+//! cut twice (`arc_predicates`); the vertex of three sites among which is
+//! an arc (`arc_vertex`); points along the conic edge between two sites
+//! (`bisector`).
+//!
+//! Unlike segments, these decisions are taken in floating point with
+//! tolerances, not certified: the topology stays valid whatever they
+//! answer (the construction keeps P3–P5 by bookkeeping), but a near tie
+//! may be decided wrong. The answers use the same types as the segments'
+//! (`segments::segment_predicates`), so the insertion asks both alike.
+
+pub(crate) mod arc_predicates;
+pub(crate) mod arc_vertex;
+pub(crate) mod bisector;
