@@ -25,11 +25,13 @@
  * --allow-known does not excuse.
  *
  *   fuzz_c_api [--seed N] [--iterations N] [--seconds S] [--case SEED]
- *              [--allow-known] [--no-shrink] [--shrink-seconds S]
+ *              [--allow-known] [--no-shrink] [--shrink-seconds S] [--arcs]
  *
  * --case reruns one case by the seed a failure prints; shrinking a
  * signature stops after --shrink-seconds (default 20) or at the end of
  * --seconds; with --allow-known the known signatures are not shrunk.
+ * Arcs come into the cases once a probe finds that the library builds them
+ * and refuses crossing arcs; --arcs puts them in regardless.
  *
  * Plain C99 plus POSIX; reads only the public header. */
 
@@ -106,6 +108,7 @@ static size_t op_doubles(const op *o) { return op_width(o) * o->n; }
 /* Whether the library builds inputs with arcs (a probe build at start):
  * until it does, no case has arcs, so that the cases stay as they were. */
 static int arcs_buildable = 0;
+static int force_arcs = 0; /* --arcs: arcs in the cases whatever the probe says */
 
 /* ---- Outcome bookkeeping. ------------------------------------------------ */
 #define N_STATUS 13
@@ -1246,7 +1249,9 @@ static void exercise(ctx *c, const input *in, uint64_t qseed) {
     int split = in->split;
     int chk = -1;
     if (chance(&r, 50)) chk = outcome(c, "segvoronoi_builder_check", segvoronoi_builder_check(b), S_INTER, b);
-    int st = outcome(c, "segvoronoi_builder_build", segvoronoi_builder_build(b, &d), S_INTER | S_RANGE, b);
+    /* with arcs, polygons and splitting are INVALID_ARGUMENT (not supported yet) */
+    unsigned with_arcs = segvoronoi_builder_arc_count(b) > 0 ? S_ARG : 0;
+    int st = outcome(c, "segvoronoi_builder_build", segvoronoi_builder_build(b, &d), S_INTER | S_RANGE | with_arcs, b);
     if (c->record) total.builds++, total.build_status[st < N_STATUS ? st : N_STATUS]++, total.split_builds += split;
     if (st == SEGVORONOI_STATUS_INTERSECTING && split)
         inconsistent(c, "segvoronoi_builder_build", "INTERSECTING with splitting", "%s", segvoronoi_builder_last_error(b));
@@ -1261,7 +1266,7 @@ static void exercise(ctx *c, const input *in, uint64_t qseed) {
         segvoronoi_builder_set_split_crossings(b, 1);
         split = 1;
         snprintf(c->note, sizeof c->note, "after INTERSECTING, built again with segvoronoi_builder_set_split_crossings(b, 1)");
-        st = outcome(c, "segvoronoi_builder_build", segvoronoi_builder_build(b, &d), S_INTER | S_RANGE, b);
+        st = outcome(c, "segvoronoi_builder_build", segvoronoi_builder_build(b, &d), S_INTER | S_RANGE | with_arcs, b);
         c->note[0] = 0;
         if (c->record) total.builds++, total.build_status[st < N_STATUS ? st : N_STATUS]++, total.split_builds++, total.retried_with_split++;
         if (st == SEGVORONOI_STATUS_INTERSECTING)
@@ -1471,19 +1476,25 @@ int main(int argc, char **argv) {
         else if (strcmp(a, "--allow-known") == 0) allow_known = 1;
         else if (strcmp(a, "--quiet") == 0) quiet = 1;
         else if (strcmp(a, "--no-shrink") == 0) no_shrink = 1;
+        else if (strcmp(a, "--arcs") == 0) force_arcs = arcs_buildable = 1;
         else if (strcmp(a, "--shrink-seconds") == 0 && v) shrink_seconds = strtod(v, NULL), ++i;
         else {
-            fprintf(stderr, "usage: %s [--seed N] [--iterations N] [--seconds S] [--case SEED] [--allow-known] [--no-shrink] [--shrink-seconds S]\n", argv[0]);
+            fprintf(stderr, "usage: %s [--seed N] [--iterations N] [--seconds S] [--case SEED] [--allow-known] [--no-shrink] [--shrink-seconds S] [--arcs]\n", argv[0]);
             return 2;
         }
     }
     if (!iterations && !seconds) iterations = 1000;
     {
-        /* arcs in the cases only once the library builds them */
+        /* arcs in the cases only once the library builds them and refuses
+           crossing arcs (random arcs cross often; unchecked, they are no
+           valid input), unless --arcs forces them */
         segvoronoi_builder *b = segvoronoi_builder_new();
         segvoronoi_diagram *d = NULL;
-        arcs_buildable = b != NULL && segvoronoi_builder_add_arc(b, 0, 0, 1, 0, 1, NULL) == SEGVORONOI_STATUS_OK &&
-                         segvoronoi_builder_build(b, &d) == SEGVORONOI_STATUS_OK;
+        int builds = b != NULL && segvoronoi_builder_add_arc(b, 0, 0, 1, 0, 1, NULL) == SEGVORONOI_STATUS_OK &&
+                     segvoronoi_builder_build(b, &d) == SEGVORONOI_STATUS_OK;
+        int checks = b != NULL && segvoronoi_builder_add_arc(b, 0.5, -1, 0.5, 1, 1, NULL) == SEGVORONOI_STATUS_OK &&
+                     segvoronoi_builder_check(b) == SEGVORONOI_STATUS_INTERSECTING;
+        if (!force_arcs) arcs_buildable = builds && checks;
         segvoronoi_diagram_free(d);
         segvoronoi_builder_free(b);
     }

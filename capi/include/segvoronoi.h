@@ -732,13 +732,16 @@ size_t segvoronoi_builder_point_count(const struct segvoronoi_builder *builder);
 // Builds the diagram of everything added so far and stores it in `*out`.
 // The builder is not consumed and stays as it was.
 //
-// Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments cross or
-// overlap or a point lies inside a segment (the message names both input
-// indices). `SEGVORONOI_STATUS_UNSUPPORTED_RANGE` when the input's
+// Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments or arcs cross
+// or overlap or a point lies inside a segment or an arc (the message names
+// both inputs). `SEGVORONOI_STATUS_UNSUPPORTED_RANGE` when the input's
 // coordinates span more than the exact range (largest magnitude over
 // `2^480`, about 3e144, times the smallest nonzero magnitude or difference
 // between coordinates) and the build at that span did not check out (see
-// the README's "exact range"): not a bug. `SEGVORONOI_STATUS_INTERNAL` when
+// the README's "exact range"): not a bug. `SEGVORONOI_STATUS_INVALID_ARGUMENT`
+// when arcs come together with polygons or with splitting
+// (`segvoronoi_builder_set_split_crossings`), which this version does not
+// build yet (the message says which). `SEGVORONOI_STATUS_INTERNAL` when
 // the construction could not complete a valid diagram, or panicked: a bug
 // in segvoronoi (none is known), never an invalid diagram;
 // `segvoronoi_last_error_message` says what failed. Please report the
@@ -1382,6 +1385,32 @@ enum segvoronoi_status segvoronoi_diagram_edge_polyline(const struct segvoronoi_
 enum segvoronoi_status segvoronoi_diagram_edge_bezier(const struct segvoronoi_diagram *diagram,
                                                       size_t edge_index,
                                                       double *xy);
+
+// The rational quadratic Bézier curve of the finite curved edge
+// `edge_index` (a conic beside a circular arc, or a parabola):
+// `xy = {x0, y0, x1, y1, x2, y2}` (six doubles) gets its start (the
+// position of `ends[0]`), its control point (where the edge's tangents at
+// its ends meet) and its end (the position of `ends[1]`), and `*weight`
+// the control point's weight `w` (the ends' weights are 1), so that
+// `((1-u)² p0 + 2u(1-u) w p1 + u² p2) / ((1-u)² + 2u(1-u) w + u²)` for `u`
+// in `[0, 1]` runs along the edge: `w = 1` for a parabola (then the curve
+// of `segvoronoi_diagram_edge_bezier`), `w < 1` for an ellipse, `w > 1` for
+// a hyperbola. Conics are exactly rational quadratics, so this is the
+// edge itself to the rounding of its numbers; a conic's weight is fitted
+// through the edge's point halfway between its ends. Since 0.2.
+//
+// Ownership: `xy` and `weight` are caller-owned memory, written only on
+// success.
+// Errors: `NULL_ARGUMENT` (`diagram`, `xy` or `weight`), `OUT_OF_RANGE`
+// (`edge_index`), `INVALID_ARGUMENT` (a straight edge, see
+// `segvoronoi_diagram_edge_shape`; a ray or a line; or a piece whose
+// tangents at its ends do not meet ahead of both, one that turns by half a
+// turn or more: sample it with `segvoronoi_diagram_edge_polyline`).
+// Thread safety: reads the diagram only; safe from many threads at once.
+enum segvoronoi_status segvoronoi_diagram_edge_rational_bezier(const struct segvoronoi_diagram *diagram,
+                                                               size_t edge_index,
+                                                               double *xy,
+                                                               double *weight);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -319,13 +319,16 @@ pub unsafe extern "C" fn segvoronoi_builder_point_count(builder: *const segvoron
 /// Builds the diagram of everything added so far and stores it in `*out`.
 /// The builder is not consumed and stays as it was.
 ///
-/// Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments cross or
-/// overlap or a point lies inside a segment (the message names both input
-/// indices). `SEGVORONOI_STATUS_UNSUPPORTED_RANGE` when the input's
+/// Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments or arcs cross
+/// or overlap or a point lies inside a segment or an arc (the message names
+/// both inputs). `SEGVORONOI_STATUS_UNSUPPORTED_RANGE` when the input's
 /// coordinates span more than the exact range (largest magnitude over
 /// `2^480`, about 3e144, times the smallest nonzero magnitude or difference
 /// between coordinates) and the build at that span did not check out (see
-/// the README's "exact range"): not a bug. `SEGVORONOI_STATUS_INTERNAL` when
+/// the README's "exact range"): not a bug. `SEGVORONOI_STATUS_INVALID_ARGUMENT`
+/// when arcs come together with polygons or with splitting
+/// (`segvoronoi_builder_set_split_crossings`), which this version does not
+/// build yet (the message says which). `SEGVORONOI_STATUS_INTERNAL` when
 /// the construction could not complete a valid diagram, or panicked: a bug
 /// in segvoronoi (none is known), never an invalid diagram;
 /// `segvoronoi_last_error_message` says what failed. Please report the

@@ -1,6 +1,8 @@
-//! Edge geometry in C: the shape of an edge (straight or parabolic), a
-//! polyline along it, and the Bézier curve of an arc. Delegates to
-//! `Diagram::edge_shape`, `Diagram::edge_polyline` and `Diagram::edge_bezier`.
+//! Edge geometry in C: the shape of an edge (straight, parabolic, or a
+//! conic beside a circular arc), a polyline along it, and the (rational)
+//! Bézier curve of a curved one. Delegates to `Diagram::edge_shape`,
+//! `Diagram::edge_polyline`, `Diagram::edge_bezier` and
+//! `Diagram::edge_rational_bezier`.
 
 use super::diagram::{segvoronoi_diagram, with_diagram};
 use super::offset::not_positive;
@@ -179,6 +181,50 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_bezier(
                 format!("edge {edge_index} is no finite parabolic arc (straight, a ray or a line, or its control point is beyond double)"),
             ),
         }
+    })
+}
+
+/// The rational quadratic Bézier curve of the finite curved edge
+/// `edge_index` (a conic beside a circular arc, or a parabola):
+/// `xy = {x0, y0, x1, y1, x2, y2}` (six doubles) gets its start (the
+/// position of `ends[0]`), its control point (where the edge's tangents at
+/// its ends meet) and its end (the position of `ends[1]`), and `*weight`
+/// the control point's weight `w` (the ends' weights are 1), so that
+/// `((1-u)² p0 + 2u(1-u) w p1 + u² p2) / ((1-u)² + 2u(1-u) w + u²)` for `u`
+/// in `[0, 1]` runs along the edge: `w = 1` for a parabola (then the curve
+/// of `segvoronoi_diagram_edge_bezier`), `w < 1` for an ellipse, `w > 1` for
+/// a hyperbola. Conics are exactly rational quadratics, so this is the
+/// edge itself to the rounding of its numbers; a conic's weight is fitted
+/// through the edge's point halfway between its ends. Since 0.2.
+///
+/// Ownership: `xy` and `weight` are caller-owned memory, written only on
+/// success.
+/// Errors: `NULL_ARGUMENT` (`diagram`, `xy` or `weight`), `OUT_OF_RANGE`
+/// (`edge_index`), `INVALID_ARGUMENT` (a straight edge, see
+/// `segvoronoi_diagram_edge_shape`; a ray or a line; or a piece whose
+/// tangents at its ends do not meet ahead of both, one that turns by half a
+/// turn or more: sample it with `segvoronoi_diagram_edge_polyline`).
+/// Thread safety: reads the diagram only; safe from many threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_edge_rational_bezier(
+    diagram: *const segvoronoi_diagram,
+    edge_index: usize,
+    xy: *mut f64,
+    weight: *mut f64,
+) -> segvoronoi_status {
+    require_non_null!(xy, weight);
+    with_diagram(diagram, |d| {
+        let Some(edge) = edge_id(d, edge_index) else { return out_of_range("edge", edge_index, d.edge_count()) };
+        if let Some((curve, w)) = d.edge_rational_bezier(edge) {
+            write_out(xy.cast::<[[f64; 2]; 3]>(), curve.map(<[f64; 2]>::from));
+            return write_out(weight, w);
+        }
+        let why = match (d.edge(edge).map(|e| e.is_infinite()), d.edge_shape(edge)) {
+            (Some(true), _) => "a ray or a line: it has no finite curve",
+            (_, Some(EdgeShape::Line)) => "straight (see segvoronoi_diagram_edge_shape)",
+            _ => "a piece whose end tangents do not meet ahead of both (it turns by half a turn or more): sample it with segvoronoi_diagram_edge_polyline",
+        };
+        fail(segvoronoi_status::InvalidArgument, format!("edge {edge_index} has no rational Bézier curve: it is {why}"))
     })
 }
 
