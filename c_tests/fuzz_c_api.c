@@ -878,6 +878,13 @@ static void query_edges(ctx *c, const segvoronoi_diagram *d, rng *r, double ext)
             if (sh.kind != SEGVORONOI_EDGE_PARABOLA || inf)
                 inconsistent(c, "segvoronoi_diagram_edge_bezier", "not a finite arc", "OK for kind %u infinite %d", sh.kind, inf);
         }
+        double rb[6], w = 0;
+        if (outcome(c, "segvoronoi_diagram_edge_rational_bezier", segvoronoi_diagram_edge_rational_bezier(d, e, rb, &w), S_ARG, NULL) == 0) {
+            for (int k = 0; k < 6; ++k) finite(c, "segvoronoi_diagram_edge_rational_bezier", "xy", rb[k]);
+            if (!(w > 0) || !isfinite(w)) inconsistent(c, "segvoronoi_diagram_edge_rational_bezier", "weight", "w = %a", w);
+            if (sh.kind == SEGVORONOI_EDGE_LINE || inf)
+                inconsistent(c, "segvoronoi_diagram_edge_rational_bezier", "not a finite curve", "OK for kind %u infinite %d", sh.kind, inf);
+        }
         double span = inf ? 0 : hypot(ed.ends[1].x - ed.ends[0].x, ed.ends[1].y - ed.ends[0].y);
         double tol = rand_tolerance(r, isfinite(span) ? fmax(span, ext) : ext, &tol_bad);
         snprintf(c->note, sizeof c->note, "edge %zu, tolerance %a", e, tol);
@@ -913,6 +920,8 @@ static void query_edges(ctx *c, const segvoronoi_diagram *d, rng *r, double ext)
     expect(c, "segvoronoi_diagram_half_edge_cell", "bad id", segvoronoi_diagram_half_edge_cell(d, UINT32_MAX, &out), SEGVORONOI_STATUS_OUT_OF_RANGE, NULL);
     double bz[6];
     expect(c, "segvoronoi_diagram_edge_bezier", "bad id", segvoronoi_diagram_edge_bezier(d, ne, bz), SEGVORONOI_STATUS_OUT_OF_RANGE, NULL);
+    double w;
+    expect(c, "segvoronoi_diagram_edge_rational_bezier", "bad id", segvoronoi_diagram_edge_rational_bezier(d, ne, bz, &w), SEGVORONOI_STATUS_OUT_OF_RANGE, NULL);
     size_t count;
     expect(c, "segvoronoi_diagram_edge_polyline", "bad id", segvoronoi_diagram_edge_polyline(d, ne, 1, NULL, 0, &count), SEGVORONOI_STATUS_OUT_OF_RANGE, NULL);
     if (ne) expect(c, "segvoronoi_diagram_edge_polyline", "NULL buffer", segvoronoi_diagram_edge_polyline(d, 0, 1, NULL, 3, &count), SEGVORONOI_STATUS_NULL_ARGUMENT, NULL);
