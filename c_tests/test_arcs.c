@@ -529,6 +529,30 @@ static size_t check_arc_diagram(const segvoronoi_diagram *d, const segvoronoi_bu
         CHECK(segvoronoi_diagram_arc_site_count(NULL) == 0);
     }
 
+    /* the nearest site of points around the input, against brute force */
+    {
+        uint32_t hint = SEGVORONOI_NO_SITE, got = SEGVORONOI_NO_SITE;
+        char *text = NULL;
+        size_t length = 0;
+        double cx = 0, cy = 0, span = extent > 0 ? extent : 1;
+        for (i = 0; i < s.n; ++i) cx += s.site[i].x / (double)s.n, cy += s.site[i].y / (double)s.n;
+        for (i = 0; i < 200; ++i) {
+            double a = 2.399963229728653 * (double)i, r = span * sqrt((double)i / 200.0);
+            double x = cx + r * cos(a), y = cy + r * sin(a);
+            CHECK_STATUS(segvoronoi_diagram_nearest_site(d, x, y, hint, &got), SEGVORONOI_STATUS_OK);
+            if (got >= s.n) {
+                CHECK(got < s.n);
+                break;
+            }
+            CHECK_NEAR(site_distance(&s, got, x, y), nearest_distance(&s, x, y), tol);
+            hint = got;
+        }
+        /* the topology text names every site */
+        CHECK_STATUS(segvoronoi_diagram_topology(d, SEGVORONOI_TOPOLOGY_VORONOI_PAIRS, &text, &length), SEGVORONOI_STATUS_OK);
+        CHECK(text != NULL && length > 0 && strlen(text) == length);
+        segvoronoi_string_free(text);
+    }
+
     /* vertices: at their clearance from each of their sites, none nearer */
     for (i = 0; i < nv; ++i) {
         segvoronoi_vertex v = {.struct_size = sizeof v};
@@ -726,6 +750,33 @@ static double nearest_distance(const sites *s, double x, double y) {
     return nearest;
 }
 
+/* Degenerate families: a full circle as two half arcs with a point at its
+ * centre (equidistant from all of the circle), and concentric half circles
+ * of radius 1 and 2 facing each other's ends. */
+static void test_degenerate_arcs(void) {
+    segvoronoi_builder *b = segvoronoi_builder_new();
+    segvoronoi_diagram *d;
+    CHECK_STATUS(segvoronoi_builder_add_arc(b, 0, 0, 2, 0, 1, NULL), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_add_arc(b, 2, 0, 0, 0, 1, NULL), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_add_point(b, 1, 0), SEGVORONOI_STATUS_OK);
+    d = build_or_skip(b, "a full circle and its centre");
+    if (d != NULL) {
+        check_arc_diagram(d, b);
+        segvoronoi_diagram_free(d);
+    }
+    segvoronoi_builder_free(b);
+
+    b = segvoronoi_builder_new();
+    CHECK_STATUS(segvoronoi_builder_add_arc(b, 1, 0, -1, 0, 1, NULL), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_add_arc(b, -2, 0, 2, 0, 1, NULL), SEGVORONOI_STATUS_OK);
+    d = build_or_skip(b, "concentric half circles");
+    if (d != NULL) {
+        check_arc_diagram(d, b);
+        segvoronoi_diagram_free(d);
+    }
+    segvoronoi_builder_free(b);
+}
+
 /* The offset of `d` at `distance`: every point of every loop's polyline at
  * |distance| from the nearest site, or (while the library does not trace
  * offsets of arcs) INVALID_ARGUMENT naming an arc site, noted as skipped. */
@@ -888,6 +939,7 @@ int segvoronoi_run_arc_tests(void) {
     test_rounded_rectangle_diagram();
     test_slot_diagram();
     test_mixed_diagram();
+    test_degenerate_arcs();
     test_domain_with_arcs();
     test_crossing_arcs();
     fprintf(stderr, "segvoronoi C arc tests: %d checks, %d failed, %d parts skipped\n", checks, failures, skipped);
