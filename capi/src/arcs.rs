@@ -382,7 +382,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_site_of_arc(
     require_non_null!(out_site);
     with_diagram(diagram, |d| match d.site_of_arc(input_index) {
         Some(s) => write_out(out_site, s.index() as u32),
-        None => out_of_range("input arc", input_index, input_arc_count(d)),
+        None => out_of_range("input arc", input_index, d.stats().input_arcs),
     })
 }
 
@@ -402,26 +402,4 @@ pub(crate) fn arc_of_site(d: &Diagram, index: usize) -> Result<CircularArc, segv
             Err(fail(segvoronoi_status::InvalidArgument, format!("site {index} is {kind} site, not an arc ({arcs})")))
         }
     }
-}
-
-/// The number of input arcs of a diagram (for messages): the first index
-/// without a site, found by doubling and halving.
-pub(crate) fn input_arc_count(d: &Diagram) -> usize {
-    if d.site_of_arc(0).is_none() {
-        return 0;
-    }
-    let mut high = 1usize;
-    while d.site_of_arc(high).is_some() {
-        high = high.saturating_mul(2);
-    }
-    let mut low = high / 2; // has a site; `high` has none
-    while high - low > 1 {
-        let mid = low + (high - low) / 2;
-        if d.site_of_arc(mid).is_some() {
-            low = mid;
-        } else {
-            high = mid;
-        }
-    }
-    high
 }

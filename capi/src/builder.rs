@@ -443,7 +443,9 @@ pub unsafe extern "C" fn segvoronoi_builder_last_error(builder: *const segvorono
 
 /// The input indices that the last failed call on this builder named (the
 /// numbers in its `segvoronoi_builder_last_error` message): for
-/// `SEGVORONOI_STATUS_INVALID_COORDINATE` the point's or segment's index,
+/// `SEGVORONOI_STATUS_INVALID_COORDINATE` the point's, segment's or arc's
+/// index (a bulged polyline's vertex), for `SEGVORONOI_STATUS_INVALID_ARC`
+/// the arc's index (a bulged polyline's vertex),
 /// for `SEGVORONOI_STATUS_INTERSECTING` both (two segment indices, or the
 /// point's and then the segment's), for `SEGVORONOI_STATUS_INTERNAL` the
 /// segment that failed when one did; none after a successful call. Writes

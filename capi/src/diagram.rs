@@ -599,7 +599,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_stats(
                 snap_rounds: s.snap_rounds,
                 split_at_vertices: s.split_at_vertices,
                 cancelled_ring_pieces: s.cancelled_ring_pieces,
-                input_arcs: super::arcs::input_arc_count(d),
+                input_arcs: s.input_arcs,
                 arc_sites: d.arc_site_count(),
             },
         )
