@@ -382,7 +382,9 @@ pub unsafe extern "C" fn segvoronoi_builder_build(
 /// (`segvoronoi_diagram_pieces_of_input`, `_inputs_of_piece`), each within
 /// `segvoronoi_diagram_max_split_displacement` of its input segments, and
 /// polygons bound the even-odd region of their split rings (see
-/// `Builder::split_crossings` in the Rust documentation).
+/// `Builder::split_crossings` in the Rust documentation). Arcs are not
+/// split yet: a build with arcs and splitting on is
+/// `SEGVORONOI_STATUS_INVALID_ARGUMENT`.
 ///
 /// Errors: `NULL_ARGUMENT`.
 #[no_mangle]
@@ -397,9 +399,10 @@ pub unsafe extern "C" fn segvoronoi_builder_set_split_crossings(builder: *mut se
 }
 
 /// Checks everything added so far as `segvoronoi_builder_build` does first,
-/// without building: `SEGVORONOI_STATUS_OK` when no two segments cross or
-/// overlap and no point lies inside a segment (shared endpoints are fine).
-/// Exact, O(n log n) expected time for n points and segments.
+/// without building: `SEGVORONOI_STATUS_OK` when no two segments or arcs
+/// cross or overlap and no point lies inside a segment or an arc (shared
+/// endpoints are fine). Exact, O(n log n) expected time for n points and
+/// segments.
 ///
 /// Errors: `SEGVORONOI_STATUS_INTERSECTING` with the same message and
 /// indices `_build` would give (`segvoronoi_builder_last_error`,

@@ -148,8 +148,8 @@ pub struct segvoronoi_edge {
     /// `true` when the edge is unbounded: a ray or a line, with an end at
     /// infinity (`vertex == SEGVORONOI_NO_VERTEX`).
     pub is_infinite: bool,
-    /// `true` when the edge is a separator: between a segment and one of
-    /// its own endpoints (the medial axis leaves these out). Since 0.2.
+    /// `true` when the edge is a separator: between a segment or an arc and
+    /// one of its own endpoints (the medial axis leaves these out). Since 0.2.
     pub is_separator: bool,
 }
 versioned!(segvoronoi_edge, is_infinite: bool);
