@@ -141,7 +141,8 @@
 // parabola, ellipse or hyperbola branch. Its two sites are the edge's
 // (`segvoronoi_diagram_edge`); the shape's coordinates are 0.
 // `segvoronoi_diagram_edge_polyline` samples it, and
-// `segvoronoi_diagram_edge_rational_bezier` gives it exactly. Since 0.2.
+// `segvoronoi_diagram_edge_rational_bezier` gives a curved one exactly.
+// Since 0.2.
 #define SEGVORONOI_EDGE_CONIC 2
 
 // Result of every fallible call. The numbers are stable across versions.

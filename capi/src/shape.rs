@@ -23,7 +23,8 @@ pub const SEGVORONOI_EDGE_PARABOLA: u32 = 1;
 /// parabola, ellipse or hyperbola branch. Its two sites are the edge's
 /// (`segvoronoi_diagram_edge`); the shape's coordinates are 0.
 /// `segvoronoi_diagram_edge_polyline` samples it, and
-/// `segvoronoi_diagram_edge_rational_bezier` gives it exactly. Since 0.2.
+/// `segvoronoi_diagram_edge_rational_bezier` gives a curved one exactly.
+/// Since 0.2.
 pub const SEGVORONOI_EDGE_CONIC: u32 = 2;
 
 /// The shape of an edge. For `SEGVORONOI_EDGE_LINE` and
