@@ -19,6 +19,16 @@ impl Construction {
         self.fresh_epoch();
         let found = self.find_segment_path(a, b);
         self.grow_segment_tree(a, b);
+        if std::env::var("SEGV_DEBUG").is_ok() {
+            eprintln!("arc {a:?}->{b:?} found {found}");
+            for v in 0..self.store.vertex_count() {
+                let v = VertexId::from_index(v);
+                if self.store.sites_of(v)[0] == crate::diagram::SiteId(crate::diagram::NONE) { continue; }
+                let inf = self.store.is_at_infinity(v);
+                let conflict = if inf { self.segment_conflict(v, a, b) } else { self.segment_depth(v, a, b).position() == crate::geometry::predicates::CirclePosition::Inside };
+                eprintln!("  v{} sites {:?} pos {:?} r {} inf {inf} conflict {conflict} tree {}", v.index(), self.store.sites_of(v), self.store.position[v.index()], self.store.clearance[v.index()], self.tree.contains(&v));
+            }
+        }
         self.replace_tree(e);
         self.inserting_arc = None;
         if found {

@@ -277,7 +277,26 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
         }
     }
     let residual: f64 = sites.iter().map(|s| (s.distance(centre) - radius.max(0.0)).abs()).sum();
-    let touching = sites.map(|s| s.nearest_point(centre));
+    // where two sites touch at one point (a piece at its end, beside that
+    // end's point site or another piece ending there), the piece is taken
+    // a hair along itself from there: the limit order of the touching
+    // points as the vertex moves off the separator to its side
+    let plain = sites.map(|s| s.nearest_point(centre));
+    let touching: [Point; 3] = std::array::from_fn(|k| {
+        let shared = (0..3).any(|j| j != k && plain[j] == plain[k]);
+        match sites[k] {
+            Site::Segment { a, b } if shared && (plain[k] == a || plain[k] == b) => {
+                let far = if plain[k] == a { b } else { a };
+                Point::new(plain[k].x + 1e-6 * (far.x - plain[k].x), plain[k].y + 1e-6 * (far.y - plain[k].y))
+            }
+            Site::Arc(arc) if shared && (plain[k] == arc.start() || plain[k] == arc.end()) => {
+                let t = arc.tangent_into(plain[k]);
+                let step = 1e-6 * arc.radius().min(arc.start().distance(arc.end()));
+                Point::new(plain[k].x + step * t.x, plain[k].y + step * t.y)
+            }
+            _ => plain[k],
+        }
+    });
     let order = orientation_value(touching[0], touching[1], touching[2]);
     // touching points apart and in clockwise order: the other circle
     if order < -1e-12 * scale * scale {
@@ -288,6 +307,78 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
 
 fn orientation_value(a: Point, b: Point, c: Point) -> f64 {
     (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)
+}
+
+/// The unit direction of the edge at infinity between hull sites `x → y`
+/// (the outside on the left) when an arc is among them: where the two
+/// reach equally far out (their support functions agree) and `x`'s
+/// farthest point comes before `y`'s along the supporting line, the root
+/// nearest `guess`. `None` when no root is found.
+pub(crate) fn direction_at_infinity(x: &Site, y: &Site, guess: Point) -> Option<Point> {
+    // an arc and its own endpoint: their separator, the radial ray out
+    // through the endpoint (the support functions only touch there)
+    for (s, t) in [(x, y), (y, x)] {
+        if let (Site::Arc(arc), Some(e)) = (*s, t.as_point()) {
+            if arc.start() == e || arc.end() == e {
+                let (dx, dy) = (e.x - arc.centre().x, e.y - arc.centre().y);
+                let n = dx.hypot(dy);
+                return (n > 0.0).then(|| Point::new(dx / n, dy / n));
+            }
+        }
+    }
+    let origin = local_origin(&[*x, *y, *x]);
+    let (x, y) = (shifted(x, origin), shifted(y, origin));
+    let support = |s: &Site, d: Point| -> (f64, Point) {
+        match *s {
+            Site::Arc(arc) if arc.spans(Point::new(arc.centre().x + d.x, arc.centre().y + d.y)) => {
+                let c = arc.centre();
+                (d.x * c.x + d.y * c.y + arc.radius(), Point::new(c.x + arc.radius() * d.x, c.y + arc.radius() * d.y))
+            }
+            _ => {
+                let [p, q] = s.ends();
+                let (hp, hq) = (d.x * p.x + d.y * p.y, d.x * q.x + d.y * q.y);
+                if hp >= hq {
+                    (hp, p)
+                } else {
+                    (hq, q)
+                }
+            }
+        }
+    };
+    let at = |theta: f64| Point::new(theta.cos(), theta.sin());
+    let f = |theta: f64| support(&x, at(theta)).0 - support(&y, at(theta)).0;
+    const STEPS: usize = 2048;
+    let step = 2.0 * std::f64::consts::PI / STEPS as f64;
+    let mut best: Option<(f64, Point)> = None;
+    for k in 0..STEPS {
+        let (mut lo, mut hi) = (k as f64 * step, (k + 1) as f64 * step);
+        let (mut flo, fhi) = (f(lo), f(hi));
+        if flo == 0.0 || flo.signum() == fhi.signum() {
+            continue;
+        }
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            let fm = f(mid);
+            if fm.signum() == flo.signum() {
+                lo = mid;
+                flo = fm;
+            } else {
+                hi = mid;
+            }
+        }
+        let d = at(0.5 * (lo + hi));
+        let (tx, ty) = (support(&x, d).1, support(&y, d).1);
+        // d is the left normal of tx → ty (as for two points)
+        let left = (ty.x - tx.x) * d.y - (ty.y - tx.y) * d.x;
+        if left < 0.0 {
+            continue; // infinity would lie right of x → y
+        }
+        let closeness = d.x * guess.x + d.y * guess.y;
+        if best.map_or(true, |(c, _)| closeness > c) {
+            best = Some((closeness, d));
+        }
+    }
+    best.map(|(_, d)| d)
 }
 
 /// A few Newton steps on the true distances `d_k(x) − t = 0`.

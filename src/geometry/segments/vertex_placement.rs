@@ -162,6 +162,10 @@ fn among_sites(sites: &[Site; 3]) -> (Point, f64) {
 /// shares with a point site, then its other one); the zero vector when
 /// they coincide.
 pub(crate) fn direction_at_infinity(x: Site, y: Site) -> Point {
+    if matches!(x, Site::Arc(_)) || matches!(y, Site::Arc(_)) {
+        let guess = left_normal(x.midpoint(), y.midpoint()).unwrap_or_default();
+        return crate::geometry::arcs::arc_vertex::direction_at_infinity(&x, &y, guess).unwrap_or(guess);
+    }
     let (p, q) = match (x, y) {
         (Site::Segment { .. }, Site::Point(q)) => (x.other_endpoint(q).unwrap_or(x.midpoint()), q),
         (Site::Point(p), Site::Segment { .. }) => (p, y.other_endpoint(p).unwrap_or(y.midpoint())),
