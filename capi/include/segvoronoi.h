@@ -1111,8 +1111,9 @@ enum segvoronoi_status segvoronoi_medial_axis_sample_chain(const struct segvoron
 // as `{x, y, clearance}` in `xyr[0..3]`.
 //
 // Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (chain or piece), `INVALID_ARGUMENT`
-// (`t` outside `[0, 1]`, or a piece that reaches infinity, or a conic
-// piece beside a circular arc where the library cannot evaluate one),
+// (`t` outside `[0, 1]`, or a piece that reaches infinity, or a curved
+// conic piece beside a circular arc, which this version cannot evaluate
+// at a parameter: `segvoronoi_medial_axis_sample_chain` samples it),
 // `UNSUPPORTED_RANGE` (a point that f64 cannot compute, only on inputs
 // beyond the exact range); then `xyr` is untouched.
 enum segvoronoi_status segvoronoi_medial_axis_piece_at(const struct segvoronoi_medial_axis *axis,
