@@ -254,7 +254,8 @@ typedef struct segvoronoi_arc {
   // bulge of that arc, rounded.
   double bulge;
   // The signed angle swept from `start` to `end`, in radians, in
-  // `(-2π, 2π)`: positive counter-clockwise.
+  // `(-2π, 2π)`: positive counter-clockwise (`4 atan(bulge)` for an arc
+  // given by its bulge).
   double sweep;
   // Whether the arc runs counter-clockwise from `start` to `end`.
   bool counter_clockwise;

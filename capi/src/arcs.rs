@@ -38,7 +38,8 @@ pub struct segvoronoi_arc {
     /// bulge of that arc, rounded.
     pub bulge: f64,
     /// The signed angle swept from `start` to `end`, in radians, in
-    /// `(-2π, 2π)`: positive counter-clockwise.
+    /// `(-2π, 2π)`: positive counter-clockwise (`4 atan(bulge)` for an arc
+    /// given by its bulge).
     pub sweep: f64,
     /// Whether the arc runs counter-clockwise from `start` to `end`.
     pub counter_clockwise: bool,
@@ -54,13 +55,17 @@ versioned!(segvoronoi_arc, via: [f64; 2]);
 impl From<CircularArc> for segvoronoi_arc {
     fn from(arc: CircularArc) -> Self {
         let via = arc.via();
+        // From the bulge as given, `4 atan(bulge)`, always within (-2π, 2π);
+        // `CircularArc::sweep` measures the angles about the rounded centre,
+        // which for an arc of a few ulps can make a half turn a whole one.
+        let sweep = if via.is_none() { 4.0 * arc.bulge().atan() } else { arc.sweep() };
         segvoronoi_arc {
             start: arc.start().into(),
             end: arc.end().into(),
             centre: arc.centre().into(),
             radius: arc.radius(),
             bulge: arc.bulge(),
-            sweep: arc.sweep(),
+            sweep,
             counter_clockwise: arc.is_counter_clockwise(),
             has_via: via.is_some(),
             via: via.map_or([0.0; 2], Into::into),
