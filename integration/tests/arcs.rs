@@ -406,8 +406,8 @@ fn debug_two_quarters() {
 #[ignore = "a debugging aid"]
 fn debug_xy() {
     let p = Point::new;
-    let x = Piece::Arc(CircularArc::through(p(0.5860536738139531, 1.688329738735034), p(0.6774860034388183, 1.393360214496651), p(0.37412067599131615, 1.3355989019014738)).unwrap());
-    let y = Piece::Segment(p(1.5862830710843003, 1.2351925335102054), p(1.7091949701180797, 1.2075232970850867));
+    let x = Piece::Point(p(4.414853528807503e-6, 2.55279099708072e-7));
+    let y = Piece::Arc(CircularArc::from_bulge(p(4.103645997839492e-6, 4.444875403163561e-6), p(4.072980325062098e-6, 4.396651608325269e-6), -16.91563043820798).unwrap());
     let d = build(&[x, y]);
     for v in d.vertices() {
         println!("vertex {:?} at ({:.4}, {:.4}) r {:.4} sites {:?}", v.id, v.position.x, v.position.y, v.clearance, v.sites);

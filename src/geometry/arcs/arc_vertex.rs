@@ -32,9 +32,17 @@ use crate::geometry::site::Site;
 /// counter-clockwise order given; `None` when no candidate fits (the
 /// caller falls back as for other sites).
 pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
+    // near the origin and of size about 1 (a power of two: exact), so
+    // that the tolerances below mean the same at every magnitude
     let origin = local_origin(sites);
-    let local = sites.map(|s| shifted(&s, origin));
-    let scale = local.iter().map(site_size).fold(0.0f64, f64::max).max(f64::MIN_POSITIVE);
+    let shifted_sites = sites.map(|s| shifted(&s, origin));
+    let size = shifted_sites.iter().map(site_size).fold(0.0f64, f64::max);
+    if !(size > 0.0 && size.is_finite()) {
+        return None;
+    }
+    let unit = 2f64.powi(-(size.log2().round() as i32));
+    let local = shifted_sites.map(|s| s.scaled(unit));
+    let scale = local.iter().map(site_size).fold(0.0f64, f64::max);
     let mut best: Option<(f64, Point, f64)> = None;
     let options = local.map(|s| touchings(&s));
     for &t0 in &options[0] {
@@ -53,7 +61,8 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     }
     let (_, centre, radius) = best?;
     let (centre, radius) = polish(&local, centre, radius);
-    Some((Point::new(centre.x + origin.x, centre.y + origin.y), radius.max(0.0)))
+    let back = 1.0 / unit;
+    Some((Point::new(centre.x * back + origin.x, centre.y * back + origin.y), radius.max(0.0) * back))
 }
 
 /// Where a vertex may touch a site: a point at itself; a segment or an arc
@@ -282,17 +291,21 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
     // a hair along itself from there: the limit order of the touching
     // points as the vertex moves off the separator to its side
     let plain = sites.map(|s| s.nearest_point(centre));
+    let near = 1e-9 * (scale + radius.abs());
     let touching: [Point; 3] = std::array::from_fn(|k| {
-        let shared = (0..3).any(|j| j != k && plain[j] == plain[k]);
-        match sites[k] {
-            Site::Segment { a, b } if shared && (plain[k] == a || plain[k] == b) => {
-                let far = if plain[k] == a { b } else { a };
-                Point::new(plain[k].x + 1e-6 * (far.x - plain[k].x), plain[k].y + 1e-6 * (far.y - plain[k].y))
+        let [a, b] = sites[k].ends();
+        let end = [a, b].into_iter().find(|&e| {
+            plain[k].distance(e) <= near && (0..3).any(|j| j != k && plain[j].distance(e) <= near)
+        });
+        match (sites[k], end) {
+            (Site::Segment { .. }, Some(e)) => {
+                let far = if e == a { b } else { a };
+                Point::new(e.x + 1e-6 * (far.x - e.x), e.y + 1e-6 * (far.y - e.y))
             }
-            Site::Arc(arc) if shared && (plain[k] == arc.start() || plain[k] == arc.end()) => {
-                let t = arc.tangent_into(plain[k]);
+            (Site::Arc(arc), Some(e)) => {
+                let t = arc.tangent_into(e);
                 let step = 1e-6 * arc.radius().min(arc.start().distance(arc.end()));
-                Point::new(plain[k].x + step * t.x, plain[k].y + step * t.y)
+                Point::new(e.x + step * t.x, e.y + step * t.y)
             }
             _ => plain[k],
         }
@@ -513,8 +526,9 @@ mod debug_tests {
     #[test]
     fn debug_triple() {
         let p = Point::new;
-        let arc = CircularArc::from_bulge(p(2.5653053577611127, 0.49907584082533846), p(2.4460306712080997, 0.5367825416772518), -1.3448508542112902).unwrap();
-        let sites = [Site::Point(p(2.698588263057324, 2.7544267987067874)), Site::Point(p(2.5653053577611127, 0.49907584082533846)), Site::Arc(arc)];
+        let arc = CircularArc::through(p(0.5860536738139531, 1.688329738735034), p(0.6774860034388183, 1.393360214496651), p(0.37412067599131615, 1.3355989019014738)).unwrap();
+        let (a, b) = (p(1.5862830710843003, 1.2351925335102054), p(1.7091949701180797, 1.2075232970850867));
+        let sites = [Site::Segment { a, b }, Site::Point(b), Site::Arc(arc)];
         let origin = local_origin(&sites);
         let local = sites.map(|s| shifted(&s, origin));
         let scale = local.iter().map(site_size).fold(0.0f64, f64::max);
