@@ -315,7 +315,15 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
     if order < -1e-12 * scale * scale {
         return None;
     }
-    Some(residual)
+    // Two pieces touched at their common end with no point site there
+    // stand for that end's own vertex (a circle through it), which fits
+    // the distances too; it is this triple's vertex only where nothing
+    // else fits (a tangent join, where the two separators are one line).
+    let unbacked = (0..3)
+        .filter(|&k| matches!(touch[k], Touching::AtEnd(e) if !sites.iter().any(|s| s.as_point() == Some(e))))
+        .count();
+    let fitting = residual <= 1e-6 * (scale + radius.abs());
+    Some(if fitting { unbacked as f64 + residual / (scale + radius.abs()) } else { 10.0 + residual })
 }
 
 fn orientation_value(a: Point, b: Point, c: Point) -> f64 {
@@ -526,11 +534,15 @@ mod debug_tests {
     #[test]
     fn debug_triple() {
         let p = Point::new;
-        let arc = CircularArc::through(p(0.5860536738139531, 1.688329738735034), p(0.6774860034388183, 1.393360214496651), p(0.37412067599131615, 1.3355989019014738)).unwrap();
-        let (a, b) = (p(1.5862830710843003, 1.2351925335102054), p(1.7091949701180797, 1.2075232970850867));
-        let sites = [Site::Segment { a, b }, Site::Point(b), Site::Arc(arc)];
+        let arc1 = CircularArc::from_bulge(p(-3.365341295494898, -0.8634076946683307), p(-3.4563483427289916, -0.38961647773224206), 0.056736216684684246).unwrap();
+        let arc2 = CircularArc::from_bulge(p(-3.4563483427289916, -0.38961647773224206), p(-3.6721166247612738, -0.2677190730692256), -0.03755259995762972).unwrap();
+        let sites = [Site::Point(p(-3.6721166247612738, -0.2677190730692256)), Site::Arc(arc1), Site::Arc(arc2)];
         let origin = local_origin(&sites);
         let local = sites.map(|s| shifted(&s, origin));
+        let size = local.iter().map(site_size).fold(0.0f64, f64::max);
+        let unit = 2f64.powi(-(size.log2().round() as i32));
+        let local = local.map(|s| s.scaled(unit));
+        let origin = Point::new(origin.x * unit, origin.y * unit);
         let scale = local.iter().map(site_size).fold(0.0f64, f64::max);
         let options = local.map(|s| touchings(&s));
         for &t0 in &options[0] {
