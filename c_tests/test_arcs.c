@@ -15,10 +15,9 @@
  * (polygons with arcs are INVALID_ARGUMENT "not supported yet"), offsets
  * along arcs (INVALID_ARGUMENT naming the arc site), and the crossing
  * checks (while `segvoronoi_builder_check` passes crossing arcs). The
- * audit of the library's construction (degenerate families, random rounded
- * polygons), which the library is still being fixed on, reports a failing
- * part as LIBRARY with its input and does not count it unless
- * SEGVORONOI_ARCS_STRICT=1 is set. Everything else fails
+ * degenerate families (an audit of the library's construction, which is
+ * still being fixed on them) report a failing family as LIBRARY and do not
+ * count it unless SEGVORONOI_ARCS_STRICT=1 is set. Everything else fails
  * loudly.
  *
  * Built by c_tests/CMakeLists.txt as a downstream consumer of the installed
@@ -844,9 +843,12 @@ static double rng_uniform(void) {
 }
 
 /* Random convex polygons with every corner rounded (a fillet arc nearly
- * tangent to both sides: its ends are rounded to double, its bulge is
- * tan(turn / 4)) as closed bulged polylines, with a few points inside:
- * families nobody tuned for, checked as every diagram above. */
+ * tangent to both sides: its ends are rounded to double, its bulge a hair
+ * below tan(turn / 4), so that it touches the sides at its ends only: with
+ * the bulge itself, rounding makes about half of the joints cross by an
+ * ulp, which is no valid input) as closed bulged polylines, with a few
+ * points inside: families nobody tuned for, checked as every diagram
+ * above. */
 static void test_random_rounded_polygons(void) {
     int round, built = 0;
     for (round = 0; round < 12; ++round) {
@@ -872,7 +874,9 @@ static void test_random_rounded_polygons(void) {
             /* into the corner along the side before it, out along the side after */
             xy[4 * k] = vx[k] - t * ux, xy[4 * k + 1] = vy[k] - t * uy;
             xy[4 * k + 2] = vx[k] + t * wx, xy[4 * k + 3] = vy[k] + t * wy;
-            bulges[2 * k] = tan(turn / 4), bulges[2 * k + 1] = 0;
+            /* a hair less than the turn: the arc leaves each end a little into
+               the polygon, so that rounding cannot make it cross a side */
+            bulges[2 * k] = tan(turn / 4) * (1 - 1e-9), bulges[2 * k + 1] = 0;
         }
         CHECK_STATUS(segvoronoi_builder_add_bulged_polyline(b, xy, bulges, (size_t)(2 * n), true, NULL, NULL, NULL),
                      SEGVORONOI_STATUS_OK);
@@ -884,11 +888,11 @@ static void test_random_rounded_polygons(void) {
         snprintf(what, sizeof what, "random rounded polygon %d (%d corners)", round, n);
         d = build_or_skip(b, what);
         if (d != NULL) {
-            int before = failures, before_checks = checks;
+            int before = failures;
             ++built;
             CHECK(segvoronoi_diagram_arc_site_count(d) == (size_t)n);
             check_arc_diagram(d, b);
-            if (audit_part(what, before, before_checks)) {
+            if (failures > before) {
                 /* the input, to reproduce */
                 fprintf(stderr, "test_arcs: %s failed; its input (a closed bulged polyline and 3 points):\n  xy = {", what);
                 for (k = 0; k < 4 * n; ++k) fprintf(stderr, "%s%a", k ? ", " : "", xy[k]);
