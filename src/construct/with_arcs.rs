@@ -10,6 +10,7 @@
 
 use super::renumber::ArcSite;
 use super::restart::Outcome;
+use super::insert_segment::ArcStuck;
 use super::state::Construction;
 use super::Sites;
 use crate::diagram::{Diagram, SiteId};
@@ -57,7 +58,41 @@ pub(super) fn diagram_with_arcs(
     let first_arc = diagram.sites.len() - diagram.arc_sites;
     diagram.arc_site = (0..diagram.arc_sites).map(|k| SiteId::from_index(first_arc + k)).collect();
     let diagram = super::accept(diagram, outcome, &all, segments)?;
+    vertices_touch_their_arcs(&diagram)?;
     Ok(diagram)
+}
+
+/// The check that stands in for the certified predicates arcs do not have
+/// yet: every finite vertex with an arc among its sites is as far from
+/// each of its three sites as its clearance says (to 1e-7 of the input's
+/// extent). A vertex whose three sites have no common circle there is the
+/// mark of a wrong decision in an arc's insertion; the build then fails
+/// with [`ErrorKind::Internal`] rather than return a diagram that looks
+/// valid and is not. (It does not see every wrong decision: a vertex can
+/// touch its sites and still have another site nearer.)
+fn vertices_touch_their_arcs(diagram: &Diagram) -> Result<(), Error> {
+    let first_arc = diagram.sites.len() - diagram.arc_sites;
+    for v in diagram.vertices() {
+        if !v.sites.iter().any(|s| s.index() >= first_arc) || !v.clearance.is_finite() {
+            continue;
+        }
+        let tolerance = 1e-7 * (diagram.extent + v.clearance);
+        let miss = v.sites.iter().map(|&s| (diagram.sites[s.index()].distance(v.position) - v.clearance).abs()).fold(0.0, f64::max);
+        if !(miss <= tolerance) {
+            let arc = v.sites.iter().find(|s| s.index() >= first_arc).map_or(0, |s| s.index() - first_arc);
+            let arc = diagram.arc_input.get(arc).copied().unwrap_or(0) as usize;
+            return Err(Error::new(
+                ErrorKind::Internal,
+                format!(
+                    "construction could not complete: a vertex of arc {arc} at ({}, {}) misses its sites by {miss:e}; \
+                     please report this input",
+                    v.position.x, v.position.y
+                ),
+                vec![arc],
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Inserts the arcs into the construction of the points and segments;
@@ -78,16 +113,25 @@ pub(super) fn insert_arcs(
     let mut sites = Vec::with_capacity(arcs.len());
     for (k, arc) in arcs.iter().enumerate() {
         let (a, b) = (site_of_input[first_end + 2 * k], site_of_input[first_end + 2 * k + 1]);
-        let internal = built.insert_arc(a, b, arc.scaled(scale.to_internal)).map_err(|_| {
+        let internal = built.insert_arc(a, b, arc.scaled(scale.to_internal)).map_err(|why| {
             let (s, e) = (arc.start(), arc.end());
-            Error::new(
-                ErrorKind::Internal,
-                format!(
-                    "construction could not complete: arc {k} ({}, {}) - ({}, {}) found no path; please report this input",
-                    s.x, s.y, e.x, e.y
+            let name = format!("arc {k} ({}, {}) - ({}, {})", s.x, s.y, e.x, e.y);
+            match why {
+                ArcStuck::NoPath => Error::new(
+                    ErrorKind::Internal,
+                    format!("construction could not complete: {name} found no path; please report this input"),
+                    vec![k],
                 ),
-                vec![k],
-            )
+                ArcStuck::AroundEverything => Error::new(
+                    ErrorKind::InvalidArgument,
+                    format!(
+                        "{name} reaches around every site inserted before it (its cell would take every direction \
+                         at infinity), which the construction cannot do yet; give it as two arcs of less than a \
+                         half turn each, or add sites around it"
+                    ),
+                    vec![k],
+                ),
+            }
         })?;
         sites.push(ArcSite { input: k, internal, arc: *arc });
     }

@@ -55,6 +55,7 @@
 //! named by input indices, and its contact point); the contact test itself
 //! is `geometry::input::segment_contact`.
 
+pub(crate) mod arcs;
 mod classify;
 mod normalise;
 mod sweep;

@@ -9,32 +9,42 @@ use crate::geometry::arcs::arc_predicates::{self, ArcContact, ArcSiteSeen};
 use crate::geometry::segments::segment_predicates::{LeftDegree, SegmentDepth};
 use crate::geometry::{CircularArc, Point, Site};
 
+/// Why an arc could not go in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(in crate::construct) enum ArcStuck {
+    /// No path of P4 (lying numbers).
+    NoPath,
+    /// Its cell would take every direction at infinity.
+    AroundEverything,
+}
+
 impl Construction {
     /// Adds the open arc from the point site `a` (its start) to `b` (its
-    /// end); every point and segment must be in already. `Err` with the
-    /// arc's site when no path of P4 exists (see `insert_segment`).
-    pub(in crate::construct) fn insert_arc(&mut self, a: SiteId, b: SiteId, arc: CircularArc) -> Result<SiteId, SiteId> {
-        let e = self.add_arc_site(a, b, arc);
+    /// end); every point and segment must be in already. `Err` when no
+    /// path of P4 exists (see `insert_segment`; the diagram then holds the
+    /// arc but is not valid), or, with nothing changed, when the arc's cell
+    /// would take every direction at infinity of the diagram so far.
+    pub(in crate::construct) fn insert_arc(&mut self, a: SiteId, b: SiteId, arc: CircularArc) -> Result<SiteId, ArcStuck> {
         self.inserting_arc = Some(arc);
+        // The cell of the point at infinity must keep a piece of its
+        // boundary (the deleted set is a tree): an arc whose cone reaches
+        // past every hull edge (a major arc around a few small sites) would
+        // replace all of it, which one tree cannot say.
+        let hull: Vec<VertexId> = self.store.cell_boundary(INFINITE).map(|h| h.origin()).collect();
+        if !hull.is_empty() && hull.iter().all(|&v| self.segment_conflict(v, a, b)) {
+            self.inserting_arc = None;
+            return Err(ArcStuck::AroundEverything);
+        }
+        let e = self.add_arc_site(a, b, arc);
         self.fresh_epoch();
         let found = self.find_segment_path(a, b);
         self.grow_segment_tree(a, b);
-        if std::env::var("SEGV_DEBUG").is_ok() {
-            eprintln!("arc {a:?}->{b:?} found {found}");
-            for v in 0..self.store.vertex_count() {
-                let v = VertexId::from_index(v);
-                if self.store.sites_of(v)[0] == crate::diagram::SiteId(crate::diagram::NONE) { continue; }
-                let inf = self.store.is_at_infinity(v);
-                let conflict = if inf { self.segment_conflict(v, a, b) } else { self.segment_depth(v, a, b).position() == crate::geometry::predicates::CirclePosition::Inside };
-                eprintln!("  v{} sites {:?} pos {:?} r {} inf {inf} conflict {conflict} tree {}", v.index(), self.store.sites_of(v), self.store.position[v.index()], self.store.clearance[v.index()], self.tree.contains(&v));
-            }
-        }
         self.replace_tree(e);
         self.inserting_arc = None;
         if found {
             Ok(e)
         } else {
-            Err(e)
+            Err(ArcStuck::NoPath)
         }
     }
 

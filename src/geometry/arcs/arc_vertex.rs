@@ -44,7 +44,12 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     let local = shifted_sites.map(|s| s.scaled(unit));
     let scale = local.iter().map(site_size).fold(0.0f64, f64::max);
     let mut best: Option<(f64, Point, f64)> = None;
-    let options = local.map(|s| touchings(&s));
+    // a piece is touched at an end only where another site of the
+    // triple is that point or ends there (`equations_of`)
+    let options: [Vec<Touching>; 3] = std::array::from_fn(|k| {
+        let shared = |e: Point| (0..3).any(|j| j != k && (local[j].as_point() == Some(e) || local[j].has_endpoint(e)));
+        touchings(&local[k]).into_iter().filter(|t| !matches!(*t, Touching::AtEnd(e) if !shared(e))).collect()
+    });
     for &t0 in &options[0] {
         for &t1 in &options[1] {
             for &t2 in &options[2] {
@@ -523,40 +528,5 @@ mod tests {
                 }
             }
         }
-    }
-}
-
-#[cfg(test)]
-mod debug_tests {
-    use super::*;
-    use crate::geometry::CircularArc;
-
-    #[test]
-    fn debug_triple() {
-        let p = Point::new;
-        let arc1 = CircularArc::from_bulge(p(-3.365341295494898, -0.8634076946683307), p(-3.4563483427289916, -0.38961647773224206), 0.056736216684684246).unwrap();
-        let arc2 = CircularArc::from_bulge(p(-3.4563483427289916, -0.38961647773224206), p(-3.6721166247612738, -0.2677190730692256), -0.03755259995762972).unwrap();
-        let sites = [Site::Point(p(-3.6721166247612738, -0.2677190730692256)), Site::Arc(arc1), Site::Arc(arc2)];
-        let origin = local_origin(&sites);
-        let local = sites.map(|s| shifted(&s, origin));
-        let size = local.iter().map(site_size).fold(0.0f64, f64::max);
-        let unit = 2f64.powi(-(size.log2().round() as i32));
-        let local = local.map(|s| s.scaled(unit));
-        let origin = Point::new(origin.x * unit, origin.y * unit);
-        let scale = local.iter().map(site_size).fold(0.0f64, f64::max);
-        let options = local.map(|s| touchings(&s));
-        for &t0 in &options[0] {
-            for &t1 in &options[1] {
-                for &t2 in &options[2] {
-                    let touch = [t0, t1, t2];
-                    let Some(equations) = equations_of(&local, touch) else { continue };
-                    for (centre, radius) in solve(&equations) {
-                        let f = fit(&local, touch, centre, radius, scale);
-                        println!("{touch:?}: {:?} r {radius} fit {f:?}", Point::new(centre.x + origin.x, centre.y + origin.y));
-                    }
-                }
-            }
-        }
-        println!("{:?}", arc_vertex(&sites));
     }
 }

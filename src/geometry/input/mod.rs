@@ -5,5 +5,6 @@
 //! crossing points (`snap`, used by the split of a self-crossing input).
 //! Both decide with exact signs from `predicates`, no epsilon.
 
+pub(crate) mod arc_contact;
 pub(crate) mod segment_contact;
 pub(crate) mod snap;
