@@ -424,13 +424,23 @@ static void test_bulged_polylines(void) {
 /* ---- Diagrams ------------------------------------------------------------ */
 
 /* Builds; NULL (and a note on stderr, counted as skipped) while the
- * library's build does not take arcs yet; a failed check otherwise. */
+ * library's build does not take arcs yet, or refuses the input as one it
+ * does not build yet (INVALID_ARGUMENT, documented); a failed check
+ * otherwise. */
 static segvoronoi_diagram *build_or_skip(segvoronoi_builder *b, const char *what) {
     segvoronoi_diagram *d = NULL;
     segvoronoi_status st = segvoronoi_builder_build(b, &d);
     if (st == SEGVORONOI_STATUS_INTERNAL && contains(segvoronoi_last_error_message(), "under construction")) {
         fprintf(stderr, "test_arcs: SKIPPED %s: the library does not build arcs yet (%s)\n", what,
                 segvoronoi_last_error_message());
+        ++skipped;
+        CHECK(d == NULL);
+        return NULL;
+    }
+    if (st == SEGVORONOI_STATUS_INVALID_ARGUMENT &&
+        (contains(segvoronoi_last_error_message(), "not supported yet") || contains(segvoronoi_last_error_message(), "cannot do yet"))) {
+        /* documented: an input with arcs this version does not build yet */
+        fprintf(stderr, "test_arcs: SKIPPED %s: %s\n", what, segvoronoi_last_error_message());
         ++skipped;
         CHECK(d == NULL);
         return NULL;

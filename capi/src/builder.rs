@@ -326,9 +326,10 @@ pub unsafe extern "C" fn segvoronoi_builder_point_count(builder: *const segvoron
 /// `2^480`, about 3e144, times the smallest nonzero magnitude or difference
 /// between coordinates) and the build at that span did not check out (see
 /// the README's "exact range"): not a bug. `SEGVORONOI_STATUS_INVALID_ARGUMENT`
-/// when arcs come together with polygons or with splitting
-/// (`segvoronoi_builder_set_split_crossings`), which this version does not
-/// build yet (the message says which). `SEGVORONOI_STATUS_INTERNAL` when
+/// for an input with arcs that this version does not build yet (the
+/// message says which and what to do): arcs together with polygons or with
+/// splitting (`segvoronoi_builder_set_split_crossings`), or an arc that
+/// would reach around every site added before it (give it as two arcs). `SEGVORONOI_STATUS_INTERNAL` when
 /// the construction could not complete a valid diagram, or panicked: a bug
 /// in segvoronoi (none is known), never an invalid diagram;
 /// `segvoronoi_last_error_message` says what failed. Please report the
