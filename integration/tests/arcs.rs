@@ -631,3 +631,116 @@ fn a_major_arc_around_everything_is_refused_and_its_halves_build() {
     ];
     check_all_ways("major arc in halves", &pieces, 5e-6, 11);
 }
+
+/// Crossing, touching and overlapping inputs are refused, exactly and
+/// naming both, by `check` and `build` alike; a shared end, a tangent join
+/// and an arc's end inside a segment (which splits it) are not.
+#[test]
+fn the_input_check_names_both() {
+    let p = Point::new;
+    let half = |s: Point, e: Point| CircularArc::from_bulge(s, e, 1.0).unwrap();
+    let refused = |b: &Builder, message: &str| {
+        let e = b.check().unwrap_err();
+        assert_eq!(e.kind(), segvoronoi::ErrorKind::Intersecting, "{e}");
+        assert!(e.message().contains(message), "{e}");
+        assert_eq!(b.build().unwrap_err(), e);
+    };
+    // an arc and a segment across it
+    let mut b = Builder::new();
+    b.add_arc(half(p(1.0, 0.0), p(-1.0, 0.0))).unwrap();
+    b.add_segment([[0.0, 0.0], [0.0, 2.0]]).unwrap();
+    refused(&b, "arc 0 and segment 0 cross");
+    // a segment tangent to the arc at its top: touching inside
+    let mut b = Builder::new();
+    b.add_arc(half(p(1.0, 0.0), p(-1.0, 0.0))).unwrap();
+    b.add_segment([[-1.0, 1.0], [1.0, 1.0]]).unwrap();
+    refused(&b, "arc 0 and segment 0");
+    // two crossing arcs, and an arc overlapping another on one circle
+    let mut b = Builder::new();
+    b.add_arc(half(p(1.0, 0.0), p(-1.0, 0.0))).unwrap();
+    b.add_arc(half(p(2.5, 0.0), p(0.5, 0.0))).unwrap();
+    refused(&b, "arcs 0 and 1");
+    let mut b = Builder::new();
+    b.add_arc(half(p(1.0, 0.0), p(-1.0, 0.0))).unwrap();
+    b.add_arc(CircularArc::through(p(0.0, 1.0), p(-0.6, 0.8), p(-0.8, -0.6)).unwrap()).unwrap();
+    refused(&b, "arcs 0 and 1"); // an end of one inside the other, on one circle
+    // a point on the arc
+    let mut b = Builder::new();
+    b.add_arc(half(p(5.0, 0.0), p(-5.0, 0.0))).unwrap();
+    b.add_point([3.0, 4.0]).unwrap();
+    refused(&b, "point 0 lies on arc 0");
+    // fine: a tangent join, a full circle as two arcs, an arc's end inside
+    // a segment (the segment is split there)
+    let mut b = Builder::new();
+    b.add_segment([[-3.0, 1.0], [1.0, 1.0]]).unwrap();
+    b.add_arc(CircularArc::from_bulge([1.0, 1.0], [1.0, -1.0], -1.0).unwrap()).unwrap();
+    b.add_arc(half(p(8.0, 0.0), p(6.0, 0.0))).unwrap();
+    b.add_arc(half(p(6.0, 0.0), p(8.0, 0.0))).unwrap();
+    b.add_arc(half(p(-1.0, 1.0), p(-2.0, 1.0))).unwrap();
+    if let Err(e) = b.check() {
+        panic!("{e}");
+    }
+    let d = b.build().unwrap();
+    d.validate().unwrap();
+    assert!(audit(&d, 1e-7).is_empty());
+    assert_eq!(d.stats().split_at_vertices, 2, "the segment is cut at both ends of the last arc");
+}
+
+/// Convergence: the diagram of arcs against the diagrams of their chord
+/// approximations (4, 16, 64 and 256 chords an arc; segment diagrams,
+/// which agree with CGAL's on every family of the C tests). Every vertex of
+/// the arcs' diagram has a vertex of the chords' diagram near it, nearer
+/// as the chords shrink, at the rate of their sagitta (1/n²).
+#[test]
+fn chord_diagrams_converge_to_the_arcs_diagram() {
+    let mut pieces = rounded_rectangle(0.0, 0.0, 10.0, 6.0, 1.5);
+    pieces.extend(rounded_rectangle(2.0, 2.0, 3.0, 2.0, 0.5));
+    pieces.extend(stars(3).into_iter().map(|p| match p {
+        Piece::Point(q) => Piece::Point(Point::new(q.x + 12.0, q.y)),
+        Piece::Segment(a, b) => Piece::Segment(Point::new(a.x + 12.0, a.y), Point::new(b.x + 12.0, b.y)),
+        Piece::Arc(arc) => Piece::Arc(CircularArc::from_bulge(Point::new(arc.start().x + 12.0, arc.start().y), Point::new(arc.end().x + 12.0, arc.end().y), arc.bulge()).unwrap()),
+    }));
+    pieces.push(Piece::Point(Point::new(7.0, 3.0)));
+    let exact = build(&pieces);
+    let chords = |per_turn: usize| -> Vec<Piece> {
+        let mut out = Vec::new();
+        for p in &pieces {
+            match *p {
+                Piece::Arc(arc) => {
+                    let n = per_turn;
+                    let points: Vec<Point> = (0..=n).map(|k| arc.point_at(k as f64 / n as f64)).collect();
+                    out.extend(points.windows(2).map(|w| Piece::Segment(w[0], w[1])));
+                }
+                other => out.push(other),
+            }
+        }
+        out
+    };
+    let mut errors = Vec::new();
+    for per_turn in [4usize, 16, 64, 256] {
+        let approx = build(&chords(per_turn));
+        // the chords' diagram as a drawing: its vertices every chord length
+        // along an edge are O(1/n) apart, its edges O(1/n²) from the arcs'
+        let mut near: Vec<(Point, Point)> = Vec::new();
+        for e in approx.edges() {
+            if let Some(poly) = approx.edge_polyline(e.id, 1e-7) {
+                near.extend(poly.windows(2).map(|w| (w[0], w[1])));
+            }
+        }
+        let to_piece = |q: Point, (a, b): (Point, Point)| distance(&Site::Segment { a, b }, q);
+        // vertices within the input's own scale (a vertex far out where
+        // sites are nearly parallel moves far for a tiny change of them)
+        let worst = exact
+            .vertices()
+            .filter(|v| v.clearance < 3.0)
+            .map(|v| near.iter().map(|&piece| to_piece(v.position, piece)).fold(f64::INFINITY, f64::min))
+            .fold(0.0f64, f64::max);
+        println!("{per_turn} chords an arc: farthest vertex {worst:.3e}");
+        errors.push(worst);
+    }
+    // coarse chords change the topology near gentle arcs; once they
+    // follow it, the error falls as the sagitta, by 16 for 4 times the chords
+    assert!(errors.windows(2).all(|w| w[1] < w[0]), "{errors:?}");
+    assert!(errors[3] < errors[2] / 8.0, "no quadratic convergence: {errors:?}");
+    assert!(errors[3] < 2e-5, "{errors:?}");
+}

@@ -437,6 +437,9 @@ impl Builder {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn check(&self) -> Result<(), Error> {
+        if !self.arcs.is_empty() {
+            super::input_check::arcs::check_arcs(&self.points, &self.segments, &self.arcs)?;
+        }
         super::check_input(&self.points, &self.segments, &self.rings).map_err(|e| name_rings(e, &self.rings))
     }
 

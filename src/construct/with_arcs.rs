@@ -41,6 +41,9 @@ pub(super) fn diagram_with_arcs(
             Vec::new(),
         ));
     }
+    // arcs against points, segments and arcs, exactly; segments against
+    // segments (and the arcs' endpoints, as points) in `build_sites`
+    super::input_check::arcs::check_arcs(points, segments, arcs)?;
     let mut all = Vec::with_capacity(points.len() + 2 * arcs.len());
     all.extend_from_slice(points);
     for arc in arcs {

@@ -53,7 +53,6 @@
 
 // The build with arcs (`construct::with_arcs`) is being written beside this
 // check and will call it; until then only the tests do.
-#![cfg_attr(not(test), allow(dead_code))]
 
 use std::cmp::Reverse;
 use std::collections::{BTreeSet, BinaryHeap};

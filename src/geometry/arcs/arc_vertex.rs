@@ -64,8 +64,9 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
             }
         }
     }
-    let (_, centre, radius) = best?;
-    let (centre, radius) = polish(&local, centre, radius);
+    let (score, centre, radius) = best?;
+    // a fit to within rounding needs no Newton steps (most of the cost)
+    let (centre, radius) = if score.fract() > 1e-14 { polish(&local, centre, radius) } else { (centre, radius) };
     let back = 1.0 / unit;
     Some((Point::new(centre.x * back + origin.x, centre.y * back + origin.y), radius.max(0.0) * back))
 }
