@@ -143,6 +143,14 @@ static int nseen = 0;
 static const char *const KNOWN[] = {
     /* found by this driver at f47f2fe, not in the issue's text */
     "INCONSISTENT segvoronoi_builder_check disagrees with build",
+    /* found by this driver on capi-arcs (the arcs changed the case
+       stream): polygons with splitting at extreme magnitudes, no arc in
+       them; case 0xd47b7fe21a59cf39 with arcs in the cases */
+    "INTERNAL segvoronoi_diagram_offset|offset/trace.rs",
+    /* arcs (issue 31): the library's construction with arcs is still being
+       fixed (wrong vertices caught as "misses its sites", "found no path",
+       panics); builds of inputs with arcs, and only those, sign so */
+    "INTERNAL segvoronoi_builder_build (arcs)",
     NULL,
 };
 static int is_known(const char *sig) {
@@ -1260,11 +1268,15 @@ static void exercise(ctx *c, const input *in, uint64_t qseed) {
     if (chance(&r, 50)) chk = outcome(c, "segvoronoi_builder_check", segvoronoi_builder_check(b), S_INTER, b);
     /* with arcs, polygons and splitting are INVALID_ARGUMENT (not supported yet) */
     unsigned with_arcs = segvoronoi_builder_arc_count(b) > 0 ? S_ARG : 0;
-    int st = outcome(c, "segvoronoi_builder_build", segvoronoi_builder_build(b, &d), S_INTER | S_RANGE | with_arcs, b);
+    /* the builds of inputs with arcs sign apart (KNOWN lists them while the library's arcs are fixed) */
+    const char *build = with_arcs ? "segvoronoi_builder_build (arcs)" : "segvoronoi_builder_build";
+    int st = outcome(c, build, segvoronoi_builder_build(b, &d), S_INTER | S_RANGE | with_arcs, b);
     if (c->record) total.builds++, total.build_status[st < N_STATUS ? st : N_STATUS]++, total.split_builds += split;
     if (st == SEGVORONOI_STATUS_INTERSECTING && split)
         inconsistent(c, "segvoronoi_builder_build", "INTERSECTING with splitting", "%s", segvoronoi_builder_last_error(b));
+    /* a build with arcs refuses what it does not build yet (INVALID_ARGUMENT) before it checks */
     if (!split && chk >= 0 && chk != SEGVORONOI_STATUS_INTERNAL && st != SEGVORONOI_STATUS_INTERNAL &&
+        !(with_arcs && st == SEGVORONOI_STATUS_INVALID_ARGUMENT) &&
         (chk == SEGVORONOI_STATUS_INTERSECTING) != (st == SEGVORONOI_STATUS_INTERSECTING))
         inconsistent(c, "segvoronoi_builder_check", "disagrees with build", "check %s, build %s", sname(chk), sname(st));
     if (st != 0 && d != NULL) inconsistent(c, "segvoronoi_builder_build", "out on error", "*out not NULL after %s", sname(st));
@@ -1275,7 +1287,7 @@ static void exercise(ctx *c, const input *in, uint64_t qseed) {
         segvoronoi_builder_set_split_crossings(b, 1);
         split = 1;
         snprintf(c->note, sizeof c->note, "after INTERSECTING, built again with segvoronoi_builder_set_split_crossings(b, 1)");
-        st = outcome(c, "segvoronoi_builder_build", segvoronoi_builder_build(b, &d), S_INTER | S_RANGE | with_arcs, b);
+        st = outcome(c, build, segvoronoi_builder_build(b, &d), S_INTER | S_RANGE | with_arcs, b);
         c->note[0] = 0;
         if (c->record) total.builds++, total.build_status[st < N_STATUS ? st : N_STATUS]++, total.split_builds++, total.retried_with_split++;
         if (st == SEGVORONOI_STATUS_INTERSECTING)
@@ -1501,7 +1513,8 @@ int main(int argc, char **argv) {
         segvoronoi_diagram *d = NULL;
         int builds = b != NULL && segvoronoi_builder_add_arc(b, 0, 0, 1, 0, 1, NULL) == SEGVORONOI_STATUS_OK &&
                      segvoronoi_builder_build(b, &d) == SEGVORONOI_STATUS_OK;
-        int checks = b != NULL && segvoronoi_builder_add_arc(b, 0.5, -1, 0.5, 1, 1, NULL) == SEGVORONOI_STATUS_OK &&
+        /* a segment across the arc (the lower half of the circle of radius 0.5 about (0.5, 0)) */
+        int checks = b != NULL && segvoronoi_builder_add_segment(b, 0.5, -1, 0.5, 1) == SEGVORONOI_STATUS_OK &&
                      segvoronoi_builder_check(b) == SEGVORONOI_STATUS_INTERSECTING;
         if (!force_arcs) arcs_buildable = builds && checks;
         segvoronoi_diagram_free(d);
