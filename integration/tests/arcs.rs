@@ -361,6 +361,7 @@ fn minimise_failures() {
         let side = 2 + (seed as usize % 4);
         families.push((format!("cells {seed}"), random_cells(seed, side), side as f64, seed));
         families.push((format!("stars {seed}"), stars(seed), 6.0, seed));
+        families.push((format!("filleted {seed}"), filleted(seed), 6.0, seed));
     }
     families.push(("concentric".to_string(), concentric(), 10.0, 4));
     let mut inputs = Vec::new();
@@ -475,6 +476,7 @@ fn tiny_arcs_and_far_from_the_origin() {
     let ulp = f64::EPSILON;
     let pieces = vec![
         Piece::Arc(CircularArc::from_bulge(p(1.0, 0.0), p(1.0, 4.0 * ulp), 0.5).unwrap()),
+        Piece::Arc(CircularArc::from_bulge(p(0.5, 0.0), p(0.5, ulp / 2.0), -0.5).unwrap()), // one ulp of 0.5
         Piece::Arc(CircularArc::from_bulge(p(0.0, 0.0), p(1e-9, 0.0), -0.7).unwrap()),
         Piece::Point(p(0.5, 0.5)),
         Piece::Segment(p(0.0, 1.0), p(1.0, 1.0)),
@@ -743,4 +745,56 @@ fn chord_diagrams_converge_to_the_arcs_diagram() {
     assert!(errors.windows(2).all(|w| w[1] < w[0]), "{errors:?}");
     assert!(errors[3] < errors[2] / 8.0, "no quadratic convergence: {errors:?}");
     assert!(errors[3] < 2e-5, "{errors:?}");
+}
+
+/// A convex polygon with every corner rounded by a fillet of radius up to
+/// `radius`, as CAD programs and DXF files give it: the fillet's ends are
+/// the tangent points computed in floating point and its bulge
+/// `tan(turn / 4)`, so the joints are tangent only to within rounding.
+fn filleted_polygon(rng: &mut SplitMix64, cx: f64, cy: f64, n: usize, radius: f64) -> Vec<Piece> {
+    let mut angles: Vec<f64> = (0..n).map(|k| (k as f64 + 0.3 + 0.4 * rng.unit()) * 2.0 * std::f64::consts::PI / n as f64).collect();
+    angles.sort_by(f64::total_cmp);
+    let corners: Vec<Point> = angles.iter().map(|&t| Point::new(cx + t.cos(), cy + t.sin())).collect();
+    let mut ends = Vec::new(); // per corner: (before, after, bulge)
+    for k in 0..n {
+        let (prev, v, next) = (corners[(k + n - 1) % n], corners[k], corners[(k + 1) % n]);
+        let unit = |a: Point, b: Point| {
+            let (dx, dy) = (b.x - a.x, b.y - a.y);
+            let l = dx.hypot(dy);
+            (dx / l, dy / l, l)
+        };
+        let (ux, uy, lu) = unit(prev, v);
+        let (wx, wy, lw) = unit(v, next);
+        let turn = (ux * wy - uy * wx).atan2(ux * wx + uy * wy);
+        let rho = radius * (0.3 + 0.7 * rng.unit());
+        let l = (rho * (turn / 2.0).tan()).min(0.45 * lu.min(lw));
+        ends.push((Point::new(v.x - l * ux, v.y - l * uy), Point::new(v.x + l * wx, v.y + l * wy), (turn / 4.0).tan()));
+    }
+    let mut pieces = Vec::new();
+    for k in 0..n {
+        let (before, after, bulge) = ends[k];
+        pieces.push(Piece::Arc(CircularArc::from_bulge(before, after, bulge).unwrap()));
+        pieces.push(Piece::Segment(after, ends[(k + 1) % n].0));
+    }
+    pieces
+}
+
+fn filleted(seed: u64) -> Vec<Piece> {
+    let mut rng = SplitMix64(seed);
+    let mut pieces = Vec::new();
+    for i in 0..2 {
+        for j in 0..2 {
+            let n = 3 + (rng.next_u64() % 8) as usize;
+            pieces.extend(filleted_polygon(&mut rng, 3.0 * i as f64, 3.0 * j as f64, n, 0.3));
+            pieces.push(Piece::Point(Point::new(3.0 * i as f64 + 0.1 * rng.unit(), 3.0 * j as f64 + 0.1 * rng.unit())));
+        }
+    }
+    pieces
+}
+
+#[test]
+fn filleted_polygons_as_cad_gives_them() {
+    for seed in 0..10 {
+        check_all_ways(&format!("filleted seed {seed}"), &filleted(seed), 6.0, seed);
+    }
 }

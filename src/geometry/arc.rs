@@ -235,15 +235,19 @@ impl CircularArc {
         })
     }
 
-    /// The arc moved by `(dx, dy)` (rounded: for computing near a local
-    /// origin, not for deciding).
-    pub(crate) fn translated(&self, dx: f64, dy: f64) -> CircularArc {
-        let t = |p: Point| Point::new(p.x + dx, p.y + dy);
+    /// The arc moved by `-origin` and then scaled by `unit` (rounded: for
+    /// computing near a local origin, not for deciding), its centre and
+    /// radius computed again there: near the origin they are accurate to
+    /// the arc's own size, where the rounding of a centre far out can be
+    /// as large as a tiny arc.
+    pub(crate) fn transformed(&self, origin: Point, unit: f64) -> CircularArc {
+        let t = |p: Point| Point::new((p.x - origin.x) * unit, (p.y - origin.y) * unit);
         let datum = match self.datum {
             Datum::Through(m) => Datum::Through(t(m)),
             bulge => bulge,
         };
-        CircularArc { start: t(self.start), end: t(self.end), datum, centre: t(self.centre), ..*self }
+        let moved = CircularArc { start: t(self.start), end: t(self.end), datum, centre: t(self.centre), radius: self.radius * unit, ..*self };
+        CircularArc::new(moved.start, moved.end, datum, String::new).unwrap_or(moved)
     }
 
     /// The exact datum, for the exact input check: `(Some(bulge), None)` or

@@ -106,8 +106,13 @@ impl Construction {
                 }
             }
         };
+        // along a tangent join the arc reaches exactly as far out as the
+        // piece it continues, in the direction of their common separator:
+        // a tie, which is no conflict; rounding must not make it one
         let reach = arc.radius() * d.x.hypot(d.y);
-        reach > support(x).max(support(y))
+        let support = support(x).max(support(y));
+        let size = reach.abs() + support.abs() + (d.x * c.x).abs() + (d.y * c.y).abs();
+        reach - support > 1e-12 * size
     }
 
     /// The left-degree of site `g` seen from `v` against the new arc

@@ -35,27 +35,26 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     // near the origin and of size about 1 (a power of two: exact), so
     // that the tolerances below mean the same at every magnitude
     let origin = local_origin(sites);
-    let shifted_sites = sites.map(|s| shifted(&s, origin));
-    let size = shifted_sites.iter().map(site_size).fold(0.0f64, f64::max);
+    let size = sites.map(|s| shifted(&s, origin, 1.0)).iter().map(site_size).fold(0.0f64, f64::max);
     if !(size > 0.0 && size.is_finite()) {
         return None;
     }
     let unit = 2f64.powi(-(size.log2().round() as i32));
-    let local = shifted_sites.map(|s| s.scaled(unit));
+    let local = sites.map(|s| shifted(&s, origin, unit));
     let scale = local.iter().map(site_size).fold(0.0f64, f64::max);
     let mut best: Option<(f64, Point, f64)> = None;
     // a piece is touched at an end only where another site of the
     // triple is that point or ends there (`equations_of`)
-    let options: [Vec<Touching>; 3] = std::array::from_fn(|k| {
+    let options: [[Option<Touching>; 4]; 3] = std::array::from_fn(|k| {
         let shared = |e: Point| (0..3).any(|j| j != k && (local[j].as_point() == Some(e) || local[j].has_endpoint(e)));
-        touchings(&local[k]).into_iter().filter(|t| !matches!(*t, Touching::AtEnd(e) if !shared(e))).collect()
+        touchings(&local[k]).map(|t| t.filter(|t| !matches!(*t, Touching::AtEnd(e) if !shared(e))))
     });
-    for &t0 in &options[0] {
-        for &t1 in &options[1] {
-            for &t2 in &options[2] {
+    for &t0 in options[0].iter().flatten() {
+        for &t1 in options[1].iter().flatten() {
+            for &t2 in options[2].iter().flatten() {
                 let touch = [t0, t1, t2];
                 let Some(equations) = equations_of(&local, touch) else { continue };
-                for (centre, radius) in solve(&equations) {
+                for (centre, radius) in solve(&equations).into_iter().flatten() {
                     let Some(score) = fit(&local, touch, centre, radius, scale) else { continue };
                     if best.map_or(true, |(s, _, _)| score < s) {
                         best = Some((score, centre, radius));
@@ -81,12 +80,12 @@ enum Touching {
     AtEnd(Point),
 }
 
-fn touchings(site: &Site) -> Vec<Touching> {
+fn touchings(site: &Site) -> [Option<Touching>; 4] {
     match *site {
-        Site::Point(_) => vec![Touching::Itself],
+        Site::Point(_) => [Some(Touching::Itself), None, None, None],
         _ => {
             let [a, b] = site.ends();
-            vec![Touching::Inside(1.0), Touching::Inside(-1.0), Touching::AtEnd(a), Touching::AtEnd(b)]
+            [Touching::Inside(1.0), Touching::Inside(-1.0), Touching::AtEnd(a), Touching::AtEnd(b)].map(Some)
         }
     }
 }
@@ -182,8 +181,8 @@ impl Equation {
 }
 
 /// The solutions `(centre, radius)` of three equations (at most two).
-fn solve(equations: &[Equation; 3]) -> Vec<(Point, f64)> {
-    let Some(q) = equations.iter().position(Equation::is_circle) else { return Vec::new() };
+fn solve(equations: &[Equation; 3]) -> [Option<(Point, f64)>; 2] {
+    let Some(q) = equations.iter().position(Equation::is_circle) else { return [None; 2] };
     let base = equations[q].linear_part();
     // two linear equations: lines as they are, circles minus the base one
     let linear: Vec<[f64; 4]> = (0..3)
@@ -203,7 +202,7 @@ fn solve(equations: &[Equation; 3]) -> Vec<(Point, f64)> {
     let dd = dot3(d, d);
     let size = dot3(n1, n1).sqrt() * dot3(n2, n2).sqrt();
     if !(dd > 1e-24 * size * size) {
-        return Vec::new();
+        return [None; 2];
     }
     // the point of the line nearest the origin
     let (u, v) = (cross3(n2, d), cross3(d, n1));
@@ -214,10 +213,10 @@ fn solve(equations: &[Equation; 3]) -> Vec<(Point, f64)> {
     let qb = 2.0 * quad(p, d) + base[0] * d[0] + base[1] * d[1] + base[2] * d[2];
     let qc = quad(p, p) + base[0] * p[0] + base[1] * p[1] + base[2] * p[2] + base[3];
     let at = |l: f64| (Point::new(p[0] + l * d[0], p[1] + l * d[1]), p[2] + l * d[2]);
-    let mut roots = Vec::with_capacity(2);
+    let mut roots = [None; 2];
     if qa.abs() <= 1e-14 * (qb.abs() + qc.abs()).max(f64::MIN_POSITIVE) {
         if qb != 0.0 {
-            roots.push(at(-qc / qb));
+            roots[0] = Some(at(-qc / qb));
         }
         return roots;
     }
@@ -231,10 +230,9 @@ fn solve(equations: &[Equation; 3]) -> Vec<(Point, f64)> {
     // the stable pair of roots
     let w = -0.5 * (qb + s.copysign(qb));
     if w != 0.0 {
-        roots.push(at(w / qa));
-        roots.push(at(qc / w));
+        roots = [Some(at(w / qa)), Some(at(qc / w))];
     } else {
-        roots.push(at(0.0));
+        roots[0] = Some(at(0.0));
     }
     roots
 }
@@ -354,7 +352,7 @@ pub(crate) fn direction_at_infinity(x: &Site, y: &Site, guess: Point) -> Option<
         }
     }
     let origin = local_origin(&[*x, *y, *x]);
-    let (x, y) = (shifted(x, origin), shifted(y, origin));
+    let (x, y) = (shifted(x, origin, 1.0), shifted(y, origin, 1.0));
     let support = |s: &Site, d: Point| -> (f64, Point) {
         match *s {
             Site::Arc(arc) if arc.spans(Point::new(arc.centre().x + d.x, arc.centre().y + d.y)) => {
@@ -465,12 +463,13 @@ fn local_origin(sites: &[Site; 3]) -> Point {
     Point::new((m[0].x + m[1].x + m[2].x) / 3.0, (m[0].y + m[1].y + m[2].y) / 3.0)
 }
 
-fn shifted(site: &Site, o: Point) -> Site {
-    let s = |p: Point| Point::new(p.x - o.x, p.y - o.y);
+/// The site moved by `-o`, then scaled by `unit` (a power of two).
+fn shifted(site: &Site, o: Point, unit: f64) -> Site {
+    let s = |p: Point| Point::new((p.x - o.x) * unit, (p.y - o.y) * unit);
     match *site {
         Site::Point(p) => Site::Point(s(p)),
         Site::Segment { a, b } => Site::Segment { a: s(a), b: s(b) },
-        Site::Arc(arc) => Site::Arc(arc.translated(-o.x, -o.y)),
+        Site::Arc(arc) => Site::Arc(arc.transformed(o, unit)),
     }
 }
 
