@@ -576,6 +576,28 @@ fn minimised_regressions() {
             ],
             4.0,
         ),
+        // a fillet continuing a segment to within rounding (DXF's bulge
+        // tan(turn/4)): along their common separator at infinity the arc
+        // reaches exactly as far as the segment, a tie
+        (
+            "fillet after a segment",
+            vec![
+                arc(p(3.915172883037511, 0.3229822720338445), p(3.846383266350475, 0.4442167111175046), 0.26381388851567816),
+                Piece::Segment(p(3.915305808673275, -0.23756022561524337), p(3.915172883037511, 0.3229822720338445)),
+            ],
+            4.0,
+        ),
+        // a fillet before a tangent segment: the vertex at the arc's
+        // centre ties with the arc (all of it on the circle)
+        (
+            "fillet before a segment",
+            vec![
+                arc(p(0.8247334520687937, 0.4030376653859736), p(0.7259978576020354, 0.5207989039518675), 0.4885384011451861),
+                Piece::Segment(p(0.7259978576020354, 0.5207989039518675), p(-0.6790901116763554, 0.4704468506287919)),
+                Piece::Segment(p(0.5700974603517577, 2.1934299860049036), p(0.9011832625331512, 2.59626404596324)),
+            ],
+            3.0,
+        ),
     ];
     for (k, (name, pieces, size)) in cases.into_iter().enumerate() {
         check_all_ways(name, &pieces, size, k as u64);

@@ -35,11 +35,17 @@ pub(crate) fn arc_depth(arc: &CircularArc, contact: ArcContact, centre: Point, r
     let depth = match contact {
         ArcContact::NoEnd => arc.distance(centre) - radius,
         ArcContact::BothEnds => {
-            // on the line through the arc's centre: the side of the arc's
-            // middle is nearer the arc than its ends (the whole ray, when
-            // it lies in the span)
-            if arc.spans(centre) {
-                -(arc.start().distance(centre) - arc.distance(centre)).abs().max(f64::MIN_POSITIVE)
+            // on the bisector of the ends, a line through the arc's centre:
+            // beyond the centre on the side of the arc's middle the arc is
+            // nearer than its ends; at the centre itself every point of the
+            // arc is as near (a tie: no conflict); beyond it on the other
+            // side the ends are nearer
+            let (c, m) = (arc.centre(), arc.midpoint());
+            let along = ((centre.x - c.x) * (m.x - c.x) + (centre.y - c.y) * (m.y - c.y)) / arc.radius();
+            if along > 1e-9 * arc.radius() {
+                -along.max(f64::MIN_POSITIVE)
+            } else if along < -1e-9 * arc.radius() {
+                -along
             } else {
                 0.0
             }
