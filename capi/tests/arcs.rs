@@ -6,15 +6,16 @@
 use segvoronoi::{Builder, CircularArc, EdgeId, EdgeShape, Site, SiteId};
 use segvoronoi_capi::*;
 
-/// A slot (two half circles joined by segments) and two points, added
-/// through C as a bulged polyline, and through Rust the same way.
+/// A slot (two half circles joined by segments) and two points, one inside
+/// a half disc (its edge with that arc is an ellipse), added through C as a
+/// bulged polyline, and through Rust the same way.
 fn slot() -> (segvoronoi::Diagram, *mut segvoronoi_diagram) {
     let xy = [0.0, 0.0, 4.0, 0.0, 4.0, 2.0, 0.0, 2.0];
     let bulges = [0.0, 1.0, 0.0, 1.0];
-    let points = [1.25, 0.75, 3.0, 1.5];
+    let points = [1.25, 0.75, 4.5, 1.0];
     let mut rust = Builder::new();
     rust.add_bulged_polyline(&[([0.0, 0.0], 0.0), ([4.0, 0.0], 1.0), ([4.0, 2.0], 0.0), ([0.0, 2.0], 1.0)], true).unwrap();
-    rust.add_points([[1.25, 0.75], [3.0, 1.5]]).unwrap();
+    rust.add_points([[1.25, 0.75], [4.5, 1.0]]).unwrap();
     unsafe {
         let b = segvoronoi_builder_new();
         let (mut kinds, mut indices, mut n) = ([9u32; 4], [9usize; 4], 0usize);
