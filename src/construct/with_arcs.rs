@@ -8,9 +8,9 @@
 //! wrong): splitting crossings, and polygons (the domain and what stands
 //! on it: location, medial axis, offsets).
 
+use super::insert_segment::ArcStuck;
 use super::renumber::ArcSite;
 use super::restart::Outcome;
-use super::insert_segment::ArcStuck;
 use super::state::Construction;
 use super::Sites;
 use crate::diagram::{Diagram, SiteId};
@@ -80,7 +80,8 @@ fn vertices_touch_their_arcs(diagram: &Diagram) -> Result<(), Error> {
             continue;
         }
         let tolerance = 1e-7 * (diagram.extent + v.clearance);
-        let miss = v.sites.iter().map(|&s| (diagram.sites[s.index()].distance(v.position) - v.clearance).abs()).fold(0.0, f64::max);
+        let miss =
+            v.sites.iter().map(|&s| (diagram.sites[s.index()].distance(v.position) - v.clearance).abs()).fold(0.0, f64::max);
         if !(miss <= tolerance) {
             let arc = v.sites.iter().find(|s| s.index() >= first_arc).map_or(0, |s| s.index() - first_arc);
             let arc = diagram.arc_input.get(arc).copied().unwrap_or(0) as usize;
