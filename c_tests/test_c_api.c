@@ -369,7 +369,8 @@ static void test_version_and_status_strings(void) {
           SEGVORONOI_STATUS_TOO_LARGE == 6 && SEGVORONOI_STATUS_INVALID_ARGUMENT == 7 &&
           SEGVORONOI_STATUS_INTERNAL == 8 && SEGVORONOI_STATUS_INVALID_POLYGON == 9);
     CHECK(SEGVORONOI_STATUS_OUT_OF_MEMORY == 10 && SEGVORONOI_STATUS_UNSUPPORTED_RANGE == 11);
-    for (s = 0; s <= SEGVORONOI_STATUS_UNSUPPORTED_RANGE; ++s) {
+    CHECK(SEGVORONOI_STATUS_INVALID_ARC == 12);
+    for (s = 0; s <= SEGVORONOI_STATUS_INVALID_ARC; ++s) {
         const char *text = segvoronoi_status_str(s);
         CHECK(text != NULL && text[0] != '\0');
         CHECK(strcmp(text, "unknown status") != 0);
@@ -379,7 +380,7 @@ static void test_version_and_status_strings(void) {
        *out NULL and the message in segvoronoi_builder_last_error), never an
        invalid diagram; tests/fault_injection.rs gets there on purpose. */
     CHECK(strstr(segvoronoi_status_str(SEGVORONOI_STATUS_INTERNAL), "internal") != NULL);
-    CHECK(strcmp(segvoronoi_status_str(SEGVORONOI_STATUS_UNSUPPORTED_RANGE + 1), "unknown status") == 0);
+    CHECK(strcmp(segvoronoi_status_str(SEGVORONOI_STATUS_INVALID_ARC + 1), "unknown status") == 0);
     CHECK(strcmp(segvoronoi_status_str(-1), "unknown status") == 0);
 }
 

@@ -20,9 +20,9 @@
  * per thread.
  *
  * Versioned structs: every struct the library fills in (segvoronoi_site,
- * _vertex, _edge, _edge_shape, _stats, _piece) starts with `size_t struct_size` and
- * may gain fields at its end in a later version. Set struct_size to sizeof
- * the struct before the call:
+ * _vertex, _edge, _edge_shape, _stats, _piece, _arc, _loop, _loop_piece)
+ * starts with `size_t struct_size` and may gain fields at its end in a
+ * later version. Set struct_size to sizeof the struct before the call:
  *
  *     segvoronoi_vertex v = {.struct_size = sizeof v};   (C99; in C++:
  *     segvoronoi_vertex v{}; v.struct_size = sizeof v;)
@@ -79,6 +79,11 @@
 // sites of their own).
 #define SEGVORONOI_SITE_SEGMENT 1
 
+// `segvoronoi_site.kind` of an open circular-arc site (its endpoints are
+// point sites of their own; `segvoronoi_diagram_arc` gives its circle).
+// Arc sites are the last ids, after the open segments. Since 0.2.
+#define SEGVORONOI_SITE_ARC 2
+
 // In the domain's interior.
 #define SEGVORONOI_LOCATION_INSIDE 0
 
@@ -93,7 +98,8 @@
 // segment site.
 #define SEGVORONOI_OFFSET_LINE 0
 
-// `segvoronoi_loop_piece.kind` of a circular arc around a point site.
+// `segvoronoi_loop_piece.kind` of a circular arc around a point site (or
+// concentric with a circular-arc site).
 #define SEGVORONOI_OFFSET_ARC 1
 
 // `segvoronoi_loop.parent` of an outermost loop.
@@ -129,6 +135,16 @@
 // the directrix).
 #define SEGVORONOI_EDGE_PARABOLA 1
 
+// `segvoronoi_edge_shape.kind` of a conic arc: between two sites of which
+// at least one is a circular arc (not between an arc and one of its own
+// endpoints, which is `SEGVORONOI_EDGE_LINE`): a piece of a line,
+// parabola, ellipse or hyperbola branch. Its two sites are the edge's
+// (`segvoronoi_diagram_edge`); the shape's coordinates are 0.
+// `segvoronoi_diagram_edge_polyline` samples it, and
+// `segvoronoi_diagram_edge_rational_bezier` gives a curved one exactly.
+// Since 0.2.
+#define SEGVORONOI_EDGE_CONIC 2
+
 // Result of every fallible call. The numbers are stable across versions.
 typedef enum segvoronoi_status {
   // Success.
@@ -137,8 +153,8 @@ typedef enum segvoronoi_status {
   SEGVORONOI_STATUS_NULL_ARGUMENT = 1,
   // An input coordinate is NaN or infinite (the message names the input index).
   SEGVORONOI_STATUS_INVALID_COORDINATE = 2,
-  // Input segments cross or overlap, or a point lies inside a segment
-  // (the message names both input indices).
+  // Input segments or arcs cross or overlap, or a point lies inside a
+  // segment or an arc (the message names both inputs).
   SEGVORONOI_STATUS_INTERSECTING = 3,
   // An index argument is out of range.
   SEGVORONOI_STATUS_OUT_OF_RANGE = 4,
@@ -169,6 +185,11 @@ typedef enum segvoronoi_status {
   // the two coordinates and the range. Not a bug; see the README.
   // Since 0.2.
   SEGVORONOI_STATUS_UNSUPPORTED_RANGE = 11,
+  // A circular arc is not one: a zero or non-finite bulge, equal
+  // endpoints, three points on one line, or a circle beyond the range of
+  // `double` (the message says which and names the arc or the polyline
+  // vertex). Nothing was added. Since 0.2.
+  SEGVORONOI_STATUS_INVALID_ARC = 12,
 } segvoronoi_status;
 
 // Collects input sites. Opaque. Create with `segvoronoi_builder_new`, free
@@ -212,21 +233,61 @@ typedef struct segvoronoi_medial_axis segvoronoi_medial_axis;
 // `segvoronoi_offset_free` must not overlap another call on it.
 typedef struct segvoronoi_offset segvoronoi_offset;
 
-// A site: a point, or an open segment. Versioned: set `struct_size` before
-// the call (see the header's introduction).
+// A circular arc, as added or as a diagram's arc site. Versioned: set
+// `struct_size` before the call (see the header's introduction).
+typedef struct segvoronoi_arc {
+  // Set by the caller to `sizeof(segvoronoi_arc)`; the library writes
+  // the fields that fit and sets it to the number of bytes written.
+  size_t struct_size;
+  // The first endpoint `{x, y}`, exactly as given.
+  double start[2];
+  // The last endpoint `{x, y}`, exactly as given.
+  double end[2];
+  // The centre of the circle `{x, y}`, rounded to `double` from the
+  // exact circle that the endpoints and the bulge (or third point) fix.
+  double centre[2];
+  // The radius, rounded (the mean of the rounded centre's distances to
+  // the two endpoints).
+  double radius;
+  // DXF's bulge, `tan(sweep / 4)`: as given to
+  // `segvoronoi_builder_add_arc`, or for an arc given through a point the
+  // bulge of that arc, rounded.
+  double bulge;
+  // The signed angle swept from `start` to `end`, in radians, in
+  // `(-2π, 2π)`: positive counter-clockwise (`4 atan(bulge)` for an arc
+  // given by its bulge).
+  double sweep;
+  // Whether the arc runs counter-clockwise from `start` to `end`.
+  bool counter_clockwise;
+  // Whether the arc was given through a third point
+  // (`segvoronoi_builder_add_arc_through`): `via` holds it.
+  bool has_via;
+  // The point the arc was given through `{x, y}`, exactly; `{0, 0}` when
+  // `has_via` is false.
+  double via[2];
+} segvoronoi_arc;
+
+// A site: a point, an open segment or an open circular arc. Versioned: set
+// `struct_size` before the call (see the header's introduction).
 typedef struct segvoronoi_site {
   // Set by the caller to `sizeof(segvoronoi_site)`; the library writes
   // the fields that fit and sets it to the number of bytes written.
   size_t struct_size;
-  // `SEGVORONOI_SITE_POINT` or `SEGVORONOI_SITE_SEGMENT`.
+  // `SEGVORONOI_SITE_POINT`, `SEGVORONOI_SITE_SEGMENT` or
+  // `SEGVORONOI_SITE_ARC`; more kinds may come, so treat an unknown one
+  // as "none of these".
   uint32_t kind;
-  // The point, or the segment's first endpoint, in input coordinates.
+  // The point, or the segment's first endpoint, or the arc's start, in
+  // input coordinates.
   double x;
-  // The point, or the segment's first endpoint, in input coordinates.
+  // The point, or the segment's first endpoint, or the arc's start, in
+  // input coordinates.
   double y;
-  // The segment's second endpoint (the point again for a point site).
+  // The segment's second endpoint or the arc's end (the point again for
+  // a point site).
   double x2;
-  // The segment's second endpoint (the point again for a point site).
+  // The segment's second endpoint or the arc's end (the point again for
+  // a point site).
   double y2;
 } segvoronoi_site;
 
@@ -276,8 +337,8 @@ typedef struct segvoronoi_edge {
   // `true` when the edge is unbounded: a ray or a line, with an end at
   // infinity (`vertex == SEGVORONOI_NO_VERTEX`).
   bool is_infinite;
-  // `true` when the edge is a separator: between a segment and one of
-  // its own endpoints (the medial axis leaves these out). Since 0.2.
+  // `true` when the edge is a separator: between a segment or an arc and
+  // one of its own endpoints (the medial axis leaves these out). Since 0.2.
   bool is_separator;
 } segvoronoi_edge;
 
@@ -291,7 +352,8 @@ typedef struct segvoronoi_stats {
   size_t input_points;
   // Segments given to the builder.
   size_t input_segments;
-  // Distinct sites in the diagram (points, then open segments).
+  // Distinct sites in the diagram (points, then open segments, then open
+  // arcs).
   size_t sites;
   // Input points merged into an equal earlier point or segment endpoint.
   size_t duplicate_points;
@@ -325,6 +387,11 @@ typedef struct segvoronoi_stats {
   // cancelled in pairs (two copies of one shared stretch; always even).
   // Since 0.2.
   size_t cancelled_ring_pieces;
+  // Arcs given to the builder (`segvoronoi_builder_add_arc` and the arcs
+  // of bulged polylines). Since 0.2.
+  size_t input_arcs;
+  // Open-arc sites in the diagram: the last `arc_sites` site ids. Since 0.2.
+  size_t arc_sites;
 } segvoronoi_stats;
 
 // Which branches `segvoronoi_diagram_medial_axis_filtered` leaves out
@@ -409,7 +476,8 @@ typedef struct segvoronoi_loop_piece {
   bool counter_clockwise;
 } segvoronoi_loop_piece;
 
-// The shape of an edge. For `SEGVORONOI_EDGE_LINE` all coordinates are 0.
+// The shape of an edge. For `SEGVORONOI_EDGE_LINE` and
+// `SEGVORONOI_EDGE_CONIC` all coordinates are 0.
 // Versioned: set `struct_size` before the call (see the header's
 // introduction); more shapes may come, so treat an unknown `kind` as
 // "neither".
@@ -417,7 +485,8 @@ typedef struct segvoronoi_edge_shape {
   // Set by the caller to `sizeof(segvoronoi_edge_shape)`; the library
   // writes the fields that fit and sets it to the number of bytes written.
   size_t struct_size;
-  // `SEGVORONOI_EDGE_LINE` or `SEGVORONOI_EDGE_PARABOLA`.
+  // `SEGVORONOI_EDGE_LINE`, `SEGVORONOI_EDGE_PARABOLA` or
+  // `SEGVORONOI_EDGE_CONIC`.
   uint32_t kind;
   // The focus (the point site), in input coordinates.
   double focus_x;
@@ -436,6 +505,144 @@ typedef struct segvoronoi_edge_shape {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+// Adds the circular arc from `(sx, sy)` to `(ex, ey)` with DXF's `bulge`:
+// `tan(θ/4)` for the signed angle θ it sweeps (positive:
+// counter-clockwise; 1 is a half circle counter-clockwise, -1 clockwise;
+// the sweep nears a full turn as `|bulge|` grows). Its endpoints are exact
+// input points, shared with the segments and arcs that continue it. Its
+// input index (the number of arcs added before it; arcs are numbered
+// apart from points and segments) goes to `*index_out`. Crossings are
+// reported by `segvoronoi_builder_build` and `segvoronoi_builder_check`.
+//
+// Ownership: `index_out` is caller-owned; it may be NULL (the index is
+// `segvoronoi_builder_arc_count` before the call) and is written only on
+// success.
+// Errors: `NULL_ARGUMENT` (`builder`), `INVALID_COORDINATE` (a coordinate
+// is NaN or infinite), `INVALID_ARC` (the bulge is 0, NaN or infinite, the
+// endpoints are equal, or the circle is beyond the range of `double`),
+// `TOO_LARGE`, `OUT_OF_MEMORY`. The builder is then unchanged, and
+// `segvoronoi_builder_last_error` and `_last_error_indices` name the
+// index the arc would have had.
+// Thread safety: one builder must not be used from two threads at once.
+enum segvoronoi_status segvoronoi_builder_add_arc(struct segvoronoi_builder *builder,
+                                                  double sx,
+                                                  double sy,
+                                                  double ex,
+                                                  double ey,
+                                                  double bulge,
+                                                  size_t *index_out);
+
+// Adds the circular arc from `(sx, sy)` through `(vx, vy)` to `(ex, ey)`,
+// as `segvoronoi_builder_add_arc` does; the three points are kept exactly
+// (the circle is fixed by them, not by a rounded bulge).
+//
+// Ownership: as `segvoronoi_builder_add_arc`.
+// Errors: `NULL_ARGUMENT` (`builder`), `INVALID_COORDINATE` (a coordinate
+// is NaN or infinite), `INVALID_ARC` (two of the points are equal, the
+// three are on one line, or the circle is beyond the range of `double`),
+// `TOO_LARGE`, `OUT_OF_MEMORY`; the builder is then unchanged and the
+// last error names the arc's index.
+// Thread safety: one builder must not be used from two threads at once.
+enum segvoronoi_status segvoronoi_builder_add_arc_through(struct segvoronoi_builder *builder,
+                                                          double sx,
+                                                          double sy,
+                                                          double vx,
+                                                          double vy,
+                                                          double ex,
+                                                          double ey,
+                                                          size_t *index_out);
+
+// Adds a chain of `n` vertices with a bulge each, as DXF's LWPOLYLINE
+// holds it: vertex `k` is `(xy[2k], xy[2k+1])`, and the piece from vertex
+// `k` to vertex `k + 1` is a segment where `bulges[k]` is 0 and the arc
+// with that bulge otherwise (see `segvoronoi_builder_add_arc`). With
+// `closed`, the last vertex joins the first with the last bulge (a
+// repeated closing vertex is dropped); open, the last bulge is not used.
+// Repeated consecutive vertices are dropped with their piece. A polyline
+// is an obstacle: it does not bound the domain. Segments and arcs get the
+// next input indices of their own kind, in the chain's order. All or
+// nothing: on error nothing is added.
+//
+// What each piece became, in the chain's order, when wanted: piece `j` is
+// `piece_kinds[j]` (`SEGVORONOI_SITE_SEGMENT` or `SEGVORONOI_SITE_ARC`)
+// with input index `piece_indices[j]` among the segments or the arcs; the
+// number of pieces, at most `n`, goes to `*piece_count`. (The counts alone
+// are also the differences of `segvoronoi_builder_segment_count` and
+// `_arc_count` across the call.)
+//
+// Ownership: `xy` (`2 * n` doubles) and `bulges` (`n` doubles) are read
+// only during the call; either may be NULL when `n` is 0. `piece_kinds`
+// and `piece_indices` are each NULL (not wanted) or room for `n` items;
+// `piece_count` is NULL or writable. They are written only on success.
+// Errors: `NULL_ARGUMENT` (`builder`, or `xy` or `bulges` NULL with
+// `n > 0`); `INVALID_COORDINATE` (a non-finite coordinate) or
+// `INVALID_ARC` (a non-finite bulge, or a piece that is no arc: equal
+// endpoints cannot happen, a circle beyond `double` can), naming the
+// vertex (`segvoronoi_builder_last_error_indices`); `TOO_LARGE` (checked
+// before `xy` is read), `OUT_OF_MEMORY`. The builder is then unchanged.
+// Thread safety: one builder must not be used from two threads at once.
+enum segvoronoi_status segvoronoi_builder_add_bulged_polyline(struct segvoronoi_builder *builder,
+                                                              const double *xy,
+                                                              const double *bulges,
+                                                              size_t n,
+                                                              bool closed,
+                                                              uint32_t *piece_kinds,
+                                                              size_t *piece_indices,
+                                                              size_t *piece_count);
+
+// The number of arcs added so far (those of bulged polylines included);
+// 0 for NULL.
+size_t segvoronoi_builder_arc_count(const struct segvoronoi_builder *builder);
+
+// Input arc `index` (`0 <= index < segvoronoi_builder_arc_count`), as
+// added, in `*out`.
+//
+// Ownership: `*out` is caller-owned, written only on success.
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE`, `INVALID_ARGUMENT`
+// (`out->struct_size` too small); then `*out` is untouched. A success
+// leaves the builder's own last error (`segvoronoi_builder_last_error`) as
+// it was.
+// Thread safety: one builder must not be used from two threads at once.
+enum segvoronoi_status segvoronoi_builder_arc(const struct segvoronoi_builder *builder,
+                                              size_t index,
+                                              struct segvoronoi_arc *out);
+
+// Number of arc sites: the last site ids, after the open segments
+// (`site_count - arc_site_count <= id < site_count`). 0 for NULL.
+size_t segvoronoi_diagram_arc_site_count(const struct segvoronoi_diagram *diagram);
+
+// The arc of the arc site `site` in `*out`: its endpoints (those of its
+// `segvoronoi_site`), circle, bulge, sweep and direction.
+//
+// Ownership: `*out` is caller-owned, written only on success.
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`site >= site_count`),
+// `INVALID_ARGUMENT` (a point or segment site, or `out->struct_size` too
+// small); then `*out` is untouched.
+// Thread safety: reads the diagram only; safe from many threads at once.
+enum segvoronoi_status segvoronoi_diagram_arc(const struct segvoronoi_diagram *diagram,
+                                              size_t site,
+                                              struct segvoronoi_arc *out);
+
+// The input index of the arc site `site` in `*out_index`: which
+// `segvoronoi_builder_add_arc` (or `_add_arc_through`, or arc of a bulged
+// polyline) it is.
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`site >= site_count`),
+// `INVALID_ARGUMENT` (a point or segment site); then nothing is written.
+// Thread safety: reads the diagram only; safe from many threads at once.
+enum segvoronoi_status segvoronoi_diagram_arc_input_index(const struct segvoronoi_diagram *diagram,
+                                                          size_t site,
+                                                          size_t *out_index);
+
+// The site that input arc `input_index` became, in `*out_site`.
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (no such input arc); then
+// nothing is written.
+// Thread safety: reads the diagram only; safe from many threads at once.
+enum segvoronoi_status segvoronoi_diagram_site_of_arc(const struct segvoronoi_diagram *diagram,
+                                                      size_t input_index,
+                                                      uint32_t *out_site);
 
 // A new, empty builder. Returns NULL only if memory is exhausted (then
 // `segvoronoi_last_error_message` says so).
@@ -527,13 +734,17 @@ size_t segvoronoi_builder_point_count(const struct segvoronoi_builder *builder);
 // Builds the diagram of everything added so far and stores it in `*out`.
 // The builder is not consumed and stays as it was.
 //
-// Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments cross or
-// overlap or a point lies inside a segment (the message names both input
-// indices). `SEGVORONOI_STATUS_UNSUPPORTED_RANGE` when the input's
+// Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments or arcs cross
+// or overlap or a point lies inside a segment or an arc (the message names
+// both inputs). `SEGVORONOI_STATUS_UNSUPPORTED_RANGE` when the input's
 // coordinates span more than the exact range (largest magnitude over
 // `2^480`, about 3e144, times the smallest nonzero magnitude or difference
 // between coordinates) and the build at that span did not check out (see
-// the README's "exact range"): not a bug. `SEGVORONOI_STATUS_INTERNAL` when
+// the README's "exact range"): not a bug. `SEGVORONOI_STATUS_INVALID_ARGUMENT`
+// for an input with arcs that this version does not build yet (the
+// message says which and what to do): arcs together with polygons or with
+// splitting (`segvoronoi_builder_set_split_crossings`), or an arc that
+// would reach around every site added before it (give it as two arcs). `SEGVORONOI_STATUS_INTERNAL` when
 // the construction could not complete a valid diagram, or panicked: a bug
 // in segvoronoi (none is known), never an invalid diagram;
 // `segvoronoi_last_error_message` says what failed. Please report the
@@ -556,16 +767,19 @@ enum segvoronoi_status segvoronoi_builder_build(struct segvoronoi_builder *build
 // (`segvoronoi_diagram_pieces_of_input`, `_inputs_of_piece`), each within
 // `segvoronoi_diagram_max_split_displacement` of its input segments, and
 // polygons bound the even-odd region of their split rings (see
-// `Builder::split_crossings` in the Rust documentation).
+// `Builder::split_crossings` in the Rust documentation). Arcs are not
+// split yet: a build with arcs and splitting on is
+// `SEGVORONOI_STATUS_INVALID_ARGUMENT`.
 //
 // Errors: `NULL_ARGUMENT`.
 enum segvoronoi_status segvoronoi_builder_set_split_crossings(struct segvoronoi_builder *builder,
                                                               int32_t on);
 
 // Checks everything added so far as `segvoronoi_builder_build` does first,
-// without building: `SEGVORONOI_STATUS_OK` when no two segments cross or
-// overlap and no point lies inside a segment (shared endpoints are fine).
-// Exact, O(n log n) expected time for n points and segments.
+// without building: `SEGVORONOI_STATUS_OK` when no two segments or arcs
+// cross or overlap and no point lies inside a segment or an arc (shared
+// endpoints are fine). Exact, O(n log n) expected time for n points and
+// segments.
 //
 // Errors: `SEGVORONOI_STATUS_INTERSECTING` with the same message and
 // indices `_build` would give (`segvoronoi_builder_last_error`,
@@ -590,7 +804,9 @@ const char *segvoronoi_builder_last_error(const struct segvoronoi_builder *build
 
 // The input indices that the last failed call on this builder named (the
 // numbers in its `segvoronoi_builder_last_error` message): for
-// `SEGVORONOI_STATUS_INVALID_COORDINATE` the point's or segment's index,
+// `SEGVORONOI_STATUS_INVALID_COORDINATE` the point's, segment's or arc's
+// index (a bulged polyline's vertex), for `SEGVORONOI_STATUS_INVALID_ARC`
+// the arc's index (a bulged polyline's vertex),
 // for `SEGVORONOI_STATUS_INTERSECTING` both (two segment indices, or the
 // point's and then the segment's), for `SEGVORONOI_STATUS_INTERNAL` the
 // segment that failed when one did; none after a successful call. Writes
@@ -614,11 +830,13 @@ void segvoronoi_diagram_free(struct segvoronoi_diagram *diagram);
 // diagram the library builds; `SEGVORONOI_STATUS_INTERNAL` would be a bug.
 enum segvoronoi_status segvoronoi_diagram_validate(const struct segvoronoi_diagram *diagram);
 
-// Number of sites (distinct points, then open segments); 0 for NULL.
+// Number of sites (distinct points, then open segments, then open arcs); 0
+// for NULL.
 size_t segvoronoi_diagram_site_count(const struct segvoronoi_diagram *diagram);
 
 // Number of point sites; sites `0..point_site_count` are points, the rest
-// open segments. 0 for NULL.
+// open segments and then open arcs (`segvoronoi_diagram_arc_site_count`).
+// 0 for NULL.
 size_t segvoronoi_diagram_point_site_count(const struct segvoronoi_diagram *diagram);
 
 // Number of finite Voronoi vertices; 0 for NULL.
@@ -635,9 +853,10 @@ enum segvoronoi_status segvoronoi_diagram_site(const struct segvoronoi_diagram *
                                                size_t index,
                                                struct segvoronoi_site *out);
 
-// The two endpoint sites of segment site `site` in `out_endpoints[0]` and
-// `out_endpoints[1]` (`out_endpoints` points to two `uint32_t`): the point
-// sites at `(x, y)` and at `(x2, y2)` of the segment's `segvoronoi_site`.
+// The two endpoint sites of segment or arc site `site` in
+// `out_endpoints[0]` and `out_endpoints[1]` (`out_endpoints` points to two
+// `uint32_t`): the point sites at `(x, y)` and at `(x2, y2)` of its
+// `segvoronoi_site` (an arc's start and end).
 //
 // Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`site >= site_count`),
 // `INVALID_ARGUMENT` (a point site); then nothing is written.
@@ -648,10 +867,11 @@ enum segvoronoi_status segvoronoi_diagram_segment_endpoints(const struct segvoro
 
 // The input index of segment site `site` in `*out_index`: which
 // `segvoronoi_builder_add_segment(s)` input it is (the first of its
-// repeats; what the topology text calls `S<j>`).
+// repeats; what the topology text calls `S<j>`). An arc site's input index
+// is `segvoronoi_diagram_arc_input_index`'s.
 //
 // Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`site >= site_count`),
-// `INVALID_ARGUMENT` (a point site); then nothing is written.
+// `INVALID_ARGUMENT` (a point or arc site); then nothing is written.
 // Thread safety: reads the diagram only; safe from many threads at once.
 enum segvoronoi_status segvoronoi_diagram_segment_input_index(const struct segvoronoi_diagram *diagram,
                                                               size_t site,
@@ -893,7 +1113,9 @@ enum segvoronoi_status segvoronoi_medial_axis_sample_chain(const struct segvoron
 // as `{x, y, clearance}` in `xyr[0..3]`.
 //
 // Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (chain or piece), `INVALID_ARGUMENT`
-// (`t` outside `[0, 1]`, or a piece that reaches infinity),
+// (`t` outside `[0, 1]`, or a piece that reaches infinity, or a curved
+// conic piece beside a circular arc, which this version cannot evaluate
+// at a parameter: `segvoronoi_medial_axis_sample_chain` samples it),
 // `UNSUPPORTED_RANGE` (a point that f64 cannot compute, only on inputs
 // beyond the exact range); then `xyr` is untouched.
 enum segvoronoi_status segvoronoi_medial_axis_piece_at(const struct segvoronoi_medial_axis *axis,
@@ -958,7 +1180,9 @@ enum segvoronoi_status segvoronoi_diagram_cell_half_edges(const struct segvorono
 // Ownership: the caller frees `*out` with `segvoronoi_offset_free`.
 // Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (a distance that is NaN,
 // infinite or zero, or not positive without polygons, or one at which the
-// input's extent plus twice the distance exceeds `2^510`, about 3e153),
+// input's extent plus twice the distance exceeds `2^510`, about 3e153; or
+// an offset that runs along a circular-arc site, which this version does
+// not trace yet),
 // `UNSUPPORTED_RANGE` (loops that f64 cannot trace, only on inputs beyond
 // the exact range); then `*out` is untouched.
 enum segvoronoi_status segvoronoi_diagram_offset(const struct segvoronoi_diagram *diagram,
@@ -1117,7 +1341,8 @@ uint32_t segvoronoi_version_number(void);
 void segvoronoi_string_free(char *text);
 
 // The shape of edge `edge_index` (`0 <= edge_index < edge_count`) in
-// `*out`: straight, or a parabolic arc with its focus and directrix.
+// `*out`: straight, a parabolic arc with its focus and directrix, or a
+// conic arc beside a circular-arc site.
 //
 // Ownership: `*out` is caller-owned memory, written only on success.
 // Errors: `NULL_ARGUMENT` (`diagram` or `out`), `OUT_OF_RANGE`,
@@ -1130,7 +1355,7 @@ enum segvoronoi_status segvoronoi_diagram_edge_shape(const struct segvoronoi_dia
 // A polyline along the finite edge `edge_index`, from its first end to its
 // second (both vertex positions included exactly), within `tolerance`
 // (input units) of the true edge: 2 points for a straight edge, as few as
-// the curvature allows for a parabolic arc, never more than 1,000,000 (the
+// the curvature allows for a parabolic or conic arc, never more than 1,000,000 (the
 // tolerance is then not met). Writes up to `capacity_points` points to `xy`
 // as `x0, y0, x1, y1, ...` (`2 * capacity_points` doubles) and the full
 // number of points to `*count`; `xy = NULL, capacity_points = 0` only
@@ -1162,12 +1387,39 @@ enum segvoronoi_status segvoronoi_diagram_edge_polyline(const struct segvoronoi_
 // Ownership: `xy` is caller-owned memory, written only on success.
 // Errors: `NULL_ARGUMENT` (`diagram` or `xy`), `OUT_OF_RANGE`
 // (`edge_index`), `INVALID_ARGUMENT` (a straight edge, see
-// `segvoronoi_diagram_edge_shape`, or a ray or line; also an arc whose
-// control point is beyond the range of `double`).
+// `segvoronoi_diagram_edge_shape`, a conic edge beside a circular arc, see
+// `segvoronoi_diagram_edge_rational_bezier`, or a ray or line; also an arc
+// whose control point is beyond the range of `double`).
 // Thread safety: reads the diagram only; safe from many threads at once.
 enum segvoronoi_status segvoronoi_diagram_edge_bezier(const struct segvoronoi_diagram *diagram,
                                                       size_t edge_index,
                                                       double *xy);
+
+// The rational quadratic Bézier curve of the finite curved edge
+// `edge_index` (a conic beside a circular arc, or a parabola):
+// `xy = {x0, y0, x1, y1, x2, y2}` (six doubles) gets its start (the
+// position of `ends[0]`), its control point (where the edge's tangents at
+// its ends meet) and its end (the position of `ends[1]`), and `*weight`
+// the control point's weight `w` (the ends' weights are 1), so that
+// `((1-u)² p0 + 2u(1-u) w p1 + u² p2) / ((1-u)² + 2u(1-u) w + u²)` for `u`
+// in `[0, 1]` runs along the edge: `w = 1` for a parabola (then the curve
+// of `segvoronoi_diagram_edge_bezier`), `w < 1` for an ellipse, `w > 1` for
+// a hyperbola. Conics are exactly rational quadratics, so this is the
+// edge itself to the rounding of its numbers; a conic's weight is fitted
+// through the edge's point halfway between its ends. Since 0.2.
+//
+// Ownership: `xy` and `weight` are caller-owned memory, written only on
+// success.
+// Errors: `NULL_ARGUMENT` (`diagram`, `xy` or `weight`), `OUT_OF_RANGE`
+// (`edge_index`), `INVALID_ARGUMENT` (a straight edge, see
+// `segvoronoi_diagram_edge_shape`; a ray or a line; or a piece whose
+// tangents at its ends do not meet ahead of both, one that turns by half a
+// turn or more: sample it with `segvoronoi_diagram_edge_polyline`).
+// Thread safety: reads the diagram only; safe from many threads at once.
+enum segvoronoi_status segvoronoi_diagram_edge_rational_bezier(const struct segvoronoi_diagram *diagram,
+                                                               size_t edge_index,
+                                                               double *xy,
+                                                               double *weight);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -17,7 +17,7 @@ use segvoronoi::{Builder, MAX_POINTS};
 /// (nothing in it is tied to the thread that made it), but two calls on it
 /// must not overlap; calls on different builders may.
 pub struct segvoronoi_builder {
-    inner: Builder,
+    pub(crate) inner: Builder,
     last_error: CString,
     /// The input indices of the last error (`Error::indices`).
     last_error_indices: Vec<usize>,
@@ -26,7 +26,7 @@ pub struct segvoronoi_builder {
 impl segvoronoi_builder {
     /// Keeps the outcome of a call as this builder's last error and the
     /// thread's (`segvoronoi_last_error_message`).
-    fn record(&mut self, result: Result<(), Error>) -> segvoronoi_status {
+    pub(crate) fn record(&mut self, result: Result<(), Error>) -> segvoronoi_status {
         match result {
             Ok(()) => {
                 self.set_error(CString::default(), Vec::new());
@@ -42,8 +42,14 @@ impl segvoronoi_builder {
     /// A failure found at the boundary (a NULL buffer, a count too large to
     /// describe one): the builder's message too, so that it never keeps the
     /// message of an earlier call.
-    fn refuse(&mut self, status: segvoronoi_status, message: &str) -> segvoronoi_status {
-        self.set_error(CString::new(message).unwrap_or_default(), Vec::new());
+    pub(crate) fn refuse(&mut self, status: segvoronoi_status, message: &str) -> segvoronoi_status {
+        self.refuse_naming(status, message, Vec::new())
+    }
+
+    /// A failure found at the boundary that names input indices (kept for
+    /// `segvoronoi_builder_last_error_indices`).
+    pub(crate) fn refuse_naming(&mut self, status: segvoronoi_status, message: &str, indices: Vec<usize>) -> segvoronoi_status {
+        self.set_error(CString::new(message.replace('\0', " ")).unwrap_or_default(), indices);
         fail(status, message)
     }
 
@@ -313,13 +319,17 @@ pub unsafe extern "C" fn segvoronoi_builder_point_count(builder: *const segvoron
 /// Builds the diagram of everything added so far and stores it in `*out`.
 /// The builder is not consumed and stays as it was.
 ///
-/// Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments cross or
-/// overlap or a point lies inside a segment (the message names both input
-/// indices). `SEGVORONOI_STATUS_UNSUPPORTED_RANGE` when the input's
+/// Errors: `SEGVORONOI_STATUS_INTERSECTING` when two segments or arcs cross
+/// or overlap or a point lies inside a segment or an arc (the message names
+/// both inputs). `SEGVORONOI_STATUS_UNSUPPORTED_RANGE` when the input's
 /// coordinates span more than the exact range (largest magnitude over
 /// `2^480`, about 3e144, times the smallest nonzero magnitude or difference
 /// between coordinates) and the build at that span did not check out (see
-/// the README's "exact range"): not a bug. `SEGVORONOI_STATUS_INTERNAL` when
+/// the README's "exact range"): not a bug. `SEGVORONOI_STATUS_INVALID_ARGUMENT`
+/// for an input with arcs that this version does not build yet (the
+/// message says which and what to do): arcs together with polygons or with
+/// splitting (`segvoronoi_builder_set_split_crossings`), or an arc that
+/// would reach around every site added before it (give it as two arcs). `SEGVORONOI_STATUS_INTERNAL` when
 /// the construction could not complete a valid diagram, or panicked: a bug
 /// in segvoronoi (none is known), never an invalid diagram;
 /// `segvoronoi_last_error_message` says what failed. Please report the
@@ -373,7 +383,9 @@ pub unsafe extern "C" fn segvoronoi_builder_build(
 /// (`segvoronoi_diagram_pieces_of_input`, `_inputs_of_piece`), each within
 /// `segvoronoi_diagram_max_split_displacement` of its input segments, and
 /// polygons bound the even-odd region of their split rings (see
-/// `Builder::split_crossings` in the Rust documentation).
+/// `Builder::split_crossings` in the Rust documentation). Arcs are not
+/// split yet: a build with arcs and splitting on is
+/// `SEGVORONOI_STATUS_INVALID_ARGUMENT`.
 ///
 /// Errors: `NULL_ARGUMENT`.
 #[no_mangle]
@@ -388,9 +400,10 @@ pub unsafe extern "C" fn segvoronoi_builder_set_split_crossings(builder: *mut se
 }
 
 /// Checks everything added so far as `segvoronoi_builder_build` does first,
-/// without building: `SEGVORONOI_STATUS_OK` when no two segments cross or
-/// overlap and no point lies inside a segment (shared endpoints are fine).
-/// Exact, O(n log n) expected time for n points and segments.
+/// without building: `SEGVORONOI_STATUS_OK` when no two segments or arcs
+/// cross or overlap and no point lies inside a segment or an arc (shared
+/// endpoints are fine). Exact, O(n log n) expected time for n points and
+/// segments.
 ///
 /// Errors: `SEGVORONOI_STATUS_INTERSECTING` with the same message and
 /// indices `_build` would give (`segvoronoi_builder_last_error`,
@@ -434,7 +447,9 @@ pub unsafe extern "C" fn segvoronoi_builder_last_error(builder: *const segvorono
 
 /// The input indices that the last failed call on this builder named (the
 /// numbers in its `segvoronoi_builder_last_error` message): for
-/// `SEGVORONOI_STATUS_INVALID_COORDINATE` the point's or segment's index,
+/// `SEGVORONOI_STATUS_INVALID_COORDINATE` the point's, segment's or arc's
+/// index (a bulged polyline's vertex), for `SEGVORONOI_STATUS_INVALID_ARC`
+/// the arc's index (a bulged polyline's vertex),
 /// for `SEGVORONOI_STATUS_INTERSECTING` both (two segment indices, or the
 /// point's and then the segment's), for `SEGVORONOI_STATUS_INTERNAL` the
 /// segment that failed when one did; none after a successful call. Writes

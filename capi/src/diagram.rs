@@ -58,23 +58,29 @@ impl segvoronoi_diagram {
     }
 }
 
-/// A site: a point, or an open segment. Versioned: set `struct_size` before
-/// the call (see the header's introduction).
+/// A site: a point, an open segment or an open circular arc. Versioned: set
+/// `struct_size` before the call (see the header's introduction).
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct segvoronoi_site {
     /// Set by the caller to `sizeof(segvoronoi_site)`; the library writes
     /// the fields that fit and sets it to the number of bytes written.
     pub struct_size: usize,
-    /// `SEGVORONOI_SITE_POINT` or `SEGVORONOI_SITE_SEGMENT`.
+    /// `SEGVORONOI_SITE_POINT`, `SEGVORONOI_SITE_SEGMENT` or
+    /// `SEGVORONOI_SITE_ARC`; more kinds may come, so treat an unknown one
+    /// as "none of these".
     pub kind: u32,
-    /// The point, or the segment's first endpoint, in input coordinates.
+    /// The point, or the segment's first endpoint, or the arc's start, in
+    /// input coordinates.
     pub x: f64,
-    /// The point, or the segment's first endpoint, in input coordinates.
+    /// The point, or the segment's first endpoint, or the arc's start, in
+    /// input coordinates.
     pub y: f64,
-    /// The segment's second endpoint (the point again for a point site).
+    /// The segment's second endpoint or the arc's end (the point again for
+    /// a point site).
     pub x2: f64,
-    /// The segment's second endpoint (the point again for a point site).
+    /// The segment's second endpoint or the arc's end (the point again for
+    /// a point site).
     pub y2: f64,
 }
 versioned!(segvoronoi_site, y2: f64);
@@ -84,6 +90,10 @@ pub const SEGVORONOI_SITE_POINT: u32 = 0;
 /// `segvoronoi_site.kind` of an open-segment site (its endpoints are point
 /// sites of their own).
 pub const SEGVORONOI_SITE_SEGMENT: u32 = 1;
+/// `segvoronoi_site.kind` of an open circular-arc site (its endpoints are
+/// point sites of their own; `segvoronoi_diagram_arc` gives its circle).
+/// Arc sites are the last ids, after the open segments. Since 0.2.
+pub const SEGVORONOI_SITE_ARC: u32 = 2;
 
 /// A finite Voronoi vertex. Versioned: set `struct_size` before the call
 /// (see the header's introduction).
@@ -138,8 +148,8 @@ pub struct segvoronoi_edge {
     /// `true` when the edge is unbounded: a ray or a line, with an end at
     /// infinity (`vertex == SEGVORONOI_NO_VERTEX`).
     pub is_infinite: bool,
-    /// `true` when the edge is a separator: between a segment and one of
-    /// its own endpoints (the medial axis leaves these out). Since 0.2.
+    /// `true` when the edge is a separator: between a segment or an arc and
+    /// one of its own endpoints (the medial axis leaves these out). Since 0.2.
     pub is_separator: bool,
 }
 versioned!(segvoronoi_edge, is_infinite: bool);
@@ -156,7 +166,8 @@ pub struct segvoronoi_stats {
     pub input_points: usize,
     /// Segments given to the builder.
     pub input_segments: usize,
-    /// Distinct sites in the diagram (points, then open segments).
+    /// Distinct sites in the diagram (points, then open segments, then open
+    /// arcs).
     pub sites: usize,
     /// Input points merged into an equal earlier point or segment endpoint.
     pub duplicate_points: usize,
@@ -190,6 +201,11 @@ pub struct segvoronoi_stats {
     /// cancelled in pairs (two copies of one shared stretch; always even).
     /// Since 0.2.
     pub cancelled_ring_pieces: usize,
+    /// Arcs given to the builder (`segvoronoi_builder_add_arc` and the arcs
+    /// of bulged polylines). Since 0.2.
+    pub input_arcs: usize,
+    /// Open-arc sites in the diagram: the last `arc_sites` site ids. Since 0.2.
+    pub arc_sites: usize,
 }
 versioned!(segvoronoi_stats, edges: usize);
 
@@ -235,14 +251,16 @@ pub unsafe extern "C" fn segvoronoi_diagram_validate(diagram: *const segvoronoi_
     })
 }
 
-/// Number of sites (distinct points, then open segments); 0 for NULL.
+/// Number of sites (distinct points, then open segments, then open arcs); 0
+/// for NULL.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_site_count(diagram: *const segvoronoi_diagram) -> usize {
     count(diagram, Diagram::site_count)
 }
 
 /// Number of point sites; sites `0..point_site_count` are points, the rest
-/// open segments. 0 for NULL.
+/// open segments and then open arcs (`segvoronoi_diagram_arc_site_count`).
+/// 0 for NULL.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_point_site_count(diagram: *const segvoronoi_diagram) -> usize {
     count(diagram, Diagram::point_site_count)
@@ -278,6 +296,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_site(
         let (kind, [a, b]) = match site {
             Site::Point(p) => (SEGVORONOI_SITE_POINT, [p, p]),
             Site::Segment { a, b } => (SEGVORONOI_SITE_SEGMENT, [a, b]),
+            Site::Arc(arc) => (SEGVORONOI_SITE_ARC, [arc.start(), arc.end()]),
             _ => return unknown_variant("a site kind"),
         };
         write_versioned(out, segvoronoi_site { kind, x: a.x, y: a.y, x2: b.x, y2: b.y, ..Default::default() })
@@ -313,22 +332,28 @@ fn with_cell(
     })
 }
 
-/// The id of segment site `index`: `OUT_OF_RANGE` past the sites,
-/// `INVALID_ARGUMENT` for a point site.
-fn segment_site_id(d: &Diagram, index: usize) -> Result<SiteId, segvoronoi_status> {
+/// The id of segment or arc site `index`: `OUT_OF_RANGE` past the sites,
+/// `INVALID_ARGUMENT` for a point site, and for an arc site unless
+/// `arcs_too`.
+fn segment_site_id(d: &Diagram, index: usize, arcs_too: bool) -> Result<SiteId, segvoronoi_status> {
     match site_id(d, index) {
         None => Err(out_of_range("site", index, d.site_count())),
         Some(_) if index < d.point_site_count() => Err(fail(
             segvoronoi_status::InvalidArgument,
             format!("site {index} is a point site, not a segment (sites 0..{} are points)", d.point_site_count()),
         )),
+        Some(s) if !arcs_too && matches!(d.site(s), Some(Site::Arc(_))) => Err(fail(
+            segvoronoi_status::InvalidArgument,
+            format!("site {index} is an arc site, not a segment (see segvoronoi_diagram_arc_input_index)"),
+        )),
         Some(s) => Ok(s),
     }
 }
 
-/// The two endpoint sites of segment site `site` in `out_endpoints[0]` and
-/// `out_endpoints[1]` (`out_endpoints` points to two `uint32_t`): the point
-/// sites at `(x, y)` and at `(x2, y2)` of the segment's `segvoronoi_site`.
+/// The two endpoint sites of segment or arc site `site` in
+/// `out_endpoints[0]` and `out_endpoints[1]` (`out_endpoints` points to two
+/// `uint32_t`): the point sites at `(x, y)` and at `(x2, y2)` of its
+/// `segvoronoi_site` (an arc's start and end).
 ///
 /// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`site >= site_count`),
 /// `INVALID_ARGUMENT` (a point site); then nothing is written.
@@ -341,7 +366,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_segment_endpoints(
 ) -> segvoronoi_status {
     require_non_null!(out_endpoints);
     with_diagram(diagram, |d| {
-        let ends = match segment_site_id(d, site).map(|s| d.segment_endpoints(s)) {
+        let ends = match segment_site_id(d, site, true).map(|s| d.segment_endpoints(s)) {
             Ok(Some(ends)) => ends,
             Ok(None) => {
                 return fail(
@@ -357,10 +382,11 @@ pub unsafe extern "C" fn segvoronoi_diagram_segment_endpoints(
 
 /// The input index of segment site `site` in `*out_index`: which
 /// `segvoronoi_builder_add_segment(s)` input it is (the first of its
-/// repeats; what the topology text calls `S<j>`).
+/// repeats; what the topology text calls `S<j>`). An arc site's input index
+/// is `segvoronoi_diagram_arc_input_index`'s.
 ///
 /// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`site >= site_count`),
-/// `INVALID_ARGUMENT` (a point site); then nothing is written.
+/// `INVALID_ARGUMENT` (a point or arc site); then nothing is written.
 /// Thread safety: reads the diagram only; safe from many threads at once.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_segment_input_index(
@@ -369,7 +395,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_segment_input_index(
     out_index: *mut usize,
 ) -> segvoronoi_status {
     require_non_null!(out_index);
-    with_diagram(diagram, |d| match segment_site_id(d, site).map(|s| d.segment_input_index(s)) {
+    with_diagram(diagram, |d| match segment_site_id(d, site, false).map(|s| d.segment_input_index(s)) {
         Ok(Some(j)) => write_out(out_index, j),
         Ok(None) => fail(segvoronoi_status::Internal, format!("segment site {site} has no input index; please report the input")),
         Err(status) => status,
@@ -573,6 +599,8 @@ pub unsafe extern "C" fn segvoronoi_diagram_stats(
                 snap_rounds: s.snap_rounds,
                 split_at_vertices: s.split_at_vertices,
                 cancelled_ring_pieces: s.cancelled_ring_pieces,
+                input_arcs: s.input_arcs,
+                arc_sites: d.arc_site_count(),
             },
         )
     })

@@ -36,6 +36,7 @@
 #![allow(non_camel_case_types)]
 #![allow(clippy::missing_safety_doc)]
 
+mod arcs;
 mod builder;
 mod diagram;
 mod domain;
@@ -47,6 +48,7 @@ mod pieces;
 mod plumbing;
 mod shape;
 
+pub use arcs::*;
 pub use builder::*;
 pub use diagram::*;
 pub use domain::*;

@@ -11,7 +11,7 @@ use super::out::{
 };
 use super::plumbing::{fail, guard, guard_or, out_of_range, require_non_null, segvoronoi_status, try_box};
 use super::SEGVORONOI_MAX_POLYLINE_POINTS;
-use segvoronoi::{Diagram, EdgeEnd, MedialAxis, MedialAxisFilter};
+use segvoronoi::{Diagram, EdgeEnd, EdgeShape, MedialAxis, MedialAxisFilter};
 
 /// A medial axis (`segvoronoi_diagram_medial_axis`). Opaque and immutable.
 /// Free it with `segvoronoi_medial_axis_free`.
@@ -286,12 +286,31 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_sample_chain(
     })
 }
 
+/// Whether `point` (`[x, y, clearance]`), the library's point of a piece
+/// of a conic edge beside a circular arc, is off that edge: not as far
+/// from one of the edge's sites as from the other (to a relative 1e-9 of
+/// the input's extent and the clearance). The library's edge curves do
+/// not evaluate curved conics yet (it answers the chord); such a point is
+/// refused rather than passed on. Straight (degenerate) conics and every
+/// other shape pass.
+fn off_its_conic(d: &Diagram, p: &segvoronoi::Piece, point: [f64; 3]) -> bool {
+    if !matches!(d.edge_shape(p.edge), Some(EdgeShape::Conic { .. })) {
+        return false;
+    }
+    let q = segvoronoi::Point::new(point[0], point[1]);
+    let Some([a, b]) = d.edge(p.edge).map(|e| e.sites.map(|s| d.site(s))) else { return false };
+    let (Some(a), Some(b)) = (a, b) else { return false };
+    (a.distance(q) - b.distance(q)).abs() > 1e-9 * d.extent().max(point[2]).max(f64::MIN_POSITIVE)
+}
+
 /// The point of piece `piece` of chain `chain` at parameter `t` (0 at its
 /// start, 1 at its end, in the chain's direction) and the clearance there,
 /// as `{x, y, clearance}` in `xyr[0..3]`.
 ///
 /// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (chain or piece), `INVALID_ARGUMENT`
-/// (`t` outside `[0, 1]`, or a piece that reaches infinity),
+/// (`t` outside `[0, 1]`, or a piece that reaches infinity, or a curved
+/// conic piece beside a circular arc, which this version cannot evaluate
+/// at a parameter: `segvoronoi_medial_axis_sample_chain` samples it),
 /// `UNSUPPORTED_RANGE` (a point that f64 cannot compute, only on inputs
 /// beyond the exact range); then `xyr` is untouched.
 #[no_mangle]
@@ -305,11 +324,26 @@ pub unsafe extern "C" fn segvoronoi_medial_axis_piece_at(
     require_non_null!(xyr);
     with_piece(axis, chain, piece, |d, p| match d.piece_point_at(p, t) {
         // three consecutive doubles: the alignment of an array of them
+        Some(point) if off_its_conic(d, p, point) => fail(
+            segvoronoi_status::InvalidArgument,
+            format!(
+                "piece {piece} of chain {chain} is a conic edge beside a circular arc, which this version cannot \
+                 evaluate at a parameter (segvoronoi_medial_axis_sample_chain and segvoronoi_diagram_edge_polyline \
+                 sample it)"
+            ),
+        ),
         Some(point) => write_out(xyr.cast::<[f64; 3]>(), point),
         None if !(0.0..=1.0).contains(&t) => fail(segvoronoi_status::InvalidArgument, format!("t = {t} is outside [0, 1]")),
         None if p.ends.iter().any(|end| matches!(end, EdgeEnd::Infinite { .. })) => fail(
             segvoronoi_status::InvalidArgument,
             format!("piece {piece} of chain {chain} reaches infinity: it has no point at a parameter"),
+        ),
+        None if matches!(d.edge_shape(p.edge), Some(EdgeShape::Conic { .. })) => fail(
+            segvoronoi_status::InvalidArgument,
+            format!(
+                "piece {piece} of chain {chain} is a conic edge beside a circular arc, which this version cannot \
+                 evaluate at a parameter (segvoronoi_diagram_edge_polyline samples it)"
+            ),
         ),
         None => fail(
             segvoronoi_status::UnsupportedRange,

@@ -18,9 +18,14 @@ fn half_edge_query(
     f: impl FnOnce(&Diagram, HalfEdge) -> Option<usize>,
 ) -> segvoronoi_status {
     require_non_null!(out);
-    with_diagram(diagram, |d| match f(d, HalfEdge::from_index(h as usize)) {
-        Some(answer) => write_out(out, answer as u32),
-        None => out_of_range("half-edge", h as usize, 2 * d.edge_count()),
+    with_diagram(diagram, |d| {
+        // bounded first: `HalfEdge::from_index` asserts (in debug builds)
+        // that the index is below `u32::MAX`
+        let answer = ((h as usize) < 2 * d.edge_count()).then(|| f(d, HalfEdge::from_index(h as usize))).flatten();
+        match answer {
+            Some(answer) => write_out(out, answer as u32),
+            None => out_of_range("half-edge", h as usize, 2 * d.edge_count()),
+        }
     })
 }
 

@@ -9,7 +9,8 @@ use segvoronoi::{Offset, OffsetLoop, OffsetPiece};
 /// `segvoronoi_loop_piece.kind` of a straight piece, parallel to a
 /// segment site.
 pub const SEGVORONOI_OFFSET_LINE: u32 = 0;
-/// `segvoronoi_loop_piece.kind` of a circular arc around a point site.
+/// `segvoronoi_loop_piece.kind` of a circular arc around a point site (or
+/// concentric with a circular-arc site).
 pub const SEGVORONOI_OFFSET_ARC: u32 = 1;
 /// `segvoronoi_loop.parent` of an outermost loop.
 pub const SEGVORONOI_NO_PARENT: u32 = u32::MAX;
@@ -82,7 +83,9 @@ versioned!(segvoronoi_loop_piece, counter_clockwise: bool);
 /// Ownership: the caller frees `*out` with `segvoronoi_offset_free`.
 /// Errors: `NULL_ARGUMENT`, `INVALID_ARGUMENT` (a distance that is NaN,
 /// infinite or zero, or not positive without polygons, or one at which the
-/// input's extent plus twice the distance exceeds `2^510`, about 3e153),
+/// input's extent plus twice the distance exceeds `2^510`, about 3e153; or
+/// an offset that runs along a circular-arc site, which this version does
+/// not trace yet),
 /// `UNSUPPORTED_RANGE` (loops that f64 cannot trace, only on inputs beyond
 /// the exact range); then `*out` is untouched.
 #[no_mangle]
@@ -126,6 +129,13 @@ pub unsafe extern "C" fn segvoronoi_diagram_offsets(
             Ok(offsets) => offsets,
             Err(e) => return fail_with(&e),
         };
+        if let Some(site) = offsets.iter().find_map(|o| untrue_arc_piece(d, o)) {
+            let message = format!(
+                "the offset runs along arc site {site}, and this version traces offsets of points and segments only: \
+                 offsets of circular arcs are not supported yet"
+            );
+            return fail(segvoronoi_status::InvalidArgument, message);
+        }
         // All handles first, so that `out` is written only on success.
         let mut handles: Vec<*mut segvoronoi_offset> = Vec::new();
         if handles.try_reserve_exact(count).is_err() {
@@ -148,6 +158,24 @@ pub unsafe extern "C" fn segvoronoi_diagram_offsets(
             unsafe { out.add(k).write(h) };
         }
         segvoronoi_status::Ok
+    })
+}
+
+/// The arc site of a piece of `offset` that is not the concentric circular
+/// arc an offset of an arc site is (a line, or a circle about another
+/// centre): the library traces arc sites as it traces the others only
+/// once it offsets arcs, and the C API passes on nothing untrue.
+fn untrue_arc_piece(d: &segvoronoi::Diagram, offset: &Offset) -> Option<usize> {
+    if d.arc_site_count() == 0 {
+        return None;
+    }
+    offset.loops.iter().flat_map(|l| l.pieces.iter()).find_map(|piece| {
+        let site = piece.site();
+        let Some(segvoronoi::Site::Arc(arc)) = d.site(site) else { return None };
+        match *piece {
+            OffsetPiece::Arc { centre, .. } if centre == arc.centre() => None,
+            _ => Some(site.index()),
+        }
     })
 }
 

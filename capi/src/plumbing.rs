@@ -41,8 +41,8 @@ pub enum segvoronoi_status {
     NullArgument = 1,
     /// An input coordinate is NaN or infinite (the message names the input index).
     InvalidCoordinate = 2,
-    /// Input segments cross or overlap, or a point lies inside a segment
-    /// (the message names both input indices).
+    /// Input segments or arcs cross or overlap, or a point lies inside a
+    /// segment or an arc (the message names both inputs).
     Intersecting = 3,
     /// An index argument is out of range.
     OutOfRange = 4,
@@ -73,11 +73,16 @@ pub enum segvoronoi_status {
     /// the two coordinates and the range. Not a bug; see the README.
     /// Since 0.2.
     UnsupportedRange = 11,
+    /// A circular arc is not one: a zero or non-finite bulge, equal
+    /// endpoints, three points on one line, or a circle beyond the range of
+    /// `double` (the message says which and names the arc or the polyline
+    /// vertex). Nothing was added. Since 0.2.
+    InvalidArc = 12,
 }
 
 impl segvoronoi_status {
     /// Every status, in numeric order.
-    const ALL: [segvoronoi_status; 12] = [
+    const ALL: [segvoronoi_status; 13] = [
         segvoronoi_status::Ok,
         segvoronoi_status::NullArgument,
         segvoronoi_status::InvalidCoordinate,
@@ -90,6 +95,7 @@ impl segvoronoi_status {
         segvoronoi_status::InvalidPolygon,
         segvoronoi_status::OutOfMemory,
         segvoronoi_status::UnsupportedRange,
+        segvoronoi_status::InvalidArc,
     ];
 
     fn from_number(n: c_int) -> Option<segvoronoi_status> {
@@ -108,6 +114,7 @@ impl From<&Error> for segvoronoi_status {
             ErrorKind::InvalidPolygon => segvoronoi_status::InvalidPolygon,
             ErrorKind::InvalidArgument => segvoronoi_status::InvalidArgument,
             ErrorKind::OutOfMemory => segvoronoi_status::OutOfMemory,
+            ErrorKind::InvalidArc => segvoronoi_status::InvalidArc,
             // `#[non_exhaustive]`: see `unknown_variant`.
             _ => segvoronoi_status::Internal,
         }
@@ -305,7 +312,7 @@ pub extern "C" fn segvoronoi_status_str(status: c_int) -> *const c_char {
         segvoronoi_status::Ok => c"ok",
         segvoronoi_status::NullArgument => c"a required pointer argument is NULL",
         segvoronoi_status::InvalidCoordinate => c"a coordinate is NaN or infinite",
-        segvoronoi_status::Intersecting => c"input segments intersect",
+        segvoronoi_status::Intersecting => c"input segments or arcs intersect",
         segvoronoi_status::OutOfRange => c"index out of range",
         segvoronoi_status::BufferTooSmall => c"buffer too small",
         segvoronoi_status::TooLarge => c"too large: too many input sites or output points",
@@ -314,6 +321,7 @@ pub extern "C" fn segvoronoi_status_str(status: c_int) -> *const c_char {
         segvoronoi_status::InvalidPolygon => c"a polygon ring has fewer than three distinct points",
         segvoronoi_status::OutOfMemory => c"out of memory",
         segvoronoi_status::UnsupportedRange => c"the input's coordinates span more than the exact range",
+        segvoronoi_status::InvalidArc => c"invalid circular arc",
     };
     s.as_ptr()
 }

@@ -1,6 +1,8 @@
-//! Edge geometry in C: the shape of an edge (straight or parabolic), a
-//! polyline along it, and the Bézier curve of an arc. Delegates to
-//! `Diagram::edge_shape`, `Diagram::edge_polyline` and `Diagram::edge_bezier`.
+//! Edge geometry in C: the shape of an edge (straight, parabolic, or a
+//! conic beside a circular arc), a polyline along it, and the (rational)
+//! Bézier curve of a curved one. Delegates to `Diagram::edge_shape`,
+//! `Diagram::edge_polyline`, `Diagram::edge_bezier` and
+//! `Diagram::edge_rational_bezier`.
 
 use super::diagram::{segvoronoi_diagram, with_diagram};
 use super::offset::not_positive;
@@ -15,8 +17,18 @@ pub const SEGVORONOI_EDGE_LINE: u32 = 0;
 /// focus) and a segment site that does not end at it (its supporting line is
 /// the directrix).
 pub const SEGVORONOI_EDGE_PARABOLA: u32 = 1;
+/// `segvoronoi_edge_shape.kind` of a conic arc: between two sites of which
+/// at least one is a circular arc (not between an arc and one of its own
+/// endpoints, which is `SEGVORONOI_EDGE_LINE`): a piece of a line,
+/// parabola, ellipse or hyperbola branch. Its two sites are the edge's
+/// (`segvoronoi_diagram_edge`); the shape's coordinates are 0.
+/// `segvoronoi_diagram_edge_polyline` samples it, and
+/// `segvoronoi_diagram_edge_rational_bezier` gives a curved one exactly.
+/// Since 0.2.
+pub const SEGVORONOI_EDGE_CONIC: u32 = 2;
 
-/// The shape of an edge. For `SEGVORONOI_EDGE_LINE` all coordinates are 0.
+/// The shape of an edge. For `SEGVORONOI_EDGE_LINE` and
+/// `SEGVORONOI_EDGE_CONIC` all coordinates are 0.
 /// Versioned: set `struct_size` before the call (see the header's
 /// introduction); more shapes may come, so treat an unknown `kind` as
 /// "neither".
@@ -26,7 +38,8 @@ pub struct segvoronoi_edge_shape {
     /// Set by the caller to `sizeof(segvoronoi_edge_shape)`; the library
     /// writes the fields that fit and sets it to the number of bytes written.
     pub struct_size: usize,
-    /// `SEGVORONOI_EDGE_LINE` or `SEGVORONOI_EDGE_PARABOLA`.
+    /// `SEGVORONOI_EDGE_LINE`, `SEGVORONOI_EDGE_PARABOLA` or
+    /// `SEGVORONOI_EDGE_CONIC`.
     pub kind: u32,
     /// The focus (the point site), in input coordinates.
     pub focus_x: f64,
@@ -44,7 +57,8 @@ pub struct segvoronoi_edge_shape {
 versioned!(segvoronoi_edge_shape, directrix_y2: f64);
 
 /// The shape of edge `edge_index` (`0 <= edge_index < edge_count`) in
-/// `*out`: straight, or a parabolic arc with its focus and directrix.
+/// `*out`: straight, a parabolic arc with its focus and directrix, or a
+/// conic arc beside a circular-arc site.
 ///
 /// Ownership: `*out` is caller-owned memory, written only on success.
 /// Errors: `NULL_ARGUMENT` (`diagram` or `out`), `OUT_OF_RANGE`,
@@ -73,6 +87,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_shape(
                 ..Default::default()
             },
             EdgeShape::Line => segvoronoi_edge_shape { kind: SEGVORONOI_EDGE_LINE, ..Default::default() },
+            EdgeShape::Conic { .. } => segvoronoi_edge_shape { kind: SEGVORONOI_EDGE_CONIC, ..Default::default() },
             _ => return unknown_variant("an edge shape"),
         };
         write_versioned(out, shape)
@@ -82,7 +97,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_shape(
 /// A polyline along the finite edge `edge_index`, from its first end to its
 /// second (both vertex positions included exactly), within `tolerance`
 /// (input units) of the true edge: 2 points for a straight edge, as few as
-/// the curvature allows for a parabolic arc, never more than 1,000,000 (the
+/// the curvature allows for a parabolic or conic arc, never more than 1,000,000 (the
 /// tolerance is then not met). Writes up to `capacity_points` points to `xy`
 /// as `x0, y0, x1, y1, ...` (`2 * capacity_points` doubles) and the full
 /// number of points to `*count`; `xy = NULL, capacity_points = 0` only
@@ -143,8 +158,9 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_polyline(
 /// Ownership: `xy` is caller-owned memory, written only on success.
 /// Errors: `NULL_ARGUMENT` (`diagram` or `xy`), `OUT_OF_RANGE`
 /// (`edge_index`), `INVALID_ARGUMENT` (a straight edge, see
-/// `segvoronoi_diagram_edge_shape`, or a ray or line; also an arc whose
-/// control point is beyond the range of `double`).
+/// `segvoronoi_diagram_edge_shape`, a conic edge beside a circular arc, see
+/// `segvoronoi_diagram_edge_rational_bezier`, or a ray or line; also an arc
+/// whose control point is beyond the range of `double`).
 /// Thread safety: reads the diagram only; safe from many threads at once.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_edge_bezier(
@@ -157,11 +173,59 @@ pub unsafe extern "C" fn segvoronoi_diagram_edge_bezier(
         let Some(edge) = edge_id(d, edge_index) else { return out_of_range("edge", edge_index, d.edge_count()) };
         match d.edge_bezier(edge) {
             Some(curve) => write_out(xy.cast::<[[f64; 2]; 3]>(), curve.map(<[f64; 2]>::from)),
+            None if matches!(d.edge_shape(edge), Some(EdgeShape::Conic { .. })) => fail(
+                segvoronoi_status::InvalidArgument,
+                format!("edge {edge_index} is a conic arc beside a circular arc: use segvoronoi_diagram_edge_rational_bezier"),
+            ),
             None => fail(
                 segvoronoi_status::InvalidArgument,
                 format!("edge {edge_index} is no finite parabolic arc (straight, a ray or a line, or its control point is beyond double)"),
             ),
         }
+    })
+}
+
+/// The rational quadratic Bézier curve of the finite curved edge
+/// `edge_index` (a conic beside a circular arc, or a parabola):
+/// `xy = {x0, y0, x1, y1, x2, y2}` (six doubles) gets its start (the
+/// position of `ends[0]`), its control point (where the edge's tangents at
+/// its ends meet) and its end (the position of `ends[1]`), and `*weight`
+/// the control point's weight `w` (the ends' weights are 1), so that
+/// `((1-u)² p0 + 2u(1-u) w p1 + u² p2) / ((1-u)² + 2u(1-u) w + u²)` for `u`
+/// in `[0, 1]` runs along the edge: `w = 1` for a parabola (then the curve
+/// of `segvoronoi_diagram_edge_bezier`), `w < 1` for an ellipse, `w > 1` for
+/// a hyperbola. Conics are exactly rational quadratics, so this is the
+/// edge itself to the rounding of its numbers; a conic's weight is fitted
+/// through the edge's point halfway between its ends. Since 0.2.
+///
+/// Ownership: `xy` and `weight` are caller-owned memory, written only on
+/// success.
+/// Errors: `NULL_ARGUMENT` (`diagram`, `xy` or `weight`), `OUT_OF_RANGE`
+/// (`edge_index`), `INVALID_ARGUMENT` (a straight edge, see
+/// `segvoronoi_diagram_edge_shape`; a ray or a line; or a piece whose
+/// tangents at its ends do not meet ahead of both, one that turns by half a
+/// turn or more: sample it with `segvoronoi_diagram_edge_polyline`).
+/// Thread safety: reads the diagram only; safe from many threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_edge_rational_bezier(
+    diagram: *const segvoronoi_diagram,
+    edge_index: usize,
+    xy: *mut f64,
+    weight: *mut f64,
+) -> segvoronoi_status {
+    require_non_null!(xy, weight);
+    with_diagram(diagram, |d| {
+        let Some(edge) = edge_id(d, edge_index) else { return out_of_range("edge", edge_index, d.edge_count()) };
+        if let Some((curve, w)) = d.edge_rational_bezier(edge) {
+            write_out(xy.cast::<[[f64; 2]; 3]>(), curve.map(<[f64; 2]>::from));
+            return write_out(weight, w);
+        }
+        let why = match (d.edge(edge).map(|e| e.is_infinite()), d.edge_shape(edge)) {
+            (Some(true), _) => "a ray or a line: it has no finite curve",
+            (_, Some(EdgeShape::Line)) => "straight (see segvoronoi_diagram_edge_shape)",
+            _ => "a piece whose end tangents do not meet ahead of both (it turns by half a turn or more): sample it with segvoronoi_diagram_edge_polyline",
+        };
+        fail(segvoronoi_status::InvalidArgument, format!("edge {edge_index} has no rational Bézier curve: it is {why}"))
     })
 }
 

@@ -70,7 +70,13 @@ fn audit(d: &Diagram, tol: f64) -> Vec<String> {
             }
         }
         let tol = tol + 1e-12 * r; // far vertices: relative to their distance
-        let (k, n) = sites.iter().enumerate().map(|(k, s)| (k, distance(s, v.position))).fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+        let (k, n) = sites.iter().enumerate().map(|(k, s)| (k, distance(s, v.position))).fold((0, f64::INFINITY), |a, b| {
+            if b.1 < a.1 {
+                b
+            } else {
+                a
+            }
+        });
         if n < r - tol {
             failures.push(format!(
                 "vertex {:?} at {:?} r {r} of {:?}: site {k} {:?} nearer at {n}",
@@ -86,10 +92,11 @@ fn audit(d: &Diagram, tol: f64) -> Vec<String> {
     let neighbours: std::collections::HashSet<(usize, usize)> =
         d.edges().map(|e| (e.sites[0].index().min(e.sites[1].index()), e.sites[0].index().max(e.sites[1].index()))).collect();
     let points: Vec<Point> = sites.iter().filter_map(Site::as_point).collect();
-    let (lo, hi) = points.iter().fold(
-        (Point::new(f64::INFINITY, f64::INFINITY), Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY)),
-        |(lo, hi), p| (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y))),
-    );
+    let (lo, hi) = points
+        .iter()
+        .fold((Point::new(f64::INFINITY, f64::INFINITY), Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY)), |(lo, hi), p| {
+            (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y)))
+        });
     let span = (hi.x - lo.x).max(hi.y - lo.y).max(tol);
     let steps = 150;
     let h = 2.0 * span / steps as f64;
@@ -106,7 +113,10 @@ fn audit(d: &Diagram, tol: f64) -> Vec<String> {
             }
             let [(d1, s1), (d2, s2), (d3, _)] = best;
             if d2 - d1 < 0.05 * h && d3 - d2 > 0.5 * h && !neighbours.contains(&(s1.min(s2), s1.max(s2))) {
-                failures.push(format!("grid point {q:?}: sites {s1} {:?} and {s2} {:?} meet there but are not neighbours", sites[s1], sites[s2]));
+                failures.push(format!(
+                    "grid point {q:?}: sites {s1} {:?} and {s2} {:?} meet there but are not neighbours",
+                    sites[s1], sites[s2]
+                ));
             }
         }
     }
@@ -116,7 +126,11 @@ fn audit(d: &Diagram, tol: f64) -> Vec<String> {
         for &q in &poly[1..poly.len() - 1] {
             let (da, db) = (distance(&a, q), distance(&b, q));
             if !((da - db).abs() <= 10.0 * tol) || nearest(q) < da.min(db) - 10.0 * tol {
-                failures.push(format!("edge {:?} between {a:?} and {b:?}: point {q:?} at {da} / {db}, nearest {}", e.id, nearest(q)));
+                failures.push(format!(
+                    "edge {:?} between {a:?} and {b:?}: point {q:?} at {da} / {db}, nearest {}",
+                    e.id,
+                    nearest(q)
+                ));
                 break;
             }
         }
@@ -378,8 +392,6 @@ fn minimise_failures() {
     }
 }
 
-
-
 #[test]
 fn larger_random_cells() {
     for seed in 100..106 {
@@ -392,7 +404,8 @@ fn larger_random_cells() {
 /// angles and radii, each piece a segment or a gentle arc (bulges up to
 /// 0.3 either way, which keep the pieces apart).
 fn bulged_star(rng: &mut SplitMix64, cx: f64, cy: f64, n: usize) -> Vec<Piece> {
-    let mut angles: Vec<f64> = (0..n).map(|k| (k as f64 + 0.2 + 0.6 * rng.unit()) * 2.0 * std::f64::consts::PI / n as f64).collect();
+    let mut angles: Vec<f64> =
+        (0..n).map(|k| (k as f64 + 0.2 + 0.6 * rng.unit()) * 2.0 * std::f64::consts::PI / n as f64).collect();
     angles.sort_by(f64::total_cmp);
     let vertices: Vec<Point> = angles
         .iter()
@@ -500,7 +513,9 @@ fn arcs_under_fault_injection_stay_valid() {
     inputs.push(rounded_rectangle(0.0, 0.0, 10.0, 6.0, 1.5));
     let (mut built, mut internal) = (0, 0);
     for (k, pieces) in inputs.iter().enumerate() {
-        for (mode, seed) in [(FaultMode::Noise(1e-3), k as u64), (FaultMode::Random, k as u64 + 100), (FaultMode::Noise(1e-9), k as u64)] {
+        for (mode, seed) in
+            [(FaultMode::Noise(1e-3), k as u64), (FaultMode::Random, k as u64 + 100), (FaultMode::Noise(1e-9), k as u64)]
+        {
             let mut b = Builder::new();
             for piece in pieces {
                 let _ = match *piece {
@@ -549,12 +564,15 @@ fn minimised_regressions() {
         (
             "segment separator beside a major arc",
             vec![
-                through(p(0.5860536738139531, 1.688329738735034), p(0.6774860034388183, 1.393360214496651), p(0.37412067599131615, 1.3355989019014738)),
+                through(
+                    p(0.5860536738139531, 1.688329738735034),
+                    p(0.6774860034388183, 1.393360214496651),
+                    p(0.37412067599131615, 1.3355989019014738),
+                ),
                 Piece::Segment(p(1.5862830710843003, 1.2351925335102054), p(1.7091949701180797, 1.2075232970850867)),
             ],
             2.0,
         ),
-
         // a circle through an arc's far end touching it outside its span
         // is no vertex of the arc
         (
@@ -571,10 +589,40 @@ fn minimised_regressions() {
         (
             "bent chain of two arcs",
             vec![
-                arc(p(-3.365341295494898, -0.8634076946683307), p(-3.4563483427289916, -0.38961647773224206), 0.056736216684684246),
-                arc(p(-3.4563483427289916, -0.38961647773224206), p(-3.6721166247612738, -0.2677190730692256), -0.03755259995762972),
+                arc(
+                    p(-3.365341295494898, -0.8634076946683307),
+                    p(-3.4563483427289916, -0.38961647773224206),
+                    0.056736216684684246,
+                ),
+                arc(
+                    p(-3.4563483427289916, -0.38961647773224206),
+                    p(-3.6721166247612738, -0.2677190730692256),
+                    -0.03755259995762972,
+                ),
             ],
             4.0,
+        ),
+        // a fillet continuing a segment to within rounding (DXF's bulge
+        // tan(turn/4)): along their common separator at infinity the arc
+        // reaches exactly as far as the segment, a tie
+        (
+            "fillet after a segment",
+            vec![
+                arc(p(3.915172883037511, 0.3229822720338445), p(3.846383266350475, 0.4442167111175046), 0.26381388851567816),
+                Piece::Segment(p(3.915305808673275, -0.23756022561524337), p(3.915172883037511, 0.3229822720338445)),
+            ],
+            4.0,
+        ),
+        // a fillet before a tangent segment: the vertex at the arc's
+        // centre ties with the arc (all of it on the circle)
+        (
+            "fillet before a segment",
+            vec![
+                arc(p(0.8247334520687937, 0.4030376653859736), p(0.7259978576020354, 0.5207989039518675), 0.4885384011451861),
+                Piece::Segment(p(0.7259978576020354, 0.5207989039518675), p(-0.6790901116763554, 0.4704468506287919)),
+                Piece::Segment(p(0.5700974603517577, 2.1934299860049036), p(0.9011832625331512, 2.59626404596324)),
+            ],
+            3.0,
         ),
     ];
     for (k, (name, pieces, size)) in cases.into_iter().enumerate() {
@@ -666,7 +714,7 @@ fn the_input_check_names_both() {
     b.add_arc(half(p(1.0, 0.0), p(-1.0, 0.0))).unwrap();
     b.add_arc(CircularArc::through(p(0.0, 1.0), p(-0.6, 0.8), p(-0.8, -0.6)).unwrap()).unwrap();
     refused(&b, "arcs 0 and 1"); // an end of one inside the other, on one circle
-    // a point on the arc
+                                 // a point on the arc
     let mut b = Builder::new();
     b.add_arc(half(p(5.0, 0.0), p(-5.0, 0.0))).unwrap();
     b.add_point([3.0, 4.0]).unwrap();
@@ -697,10 +745,19 @@ fn the_input_check_names_both() {
 fn chord_diagrams_converge_to_the_arcs_diagram() {
     let mut pieces = rounded_rectangle(0.0, 0.0, 10.0, 6.0, 1.5);
     pieces.extend(rounded_rectangle(2.0, 2.0, 3.0, 2.0, 0.5));
-    pieces.extend(stars(3).into_iter().map(|p| match p {
-        Piece::Point(q) => Piece::Point(Point::new(q.x + 12.0, q.y)),
-        Piece::Segment(a, b) => Piece::Segment(Point::new(a.x + 12.0, a.y), Point::new(b.x + 12.0, b.y)),
-        Piece::Arc(arc) => Piece::Arc(CircularArc::from_bulge(Point::new(arc.start().x + 12.0, arc.start().y), Point::new(arc.end().x + 12.0, arc.end().y), arc.bulge()).unwrap()),
+    pieces.extend(stars(3).into_iter().map(|p| {
+        match p {
+            Piece::Point(q) => Piece::Point(Point::new(q.x + 12.0, q.y)),
+            Piece::Segment(a, b) => Piece::Segment(Point::new(a.x + 12.0, a.y), Point::new(b.x + 12.0, b.y)),
+            Piece::Arc(arc) => Piece::Arc(
+                CircularArc::from_bulge(
+                    Point::new(arc.start().x + 12.0, arc.start().y),
+                    Point::new(arc.end().x + 12.0, arc.end().y),
+                    arc.bulge(),
+                )
+                .unwrap(),
+            ),
+        }
     }));
     pieces.push(Piece::Point(Point::new(7.0, 3.0)));
     let exact = build(&pieces);
@@ -752,7 +809,8 @@ fn chord_diagrams_converge_to_the_arcs_diagram() {
 /// the tangent points computed in floating point and its bulge
 /// `tan(turn / 4)`, so the joints are tangent only to within rounding.
 fn filleted_polygon(rng: &mut SplitMix64, cx: f64, cy: f64, n: usize, radius: f64) -> Vec<Piece> {
-    let mut angles: Vec<f64> = (0..n).map(|k| (k as f64 + 0.3 + 0.4 * rng.unit()) * 2.0 * std::f64::consts::PI / n as f64).collect();
+    let mut angles: Vec<f64> =
+        (0..n).map(|k| (k as f64 + 0.3 + 0.4 * rng.unit()) * 2.0 * std::f64::consts::PI / n as f64).collect();
     angles.sort_by(f64::total_cmp);
     let corners: Vec<Point> = angles.iter().map(|&t| Point::new(cx + t.cos(), cy + t.sin())).collect();
     let mut ends = Vec::new(); // per corner: (before, after, bulge)

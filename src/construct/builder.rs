@@ -395,7 +395,13 @@ impl Builder {
     /// `build` without the check of inputs beyond the exact range.
     fn build_at_any_span(&self) -> Result<Diagram, Error> {
         if !self.arcs.is_empty() {
-            return super::with_arcs::diagram_with_arcs(&self.points, &self.segments, &self.arcs, self.split_crossings, !self.rings.is_empty());
+            return super::with_arcs::diagram_with_arcs(
+                &self.points,
+                &self.segments,
+                &self.arcs,
+                self.split_crossings,
+                !self.rings.is_empty(),
+            );
         }
         if self.split_crossings && !self.segments.is_empty() {
             let mut diagram = super::split::diagram_of_split(&self.points, &self.segments, &self.rings)?;

@@ -38,9 +38,9 @@ mod renumber;
 mod restart;
 mod shared_stretches;
 mod split;
-mod with_arcs;
 mod state;
 mod status_treap;
+mod with_arcs;
 
 pub use builder::{Builder, ChainPiece, MAX_POINTS};
 #[cfg(feature = "fault-injection")]

@@ -8,9 +8,9 @@
 //! wrong): splitting crossings, and polygons (the domain and what stands
 //! on it: location, medial axis, offsets).
 
+use super::insert_segment::ArcStuck;
 use super::renumber::ArcSite;
 use super::restart::Outcome;
-use super::insert_segment::ArcStuck;
 use super::state::Construction;
 use super::Sites;
 use crate::diagram::{Diagram, SiteId};
@@ -61,7 +61,7 @@ pub(super) fn diagram_with_arcs(
     let first_arc = diagram.sites.len() - diagram.arc_sites;
     diagram.arc_site = (0..diagram.arc_sites).map(|k| SiteId::from_index(first_arc + k)).collect();
     let diagram = super::accept(diagram, outcome, &all, segments)?;
-    if std::env::var_os("SEGV_DEBUG").is_none() { vertices_touch_their_arcs(&diagram)?; }
+    vertices_touch_their_arcs(&diagram)?;
     Ok(diagram)
 }
 
@@ -80,7 +80,8 @@ fn vertices_touch_their_arcs(diagram: &Diagram) -> Result<(), Error> {
             continue;
         }
         let tolerance = 1e-7 * (diagram.extent + v.clearance);
-        let miss = v.sites.iter().map(|&s| (diagram.sites[s.index()].distance(v.position) - v.clearance).abs()).fold(0.0, f64::max);
+        let miss =
+            v.sites.iter().map(|&s| (diagram.sites[s.index()].distance(v.position) - v.clearance).abs()).fold(0.0, f64::max);
         if !(miss <= tolerance) {
             let arc = v.sites.iter().find(|s| s.index() >= first_arc).map_or(0, |s| s.index() - first_arc);
             let arc = diagram.arc_input.get(arc).copied().unwrap_or(0) as usize;

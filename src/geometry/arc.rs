@@ -103,8 +103,7 @@ impl CircularArc {
         let (centre, counter_clockwise, minor) = match datum {
             Datum::Bulge(b) => (bulge_centre(start, end, b), b > 0.0, b.abs() < 1.0),
             Datum::Through(m) => {
-                let ccw = super::predicates::exact_orientation(start, m, end)
-                    == super::predicates::Orientation::CounterClockwise;
+                let ccw = super::predicates::exact_orientation(start, m, end) == super::predicates::Orientation::CounterClockwise;
                 // less than a half turn: the angle at `m` is obtuse
                 (circumcentre(start, m, end), ccw, dot(m, start, end) < 0.0)
             }
@@ -246,7 +245,14 @@ impl CircularArc {
             Datum::Through(m) => Datum::Through(t(m)),
             bulge => bulge,
         };
-        let moved = CircularArc { start: t(self.start), end: t(self.end), datum, centre: t(self.centre), radius: self.radius * unit, ..*self };
+        let moved = CircularArc {
+            start: t(self.start),
+            end: t(self.end),
+            datum,
+            centre: t(self.centre),
+            radius: self.radius * unit,
+            ..*self
+        };
         CircularArc::new(moved.start, moved.end, datum, String::new).unwrap_or(moved)
     }
 

@@ -390,7 +390,8 @@ fn conic_bezier(sites: &[Site; 2], start: Point, end: Point) -> Option<([Point; 
     // triangle: w² = τ1² / (4 τ0 τ2)
     let area = |a: Point, b: Point, c: Point| (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     let whole = area(start, control, end);
-    let (tau0, tau1, tau2) = (area(middle, control, end) / whole, area(start, middle, end) / whole, area(start, control, middle) / whole);
+    let (tau0, tau1, tau2) =
+        (area(middle, control, end) / whole, area(start, middle, end) / whole, area(start, control, middle) / whole);
     let w = tau1 / (2.0 * (tau0 * tau2).sqrt());
     (w.is_finite() && w > 0.0).then_some(([start, control, end], w))
 }

@@ -39,15 +39,6 @@ impl Construction {
         self.fresh_epoch();
         let found = self.find_segment_path(a, b);
         self.grow_segment_tree(a, b);
-        if std::env::var_os("SEGV_DEBUG").is_some() {
-            eprintln!("arc {a:?}->{b:?} found {found} sites {:?} {:?}", self.sites[a.index()], self.sites[b.index()]);
-            for v in 0..self.store.vertex_count() {
-                let v = VertexId::from_index(v);
-                let inf = self.store.is_at_infinity(v);
-                let depth = if inf { f64::NAN } else { self.segment_depth(v, a, b).depth() };
-                eprintln!("  v{} sites {:?} pos {:?} r {} depth {depth:e} conflict {} tree {}", v.index(), self.store.sites_of(v), self.store.position[v.index()], self.store.clearance[v.index()], self.segment_conflict(v, a, b), self.tree.contains(&v));
-            }
-        }
         self.replace_tree(e);
         self.inserting_arc = None;
         if found {

@@ -253,11 +253,15 @@ mod tests {
     fn sides_of_an_arc() {
         let ccw = CircularArc::from_bulge([1.0, 0.0], [-1.0, 0.0], 1.0).unwrap();
         let inside = Site::Point(p(0.0, 0.5));
-        assert!(arc_left_degree(&ccw, ArcSiteSeen::Other { site: inside, from: None }).side()
-            == crate::geometry::predicates::Orientation::CounterClockwise);
+        assert!(
+            arc_left_degree(&ccw, ArcSiteSeen::Other { site: inside, from: None }).side()
+                == crate::geometry::predicates::Orientation::CounterClockwise
+        );
         let cw = ccw.reversed();
-        assert!(arc_left_degree(&cw, ArcSiteSeen::Other { site: inside, from: None }).side()
-            == crate::geometry::predicates::Orientation::Clockwise);
+        assert!(
+            arc_left_degree(&cw, ArcSiteSeen::Other { site: inside, from: None }).side()
+                == crate::geometry::predicates::Orientation::Clockwise
+        );
         // a segment continuing the arc's tangent at its start stays outside
         let tangent = Site::Segment { a: p(1.0, 0.0), b: p(1.0, -3.0) };
         let seen = ArcSiteSeen::SharingEndpoint { site: tangent, end: p(1.0, 0.0) };

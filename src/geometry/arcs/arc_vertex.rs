@@ -298,9 +298,8 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
     let near = 1e-9 * (scale + radius.abs());
     let touching: [Point; 3] = std::array::from_fn(|k| {
         let [a, b] = sites[k].ends();
-        let end = [a, b].into_iter().find(|&e| {
-            plain[k].distance(e) <= near && (0..3).any(|j| j != k && plain[j].distance(e) <= near)
-        });
+        let end =
+            [a, b].into_iter().find(|&e| plain[k].distance(e) <= near && (0..3).any(|j| j != k && plain[j].distance(e) <= near));
         match (sites[k], end) {
             (Site::Segment { .. }, Some(e)) => {
                 let far = if e == a { b } else { a };
@@ -323,9 +322,8 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
     // stand for that end's own vertex (a circle through it), which fits
     // the distances too; it is this triple's vertex only where nothing
     // else fits (a tangent join, where the two separators are one line).
-    let unbacked = (0..3)
-        .filter(|&k| matches!(touch[k], Touching::AtEnd(e) if !sites.iter().any(|s| s.as_point() == Some(e))))
-        .count();
+    let unbacked =
+        (0..3).filter(|&k| matches!(touch[k], Touching::AtEnd(e) if !sites.iter().any(|s| s.as_point() == Some(e)))).count();
     let fitting = residual <= 1e-6 * (scale + radius.abs());
     Some(if fitting { unbacked as f64 + residual / (scale + radius.abs()) } else { 10.0 + residual })
 }
@@ -416,8 +414,12 @@ fn polish(sites: &[Site; 3], mut centre: Point, mut radius: f64) -> (Point, f64)
         }
         let h = 1e-7 * (radius.abs() + centre.x.abs().max(centre.y.abs())).max(1e-300);
         let grad = |k: usize| {
-            let dx = (sites[k].distance(Point::new(centre.x + h, centre.y)) - sites[k].distance(Point::new(centre.x - h, centre.y))) / (2.0 * h);
-            let dy = (sites[k].distance(Point::new(centre.x, centre.y + h)) - sites[k].distance(Point::new(centre.x, centre.y - h))) / (2.0 * h);
+            let dx = (sites[k].distance(Point::new(centre.x + h, centre.y))
+                - sites[k].distance(Point::new(centre.x - h, centre.y)))
+                / (2.0 * h);
+            let dy = (sites[k].distance(Point::new(centre.x, centre.y + h))
+                - sites[k].distance(Point::new(centre.x, centre.y - h)))
+                / (2.0 * h);
             [dx, dy, -1.0]
         };
         let j = [grad(0), grad(1), grad(2)];
