@@ -78,6 +78,24 @@ def voronoi(
     >>> from shapely import box
     >>> [d.edge_count for d in voronoi(geometry=[box(0, 0, 1, 1), box(0, 0, 2, 1), None])]
     [13, 13, 0]
+
+    A slot: two sides and two half circles (bulge 1) of radius 1. Its
+    vertices are the half circles' centres, each as far from its arc as
+    from the sides:
+
+    >>> slot = voronoi(segments=[[[0, 0], [4, 0]], [[4, 2], [0, 2]]],
+    ...                arcs=[[4, 0, 4, 2, 1], [0, 2, 0, 0, 1]])
+    >>> slot.site_kinds.tolist()  # four endpoints, two sides, two arcs
+    [0, 0, 0, 0, 1, 1, 2, 2]
+    >>> slot.site_arc_index[6:].tolist(), slot.arc_circles[6:].tolist()  # centre x, y, radius, bulge
+    ([0, 1], [[4.0, 1.0, 1.0, 1.0], [0.0, 1.0, 1.0, 1.0]])
+    >>> sorted(set(map(tuple, slot.vertices.tolist())))
+    [(0.0, 1.0), (4.0, 1.0)]
+    >>> on_arc = (slot.vertex_sites == 6).any(axis=1)  # the vertices of arc 0's cell
+    >>> cx, cy, r, _ = slot.arc_circles[6]
+    >>> to_circle = np.abs(np.hypot(*(slot.vertices[on_arc] - [cx, cy]).T) - r)
+    >>> bool(np.array_equal(to_circle, slot.clearances[on_arc])), slot.clearances.tolist()
+    (True, [1.0, 1.0, 1.0, 1.0, 1.0, 1.0])
     """
     if is_many(geometry):
         if points is not None or segments is not None:
