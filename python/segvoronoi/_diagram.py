@@ -52,9 +52,10 @@ def voronoi(
             piece is a segment); their input indices are the rows. They
             may share endpoints with each other and with the segments but
             not cross, overlap or touch inside (:class:`IntersectingError`,
-            naming both; ``split_crossings`` does not split arcs); an
-            invalid row raises :class:`InvalidArcError` naming it. Only
-            with one geometry. See :attr:`Diagram.arc_circles`.
+            naming both); an invalid row raises :class:`InvalidArcError`
+            naming it. Only with one geometry, and not yet with its
+            polygons nor with ``split_crossings``
+            (:class:`InvalidArgumentError`). See :attr:`Diagram.arc_circles`.
         split_crossings: split crossings and overlaps by snap rounding
             instead of raising (the diagram is then that of the pieces).
 

@@ -251,6 +251,11 @@ def test_invalid_rows_raise_invalid_arc(row):
     assert info.value.indices == (1,)
 
 
+def test_arcs_with_split_crossings_are_refused_for_now():
+    with pytest.raises(segvoronoi.InvalidArgumentError, match="arcs"):
+        segvoronoi.voronoi(segments=SLOT_SEGMENTS, arcs=SLOT_ARCS, split_crossings=True)
+
+
 def test_arcs_with_many_geometries_are_refused():
     with pytest.raises(segvoronoi.InvalidArgumentError):
         segvoronoi.voronoi(geometry=[shapely.box(0, 0, 1, 1), shapely.box(0, 0, 2, 1)], arcs=SLOT_ARCS)
