@@ -25,7 +25,8 @@ impl Failure {
     pub fn of(error: &Error, builder: Option<&Builder>, geometry: Option<usize>) -> Failure {
         // a conflict with an arc names arcs (and points) by their own
         // indices: no common point of two segments to find
-        let with_arc = error.message().contains("arc");
+        let m = error.message();
+        let with_arc = m.starts_with("arc") || m.contains(" arc ");
         let point = match (error.kind(), builder, error.indices()) {
             (ErrorKind::Intersecting, Some(b), &[i, j]) if !with_arc => b
                 .segment(i)

@@ -231,6 +231,19 @@ def test_arc_crossing_a_segment_names_both():
     assert info.value.indices == (0, 0) and info.value.point is None
 
 
+def test_point_on_an_arc_names_both():
+    with pytest.raises(segvoronoi.IntersectingError) as info:
+        segvoronoi.voronoi(points=[[5.0, 5.0], [0.0, 1.0]], arcs=[[-1.0, 0.0, 1.0, 0.0, -1.0]])
+    assert info.value.message == "point 1 lies on arc 0"
+    assert info.value.indices == (1, 0) and info.value.point is None
+
+
+def test_crossing_segments_beside_arcs_keep_their_point():
+    with pytest.raises(segvoronoi.IntersectingError) as info:
+        segvoronoi.voronoi(segments=[[[0, 0], [4, 0]], [[2, -1], [2, 1]]], arcs=[[10.0, 0.0, 12.0, 0.0, 1.0]])
+    assert info.value.indices == (0, 1) and info.value.point == (2.0, 0.0)
+
+
 def test_zero_bulge_raises_invalid_arc_naming_the_row():
     arcs = np.array([[0.0, 0.0, 1.0, 0.0, 1.0], [5.0, 0.0, 6.0, 0.0, 0.0]])
     with pytest.raises(segvoronoi.InvalidArcError) as info:
