@@ -1,7 +1,7 @@
 //! A library error as data for Python: its kind's name, message, indices,
 //! and for two segments that meet, a point they share (none for a conflict
-//! with a circular arc). The Python side
-//! (`segvoronoi/_errors.py`) turns it into the exception class of its kind;
+//! with a circular arc). The Python side (`segvoronoi/_errors.py`) turns
+//! it into the exception class of its kind;
 //! keeping the classes in Python keeps them documented, typed and picklable
 //! (Dask ships exceptions between processes).
 
