@@ -1,4 +1,5 @@
-"""segvoronoi: exact Voronoi diagrams of points and line segments.
+"""segvoronoi: exact Voronoi diagrams of points, line segments and circular
+arcs.
 
 Medial axes with clearance, largest inscribed circles and offsets of shapely
 and numpy input, from the Rust library segvoronoi (the topology-oriented
@@ -28,6 +29,7 @@ from ._errors import (
     Error,
     IntersectingError,
     InternalError,
+    InvalidArcError,
     InvalidArgumentError,
     InvalidCoordinateError,
     InvalidGeometryError,
@@ -49,6 +51,7 @@ __all__ = [
     "Error",
     "IntersectingError",
     "InternalError",
+    "InvalidArcError",
     "InvalidArgumentError",
     "InvalidCoordinateError",
     "InvalidGeometryError",

@@ -11,7 +11,7 @@ import shapely
 
 from . import _native
 from ._api import check_corner_angle, check_errors, check_positive, check_threads
-from ._errors import InvalidArgumentError, error_of, raise_failure
+from ._errors import InvalidArgumentError, InvalidGeometryError, error_of, raise_failure
 from ._pack import as_points, as_segments, is_many, pack_many, pack_one
 from ._shapes import multilinestrings, multipolygons
 
@@ -23,11 +23,12 @@ def voronoi(
     segments: Any = None,
     geometry: Any = None,
     *,
+    arcs: Any = None,
     split_crossings: bool = False,
     threads: Optional[int] = None,
     errors: str = "raise",
 ) -> Any:
-    """The Voronoi diagram of points, segments and a geometry.
+    """The Voronoi diagram of points, segments, circular arcs and a geometry.
 
     Args:
         points: an ``(n, 2)`` array of points (any float dtype, any strides);
@@ -44,6 +45,17 @@ def voronoi(
             and ``segments``) gives an array of diagrams, built on up to
             ``threads`` threads; ``errors='coerce'`` puts None where a
             geometry fails instead of raising.
+        arcs: a ``(k, 5)`` array of circular arcs, rows ``[start_x,
+            start_y, end_x, end_y, bulge]`` with DXF's bulge ``tan(θ/4)``
+            (θ the signed angle swept from start to end, positive
+            counter-clockwise; 1 is a half circle; never 0: a straight
+            piece is a segment); their input indices are the rows. They
+            may share endpoints with each other and with the segments but
+            not cross, overlap or touch inside (:class:`IntersectingError`,
+            naming both); an invalid row raises :class:`InvalidArcError`
+            naming it. Only with one geometry, and not yet with its
+            polygons nor with ``split_crossings``
+            (:class:`InvalidArgumentError`). See :attr:`Diagram.arc_circles`.
         split_crossings: split crossings and overlaps by snap rounding
             instead of raising (the diagram is then that of the pieces).
 
@@ -67,10 +79,30 @@ def voronoi(
     >>> from shapely import box
     >>> [d.edge_count for d in voronoi(geometry=[box(0, 0, 1, 1), box(0, 0, 2, 1), None])]
     [13, 13, 0]
+
+    A slot: two sides and two half circles (bulge 1) of radius 1. Its
+    vertices are the half circles' centres, each as far from its arc as
+    from the sides:
+
+    >>> slot = voronoi(segments=[[[0, 0], [4, 0]], [[4, 2], [0, 2]]],
+    ...                arcs=[[4, 0, 4, 2, 1], [0, 2, 0, 0, 1]])
+    >>> slot.site_kinds.tolist()  # four endpoints, two sides, two arcs
+    [0, 0, 0, 0, 1, 1, 2, 2]
+    >>> slot.site_arc_index[6:].tolist(), slot.arc_circles[6:].tolist()  # centre x, y, radius, bulge
+    ([0, 1], [[4.0, 1.0, 1.0, 1.0], [0.0, 1.0, 1.0, 1.0]])
+    >>> sorted(set(map(tuple, slot.vertices.tolist())))
+    [(0.0, 1.0), (4.0, 1.0)]
+    >>> on_arc = (slot.vertex_sites == 6).any(axis=1)  # the vertices of arc 0's cell
+    >>> cx, cy, r, _ = slot.arc_circles[6]
+    >>> to_circle = np.abs(np.hypot(*(slot.vertices[on_arc] - [cx, cy]).T) - r)
+    >>> bool(np.array_equal(to_circle, slot.clearances[on_arc])), slot.clearances.tolist()
+    (True, [1.0, 1.0, 1.0, 1.0, 1.0, 1.0])
     """
     if is_many(geometry):
         if points is not None or segments is not None:
             raise InvalidArgumentError("points and segments go with one geometry, not with many")
+        if arcs is not None:
+            raise InvalidArgumentError("arcs go with one geometry, not with many")
         check_threads(threads)
         check_errors(errors)
         results = _native.build_batch(pack_many(geometry), bool(split_crossings), threads)
@@ -83,11 +115,26 @@ def voronoi(
     pts = None if points is None else as_points(points)
     segs = None if segments is None else as_segments(segments)
     packed = _merge(pack_one(geometry), pts, segs)
-    built, failure = _native.build(packed, bool(split_crossings))
+    if arcs is None:
+        built, failure = _native.build(packed, bool(split_crossings))
+    else:
+        built, failure = _native.build_with_arcs(packed, as_arcs(arcs), bool(split_crossings))
     if failure is not None or built is None:
         raise_failure(failure or (-1, "Internal", "no diagram and no error", (), None))
     assert built is not None
     return Diagram(built, 0 if pts is None else len(pts))
+
+
+def as_arcs(arcs: Any) -> np.ndarray:
+    """A ``(k, 5)`` float64 array of arcs (any strides and dtype accepted)."""
+    a = np.asarray(arcs, dtype=np.float64)
+    if a.size == 0:
+        return np.zeros((0, 5), dtype=np.float64)
+    if a.ndim == 1 and a.shape[0] == 5:
+        a = a.reshape(1, 5)
+    if a.ndim != 2 or a.shape[1] != 5:
+        raise InvalidGeometryError(f"arcs must have shape (k, 5), got {a.shape}")
+    return np.ascontiguousarray(a)
 
 
 def _merge(base, pts, segs):
@@ -103,13 +150,15 @@ def _merge(base, pts, segs):
 
 
 class Diagram:
-    """A Voronoi diagram of points and segments (from :func:`voronoi`).
+    """A Voronoi diagram of points, segments and circular arcs (from
+    :func:`voronoi`).
 
     Sites: ids ``0..site_count``; the point sites first (each distinct point
-    once: the input points, then the segments' endpoints), then the open
-    segments in input order. A segment is three sites: its two endpoints
-    and the open segment between them. Arrays are made on first access and
-    kept.
+    once: the input points, then the segments' and arcs' endpoints), then
+    the open segments in input order, then the open arcs. A segment is
+    three sites: its two endpoints and the open segment between them; an
+    arc likewise its start, its end and the open arc. Arrays are made on
+    first access and kept.
 
     >>> import numpy as np
     >>> d = voronoi(segments=np.array([[[0, 0], [4, 0]]]), points=np.array([[2.0, 2.0]]))
@@ -190,19 +239,46 @@ class Diagram:
 
     @property
     def site_kinds(self) -> np.ndarray:
-        """``(S,)`` 0 for a point site, 1 for an open segment."""
+        """``(S,)`` 0 for a point site, 1 for an open segment, 2 for an open
+        circular arc."""
         return self._site[0]
 
     @property
     def site_coordinates(self) -> np.ndarray:
-        """``(S, 2, 2)`` each site's endpoints (a point: itself twice)."""
+        """``(S, 2, 2)`` each site's endpoints (a point: itself twice; an
+        arc: its start and end, its circle in :attr:`arc_circles`)."""
         return self._site[1]
 
     @property
     def site_segment_index(self) -> np.ndarray:
         """``(S,)`` each open segment's input index (a piece index with
-        ``split_crossings``), -1 for point sites."""
+        ``split_crossings``), -1 for point and arc sites."""
         return self._site[2]
+
+    @cached_property
+    def _arc(self):
+        return self._d.arc_arrays()
+
+    @property
+    def site_arc_index(self) -> np.ndarray:
+        """``(S,)`` each open arc's input index (its row of ``arcs``), -1
+        for point and segment sites."""
+        return self._arc[0]
+
+    @property
+    def arc_circles(self) -> np.ndarray:
+        """``(S, 4)`` each open arc's ``[centre_x, centre_y, radius,
+        bulge]`` (centre and radius rounded from the exact circle; the
+        bulge as given), NaN for point and segment sites.
+
+        >>> import numpy as np
+        >>> d = voronoi(arcs=[[1, 0, -1, 0, 1]])  # the upper half of the unit circle
+        >>> d.site_kinds.tolist(), d.site_arc_index.tolist()
+        ([0, 0, 2], [-1, -1, 0])
+        >>> d.arc_circles[2].tolist()
+        [0.0, 0.0, 1.0, 1.0]
+        """
+        return self._arc[1]
 
     @cached_property
     def point_sites(self) -> np.ndarray:
@@ -284,7 +360,8 @@ class Diagram:
 
     def topology(self, voronoi_pairs: bool = False) -> str:
         """The canonical topology text of the Rust library (``EDGES`` and
-        ``FACES`` sections naming sites ``P<site>`` and ``S<segment>``,
+        ``FACES`` sections naming sites ``P<site>`` and ``S<segment>``
+        (an open arc, for now, by its site id as ``P<site>``),
         sorted; the same for every valid answer on the same input), with
         ``VPAIRS`` and ``VVERTICES`` when ``voronoi_pairs``."""
         return self._d.topology(bool(voronoi_pairs))

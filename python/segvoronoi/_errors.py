@@ -16,6 +16,7 @@ __all__ = [
     "TooLargeError",
     "IntersectingError",
     "InvalidPolygonError",
+    "InvalidArcError",
     "InvalidArgumentError",
     "InvalidGeometryError",
     "OutOfMemoryError",
@@ -70,14 +71,19 @@ class TooLargeError(Error, ValueError):
 
 class IntersectingError(Error, ValueError):
     """Two segments cross or overlap (pass ``split_crossings=True`` to split
-    them instead).
+    them instead), or an arc crosses, overlaps or touches another arc, a
+    segment or a point inside it.
 
     Attributes:
         indices: the two segments' input indices: for ``voronoi(segments=S)``
             the rows of ``S``; for geometries, the order in which their
             rings and lines were added (the message names polygon and ring).
+            With an arc, the message says what each index is (``arcs 0 and
+            1 cross``, ``arc 0 and segment 2 cross``, ``point 3 lies on arc
+            1``) and the arcs' indices are rows of ``arcs``.
         point: a point both segments share ``(x, y)``, where they cross or
-            where their overlap begins (rounded to float).
+            where their overlap begins (rounded to float); None for a
+            conflict with an arc.
     """
 
     kind = "Intersecting"
@@ -88,6 +94,15 @@ class InvalidPolygonError(Error, ValueError):
     ``(polygon, ring)`` within the geometry."""
 
     kind = "InvalidPolygon"
+
+
+class InvalidArcError(Error, ValueError):
+    """A row of ``arcs`` is not a circular arc: a zero, NaN or infinite
+    bulge (a zero bulge is a straight segment: pass it in ``segments``), a
+    non-finite coordinate, equal endpoints, or a circle beyond the range of
+    float; the message says which. ``indices`` is ``(row,)``."""
+
+    kind = "InvalidArc"
 
 
 class InvalidArgumentError(Error, ValueError):
@@ -132,6 +147,7 @@ _BY_KIND = {
         TooLargeError,
         IntersectingError,
         InvalidPolygonError,
+        InvalidArcError,
         InvalidArgumentError,
         InvalidGeometryError,
         OutOfMemoryError,

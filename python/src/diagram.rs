@@ -91,8 +91,9 @@ impl PyDiagram {
         ))
     }
 
-    /// `(kinds (S,) 0 point / 1 segment, coordinates (S, 2, 2) (a point
-    /// twice), segment input index (S,) or -1 for points)`.
+    /// `(kinds (S,) 0 point / 1 segment / 2 arc, coordinates (S, 2, 2) (a
+    /// point twice; an arc's start and end), segment input index (S,) or -1
+    /// for points and arcs)`.
     fn site_arrays<'py>(
         &self,
         py: Python<'py>,
@@ -109,16 +110,46 @@ impl PyDiagram {
                     kinds.push(1);
                     coords.extend([a.x, a.y, b.x, b.y]);
                 }
+                segvoronoi::Site::Arc(arc) => {
+                    kinds.push(2);
+                    let (a, b) = (arc.start(), arc.end());
+                    coords.extend([a.x, a.y, b.x, b.y]);
+                }
                 // `Site` is non-exhaustive: a kind added later is named -1
                 _ => {
                     kinds.push(-1);
                     coords.extend([f64::NAN; 4]);
                 }
             }
-            input.push(d.segment_input_index(s).map_or(-1, |j| j as i64));
+            let segment = match d.site(s) {
+                Some(segvoronoi::Site::Segment { .. }) => d.segment_input_index(s),
+                _ => None,
+            };
+            input.push(segment.map_or(-1, |j| j as i64));
         }
         let n = kinds.len();
         Ok((kinds.into_pyarray(py), coords.into_pyarray(py).reshape([n, 2, 2])?, input.into_pyarray(py)))
+    }
+
+    /// `(arc input index (S,) or -1, circles (S, 4) of centre x, centre y,
+    /// radius, bulge, NaN for sites that are not arcs)`.
+    fn arc_arrays<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyArray1<i64>>, Bound<'py, PyArray2<f64>>)> {
+        let d = &self.inner;
+        let (mut input, mut circles) = (Vec::new(), Vec::new());
+        for s in d.site_ids() {
+            match d.site(s) {
+                Some(segvoronoi::Site::Arc(arc)) => {
+                    input.push(d.arc_input_index(s).map_or(-1, |j| j as i64));
+                    let c = arc.centre();
+                    circles.push([c.x, c.y, arc.radius(), arc.bulge()]);
+                }
+                _ => {
+                    input.push(-1);
+                    circles.push([f64::NAN; 4]);
+                }
+            }
+        }
+        Ok((input.into_pyarray(py), ravel2(py, circles)?))
     }
 
     /// The site of each input point (`site_of_input`), -1 for none.

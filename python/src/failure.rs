@@ -1,6 +1,7 @@
 //! A library error as data for Python: its kind's name, message, indices,
-//! and for two segments that meet, a point they share. The Python side
-//! (`segvoronoi/_errors.py`) turns it into the exception class of its kind;
+//! and for two segments that meet, a point they share (none for a conflict
+//! with a circular arc). The Python side (`segvoronoi/_errors.py`) turns
+//! it into the exception class of its kind;
 //! keeping the classes in Python keeps them documented, typed and picklable
 //! (Dask ships exceptions between processes).
 
@@ -22,8 +23,12 @@ impl Failure {
     /// The failure of geometry `geometry`, whose input was in `builder`
     /// (from which the point where two segments meet is found).
     pub fn of(error: &Error, builder: Option<&Builder>, geometry: Option<usize>) -> Failure {
+        // a conflict with an arc names arcs (and points) by their own
+        // indices: no common point of two segments to find
+        let m = error.message();
+        let with_arc = m.starts_with("arc") || m.contains(" arc ");
         let point = match (error.kind(), builder, error.indices()) {
-            (ErrorKind::Intersecting, Some(b), &[i, j]) => b
+            (ErrorKind::Intersecting, Some(b), &[i, j]) if !with_arc => b
                 .segment(i)
                 .zip(b.segment(j))
                 .and_then(|(s, t)| common_point([[s[0].x, s[0].y], [s[1].x, s[1].y]], [[t[0].x, t[0].y], [t[1].x, t[1].y]])),
@@ -61,6 +66,7 @@ fn kind_name(kind: ErrorKind) -> &'static str {
         ErrorKind::OutOfMemory => "OutOfMemory",
         ErrorKind::Internal => "Internal",
         ErrorKind::UnsupportedRange => "UnsupportedRange",
+        ErrorKind::InvalidArc => "InvalidArc",
         _ => "Unknown",
     }
 }

@@ -5,7 +5,7 @@
 //! shapely geometries, exception classes, argument checks — is in the
 //! Python modules of `segvoronoi/`.
 
-use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1};
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::prelude::*;
 use segvoronoi::Diagram;
 
@@ -214,6 +214,55 @@ fn build<'py>(
     }
 }
 
+/// Builds the diagram of one packed geometry with circular arcs `arcs`
+/// (`(k, 5)` rows `[start_x, start_y, end_x, end_y, bulge]`, added after
+/// the geometry, so that their input indices are the rows): `(Diagram,
+/// None)` or `(None, failure)`. An invalid row fails with the library's
+/// error and the row as its index.
+#[pyfunction]
+#[pyo3(signature = (packed, arcs, split_crossings))]
+fn build_with_arcs<'py>(
+    py: Python<'py>,
+    packed: PackedArgs<'py>,
+    arcs: PyReadonlyArray2<'py, f64>,
+    split_crossings: bool,
+) -> PyResult<(Option<diagram::PyDiagram>, Option<FailureTuple>)> {
+    let batch = Batch::from_args(&packed)?;
+    let view = arcs.as_array();
+    if view.ncols() != 5 && view.nrows() != 0 {
+        return Err(pyo3::exceptions::PyValueError::new_err(format!("arcs: expected 5 columns, got {}", view.ncols())));
+    }
+    let rows: Vec<[f64; 5]> = view.rows().into_iter().map(|r| [r[0], r[1], r[2], r[3], r[4]]).collect();
+    let job = |_: usize| -> Result<Diagram, Failure> {
+        let mut builder = if batch.len() == 0 {
+            let mut b = segvoronoi::Builder::new();
+            b.split_crossings(split_crossings);
+            b
+        } else {
+            batch.builder(0, split_crossings).map_err(|e| Failure::of(&e, None, None))?
+        };
+        for (i, r) in rows.iter().enumerate() {
+            let invalid = |e: &segvoronoi::Error| {
+                let mut f = Failure::of(e, None, None);
+                f.indices = vec![i];
+                f.message = format!("arcs row {i}: {}", f.message);
+                f
+            };
+            let arc = segvoronoi::CircularArc::from_bulge([r[0], r[1]], [r[2], r[3]], r[4]).map_err(|e| invalid(&e))?;
+            builder.add_arc(arc).map_err(|e| invalid(&e))?;
+        }
+        builder.build().map_err(|e| Failure::of(&e, Some(&builder), None))
+    };
+    let mut result = parallel::map(py, 1, Some(1), job, |g, m| Err(panicked(g, m)))?;
+    match result.pop().expect("one job") {
+        Ok(d) => Ok((Some(diagram::PyDiagram::new(d)), None)),
+        Err(mut f) => {
+            f.geometry = None;
+            Ok((None, Some(f.to_tuple())))
+        }
+    }
+}
+
 /// The diagram of each geometry: a list of `(Diagram, None)` or
 /// `(None, failure)`, built on up to `threads` threads.
 #[pyfunction]
@@ -244,6 +293,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(offsets_batch, m)?)?;
     m.add_function(wrap_pyfunction!(build, m)?)?;
     m.add_function(wrap_pyfunction!(build_batch, m)?)?;
+    m.add_function(wrap_pyfunction!(build_with_arcs, m)?)?;
     m.add_class::<diagram::PyDiagram>()?;
     Ok(())
 }

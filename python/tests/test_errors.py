@@ -107,6 +107,7 @@ def test_every_kind_has_its_class_and_pickles():
         "TooLarge": segvoronoi.TooLargeError,
         "Intersecting": segvoronoi.IntersectingError,
         "InvalidPolygon": segvoronoi.InvalidPolygonError,
+        "InvalidArc": segvoronoi.InvalidArcError,
         "InvalidArgument": segvoronoi.InvalidArgumentError,
         "OutOfMemory": segvoronoi.OutOfMemoryError,
         "Internal": segvoronoi.InternalError,
