@@ -653,33 +653,23 @@ fn time_per_arc() {
     }
 }
 
-/// A nearly full arc around a lone point takes almost every direction at
-/// infinity; its insertion goes wrong there today. The build refuses it
-/// with an error naming the arc (never a wrong diagram), and builds it
-/// given as two halves.
+/// An arc's cell can reach infinity in a whole range of directions and
+/// take the middle of another site's range there: a nearly full arc around
+/// a lone point, and a point beside a half circle's convex side (the
+/// point's edge at infinity is then cut twice, its middle kept).
 #[test]
-fn a_major_arc_around_everything_is_refused_and_its_halves_build() {
+fn arcs_that_take_the_middle_of_a_range_at_infinity() {
     let p = Point::new;
     let (s, e) = (p(4.103645997839492e-6, 4.444875403163561e-6), p(4.072980325062098e-6, 4.396651608325269e-6));
     let whole = CircularArc::from_bulge(s, e, -16.91563043820798).unwrap();
-    let mut b = Builder::new();
-    b.add_point([4.414853528807503e-6, 2.55279099708072e-7]).unwrap();
-    b.add_arc(whole).unwrap();
-    // (caught by the check of its vertices against their sites: the
-    // construction's numbers took a wrong turn at infinity)
-    let error = b.build().unwrap_err();
-    assert!(matches!(error.kind(), segvoronoi::ErrorKind::Internal | segvoronoi::ErrorKind::InvalidArgument), "{error}");
-    assert!(error.message().contains("arc 0"), "{error}");
-    assert_eq!(error.indices(), [0]);
-    // the same arc as two halves, split at its middle
+    let lone = Piece::Point(p(4.414853528807503e-6, 2.55279099708072e-7));
+    check_all_ways("nearly full arc around a point", &[lone, Piece::Arc(whole)], 5e-6, 11);
     let m = whole.midpoint();
     let half = (whole.sweep() / 8.0).tan();
-    let pieces = vec![
-        Piece::Point(p(4.414853528807503e-6, 2.55279099708072e-7)),
-        Piece::Arc(CircularArc::from_bulge(s, m, half).unwrap()),
-        Piece::Arc(CircularArc::from_bulge(m, e, half).unwrap()),
-    ];
-    check_all_ways("major arc in halves", &pieces, 5e-6, 11);
+    let halves = [lone, Piece::Arc(CircularArc::from_bulge(s, m, half).unwrap()), Piece::Arc(CircularArc::from_bulge(m, e, half).unwrap())];
+    check_all_ways("the same in halves", &halves, 5e-6, 12);
+    let beside = [Piece::Point(p(0.5, 3.0)), Piece::Arc(CircularArc::through(p(0.0, 0.0), p(0.5, 0.5), p(1.0, 0.0)).unwrap())];
+    assert_eq!(check_all_ways("a point beside a half circle", &beside, 3.0, 13), 1, "the centre alone is a finite vertex");
 }
 
 /// Crossing, touching and overlapping inputs are refused, exactly and

@@ -8,7 +8,6 @@
 //! wrong): splitting crossings, and polygons (the domain and what stands
 //! on it: location, medial axis, offsets).
 
-use super::insert_segment::ArcStuck;
 use super::renumber::ArcSite;
 use super::restart::Outcome;
 use super::state::Construction;
@@ -61,7 +60,11 @@ pub(super) fn diagram_with_arcs(
     let first_arc = diagram.sites.len() - diagram.arc_sites;
     diagram.arc_site = (0..diagram.arc_sites).map(|k| SiteId::from_index(first_arc + k)).collect();
     let diagram = super::accept(diagram, outcome, &all, segments)?;
-    vertices_touch_their_arcs(&diagram)?;
+    // (not under fault injection, whose lying numbers misplace vertices on
+    // purpose: there the topology is what is checked, by `accept`)
+    if !crate::geometry::fault::active() {
+        vertices_touch_their_arcs(&diagram)?;
+    }
     Ok(diagram)
 }
 
@@ -117,25 +120,16 @@ pub(super) fn insert_arcs(
     let mut sites = Vec::with_capacity(arcs.len());
     for (k, arc) in arcs.iter().enumerate() {
         let (a, b) = (site_of_input[first_end + 2 * k], site_of_input[first_end + 2 * k + 1]);
-        let internal = built.insert_arc(a, b, arc.scaled(scale.to_internal)).map_err(|why| {
+        let internal = built.insert_arc(a, b, arc.scaled(scale.to_internal)).map_err(|_| {
             let (s, e) = (arc.start(), arc.end());
-            let name = format!("arc {k} ({}, {}) - ({}, {})", s.x, s.y, e.x, e.y);
-            match why {
-                ArcStuck::NoPath => Error::new(
-                    ErrorKind::Internal,
-                    format!("construction could not complete: {name} found no path; please report this input"),
-                    vec![k],
+            Error::new(
+                ErrorKind::Internal,
+                format!(
+                    "construction could not complete: arc {k} ({}, {}) - ({}, {}) found no path; please report this input",
+                    s.x, s.y, e.x, e.y
                 ),
-                ArcStuck::AroundEverything => Error::new(
-                    ErrorKind::InvalidArgument,
-                    format!(
-                        "{name} reaches around every site inserted before it (its cell would take every direction \
-                         at infinity), which the construction cannot do yet; give it as two arcs of less than a \
-                         half turn each, or add sites around it"
-                    ),
-                    vec![k],
-                ),
-            }
+                vec![k],
+            )
         })?;
         sites.push(ArcSite { input: k, internal, arc: *arc });
     }

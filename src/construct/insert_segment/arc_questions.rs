@@ -4,37 +4,24 @@
 //! is set. Arcs go in after every segment.
 
 use crate::construct::state::{Construction, INFINITE};
-use crate::diagram::{SiteId, VertexId};
+use crate::diagram::{HalfEdgeId, SiteId, VertexId};
 use crate::geometry::arcs::arc_predicates::{self, ArcContact, ArcSiteSeen};
-use crate::geometry::segments::segment_predicates::{LeftDegree, SegmentDepth};
+use crate::geometry::segments::segment_predicates::{LeftDegree, MiddleMargin, SegmentDepth};
 use crate::geometry::{CircularArc, Point, Site};
-
-/// Why an arc could not go in.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(in crate::construct) enum ArcStuck {
-    /// No path of P4 (lying numbers).
-    NoPath,
-    /// Its cell would take every direction at infinity.
-    AroundEverything,
-}
 
 impl Construction {
     /// Adds the open arc from the point site `a` (its start) to `b` (its
-    /// end); every point and segment must be in already. `Err` when no
-    /// path of P4 exists (see `insert_segment`; the diagram then holds the
-    /// arc but is not valid), or, with nothing changed, when the arc's cell
-    /// would take every direction at infinity of the diagram so far.
-    pub(in crate::construct) fn insert_arc(&mut self, a: SiteId, b: SiteId, arc: CircularArc) -> Result<SiteId, ArcStuck> {
+    /// end); every point and segment must be in already. `Err` with the
+    /// arc's site when no path of P4 exists (see `insert_segment`; the
+    /// diagram then holds the arc but is not valid).
+    ///
+    /// Unlike a segment's, an arc's cell can reach infinity in a whole
+    /// range of directions, and take the middle of another site's range
+    /// there (a point beside an arc's convex side): the edge at infinity of
+    /// that site is then cut twice, its middle kept
+    /// (`arc_middle_at_infinity`).
+    pub(in crate::construct) fn insert_arc(&mut self, a: SiteId, b: SiteId, arc: CircularArc) -> Result<SiteId, SiteId> {
         self.inserting_arc = Some(arc);
-        // The cell of the point at infinity must keep a piece of its
-        // boundary (the deleted set is a tree): an arc whose cone reaches
-        // past every hull edge (a major arc around a few small sites) would
-        // replace all of it, which one tree cannot say.
-        let hull: Vec<VertexId> = self.store.cell_boundary(INFINITE).map(|h| h.origin()).collect();
-        if !hull.is_empty() && hull.iter().all(|&v| self.segment_conflict(v, a, b)) {
-            self.inserting_arc = None;
-            return Err(ArcStuck::AroundEverything);
-        }
         let e = self.add_arc_site(a, b, arc);
         self.fresh_epoch();
         let found = self.find_segment_path(a, b);
@@ -44,7 +31,7 @@ impl Construction {
         if found {
             Ok(e)
         } else {
-            Err(ArcStuck::NoPath)
+            Err(e)
         }
     }
 
@@ -129,5 +116,69 @@ impl Construction {
             ArcSiteSeen::Other { site: self.site_geometry(g), from }
         };
         arc_predicates::arc_left_degree(arc, seen)
+    }
+
+    /// Whether `h` is an edge at infinity: between two vertices at
+    /// infinity, along the cell of the point at infinity.
+    pub(super) fn is_edge_at_infinity(&self, h: HalfEdgeId) -> bool {
+        self.store.is_at_infinity(h.origin())
+            && self.store.is_at_infinity(self.store.target(h))
+            && (self.store.left(h) == INFINITE || self.store.right(h) == INFINITE)
+    }
+
+    /// How clearly the site of the edge at infinity `h` keeps a range of
+    /// directions at infinity in the middle of its range when the new arc
+    /// takes both ends: the largest excess of the site's reach over the
+    /// arc's (support functions) at directions between the two ends,
+    /// within the site's range (the side of the ends' middle where the
+    /// site reaches further than its two hull neighbours).
+    pub(super) fn arc_middle_at_infinity(&self, h: HalfEdgeId, arc: &CircularArc) -> MiddleMargin {
+        let x = if self.store.left(h) == INFINITE { self.store.right(h) } else { self.store.left(h) };
+        let (u, v) = (h.origin(), self.store.target(h));
+        let (du, dv) = (self.store.position[u.index()], self.store.position[v.index()]);
+        let neighbours: Vec<SiteId> = [u, v]
+            .iter()
+            .flat_map(|&w| self.store.sites_of(w))
+            .filter(|&s| s != x && s != INFINITE)
+            .collect();
+        let support = |s: SiteId, d: Point| -> f64 {
+            match self.site_geometry(s) {
+                Site::Arc(other) if other.spans(Point::new(other.centre().x + d.x, other.centre().y + d.y)) => {
+                    d.x * other.centre().x + d.y * other.centre().y + other.radius()
+                }
+                site => {
+                    let [p, q] = site.ends();
+                    (d.x * p.x + d.y * p.y).max(d.x * q.x + d.y * q.y)
+                }
+            }
+        };
+        let (au, av) = (du.y.atan2(du.x), dv.y.atan2(dv.x));
+        // the two ways round from `du` to `dv`; the site's range is the one
+        // whose middle it holds against its neighbours
+        let mut sweep = (av - au).rem_euclid(2.0 * std::f64::consts::PI);
+        let at = |t: f64, sweep: f64| {
+            let a = au + t * sweep;
+            Point::new(a.cos(), a.sin())
+        };
+        let holds = |d: Point| neighbours.iter().all(|&n| support(x, d) >= support(n, d));
+        if !holds(at(0.5, sweep)) {
+            sweep -= 2.0 * std::f64::consts::PI;
+        }
+        let reach = |d: Point| {
+            let c = arc.centre();
+            if arc.spans(Point::new(c.x + d.x, c.y + d.y)) {
+                d.x * c.x + d.y * c.y + arc.radius()
+            } else {
+                let (p, q) = (arc.start(), arc.end());
+                (d.x * p.x + d.y * p.y).max(d.x * q.x + d.y * q.y)
+            }
+        };
+        let margin = (1..16)
+            .map(|k| {
+                let d = at(k as f64 / 16.0, sweep);
+                support(x, d) - reach(d)
+            })
+            .fold(f64::NEG_INFINITY, f64::max);
+        MiddleMargin::of(crate::geometry::fault::perturb(margin))
     }
 }

@@ -100,7 +100,7 @@ impl Construction {
             let cycle = self.tree_path(self.store.target(edge), edge.origin());
             let mut candidates: Vec<(f64, HalfEdgeId)> = std::iter::once(edge)
                 .chain(cycle)
-                .filter(|&h| self.is_finite_edge(h))
+                .filter(|&h| self.may_keep_middle(h))
                 .map(|h| (self.middle_margin(h, a, b), h))
                 .filter(|(margin, _)| margin.middle() == EdgeMiddle::Stays)
                 .map(|(margin, h)| (margin.margin(), h))
@@ -179,7 +179,15 @@ impl Construction {
     /// each), and finite.
     pub(super) fn may_cut_twice(&self, h: HalfEdgeId, a: SiteId, b: SiteId) -> bool {
         let sides = [self.store.left(h), self.store.right(h)];
-        !sides.contains(&a) && !sides.contains(&b) && self.is_finite_edge(h)
+        !sides.contains(&a) && !sides.contains(&b) && self.may_keep_middle(h)
+    }
+
+    /// Whether the edge of `h` can keep a middle piece when both its ends
+    /// are deleted: a finite edge; and for an arc (whose cell can reach
+    /// infinity in a whole range of directions, splitting another site's),
+    /// an edge at infinity too.
+    fn may_keep_middle(&self, h: HalfEdgeId) -> bool {
+        self.is_finite_edge(h) || (self.inserting_arc.is_some() && self.is_edge_at_infinity(h))
     }
 
     /// Whether neither end of `h` is at infinity.
@@ -192,6 +200,11 @@ impl Construction {
     /// (`segment_predicates::middle_margin`), from the edge's sites and
     /// ends and which of `a` and `b` are among its sites.
     pub(super) fn middle_margin(&self, h: HalfEdgeId, a: SiteId, b: SiteId) -> MiddleMargin {
+        if let Some(arc) = self.inserting_arc {
+            if self.is_edge_at_infinity(h) {
+                return self.arc_middle_at_infinity(h, &arc);
+            }
+        }
         let sides = [self.store.left(h), self.store.right(h)];
         let contact = match (sides.contains(&a), sides.contains(&b)) {
             (true, true) => EdgeContact::BothEnds,

@@ -44,7 +44,6 @@
 //! in `growth.rs`; both end in `deletion_tree.rs`'s `replace_tree`.
 
 mod arc_questions;
-pub(super) use arc_questions::ArcStuck;
 mod growth;
 mod path;
 #[cfg(test)]

@@ -532,19 +532,3 @@ mod tests {
         }
     }
 }
-
-#[cfg(test)]
-mod debug_tests {
-    use super::*;
-    use crate::geometry::CircularArc;
-
-    #[test]
-    fn debug_triples() {
-        let p = Point::new;
-        let arc = Site::Arc(CircularArc::through(p(0.0, 0.0), p(0.5, 0.5), p(1.0, 0.0)).unwrap());
-        let (pp, s, e) = (Site::Point(p(0.5, 3.0)), Site::Point(p(0.0, 0.0)), Site::Point(p(1.0, 0.0)));
-        for t in [[pp, s, arc], [pp, arc, s], [pp, e, arc], [pp, arc, e], [s, e, arc], [e, s, arc]] {
-            println!("{:?}", arc_vertex(&t));
-        }
-    }
-}
