@@ -22,9 +22,14 @@ fn distance(site: &Site, p: Point) -> f64 {
     match *site {
         Site::Point(q) => q.distance(p),
         Site::Segment { a, b } => {
+            // in coordinates of size about 1 (a power of two), so that the
+            // products neither underflow at 1e-300 nor overflow at 1e300
+            let size = [a.x, a.y, b.x, b.y, p.x, p.y].iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            let f = if size > 0.0 { 2f64.powi(-(size.log2().round() as i32)) } else { 1.0 };
+            let (a, b, p) = (Point::new(a.x * f, a.y * f), Point::new(b.x * f, b.y * f), Point::new(p.x * f, p.y * f));
             let (ux, uy) = (b.x - a.x, b.y - a.y);
             let t = (((p.x - a.x) * ux + (p.y - a.y) * uy) / (ux * ux + uy * uy)).clamp(0.0, 1.0);
-            Point::new(a.x + t * ux, a.y + t * uy).distance(p)
+            Point::new(a.x + t * ux, a.y + t * uy).distance(p) / f
         }
         Site::Arc(arc) => {
             // by angles, not by the library's span test
@@ -844,5 +849,37 @@ fn filleted(seed: u64) -> Vec<Piece> {
 fn filleted_polygons_as_cad_gives_them() {
     for seed in 0..10 {
         check_all_ways(&format!("filleted seed {seed}"), &filleted(seed), 6.0, seed);
+    }
+}
+
+/// A slot and a rounded rectangle at 1e-300 and at 1e300 (and 1e8 from
+/// the origin): the build scales them by a power of two and back.
+#[test]
+fn extreme_magnitudes() {
+    for k in [1e-300, 1e300, 1.0] {
+        let p = |x: f64, y: f64| Point::new(x * k, y * k);
+        let mut pieces = vec![
+            Piece::Segment(p(0.0, 0.0), p(4.0, 0.0)),
+            Piece::Arc(CircularArc::from_bulge(p(4.0, 0.0), p(4.0, 2.0), 1.0).unwrap()),
+            Piece::Segment(p(4.0, 2.0), p(0.0, 2.0)),
+            Piece::Arc(CircularArc::from_bulge(p(0.0, 2.0), p(0.0, 0.0), 1.0).unwrap()),
+            Piece::Point(p(4.5, 1.0)),
+        ];
+        if k == 1.0 {
+            pieces = pieces
+                .into_iter()
+                .map(|q| match q {
+                    Piece::Point(a) => Piece::Point(Point::new(a.x + 1e8, a.y)),
+                    Piece::Segment(a, b) => Piece::Segment(Point::new(a.x + 1e8, a.y), Point::new(b.x + 1e8, b.y)),
+                    Piece::Arc(arc) => Piece::Arc(
+                        CircularArc::from_bulge(Point::new(arc.start().x + 1e8, arc.start().y), Point::new(arc.end().x + 1e8, arc.end().y), arc.bulge()).unwrap(),
+                    ),
+                })
+                .collect();
+        }
+        let d = build(&pieces);
+        d.validate().unwrap();
+        let f = audit(&d, 1e-8 * 4.0 * k.max(if k == 1.0 { 1e8 } else { 0.0 }).max(k));
+        assert!(f.is_empty(), "scale {k}: {} failures, first:\n{}", f.len(), f[..f.len().min(3)].join("\n"));
     }
 }

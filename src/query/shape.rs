@@ -201,7 +201,22 @@ impl Diagram {
         mut emit: impl FnMut(Point),
     ) {
         if let EdgeShape::Conic { sites } = shape {
-            conic_polyline(&sites, start, end, tolerance, &mut emit);
+            // in the build's power-of-two scaled coordinates, where
+            // differences of distances do not underflow (input at 1e-300);
+            // each point passed on when the next comes, so that the first
+            // and the last are the vertices themselves
+            let (f, scale) = (self.scale.to_internal, self.scale);
+            let mut held: Option<Point> = None;
+            conic_polyline(&sites.map(|s| s.scaled(f)), start.scaled(f), end.scaled(f), tolerance * f, &mut |p: Point| {
+                held = Some(match held {
+                    None => start,
+                    Some(previous) => {
+                        emit(previous);
+                        scale.point_to_input(p)
+                    }
+                });
+            });
+            emit(end);
             return;
         }
         let Some((parabola, s0, s1)) = self.arc_of_shape(shape, start, end) else {
@@ -281,7 +296,12 @@ impl Diagram {
         let edge = self.edge(id)?;
         let (start, end) = self.finite_ends(&edge)?;
         match self.shape_of(&edge) {
-            EdgeShape::Conic { sites } => conic_bezier(&sites, start, end),
+            EdgeShape::Conic { sites } => {
+                let f = self.scale.to_internal;
+                let ([_, p1, _], w) = conic_bezier(&sites.map(|s| s.scaled(f)), start.scaled(f), end.scaled(f))?;
+                let control = self.scale.point_to_input(p1);
+                control.is_finite().then_some(([start, control, end], w))
+            }
             EdgeShape::Parabola { .. } => self.edge_bezier(id).map(|b| (b, 1.0)),
             _ => None,
         }
