@@ -25,7 +25,7 @@
 //! points are the vertex positions themselves, so that drawings join up.
 
 use crate::diagram::{Diagram, EdgeId, SiteId};
-use crate::geometry::arcs::bisector::bisector_point;
+use crate::geometry::curves::bisector::bisector_point;
 use crate::geometry::curves::edge_curve::EdgeCurve;
 use crate::geometry::curves::parabola::{focus_and_directrix, Parabola};
 use crate::geometry::predicates::Orientation;

@@ -136,11 +136,8 @@ impl Construction {
         let x = if self.store.left(h) == INFINITE { self.store.right(h) } else { self.store.left(h) };
         let (u, v) = (h.origin(), self.store.target(h));
         let (du, dv) = (self.store.position[u.index()], self.store.position[v.index()]);
-        let neighbours: Vec<SiteId> = [u, v]
-            .iter()
-            .flat_map(|&w| self.store.sites_of(w))
-            .filter(|&s| s != x && s != INFINITE)
-            .collect();
+        let neighbours: Vec<SiteId> =
+            [u, v].iter().flat_map(|&w| self.store.sites_of(w)).filter(|&s| s != x && s != INFINITE).collect();
         let support = |s: SiteId, d: Point| -> f64 {
             match self.site_geometry(s) {
                 Site::Arc(other) if other.spans(Point::new(other.centre().x + d.x, other.centre().y + d.y)) => {

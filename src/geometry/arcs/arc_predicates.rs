@@ -3,8 +3,8 @@
 //! floating point, with the tangent and curvature rules where the vertex
 //! touches one of the arc's endpoints.
 
-use super::bisector::bisector_point;
 use crate::geometry::arc::CircularArc;
+use crate::geometry::curves::bisector::bisector_point;
 use crate::geometry::fault;
 use crate::geometry::point::Point;
 use crate::geometry::segments::segment_predicates::{EdgeContact, FiniteEdge, LeftDegree, MiddleMargin, SegmentDepth};

@@ -3,8 +3,8 @@
 //! circle, the side of the arc a site lies on (the left-degree of the path
 //! search), the cone of influence (the arcs' strip), the margin of an edge
 //! cut twice (`arc_predicates`); the vertex of three sites among which is
-//! an arc (`arc_vertex`); points along the conic edge between two sites
-//! (`bisector`).
+//! an arc (`arc_vertex`). Points along the conic edge beside an arc are
+//! `curves::bisector`'s.
 //!
 //! Unlike segments, these decisions are taken in floating point with
 //! tolerances, not certified: the topology stays valid whatever they
@@ -14,4 +14,3 @@
 
 pub(crate) mod arc_predicates;
 pub(crate) mod arc_vertex;
-pub(crate) mod bisector;

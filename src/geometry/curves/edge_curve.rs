@@ -3,7 +3,8 @@
 //! (`query::shape`: polylines, Bézier arcs) both walk along.
 //!
 //! The bisector of two sites is a straight line unless one is a point and
-//! the other a segment not ending at it (`Parabola::of_sites`); a finite
+//! the other a segment not ending at it (`Parabola::of_sites`), or one is
+//! a circular arc (a conic, walked point by point by `bisector`); a finite
 //! edge is the piece of it between the positions of its two vertices.
 
 use super::parabola::Parabola;
@@ -16,7 +17,19 @@ use crate::geometry::site::Site;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum EdgeCurve {
     Line(Point, Point),
-    Parabola { parabola: Parabola, from: f64, to: f64 },
+    Parabola {
+        parabola: Parabola,
+        from: f64,
+        to: f64,
+    },
+    /// The conic beside an arc between two positions: its point at `t` is
+    /// the bisector's point across the chord's point at `t`.
+    Conic {
+        left: Site,
+        right: Site,
+        from: Point,
+        to: Point,
+    },
 }
 
 impl EdgeCurve {
@@ -25,6 +38,11 @@ impl EdgeCurve {
     /// to the directrix that their distance rounds to zero) is the straight
     /// piece it is within rounding.
     pub(crate) fn between(left: &Site, right: &Site, from: Point, to: Point) -> EdgeCurve {
+        let own_end = |s: &Site, t: &Site| t.as_point().is_some_and(|p| s.has_endpoint(p));
+        let arc = |s: &Site| matches!(s, Site::Arc(_));
+        if (arc(left) || arc(right)) && !own_end(left, right) && !own_end(right, left) {
+            return EdgeCurve::Conic { left: *left, right: *right, from, to };
+        }
         match Parabola::of_sites(left, right) {
             Some(parabola) => EdgeCurve::Parabola { parabola, from: parabola.parameter(from), to: parabola.parameter(to) },
             None => EdgeCurve::Line(from, to),
@@ -36,6 +54,11 @@ impl EdgeCurve {
         match *self {
             EdgeCurve::Line(p, q) => Point::new(p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t),
             EdgeCurve::Parabola { ref parabola, from, to } => parabola.point(from + (to - from) * t),
+            EdgeCurve::Conic { ref left, ref right, from, to } => match t {
+                t if t <= 0.0 => from,
+                t if t >= 1.0 => to,
+                t => super::bisector::bisector_point(left, right, from, to, t),
+            },
         }
     }
 
@@ -45,7 +68,7 @@ impl EdgeCurve {
     /// of their parameters, also where the curve turns back.)
     pub(crate) fn direction(&self) -> Point {
         match *self {
-            EdgeCurve::Line(p, q) => Point::new(q.x - p.x, q.y - p.y),
+            EdgeCurve::Line(p, q) | EdgeCurve::Conic { from: p, to: q, .. } => Point::new(q.x - p.x, q.y - p.y),
             EdgeCurve::Parabola { ref parabola, from, to } => {
                 let t = parabola.tangent();
                 if to >= from {
@@ -61,7 +84,7 @@ impl EdgeCurve {
     /// points on it, up to rounding); NaN for a curve of no length.
     pub(crate) fn parameter(&self, q: Point) -> f64 {
         match *self {
-            EdgeCurve::Line(p, r) => {
+            EdgeCurve::Line(p, r) | EdgeCurve::Conic { from: p, to: r, .. } => {
                 let (dx, dy) = (r.x - p.x, r.y - p.y);
                 ((q.x - p.x) * dx + (q.y - p.y) * dy) / (dx * dx + dy * dy)
             }

@@ -5,6 +5,7 @@
 //! offsets, with the distance from its sites along it (`edge_track`).
 //! Arcs among the sites will add their conic curves here.
 
+pub(crate) mod bisector;
 pub(crate) mod edge_curve;
 pub(crate) mod edge_track;
 pub(crate) mod parabola;

@@ -200,6 +200,15 @@ impl Diagram {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn offsets(&self, distances: &[f64]) -> Result<Vec<Offset>, Error> {
+        if self.arc_sites > 0 {
+            // an arc's offset is a concentric arc, which the tracing of
+            // offsets does not have yet (issue 32)
+            return Err(Error::new(
+                ErrorKind::InvalidArgument,
+                "offsets of a diagram with circular arcs are not supported yet".to_string(),
+                Vec::new(),
+            ));
+        }
         let sides: Vec<Side> = distances.iter().map(|&d| self.offset_side(d)).collect::<Result<_, _>>()?;
         let mut grow: Option<OffsetIndex> = None;
         let mut shrink: Option<OffsetIndex> = None;
