@@ -139,7 +139,10 @@ impl Builder {
         vertices: &[(P, f64)],
         closed: bool,
     ) -> Result<Vec<ChainPiece>, Error> {
-        let mut chain: Vec<(Point, f64)> = Vec::with_capacity(vertices.len());
+        let mut chain: Vec<(Point, f64)> = Vec::new();
+        chain
+            .try_reserve(vertices.len())
+            .map_err(|_| out_of_memory("polyline vertices", vertices.len(), std::mem::size_of::<(Point, f64)>()))?;
         for (k, &(p, bulge)) in vertices.iter().enumerate() {
             let p: Point = p.into();
             if !p.is_finite() || !bulge.is_finite() {
@@ -159,7 +162,8 @@ impl Builder {
             chain.pop();
         }
         let pieces = if closed && chain.len() > 2 { chain.len() } else { chain.len().saturating_sub(1) };
-        let mut made = Vec::with_capacity(pieces);
+        let mut made = Vec::new();
+        made.try_reserve(pieces).map_err(|_| out_of_memory("polyline pieces", pieces, std::mem::size_of::<ChainPiece>()))?;
         let (segments, arcs) = (self.segments.len(), self.arcs.len());
         let dropped = vertices.len() - chain.len();
         for k in 0..pieces {

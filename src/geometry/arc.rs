@@ -70,7 +70,7 @@ impl CircularArc {
     /// endpoints, or a circle too large or small for `f64`.
     pub fn from_bulge(start: impl Into<Point>, end: impl Into<Point>, bulge: f64) -> Result<CircularArc, Error> {
         let (start, end) = (start.into(), end.into());
-        let name = || format!("arc ({}, {}) - ({}, {}) with bulge {bulge}", start.x, start.y, end.x, end.y);
+        let name = || format!("arc ({:?}, {:?}) - ({:?}, {:?}) with bulge {bulge:?}", start.x, start.y, end.x, end.y);
         check_ends(start, end, &name)?;
         if !bulge.is_finite() || bulge == 0.0 {
             return Err(invalid(format!("{}: the bulge must be finite and nonzero (zero is a segment)", name())));
@@ -85,7 +85,7 @@ impl CircularArc {
     /// large or small for `f64`.
     pub fn through(start: impl Into<Point>, via: impl Into<Point>, end: impl Into<Point>) -> Result<CircularArc, Error> {
         let (start, via, end) = (start.into(), via.into(), end.into());
-        let name = || format!("arc ({}, {}) through ({}, {}) to ({}, {})", start.x, start.y, via.x, via.y, end.x, end.y);
+        let name = || format!("arc ({:?}, {:?}) through ({:?}, {:?}) to ({:?}, {:?})", start.x, start.y, via.x, via.y, end.x, end.y);
         check_ends(start, end, &name)?;
         if !via.is_finite() {
             return Err(invalid(format!("{}: a coordinate is not finite", name())));
@@ -169,6 +169,11 @@ impl CircularArc {
     /// The signed angle swept from start to end (positive:
     /// counter-clockwise), in `(-2π, 2π)`.
     pub fn sweep(&self) -> f64 {
+        if let Datum::Bulge(b) = self.datum {
+            // exact in reals; from the centre's angles a one-ulp arc would
+            // lose its sweep to rounding
+            return 4.0 * b.atan();
+        }
         let angle = |p: Point| (p.y - self.centre.y).atan2(p.x - self.centre.x);
         let mut sweep = angle(self.end) - angle(self.start);
         let full = 2.0 * std::f64::consts::PI;
@@ -364,10 +369,14 @@ fn bulge_centre(s: Point, e: Point, bulge: f64) -> Point {
 /// The centre of the circle through three points not on one line,
 /// computed relative to the first.
 fn circumcentre(a: Point, b: Point, c: Point) -> Point {
-    let (bx, by, cx, cy) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
+    // in units of the triangle's size (a power of two), so that the
+    // squares neither overflow near 1e300 nor underflow near 1e-300
+    let size = [b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y].iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let unit = if size > 0.0 && size.is_finite() { 2f64.powi(-(size.log2().round() as i32)) } else { 1.0 };
+    let (bx, by, cx, cy) = ((b.x - a.x) * unit, (b.y - a.y) * unit, (c.x - a.x) * unit, (c.y - a.y) * unit);
     let d = 2.0 * (bx * cy - by * cx);
     let (b2, c2) = (bx * bx + by * by, cx * cx + cy * cy);
-    Point::new(a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d)
+    Point::new(a.x + (cy * b2 - by * c2) / d / unit, a.y + (bx * c2 - cx * b2) / d / unit)
 }
 
 #[cfg(test)]
@@ -430,6 +439,12 @@ mod tests {
         assert!(CircularArc::through([0.0, 0.0], [1.0, 1.0], [2.0, 2.0]).unwrap_err().message().contains("one line"));
         assert!(CircularArc::from_bulge([0.0, 0.0], [1.0, 0.0], 1e-310).is_err(), "a circle beyond f64");
         assert!(CircularArc::from_bulge([0.0, 0.0], [1.0, 0.0], 1e-300).is_ok(), "nearly straight, still a circle");
+        let huge = CircularArc::through([1e300, 0.0], [0.0, 1e300], [-1e300, 0.0]).unwrap();
+        assert!(huge.centre().distance(p(0.0, 0.0)) < 1e285 && (huge.radius() / 1e300 - 1.0).abs() < 1e-15);
+        // (three points near 1e-300: their orientation underflows, and the
+        // arc is refused as collinear; a known limit)
+        let one_ulp = CircularArc::from_bulge([0.5, 0.0], [0.5, f64::EPSILON / 2.0], 1.0).unwrap();
+        assert_eq!(one_ulp.sweep(), std::f64::consts::PI);
         let nearly_full = CircularArc::from_bulge([0.0, 0.0], [1e-3, 0.0], 1e6).unwrap();
         assert!(nearly_full.sweep() > 6.28);
     }
