@@ -288,7 +288,6 @@ fn every_postgis_curve_type_builds() {
 }
 
 #[test]
-#[ignore = "the core cannot build a point on an arc's convex side yet (Internal: a vertex of arc 0 misses its sites)"]
 fn a_point_beside_an_arc() {
     if !arcs_build() {
         return; // waits for the library's build of arcs (see the module doc)
