@@ -435,17 +435,27 @@ fn bulged_star(rng: &mut SplitMix64, cx: f64, cy: f64, n: usize) -> Vec<Piece> {
         .collect()
 }
 
-/// Four bulged stars with a point near each centre and one between.
-fn stars(seed: u64) -> Vec<Piece> {
+/// Four shapes in a 2 × 2 layout, 3 apart, each with a point near its
+/// centre (`shape` makes one around a centre from the generator).
+fn four_shapes(seed: u64, shape: impl Fn(&mut SplitMix64, f64, f64) -> Vec<Piece>) -> Vec<Piece> {
     let mut rng = SplitMix64(seed);
     let mut pieces = Vec::new();
     for i in 0..2 {
         for j in 0..2 {
-            let n = 5 + (rng.next_u64() % 12) as usize;
-            pieces.extend(bulged_star(&mut rng, 3.0 * i as f64, 3.0 * j as f64, n));
-            pieces.push(Piece::Point(Point::new(3.0 * i as f64 + 0.1 * rng.unit(), 3.0 * j as f64 + 0.1 * rng.unit())));
+            let (cx, cy) = (3.0 * i as f64, 3.0 * j as f64);
+            pieces.extend(shape(&mut rng, cx, cy));
+            pieces.push(Piece::Point(Point::new(cx + 0.1 * rng.unit(), cy + 0.1 * rng.unit())));
         }
     }
+    pieces
+}
+
+/// Four bulged stars with a point near each centre and one between.
+fn stars(seed: u64) -> Vec<Piece> {
+    let mut pieces = four_shapes(seed, |rng, cx, cy| {
+        let n = 5 + (rng.next_u64() % 12) as usize;
+        bulged_star(rng, cx, cy, n)
+    });
     pieces.push(Piece::Point(Point::new(1.5, 1.5)));
     pieces
 }
@@ -837,16 +847,10 @@ fn filleted_polygon(rng: &mut SplitMix64, cx: f64, cy: f64, n: usize, radius: f6
 }
 
 fn filleted(seed: u64) -> Vec<Piece> {
-    let mut rng = SplitMix64(seed);
-    let mut pieces = Vec::new();
-    for i in 0..2 {
-        for j in 0..2 {
-            let n = 3 + (rng.next_u64() % 8) as usize;
-            pieces.extend(filleted_polygon(&mut rng, 3.0 * i as f64, 3.0 * j as f64, n, 0.3));
-            pieces.push(Piece::Point(Point::new(3.0 * i as f64 + 0.1 * rng.unit(), 3.0 * j as f64 + 0.1 * rng.unit())));
-        }
-    }
-    pieces
+    four_shapes(seed, |rng, cx, cy| {
+        let n = 3 + (rng.next_u64() % 8) as usize;
+        filleted_polygon(rng, cx, cy, n, 0.3)
+    })
 }
 
 #[test]

@@ -85,7 +85,8 @@ impl CircularArc {
     /// large or small for `f64`.
     pub fn through(start: impl Into<Point>, via: impl Into<Point>, end: impl Into<Point>) -> Result<CircularArc, Error> {
         let (start, via, end) = (start.into(), via.into(), end.into());
-        let name = || format!("arc ({:?}, {:?}) through ({:?}, {:?}) to ({:?}, {:?})", start.x, start.y, via.x, via.y, end.x, end.y);
+        let name =
+            || format!("arc ({:?}, {:?}) through ({:?}, {:?}) to ({:?}, {:?})", start.x, start.y, via.x, via.y, end.x, end.y);
         check_ends(start, end, &name)?;
         if !via.is_finite() {
             return Err(invalid(format!("{}: a coordinate is not finite", name())));
