@@ -5,7 +5,7 @@
 # time per segment), and as 16-chord polylines through segvoronoi,
 # Boost.Polygon (C++) and CGAL; then random arcs at 1k, 10k and 100k (the
 # seed paper's experiment with arcs). One run, printed as markdown on
-# standard output (progress on standard error). About half an hour on a
+# standard output (progress on standard error). About 40 minutes on a
 # 2-core machine at 100k arcs, nearly all of it CGAL on the 1.7M chords.
 #
 #   bash scripts/arcs-bench.sh                       # the table as published
