@@ -683,13 +683,10 @@ fn main() {
     print_tables(&results, &scaling, &options, &load_before, start.elapsed());
 }
 
-fn print_tables(
-    results: &[FamilyResult],
-    scaling: &[(usize, Result<Report, String>, Result<Report, String>)],
-    options: &Options,
-    load_before: &str,
-    elapsed: Duration,
-) {
+/// One size of the seed paper's experiment: n, the arcs' report, the chords'.
+type ScalingRow = (usize, Result<Report, String>, Result<Report, String>);
+
+fn print_tables(results: &[FamilyResult], scaling: &[ScalingRow], options: &Options, load_before: &str, elapsed: Duration) {
     let commit = command_line("git", &["rev-parse", "--short", "HEAD"]);
     let dirty = command_line("git", &["status", "--porcelain", "--untracked-files=no"]);
     let commit = if dirty == "unknown" { commit } else { format!("{commit} (with uncommitted changes)") };
