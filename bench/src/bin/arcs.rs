@@ -540,6 +540,9 @@ fn run_family(family: Family, options: &Options, dir: &Path) -> FamilyResult {
             result: measure(&format!("{title}: chords"), &["chords", family.name(), &n], options),
         },
     ];
+    if options.peers.is_empty() {
+        return FamilyResult { family, arcs, rows, note: None };
+    }
     let scale = integer_scale(input.extent());
     let note;
     match integer_chords(&pieces, scale) {
