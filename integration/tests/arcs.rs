@@ -931,12 +931,13 @@ fn medial_axis_samples_on_conic_edges_and_offsets_refused() {
     assert!(e.message().contains("arcs"), "{e}");
 }
 
-/// Known to fail today (the build refuses them with `Internal`, its check
-/// of the arc vertices catching the wrong decision; never a wrong diagram):
+/// Inputs that failed (the build refusing them with `Internal`, its check
+/// of the arc vertices catching a wrong decision; never a wrong diagram):
 /// two half circles one above the other, whose bisectors with the other's
 /// ends run parallel out to infinity (a tie at infinity that the floating
-/// point decides badly), and a rounded rectangle away from the origin
-/// (found by the arcs benchmark at 100k arcs).
+/// point decides badly; still refused), and a rounded rectangle away from
+/// the origin (found by the arcs benchmark; builds now). Either way: built
+/// and right, or refused as `Internal`.
 #[test]
 fn known_failures_are_refused_not_wrong() {
     let p = Point::new;
