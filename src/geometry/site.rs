@@ -147,6 +147,30 @@ impl Site {
         d * d
     }
 
+    /// How far the site reaches in the direction `d` (its support
+    /// function, `max d·q` over its points `q`, in units of `|d|`), and a
+    /// point reaching that far: a point itself; a segment's farther end;
+    /// an arc's circle where `d` lies in its span, else its farther end.
+    /// Which sites own a direction at infinity, and where an edge at
+    /// infinity goes, are comparisons of these.
+    pub(crate) fn support(&self, d: Point) -> (f64, Point) {
+        let along = |q: Point| d.x * q.x + d.y * q.y;
+        if let Site::Arc(arc) = *self {
+            let c = arc.centre();
+            if arc.spans(Point::new(c.x + d.x, c.y + d.y)) {
+                let n = d.x.hypot(d.y);
+                let k = arc.radius() / n;
+                return (along(c) + arc.radius() * n, Point::new(c.x + k * d.x, c.y + k * d.y));
+            }
+        }
+        let [p, q] = self.ends();
+        if along(p) >= along(q) {
+            (along(p), p)
+        } else {
+            (along(q), q)
+        }
+    }
+
     /// The distance from `p` to the site (see [`Site::distance_squared`]).
     ///
     /// Precision: as [`Site::distance_squared`], without the squaring's

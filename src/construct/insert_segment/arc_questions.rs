@@ -81,23 +81,11 @@ impl Construction {
         if !(d.x.is_finite() && d.y.is_finite()) || (d.x == 0.0 && d.y == 0.0) || !arc.spans(far) {
             return false;
         }
-        let support = |s: SiteId| -> f64 {
-            let along = |p: Point| d.x * (p.x - c.x) + d.y * (p.y - c.y);
-            match self.site_geometry(s) {
-                Site::Arc(other) if other.spans(Point::new(other.centre().x + d.x, other.centre().y + d.y)) => {
-                    along(other.centre()) + other.radius()
-                }
-                site => {
-                    let [p, q] = site.ends();
-                    along(p).max(along(q))
-                }
-            }
-        };
         // along a tangent join the arc reaches exactly as far out as the
         // piece it continues, in the direction of their common separator:
         // a tie, which is no conflict; rounding must not make it one
-        let reach = arc.radius() * d.x.hypot(d.y);
-        let support = support(x).max(support(y));
+        let reach = Site::Arc(arc).support(d).0;
+        let support = self.site_geometry(x).support(d).0.max(self.site_geometry(y).support(d).0);
         let size = reach.abs() + support.abs() + (d.x * c.x).abs() + (d.y * c.y).abs();
         reach - support > 1e-12 * size
     }
@@ -138,17 +126,7 @@ impl Construction {
         let (du, dv) = (self.store.position[u.index()], self.store.position[v.index()]);
         let neighbours: Vec<SiteId> =
             [u, v].iter().flat_map(|&w| self.store.sites_of(w)).filter(|&s| s != x && s != INFINITE).collect();
-        let support = |s: SiteId, d: Point| -> f64 {
-            match self.site_geometry(s) {
-                Site::Arc(other) if other.spans(Point::new(other.centre().x + d.x, other.centre().y + d.y)) => {
-                    d.x * other.centre().x + d.y * other.centre().y + other.radius()
-                }
-                site => {
-                    let [p, q] = site.ends();
-                    (d.x * p.x + d.y * p.y).max(d.x * q.x + d.y * q.y)
-                }
-            }
-        };
+        let support = |s: SiteId, d: Point| self.site_geometry(s).support(d).0;
         let (au, av) = (du.y.atan2(du.x), dv.y.atan2(dv.x));
         // the two ways round from `du` to `dv`; the site's range is the one
         // whose middle it holds against its neighbours
@@ -161,19 +139,11 @@ impl Construction {
         if !holds(at(0.5, sweep)) {
             sweep -= 2.0 * std::f64::consts::PI;
         }
-        let reach = |d: Point| {
-            let c = arc.centre();
-            if arc.spans(Point::new(c.x + d.x, c.y + d.y)) {
-                d.x * c.x + d.y * c.y + arc.radius()
-            } else {
-                let (p, q) = (arc.start(), arc.end());
-                (d.x * p.x + d.y * p.y).max(d.x * q.x + d.y * q.y)
-            }
-        };
+        let new_arc = Site::Arc(*arc);
         let margin = (1..16)
             .map(|k| {
                 let d = at(k as f64 / 16.0, sweep);
-                support(x, d) - reach(d)
+                support(x, d) - new_arc.support(d).0
             })
             .fold(f64::NEG_INFINITY, f64::max);
         MiddleMargin::of(crate::geometry::fault::perturb(margin))

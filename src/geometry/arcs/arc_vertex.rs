@@ -35,13 +35,13 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     // near the origin and of size about 1 (a power of two: exact), so
     // that the tolerances below mean the same at every magnitude
     let origin = local_origin(sites);
-    let size = sites.map(|s| shifted(&s, origin, 1.0)).iter().map(site_size).fold(0.0f64, f64::max);
+    let size = sites.iter().map(|s| site_size(s, origin)).fold(0.0f64, f64::max);
     if !(size > 0.0 && size.is_finite()) {
         return None;
     }
     let unit = 2f64.powi(-(size.log2().round() as i32));
     let local = sites.map(|s| shifted(&s, origin, unit));
-    let scale = local.iter().map(site_size).fold(0.0f64, f64::max);
+    let scale = local.iter().map(|s| site_size(s, Point::new(0.0, 0.0))).fold(0.0f64, f64::max);
     let mut best: Option<(f64, Point, f64)> = None;
     // a piece is touched at an end only where another site of the
     // triple is that point or ends there (`equations_of`)
@@ -351,23 +351,7 @@ pub(crate) fn direction_at_infinity(x: &Site, y: &Site, guess: Point) -> Option<
     }
     let origin = local_origin(&[*x, *y, *x]);
     let (x, y) = (shifted(x, origin, 1.0), shifted(y, origin, 1.0));
-    let support = |s: &Site, d: Point| -> (f64, Point) {
-        match *s {
-            Site::Arc(arc) if arc.spans(Point::new(arc.centre().x + d.x, arc.centre().y + d.y)) => {
-                let c = arc.centre();
-                (d.x * c.x + d.y * c.y + arc.radius(), Point::new(c.x + arc.radius() * d.x, c.y + arc.radius() * d.y))
-            }
-            _ => {
-                let [p, q] = s.ends();
-                let (hp, hq) = (d.x * p.x + d.y * p.y, d.x * q.x + d.y * q.y);
-                if hp >= hq {
-                    (hp, p)
-                } else {
-                    (hq, q)
-                }
-            }
-        }
-    };
+    let support = |s: &Site, d: Point| s.support(d);
     let at = |theta: f64| Point::new(theta.cos(), theta.sin());
     let f = |theta: f64| support(&x, at(theta)).0 - support(&y, at(theta)).0;
     const STEPS: usize = 2048;
@@ -475,10 +459,11 @@ fn shifted(site: &Site, o: Point, unit: f64) -> Site {
     }
 }
 
-/// The size of a site in the local frame: how far it reaches from the origin.
-fn site_size(site: &Site) -> f64 {
+/// How far a site reaches from `origin` (its ends, and an arc's radius),
+/// without moving it there.
+fn site_size(site: &Site, origin: Point) -> f64 {
     let [a, b] = site.ends();
-    let far = |p: Point| p.x.abs().max(p.y.abs());
+    let far = |p: Point| (p.x - origin.x).abs().max((p.y - origin.y).abs());
     match *site {
         Site::Arc(arc) => far(a).max(far(b)).max(arc.radius()),
         _ => far(a).max(far(b)),
