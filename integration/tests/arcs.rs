@@ -970,3 +970,64 @@ fn known_failures_are_refused_not_wrong() {
         }
     }
 }
+
+/// What users have, with arcs: a straight (180°) vertex in a bulged chain,
+/// one a hair off straight, a point exactly on a segment beside an arc
+/// (the segment is split there), and two closed chains touching at one
+/// point, 1e6 off the origin too.
+#[test]
+fn user_shapes_with_arcs() {
+    let p = Point::new;
+    let slot_with_straight_vertex = vec![
+        Piece::Segment(p(0.0, 0.0), p(2.0, 0.0)),
+        Piece::Segment(p(2.0, 0.0), p(4.0, 0.0)), // straight on at (2, 0)
+        Piece::Arc(CircularArc::from_bulge(p(4.0, 0.0), p(4.0, 2.0), 1.0).unwrap()),
+        Piece::Segment(p(4.0, 2.0), p(2.0, 2.0 + 1e-16)), // an ulp-scale bend
+        Piece::Segment(p(2.0, 2.0 + 1e-16), p(0.0, 2.0)),
+        Piece::Arc(CircularArc::from_bulge(p(0.0, 2.0), p(0.0, 0.0), 1.0).unwrap()),
+        Piece::Point(p(3.0, 0.0)), // exactly on the lower side
+        Piece::Point(p(1.0, 1.0)),
+    ];
+    let count = check_all_ways("slot with a straight vertex and a point on a side", &slot_with_straight_vertex, 4.0, 21);
+    assert!(count > 0);
+    // two closed chains touching at (6, 1): the slot's... a lens to its right
+    let mut touching = slot_with_straight_vertex.clone();
+    touching.extend([
+        Piece::Segment(p(6.0, 1.0), p(8.0, 0.0)),
+        Piece::Arc(CircularArc::from_bulge(p(8.0, 0.0), p(8.0, 2.0), 0.5).unwrap()),
+        Piece::Segment(p(8.0, 2.0), p(6.0, 1.0)),
+        Piece::Segment(p(6.0, 1.0), p(5.5, 1.0)), // a spike from the touching point toward the slot
+    ]);
+    // (refused today: the vertex check catches a wrong decision here; it
+    // must never build wrong)
+    right_or_refused(&touching, 8.0);
+    let far: Vec<Piece> = touching
+        .iter()
+        .map(|&q| {
+            let m = |a: Point| Point::new(a.x + 1e6, a.y - 1e6);
+            match q {
+                Piece::Point(a) => Piece::Point(m(a)),
+                Piece::Segment(a, b) => Piece::Segment(m(a), m(b)),
+                Piece::Arc(arc) => Piece::Arc(CircularArc::from_bulge(m(arc.start()), m(arc.end()), arc.bulge()).unwrap()),
+            }
+        })
+        .collect();
+    right_or_refused(&far, 1e6);
+}
+
+/// A build of `pieces` is right (the audit passes) or refused as
+/// `Internal`, never wrong.
+fn right_or_refused(pieces: &[Piece], size: f64) {
+    let mut b = Builder::new();
+    for piece in pieces {
+        let _ = match *piece {
+            Piece::Point(q) => b.add_point(q),
+            Piece::Segment(q, r) => b.add_segment([q, r]),
+            Piece::Arc(arc) => b.add_arc(arc),
+        };
+    }
+    match b.build() {
+        Ok(d) => assert!(audit(&d, 1e-8 * size).is_empty(), "built: then it must be right"),
+        Err(e) => assert_eq!(e.kind(), segvoronoi::ErrorKind::Internal, "{e}"),
+    }
+}
