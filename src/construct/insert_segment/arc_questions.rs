@@ -6,6 +6,7 @@
 use crate::construct::state::{Construction, INFINITE};
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
 use crate::geometry::arcs::arc_predicates::{self, ArcContact, ArcSiteSeen};
+use crate::geometry::arcs::at_infinity;
 use crate::geometry::segments::segment_predicates::{LeftDegree, MiddleMargin, SegmentDepth};
 use crate::geometry::{CircularArc, Point, Site};
 
@@ -64,9 +65,8 @@ impl Construction {
     /// Whether the vertex at infinity `v` between the hull sites `x → y`
     /// conflicts with the new arc: where `{x, y}` are its endpoints, when
     /// the arc bulges to the side of infinity (a counter-clockwise arc lies
-    /// right of its chord); else when the edge's direction lies in the
-    /// arc's span and the arc reaches further out that way than the two
-    /// sites do (their support along it).
+    /// right of its chord); else as `at_infinity` decides from the
+    /// direction and the two sites.
     pub(super) fn arc_conflict_at_infinity(&self, v: VertexId, (x, y): (SiteId, SiteId), a: SiteId, b: SiteId) -> bool {
         let arc = self.inserting_arc.expect("asked while an arc goes in");
         if (x, y) == (a, b) {
@@ -76,18 +76,7 @@ impl Construction {
             return arc.is_counter_clockwise();
         }
         let d = self.store.position[v.index()];
-        let c = arc.centre();
-        let far = Point::new(c.x + d.x, c.y + d.y);
-        if !(d.x.is_finite() && d.y.is_finite()) || (d.x == 0.0 && d.y == 0.0) || !arc.spans(far) {
-            return false;
-        }
-        // along a tangent join the arc reaches exactly as far out as the
-        // piece it continues, in the direction of their common separator:
-        // a tie, which is no conflict; rounding must not make it one
-        let reach = Site::Arc(arc).support(d).0;
-        let support = self.site_geometry(x).support(d).0.max(self.site_geometry(y).support(d).0);
-        let size = reach.abs() + support.abs() + (d.x * c.x).abs() + (d.y * c.y).abs();
-        reach - support > 1e-12 * size
+        at_infinity::arc_conflict_at_infinity(&arc, d, &self.site_geometry(x), &self.site_geometry(y))
     }
 
     /// The left-degree of site `g` seen from `v` against the new arc

@@ -207,6 +207,10 @@ fn solve(equations: &[Equation; 3]) -> [Option<(Point, f64)>; 2] {
     // the point of the line nearest the origin
     let (u, v) = (cross3(n2, d), cross3(d, n1));
     let p: [f64; 3] = std::array::from_fn(|i| (d1 * u[i] + d2 * v[i]) / dd);
+    // along the line by a unit step, so that the test below for a lightlike
+    // line (one root at infinity) does not depend on how long `d` came out
+    let length = dd.sqrt();
+    let d = d.map(|x| x / length);
     // the base quadratic along p + λ d: |x|² − t² + base · (x, y, t, 1)
     let quad = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] - a[2] * b[2];
     let qa = quad(d, d);
@@ -214,7 +218,7 @@ fn solve(equations: &[Equation; 3]) -> [Option<(Point, f64)>; 2] {
     let qc = quad(p, p) + base[0] * p[0] + base[1] * p[1] + base[2] * p[2] + base[3];
     let at = |l: f64| (Point::new(p[0] + l * d[0], p[1] + l * d[1]), p[2] + l * d[2]);
     let mut roots = [None; 2];
-    if qa.abs() <= 1e-14 * (qb.abs() + qc.abs()).max(f64::MIN_POSITIVE) {
+    if qa.abs() <= 1e-14 {
         if qb != 0.0 {
             roots[0] = Some(at(-qc / qb));
         }
@@ -354,26 +358,35 @@ pub(crate) fn direction_at_infinity(x: &Site, y: &Site, guess: Point) -> Option<
     let support = |s: &Site, d: Point| s.support(d);
     let at = |theta: f64| Point::new(theta.cos(), theta.sin());
     let f = |theta: f64| support(&x, at(theta)).0 - support(&y, at(theta)).0;
+    let tie = 1e-12 * (site_size(&x, Point::new(0.0, 0.0)) + site_size(&y, Point::new(0.0, 0.0)));
     const STEPS: usize = 2048;
     let step = 2.0 * std::f64::consts::PI / STEPS as f64;
     let mut best: Option<(f64, Point)> = None;
     for k in 0..STEPS {
         let (mut lo, mut hi) = (k as f64 * step, (k + 1) as f64 * step);
         let (mut flo, fhi) = (f(lo), f(hi));
-        if flo == 0.0 || flo.signum() == fhi.signum() {
+        // a zero at a step, to within rounding, is a root itself (a tie
+        // along an arc's end, as for two equal half circles facing each
+        // other, where the sign may not change across the step's ends); a
+        // zero at the step's far end is the next step's
+        let root = if flo.abs() <= tie {
+            lo
+        } else if fhi.abs() <= tie || flo.signum() == fhi.signum() {
             continue;
-        }
-        for _ in 0..60 {
-            let mid = 0.5 * (lo + hi);
-            let fm = f(mid);
-            if fm.signum() == flo.signum() {
-                lo = mid;
-                flo = fm;
-            } else {
-                hi = mid;
+        } else {
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                let fm = f(mid);
+                if fm.signum() == flo.signum() {
+                    lo = mid;
+                    flo = fm;
+                } else {
+                    hi = mid;
+                }
             }
-        }
-        let d = at(0.5 * (lo + hi));
+            0.5 * (lo + hi)
+        };
+        let d = at(root);
         let (tx, ty) = (support(&x, d).1, support(&y, d).1);
         // d is the left normal of tx → ty (as for two points)
         let left = (ty.x - tx.x) * d.y - (ty.y - tx.y) * d.x;
@@ -482,6 +495,36 @@ mod tests {
     fn check(sites: [Site; 3], centre: Point, radius: f64) {
         let (c, r) = arc_vertex(&sites).unwrap_or_else(|| panic!("no vertex for {sites:?}"));
         assert!(c.distance(centre) < 1e-9 && (r - radius).abs() < 1e-9, "{c:?} {r} against {centre:?} {radius}");
+    }
+
+    #[test]
+    fn a_vertex_thousands_of_sizes_away() {
+        // a corner arc, its own end and a point nearly level with that end
+        // 10.7 units along: the vertex is on the arc's separator at the
+        // end, 54,418 units below (the line of solutions is nearly along
+        // the radius: it was once taken for a lightlike one, no root)
+        let end = p(37.49520944453021, 3.0563224950002255);
+        let far = p(48.20689749505568, 3.0552683093191235);
+        let arc = CircularArc::from_bulge(end, p(37.7002343595738, 3.261347410043811), 0.41421356237309503).unwrap();
+        let sites = [Site::Point(end), Site::Point(far), Site::Arc(arc)];
+        let (c, r) = arc_vertex(&sites).expect("a vertex");
+        for s in &sites {
+            assert!((s.distance(c) - r).abs() < 1e-9 * r, "{s:?} at {c:?} {r}");
+        }
+        assert!((c.y + 54418.2207).abs() < 1e-3 && (c.x - end.x).abs() < 1e-6, "{c:?}");
+    }
+
+    #[test]
+    fn edges_at_infinity_where_the_supports_tie_at_a_step() {
+        // a point and the upper half circle beside it, reaching equally
+        // far right (x = 5) exactly at θ = 0, a sample of the search; and
+        // mirrored, where the tie at θ = π is within rounding of one
+        let arc = Site::Arc(CircularArc::from_bulge([4.0, 0.0], [5.0, 0.0], -1.0).unwrap());
+        let d = direction_at_infinity(&Site::Point(p(5.0, 2.0)), &arc, p(0.0, -1.0)).unwrap();
+        assert!(d.distance(p(1.0, 0.0)) < 1e-12, "{d:?}");
+        let arc = Site::Arc(CircularArc::from_bulge([-0.0, 0.0], [-1.0, 0.0], 1.0).unwrap());
+        let d = direction_at_infinity(&arc, &Site::Point(p(-1.0, 2.0)), p(0.0, -1.0)).unwrap();
+        assert!(d.distance(p(-1.0, 0.0)) < 1e-12, "{d:?}");
     }
 
     #[test]

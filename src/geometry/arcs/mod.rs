@@ -14,3 +14,4 @@
 
 pub(crate) mod arc_predicates;
 pub(crate) mod arc_vertex;
+pub(crate) mod at_infinity;
