@@ -51,7 +51,7 @@ pub fn read(bytes: &[u8]) -> Result<Part, String> {
     }
     if moved > 0 {
         notes.push(format!(
-            "moved {moved} endpoint{} onto an endpoint within {:e} of the drawing's extent (rounded arcs' ends)",
+            "moved {moved} endpoint{} onto an endpoint within {:e} of the drawing's extent (ends that did not quite meet)",
             if moved == 1 { "" } else { "s" },
             snap::SNAP
         ));
