@@ -60,8 +60,10 @@ fn line(a: [f64; 2], b: [f64; 2], layer: &str) -> Entity {
 
 /// A closed LWPOLYLINE: `(x, y, bulge)` per vertex.
 fn lwpolyline(vertices: &[(f64, f64, f64)], layer: &str) -> Entity {
-    let mut p = LwPolyline::default();
-    p.vertices = vertices.iter().map(|&(x, y, bulge)| LwPolylineVertex { x, y, bulge, ..Default::default() }).collect();
+    let mut p = LwPolyline {
+        vertices: vertices.iter().map(|&(x, y, bulge)| LwPolylineVertex { x, y, bulge, ..Default::default() }).collect(),
+        ..Default::default()
+    };
     p.set_is_closed(true);
     on_layer(EntityType::LwPolyline(p), layer)
 }
@@ -540,4 +542,49 @@ fn curved_wkt_offsets_are_read_back_by_the_program() {
     }
     let o = run(&[path_str(&out), "--diagram", path_str(&temp_path("curves-diagram.json"))]);
     assert!(o.status.success(), "{}", stderr(&o));
+}
+
+/// A file of `tests/data`, made by another program (ezdxf 1.x, R2010,
+/// with its full header, tables and handles); `None` where it is missing
+/// (the packaged crate leaves it out).
+fn data_file(name: &str) -> Option<PathBuf> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data").join(name);
+    if path.exists() {
+        Some(path)
+    } else {
+        eprintln!("skipped: {} is missing", path.display());
+        None
+    }
+}
+
+#[test]
+fn a_part_written_by_ezdxf_with_arcs_blocks_and_a_mirrored_circle() {
+    // a rounded plate (LWPOLYLINE bulges), a slot of LINEs and ARCs, a
+    // block of a circle inserted three times, a circle with extrusion
+    // (0, 0, -1), a TEXT
+    let Some(input) = data_file("ezdxf_plate.dxf") else { return };
+    if !arcs_build() {
+        return;
+    }
+    let o = run(&[path_str(&input), "--stats"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let report = stderr(&o);
+    assert!(report.contains("note: left out the entities the diagram does not take: 1 TEXT"), "{report}");
+    // 4 sides and 2 slot lines; 4 corners, 2 slot ends, 3 + 1 circles as halves
+    assert!(report.contains("\ninput_segments=6\n") && report.contains("\narc_sites=14\n"), "{report}");
+}
+
+#[test]
+fn a_domain_written_by_ezdxf_with_a_rotated_block_and_a_mirrored_hole() {
+    // the plate 120 × 80 with a 10 × 10 square hole turned by 45° (a block
+    // inserted scaled) and a 20 × 20 one drawn with extrusion (0, 0, -1)
+    // at OCS x in [-100, -80], so at x in [80, 100]: grown holes by 2,
+    // the region shrunk by 2 has this area only if both are inside
+    let Some(input) = data_file("ezdxf_square_holes.dxf") else { return };
+    let exact = exact_offsets(&input, &["-2"], "ezdxf-square-holes.json");
+    let area = exact["offsets"][0]["area"].as_f64().unwrap();
+    let grown = |side: f64| side * side + 4.0 * side * 2.0 + std::f64::consts::PI * 4.0;
+    let expected = 116.0 * 76.0 - grown(10.0) - grown(20.0);
+    assert!((area - expected).abs() < 1e-9 * expected, "{area} vs {expected}");
+    assert_eq!(exact["offsets"][0]["loops"].as_array().unwrap().len(), 3);
 }
