@@ -149,7 +149,7 @@ struct Cli {
     #[arg(long)]
     curves: bool,
 
-    /// G-code (--offsets OUT.nc): the cutting feed rate, in mm per minute, of the G1/G2/G3 moves along the loops
+    /// G-code (--offsets OUT.nc): the cutting feed rate, in mm per minute, of the G1/G2/G3 moves along the loops (default 600)
     #[arg(long, value_name = "F", value_parser = positive)]
     feed: Option<f64>,
 

@@ -1,10 +1,11 @@
 //! `segvoronoi`: builds the Voronoi diagram of the points and line segments
 //! in a Boost.Polygon voronoi text file or of the polygons, linestrings,
-//! points and curves (circular arcs) of a WKT file (or of a built-in demo)
-//! and writes an SVG picture, the whole diagram as JSON, the canonical
-//! topology text, statistics, the medial axis, the largest inscribed
-//! circle and offsets (the last three not yet with arcs). `segvoronoi
-//! --help` for usage.
+//! points and curves (circular arcs) of a WKT, GeoJSON or DXF file (or of
+//! a built-in demo) and writes an SVG picture, the whole diagram as JSON,
+//! the canonical topology text, statistics, the medial axis, the largest
+//! inscribed circle and offsets (the last three not yet with arcs; the
+//! axis and offsets also as DXF, offsets as G-code and curved WKT).
+//! `segvoronoi --help` for usage.
 
 mod args;
 mod demo;
