@@ -53,6 +53,7 @@ pub fn shapes(items: &[Item]) -> Result<Made, String> {
     }
     let dropped: std::collections::HashSet<usize> = joined.dropped.iter().map(|&l| lines[l].0).collect();
     for (k, item) in items.iter().enumerate() {
+        check_finite(item)?;
         match &item.raw {
             Raw::Point(p) => made.push(Shape::Point(*p), item.name.clone()),
             Raw::Line(ends) => {
@@ -77,6 +78,22 @@ impl Made {
     fn push(&mut self, shape: Shape, name: String) {
         self.shapes.push(shape);
         self.names.push(name);
+    }
+}
+
+/// A coordinate or bulge that is not finite (a file may spell `nan` or
+/// `1e999`), refused naming the entity rather than by the library's index.
+fn check_finite(item: &Item) -> Result<(), String> {
+    let finite = |p: &Xy| p.iter().all(|c| c.is_finite());
+    let ok = match &item.raw {
+        Raw::Point(p) => finite(p),
+        Raw::Line(ends) => ends.iter().all(finite),
+        Raw::Chain { vertices, .. } => vertices.iter().all(|(p, b)| finite(p) && b.is_finite()),
+    };
+    if ok {
+        Ok(())
+    } else {
+        Err(format!("{}: a coordinate or bulge is not finite", item.name))
     }
 }
 
@@ -176,9 +193,16 @@ mod tests {
     }
 
     #[test]
-    fn a_bad_bulge_names_the_entity_and_piece() {
+    fn bad_numbers_name_the_entity() {
         let bad = vec![([0.0, 0.0], f64::INFINITY), ([1.0, 0.0], 0.0)];
         let e = shapes(&[item(Raw::Chain { vertices: bad, closed: false }, "entity 7 (LWPOLYLINE, layer \"0\")")]).err().unwrap();
-        assert!(e.starts_with("entity 7 (LWPOLYLINE, layer \"0\"), piece 0: "), "{e}");
+        assert_eq!(e, "entity 7 (LWPOLYLINE, layer \"0\"): a coordinate or bulge is not finite");
+        let e = shapes(&[item(Raw::Line([[0.0, f64::NAN], [1.0, 0.0]]), "entity 2 (LINE, layer \"0\")")]).err().unwrap();
+        assert!(e.starts_with("entity 2 (LINE"), "{e}");
+        // a bulge so large its circle leaves f64: the library's word, with the piece
+        let huge = vec![([0.0, 0.0], 1e300), ([1e-300, 0.0], 0.0)];
+        if let Err(e) = shapes(&[item(Raw::Chain { vertices: huge, closed: false }, "entity 3")]) {
+            assert!(e.starts_with("entity 3, piece 0: "), "{e}");
+        }
     }
 }
