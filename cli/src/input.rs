@@ -155,9 +155,10 @@ enum Kind {
     Dxf,
 }
 
-/// `.wkt`/`.ewkt` and `.geojson`/`.json` decide; any other name (and
-/// standard input) is judged by its first characters: a WKT keyword or
-/// `SRID=`, a `{`, else Boost.Polygon's numbers.
+/// `.wkt`/`.ewkt`, `.geojson`/`.json` and `.dxf` decide; any other name
+/// (and standard input) is judged by its first characters: DXF's `0` and
+/// `SECTION` lines (or its binary sentinel), a WKT keyword or `SRID=`, a
+/// `{`, else Boost.Polygon's numbers.
 fn kind(extension: Option<&str>, text: &str) -> Kind {
     match extension.map(str::to_ascii_lowercase).as_deref() {
         Some("wkt" | "ewkt") => Kind::Wkt,
@@ -351,6 +352,10 @@ mod tests {
         assert_eq!(kind(None, "2\n0 0\n1 1\n"), Kind::Boost);
         assert_eq!(kind(None, "CircularString (0 0, 1 1, 2 0)"), Kind::Wkt);
         assert_eq!(kind(None, "SRID=4326;MULTISURFACE EMPTY"), Kind::Wkt);
+        assert_eq!(kind(Some("DXF"), ""), Kind::Dxf);
+        assert_eq!(kind(None, "  0\nSECTION\n  2\nHEADER\n"), Kind::Dxf);
+        assert_eq!(kind(Some("txt"), "0\r\nSECTION\r\n"), Kind::Dxf);
+        assert_eq!(kind(None, "0\n"), Kind::Boost);
     }
 
     #[test]
