@@ -28,6 +28,22 @@ INPUT is read by its extension, else by its first characters:
   .geojson/.json, or text starting with `{`: a GeoJSON geometry, Feature
     or FeatureCollection (every polygon and multipolygon becomes rings of
     the domain, lines polylines, points points; properties are ignored);
+  .dxf, or text starting with `0` and `SECTION` (ASCII or binary DXF,
+    R12 to 2018, model space): LINE (a segment), POINT, ARC and CIRCLE
+    (arcs; a circle is two half circles), LWPOLYLINE and POLYLINE with
+    bulges, INSERT of blocks (location, scales, rotation, arrays; unequal
+    x and y scales of arcs are refused). Z is ignored; entities drawn with
+    the extrusion direction (0, 0, -1) are mirrored in x as DXF's object
+    coordinates say; other directions are refused. Endpoints within 1e-9
+    of the drawing's extent of one met before are moved onto it, so that
+    chains whose rounded ends do not quite meet stay closed. Closed
+    polylines of segments, and LINEs that close up, are polygon rings
+    (the domain, even-odd); polylines with arcs, ARCs and CIRCLEs are
+    obstacles (no domain with arcs yet); other entities (text,
+    dimensions, splines, ...) are left out, with a note on standard error.
+    Messages name the entity, e.g. `entity 12 (LWPOLYLINE, layer
+    \"PART\")`, counted from 0 in file order (a POLYLINE with its VERTEXes
+    one entity), and the block entity within an INSERT;
   otherwise Boost.Polygon's voronoi text format: a count P, then P lines
     `x y`, then a count S and S lines `x1 y1 x2 y2` (line segments; a
     missing S means 0), tokens separated by any whitespace.
@@ -49,6 +65,9 @@ const AFTER_HELP: &str = "\
 Examples: segvoronoi glyph.wkt --medial-axis axis.wkt --svg axis.svg
           segvoronoi glyph.wkt --offset -0.1 --offset 0.2 --offsets o.wkt
           segvoronoi countries.geojson --medial-axis axis.geojson --svg map.svg
+          segvoronoi plate.dxf --offset -3 --offset -6 --offsets pocket.nc --feed 800
+          segvoronoi plate.dxf --offset 1 --offsets outline.dxf --medial-axis axis.dxf
+          segvoronoi part.wkt --offset 0.5 --offsets curved.wkt --curves
 
 Exit status: 0 on success, 1 when the library rejects the input (a
 non-finite coordinate, segments that cross or overlap, a point inside a
@@ -61,7 +80,7 @@ offending text).";
 #[derive(Parser, Debug)]
 #[command(name = "segvoronoi", version = segvoronoi::VERSION, about = "Builds the Voronoi diagram, medial axis and offsets of points, segments, arcs and polygons.", long_about = INPUT_HELP, after_long_help = AFTER_HELP, allow_negative_numbers = true)]
 struct Cli {
-    /// The input file (WKT, EWKT, GeoJSON or Boost.Polygon text), `-` for standard input; none: the built-in demo
+    /// The input file (WKT, EWKT, GeoJSON, DXF or Boost.Polygon text), `-` for standard input; none: the built-in demo
     input: Option<String>,
 
     /// Draw a picture: the domain filled, the medial axis coloured by clearance, the largest inscribed circle, each offset distance in its own colour, with a title, legend and scale bar; without polygons the diagram
@@ -92,11 +111,11 @@ struct Cli {
     #[arg(long, value_name = "OUT.json", value_parser = file_name)]
     diagram: Option<PathBuf>,
 
-    /// Write the medial axis (the Voronoi edges inside the domain that are not separators; without polygons every such edge). OUT.wkt: one MULTILINESTRING Z, a linestring per chain sampled within the tolerance, z the clearance at each point; the pieces of a chain that reach infinity (only without polygons) are cut off. OUT.geojson: a Feature with a MultiLineString of the same samples and z the clearance, and the property `clearance` (one array per line). OUT.json: the exact chains, each with `closed` and its pieces: Voronoi edge id, kind (line or parabola), both ends (a vertex id and point, or a direction to infinity), the clearance at both ends (null at infinity), for a parabola its focus and directrix
+    /// Write the medial axis (the Voronoi edges inside the domain that are not separators; without polygons every such edge). OUT.wkt: one MULTILINESTRING Z, a linestring per chain sampled within the tolerance, z the clearance at each point; the pieces of a chain that reach infinity (only without polygons) are cut off. OUT.geojson: a Feature with a MultiLineString of the same samples and z the clearance, and the property `clearance` (one array per line). OUT.json: the exact chains, each with `closed` and its pieces: Voronoi edge id, kind (line or parabola), both ends (a vertex id and point, or a direction to infinity), the clearance at both ends (null at infinity), for a parabola its focus and directrix. OUT.dxf: a DXF drawing (R2000) on the layer MEDIAL_AXIS, each straight piece a LINE, each curved one an open LWPOLYLINE sampled within the tolerance
     #[arg(long, value_name = "OUT", value_parser = file_name)]
     medial_axis: Option<PathBuf>,
 
-    /// The format of --medial-axis and --offsets, whatever their extension (default: by extension, .wkt, .geojson or .json)
+    /// The format of --medial-axis and --offsets, whatever their extension (default: by extension, .wkt, .geojson, .json, .dxf, or .nc/.ngc/.gcode/.tap for G-code)
     #[arg(long, value_enum)]
     format: Option<Format>,
 
@@ -122,9 +141,33 @@ struct Cli {
     #[arg(long, value_name = "D", value_parser = any_number, allow_hyphen_values = true)]
     offset: Vec<f64>,
 
-    /// Write the offsets at each --offset D (both options or neither). OUT.wkt: one line per D, the region as one MULTIPOLYGON (EMPTY when there is none), rings sampled within the tolerance and closed. OUT.geojson: a FeatureCollection, per D a Feature with a MultiPolygon and the properties `distance` and `area`. OUT.json: the exact loops, per D its area and loops, each with its parent, whether it bounds a hole, its signed area and its pieces (line or arc, site id, ends, an arc's centre, radius and direction)
+    /// Write the offsets at each --offset D (both options or neither). OUT.wkt: one line per D, the region as one MULTIPOLYGON (EMPTY when there is none), rings sampled within the tolerance and closed. OUT.geojson: a FeatureCollection, per D a Feature with a MultiPolygon and the properties `distance` and `area`. OUT.json: the exact loops, per D its area and loops, each with its parent, whether it bounds a hole, its signed area and its pieces (line or arc, site id, ends, an arc's centre, radius and direction). OUT.dxf: a DXF drawing (R2000), a layer per D (`OFFSET_0.5`), each loop a closed LWPOLYLINE with its arcs as bulges, a whole circle a CIRCLE. OUT.nc (.ngc, .gcode, .tap): G-code to mill along the loops (see --feed)
     #[arg(long, value_name = "OUT", value_parser = file_name)]
     offsets: Option<PathBuf>,
+
+    /// With --offsets OUT.wkt: the exact arcs instead of chords, per D one MULTISURFACE of CURVEPOLYGONs (outer ring, then its holes) whose rings are COMPOUNDCURVEs of linestrings and CIRCULARSTRINGs (start, the middle of the arc, end; a whole circle as two half circles), as PostGIS writes curves; `MULTISURFACE EMPTY` for an empty region
+    #[arg(long)]
+    curves: bool,
+
+    /// G-code (--offsets OUT.nc): the cutting feed rate, in mm per minute, of the G1/G2/G3 moves along the loops (default 600)
+    #[arg(long, value_name = "F", value_parser = positive)]
+    feed: Option<f64>,
+
+    /// G-code: the feed rate of the plunge (G1 Z) to --plunge-depth, in mm per minute (default 100)
+    #[arg(long, value_name = "F", value_parser = positive)]
+    plunge_feed: Option<f64>,
+
+    /// G-code: the depth Z of the cut (default -1)
+    #[arg(long, value_name = "Z", value_parser = finite, allow_hyphen_values = true)]
+    plunge_depth: Option<f64>,
+
+    /// G-code: the safe height Z of the rapid moves (G0) between loops (default 5; above --plunge-depth)
+    #[arg(long, value_name = "Z", value_parser = finite, allow_hyphen_values = true)]
+    safe_z: Option<f64>,
+
+    /// G-code: round X, Y, I and J to N decimals (for a controller that takes no more); by default every number is written in full (shortest round-trip form), which reads back exactly
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u8).range(0..=17))]
+    gcode_digits: Option<u8>,
 
     /// Split the input where it crosses itself instead of refusing it: crossings, overlaps, T-junctions and points inside segments become shared endpoints, by snap rounding to pixels 2^-46 of the largest coordinate wide (--stats reports the crossings, pieces and the largest displacement)
     #[arg(long)]
@@ -155,6 +198,11 @@ pub enum Format {
     GeoJson,
     /// The exact pieces.
     Json,
+    /// A DXF drawing.
+    Dxf,
+    /// G-code (offsets only).
+    #[value(name = "gcode")]
+    Gcode,
 }
 
 /// Where the input comes from.
@@ -196,6 +244,10 @@ pub struct Options {
     /// `--offsets`: where and in which format. Given exactly when
     /// `offset_distances` is not empty.
     pub offsets: Option<(PathBuf, Format)>,
+    /// `--curves`: offsets' WKT with arcs (given only with WKT offsets).
+    pub curves: bool,
+    /// The G-code settings (defaults when not asked for).
+    pub gcode: crate::gcode::Settings,
     /// `--split-crossings`.
     pub split_crossings: bool,
     /// `--write-sites`: where to write the input as built.
@@ -223,7 +275,9 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Options, Stop> {
     match (cli.offset.is_empty(), cli.offsets.is_some()) {
         (true, true) => return usage("--offsets needs at least one --offset D (the distances to write)"),
         (false, false) => {
-            return usage("--offset D needs --offsets OUT.wkt, OUT.geojson or OUT.json (where to write the offsets)")
+            return usage(
+                "--offset D needs --offsets OUT.wkt, OUT.geojson, OUT.json, OUT.dxf or OUT.nc (where to write the offsets)",
+            )
         }
         _ => {}
     }
@@ -233,7 +287,7 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Options, Stop> {
             Some(path) => {
                 let format = cli.format.or_else(|| by_extension(&path)).ok_or_else(|| {
                     Stop::Usage(format!(
-                        "{flag} writes .wkt, .geojson or .json (or give --format), not {:?}",
+                        "{flag} writes .wkt, .geojson, .json, .dxf or .nc (or give --format), not {:?}",
                         path.display().to_string()
                     ))
                 })?;
@@ -243,6 +297,31 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Options, Stop> {
     };
     let medial_axis = with_format("--medial-axis", cli.medial_axis.clone())?;
     let offsets = with_format("--offsets", cli.offsets.clone())?;
+    if matches!(medial_axis, Some((_, Format::Gcode))) {
+        return usage("--medial-axis writes .wkt, .geojson, .json or .dxf: G-code is for --offsets");
+    }
+    if cli.curves && !matches!(offsets, Some((_, Format::Wkt))) {
+        return usage("--curves writes the arcs of --offsets OUT.wkt; give --offsets with a .wkt file (or --format wkt)");
+    }
+    let gcode_asked = cli.feed.is_some()
+        || cli.plunge_feed.is_some()
+        || cli.plunge_depth.is_some()
+        || cli.safe_z.is_some()
+        || cli.gcode_digits.is_some();
+    if gcode_asked && !matches!(offsets, Some((_, Format::Gcode))) {
+        return usage("--feed, --plunge-feed, --plunge-depth, --safe-z and --gcode-digits set the G-code of --offsets OUT.nc");
+    }
+    let defaults = crate::gcode::Settings::default();
+    let gcode = crate::gcode::Settings {
+        feed: cli.feed.unwrap_or(defaults.feed),
+        plunge_feed: cli.plunge_feed.unwrap_or(defaults.plunge_feed),
+        plunge_depth: cli.plunge_depth.unwrap_or(defaults.plunge_depth),
+        safe_z: cli.safe_z.unwrap_or(defaults.safe_z),
+        digits: cli.gcode_digits.map(usize::from),
+    };
+    if gcode.safe_z <= gcode.plunge_depth {
+        return usage("--safe-z must be above --plunge-depth");
+    }
     Ok(Options {
         source: match cli.input.as_deref() {
             None => Source::Demo,
@@ -263,6 +342,8 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Options, Stop> {
         max_inscribed_circle: cli.max_inscribed_circle,
         offset_distances: cli.offset,
         offsets,
+        curves: cli.curves,
+        gcode,
         split_crossings: cli.split_crossings,
         write_sites: cli.write_sites,
         progress: match (cli.progress, cli.quiet) {
@@ -280,6 +361,8 @@ fn by_extension(path: &Path) -> Option<Format> {
         "wkt" => Some(Format::Wkt),
         "geojson" => Some(Format::GeoJson),
         "json" => Some(Format::Json),
+        "dxf" => Some(Format::Dxf),
+        "nc" | "ngc" | "gcode" | "tap" => Some(Format::Gcode),
         _ => None,
     }
 }
@@ -308,6 +391,10 @@ fn number(text: &str, ok: impl Fn(f64) -> bool, what: &str) -> Result<f64, Strin
 
 fn positive(text: &str) -> Result<f64, String> {
     number(text, |t| t > 0.0, "a positive number")
+}
+
+fn finite(text: &str) -> Result<f64, String> {
+    number(text, |_| true, "a finite number")
 }
 
 fn angle(text: &str) -> Result<f64, String> {
@@ -373,7 +460,7 @@ mod tests {
         assert!(run(&["--frobnicate"]).unwrap_err().contains("--frobnicate"));
         assert!(run(&["a", "b"]).unwrap_err().contains("'b'"));
         assert!(run(&["--stats=1"]).unwrap_err().contains("--stats"));
-        assert!(run(&["--medial-axis", "axis.svg"]).unwrap_err().contains(".wkt, .geojson or .json"));
+        assert!(run(&["--medial-axis", "axis.svg"]).unwrap_err().contains(".wkt, .geojson, .json, .dxf or .nc"));
         assert!(run(&["--medial-axis"]).unwrap_err().contains("--medial-axis"));
         assert!(run(&["--tolerance", "0"]).unwrap_err().contains("positive"));
         assert!(run(&["--tolerance=inf"]).unwrap_err().contains("positive"));
@@ -418,10 +505,32 @@ mod tests {
     fn offset_mistakes_are_reported() {
         assert!(run(&["--offset", "1"]).unwrap_err().contains("--offset D needs --offsets"));
         assert!(run(&["--offsets", "o.wkt"]).unwrap_err().contains("--offsets needs at least one --offset"));
-        assert!(run(&["--offsets", "o.svg", "--offset", "1"]).unwrap_err().contains("--offsets writes .wkt, .geojson or .json"));
+        assert!(run(&["--offsets", "o.svg", "--offset", "1"])
+            .unwrap_err()
+            .contains("--offsets writes .wkt, .geojson, .json, .dxf or .nc"));
         assert!(run(&["--offset", "one", "--offsets", "o.wkt"]).unwrap_err().contains("needs a number, not \"one\""));
         assert!(run(&["--offset"]).unwrap_err().contains("--offset"));
         assert!(run(&["--offset", "1", "--offsets"]).unwrap_err().contains("--offsets"));
+    }
+
+    #[test]
+    fn dxf_gcode_and_curves() {
+        let o = run(&["p.dxf", "--offset", "-1", "--offsets", "o.DXF", "--medial-axis", "a.dxf"]).unwrap();
+        assert_eq!(o.offsets, Some((PathBuf::from("o.DXF"), Format::Dxf)));
+        assert_eq!(o.medial_axis, Some((PathBuf::from("a.dxf"), Format::Dxf)));
+        let o = run(&["--offset", "-1", "--offsets", "o.nc", "--feed", "800", "--plunge-depth", "-2.5", "--gcode-digits", "4"])
+            .unwrap();
+        assert_eq!(o.offsets, Some((PathBuf::from("o.nc"), Format::Gcode)));
+        assert_eq!((o.gcode.feed, o.gcode.plunge_depth, o.gcode.digits), (800.0, -2.5, Some(4)));
+        assert_eq!(o.gcode.plunge_feed, crate::gcode::Settings::default().plunge_feed);
+        let o = run(&["--offset", "1", "--offsets", "o.wkt", "--curves"]).unwrap();
+        assert!(o.curves);
+        assert!(run(&["--curves"]).unwrap_err().contains("--curves writes the arcs"));
+        assert!(run(&["--offset", "1", "--offsets", "o.json", "--curves"]).unwrap_err().contains("--curves"));
+        assert!(run(&["--feed", "100"]).unwrap_err().contains("G-code of --offsets OUT.nc"));
+        assert!(run(&["--medial-axis", "a.gcode"]).unwrap_err().contains("G-code is for --offsets"));
+        assert!(run(&["--offset", "1", "--offsets", "o.nc", "--safe-z", "-3"]).unwrap_err().contains("--safe-z"));
+        assert!(run(&["--offset", "1", "--offsets", "o.nc", "--feed", "0"]).unwrap_err().contains("positive"));
     }
 
     #[test]

@@ -23,6 +23,9 @@ pub struct Origins {
     wkt_segments: Vec<(Range<usize>, Place)>,
     /// arc indices and where they came from
     wkt_arcs: Vec<(Range<usize>, Place)>,
+    /// A DXF input's name for each shape (its entities and layers),
+    /// said instead of `geometry k`.
+    names: Vec<String>,
 }
 
 /// A WKT geometry (its index among the shapes, what it is) and the ring of
@@ -35,8 +38,12 @@ struct Place {
 }
 
 impl Place {
-    fn describe(&self) -> String {
+    /// `geometry 2 (a polygon), ring 0`, or the DXF entities' own name.
+    fn describe(&self, names: &[String]) -> String {
         let Place { geometry, what, ring } = self;
+        if let Some(name) = names.get(*geometry) {
+            return name.clone();
+        }
         match ring {
             Some(r) => format!("geometry {geometry} ({what}), ring {r}"),
             None => format!("geometry {geometry} ({what})"),
@@ -51,7 +58,7 @@ impl Origins {
             return Some(format!("line {line}"));
         }
         let (_, place) = self.wkt_segments.iter().find(|(range, _)| range.contains(&j))?;
-        Some(place.describe())
+        Some(place.describe(&self.names))
     }
 
     /// A line for each site a message names ("arc 2", "segment 5",
@@ -87,14 +94,17 @@ impl Origins {
     /// Where input arc `j` is, e.g. `geometry 2 (a curve polygon), ring 0`.
     pub fn of_arc(&self, j: usize) -> Option<String> {
         let (_, place) = self.wkt_arcs.iter().find(|(range, _)| range.contains(&j))?;
-        Some(place.describe())
+        Some(place.describe(&self.names))
     }
 
     fn of_point(&self, i: usize) -> Option<String> {
         if let Some(line) = self.point_lines.get(i) {
             return Some(format!("line {line}"));
         }
-        self.wkt_points.iter().find(|&&(p, _)| p == i).map(|(_, k)| format!("geometry {k} (a point)"))
+        self.wkt_points.iter().find(|&&(p, _)| p == i).map(|(_, k)| match self.names.get(*k) {
+            Some(name) => name.clone(),
+            None => format!("geometry {k} (a point)"),
+        })
     }
 
     /// The library's error, and for crossing input each offending point or
@@ -129,10 +139,11 @@ impl Origins {
 }
 
 /// The input: Boost.Polygon's points and segments, or the shapes of a WKT,
-/// EWKT or GeoJSON text.
+/// EWKT or GeoJSON text, or of a DXF drawing with a name for each.
 pub enum Input {
     Boost(boost_text::Input),
     Shapes(Shapes),
+    Dxf(Shapes, Vec<String>),
 }
 
 /// The text formats, chosen by the file's extension or else its start.
@@ -141,15 +152,19 @@ enum Kind {
     Boost,
     Wkt,
     GeoJson,
+    Dxf,
 }
 
-/// `.wkt`/`.ewkt` and `.geojson`/`.json` decide; any other name (and
-/// standard input) is judged by its first characters: a WKT keyword or
-/// `SRID=`, a `{`, else Boost.Polygon's numbers.
+/// `.wkt`/`.ewkt`, `.geojson`/`.json` and `.dxf` decide; any other name
+/// (and standard input) is judged by its first characters: DXF's `0` and
+/// `SECTION` lines (or its binary sentinel), a WKT keyword or `SRID=`, a
+/// `{`, else Boost.Polygon's numbers.
 fn kind(extension: Option<&str>, text: &str) -> Kind {
     match extension.map(str::to_ascii_lowercase).as_deref() {
         Some("wkt" | "ewkt") => Kind::Wkt,
         Some("geojson" | "json") => Kind::GeoJson,
+        Some("dxf") => Kind::Dxf,
+        _ if crate::dxf::looks_like_dxf(text) => Kind::Dxf,
         _ if wkt::looks_like_wkt(text) => Kind::Wkt,
         _ if wkt::looks_like_json(text) => Kind::GeoJson,
         _ => Kind::Boost,
@@ -179,6 +194,12 @@ pub fn read(source: &Source) -> Result<(String, Input), Failure> {
         Kind::Wkt => wkt::parse(&text).map(Input::Shapes).map_err(|e| e.to_string()),
         Kind::GeoJson => wkt::parse_geojson(&text).map(Input::Shapes).map_err(|e| e.to_string()),
         Kind::Boost => boost_text::parse(&text).map(Input::Boost),
+        Kind::Dxf => crate::dxf::read(&bytes).map(|part| {
+            for note in &part.notes {
+                eprintln!("segvoronoi: {name}: note: {note}");
+            }
+            Input::Dxf(part.shapes, part.names)
+        }),
     };
     let input = input.map_err(|e| bad_input(format!("{name}: {e}")))?;
     Ok((name, input))
@@ -199,7 +220,10 @@ impl Input {
                 origins.point_lines.clone_from(&input.point_lines);
                 origins.segment_lines.clone_from(&input.segment_lines);
             }
-            Input::Shapes(Shapes { shapes, .. }) => {
+            Input::Shapes(Shapes { shapes, .. }) | Input::Dxf(Shapes { shapes, .. }, _) => {
+                if let Input::Dxf(_, names) = self {
+                    origins.names.clone_from(names);
+                }
                 let arcs = self.has_arcs();
                 for (k, shape) in shapes.iter().enumerate() {
                     match shape {
@@ -250,7 +274,7 @@ impl Input {
     pub fn rings(&self) -> Vec<Vec<Xy>> {
         match self {
             Input::Boost(_) => Vec::new(),
-            Input::Shapes(Shapes { shapes, .. }) => shapes
+            Input::Shapes(Shapes { shapes, .. }) | Input::Dxf(Shapes { shapes, .. }, _) => shapes
                 .iter()
                 .flat_map(|s| match s {
                     Shape::Polygon(rings) => rings.clone(),
@@ -266,7 +290,7 @@ impl Input {
     /// obstacles, drawn when the picture leaves the diagram out).
     pub fn obstacles(&self) -> (Vec<Vec<Xy>>, Vec<Xy>) {
         let (mut lines, mut points) = (Vec::new(), Vec::new());
-        if let Input::Shapes(Shapes { shapes, .. }) = self {
+        if let Input::Shapes(Shapes { shapes, .. }) | Input::Dxf(Shapes { shapes, .. }, _) = self {
             for shape in shapes {
                 match shape {
                     Shape::LineString(line) => lines.push(line.clone()),
@@ -282,7 +306,9 @@ impl Input {
     /// there is no domain, medial axis or offsets yet (issue 32).
     pub fn has_arcs(&self) -> bool {
         match self {
-            Input::Shapes(Shapes { shapes, .. }) => shapes.iter().any(|s| matches!(s, Shape::Curve(_) | Shape::CurveRings(_))),
+            Input::Shapes(Shapes { shapes, .. }) | Input::Dxf(Shapes { shapes, .. }, _) => {
+                shapes.iter().any(|s| matches!(s, Shape::Curve(_) | Shape::CurveRings(_)))
+            }
             Input::Boost(_) => false,
         }
     }
@@ -292,7 +318,7 @@ impl Input {
     pub fn srid(&self) -> Option<i64> {
         match self {
             Input::Shapes(shapes) => shapes.srid,
-            Input::Boost(_) => None,
+            Input::Boost(_) | Input::Dxf(..) => None,
         }
     }
 }
@@ -326,6 +352,10 @@ mod tests {
         assert_eq!(kind(None, "2\n0 0\n1 1\n"), Kind::Boost);
         assert_eq!(kind(None, "CircularString (0 0, 1 1, 2 0)"), Kind::Wkt);
         assert_eq!(kind(None, "SRID=4326;MULTISURFACE EMPTY"), Kind::Wkt);
+        assert_eq!(kind(Some("DXF"), ""), Kind::Dxf);
+        assert_eq!(kind(None, "  0\nSECTION\n  2\nHEADER\n"), Kind::Dxf);
+        assert_eq!(kind(Some("txt"), "0\r\nSECTION\r\n"), Kind::Dxf);
+        assert_eq!(kind(None, "0\n"), Kind::Boost);
     }
 
     #[test]

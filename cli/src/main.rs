@@ -1,22 +1,27 @@
 //! `segvoronoi`: builds the Voronoi diagram of the points and line segments
 //! in a Boost.Polygon voronoi text file or of the polygons, linestrings,
-//! points and curves (circular arcs) of a WKT file (or of a built-in demo)
-//! and writes an SVG picture, the whole diagram as JSON, the canonical
-//! topology text, statistics, the medial axis, the largest inscribed
-//! circle and offsets (the last three not yet with arcs). `segvoronoi
-//! --help` for usage.
+//! points and curves (circular arcs) of a WKT, GeoJSON or DXF file (or of
+//! a built-in demo) and writes an SVG picture, the whole diagram as JSON,
+//! the canonical topology text, statistics, the medial axis, the largest
+//! inscribed circle and offsets (the last three not yet with arcs; the
+//! axis and offsets also as DXF, offsets as G-code and curved WKT).
+//! `segvoronoi --help` for usage.
 
 mod args;
 mod demo;
 mod diagram_output;
+mod dxf;
+mod gcode;
 mod geojson_output;
 mod input;
 mod medial_output;
+mod offset_arcs;
 mod offset_output;
 mod progress;
 mod stats;
 mod svg;
 mod wkt;
+mod wkt_curve_output;
 
 use std::io::Write;
 use std::path::Path;
@@ -150,12 +155,18 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
             Format::Wkt => medial_output::wkt(&diagram, &axis, tolerance),
             Format::GeoJson => geojson_output::medial_axis(&diagram, &axis, tolerance),
             Format::Json => medial_output::json(&diagram, &axis),
+            Format::Dxf => dxf::write::medial_axis(&diagram, &axis, tolerance),
+            // refused by `args::parse` already
+            Format::Gcode => return Err(bad_input("--medial-axis is not written as G-code".into())),
         };
         write_file(path, &text)?;
     }
     if let Some((path, format)) = &options.offsets {
         let text = match format {
+            Format::Wkt if options.curves => wkt_curve_output::wkt(&offsets),
             Format::Wkt => offset_output::wkt(&offsets, tolerance),
+            Format::Dxf => dxf::write::offsets(&offsets),
+            Format::Gcode => gcode::program(&offsets, &options.gcode),
             Format::GeoJson => geojson_output::offsets(&offsets, tolerance),
             Format::Json => offset_output::json(&offsets),
         };
