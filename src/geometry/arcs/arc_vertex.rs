@@ -403,30 +403,38 @@ pub(crate) fn direction_at_infinity(x: &Site, y: &Site, guess: Point) -> Option<
 
 /// A few Newton steps on the true distances `d_k(x) − t = 0`.
 fn polish(sites: &[Site; 3], mut centre: Point, mut radius: f64) -> (Point, f64) {
+    let residuals = |c: Point, r: f64| sites.map(|s| s.distance(c) - r);
+    let mut f = residuals(centre, radius);
+    let mut size: f64 = f.iter().map(|x| x.abs()).sum();
     for _ in 0..3 {
-        let f = sites.map(|s| s.distance(centre) - radius);
-        let size = f.iter().map(|x| x.abs()).sum::<f64>();
         if !(size > 0.0) {
             break;
         }
+        // the gradient of the distance to a site is the unit vector from
+        // its nearest point; numerically only where the centre is on it
         let h = 1e-7 * (radius.abs() + centre.x.abs().max(centre.y.abs())).max(1e-300);
-        let grad = |k: usize| {
-            let dx = (sites[k].distance(Point::new(centre.x + h, centre.y))
-                - sites[k].distance(Point::new(centre.x - h, centre.y)))
-                / (2.0 * h);
-            let dy = (sites[k].distance(Point::new(centre.x, centre.y + h))
-                - sites[k].distance(Point::new(centre.x, centre.y - h)))
-                / (2.0 * h);
+        let grad = |s: &Site| {
+            let q = s.nearest_point(centre);
+            let (dx, dy) = (centre.x - q.x, centre.y - q.y);
+            let n = dx.hypot(dy);
+            if n > 0.0 && n.is_finite() {
+                return [dx / n, dy / n, -1.0];
+            }
+            let dx =
+                (s.distance(Point::new(centre.x + h, centre.y)) - s.distance(Point::new(centre.x - h, centre.y))) / (2.0 * h);
+            let dy =
+                (s.distance(Point::new(centre.x, centre.y + h)) - s.distance(Point::new(centre.x, centre.y - h))) / (2.0 * h);
             [dx, dy, -1.0]
         };
-        let j = [grad(0), grad(1), grad(2)];
+        let j = [grad(&sites[0]), grad(&sites[1]), grad(&sites[2])];
         let Some(step) = solve3(j, [-f[0], -f[1], -f[2]]) else { break };
         let next = (Point::new(centre.x + step[0], centre.y + step[1]), radius + step[2]);
-        let next_size: f64 = sites.iter().map(|s| (s.distance(next.0) - next.1).abs()).sum();
+        let next_f = residuals(next.0, next.1);
+        let next_size: f64 = next_f.iter().map(|x| x.abs()).sum();
         if !(next_size < size) || !next.0.is_finite() {
             break;
         }
-        (centre, radius) = next;
+        (centre, radius, f, size) = (next.0, next.1, next_f, next_size);
     }
     (centre, radius)
 }
@@ -456,9 +464,14 @@ fn dot3(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-/// A point near the sites, to compute relative to.
+/// A point near the sites, to compute relative to: the mean of their ends'
+/// midpoints (any point near them will do; an arc's own midpoint would
+/// cost trigonometry for an arc given through a point).
 fn local_origin(sites: &[Site; 3]) -> Point {
-    let m = sites.map(|s| s.midpoint());
+    let m = sites.map(|s| {
+        let [a, b] = s.ends();
+        Point::new(0.5 * a.x + 0.5 * b.x, 0.5 * a.y + 0.5 * b.y)
+    });
     Point::new((m[0].x + m[1].x + m[2].x) / 3.0, (m[0].y + m[1].y + m[2].y) / 3.0)
 }
 
