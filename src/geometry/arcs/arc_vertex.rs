@@ -49,7 +49,10 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
         let shared = |e: Point| (0..3).any(|j| j != k && (local[j].as_point() == Some(e) || local[j].has_endpoint(e)));
         touchings(&local[k]).map(|t| t.filter(|t| !matches!(*t, Touching::AtEnd(e) if !shared(e))))
     });
-    for &t0 in options[0].iter().flatten() {
+    // a fit to within rounding with every site touched inside or at a
+    // point site is the answer: no other candidate fits better (the
+    // sides inside come first, the most common tangency)
+    'search: for &t0 in options[0].iter().flatten() {
         for &t1 in options[1].iter().flatten() {
             for &t2 in options[2].iter().flatten() {
                 let touch = [t0, t1, t2];
@@ -58,6 +61,9 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
                     let Some(score) = fit(&local, touch, centre, radius, scale) else { continue };
                     if best.map_or(true, |(s, _, _)| score < s) {
                         best = Some((score, centre, radius));
+                    }
+                    if score < 1e-14 {
+                        break 'search;
                     }
                 }
             }
