@@ -380,6 +380,7 @@ fn decide(
     let start = [centre.x, centre.y, radius];
     // double-double first (cheap, no allocation), then big floats
     let dd = DoubleDouble::from_f64;
+    let mut undecided_at_double_double = false;
     match refine_at(&system, &question, start.map(dd), &dd, size, DOUBLE_DOUBLE_BITS) {
         Refined::Decided(answer) => return (Stage::DoubleDouble, Some(answer)),
         Refined::Undecided(solution) => {
@@ -390,6 +391,7 @@ fn decide(
             if let Some(exact) = system.exact_answer(Point::new(x, y), r, &question) {
                 return (Stage::Exact, Some(exact));
             }
+            undecided_at_double_double = true;
         }
         Refined::Failed => {}
     }
@@ -400,6 +402,16 @@ fn decide(
     // build's time).
     if let Some(exact) = system.rational_answer(&question) {
         return (Stage::Exact, Some(exact));
+    }
+    // Converged at double-double and still near zero: most such questions
+    // are true zeros (mirror-symmetric outlines, arcs cut into chords
+    // symmetrically), which the big-float stages below would take to 1200
+    // bits before the tower of square roots proves them; the tower first
+    // decides them exactly at a fraction of the cost.
+    if undecided_at_double_double {
+        if let Some(exact) = algebraic_answer(&sites, &question) {
+            return (Stage::Exact, Some(exact));
+        }
     }
     // Each precision starts from the last one's solution, or where there
     // is none from the solver run at that precision: for a system whose
