@@ -16,3 +16,4 @@ pub(super) mod double_double;
 pub(super) mod expansion;
 pub(super) mod radical_tower;
 pub(super) mod real;
+pub(super) mod root_sums;

@@ -12,4 +12,5 @@ pub(crate) mod oracle;
 mod quadratic_vertex;
 mod reach;
 pub(crate) mod segment_predicates;
+mod tangent_lines;
 pub(crate) mod vertex_placement;

@@ -69,6 +69,7 @@
 
 use super::quadratic_vertex;
 use super::reach::Reach;
+use super::tangent_lines::{self, SidedLine};
 use crate::geometry::arithmetic::bigfloat::{dyadic, BigFloat};
 use crate::geometry::arithmetic::certified::{certified_evaluation, Certified};
 use crate::geometry::arithmetic::double_double::DoubleDouble;
@@ -389,6 +390,10 @@ fn decide(
             // bits); rounded from the refined solution it is checked exactly.
             let [x, y, r] = solution.map(|v| v.to_f64());
             if let Some(exact) = system.exact_answer(Point::new(x, y), r, &question) {
+                return (Stage::Exact, Some(exact));
+            }
+            // Three lines and a fourth: exact from the input's integers.
+            if let Some(exact) = system.three_lines_answer(Point::new(x, y), r, &question) {
                 return (Stage::Exact, Some(exact));
             }
             undecided_at_double_double = true;
@@ -820,6 +825,34 @@ impl System {
             };
         }
         Some(System(equations))
+    }
+
+    /// The exact answer where the three equations are lines (segments
+    /// sharing no endpoint with the triple's points) and the question is
+    /// the distance to a segment whose nearest point to the centre lies
+    /// clearly inside it (`tangent_lines`); `None` otherwise. `centre` and
+    /// `radius` are a refined solution: they give the sides only.
+    fn three_lines_answer(&self, centre: Point, radius: f64, question: &Reach) -> Option<CirclePosition> {
+        let Reach::Distance { a, b } = *question else { return None };
+        let lines = self.0.map(|e| match e {
+            Equation::Line { a, b, side } => Some(SidedLine { a, b, side }),
+            _ => None,
+        });
+        let [Some(l0), Some(l1), Some(l2)] = lines else { return None };
+        // the nearest point of the question's segment inside it, and the
+        // centre clearly off its line (both far beyond the refinement's
+        // error): the distance is then the line's
+        let (ux, uy) = (b.x - a.x, b.y - a.y);
+        let (vx, vy) = (centre.x - a.x, centre.y - a.y);
+        let length2 = ux * ux + uy * uy;
+        let t = (ux * vx + uy * vy) / length2;
+        let cross = ux * vy - uy * vx;
+        let size = length2.sqrt() * (vx.abs() + vy.abs() + radius.abs());
+        if !(t > 1e-9 && t < 1.0 - 1e-9 && cross.abs() > 1e-9 * size) {
+            return None;
+        }
+        let q = SidedLine { a, b, side: cross.signum() };
+        tangent_lines::fourth_line_sign([l0, l1, l2], q).map(|s| sign_position(f64::from(s)))
     }
 
     /// [`System::exact_answer`] in Shewchuk's expansions (a few
@@ -1338,6 +1371,49 @@ mod tests {
         // through the points (3, 3) off it: inside, whatever the stage
         let chord = Reach::Distance { a: p(660.0, 208.0), b: p(672.0, 208.0) };
         assert_eq!(ask(pps, chord).0, Some(CirclePosition::Inside));
+    }
+
+    /// The exact answer for three lines and a fourth (`tangent_lines`),
+    /// wherever it answers, against the radical tower, on the chords of
+    /// 16-gons inscribed in circles and rounded to integers (mirror
+    /// symmetric: many true zeros, as in arcs a CAD program cut into
+    /// chords), each triple of chords asked about every other chord.
+    #[test]
+    fn three_lines_agree_with_the_tower_on_chords_of_circles() {
+        let mut rng = crate::splitmix::SplitMix64(16);
+        let (mut answered, mut zeros) = (0, 0);
+        for _ in 0..6 {
+            let (cx, cy) = ((rng.next_u64() % 64) as f64 * 1024.0, (rng.next_u64() % 64) as f64 * 1024.0);
+            let r = 4096.0 + (rng.next_u64() % 4096) as f64;
+            let corners: Vec<Point> = (0..16)
+                .map(|k| {
+                    let t = std::f64::consts::PI * k as f64 / 8.0;
+                    Point::new((cx + r * t.cos()).round(), (cy + r * t.sin()).round())
+                })
+                .collect();
+            let chords: Vec<(Point, Point)> = (0..16).map(|k| (corners[k], corners[(k + 1) % 16])).collect();
+            for i in 0..16 {
+                for j in i + 2..16 {
+                    for k in j + 2..16 {
+                        if (k + 2) % 16 == i || (k + 1) % 16 == i {
+                            continue;
+                        }
+                        let sites = [i, j, k].map(|m| Site::Segment { a: chords[m].0, b: chords[m].1 });
+                        let Some((centre, radius)) = segment_solvers::vertex(&sites[0], &sites[1], &sites[2]) else { continue };
+                        let Some(system) = System::of(&sites, centre) else { continue };
+                        for q in (0..16).filter(|q| ![i, j, k].contains(q)) {
+                            let question = Reach::Distance { a: chords[q].0, b: chords[q].1 };
+                            let Some(fast) = system.three_lines_answer(centre, radius, &question) else { continue };
+                            let slow = algebraic_answer(&sites, &question);
+                            assert_eq!(Some(fast), slow, "{sites:?} {question:?}");
+                            answered += 1;
+                            zeros += usize::from(fast == CirclePosition::On);
+                        }
+                    }
+                }
+            }
+        }
+        assert!(answered > 1000 && zeros > 20, "{answered} answered, {zeros} zeros");
     }
 
     /// The fast exact answer for two points and a line
