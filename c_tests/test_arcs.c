@@ -15,11 +15,12 @@
  * (polygons with arcs are INVALID_ARGUMENT "not supported yet"), offsets
  * along arcs (INVALID_ARGUMENT naming the arc site), and the crossing
  * checks (while `segvoronoi_builder_check` passes crossing arcs). The
- * degenerate families and the nearly tangent rounded polygons (an audit of
- * the library's construction, which is still being fixed on them) report
- * a failing part as LIBRARY and do not count it unless
- * SEGVORONOI_ARCS_STRICT=1 is set. Everything else fails
- * loudly.
+ * degenerate families and the nearly tangent rounded polygons (the audit
+ * of the library's construction) count like everything else: every part
+ * passes since the ties at infinity were mended. While a regression is
+ * chased, SEGVORONOI_ARCS_LENIENT=1 reports a failing audit part (or a
+ * build the library refused by its own vertex check) as LIBRARY without
+ * counting it.
  *
  * Built by c_tests/CMakeLists.txt as a downstream consumer of the installed
  * package (shared, static, and under AddressSanitizer). With
@@ -115,9 +116,13 @@ static double arc_distance(const segvoronoi_arc *a, double x, double y) {
 }
 
 static double segment_distance(double ax, double ay, double bx, double by, double x, double y) {
-    double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy, t;
-    if (len2 == 0) return hypot(x - ax, y - ay);
-    t = ((x - ax) * dx + (y - ay) * dy) / len2;
+    /* the direction in units of the larger extent: the squares of a
+       segment 1e-300 long would underflow to zero */
+    double dx = bx - ax, dy = by - ay, m = fmax(fabs(dx), fabs(dy)), ux, uy, t;
+    if (m == 0) return hypot(x - ax, y - ay);
+    ux = dx / m;
+    uy = dy / m;
+    t = ((x - ax) * ux + (y - ay) * uy) / ((ux * ux + uy * uy) * m);
     t = t < 0 ? 0 : (t > 1 ? 1 : t);
     return hypot(x - (ax + t * dx), y - (ay + t * dy));
 }
@@ -452,8 +457,11 @@ static segvoronoi_diagram *build_or_skip(segvoronoi_builder *b, const char *what
          * check of its arc vertices refused a diagram it got wrong rather
          * than return it; a library limit, counted with the audit's parts */
         fprintf(stderr, "test_arcs: LIBRARY building %s was refused: %s\n", what, segvoronoi_last_error_message());
-        ++audit_failed;
         CHECK(d == NULL);
+        if (getenv("SEGVORONOI_ARCS_LENIENT") != NULL)
+            ++audit_failed;
+        else
+            CHECK(!"the library refused an input with arcs by its vertex check");
         return NULL;
     }
     ++checks;
@@ -489,6 +497,11 @@ static size_t check_arc_diagram(const segvoronoi_diagram *d, const segvoronoi_bu
     CHECK_STATUS(segvoronoi_diagram_validate(d), SEGVORONOI_STATUS_OK);
     CHECK_STATUS(segvoronoi_diagram_extent(d, &extent), SEGVORONOI_STATUS_OK);
     tol = 1e-9 * (extent > 0 ? extent : 1);
+    /* a distance to an arc is the difference of two numbers of the size of
+       its radius, rounded at that size (this test's own too): a nearly
+       full arc of radius 2.5e7 around unit-sized input */
+    for (i = 0; i < s.n; ++i)
+        if (s.site[i].kind == SEGVORONOI_SITE_ARC) tol = fmax(tol, 64 * DBL_EPSILON * s.arc[i].radius);
     CHECK_STATUS(segvoronoi_diagram_stats(d, &stats), SEGVORONOI_STATUS_OK);
     CHECK(stats.struct_size == sizeof stats);
     CHECK(stats.input_arcs == segvoronoi_builder_arc_count(b));
@@ -845,14 +858,14 @@ static double nearest_distance(const sites *s, double x, double y) {
 }
 
 /* Ends a part of the audit of the library's construction with arcs (the
- * degenerate and random families, which the library is still being fixed
- * on): with SEGVORONOI_ARCS_STRICT=1 in the environment its failed checks
- * count; without, a failing part is reported as LIBRARY, with the input
- * printed by the caller, and its checks since `before` are not counted. */
+ * degenerate and random families): its failed checks count, unless
+ * SEGVORONOI_ARCS_LENIENT=1 is in the environment; then a failing part is
+ * reported as LIBRARY, with the input printed by the caller, and its checks
+ * since `before` are not counted. */
 static int audit_part(const char *what, int before, int before_checks) {
     int failed = failures > before;
-    if (failed && getenv("SEGVORONOI_ARCS_STRICT") == NULL) {
-        fprintf(stderr, "test_arcs: LIBRARY %s fails (%d of %d checks; not counted: SEGVORONOI_ARCS_STRICT=1 counts them)\n",
+    if (failed && getenv("SEGVORONOI_ARCS_LENIENT") != NULL) {
+        fprintf(stderr, "test_arcs: LIBRARY %s fails (%d of %d checks; not counted: SEGVORONOI_ARCS_LENIENT=1)\n",
                 what, failures - before, checks - before_checks);
         failures = before;
         ++audit_failed;

@@ -258,11 +258,6 @@ const POSTGIS: [(&str, &str, usize); 6] = [
     ("collection", "GEOMETRYCOLLECTION Z (POINT Z (9 9 1), CIRCULARSTRING Z (0 0 1, 1 1 1, 1 0 1))", 1),
 ];
 
-/// The PostGIS examples the library does not build yet: a point on the
-/// convex side of an arc (its build stops with an Internal error, "a
-/// vertex of arc 0 misses its sites"; `cargo test -- --ignored` runs it).
-const WRONG_IN_THE_CORE: [&str; 1] = ["collection"];
-
 #[test]
 fn every_postgis_curve_type_builds() {
     if !arcs_build() {
@@ -276,7 +271,7 @@ fn every_postgis_curve_type_builds() {
         }
         return;
     }
-    for (name, wkt, arcs) in POSTGIS.into_iter().filter(|(name, _, _)| !WRONG_IN_THE_CORE.contains(name)) {
+    for (name, wkt, arcs) in POSTGIS {
         let (d, _) = diagram_of(name, wkt, &[]);
         assert_eq!(check_dump(&d), arcs, "{name}");
     }
@@ -291,10 +286,6 @@ fn every_postgis_curve_type_builds() {
 fn a_point_beside_an_arc() {
     if !arcs_build() {
         return; // waits for the library's build of arcs (see the module doc)
-    }
-    for (name, wkt, arcs) in POSTGIS.into_iter().filter(|(name, _, _)| WRONG_IN_THE_CORE.contains(name)) {
-        let (d, _) = diagram_of(name, wkt, &[]);
-        assert_eq!(check_dump(&d), arcs, "{name}");
     }
     let (d, _) = diagram_of("point-above-arc", "POINT (0.5 3)\nCIRCULARSTRING (0 0, 0.5 0.5, 1 0)", &[]);
     assert_eq!(check_dump(&d), 1);

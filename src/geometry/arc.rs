@@ -276,7 +276,16 @@ impl CircularArc {
     /// near the bounding rays the answer may be either.
     pub fn spans(&self, p: Point) -> bool {
         let c = self.centre;
-        let cross = |u: Point, v: Point| (u.x - c.x) * (v.y - c.y) - (u.y - c.y) * (v.x - c.x);
+        // the differences in units of about the radius (a power of two,
+        // exact): at 1e-300 their products would underflow to zero, at
+        // 1e300 overflow
+        let e = (-self.radius.log2().round()).clamp(-1000.0, 1000.0) as i32;
+        let unit = 2f64.powi(e);
+        let from_centre = |u: Point| ((u.x - c.x) * unit, (u.y - c.y) * unit);
+        let cross = |u: Point, v: Point| {
+            let ((ux, uy), (vx, vy)) = (from_centre(u), from_centre(v));
+            ux * vy - uy * vx
+        };
         // counter-clockwise from `from` to `to`
         let (from, to) = if self.counter_clockwise { (self.start, self.end) } else { (self.end, self.start) };
         let (after_from, before_to) = (cross(from, p) >= 0.0, cross(p, to) >= 0.0);

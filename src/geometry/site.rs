@@ -200,7 +200,10 @@ pub(crate) fn distance_in<T: Real>(site: &Site, p: Point, lift: &impl Fn(f64) ->
         Site::Segment { a, b } => {
             let t = segment_parameter(a, b, p);
             if t > 0.0 && t < 1.0 {
-                let (ux, uy) = (lift(b.x).sub(&lift(a.x)), lift(b.y).sub(&lift(a.y)));
+                // the direction in units of about its length (a power of
+                // two, exact): a segment 1e-300 long has no square
+                let unit = lift(unit_near_inverse((b.x - a.x).abs().max((b.y - a.y).abs())));
+                let (ux, uy) = (lift(b.x).sub(&lift(a.x)).mul(&unit), lift(b.y).sub(&lift(a.y)).mul(&unit));
                 let (vx, vy) = between(a);
                 ux.mul(&vy).sub(&uy.mul(&vx)).abs().div(&T::hypot(&ux, &uy))
             } else {
@@ -236,12 +239,41 @@ pub(crate) fn smaller<T: Real>(x: T, y: T) -> T {
 pub(crate) fn segment_parameter(a: Point, b: Point, p: Point) -> f64 {
     let (ux, uy) = (b.x - a.x, b.y - a.y);
     let dot = ux * (p.x - a.x) + uy * (p.y - a.y);
-    dot / (ux * ux + uy * uy)
+    let length2 = ux * ux + uy * uy;
+    if (1e-290..=1e290).contains(&length2) {
+        return dot / length2;
+    }
+    // a segment whose squared length underflows or overflows: its
+    // direction in units of about its length (a power of two, exact)
+    let unit = unit_near_inverse(ux.abs().max(uy.abs()));
+    let (ux, uy) = (ux * unit, uy * unit);
+    (ux * (p.x - a.x) + uy * (p.y - a.y)) / (ux * ux + uy * uy) * unit
+}
+
+/// A power of two near `1 / x` (for `x > 0`; subnormal `x` count as
+/// `2^-1023`), within `2^±1000`: numbers of `x`'s size times it are about
+/// 1, so that their products neither underflow nor overflow.
+#[inline]
+pub(crate) fn unit_near_inverse(x: f64) -> f64 {
+    let exponent = ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    2f64.powi((-exponent).clamp(-1000, 1000))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn distances_at_every_magnitude() {
+        // the slot's lower side and a point above its middle, at 1e-300,
+        // 1 and 1e300: the distance is the height, the foot in the middle
+        for s in [1e-300, 1e-160, 1.0, 1e160, 1e300] {
+            let side = Site::Segment { a: p(0.0, 0.0), b: p(4.0 * s, 0.0) };
+            let above = p(2.0 * s, 1.0 * s);
+            assert_eq!(segment_parameter(p(0.0, 0.0), p(4.0 * s, 0.0), above), 0.5, "{s}");
+            assert!((side.distance(above) / s - 1.0).abs() < 1e-15, "{s}: {}", side.distance(above));
+        }
+    }
 
     fn p(x: f64, y: f64) -> Point {
         Point::new(x, y)
