@@ -1008,6 +1008,26 @@ fn filleted_polygons_as_cad_gives_them() {
 
 /// A slot and a rounded rectangle at 1e-300 and at 1e300 (and 1e8 from
 /// the origin): the build scales them by a power of two and back.
+/// Arcs among coordinates that span more than the exact range are
+/// refused as `UnsupportedRange` before any work (found by the C API's
+/// fuzz driver: a full circle of radius 2.5e-160 at x = -2.3e282, whose
+/// endpoints round together once the input is scaled, panicked).
+#[test]
+fn arcs_beyond_the_exact_range_are_refused() {
+    let p = Point::new;
+    let mut b = Builder::new();
+    let (x, y0, y1) = (-2.2647270765748143e282, -7.0000000000000006e-160, -2.0000000000000006e-160);
+    b.add_bulged_polyline(&[(p(x, y0), 1.0), (p(x, y1), 1.0)], true).unwrap();
+    let e = b.build().unwrap_err();
+    assert_eq!(e.kind(), segvoronoi::ErrorKind::UnsupportedRange, "{e}");
+    assert!(e.message().contains("with arcs"), "{e}");
+    // the same circle at an ordinary place builds
+    let mut b = Builder::new();
+    b.add_bulged_polyline(&[(p(0.0, y0), 1.0), (p(0.0, y1), 1.0)], true).unwrap();
+    let d = b.build().unwrap();
+    assert!(audit(&d, 1e-8 * 1e-159).is_empty());
+}
+
 #[test]
 fn extreme_magnitudes() {
     for k in [1e-300, 1e300, 1.0] {

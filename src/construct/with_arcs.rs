@@ -14,8 +14,36 @@ use super::state::Construction;
 use super::Sites;
 use crate::diagram::{Diagram, SiteId};
 use crate::error::{Error, ErrorKind};
-use crate::geometry::scale::Scale;
+use crate::geometry::scale::{Magnitudes, Scale, EXACT_SPAN};
 use crate::geometry::{CircularArc, Point};
+
+/// Inputs with arcs whose coordinates span more than the exact range are
+/// refused before any work: segments beyond it are attempted and checked
+/// (`exact_range`), but the arcs' decisions are floating point relative
+/// to the input's size, so an arc a hundred orders of magnitude smaller
+/// than the coordinates around it has no answer at all (its endpoints
+/// round together once the input is scaled).
+fn refuse_beyond_the_exact_range(points: &[Point], segments: &[[Point; 2]], arcs: &[CircularArc]) -> Result<(), Error> {
+    let ends: Vec<Point> = arcs.iter().flat_map(|a| [a.start(), a.end()]).collect();
+    let magnitudes = Magnitudes::of_points(points.iter().chain(segments.iter().flatten()).chain(ends.iter()));
+    if magnitudes.span() <= EXACT_SPAN {
+        return Ok(());
+    }
+    // crossing segments first, as `Builder::check` reports them
+    super::check_input(points, segments, &[])?;
+    Err(Error::new(
+        ErrorKind::UnsupportedRange,
+        format!(
+            "the input's coordinates span {} bits, from a largest magnitude of {:e} down to a smallest nonzero \
+             magnitude or difference of {:e}; with arcs they must span at most {EXACT_SPAN} bits (about 3e144). \
+             Round the smallest differences away or build parts of narrower span separately",
+            magnitudes.span(),
+            magnitudes.max_abs,
+            magnitudes.smallest
+        ),
+        Vec::new(),
+    ))
+}
 
 /// The diagram of points, segments and arcs (`Builder::build` with arcs).
 pub(super) fn diagram_with_arcs(
@@ -43,6 +71,7 @@ pub(super) fn diagram_with_arcs(
     // arcs against points, segments and arcs, exactly; segments against
     // segments (and the arcs' endpoints, as points) in `build_sites`
     super::input_check::arcs::check_arcs(points, segments, arcs)?;
+    refuse_beyond_the_exact_range(points, segments, arcs)?;
     let mut all = Vec::with_capacity(points.len() + 2 * arcs.len());
     all.extend_from_slice(points);
     for arc in arcs {
