@@ -375,3 +375,266 @@ fn a_point_inside_a_nearly_closed_arc() {
     let above = d.offset(peak + 1e-4).unwrap();
     assert!(above.loops.len() < below.loops.len(), "{above:?}");
 }
+
+// ---- domains bounded by rings of segments and arcs ----------------------
+
+/// A ring as `add_bulged_polygon` takes it.
+type Ring = Vec<(Point, f64)>;
+
+/// A rounded rectangle `w × h` at `(x, y)` with corner radius `r`, as a
+/// counter-clockwise bulged ring (reversed: clockwise).
+fn rounded_ring(x: f64, y: f64, w: f64, h: f64, r: f64, reversed: bool) -> Ring {
+    let q = (std::f64::consts::PI / 8.0).tan();
+    let p = Point::new;
+    let ring = vec![
+        (p(x + r, y), 0.0),
+        (p(x + w - r, y), q),
+        (p(x + w, y + r), 0.0),
+        (p(x + w, y + h - r), q),
+        (p(x + w - r, y + h), 0.0),
+        (p(x + r, y + h), q),
+        (p(x, y + h - r), 0.0),
+        (p(x, y + r), q),
+    ];
+    if reversed {
+        reverse_ring(&ring)
+    } else {
+        ring
+    }
+}
+
+/// The same ring walked the other way (each piece's bulge negated).
+fn reverse_ring(ring: &Ring) -> Ring {
+    let n = ring.len();
+    (0..n).map(|k| (ring[n - 1 - k].0, -ring[(2 * n - 2 - k) % n].1)).collect()
+}
+
+/// A circle of radius `r` about `(x, y)` as two half circles.
+fn circle_ring(x: f64, y: f64, r: f64) -> Ring {
+    vec![(Point::new(x - r, y), 1.0), (Point::new(x + r, y), 1.0)]
+}
+
+/// A slot (stadium) from `(x, y)`: a `w × 2r` rectangle with half circles
+/// on its short sides.
+fn slot_ring(x: f64, y: f64, w: f64, r: f64) -> Ring {
+    let p = Point::new;
+    vec![(p(x, y), 0.0), (p(x + w, y), 1.0), (p(x + w, y + 2.0 * r), 0.0), (p(x, y + 2.0 * r), 1.0)]
+}
+
+/// A filleted convex polygon as a bulged ring (see `filleted_polygon`).
+fn filleted_ring(rng: &mut SplitMix64, cx: f64, cy: f64, n: usize, radius: f64) -> Ring {
+    filleted_polygon(rng, cx, cy, n, radius)
+        .iter()
+        .map(|piece| match *piece {
+            Piece::Arc(arc) => (arc.start(), arc.bulge()),
+            Piece::Segment(a, _) => (a, 0.0),
+            Piece::Point(_) => unreachable!(),
+        })
+        .collect()
+}
+
+/// The ring's points with each arc replaced by `CHORDS` chords.
+fn densified_ring(ring: &Ring) -> Vec<Point> {
+    let n = ring.len();
+    let mut out = Vec::new();
+    for k in 0..n {
+        let ((p, bulge), (q, _)) = (ring[k], ring[(k + 1) % n]);
+        out.push(p);
+        if bulge != 0.0 {
+            let arc = CircularArc::from_bulge(p, q, bulge).unwrap();
+            out.extend((1..CHORDS).map(|j| arc.point_at(j as f64 / CHORDS as f64)));
+        }
+    }
+    out
+}
+
+/// The diagram of the polygon of `rings`, and of its 256-chord version.
+fn domain_and_reference(rings: &[Ring]) -> (Diagram, Diagram) {
+    let mut b = Builder::new();
+    b.add_bulged_polygon(rings).unwrap();
+    let d = b.build().unwrap_or_else(|e| panic!("{e}: {rings:?}"));
+    let mut r = Builder::new();
+    r.add_polygon(&rings.iter().map(densified_ring).collect::<Vec<_>>()).unwrap();
+    (d, r.build().unwrap())
+}
+
+/// The tangent joins of the rings: corners where a segment and an arc, or
+/// two arcs, meet with one tangent.
+fn tangent_joins(rings: &[Ring]) -> Vec<Point> {
+    let mut joins = Vec::new();
+    for ring in rings {
+        let n = ring.len();
+        let leaving = |k: usize| {
+            let ((p, bulge), (q, _)) = (ring[k], ring[(k + 1) % n]);
+            // a bulge's arc leaves its start turned by 2 atan(bulge) from the chord
+            let turn = -2.0 * bulge.atan();
+            let (dx, dy) = (q.x - p.x, q.y - p.y);
+            let l = dx.hypot(dy);
+            let (c, s) = (turn.cos(), turn.sin());
+            Point::new((c * dx - s * dy) / l, (s * dx + c * dy) / l)
+        };
+        let arriving = |k: usize| {
+            let ((p, bulge), (q, _)) = (ring[k], ring[(k + 1) % n]);
+            let turn = 2.0 * bulge.atan();
+            let (dx, dy) = (q.x - p.x, q.y - p.y);
+            let l = dx.hypot(dy);
+            let (c, s) = (turn.cos(), turn.sin());
+            Point::new((c * dx - s * dy) / l, (s * dx + c * dy) / l)
+        };
+        for k in 0..n {
+            let before = (k + n - 1) % n;
+            let curved = ring[k].1 != 0.0 || ring[before].1 != 0.0;
+            let (u, v) = (arriving(before), leaving(k));
+            if curved && (u.x * v.y - u.y * v.x).abs() < 1e-9 && u.x * v.x + u.y * v.y > 0.0 {
+                joins.push(ring[k].0);
+            }
+        }
+    }
+    joins
+}
+
+/// Offsets of a curved domain against its chords', both signs; piece ends
+/// at the distance from their sites; arcs concentric.
+fn check_domain_offsets(name: &str, rings: &[Ring], distances: &[f64], size: f64) -> Seen {
+    let (d, reference) = domain_and_reference(rings);
+    let mut seen = Seen::default();
+    for &r in distances {
+        let what = format!("{name} at {r}");
+        let offset = d.offset(r).unwrap_or_else(|e| panic!("{what}: {e}"));
+        let want = reference.offset(r).unwrap();
+        let tol = 1e-9 * (size + r.abs());
+        for (l, lp) in offset.loops.iter().enumerate() {
+            for (k, piece) in lp.pieces.iter().enumerate() {
+                assert_eq!(piece.to(), lp.pieces[(k + 1) % lp.pieces.len()].from(), "{what}: loop {l} opens");
+                let site = d.site(piece.site()).unwrap();
+                for end in [piece.from(), piece.to()] {
+                    let off = (distance(&site, end) - r.abs()).abs();
+                    assert!(off <= tol, "{what}: loop {l} piece {k} {piece:?} ends {off:e} off the distance");
+                }
+                if let (Site::Arc(arc), OffsetPiece::Arc { centre, radius, .. }) = (site, *piece) {
+                    assert_eq!(centre, arc.centre(), "{what}");
+                    assert!(
+                        (radius - (arc.radius() + r.abs())).abs() <= tol || (radius - (arc.radius() - r.abs())).abs() <= tol,
+                        "{what}: radius {radius}"
+                    );
+                    seen.arc_pieces += 1;
+                }
+            }
+        }
+        assert_eq!(offset.loops.len(), want.loops.len(), "{what}: loops, against the chords'");
+        for (a, b) in offset.loops.iter().zip(&want.loops) {
+            assert_eq!(a.hole, b.hole, "{what}: holes");
+        }
+        let (area, reference_area) = (offset.area(), want.area());
+        let relative = (area - reference_area).abs() / reference_area.abs();
+        assert!(relative <= 1e-4, "{what}: area {area} against the chords' {reference_area} ({relative:e})");
+        let (ours, theirs) = (offset.polylines(1e-5 * size).unwrap(), want.polylines(1e-5 * size).unwrap());
+        let hausdorff = directed_hausdorff(&ours, &theirs).max(directed_hausdorff(&theirs, &ours));
+        assert!(hausdorff <= 1e-3 * size, "{what}: Hausdorff distance {hausdorff}");
+        seen.offsets += 1;
+        seen.worst_area = seen.worst_area.max(relative);
+        seen.worst_hausdorff = seen.worst_hausdorff.max(hausdorff / size);
+    }
+    eprintln!("{name}: {seen:?}");
+    seen
+}
+
+/// The medial axis of a curved domain: every sample inside, at its
+/// clearance from the nearest site; no branch ends at a tangent join; the
+/// largest inscribed circle is the chords' (to their sagitta).
+fn check_medial_axis(name: &str, rings: &[Ring], size: f64) -> usize {
+    let (d, reference) = domain_and_reference(rings);
+    let sites: Vec<Site> = d.site_ids().map(|s| d.site(s).unwrap()).collect();
+    let joins = tangent_joins(rings);
+    let axis = d.medial_axis();
+    let mut samples = 0;
+    for chain in &axis.chains {
+        let points = d.sample_chain(chain, 1e-5 * size).unwrap_or_else(|| panic!("{name}: a chain without samples"));
+        for [x, y, r] in points {
+            let p = Point::new(x, y);
+            let nearest = sites.iter().map(|s| distance(s, p)).fold(f64::INFINITY, f64::min);
+            assert!((nearest - r).abs() <= 1e-6 * size, "{name}: sample {p:?} r {r}, nearest site at {nearest}");
+            if r > 1e-9 * size {
+                assert_eq!(d.locate_point(p), Some(segvoronoi::Location::Inside), "{name}: sample {p:?} r {r}");
+            }
+            samples += 1;
+        }
+        for piece in &chain.pieces {
+            for end in piece.ends {
+                if let segvoronoi::EdgeEnd::Vertex(v) = end {
+                    let at = d.vertex(v).unwrap().position;
+                    assert!(
+                        joins.iter().all(|j| j.distance(at) > 1e-9 * size),
+                        "{name}: the medial axis reaches the tangent join at {at:?}"
+                    );
+                }
+            }
+        }
+    }
+    let (centre, radius) = d.max_inscribed_circle().expect("a domain");
+    let (_, want) = reference.max_inscribed_circle().unwrap();
+    let nearest = sites.iter().map(|s| distance(s, centre)).fold(f64::INFINITY, f64::min);
+    assert!((nearest - radius).abs() <= 1e-9 * size, "{name}: inscribed circle {centre:?} {radius}, nearest {nearest}");
+    assert!((radius - want).abs() <= 1e-3 * size, "{name}: inscribed radius {radius} against the chords' {want}");
+    assert_eq!(d.locate_point(centre), Some(segvoronoi::Location::Inside), "{name}");
+    eprintln!("{name}: {samples} samples, {} chains, inscribed {radius} (chords {want})", axis.chains.len());
+    samples
+}
+
+#[test]
+fn bulged_rings_locate_points_even_odd() {
+    let rings =
+        [rounded_ring(0.0, 0.0, 10.0, 6.0, 1.5, false), circle_ring(3.0, 3.0, 1.0), rounded_ring(5.0, 1.0, 4.0, 3.0, 1.0, true)];
+    let mut b = Builder::new();
+    b.add_bulged_polygon(&rings).unwrap();
+    let d = b.build().unwrap();
+    use segvoronoi::Location::*;
+    let p = Point::new;
+    for (q, want) in [
+        (p(0.3, 0.3), Outside), // cut off by a corner arc
+        (p(0.8, 0.8), Inside),
+        (p(3.0, 3.0), Outside), // in the round hole, on its chord
+        (p(3.0, 3.9), Outside),
+        (p(3.0, 4.1), Inside),
+        (p(2.0, 3.0), Boundary),
+        (p(7.0, 2.5), Outside), // in the rounded hole
+        (p(5.1, 1.1), Inside),  // in its corner, outside its arc
+        (p(11.0, 3.0), Outside),
+    ] {
+        assert_eq!(d.locate_point(q), Some(want), "{q:?}");
+    }
+}
+
+#[test]
+fn rounded_rectangles_with_holes_offsets_against_chords() {
+    let rings =
+        [rounded_ring(0.0, 0.0, 10.0, 6.0, 1.5, false), circle_ring(3.0, 3.0, 1.0), rounded_ring(5.0, 1.0, 4.0, 3.0, 1.0, true)];
+    let seen = check_domain_offsets("rounded with holes", &rings, &[-0.1, -0.3, -0.45, -0.6, -1.2, 0.2, 0.5, 1.1, 3.0], 10.0);
+    assert!(seen.arc_pieces > 20, "{seen:?}");
+    // the same rings the other way round bound the same domain
+    let reversed: Vec<Ring> = rings.iter().map(reverse_ring).collect();
+    check_domain_offsets("rounded with holes, reversed", &reversed, &[-0.3, 0.5], 10.0);
+}
+
+#[test]
+fn slots_and_filleted_polygons_offsets_against_chords() {
+    check_domain_offsets("slot", &[slot_ring(0.0, 0.0, 4.0, 1.0)], &[-0.2, -0.5, -0.9, 0.3, 2.0], 6.0);
+    let mut rng = SplitMix64(11);
+    for n in [3, 5, 8] {
+        let rings = [filleted_ring(&mut rng, 0.0, 0.0, n, 0.3)];
+        check_domain_offsets(&format!("filleted {n}"), &rings, &[-0.05, -0.2, -0.35, 0.1, 0.6], 2.0);
+    }
+}
+
+#[test]
+fn medial_axis_of_curved_domains() {
+    let rings =
+        [rounded_ring(0.0, 0.0, 10.0, 6.0, 1.5, false), circle_ring(3.0, 3.0, 1.0), rounded_ring(5.0, 1.0, 4.0, 3.0, 1.0, true)];
+    assert!(check_medial_axis("rounded with holes", &rings, 10.0) > 100);
+    check_medial_axis("slot", &[slot_ring(0.0, 0.0, 4.0, 1.0)], 6.0);
+    check_medial_axis("rounded rectangle", &[rounded_ring(0.0, 0.0, 6.0, 4.0, 1.0, false)], 6.0);
+    let mut rng = SplitMix64(12);
+    for n in [3, 4, 6] {
+        check_medial_axis(&format!("filleted {n}"), &[filleted_ring(&mut rng, 0.0, 0.0, n, 0.3)], 2.0);
+    }
+}

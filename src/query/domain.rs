@@ -69,7 +69,12 @@ pub(crate) struct Domain {
 #[derive(Clone, Debug)]
 struct Ring {
     corners: Vec<SiteId>,
+    /// Its pieces: segment sites, and arc sites for a ring of
+    /// `add_bulged_polygon`.
     segments: Vec<SiteId>,
+    /// Whether an arc is among its pieces (`ring_arcs` then answers what
+    /// the exact tests of straight rings do).
+    curved: bool,
     /// Whether the domain is on the left of the ring's direction.
     left_inside: bool,
     /// The bounding box of its corners: a ring can hold a point, or
@@ -188,7 +193,11 @@ impl Diagram {
                 let forward = self.segment_endpoints(s).is_some_and(|[a, _]| a == ring.corners[k]);
                 role[s.index()] = Role::RingSegment { left_inside: ring.left_inside == forward };
                 let [prev, here, next] = [ring.corners[(k + n - 1) % n], ring.corners[k], ring.corners[(k + 1) % n]];
-                let turn = self.turn(self.point_of(prev), self.point_of(here), self.point_of(next));
+                let turn = if ring.curved {
+                    self.corner_turn(ring.segments[(k + n - 1) % n], here, ring.segments[k])
+                } else {
+                    self.turn(self.point_of(prev), self.point_of(here), self.point_of(next))
+                };
                 // the reflex side: right of a left turn, left of a right turn
                 let cell = match turn {
                     Orientation::Collinear => Location::Boundary,
@@ -256,6 +265,22 @@ impl Diagram {
         // the rings lies strictly on one side, and so does every edge from
         // it that does not pass through a straight corner.
         let is_through = |e: usize| inside_end(&through, EdgeId::from_index(e)).is_some();
+        // A vertex off the rings that only edges through straight corners
+        // reach (the centre of a circle of two arcs, where the separators
+        // at its two tangent joins meet) takes the side of those edges it
+        // ends.
+        for v in 0..vertex.len() {
+            if vertex[v] != Location::Boundary || on_ring[v] {
+                continue;
+            }
+            for h in self.vertex_half_edges(VertexId::from_index(v)).expect("a finite vertex") {
+                if let Some(inside) = inside_end(&through, h.edge()) {
+                    // h starts at v: v is the edge's end 0 unless h is reversed
+                    vertex[v] = inside_if(usize::from(h.is_reversed()) == inside);
+                    break;
+                }
+            }
+        }
         let mut queue: Vec<usize> = (0..vertex.len()).filter(|&v| vertex[v] != Location::Boundary).collect();
         while let Some(v) = queue.pop() {
             for h in self.vertex_half_edges(VertexId::from_index(v)).expect("a finite vertex") {
@@ -348,7 +373,15 @@ impl Diagram {
     /// Whether every site of vertex `v` is the point site `p` or a segment
     /// ending there: `v` lies at `p`, at clearance zero.
     fn touches_only(&self, v: VertexId, p: SiteId) -> bool {
-        self.store.sites_of(v).iter().all(|&s| s == p || self.segment_endpoints(s).is_some_and(|e| e.contains(&p)))
+        let sites = self.store.sites_of(v);
+        let ends_there = sites.iter().all(|&s| s == p || self.segment_endpoints(s).is_some_and(|e| e.contains(&p)));
+        // Two arcs can share both ends (a circle of two halves), and an
+        // arc's concave side has vertices among its own ends away from
+        // them (the circle's centre): with an arc, the vertex must also be
+        // at the corner (to the arcs' vertex solver's precision).
+        let arc = sites.iter().any(|s| matches!(self.sites[s.index()], Site::Arc(_)));
+        ends_there
+            && (!arc || self.store.position[v.index()].distance(self.point_of(p)) <= 1e-9 * self.extent.max(f64::MIN_POSITIVE))
     }
 
     /// Where the cell of corner `p` lies, where `segments` (more than two)
@@ -361,8 +394,8 @@ impl Diagram {
         let mut around: Vec<(SiteId, Point)> = segments
             .iter()
             .filter_map(|&s| {
-                let [a, b] = self.segment_endpoints(s)?;
-                Some((s, self.point_of(if a == p { b } else { a })))
+                self.segment_endpoints(s)?;
+                Some((s, self.toward(s, p)))
             })
             .collect();
         around.sort_by(|x, y| crate::geometry::predicates::compare_directions(here, x.1, y.1));
@@ -402,7 +435,17 @@ impl Diagram {
         let mut rings: Vec<Ring> = inputs
             .iter()
             .map(|input| {
-                let segments: Vec<SiteId> = input.segments.clone().map(|j| self.segment_site[j]).collect();
+                let segments: Vec<SiteId> = match &input.pieces {
+                    Some(pieces) => pieces
+                        .iter()
+                        .map(|&p| match p {
+                            crate::ChainPiece::Segment(j) => self.segment_site[j],
+                            crate::ChainPiece::Arc(k) => self.arc_site[k],
+                        })
+                        .collect(),
+                    None => input.segments.clone().map(|j| self.segment_site[j]).collect(),
+                };
+                let curved = segments.iter().any(|s| matches!(self.sites[s.index()], Site::Arc(_)));
                 let n = segments.len();
                 // corner k joins segment k - 1 and segment k
                 let corners = (0..n)
@@ -410,7 +453,9 @@ impl Diagram {
                         let (before, here) = (segments[(k + n - 1) % n], segments[k]);
                         let ends = self.segment_endpoints(here).unwrap_or([here, here]);
                         let shared = self.segment_endpoints(before).unwrap_or([before, before]);
-                        if shared.contains(&ends[0]) {
+                        // (the pieces of a bulged ring run forward, from
+                        // their corner; a ring of two pieces shares both ends)
+                        if input.pieces.is_some() || shared.contains(&ends[0]) {
                             ends[0]
                         } else {
                             ends[1]
@@ -418,8 +463,13 @@ impl Diagram {
                     })
                     .collect();
                 let corners: Vec<SiteId> = corners;
-                let bounds = Bounds::of(corners.iter().map(|&c| self.point_of(c)));
-                Ring { corners, segments, left_inside: false, bounds, depth: 0, parent: None }
+                // an arc may bulge beyond its corners: its circle's box
+                let reach = segments.iter().filter_map(|s| self.arc_of(*s)).flat_map(|arc| {
+                    let (c, r) = (arc.centre(), arc.radius());
+                    [Point::new(c.x - r, c.y - r), Point::new(c.x + r, c.y + r)]
+                });
+                let bounds = Bounds::of(corners.iter().map(|&c| self.point_of(c)).chain(reach));
+                Ring { corners, segments, curved, left_inside: false, bounds, depth: 0, parent: None }
             })
             .collect();
         let counter_clockwise: Vec<bool> = rings.iter().map(|r| self.is_counter_clockwise(r)).collect();
@@ -437,6 +487,9 @@ impl Diagram {
     /// The orientation of a ring, from the exact turn at its lowest-leftmost
     /// corner (an extreme corner of a simple ring turns the ring's way).
     fn is_counter_clockwise(&self, ring: &Ring) -> bool {
+        if ring.curved {
+            return self.curved_ring_area(ring) > 0.0;
+        }
         let n = ring.corners.len();
         let key = |k: usize| {
             let p = self.point_of(ring.corners[k]);
@@ -478,6 +531,14 @@ impl Diagram {
     /// touches the rings only there): where it leaves its first end, by
     /// exact orientations against the rings' corners there.
     fn obstacle_location(&self, rings: &[Ring], s: SiteId) -> Location {
+        if let Site::Arc(arc) = self.sites[s.index()] {
+            // an arc obstacle meets the rings at its ends at most
+            return [arc.midpoint(), arc.start(), arc.end()]
+                .into_iter()
+                .map(|p| self.point_location(rings, p))
+                .find(|&l| l != Location::Boundary)
+                .unwrap_or(Location::Boundary);
+        }
         let Site::Segment { a, b } = self.sites[s.index()] else { return self.point_location(rings, self.point_of(s)) };
         for p in [a, b] {
             let at = self.point_location(rings, p);
@@ -512,7 +573,12 @@ impl Diagram {
         let n = ring.corners.len();
         let mut inside = false;
         for k in (0..n).filter(|&k| self.point_of(ring.corners[k]) == p) {
-            let (before, after) = (self.point_of(ring.corners[(k + n - 1) % n]), self.point_of(ring.corners[(k + 1) % n]));
+            let (before, after) = if ring.curved {
+                // where the pieces leave the corner (along an arc's tangent)
+                (self.toward(ring.segments[(k + n - 1) % n], ring.corners[k]), self.toward(ring.segments[k], ring.corners[k]))
+            } else {
+                (self.point_of(ring.corners[(k + n - 1) % n]), self.point_of(ring.corners[(k + 1) % n]))
+            };
             // the region's wedge runs counter-clockwise from `from` to `to`
             let (from, to) = if self.is_counter_clockwise(ring) { (after, before) } else { (before, after) };
             let (turn_from, turn_to) = (self.turn(p, from, q), self.turn(p, q, to));
@@ -548,6 +614,9 @@ impl Diagram {
     /// an edge that runs upward with `p` on its left, or downward with `p`
     /// on its right (half-open in `y`, so a corner is counted once).
     fn ring_location(&self, ring: &Ring, p: Point) -> Location {
+        if ring.curved {
+            return self.curved_ring_location(ring, p);
+        }
         let n = ring.corners.len();
         let mut inside = false;
         for k in 0..n {
@@ -560,6 +629,139 @@ impl Diagram {
                 && p.y <= a.y.max(b.y)
             {
                 return Location::Boundary;
+            }
+            let upward = a.y <= p.y && p.y < b.y;
+            let downward = b.y <= p.y && p.y < a.y;
+            if (upward && turn == Orientation::CounterClockwise) || (downward && turn == Orientation::Clockwise) {
+                inside = !inside;
+            }
+        }
+        inside_if(inside)
+    }
+
+    /// The arc of an arc site; `None` for any other.
+    fn arc_of(&self, s: SiteId) -> Option<crate::geometry::CircularArc> {
+        match self.sites[s.index()] {
+            Site::Arc(arc) => Some(arc),
+            _ => None,
+        }
+    }
+
+    /// A point in the direction in which piece `s` (a segment or an arc)
+    /// leaves its endpoint `corner`: a segment's other end (exact), or a
+    /// point along an arc's tangent there, as far out as its chord is long.
+    fn toward(&self, s: SiteId, corner: SiteId) -> Point {
+        let at = self.point_of(corner);
+        match self.sites[s.index()] {
+            Site::Arc(arc) => {
+                let t = arc.tangent_into(at);
+                let length = arc.start().distance(arc.end());
+                Point::new(at.x + length * t.x, at.y + length * t.y)
+            }
+            Site::Segment { a, b } => {
+                if a == at {
+                    b
+                } else {
+                    a
+                }
+            }
+            _ => at,
+        }
+    }
+
+    /// The turn of a curved ring at corner `here` from piece `before` into
+    /// piece `after`: the turn of their tangents there (floating point; a
+    /// tangent join, to 1e-10 of a radian, is straight). Where the tangents
+    /// are opposite (a cusp), the turn of the chords decides.
+    fn corner_turn(&self, before: SiteId, here: SiteId, after: SiteId) -> Orientation {
+        let at = self.point_of(here);
+        let unit = |q: Point| {
+            let (dx, dy) = (q.x - at.x, q.y - at.y);
+            let n = dx.hypot(dy);
+            Point::new(dx / n, dy / n)
+        };
+        let (back, ahead) = (unit(self.toward(before, here)), unit(self.toward(after, here)));
+        // arriving along -back, leaving along ahead
+        let cross = -back.x * ahead.y + back.y * ahead.x;
+        let dot = -back.x * ahead.x - back.y * ahead.y;
+        if cross.abs() > 1e-10 {
+            return if cross > 0.0 { Orientation::CounterClockwise } else { Orientation::Clockwise };
+        }
+        if dot > 0.0 {
+            return Orientation::Collinear;
+        }
+        let other = |s: SiteId| {
+            let [a, b] = self.sites[s.index()].ends();
+            if a == at {
+                b
+            } else {
+                a
+            }
+        };
+        self.turn(other(before), at, other(after))
+    }
+
+    /// The signed area of a curved ring (positive counter-clockwise): the
+    /// polygon of its corners and, per arc, the circular segment between
+    /// its chord and it, `r²/2 (θ - sin θ)` for its signed sweep `θ` in the
+    /// ring's direction.
+    fn curved_ring_area(&self, ring: &Ring) -> f64 {
+        let n = ring.corners.len();
+        let origin = self.point_of(ring.corners[0]);
+        let mut area = 0.0;
+        for k in 0..n {
+            let (a, b) = (self.point_of(ring.corners[k]), self.point_of(ring.corners[(k + 1) % n]));
+            area += ((a.x - origin.x) * (b.y - origin.y) - (b.x - origin.x) * (a.y - origin.y)) / 2.0;
+            if let Some(arc) = self.arc_of(ring.segments[k]) {
+                let theta = if arc.start() == a { arc.sweep() } else { -arc.sweep() };
+                area += arc.radius() * arc.radius() / 2.0 * (theta - theta.sin());
+            }
+        }
+        area
+    }
+
+    /// Whether `p` is inside a curved ring: the even-odd test of the
+    /// polygon of its chords, changed by each arc's circular segment (the
+    /// region between its chord and it) that holds `p`. Which side of a
+    /// chord `p` lies on is exact; whether it is inside an arc's circle is
+    /// floating point (the centre is rounded), with `p` within `1e-12` of
+    /// the radius on the arc counted as on the boundary. A point on a
+    /// chord's line is moved up by an infinitesimal (then right by a
+    /// smaller one) for both tests: the same side of every chord.
+    fn curved_ring_location(&self, ring: &Ring, p: Point) -> Location {
+        let n = ring.corners.len();
+        if ring.corners.iter().any(|&c| self.point_of(c) == p) {
+            return Location::Boundary;
+        }
+        let mut inside = false;
+        for k in 0..n {
+            let (a, b) = (self.point_of(ring.corners[k]), self.point_of(ring.corners[(k + 1) % n]));
+            let mut turn = self.turn(a, b, p);
+            let within = p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y);
+            match self.arc_of(ring.segments[k]) {
+                Some(arc) => {
+                    // a counter-clockwise arc from a to b bulges to the right of a → b
+                    let bulge_right = arc.is_counter_clockwise() == (arc.start() == a);
+                    let bulge_side = if bulge_right { Orientation::Clockwise } else { Orientation::CounterClockwise };
+                    if turn == Orientation::Collinear {
+                        // on the chord's line: the side of p moved up by an
+                        // infinitesimal (and right by a smaller one), the
+                        // same for every chord (two arcs on one chord, a
+                        // circle of two halves, must see p on one side)
+                        let (dx, dy) = (b.x - a.x, b.y - a.y);
+                        let left = if dx != 0.0 { dx > 0.0 } else { dy < 0.0 };
+                        turn = if left { Orientation::CounterClockwise } else { Orientation::Clockwise };
+                    }
+                    if turn == bulge_side {
+                        let off = arc.centre().distance(p) - arc.radius();
+                        if off.abs() <= 1e-12 * arc.radius() {
+                            return Location::Boundary;
+                        }
+                        inside ^= off < 0.0;
+                    }
+                }
+                None if turn == Orientation::Collinear && within => return Location::Boundary,
+                None => {}
             }
             let upward = a.y <= p.y && p.y < b.y;
             let downward = b.y <= p.y && p.y < a.y;

@@ -281,6 +281,21 @@ impl Diagram {
         stops
     }
 
+    /// Where the clearance along edge `e` beside an arc peaks strictly
+    /// inside it (no vertex there: the largest empty circle touching both
+    /// sites at the ends of a diameter), with that clearance, in input
+    /// units; empty for other edges.
+    pub(crate) fn conic_peaks(&self, e: EdgeId) -> Vec<(crate::geometry::Point, f64)> {
+        let Some(track) = self.conic_track(e) else { return Vec::new() };
+        let to_input = self.scale.to_input;
+        track
+            .knots
+            .iter()
+            .filter(|k| k.peak)
+            .filter_map(|k| Some((self.scale.point_to_input(track.point(k.t)?), k.value * to_input)))
+            .collect()
+    }
+
     /// The track of edge `e` when it lies beside an arc (a conic), in
     /// internal coordinates.
     pub(super) fn conic_track(&self, e: EdgeId) -> Option<ConicTrack> {
