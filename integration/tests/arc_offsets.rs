@@ -638,3 +638,93 @@ fn medial_axis_of_curved_domains() {
         check_medial_axis(&format!("filleted {n}"), &[filleted_ring(&mut rng, 0.0, 0.0, n, 0.3)], 2.0);
     }
 }
+
+#[test]
+fn bad_bulged_rings_are_refused_naming_the_vertex() {
+    use segvoronoi::ErrorKind;
+    let p = |x: f64, y: f64| Point::new(x, y);
+    let cases: [(Ring, ErrorKind, Vec<usize>); 4] = [
+        (vec![(p(0.0, 0.0), 0.0), (p(1.0, f64::INFINITY), 0.0), (p(1.0, 1.0), 0.0)], ErrorKind::InvalidCoordinate, vec![1, 1, 1]),
+        (vec![(p(0.0, 0.0), 0.0), (p(1.0, 0.0), f64::NAN), (p(1.0, 1.0), 0.0)], ErrorKind::InvalidCoordinate, vec![1, 1, 1]),
+        (vec![(p(0.0, 0.0), 0.0), (p(1.0, 0.0), 0.0), (p(0.0, 0.0), 0.0)], ErrorKind::InvalidPolygon, vec![1, 1]),
+        (vec![(p(0.0, 0.0), 0.0), (p(1e10, 0.0), 0.0), (p(1e10, 1e10), 1e-300)], ErrorKind::InvalidArc, vec![1, 1, 2]),
+    ];
+    for (bad, kind, indices) in cases {
+        let mut b = Builder::new();
+        b.add_bulged_polygon(&[slot_ring(0.0, 0.0, 4.0, 1.0)]).unwrap();
+        let before = (b.segment_count(), b.arc_count());
+        let e = b.add_bulged_polygon(&[circle_ring(10.0, 0.0, 1.0), bad.clone()]).unwrap_err();
+        assert_eq!((e.kind(), e.indices()), (kind, &indices[..]), "{bad:?}: {e}");
+        assert!(e.message().contains("polygon 1, ring 1"), "{e}");
+        assert_eq!((b.segment_count(), b.arc_count()), before, "{bad:?}: the builder changed");
+        b.build().unwrap();
+    }
+    // two vertices close a ring with an arc (a half disc), not without
+    let mut b = Builder::new();
+    b.add_bulged_polygon(&[vec![(p(0.0, 0.0), 1.0), (p(2.0, 0.0), 0.0)]]).unwrap();
+    let d = b.build().unwrap();
+    assert_eq!(d.locate_point(p(1.0, -0.5)), Some(segvoronoi::Location::Inside));
+    assert_eq!(d.locate_point(p(1.0, 0.5)), Some(segvoronoi::Location::Outside));
+    // splitting crossings is refused with bulged rings
+    let mut b = Builder::new();
+    b.add_bulged_polygon(&[slot_ring(0.0, 0.0, 4.0, 1.0)]).unwrap();
+    assert_eq!(b.split_crossings(true).build().unwrap_err().kind(), ErrorKind::InvalidArgument);
+}
+
+/// Scaled by powers of two, mirrored and walked the other way, a curved
+/// domain's offsets scale with it (areas by the square, exactly up to
+/// rounding), and a plain polygon with arc obstacles inside is a domain too.
+#[test]
+fn curved_domains_scaled_mirrored_and_with_arc_obstacles() {
+    let base = [rounded_ring(0.0, 0.0, 10.0, 6.0, 1.5, false), circle_ring(3.0, 3.0, 1.0)];
+    let area = |rings: &[Ring], r: f64| {
+        let mut b = Builder::new();
+        b.add_bulged_polygon(rings).unwrap();
+        b.build().unwrap().offset(r).unwrap().area()
+    };
+    let want = [area(&base, -0.5), area(&base, 0.5)];
+    for k in [-20i32, -3, 5, 20] {
+        let f = 2f64.powi(k);
+        for mirrored in [false, true] {
+            let map: Vec<Ring> = base
+                .iter()
+                .map(|ring| {
+                    let ring: Ring =
+                        ring.iter().map(|&(q, b)| (Point::new(if mirrored { -q.x } else { q.x } * f, q.y * f), b)).collect();
+                    // a mirror turns every arc the other way round
+                    if mirrored {
+                        ring.iter().map(|&(q, b)| (q, -b)).collect()
+                    } else {
+                        ring
+                    }
+                })
+                .collect();
+            for (j, r) in [-0.5, 0.5].into_iter().enumerate() {
+                let got = area(&map, r * f) / (f * f);
+                assert!((got - want[j]).abs() <= 1e-9 * want[j], "2^{k} mirrored {mirrored} at {r}: {got} against {}", want[j]);
+            }
+        }
+    }
+    // a plain square domain with arc obstacles inside (a slot's outline)
+    let mut b = Builder::new();
+    b.add_polygon(&[vec![[-2.0, -2.0], [8.0, -2.0], [8.0, 4.0], [-2.0, 4.0]]]).unwrap();
+    b.add_bulged_polyline(&[([0.0, 0.0], 0.0), ([4.0, 0.0], 1.0), ([4.0, 2.0], 0.0), ([0.0, 2.0], 1.0)], true).unwrap();
+    let d = b.build().unwrap();
+    // the square shrunk by r less the band within r of the slot's outline
+    // (an obstacle: the slot's inside is in the domain), the stadium of
+    // radius 1 + r less that of radius 1 - r; past r = 0.5 the band
+    // crosses the shrunk square's left side, which cuts a cap of its circle
+    let pi = std::f64::consts::PI;
+    let stadium = |radius: f64| 4.0 * 2.0 * radius + pi * radius * radius;
+    // (at 0.5 the band touches the shrunk square's side at one point: the
+    // region pinches there, and the loops split)
+    for r in [0.4f64, 0.5, 0.6] {
+        let outer = 1.0 + r;
+        let beyond = (outer - (2.0 - r)).max(0.0); // the cap's height past the side
+        let cap = outer * outer * ((outer - beyond) / outer).acos()
+            - (outer - beyond) * (2.0 * outer * beyond - beyond * beyond).sqrt();
+        let want = (10.0 - 2.0 * r) * (6.0 - 2.0 * r) - (stadium(outer) - cap) + stadium(1.0 - r);
+        let shrunk = d.offset(-r).unwrap();
+        assert!((shrunk.area() - want).abs() < 1e-9 * want, "at {r}: {} against {want}", shrunk.area());
+    }
+}

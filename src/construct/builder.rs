@@ -456,6 +456,9 @@ impl Builder {
     pub fn check(&self) -> Result<(), Error> {
         if !self.arcs.is_empty() {
             super::input_check::arcs::check_arcs(&self.points, &self.segments, &self.arcs)?;
+            // with arcs, rings share no stretches (`with_arcs`): checked
+            // as the build checks them, as obstacles' segments
+            return super::check_input(&self.points, &self.segments, &[]).map_err(|e| name_rings(e, &self.rings));
         }
         super::check_input(&self.points, &self.segments, &self.rings).map_err(|e| name_rings(e, &self.rings))
     }

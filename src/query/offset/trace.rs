@@ -195,13 +195,22 @@ impl Diagram {
         let snap = SNAP * r;
         let ends = self.end_vertices(e).map(|v| v.map(|v| self.store.position[v.index()]));
         let mut out = Vec::new();
+        // a turning point at the level to within the band's tolerance: the
+        // region touches itself there (two sites 2r apart), or a part of it
+        // shrinks to that point; both crossings beside it are that point,
+        // so that the loops meet there and split, or the part's loop is
+        // one point and dropped (the roots of a tangency are only the
+        // square root of rounding apart, not equal)
+        let touching =
+            |stop: &Stop| (stop.level - r).abs() <= 2.0 * super::index::LEVEL_TOLERANCE * r && stop.t > 0.0 && stop.t < 1.0;
         for (k, pair) in stops.windows(2).enumerate() {
             let (a, b) = (pair[0], pair[1]);
             let (in_a, in_b) = (side.in_band(a.level, threshold), side.in_band(b.level, threshold));
             if in_a == in_b {
                 continue;
             }
-            let t = conic.track.root(a.t, b.t, level);
+            let lowest = [a, b].into_iter().find(touching);
+            let t = lowest.map_or_else(|| conic.track.root(a.t, b.t, level), |stop| stop.t);
             let Some(at) = conic.track.point(t) else { continue };
             let at = self.scale.point_to_input(at);
             // next to a vertex (rounding: the vertex is at the level), the
