@@ -728,3 +728,24 @@ fn curved_domains_scaled_mirrored_and_with_arc_obstacles() {
         assert!((shrunk.area() - want).abs() < 1e-9 * want, "at {r}: {} against {want}", shrunk.area());
     }
 }
+
+/// A bulged ring cut at an input point inside one of its segments is the
+/// same ring over the pieces: the same domain and offsets.
+#[test]
+fn a_bulged_ring_cut_at_a_vertex_inside_a_segment() {
+    let area = |cut: bool, r: f64| {
+        let mut b = Builder::new();
+        b.add_bulged_polygon(&[slot_ring(0.0, 0.0, 4.0, 1.0)]).unwrap();
+        if cut {
+            b.add_point([2.0, 0.0]).unwrap();
+        }
+        let d = b.build().unwrap();
+        assert_eq!(d.stats().split_at_vertices, usize::from(cut));
+        assert_eq!(d.locate_point(Point::new(2.0, 1.0)), Some(segvoronoi::Location::Inside));
+        d.offset(r).unwrap().area()
+    };
+    for r in [-0.3, 0.3] {
+        let (whole, cut) = (area(false, r), area(true, r));
+        assert!((whole - cut).abs() < 1e-9 * whole, "at {r}: {whole} against {cut}");
+    }
+}
