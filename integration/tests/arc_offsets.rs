@@ -749,3 +749,54 @@ fn a_bulged_ring_cut_at_a_vertex_inside_a_segment() {
         assert!((whole - cut).abs() < 1e-9 * whole, "at {r}: {whole} against {cut}");
     }
 }
+
+/// Random curved domains: a filleted polygon with round and filleted holes
+/// (each in its own cell of a grid inside it), both orientations, at random
+/// distances of both signs, against the chords, and their medial axes (as
+/// `medial_axis_of_curved_domains`). A build the arcs' vertex
+/// check refuses (`Internal`, documented in guarantees.md) is counted, not
+/// failed; everything built must offset right.
+#[test]
+fn random_curved_domains_against_chords() {
+    let mut rng = SplitMix64(2026);
+    let (mut built, mut refused) = (0, 0);
+    for case in 0..16 {
+        let n = 5 + (rng.next_u64() % 6) as usize;
+        // the outer ring: a filleted polygon of radius 4 (corners on a circle)
+        let outer: Ring =
+            filleted_ring(&mut rng, 0.0, 0.0, n, 0.3).iter().map(|&(p, b)| (Point::new(4.0 * p.x, 4.0 * p.y), b)).collect();
+        let mut rings = vec![if rng.unit() < 0.5 { outer.clone() } else { reverse_ring(&outer) }];
+        // holes in the cells of a 2 × 2 grid within the inscribed square
+        for (i, j) in [(0, 0), (0, 1), (1, 0), (1, 1)] {
+            if rng.unit() < 0.3 {
+                continue;
+            }
+            let (cx, cy) = (-1.2 + 2.4 * i as f64, -1.2 + 2.4 * j as f64);
+            let hole = if rng.unit() < 0.5 {
+                circle_ring(cx, cy, 0.3 + 0.5 * rng.unit())
+            } else {
+                let m = 3 + (rng.next_u64() % 4) as usize;
+                filleted_ring(&mut rng, cx, cy, m, 0.3)
+                    .iter()
+                    .map(|&(p, b)| (Point::new(cx + 0.8 * (p.x - cx), cy + 0.8 * (p.y - cy)), b))
+                    .collect()
+            };
+            rings.push(if rng.unit() < 0.5 { hole.clone() } else { reverse_ring(&hole) });
+        }
+        let mut b = Builder::new();
+        b.add_bulged_polygon(&rings).unwrap();
+        match b.build() {
+            Ok(_) => built += 1,
+            Err(e) if e.kind() == segvoronoi::ErrorKind::Internal => {
+                refused += 1;
+                continue;
+            }
+            Err(e) => panic!("case {case}: {e}"),
+        }
+        let distances: Vec<f64> = (0..4).map(|k| if k % 2 == 0 { -1.0 } else { 1.0 } * (0.05 + 1.2 * rng.unit())).collect();
+        check_domain_offsets(&format!("random domain {case}"), &rings, &distances, 8.0);
+        check_medial_axis(&format!("random domain {case}"), &rings, 8.0);
+    }
+    eprintln!("random curved domains: {built} built, {refused} refused by the arcs' vertex check");
+    assert!(built >= 12, "{built} built, {refused} refused");
+}

@@ -62,6 +62,10 @@ pub(crate) struct Domain {
     /// The edges that pass through a straight ring corner, by id, each with
     /// which of its ends (`Edge::ends`) lies inside.
     through: Vec<(EdgeId, usize)>,
+    /// The edges along the normal of a tangent join of a curved ring
+    /// (between two of its sites), sorted: what the separators are at a
+    /// straight corner of segments, kept out of the medial axis.
+    join_normals: Vec<EdgeId>,
 }
 
 /// A ring as the diagram sees it: its corners and segments as sites, in
@@ -157,6 +161,13 @@ impl Diagram {
         inside_end(&self.domain.as_ref()?.through, e)
     }
 
+    /// Whether edge `e` lies along the normal of a tangent join of a
+    /// curved ring (between two of the join's sites): no part of the
+    /// medial axis, as a separator is not.
+    pub(crate) fn is_join_normal(&self, e: EdgeId) -> bool {
+        self.domain.as_ref().is_some_and(|d| d.join_normals.binary_search(&e).is_ok())
+    }
+
     /// Where a cell lies; `None` without a domain or out of range.
     pub fn cell_location(&self, site: SiteId) -> Option<Location> {
         self.domain.as_ref()?.cell.get(site.index()).copied()
@@ -230,6 +241,12 @@ impl Diagram {
             .collect();
         let cell: Vec<Location> = (0..self.sites.len()).map(|s| obstacle_location[s].unwrap_or(Location::Boundary)).collect();
         let (side_of, mut through) = self.ring_segment_sides(&role);
+        let joins = if rings.iter().any(|r| r.curved) { self.tangent_join_edges(&rings, &role) } else { Vec::new() };
+        through.retain(|(e, _)| !joins.iter().any(|(j, _)| j == e));
+        through.extend(joins.iter().filter_map(|&(e, j)| match j.at {
+            JoinAt::Through(inside) => Some((e, inside)),
+            JoinAt::Side(_) => None,
+        }));
         through.sort_unstable();
         through.dedup_by_key(|&mut (e, _)| e);
         // The location an edge has seen from the cell on the left of its
@@ -248,6 +265,12 @@ impl Diagram {
                 seen_from(h).or_else(|| seen_from(t)).unwrap_or(Location::Boundary)
             })
             .collect();
+        for &(e, j) in &joins {
+            edge[e.index()] = match j.at {
+                JoinAt::Through(_) => Location::Boundary,
+                JoinAt::Side(l) => l,
+            };
+        }
         let on_ring: Vec<bool> =
             (0..self.finite_vertices).map(|v| self.is_ring_corner_vertex(VertexId::from_index(v), &role)).collect();
         let mut vertex: Vec<Location> = (0..self.finite_vertices)
@@ -295,7 +318,9 @@ impl Diagram {
                 }
             }
         }
-        Domain { rings, vertex, edge, cell, through }
+        let mut join_normals: Vec<EdgeId> = joins.iter().filter(|(_, j)| j.normal).map(|&(e, _)| e).collect();
+        join_normals.sort_unstable();
+        Domain { rings, vertex, edge, cell, through, join_normals }
     }
 
     /// Per half-edge on the boundary of a ring segment's cell (that cell on
@@ -315,9 +340,14 @@ impl Diagram {
             let Some([a, b]) = self.segment_endpoints(s) else { continue };
             let around: Vec<crate::HalfEdge> = self.cell_half_edges(s).collect();
             let across = |h: &crate::HalfEdge| self.half_edge_cell(h.twin());
-            let (Some(at_a), Some(at_b)) =
-                (around.iter().position(|h| across(h) == Some(a)), around.iter().position(|h| across(h) == Some(b)))
-            else {
+            // At a tangent join with an arc the corner's cell may be
+            // missing (thinner than nothing): the edge between the two
+            // pieces then passes through the corner where the separator
+            // would, and stands for it.
+            let separator_at = |corner: SiteId| {
+                around.iter().position(|h| across(h) == Some(corner)).or_else(|| self.join_edge(s, corner, &around, role))
+            };
+            let (Some(at_a), Some(at_b)) = (separator_at(a), separator_at(b)) else {
                 continue;
             };
             let n = around.len();
@@ -360,6 +390,130 @@ impl Diagram {
             }
         }
         (side, through)
+    }
+
+    /// The edges near the tangent joins of curved rings (a straight corner
+    /// where an arc ends), located by geometry rather than by the order
+    /// around the cells: at such a join the corner's cell has no width,
+    /// and the construction may give it as a sliver anywhere along the
+    /// normal there, so that the separators need not reach the corner and
+    /// the edge between the two pieces may pass through it instead. Each
+    /// edge between two of the join's sites (its corner and the pieces
+    /// ending there) that passes through the corner (to 1e-7 of the
+    /// extent, the arcs' vertex solver's precision with room) is a through
+    /// edge, its inside end the one whose vertex lies inside (even-odd,
+    /// `point_location`); one that does not lies where its end farther
+    /// from the corner lies.
+    fn tangent_join_edges(&self, rings: &[Ring], role: &[Role]) -> Vec<(EdgeId, JoinEdge)> {
+        let tolerance = 1e-7 * self.extent.max(f64::MIN_POSITIVE);
+        let arc = |t: SiteId| matches!(self.sites[t.index()], Site::Arc(_));
+        // per site: the tangent-join corner it belongs to
+        let mut join_of: std::collections::HashMap<SiteId, Vec<SiteId>> = std::collections::HashMap::new();
+        for ring in rings.iter().filter(|r| r.curved) {
+            let n = ring.corners.len();
+            for k in 0..n {
+                let (c, before, after) = (ring.corners[k], ring.segments[(k + n - 1) % n], ring.segments[k]);
+                let straight = matches!(role[c.index()], Role::RingCorner { cell: Location::Boundary });
+                if straight && (arc(before) || arc(after)) {
+                    for s in [c, before, after] {
+                        join_of.entry(s).or_default().push(c);
+                    }
+                }
+            }
+        }
+        let mut out = Vec::new();
+        for e in (0..self.edges.len()).map(EdgeId::from_index) {
+            let Some(edge) = self.edge(e) else { continue };
+            let [u, v] = edge.sites;
+            let (Some(cu), Some(cv)) = (join_of.get(&u), join_of.get(&v)) else { continue };
+            let Some(&corner) = cu.iter().find(|c| cv.contains(c)) else { continue };
+            let at = self.point_of(corner);
+            let ends = edge.ends.map(|end| match end {
+                EdgeEnd::Vertex(w) => Some(self.store.position[w.index()]),
+                EdgeEnd::Infinite { .. } => None,
+            });
+            let near = |p: Option<Point>| p.is_some_and(|p| p.distance(at) <= tolerance);
+            if near(ends[0]) && near(ends[1]) {
+                continue; // an edge of no length at the corner
+            }
+            // a point standing for each end: the vertex, or far out toward infinity
+            let far = |k: usize| match (ends[k], edge.ends[k], ends[1 - k]) {
+                (Some(p), _, _) => Some(p),
+                (None, EdgeEnd::Infinite { direction }, Some(q)) => {
+                    let reach = 4.0 * self.extent.max(q.distance(at));
+                    Some(Point::new(q.x + reach * direction.x, q.y + reach * direction.y))
+                }
+                _ => None,
+            };
+            let (Some(p0), Some(p1)) = (far(0), far(1)) else { continue };
+            let passes = !near(ends[0]) && !near(ends[1]) && self.edge_reach(e, at) <= tolerance;
+            // along the join's normal: the line from an arc's centre there
+            let normal = [u, v].iter().find_map(|&t| match self.sites[t.index()] {
+                Site::Arc(a) => Some(a.centre()),
+                _ => None,
+            });
+            let off_line = |p: Point, c: Point| {
+                let (dx, dy) = (at.x - c.x, at.y - c.y);
+                ((p.x - at.x) * dy - (p.y - at.y) * dx).abs() / dx.hypot(dy)
+            };
+            let normal = normal.is_some_and(|c| off_line(p0, c) <= tolerance && off_line(p1, c) <= tolerance);
+            let location = |p: Point| self.point_location(rings, p);
+            if passes {
+                let inside = if location(p0) == Location::Inside { 0 } else { 1 };
+                out.push((e, JoinEdge { at: JoinAt::Through(inside), normal }));
+            } else {
+                // off the corner: where its end away from the corner lies
+                let away = if p0.distance(at) >= p1.distance(at) { p0 } else { p1 };
+                let l = location(away);
+                if l != Location::Boundary {
+                    out.push((e, JoinEdge { at: JoinAt::Side(l), normal }));
+                }
+            }
+        }
+        out
+    }
+
+    /// Among the half-edges `around` the cell of ring piece `s`, the one
+    /// across to another ring piece ending at `corner` that passes nearest
+    /// to it (two arcs of one circle meet at both its ends); only where an
+    /// arc is among the two (segments always leave the corner's cell
+    /// between them). `None` when there is none.
+    fn join_edge(&self, s: SiteId, corner: SiteId, around: &[crate::HalfEdge], role: &[Role]) -> Option<usize> {
+        let arc = |t: SiteId| matches!(self.sites[t.index()], Site::Arc(_));
+        let at = self.point_of(corner);
+        let candidates = around.iter().enumerate().filter_map(|(k, h)| {
+            let t = self.half_edge_cell(h.twin())?;
+            let joined = t != s
+                && matches!(role[t.index()], Role::RingSegment { .. })
+                && (arc(s) || arc(t))
+                && self.segment_endpoints(t).is_some_and(|e| e.contains(&corner));
+            joined.then(|| (k, self.edge_reach(h.edge(), at)))
+        });
+        candidates.min_by(|x, y| x.1.total_cmp(&y.1)).map(|(k, _)| k)
+    }
+
+    /// How near edge `e` passes to `p`: the distance from `p` to the chord
+    /// between its end vertices (a ray from its finite end at infinity).
+    fn edge_reach(&self, e: EdgeId, p: Point) -> f64 {
+        let Some(edge) = self.edge(e) else { return f64::INFINITY };
+        let position = |end: EdgeEnd| match end {
+            EdgeEnd::Vertex(v) => Some(self.store.position[v.index()]),
+            EdgeEnd::Infinite { .. } => None,
+        };
+        let to_segment = |a: Point, b: Point| {
+            let (dx, dy) = (b.x - a.x, b.y - a.y);
+            let length = dx * dx + dy * dy;
+            let t = if length > 0.0 { (((p.x - a.x) * dx + (p.y - a.y) * dy) / length).clamp(0.0, 1.0) } else { 0.0 };
+            p.distance(Point::new(a.x + t * dx, a.y + t * dy))
+        };
+        match (position(edge.ends[0]), position(edge.ends[1]), edge.ends) {
+            (Some(a), Some(b), _) => to_segment(a, b),
+            (Some(a), None, [_, EdgeEnd::Infinite { direction }]) | (None, Some(a), [EdgeEnd::Infinite { direction }, _]) => {
+                let far = self.extent.max(a.distance(p)) * 4.0;
+                to_segment(a, Point::new(a.x + far * direction.x, a.y + far * direction.y))
+            }
+            _ => f64::INFINITY,
+        }
     }
 
     /// The finite vertex where `h` ends.
@@ -778,6 +932,25 @@ impl Diagram {
             other => other.ends()[0],
         }
     }
+}
+
+/// An edge near a tangent join of a curved ring
+/// (`Diagram::tangent_join_edges`): where it lies, and whether along the
+/// join's normal.
+#[derive(Clone, Copy, Debug)]
+struct JoinEdge {
+    at: JoinAt,
+    normal: bool,
+}
+
+/// Where an edge near a tangent join lies.
+#[derive(Clone, Copy, Debug)]
+enum JoinAt {
+    /// It passes through the corner; the end (an index into `Edge::ends`)
+    /// inside the domain.
+    Through(usize),
+    /// It lies on one side.
+    Side(Location),
 }
 
 /// The inside end of `e` in the sorted list of edges through straight

@@ -172,7 +172,9 @@ impl Diagram {
             Some(location) => location == Location::Inside,
             None => true,
         };
-        inside && self.is_separator(e) == Some(false)
+        // (the edges along the normal of a curved ring's tangent join are
+        // what separators are at a straight corner: no branch ends there)
+        inside && self.is_separator(e) == Some(false) && !self.is_join_normal(e)
     }
 
     /// The chain that starts with the store's half-edge `first` (marked),
