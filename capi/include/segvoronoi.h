@@ -591,6 +591,40 @@ enum segvoronoi_status segvoronoi_builder_add_bulged_polyline(struct segvoronoi_
                                                               size_t *piece_indices,
                                                               size_t *piece_count);
 
+// Adds a polygon whose rings are closed chains of segments and arcs, as
+// DXF's closed LWPOLYLINE holds them: `n_rings` rings, ring `r` of
+// `ring_lengths[r]` vertices, all vertices one after another, vertex `k`
+// at `(xy[2k], xy[2k+1])` with bulge `bulges[k]`. In each ring the piece
+// from a vertex to the next (the last to the first) is a segment where
+// the vertex's bulge is 0 and the arc with that bulge otherwise (see
+// `segvoronoi_builder_add_arc`). The rings bound the domain by the
+// even-odd rule, with those of `segvoronoi_builder_add_polygon`; the
+// domain's location, medial axis and offsets follow the arcs. Repeated
+// consecutive vertices are dropped with their piece, and a repeated
+// closing vertex too. Segments and arcs get the next input indices of
+// their own kind, ring by ring. All or nothing. (`Builder::
+// add_bulged_polygon` in Rust.)
+//
+// Ownership: `xy` (`2 * total` doubles, `total` the sum of
+// `ring_lengths`), `bulges` (`total` doubles) and `ring_lengths`
+// (`n_rings` sizes) are read only during the call; each may be NULL when
+// its count is 0.
+// Errors: `NULL_ARGUMENT`; `INVALID_COORDINATE` (a non-finite coordinate
+// or bulge), `INVALID_POLYGON` (a ring of fewer than three distinct
+// vertices, unless two with an arc between them) or `INVALID_ARC` (a bulge
+// that makes no arc), naming the polygon, the ring and the vertex within
+// it (`segvoronoi_builder_last_error_indices`); `TOO_LARGE`,
+// `OUT_OF_MEMORY`. The builder is then unchanged. Rings that cross or
+// overlap are `INTERSECTING` from `segvoronoi_builder_build`, and such
+// rings cannot be built with `segvoronoi_builder_set_split_crossings`
+// (`INVALID_ARGUMENT`).
+// Thread safety: one builder must not be used from two threads at once.
+enum segvoronoi_status segvoronoi_builder_add_bulged_polygon(struct segvoronoi_builder *builder,
+                                                             const double *xy,
+                                                             const double *bulges,
+                                                             const size_t *ring_lengths,
+                                                             size_t n_rings);
+
 // The number of arcs added so far (those of bulged polylines included);
 // 0 for NULL.
 size_t segvoronoi_builder_arc_count(const struct segvoronoi_builder *builder);

@@ -2,6 +2,7 @@
 //! point, or as the pieces of a bulged polyline, DXF's LWPOLYLINE), and
 //! reading the arc sites of a diagram. Delegates to `CircularArc`,
 //! `Builder::add_arc`, `Builder::add_bulged_polyline`,
+//! `Builder::add_bulged_polygon`,
 //! `Diagram::arc_input_index` and `Diagram::site_of_arc`.
 //!
 //! An arc is three sites, as a segment is: its two endpoints (point sites)
@@ -280,6 +281,94 @@ pub unsafe extern "C" fn segvoronoi_builder_add_bulged_polyline(
             }
             Err(e) => b.record(Err(e)),
         }
+    })
+}
+
+/// Adds a polygon whose rings are closed chains of segments and arcs, as
+/// DXF's closed LWPOLYLINE holds them: `n_rings` rings, ring `r` of
+/// `ring_lengths[r]` vertices, all vertices one after another, vertex `k`
+/// at `(xy[2k], xy[2k+1])` with bulge `bulges[k]`. In each ring the piece
+/// from a vertex to the next (the last to the first) is a segment where
+/// the vertex's bulge is 0 and the arc with that bulge otherwise (see
+/// `segvoronoi_builder_add_arc`). The rings bound the domain by the
+/// even-odd rule, with those of `segvoronoi_builder_add_polygon`; the
+/// domain's location, medial axis and offsets follow the arcs. Repeated
+/// consecutive vertices are dropped with their piece, and a repeated
+/// closing vertex too. Segments and arcs get the next input indices of
+/// their own kind, ring by ring. All or nothing. (`Builder::
+/// add_bulged_polygon` in Rust.)
+///
+/// Ownership: `xy` (`2 * total` doubles, `total` the sum of
+/// `ring_lengths`), `bulges` (`total` doubles) and `ring_lengths`
+/// (`n_rings` sizes) are read only during the call; each may be NULL when
+/// its count is 0.
+/// Errors: `NULL_ARGUMENT`; `INVALID_COORDINATE` (a non-finite coordinate
+/// or bulge), `INVALID_POLYGON` (a ring of fewer than three distinct
+/// vertices, unless two with an arc between them) or `INVALID_ARC` (a bulge
+/// that makes no arc), naming the polygon, the ring and the vertex within
+/// it (`segvoronoi_builder_last_error_indices`); `TOO_LARGE`,
+/// `OUT_OF_MEMORY`. The builder is then unchanged. Rings that cross or
+/// overlap are `INTERSECTING` from `segvoronoi_builder_build`, and such
+/// rings cannot be built with `segvoronoi_builder_set_split_crossings`
+/// (`INVALID_ARGUMENT`).
+/// Thread safety: one builder must not be used from two threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_add_bulged_polygon(
+    builder: *mut segvoronoi_builder,
+    xy: *const f64,
+    bulges: *const f64,
+    ring_lengths: *const usize,
+    n_rings: usize,
+) -> segvoronoi_status {
+    require_non_null!(builder);
+    guard(|| {
+        // SAFETY: non-null; the caller keeps the builder exclusive.
+        let b = unsafe { &mut *builder };
+        if n_rings > 0 && ring_lengths.is_null() {
+            return b.refuse(segvoronoi_status::NullArgument, "argument `ring_lengths` is NULL");
+        }
+        // Bound the count before it becomes a slice: a ring has a vertex,
+        // and a diagram at most MAX_POINTS points.
+        if n_rings > segvoronoi::MAX_POINTS {
+            let message = format!("{n_rings} rings are too many: a diagram holds at most {} points", segvoronoi::MAX_POINTS);
+            return b.refuse(segvoronoi_status::TooLarge, &message);
+        }
+        // SAFETY: non-null when n_rings > 0 and n_rings readable sizes (the
+        // caller's promise), n_rings bounded above.
+        let lengths: &[usize] = if n_rings == 0 { &[] } else { unsafe { std::slice::from_raw_parts(ring_lengths, n_rings) } };
+        let Some(total) = lengths.iter().try_fold(0usize, |sum, &n| sum.checked_add(n)) else {
+            return b.refuse(segvoronoi_status::TooLarge, "the ring lengths add up to more than SIZE_MAX vertices");
+        };
+        if total > 0 && xy.is_null() {
+            return b.refuse(segvoronoi_status::NullArgument, "argument `xy` is NULL");
+        }
+        if total > 0 && bulges.is_null() {
+            return b.refuse(segvoronoi_status::NullArgument, "argument `bulges` is NULL");
+        }
+        // Each piece has two endpoints, as a segment has: this bounds
+        // `total` by the diagram's points before the slices are made.
+        if let Err(e) = b.inner.reserve_segments(total) {
+            return b.record(Err(e));
+        }
+        // SAFETY: valid for 2 total and total reads (the caller's promise);
+        // `reserve_segments` bounded total by MAX_POINTS.
+        let (coords, bulges): (&[f64], &[f64]) = if total == 0 {
+            (&[], &[])
+        } else {
+            unsafe { (std::slice::from_raw_parts(xy, 2 * total), std::slice::from_raw_parts(bulges, total)) }
+        };
+        let mut rings: Vec<Vec<([f64; 2], f64)>> = Vec::new();
+        if rings.try_reserve(lengths.len()).is_err() {
+            return b.refuse(segvoronoi_status::OutOfMemory, &format!("out of memory: no room for {} rings", lengths.len()));
+        }
+        let mut at = 0;
+        for &n in lengths {
+            let ring = coords[2 * at..2 * (at + n)].chunks_exact(2).zip(&bulges[at..at + n]).map(|(p, &q)| ([p[0], p[1]], q));
+            rings.push(ring.collect());
+            at += n;
+        }
+        let r = b.inner.add_bulged_polygon(&rings);
+        b.record(r.map(|_| ()))
     })
 }
 

@@ -404,8 +404,15 @@ impl Builder {
                 &self.segments,
                 &self.arcs,
                 self.split_crossings,
-                !self.rings.is_empty(),
+                &self.rings,
             );
+        }
+        if self.split_crossings && self.rings.iter().any(|r| r.pieces.is_some()) {
+            return Err(Error::new(
+                ErrorKind::InvalidArgument,
+                "splitting crossings is not supported with rings of add_bulged_polygon".to_string(),
+                Vec::new(),
+            ));
         }
         if self.split_crossings && !self.segments.is_empty() {
             let mut diagram = super::split::diagram_of_split(&self.points, &self.segments, &self.rings)?;
@@ -449,6 +456,9 @@ impl Builder {
     pub fn check(&self) -> Result<(), Error> {
         if !self.arcs.is_empty() {
             super::input_check::arcs::check_arcs(&self.points, &self.segments, &self.arcs)?;
+            // with arcs, rings share no stretches (`with_arcs`): checked
+            // as the build checks them, as obstacles' segments
+            return super::check_input(&self.points, &self.segments, &[]).map_err(|e| name_rings(e, &self.rings));
         }
         super::check_input(&self.points, &self.segments, &self.rings).map_err(|e| name_rings(e, &self.rings))
     }
@@ -542,12 +552,112 @@ impl Builder {
         for (ring, chain) in chains.iter().enumerate() {
             let segments = next..next + chain.len();
             made.push(segments.clone());
-            self.rings.push(RingInput { polygon, ring, segments });
+            self.rings.push(RingInput { polygon, ring, segments, pieces: None });
             next += chain.len();
         }
         let closed = chains.iter().flat_map(|c| (0..c.len()).map(move |k| [c[k], c[(k + 1) % c.len()]]));
         // finite, distinct and within capacity: checked above
         self.add_segments(closed).expect("checked points");
+        self.polygons += 1;
+        self.dropped_chain_points += dropped;
+        Ok(made)
+    }
+
+    /// Adds a polygon whose rings are closed chains of segments and
+    /// circular arcs, as DXF's closed LWPOLYLINE holds them: each ring a
+    /// list of vertices with a bulge each, the piece from vertex `k` to
+    /// vertex `k + 1` (the last to the first) a segment where the bulge is
+    /// 0 and otherwise an arc with that bulge (`tan` of a quarter of its
+    /// signed sweep, positive counter-clockwise; see
+    /// [`CircularArc::from_bulge`]). Returns, per ring, what each piece
+    /// became, in ring order.
+    ///
+    /// The rings bound the domain by the even-odd rule, as those of
+    /// [`Builder::add_polygon`] do (and with them: plain and bulged rings
+    /// may be mixed); the domain's location, medial axis and offsets then
+    /// follow the arcs. Repeated consecutive vertices are dropped (with
+    /// their piece), and a repeated closing vertex too.
+    ///
+    /// Errors, with nothing added, naming the polygon, the ring and the
+    /// vertex: a non-finite coordinate or bulge
+    /// ([`ErrorKind::InvalidCoordinate`]); a ring of fewer than three
+    /// distinct vertices, unless it has two and an arc between them
+    /// ([`ErrorKind::InvalidPolygon`]); a bulge that makes no arc
+    /// ([`ErrorKind::InvalidArc`]); [`ErrorKind::TooLarge`]. Rings with arcs
+    /// may touch others only at points, and share no stretches with them
+    /// (an overlap is [`ErrorKind::Intersecting`] at build time); they
+    /// cannot be built with [`Builder::split_crossings`].
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, ChainPiece, Location, Point};
+    /// let mut b = Builder::new();
+    /// let q = (std::f64::consts::PI / 8.0).tan(); // a quarter turn
+    /// // a 4 × 3 rounded rectangle (corner radius 1) with a round hole
+    /// let made = b.add_bulged_polygon(&[
+    ///     vec![([1.0, 0.0], 0.0), ([3.0, 0.0], q), ([4.0, 1.0], 0.0), ([4.0, 2.0], q),
+    ///          ([3.0, 3.0], 0.0), ([1.0, 3.0], q), ([0.0, 2.0], 0.0), ([0.0, 1.0], q)],
+    ///     vec![([1.5, 1.5], 1.0), ([2.5, 1.5], 1.0)], // two half circles
+    /// ])?;
+    /// assert_eq!(made[1], vec![ChainPiece::Arc(4), ChainPiece::Arc(5)]);
+    /// let d = b.build()?;
+    /// assert_eq!(d.locate_point(Point::new(0.2, 0.2)), Some(Location::Outside)); // cut off by the corner arc
+    /// assert_eq!(d.locate_point(Point::new(0.5, 1.5)), Some(Location::Inside));
+    /// assert_eq!(d.locate_point(Point::new(2.0, 1.5)), Some(Location::Outside)); // in the hole
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn add_bulged_polygon<P: Into<Point> + Copy, R: AsRef<[(P, f64)]>>(
+        &mut self,
+        rings: &[R],
+    ) -> Result<Vec<Vec<ChainPiece>>, Error> {
+        let polygon = self.polygons;
+        // validate everything before adding anything
+        let mut chains: Vec<Vec<(Point, f64)>> = Vec::with_capacity(rings.len());
+        let mut dropped = 0;
+        for (ring, vertices) in rings.iter().enumerate() {
+            let vertices = vertices.as_ref();
+            let chain = bulged_ring(polygon, ring, vertices)?;
+            dropped += vertices.len() - chain.len();
+            chains.push(chain);
+        }
+        let (segments, arcs, points) = (self.segments.len(), self.arcs.len(), self.points.len());
+        let undo = |b: &mut Builder| {
+            b.segments.truncate(segments);
+            b.arcs.truncate(arcs);
+            b.points.truncate(points);
+        };
+        let mut made = Vec::with_capacity(chains.len());
+        for (ring, chain) in chains.iter().enumerate() {
+            let n = chain.len();
+            let mut pieces = Vec::with_capacity(n);
+            for k in 0..n {
+                let ((p, bulge), (q, _)) = (chain[k], chain[(k + 1) % n]);
+                let piece = if bulge == 0.0 {
+                    self.add_segment([p, q]).map(ChainPiece::Segment)
+                } else {
+                    CircularArc::from_bulge(p, q, bulge)
+                        .map_err(|e| {
+                            Error::new(
+                                e.kind(),
+                                format!("polygon {polygon}, ring {ring}, vertex {k}: {}", e.message()),
+                                vec![polygon, ring, k],
+                            )
+                        })
+                        .and_then(|arc| self.add_arc(arc).map(ChainPiece::Arc))
+                };
+                match piece {
+                    Ok(piece) => pieces.push(piece),
+                    Err(e) => {
+                        undo(self);
+                        return Err(e);
+                    }
+                }
+            }
+            made.push(pieces);
+        }
+        let first = self.segment_count();
+        for (ring, pieces) in made.iter().enumerate() {
+            self.rings.push(RingInput { polygon, ring, segments: first..first, pieces: Some(pieces.clone()) });
+        }
         self.polygons += 1;
         self.dropped_chain_points += dropped;
         Ok(made)
@@ -581,6 +691,56 @@ pub enum ChainPiece {
     Segment(usize),
     /// A curved piece: this arc input index.
     Arc(usize),
+}
+
+/// The vertices of ring `ring` of polygon `polygon` (`add_bulged_polygon`)
+/// with repeated consecutive ones dropped (the bulge after a repeat
+/// counts) and a repeated closing vertex too, or the error naming the
+/// vertex or ring.
+fn bulged_ring<P: Into<Point> + Copy>(polygon: usize, ring: usize, vertices: &[(P, f64)]) -> Result<Vec<(Point, f64)>, Error> {
+    let mut chain: Vec<(Point, f64)> = Vec::new();
+    chain.try_reserve(vertices.len()).map_err(|_| out_of_memory("ring vertices", vertices.len(), 24))?;
+    for (k, &(p, bulge)) in vertices.iter().enumerate() {
+        let p: Point = p.into();
+        if !p.is_finite() || !bulge.is_finite() {
+            return Err(Error::new(
+                ErrorKind::InvalidCoordinate,
+                format!(
+                    "polygon {polygon}, ring {ring}: vertex {k} has a non-finite coordinate or bulge ({}, {}) bulge {bulge}",
+                    p.x, p.y
+                ),
+                vec![polygon, ring, k],
+            ));
+        }
+        match chain.last_mut() {
+            Some(last) if last.0 == p => last.1 = bulge,
+            _ => chain.push((p, bulge)),
+        }
+    }
+    if chain.len() > 1 && chain.first().map(|f| f.0) == chain.last().map(|l| l.0) {
+        // the closing vertex repeats the first: its bulge is the last piece's
+        let (_, bulge) = chain.pop().expect("two or more");
+        if let Some(last) = chain.last_mut() {
+            if last.1 == 0.0 {
+                last.1 = bulge;
+            }
+        }
+    }
+    let arcs = chain.iter().filter(|(_, b)| *b != 0.0).count();
+    // two vertices close a ring with an arc between them (a half circle
+    // and its diameter, a circle as two halves); one never does
+    if chain.len() < 2 || (chain.len() == 2 && arcs == 0) {
+        return Err(Error::new(
+            ErrorKind::InvalidPolygon,
+            format!(
+                "polygon {polygon}, ring {ring} has {} distinct vertices and {arcs} arcs; a ring needs three vertices, \
+                 or two and an arc",
+                chain.len()
+            ),
+            vec![polygon, ring],
+        ));
+    }
+    Ok(chain)
 }
 
 /// The points with repeated consecutive ones dropped, or the error for the

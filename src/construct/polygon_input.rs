@@ -1,8 +1,10 @@
 //! The rings of polygon input, as the builder remembers them: which
-//! segments each ring of each polygon became, so that the diagram can tell
-//! the domain they bound (`query::domain`) and an error can name the ring.
-//! The builder's adders (`Builder::add_polygon`, `add_polyline`) make them.
+//! segments (and arcs) each ring of each polygon became, so that the
+//! diagram can tell the domain they bound (`query::domain`) and an error
+//! can name the ring. The builder's adders (`Builder::add_polygon`,
+//! `add_bulged_polygon`) make them.
 
+use super::builder::ChainPiece;
 use crate::error::{Error, ErrorKind};
 
 /// One ring of a polygon as the builder keeps it: which polygon and ring
@@ -12,6 +14,11 @@ pub(crate) struct RingInput {
     pub polygon: usize,
     pub ring: usize,
     pub segments: std::ops::Range<usize>,
+    /// A ring of segments and arcs (`Builder::add_bulged_polygon`): its
+    /// pieces in ring order, each running from its corner to the next
+    /// (`segments` is then empty: such rings share no stretches, and are
+    /// not split by `split_crossings`). `None` for a ring of `segments`.
+    pub pieces: Option<Vec<ChainPiece>>,
 }
 
 /// The rings over the pieces the diagram was built from: a ring whose
@@ -23,13 +30,33 @@ pub(crate) fn rings_over_pieces(diagram: &crate::Diagram, rings: &[RingInput]) -
     rings
         .iter()
         .map(|r| {
+            if let Some(pieces) = &r.pieces {
+                // a segment cut at vertices inside it: its pieces, in its direction
+                let pieces = pieces
+                    .iter()
+                    .flat_map(|&p| -> Vec<ChainPiece> {
+                        match p {
+                            ChainPiece::Segment(j) => {
+                                let cut: Vec<ChainPiece> = diagram.pieces_of_input(j).map(ChainPiece::Segment).collect();
+                                if cut.is_empty() {
+                                    vec![p]
+                                } else {
+                                    cut
+                                }
+                            }
+                            arc => vec![arc],
+                        }
+                    })
+                    .collect();
+                return RingInput { pieces: Some(pieces), ..r.clone() };
+            }
             let first = diagram.pieces_of_input(r.segments.start).next();
             let last = diagram.pieces_of_input(r.segments.end - 1).last();
             let segments = match (first, last) {
                 (Some(first), Some(last)) => first..last + 1,
                 _ => r.segments.clone(), // (a ring has no zero-length segment)
             };
-            RingInput { polygon: r.polygon, ring: r.ring, segments }
+            RingInput { polygon: r.polygon, ring: r.ring, segments, pieces: None }
         })
         .collect()
 }
@@ -55,7 +82,9 @@ pub(crate) fn name_rings(error: Error, rings: &[RingInput]) -> Error {
     if error.kind() != ErrorKind::Intersecting || rings.is_empty() {
         return error;
     }
-    let ring_of = |j: usize| rings.iter().find(|r| r.segments.contains(&j));
+    let ring_of = |j: usize| {
+        rings.iter().find(|r| r.segments.contains(&j) || r.pieces.as_ref().is_some_and(|p| p.contains(&ChainPiece::Segment(j))))
+    };
     let named: Vec<String> = error
         .indices()
         .iter()

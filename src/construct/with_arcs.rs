@@ -4,10 +4,15 @@
 //! each arc goes in (`insert_segment::arc_questions`), then the diagram is
 //! renumbered with the arcs as the last sites.
 //!
-//! Not yet with arcs (each refused with a clear error rather than built
-//! wrong): splitting crossings, and polygons (the domain and what stands
-//! on it: location, medial axis, offsets).
+//! Polygons go with arcs: their rings (plain, or of segments and arcs from
+//! `Builder::add_bulged_polygon`) bound the domain (`query::domain`), set
+//! once the diagram is built. Their segments go in as obstacles' do: rings
+//! sharing a stretch are refused as overlapping rather than cancelled.
+//!
+//! Not yet with arcs (refused with a clear error rather than built wrong):
+//! splitting crossings.
 
+use super::polygon_input::RingInput;
 use super::renumber::ArcSite;
 use super::restart::Outcome;
 use super::state::Construction;
@@ -51,20 +56,12 @@ pub(super) fn diagram_with_arcs(
     segments: &[[Point; 2]],
     arcs: &[CircularArc],
     split: bool,
-    rings: bool,
+    rings: &[RingInput],
 ) -> Result<Diagram, Error> {
     if split {
         return Err(Error::new(
             ErrorKind::InvalidArgument,
             "splitting crossings is not supported with arcs yet: arcs must not cross".to_string(),
-            Vec::new(),
-        ));
-    }
-    if rings {
-        return Err(Error::new(
-            ErrorKind::InvalidArgument,
-            "polygons together with arcs are not supported yet: add the outline with add_bulged_polyline (an obstacle, no domain)"
-                .to_string(),
             Vec::new(),
         ));
     }
@@ -93,6 +90,12 @@ pub(super) fn diagram_with_arcs(
     // purpose: there the topology is what is checked, by `accept`)
     if !crate::geometry::fault::active() {
         vertices_touch_their_arcs(&diagram)?;
+    }
+    let mut diagram = diagram;
+    if !rings.is_empty() {
+        // (rings with arcs share no stretches: their segments went in as
+        // obstacles would, an overlap refused by the input check)
+        diagram.set_domain(&super::polygon_input::rings_over_pieces(&diagram, rings));
     }
     Ok(diagram)
 }

@@ -62,6 +62,10 @@ pub(crate) struct Domain {
     /// The edges that pass through a straight ring corner, by id, each with
     /// which of its ends (`Edge::ends`) lies inside.
     through: Vec<(EdgeId, usize)>,
+    /// The edges along the normal of a tangent join of a curved ring
+    /// (between two of its sites), sorted: what the separators are at a
+    /// straight corner of segments, kept out of the medial axis.
+    join_normals: Vec<EdgeId>,
 }
 
 /// A ring as the diagram sees it: its corners and segments as sites, in
@@ -69,7 +73,12 @@ pub(crate) struct Domain {
 #[derive(Clone, Debug)]
 struct Ring {
     corners: Vec<SiteId>,
+    /// Its pieces: segment sites, and arc sites for a ring of
+    /// `add_bulged_polygon`.
     segments: Vec<SiteId>,
+    /// Whether an arc is among its pieces (`ring_arcs` then answers what
+    /// the exact tests of straight rings do).
+    curved: bool,
     /// Whether the domain is on the left of the ring's direction.
     left_inside: bool,
     /// The bounding box of its corners: a ring can hold a point, or
@@ -152,6 +161,13 @@ impl Diagram {
         inside_end(&self.domain.as_ref()?.through, e)
     }
 
+    /// Whether edge `e` lies along the normal of a tangent join of a
+    /// curved ring (between two of the join's sites): no part of the
+    /// medial axis, as a separator is not.
+    pub(crate) fn is_join_normal(&self, e: EdgeId) -> bool {
+        self.domain.as_ref().is_some_and(|d| d.join_normals.binary_search(&e).is_ok())
+    }
+
     /// Where a cell lies; `None` without a domain or out of range.
     pub fn cell_location(&self, site: SiteId) -> Option<Location> {
         self.domain.as_ref()?.cell.get(site.index()).copied()
@@ -188,7 +204,11 @@ impl Diagram {
                 let forward = self.segment_endpoints(s).is_some_and(|[a, _]| a == ring.corners[k]);
                 role[s.index()] = Role::RingSegment { left_inside: ring.left_inside == forward };
                 let [prev, here, next] = [ring.corners[(k + n - 1) % n], ring.corners[k], ring.corners[(k + 1) % n]];
-                let turn = self.turn(self.point_of(prev), self.point_of(here), self.point_of(next));
+                let turn = if ring.curved {
+                    self.corner_turn(ring.segments[(k + n - 1) % n], here, ring.segments[k])
+                } else {
+                    self.turn(self.point_of(prev), self.point_of(here), self.point_of(next))
+                };
                 // the reflex side: right of a left turn, left of a right turn
                 let cell = match turn {
                     Orientation::Collinear => Location::Boundary,
@@ -221,6 +241,12 @@ impl Diagram {
             .collect();
         let cell: Vec<Location> = (0..self.sites.len()).map(|s| obstacle_location[s].unwrap_or(Location::Boundary)).collect();
         let (side_of, mut through) = self.ring_segment_sides(&role);
+        let joins = if rings.iter().any(|r| r.curved) { self.tangent_join_edges(&rings, &role) } else { Vec::new() };
+        through.retain(|(e, _)| !joins.iter().any(|(j, _)| j == e));
+        through.extend(joins.iter().filter_map(|&(e, j)| match j.at {
+            JoinAt::Through(inside) => Some((e, inside)),
+            JoinAt::Side(_) => None,
+        }));
         through.sort_unstable();
         through.dedup_by_key(|&mut (e, _)| e);
         // The location an edge has seen from the cell on the left of its
@@ -239,6 +265,12 @@ impl Diagram {
                 seen_from(h).or_else(|| seen_from(t)).unwrap_or(Location::Boundary)
             })
             .collect();
+        for &(e, j) in &joins {
+            edge[e.index()] = match j.at {
+                JoinAt::Through(_) => Location::Boundary,
+                JoinAt::Side(l) => l,
+            };
+        }
         let on_ring: Vec<bool> =
             (0..self.finite_vertices).map(|v| self.is_ring_corner_vertex(VertexId::from_index(v), &role)).collect();
         let mut vertex: Vec<Location> = (0..self.finite_vertices)
@@ -256,6 +288,22 @@ impl Diagram {
         // the rings lies strictly on one side, and so does every edge from
         // it that does not pass through a straight corner.
         let is_through = |e: usize| inside_end(&through, EdgeId::from_index(e)).is_some();
+        // A vertex off the rings that only edges through straight corners
+        // reach (the centre of a circle of two arcs, where the separators
+        // at its two tangent joins meet) takes the side of those edges it
+        // ends.
+        for v in 0..vertex.len() {
+            if vertex[v] != Location::Boundary || on_ring[v] {
+                continue;
+            }
+            for h in self.vertex_half_edges(VertexId::from_index(v)).expect("a finite vertex") {
+                if let Some(inside) = inside_end(&through, h.edge()) {
+                    // h starts at v: v is the edge's end 0 unless h is reversed
+                    vertex[v] = inside_if(usize::from(h.is_reversed()) == inside);
+                    break;
+                }
+            }
+        }
         let mut queue: Vec<usize> = (0..vertex.len()).filter(|&v| vertex[v] != Location::Boundary).collect();
         while let Some(v) = queue.pop() {
             for h in self.vertex_half_edges(VertexId::from_index(v)).expect("a finite vertex") {
@@ -270,7 +318,9 @@ impl Diagram {
                 }
             }
         }
-        Domain { rings, vertex, edge, cell, through }
+        let mut join_normals: Vec<EdgeId> = joins.iter().filter(|(_, j)| j.normal).map(|&(e, _)| e).collect();
+        join_normals.sort_unstable();
+        Domain { rings, vertex, edge, cell, through, join_normals }
     }
 
     /// Per half-edge on the boundary of a ring segment's cell (that cell on
@@ -290,9 +340,14 @@ impl Diagram {
             let Some([a, b]) = self.segment_endpoints(s) else { continue };
             let around: Vec<crate::HalfEdge> = self.cell_half_edges(s).collect();
             let across = |h: &crate::HalfEdge| self.half_edge_cell(h.twin());
-            let (Some(at_a), Some(at_b)) =
-                (around.iter().position(|h| across(h) == Some(a)), around.iter().position(|h| across(h) == Some(b)))
-            else {
+            // At a tangent join with an arc the corner's cell may be
+            // missing (thinner than nothing): the edge between the two
+            // pieces then passes through the corner where the separator
+            // would, and stands for it.
+            let separator_at = |corner: SiteId| {
+                around.iter().position(|h| across(h) == Some(corner)).or_else(|| self.join_edge(s, corner, &around, role))
+            };
+            let (Some(at_a), Some(at_b)) = (separator_at(a), separator_at(b)) else {
                 continue;
             };
             let n = around.len();
@@ -337,6 +392,130 @@ impl Diagram {
         (side, through)
     }
 
+    /// The edges near the tangent joins of curved rings (a straight corner
+    /// where an arc ends), located by geometry rather than by the order
+    /// around the cells: at such a join the corner's cell has no width,
+    /// and the construction may give it as a sliver anywhere along the
+    /// normal there, so that the separators need not reach the corner and
+    /// the edge between the two pieces may pass through it instead. Each
+    /// edge between two of the join's sites (its corner and the pieces
+    /// ending there) that passes through the corner (to 1e-7 of the
+    /// extent, the arcs' vertex solver's precision with room) is a through
+    /// edge, its inside end the one whose vertex lies inside (even-odd,
+    /// `point_location`); one that does not lies where its end farther
+    /// from the corner lies.
+    fn tangent_join_edges(&self, rings: &[Ring], role: &[Role]) -> Vec<(EdgeId, JoinEdge)> {
+        let tolerance = 1e-7 * self.extent.max(f64::MIN_POSITIVE);
+        let arc = |t: SiteId| matches!(self.sites[t.index()], Site::Arc(_));
+        // per site: the tangent-join corner it belongs to
+        let mut join_of: std::collections::HashMap<SiteId, Vec<SiteId>> = std::collections::HashMap::new();
+        for ring in rings.iter().filter(|r| r.curved) {
+            let n = ring.corners.len();
+            for k in 0..n {
+                let (c, before, after) = (ring.corners[k], ring.segments[(k + n - 1) % n], ring.segments[k]);
+                let straight = matches!(role[c.index()], Role::RingCorner { cell: Location::Boundary });
+                if straight && (arc(before) || arc(after)) {
+                    for s in [c, before, after] {
+                        join_of.entry(s).or_default().push(c);
+                    }
+                }
+            }
+        }
+        let mut out = Vec::new();
+        for e in (0..self.edges.len()).map(EdgeId::from_index) {
+            let Some(edge) = self.edge(e) else { continue };
+            let [u, v] = edge.sites;
+            let (Some(cu), Some(cv)) = (join_of.get(&u), join_of.get(&v)) else { continue };
+            let Some(&corner) = cu.iter().find(|c| cv.contains(c)) else { continue };
+            let at = self.point_of(corner);
+            let ends = edge.ends.map(|end| match end {
+                EdgeEnd::Vertex(w) => Some(self.store.position[w.index()]),
+                EdgeEnd::Infinite { .. } => None,
+            });
+            let near = |p: Option<Point>| p.is_some_and(|p| p.distance(at) <= tolerance);
+            if near(ends[0]) && near(ends[1]) {
+                continue; // an edge of no length at the corner
+            }
+            // a point standing for each end: the vertex, or far out toward infinity
+            let far = |k: usize| match (ends[k], edge.ends[k], ends[1 - k]) {
+                (Some(p), _, _) => Some(p),
+                (None, EdgeEnd::Infinite { direction }, Some(q)) => {
+                    let reach = 4.0 * self.extent.max(q.distance(at));
+                    Some(Point::new(q.x + reach * direction.x, q.y + reach * direction.y))
+                }
+                _ => None,
+            };
+            let (Some(p0), Some(p1)) = (far(0), far(1)) else { continue };
+            let passes = !near(ends[0]) && !near(ends[1]) && self.edge_reach(e, at) <= tolerance;
+            // along the join's normal: the line from an arc's centre there
+            let normal = [u, v].iter().find_map(|&t| match self.sites[t.index()] {
+                Site::Arc(a) => Some(a.centre()),
+                _ => None,
+            });
+            let off_line = |p: Point, c: Point| {
+                let (dx, dy) = (at.x - c.x, at.y - c.y);
+                ((p.x - at.x) * dy - (p.y - at.y) * dx).abs() / dx.hypot(dy)
+            };
+            let normal = normal.is_some_and(|c| off_line(p0, c) <= tolerance && off_line(p1, c) <= tolerance);
+            let location = |p: Point| self.point_location(rings, p);
+            if passes {
+                let inside = if location(p0) == Location::Inside { 0 } else { 1 };
+                out.push((e, JoinEdge { at: JoinAt::Through(inside), normal }));
+            } else {
+                // off the corner: where its end away from the corner lies
+                let away = if p0.distance(at) >= p1.distance(at) { p0 } else { p1 };
+                let l = location(away);
+                if l != Location::Boundary {
+                    out.push((e, JoinEdge { at: JoinAt::Side(l), normal }));
+                }
+            }
+        }
+        out
+    }
+
+    /// Among the half-edges `around` the cell of ring piece `s`, the one
+    /// across to another ring piece ending at `corner` that passes nearest
+    /// to it (two arcs of one circle meet at both its ends); only where an
+    /// arc is among the two (segments always leave the corner's cell
+    /// between them). `None` when there is none.
+    fn join_edge(&self, s: SiteId, corner: SiteId, around: &[crate::HalfEdge], role: &[Role]) -> Option<usize> {
+        let arc = |t: SiteId| matches!(self.sites[t.index()], Site::Arc(_));
+        let at = self.point_of(corner);
+        let candidates = around.iter().enumerate().filter_map(|(k, h)| {
+            let t = self.half_edge_cell(h.twin())?;
+            let joined = t != s
+                && matches!(role[t.index()], Role::RingSegment { .. })
+                && (arc(s) || arc(t))
+                && self.segment_endpoints(t).is_some_and(|e| e.contains(&corner));
+            joined.then(|| (k, self.edge_reach(h.edge(), at)))
+        });
+        candidates.min_by(|x, y| x.1.total_cmp(&y.1)).map(|(k, _)| k)
+    }
+
+    /// How near edge `e` passes to `p`: the distance from `p` to the chord
+    /// between its end vertices (a ray from its finite end at infinity).
+    fn edge_reach(&self, e: EdgeId, p: Point) -> f64 {
+        let Some(edge) = self.edge(e) else { return f64::INFINITY };
+        let position = |end: EdgeEnd| match end {
+            EdgeEnd::Vertex(v) => Some(self.store.position[v.index()]),
+            EdgeEnd::Infinite { .. } => None,
+        };
+        let to_segment = |a: Point, b: Point| {
+            let (dx, dy) = (b.x - a.x, b.y - a.y);
+            let length = dx * dx + dy * dy;
+            let t = if length > 0.0 { (((p.x - a.x) * dx + (p.y - a.y) * dy) / length).clamp(0.0, 1.0) } else { 0.0 };
+            p.distance(Point::new(a.x + t * dx, a.y + t * dy))
+        };
+        match (position(edge.ends[0]), position(edge.ends[1]), edge.ends) {
+            (Some(a), Some(b), _) => to_segment(a, b),
+            (Some(a), None, [_, EdgeEnd::Infinite { direction }]) | (None, Some(a), [EdgeEnd::Infinite { direction }, _]) => {
+                let far = self.extent.max(a.distance(p)) * 4.0;
+                to_segment(a, Point::new(a.x + far * direction.x, a.y + far * direction.y))
+            }
+            _ => f64::INFINITY,
+        }
+    }
+
     /// The finite vertex where `h` ends.
     fn target_of(&self, h: crate::HalfEdge) -> Option<usize> {
         match self.half_edge_target(h)? {
@@ -348,7 +527,15 @@ impl Diagram {
     /// Whether every site of vertex `v` is the point site `p` or a segment
     /// ending there: `v` lies at `p`, at clearance zero.
     fn touches_only(&self, v: VertexId, p: SiteId) -> bool {
-        self.store.sites_of(v).iter().all(|&s| s == p || self.segment_endpoints(s).is_some_and(|e| e.contains(&p)))
+        let sites = self.store.sites_of(v);
+        let ends_there = sites.iter().all(|&s| s == p || self.segment_endpoints(s).is_some_and(|e| e.contains(&p)));
+        // Two arcs can share both ends (a circle of two halves), and an
+        // arc's concave side has vertices among its own ends away from
+        // them (the circle's centre): with an arc, the vertex must also be
+        // at the corner (to the arcs' vertex solver's precision).
+        let arc = sites.iter().any(|s| matches!(self.sites[s.index()], Site::Arc(_)));
+        ends_there
+            && (!arc || self.store.position[v.index()].distance(self.point_of(p)) <= 1e-9 * self.extent.max(f64::MIN_POSITIVE))
     }
 
     /// Where the cell of corner `p` lies, where `segments` (more than two)
@@ -361,8 +548,8 @@ impl Diagram {
         let mut around: Vec<(SiteId, Point)> = segments
             .iter()
             .filter_map(|&s| {
-                let [a, b] = self.segment_endpoints(s)?;
-                Some((s, self.point_of(if a == p { b } else { a })))
+                self.segment_endpoints(s)?;
+                Some((s, self.toward(s, p)))
             })
             .collect();
         around.sort_by(|x, y| crate::geometry::predicates::compare_directions(here, x.1, y.1));
@@ -402,7 +589,17 @@ impl Diagram {
         let mut rings: Vec<Ring> = inputs
             .iter()
             .map(|input| {
-                let segments: Vec<SiteId> = input.segments.clone().map(|j| self.segment_site[j]).collect();
+                let segments: Vec<SiteId> = match &input.pieces {
+                    Some(pieces) => pieces
+                        .iter()
+                        .map(|&p| match p {
+                            crate::ChainPiece::Segment(j) => self.segment_site[j],
+                            crate::ChainPiece::Arc(k) => self.arc_site[k],
+                        })
+                        .collect(),
+                    None => input.segments.clone().map(|j| self.segment_site[j]).collect(),
+                };
+                let curved = segments.iter().any(|s| matches!(self.sites[s.index()], Site::Arc(_)));
                 let n = segments.len();
                 // corner k joins segment k - 1 and segment k
                 let corners = (0..n)
@@ -410,7 +607,9 @@ impl Diagram {
                         let (before, here) = (segments[(k + n - 1) % n], segments[k]);
                         let ends = self.segment_endpoints(here).unwrap_or([here, here]);
                         let shared = self.segment_endpoints(before).unwrap_or([before, before]);
-                        if shared.contains(&ends[0]) {
+                        // (the pieces of a bulged ring run forward, from
+                        // their corner; a ring of two pieces shares both ends)
+                        if input.pieces.is_some() || shared.contains(&ends[0]) {
                             ends[0]
                         } else {
                             ends[1]
@@ -418,8 +617,13 @@ impl Diagram {
                     })
                     .collect();
                 let corners: Vec<SiteId> = corners;
-                let bounds = Bounds::of(corners.iter().map(|&c| self.point_of(c)));
-                Ring { corners, segments, left_inside: false, bounds, depth: 0, parent: None }
+                // an arc may bulge beyond its corners: its circle's box
+                let reach = segments.iter().filter_map(|s| self.arc_of(*s)).flat_map(|arc| {
+                    let (c, r) = (arc.centre(), arc.radius());
+                    [Point::new(c.x - r, c.y - r), Point::new(c.x + r, c.y + r)]
+                });
+                let bounds = Bounds::of(corners.iter().map(|&c| self.point_of(c)).chain(reach));
+                Ring { corners, segments, curved, left_inside: false, bounds, depth: 0, parent: None }
             })
             .collect();
         let counter_clockwise: Vec<bool> = rings.iter().map(|r| self.is_counter_clockwise(r)).collect();
@@ -437,6 +641,9 @@ impl Diagram {
     /// The orientation of a ring, from the exact turn at its lowest-leftmost
     /// corner (an extreme corner of a simple ring turns the ring's way).
     fn is_counter_clockwise(&self, ring: &Ring) -> bool {
+        if ring.curved {
+            return self.curved_ring_area(ring) > 0.0;
+        }
         let n = ring.corners.len();
         let key = |k: usize| {
             let p = self.point_of(ring.corners[k]);
@@ -478,6 +685,14 @@ impl Diagram {
     /// touches the rings only there): where it leaves its first end, by
     /// exact orientations against the rings' corners there.
     fn obstacle_location(&self, rings: &[Ring], s: SiteId) -> Location {
+        if let Site::Arc(arc) = self.sites[s.index()] {
+            // an arc obstacle meets the rings at its ends at most
+            return [arc.midpoint(), arc.start(), arc.end()]
+                .into_iter()
+                .map(|p| self.point_location(rings, p))
+                .find(|&l| l != Location::Boundary)
+                .unwrap_or(Location::Boundary);
+        }
         let Site::Segment { a, b } = self.sites[s.index()] else { return self.point_location(rings, self.point_of(s)) };
         for p in [a, b] {
             let at = self.point_location(rings, p);
@@ -512,7 +727,12 @@ impl Diagram {
         let n = ring.corners.len();
         let mut inside = false;
         for k in (0..n).filter(|&k| self.point_of(ring.corners[k]) == p) {
-            let (before, after) = (self.point_of(ring.corners[(k + n - 1) % n]), self.point_of(ring.corners[(k + 1) % n]));
+            let (before, after) = if ring.curved {
+                // where the pieces leave the corner (along an arc's tangent)
+                (self.toward(ring.segments[(k + n - 1) % n], ring.corners[k]), self.toward(ring.segments[k], ring.corners[k]))
+            } else {
+                (self.point_of(ring.corners[(k + n - 1) % n]), self.point_of(ring.corners[(k + 1) % n]))
+            };
             // the region's wedge runs counter-clockwise from `from` to `to`
             let (from, to) = if self.is_counter_clockwise(ring) { (after, before) } else { (before, after) };
             let (turn_from, turn_to) = (self.turn(p, from, q), self.turn(p, q, to));
@@ -548,6 +768,9 @@ impl Diagram {
     /// an edge that runs upward with `p` on its left, or downward with `p`
     /// on its right (half-open in `y`, so a corner is counted once).
     fn ring_location(&self, ring: &Ring, p: Point) -> Location {
+        if ring.curved {
+            return self.curved_ring_location(ring, p);
+        }
         let n = ring.corners.len();
         let mut inside = false;
         for k in 0..n {
@@ -570,12 +793,164 @@ impl Diagram {
         inside_if(inside)
     }
 
+    /// The arc of an arc site; `None` for any other.
+    fn arc_of(&self, s: SiteId) -> Option<crate::geometry::CircularArc> {
+        match self.sites[s.index()] {
+            Site::Arc(arc) => Some(arc),
+            _ => None,
+        }
+    }
+
+    /// A point in the direction in which piece `s` (a segment or an arc)
+    /// leaves its endpoint `corner`: a segment's other end (exact), or a
+    /// point along an arc's tangent there, as far out as its chord is long.
+    fn toward(&self, s: SiteId, corner: SiteId) -> Point {
+        let at = self.point_of(corner);
+        match self.sites[s.index()] {
+            Site::Arc(arc) => {
+                let t = arc.tangent_into(at);
+                let length = arc.start().distance(arc.end());
+                Point::new(at.x + length * t.x, at.y + length * t.y)
+            }
+            Site::Segment { a, b } => {
+                if a == at {
+                    b
+                } else {
+                    a
+                }
+            }
+            _ => at,
+        }
+    }
+
+    /// The turn of a curved ring at corner `here` from piece `before` into
+    /// piece `after`: the turn of their tangents there (floating point; a
+    /// tangent join, to 1e-10 of a radian, is straight). Where the tangents
+    /// are opposite (a cusp), the turn of the chords decides.
+    fn corner_turn(&self, before: SiteId, here: SiteId, after: SiteId) -> Orientation {
+        let at = self.point_of(here);
+        let unit = |q: Point| {
+            let (dx, dy) = (q.x - at.x, q.y - at.y);
+            let n = dx.hypot(dy);
+            Point::new(dx / n, dy / n)
+        };
+        let (back, ahead) = (unit(self.toward(before, here)), unit(self.toward(after, here)));
+        // arriving along -back, leaving along ahead
+        let cross = -back.x * ahead.y + back.y * ahead.x;
+        let dot = -back.x * ahead.x - back.y * ahead.y;
+        if cross.abs() > 1e-10 {
+            return if cross > 0.0 { Orientation::CounterClockwise } else { Orientation::Clockwise };
+        }
+        if dot > 0.0 {
+            return Orientation::Collinear;
+        }
+        let other = |s: SiteId| {
+            let [a, b] = self.sites[s.index()].ends();
+            if a == at {
+                b
+            } else {
+                a
+            }
+        };
+        self.turn(other(before), at, other(after))
+    }
+
+    /// The signed area of a curved ring (positive counter-clockwise): the
+    /// polygon of its corners and, per arc, the circular segment between
+    /// its chord and it, `r²/2 (θ - sin θ)` for its signed sweep `θ` in the
+    /// ring's direction.
+    fn curved_ring_area(&self, ring: &Ring) -> f64 {
+        let n = ring.corners.len();
+        let origin = self.point_of(ring.corners[0]);
+        let mut area = 0.0;
+        for k in 0..n {
+            let (a, b) = (self.point_of(ring.corners[k]), self.point_of(ring.corners[(k + 1) % n]));
+            area += ((a.x - origin.x) * (b.y - origin.y) - (b.x - origin.x) * (a.y - origin.y)) / 2.0;
+            if let Some(arc) = self.arc_of(ring.segments[k]) {
+                let theta = if arc.start() == a { arc.sweep() } else { -arc.sweep() };
+                area += arc.radius() * arc.radius() / 2.0 * (theta - theta.sin());
+            }
+        }
+        area
+    }
+
+    /// Whether `p` is inside a curved ring: the even-odd test of the
+    /// polygon of its chords, changed by each arc's circular segment (the
+    /// region between its chord and it) that holds `p`. Which side of a
+    /// chord `p` lies on is exact; whether it is inside an arc's circle is
+    /// floating point (the centre is rounded), with `p` within `1e-12` of
+    /// the radius on the arc counted as on the boundary. A point on a
+    /// chord's line is moved up by an infinitesimal (then right by a
+    /// smaller one) for both tests: the same side of every chord.
+    fn curved_ring_location(&self, ring: &Ring, p: Point) -> Location {
+        let n = ring.corners.len();
+        if ring.corners.iter().any(|&c| self.point_of(c) == p) {
+            return Location::Boundary;
+        }
+        let mut inside = false;
+        for k in 0..n {
+            let (a, b) = (self.point_of(ring.corners[k]), self.point_of(ring.corners[(k + 1) % n]));
+            let mut turn = self.turn(a, b, p);
+            let within = p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y);
+            match self.arc_of(ring.segments[k]) {
+                Some(arc) => {
+                    // a counter-clockwise arc from a to b bulges to the right of a → b
+                    let bulge_right = arc.is_counter_clockwise() == (arc.start() == a);
+                    let bulge_side = if bulge_right { Orientation::Clockwise } else { Orientation::CounterClockwise };
+                    if turn == Orientation::Collinear {
+                        // on the chord's line: the side of p moved up by an
+                        // infinitesimal (and right by a smaller one), the
+                        // same for every chord (two arcs on one chord, a
+                        // circle of two halves, must see p on one side)
+                        let (dx, dy) = (b.x - a.x, b.y - a.y);
+                        let left = if dx != 0.0 { dx > 0.0 } else { dy < 0.0 };
+                        turn = if left { Orientation::CounterClockwise } else { Orientation::Clockwise };
+                    }
+                    if turn == bulge_side {
+                        let off = arc.centre().distance(p) - arc.radius();
+                        if off.abs() <= 1e-12 * arc.radius() {
+                            return Location::Boundary;
+                        }
+                        inside ^= off < 0.0;
+                    }
+                }
+                None if turn == Orientation::Collinear && within => return Location::Boundary,
+                None => {}
+            }
+            let upward = a.y <= p.y && p.y < b.y;
+            let downward = b.y <= p.y && p.y < a.y;
+            if (upward && turn == Orientation::CounterClockwise) || (downward && turn == Orientation::Clockwise) {
+                inside = !inside;
+            }
+        }
+        inside_if(inside)
+    }
+
     /// The coordinates of a point site.
     fn point_of(&self, s: SiteId) -> Point {
         match self.sites[s.index()] {
             other => other.ends()[0],
         }
     }
+}
+
+/// An edge near a tangent join of a curved ring
+/// (`Diagram::tangent_join_edges`): where it lies, and whether along the
+/// join's normal.
+#[derive(Clone, Copy, Debug)]
+struct JoinEdge {
+    at: JoinAt,
+    normal: bool,
+}
+
+/// Where an edge near a tangent join lies.
+#[derive(Clone, Copy, Debug)]
+enum JoinAt {
+    /// It passes through the corner; the end (an index into `Edge::ends`)
+    /// inside the domain.
+    Through(usize),
+    /// It lies on one side.
+    Side(Location),
 }
 
 /// The inside end of `e` in the sorted list of edges through straight

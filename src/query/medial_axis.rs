@@ -172,7 +172,9 @@ impl Diagram {
             Some(location) => location == Location::Inside,
             None => true,
         };
-        inside && self.is_separator(e) == Some(false)
+        // (the edges along the normal of a curved ring's tangent join are
+        // what separators are at a straight corner: no branch ends there)
+        inside && self.is_separator(e) == Some(false) && !self.is_join_normal(e)
     }
 
     /// The chain that starts with the store's half-edge `first` (marked),
@@ -345,9 +347,11 @@ impl Diagram {
 
     /// The largest disk inside the domain: its centre and radius (the
     /// inside vertex of largest clearance: along an edge of the medial axis
-    /// the clearance has no maximum inside the edge — linear between two
-    /// segments, convex along a parabola or between two points). `None`
-    /// without a domain or when nothing is inside.
+    /// between points and segments the clearance has no maximum inside the
+    /// edge — linear between two segments, convex along a parabola or
+    /// between two points; beside a circular arc it may, and such peaks
+    /// count too, placed by bisection along the edge). `None` without a
+    /// domain or when nothing is inside.
     ///
     /// ```
     /// use segvoronoi::Builder;
@@ -381,16 +385,28 @@ impl Diagram {
         if self.domain.is_none() {
             return Vec::new();
         }
-        let components = self.axis_components(&self.medial_axis_edges());
+        let in_axis = self.medial_axis_edges();
+        let components = self.axis_components(&in_axis);
         let mut largest: Vec<Option<(Point, f64)>> = vec![None; self.finite_vertices];
+        let mut offer = |v: VertexId, position: Point, clearance: f64| {
+            let best = &mut largest[components.find(v.index())];
+            if best.map_or(true, |(_, r)| clearance > r) {
+                *best = Some((position, clearance));
+            }
+        };
         for v in (0..self.finite_vertices).map(VertexId::from_index) {
             if self.vertex_location(v) != Some(Location::Inside) {
                 continue;
             }
-            let (position, clearance) = (self.store.position[v.index()], self.store.clearance[v.index()]);
-            let best = &mut largest[components.find(v.index())];
-            if best.map_or(true, |(_, r)| clearance > r) {
-                *best = Some((position, clearance));
+            offer(v, self.store.position[v.index()], self.store.clearance[v.index()]);
+        }
+        // beside an arc the clearance can peak inside an edge
+        if self.arc_sites > 0 {
+            for e in (0..self.edges.len()).filter(|&e| in_axis[e]).map(EdgeId::from_index) {
+                let Some(v) = self.end_vertices(e).into_iter().flatten().next() else { continue };
+                for (position, clearance) in self.conic_peaks(e) {
+                    offer(v, position, clearance);
+                }
             }
         }
         let mut circles: Vec<(Point, f64)> = largest.into_iter().flatten().collect();

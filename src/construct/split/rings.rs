@@ -98,5 +98,5 @@ fn emit(ring: &[(Point, usize)], boundary: &[Piece], ordered: &mut Vec<Piece>, r
         let ends = if piece.ends[0] == from { piece.ends } else { [piece.ends[1], piece.ends[0]] };
         ordered.push(Piece { ends, origins: piece.origins.clone() });
     }
-    rings.push(RingInput { polygon: 0, ring: rings.len(), segments: first..ordered.len() });
+    rings.push(RingInput { polygon: 0, ring: rings.len(), segments: first..ordered.len(), pieces: None });
 }

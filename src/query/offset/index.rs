@@ -5,12 +5,15 @@
 //! cells an offset may circle without crossing any edge, and the two merge
 //! trees that give the nesting.
 
+use std::collections::HashMap;
+
+use super::conic::{ConicEnd, ConicTrack};
 use super::interval_tree::IntervalTree;
 use super::level_tree::LevelTree;
 use crate::diagram::{Diagram, EdgeId, SiteId};
 use crate::geometry::curves::edge_track::{EdgeTrack, TrackEnd};
 use crate::geometry::Site;
-use crate::query::{EdgeEnd, HalfEdge, Location};
+use crate::query::{EdgeEnd, EdgeShape, HalfEdge, Location};
 
 /// Which way the offset goes: away from the sites (a positive distance)
 /// or, with a domain, into it (a negative one).
@@ -53,6 +56,28 @@ impl Side {
 /// See [`Side::threshold`].
 pub(super) const LEVEL_TOLERANCE: f64 = 1e-10;
 
+/// An edge beside an arc: its track, and per knot its leaf of
+/// `OffsetIndex::above` (a peak's own leaf, `NO_LEAF` for a lowest
+/// point).
+pub(super) struct ConicEdge {
+    pub(super) track: ConicTrack,
+    pub(super) leaves: Vec<u32>,
+}
+
+/// No leaf of `above` (a lowest point of a conic edge).
+pub(super) const NO_LEAF: u32 = u32::MAX;
+
+/// One stop along an edge for the offsets, from its first end to its
+/// second: the parameter of a conic track, the
+/// clearance (input units) as the offsets take it, and its leaf of
+/// `above` (`NO_LEAF` for none).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Stop {
+    pub(super) t: f64,
+    pub(super) level: f64,
+    pub(super) leaf: u32,
+}
+
 /// The shared part of the offsets on one side (see the module doc).
 pub(super) struct OffsetIndex {
     pub(super) side: Side,
@@ -68,8 +93,12 @@ pub(super) struct OffsetIndex {
     /// there (`Diagram::vertex_level`), computed once.
     pub(super) levels: Vec<f64>,
     /// The components of what lies above a level: leaves are the finite
-    /// vertices, then infinity.
+    /// vertices, then infinity, then the peaks of conic edges (a region
+    /// above a level may hold such a peak and no vertex).
     pub(super) above: LevelTree,
+    /// The edges beside arcs, by edge index: their tracks and the leaves of
+    /// their knots.
+    pub(super) conics: HashMap<u32, ConicEdge>,
     /// The components of what lies below: leaves are the sites, then the
     /// outside of the domain's outer rings.
     pub(super) below: LevelTree,
@@ -87,15 +116,49 @@ impl OffsetIndex {
         let mut intervals = Vec::new();
         let mut above_links = Vec::new();
         let mut below_links = Vec::new();
+        let mut conics = HashMap::new();
         for e in (0..edge_count).map(EdgeId::from_index) {
             if !diagram.offset_may_cross(e, side) {
                 continue;
             }
-            let (lo, hi) = diagram.clearance_range(e, &levels, side);
+            if let Some(track) = diagram.conic_track(e) {
+                let to_input = diagram.scale.to_input;
+                let leaves = track
+                    .knots
+                    .iter()
+                    .map(|k| {
+                        if k.peak {
+                            levels.push(k.value * to_input);
+                            (levels.len() - 1) as u32
+                        } else {
+                            NO_LEAF
+                        }
+                    })
+                    .collect();
+                conics.insert(e.index() as u32, ConicEdge { track, leaves });
+            }
+            let stops = diagram.stops(e, &levels, side, &conics);
+            let lo = stops.iter().map(|s| s.level).fold(f64::INFINITY, f64::min);
+            let hi = stops.iter().map(|s| s.level).fold(f64::NEG_INFINITY, f64::max);
             low[e.index()] = lo;
             intervals.push((lo, hi, e.index() as u32));
-            let ends = diagram.end_vertices(e).map(|v| v.map_or(infinity, |v| v.index() as u32));
-            above_links.push((ends[0], ends[1], lo));
+            // the stops with leaves, each linked to the next at the lowest
+            // clearance between them
+            let mut held: Option<(u32, f64)> = None;
+            for stop in &stops {
+                held = match held {
+                    None => Some((stop.leaf, stop.level)),
+                    Some((leaf, lowest)) => {
+                        let lowest = lowest.min(stop.level);
+                        if stop.leaf == NO_LEAF {
+                            Some((leaf, lowest))
+                        } else {
+                            above_links.push((leaf, stop.leaf, lowest));
+                            Some((stop.leaf, stop.level))
+                        }
+                    }
+                };
+            }
             let [h, t] = diagram.half_edges(e).expect("in range");
             let cells = [h, t].map(|h| diagram.half_edge_cell(h).expect("in range").index() as u32);
             below_links.push((cells[0], cells[1], lo));
@@ -126,6 +189,7 @@ impl OffsetIndex {
             circles,
             above: LevelTree::new(levels.clone(), above_links, true),
             levels,
+            conics,
             below: LevelTree::new(vec![f64::NEG_INFINITY; diagram.sites.len() + 1], below_links, false),
         }
     }
@@ -185,12 +249,65 @@ impl Diagram {
         }
     }
 
-    /// The lowest and highest clearance along edge `e` (input units;
-    /// infinite at an end at infinity).
-    pub(super) fn clearance_range(&self, e: EdgeId, levels: &[f64], side: Side) -> (f64, f64) {
+    /// The stops along edge `e` (see [`Stop`]): its two ends, and between
+    /// them, for an edge beside an arc, where its clearance turns (and the
+    /// far points of ends at infinity); for other edges, the lowest point
+    /// inside it where there is one. Between two stops the clearance is
+    /// monotone.
+    pub(super) fn stops(&self, e: EdgeId, levels: &[f64], side: Side, conics: &HashMap<u32, ConicEdge>) -> Vec<Stop> {
         let [c0, c1] = self.end_levels(e, levels, side);
-        let interior = self.edge_track(e).and_then(|t| t.interior_minimum()).map_or(f64::INFINITY, |m| m * self.scale.to_input);
-        (c0.min(c1).min(interior), c0.max(c1))
+        let infinity = self.finite_vertices as u32;
+        let ends = self.end_vertices(e);
+        let leaf = |k: usize| ends[k].map_or(infinity, |v| v.index() as u32);
+        // (a conic track's parameter runs from 0 to 1; other edges do not
+        // use it)
+        let mut stops = vec![Stop { t: 0.0, level: c0, leaf: leaf(0) }];
+        if let Some(conic) = conics.get(&(e.index() as u32)) {
+            let to_input = self.scale.to_input;
+            stops.extend(conic.track.knots.iter().zip(&conic.leaves).map(|(k, &leaf)| Stop {
+                t: k.t,
+                level: k.value * to_input,
+                leaf,
+            }));
+            stops.push(Stop { t: 1.0, level: c1, leaf: leaf(1) });
+        } else {
+            let interior = self.edge_track(e).and_then(|t| t.interior_minimum()).map(|m| m * self.scale.to_input);
+            if let Some(m) = interior {
+                stops.push(Stop { t: f64::NAN, level: m, leaf: NO_LEAF });
+            }
+            stops.push(Stop { t: f64::NAN, level: c1, leaf: leaf(1) });
+            stops[0].t = f64::NAN;
+        }
+        stops
+    }
+
+    /// Where the clearance along edge `e` beside an arc peaks strictly
+    /// inside it (no vertex there: the largest empty circle touching both
+    /// sites at the ends of a diameter), with that clearance, in input
+    /// units; empty for other edges.
+    pub(crate) fn conic_peaks(&self, e: EdgeId) -> Vec<(crate::geometry::Point, f64)> {
+        let Some(track) = self.conic_track(e) else { return Vec::new() };
+        let to_input = self.scale.to_input;
+        track
+            .knots
+            .iter()
+            .filter(|k| k.peak)
+            .filter_map(|k| Some((self.scale.point_to_input(track.point(k.t)?), k.value * to_input)))
+            .collect()
+    }
+
+    /// The track of edge `e` when it lies beside an arc (a conic), in
+    /// internal coordinates.
+    pub(super) fn conic_track(&self, e: EdgeId) -> Option<ConicTrack> {
+        let edge = self.edge(e)?;
+        let EdgeShape::Conic { .. } = self.shape_of(&edge) else { return None };
+        let f = self.scale.to_internal;
+        let sites = edge.sites.map(|s| self.sites[s.index()].scaled(f));
+        let end = |end: EdgeEnd| match end {
+            EdgeEnd::Vertex(v) => ConicEnd::At(self.store.position[v.index()].scaled(f)),
+            EdgeEnd::Infinite { direction } => ConicEnd::Towards(direction),
+        };
+        ConicTrack::new(sites, end(edge.ends[0]), end(edge.ends[1]))
     }
 
     /// The clearance at both ends of `e` as the offsets on `side` take it

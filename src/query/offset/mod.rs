@@ -1,15 +1,19 @@
 //! Offset curves: the points at one distance from the sites, as closed
-//! loops of exact pieces — line pieces parallel to segment sites and
-//! circular arcs around point sites, never parabolas — traced through the
-//! cells of the diagram, oriented, and nested.
+//! loops of exact pieces — line pieces parallel to segment sites, circular
+//! arcs around point sites and concentric with arc sites, never parabolas
+//! or conics — traced through the cells of the diagram, oriented, and
+//! nested.
 //!
 //! - `trace`: the crossings of the level with the edges and the pieces
 //!   inside each cell;
+//! - `conic`: the clearance along edges beside arcs (not quasi-convex:
+//!   cut where it turns) and their crossings, by bisection;
 //! - `index`: what many distances share (edges by clearance range, the
 //!   merge trees of the nesting);
 //! - `approximation`: polylines within a tolerance, and areas.
 
 mod approximation;
+mod conic;
 mod index;
 mod interval_tree;
 mod level_tree;
@@ -20,7 +24,7 @@ use std::collections::HashMap;
 use crate::diagram::{Diagram, SiteId};
 use crate::error::{Error, ErrorKind};
 use crate::geometry::scale::{Magnitudes, EXACT_SPAN};
-use crate::geometry::Point;
+use crate::geometry::{Point, Site};
 use index::{OffsetIndex, Side};
 
 /// Points of an offset at distance `r` closer than `COINCIDENT × r` are one
@@ -44,11 +48,14 @@ pub enum OffsetPiece {
         /// The segment site it runs along.
         site: SiteId,
     },
-    /// An arc of the circle of `radius` around the point site `site`.
+    /// An arc of a circle: around the point site `site` at the offset's
+    /// distance, or concentric with the arc site `site`, at its radius plus
+    /// the distance on its convex side and minus it on its concave side.
     Arc {
-        /// The point site's position.
+        /// The point site's position, or the arc site's centre.
         centre: Point,
-        /// The offset's distance.
+        /// The offset's distance around a point; the arc's radius plus or
+        /// minus it beside an arc.
         radius: f64,
         /// Where it starts.
         from: Point,
@@ -56,7 +63,7 @@ pub enum OffsetPiece {
         to: Point,
         /// The way round from `from` to `to`.
         counter_clockwise: bool,
-        /// The point site it runs around.
+        /// The point or arc site it keeps its distance from.
         site: SiteId,
     },
 }
@@ -126,6 +133,17 @@ const MAX_OFFSET_REACH: f64 = 3.3519519824856493e153;
 impl Diagram {
     /// The offset at signed distance `distance`: the closed loops at that
     /// distance from the sites, of exact line pieces and circular arcs.
+    ///
+    /// Circular arc sites (`Builder::add_arc`, `add_bulged_polyline`) are
+    /// offset like the others: beside an arc the loops run along the
+    /// concentric circle, of radius `R + distance` on its convex side and
+    /// `R - distance` on its concave side (where that is positive). Where
+    /// they cross an edge beside an arc (a conic) is found by bisection
+    /// along the edge to the precision of `f64`, not in closed form: such a
+    /// piece's ends are at the distance from its site to a few ulps of the
+    /// input's extent, and the vertices an arc meets are placed by the
+    /// arcs' vertex solver (to about `1e-8` of the extent; see
+    /// `docs/guarantees.md`).
     ///
     /// With a domain (polygons were added), the sign follows GEOS's buffer:
     /// a negative distance shrinks the domain (the loops bound the points
@@ -200,15 +218,6 @@ impl Diagram {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn offsets(&self, distances: &[f64]) -> Result<Vec<Offset>, Error> {
-        if self.arc_sites > 0 {
-            // an arc's offset is a concentric arc, which the tracing of
-            // offsets does not have yet (issue 32)
-            return Err(Error::new(
-                ErrorKind::InvalidArgument,
-                "offsets of a diagram with circular arcs are not supported yet".to_string(),
-                Vec::new(),
-            ));
-        }
         let sides: Vec<Side> = distances.iter().map(|&d| self.offset_side(d)).collect::<Result<_, _>>()?;
         let mut grow: Option<OffsetIndex> = None;
         let mut shrink: Option<OffsetIndex> = None;
@@ -286,7 +295,6 @@ impl Diagram {
         let side = index.side;
         let threshold = side.threshold(r);
         let mut traced = self.trace(index, r);
-        let infinity = self.finite_vertices as u32;
 
         let empty = self.drop_empty_spans(&mut traced, r);
         let near = COINCIDENT * r;
@@ -307,11 +315,11 @@ impl Diagram {
                 seen[k as usize] = true;
                 let span = traced.spans[k as usize];
                 if !empty[k as usize] {
-                    faces.get_or_insert((self.above_leaf(span.rising_on, infinity), span.site.index() as u32));
+                    faces.get_or_insert((traced.crossings[span.from as usize].above, span.site.index() as u32));
                     let (from, to) = (traced.crossings[span.from as usize].at, traced.crossings[span.to as usize].at);
-                    pieces.push(match self.sites[span.site.index()].as_point() {
-                        Some(centre) => {
-                            OffsetPiece::Arc { centre, radius: r, from, to, counter_clockwise: true, site: span.site }
+                    pieces.push(match self.circle_of_span(span.site, from, to, r) {
+                        Some((centre, radius, counter_clockwise)) => {
+                            OffsetPiece::Arc { centre, radius, from, to, counter_clockwise, site: span.site }
                         }
                         None => OffsetPiece::Line { from, to, site: span.site },
                     });
@@ -378,6 +386,7 @@ impl Diagram {
             if from.distance(to) > near {
                 continue;
             }
+            let circle = self.circle_of_span(span.site, from, to, r);
             let centre = self.sites[span.site.index()].as_point();
             // Only an isolated point's cell can hold a whole circle: the
             // cell of a segment's endpoint lies in the half-plane beyond
@@ -387,7 +396,10 @@ impl Diagram {
             // wedge thinner than rounding).
             whole[k] = centre.is_some() && !self.is_segment_endpoint(span.site) && self.span_leaves(span, from, near);
             let whole = whole[k];
-            if !whole && (from == to || centre.is_some_and(|c| approximation::sweep(c, from, to, true) > std::f64::consts::PI)) {
+            // (an arc's cell neither: it lies in the arc's cone, and a span
+            // of it sweeps at most the arc's own sweep, less than a turn)
+            let backwards = circle.is_some_and(|(c, _, ccw)| approximation::sweep(c, from, to, ccw) > std::f64::consts::PI);
+            if !whole && (from == to || backwards) {
                 empty[k] = true;
                 moved_to[span.to as usize] = span.from;
             }
@@ -412,6 +424,25 @@ impl Diagram {
         }
 
         empty
+    }
+
+    /// The circle an offset piece at distance `r` in the cell of `site`
+    /// runs along, from `from` to `to`, and which way round (with the band
+    /// along the site on its left): around a point site counter-clockwise;
+    /// around an arc's centre at its radius plus `r` on its convex side
+    /// (counter-clockwise), minus `r` on its concave side (clockwise: the
+    /// band lies outside that circle). `None` for a segment site.
+    fn circle_of_span(&self, site: SiteId, from: Point, to: Point, r: f64) -> Option<(Point, f64, bool)> {
+        match self.sites[site.index()] {
+            Site::Point(centre) => Some((centre, r, true)),
+            Site::Arc(arc) => {
+                let c = arc.centre();
+                // the ends are both at R + r or both at R - r from the centre
+                let convex = c.distance(from) + c.distance(to) > 2.0 * arc.radius();
+                Some(if convex { (c, arc.radius() + r, true) } else { (c, (arc.radius() - r).max(0.0), false) })
+            }
+            _ => None,
+        }
     }
 
     /// The parent and depth of each loop. Each loop separates one region

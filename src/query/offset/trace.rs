@@ -13,9 +13,9 @@
 //! segment site, with the band on its left). The falling crossing is the
 //! rising crossing of the cell across the edge, where the loop goes on.
 
-use super::index::OffsetIndex;
+use super::index::{ConicEdge, OffsetIndex, Stop, NO_LEAF};
 use crate::diagram::{Diagram, EdgeId, SiteId};
-use crate::geometry::Point;
+use crate::geometry::{Point, Site};
 use crate::query::HalfEdge;
 
 /// Within this fraction of the distance a crossing is taken to be at the
@@ -28,6 +28,9 @@ const SNAP: f64 = 1e-10;
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Crossing {
     pub(super) at: Point,
+    /// The leaf of `OffsetIndex::above` on its side above the level: the
+    /// end of its edge (or peak of a conic edge) the clearance rises to.
+    pub(super) above: u32,
 }
 
 /// One view of a crossing from a cell: the half-edge it is on, and
@@ -87,9 +90,9 @@ impl Diagram {
             let n = placed.len();
             let [h, t] = self.half_edges(e).expect("in range");
             let cells = [h, t].map(|h| self.half_edge_cell(h).expect("in range").index() as u32);
-            for (k, (at, rising)) in placed.into_iter().enumerate() {
+            for (k, (at, rising, above)) in placed.into_iter().enumerate() {
                 let id = crossings.len() as u32;
-                crossings.push(Crossing { at });
+                crossings.push(Crossing { at, above });
                 views.push(View {
                     cell: cells[0],
                     rank: index.rank[h.index()],
@@ -135,8 +138,94 @@ impl Diagram {
     }
 
     /// Where edge `e` crosses the level `r`, in the order of its
-    /// `ends[0] → ends[1]`, each with whether the clearance rises there.
-    fn edge_crossings(&self, e: EdgeId, index: &OffsetIndex, r: f64) -> Vec<(Point, bool)> {
+    /// `ends[0] → ends[1]`, each with whether the clearance rises there and
+    /// its leaf of `above`.
+    fn edge_crossings(&self, e: EdgeId, index: &OffsetIndex, r: f64) -> Vec<(Point, bool, u32)> {
+        if let Some(conic) = index.conics.get(&(e.index() as u32)) {
+            return self.conic_crossings(e, conic, index, r);
+        }
+        let infinity = self.finite_vertices as u32;
+        let leaves = self.end_vertices(e).map(|v| v.map_or(infinity, |v| v.index() as u32));
+        let radial = self.radial_separator(e);
+        let with_leaf = |(at, rising): (Point, bool)| {
+            // on an arc's separator, the point of the radial line at `r`
+            // from the endpoint: the vertices an arc's vertex solver places
+            // are only as precise as its tolerance, and the crossing of the
+            // endpoint's other separator (a tangent segment's, exact) must
+            // meet this one where the cell between them is thinner than
+            // rounding
+            let at = radial.map_or(at, |(end, u)| {
+                let side = if (at.x - end.x) * u.x + (at.y - end.y) * u.y >= 0.0 { r } else { -r };
+                Point::new(end.x + side * u.x, end.y + side * u.y)
+            });
+            (at, rising, leaves[usize::from(rising)])
+        };
+        self.straight_or_parabolic_crossings(e, index, r).into_iter().map(with_leaf).collect()
+    }
+
+    /// For the separator between an arc and one of its endpoints (on the
+    /// radial line through that endpoint): the endpoint and the outward
+    /// unit direction from the arc's centre, in input coordinates.
+    fn radial_separator(&self, e: EdgeId) -> Option<(Point, Point)> {
+        let edge = self.edge(e)?;
+        let [a, b] = edge.sites.map(|s| self.sites[s.index()]);
+        let (arc, end) = match (a, b) {
+            (Site::Arc(arc), Site::Point(p)) | (Site::Point(p), Site::Arc(arc)) => (arc, p),
+            _ => return None,
+        };
+        if end != arc.start() && end != arc.end() {
+            return None;
+        }
+        let c = arc.centre();
+        let length = c.distance(end);
+        (length > 0.0)
+            .then(|| Point::new((end.x - c.x) / length, (end.y - c.y) / length))
+            .filter(|u| u.is_finite())
+            .map(|u| (end, u))
+    }
+
+    /// Where an edge beside an arc crosses the level `r`: at most once
+    /// between each two of its stops (the clearance is monotone there), by
+    /// bisection along its track.
+    fn conic_crossings(&self, e: EdgeId, conic: &ConicEdge, index: &OffsetIndex, r: f64) -> Vec<(Point, bool, u32)> {
+        let side = index.side;
+        let threshold = side.threshold(r);
+        let stops = self.stops(e, &index.levels, side, &index.conics);
+        let level = r * self.scale.to_internal;
+        let snap = SNAP * r;
+        let ends = self.end_vertices(e).map(|v| v.map(|v| self.store.position[v.index()]));
+        let mut out = Vec::new();
+        // a turning point at the level to within the band's tolerance: the
+        // region touches itself there (two sites 2r apart), or a part of it
+        // shrinks to that point; both crossings beside it are that point,
+        // so that the loops meet there and split, or the part's loop is
+        // one point and dropped (the roots of a tangency are only the
+        // square root of rounding apart, not equal)
+        let touching =
+            |stop: &Stop| (stop.level - r).abs() <= 2.0 * super::index::LEVEL_TOLERANCE * r && stop.t > 0.0 && stop.t < 1.0;
+        for (k, pair) in stops.windows(2).enumerate() {
+            let (a, b) = (pair[0], pair[1]);
+            let (in_a, in_b) = (side.in_band(a.level, threshold), side.in_band(b.level, threshold));
+            if in_a == in_b {
+                continue;
+            }
+            let lowest = [a, b].into_iter().find(touching);
+            let t = lowest.map_or_else(|| conic.track.root(a.t, b.t, level), |stop| stop.t);
+            let Some(at) = conic.track.point(t) else { continue };
+            let at = self.scale.point_to_input(at);
+            // next to a vertex (rounding: the vertex is at the level), the
+            // vertex itself, so that the loops of both its cells agree
+            let near = |v: Option<Point>| v.filter(|v| v.distance(at) <= snap);
+            let at = near(ends[0]).or(near(ends[1])).unwrap_or(at);
+            let rising = in_a;
+            out.push((at, rising, upper_leaf(&stops, if rising { k + 1 } else { k }, rising)));
+        }
+        out
+    }
+
+    /// Where a straight or parabolic edge crosses the level `r` (see
+    /// `edge_crossings`).
+    fn straight_or_parabolic_crossings(&self, e: EdgeId, index: &OffsetIndex, r: f64) -> Vec<(Point, bool)> {
         let side = index.side;
         let [c0, c1] = self.end_levels(e, &index.levels, side);
         let threshold = side.threshold(r);
@@ -196,12 +285,6 @@ impl Diagram {
             .collect()
     }
 
-    /// The finite vertex or infinity (`infinity`) where `h` ends, as a leaf
-    /// of the index's `above` tree.
-    pub(super) fn above_leaf(&self, h: HalfEdge, infinity: u32) -> u32 {
-        self.target_vertex(h).map_or(infinity, |v| v.index() as u32)
-    }
-
     /// Whether the point site `p` is an endpoint of a segment: its cell
     /// has a separator.
     pub(super) fn is_segment_endpoint(&self, p: SiteId) -> bool {
@@ -228,5 +311,24 @@ impl Diagram {
             }
         }
         true
+    }
+}
+
+/// The leaf of the stop `k` or, if it has none (a lowest point, which only
+/// rounding makes the upper end of a monotone piece), of the first stop
+/// beyond it that has one, going on the way the clearance rose.
+fn upper_leaf(stops: &[Stop], mut k: usize, forward: bool) -> u32 {
+    loop {
+        if stops[k].leaf != NO_LEAF {
+            return stops[k].leaf;
+        }
+        if forward && k + 1 < stops.len() {
+            k += 1;
+        } else if !forward && k > 0 {
+            k -= 1;
+        } else {
+            // (the ends always have leaves)
+            return stops[k].leaf;
+        }
     }
 }

@@ -1,0 +1,384 @@
+//! The clearance along an edge beside a circular arc (a conic), for the
+//! offsets.
+//!
+//! Along a line or a parabola the clearance is quasi-convex, and
+//! `EdgeTrack` knows its lowest point in closed form. Along a conic beside
+//! an arc it need not be: an ellipse around a point on an arc's concave
+//! side has its clearance highest where the empty circle touches the point
+//! and the arc at opposite ends of a diameter, which is a local maximum of
+//! the distance to the sites inside the edge, with no vertex there. So the
+//! edge is cut into pieces along which the clearance is monotone (found by
+//! sampling and refined by golden-section search), each piece crossing a
+//! level at most once; a crossing is found by bisection on the edge's
+//! parameter to the precision of `f64`.
+//!
+//! The parameter is the angle around the arc's centre. An edge beside an
+//! arc lies in the arc's cone and on one side of its circle, and a ray from
+//! the centre meets it at most once: along the ray, the distance to the
+//! arc changes at rate 1 and the distance to any other site at rate at
+//! most 1, so their difference is monotone on each side of the circle.
+//! The point at an angle is found by bisection along its ray; a chord's
+//! perpendicular (what the drawings use) would not do for an edge that
+//! turns by more than half a turn (the ellipse around a point in a nearly
+//! closed arc).
+
+use crate::geometry::{CircularArc, Point, Site};
+
+/// Samples of the clearance along an edge, to find where it turns.
+const SAMPLES: usize = 48;
+
+/// Clearance changes within this fraction of the edge's size count as
+/// flat: a constant clearance (the circle halfway between an arc and a
+/// point at its centre) must not turn on rounding.
+const FLAT: f64 = 1e-11;
+
+/// A point where the clearance along a conic edge turns.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Knot {
+    /// The edge's parameter (0 at its first end, 1 at its second).
+    pub(super) t: f64,
+    /// The clearance there (internal units).
+    pub(super) value: f64,
+    /// Whether it is a local maximum (a region above a level can hold it
+    /// and no vertex).
+    pub(super) peak: bool,
+}
+
+/// An edge beside an arc as a track for the offsets (see the module doc).
+/// Internal coordinates.
+#[derive(Clone, Debug)]
+pub(super) struct ConicTrack {
+    /// The arc whose centre the parameter turns around, and the edge's
+    /// other site.
+    arc: CircularArc,
+    other: Site,
+    /// Whether the edge lies outside the arc's circle.
+    convex: bool,
+    /// The angle of the arc's start around its centre, and `+1` for a
+    /// counter-clockwise arc, `-1` for a clockwise one.
+    start_angle: f64,
+    turn: f64,
+    /// The angles of the edge's ends from the arc's start, along the arc
+    /// (within its sweep).
+    along: [f64; 2],
+    /// The vertices at the ends; `None` at infinity.
+    ends: [Option<Point>; 2],
+    /// For an edge along a ray from the centre (the other site continues
+    /// the arc tangentially at a shared endpoint: every point of that ray
+    /// is equally far from both), the ray's unit direction and the
+    /// distances of the ends from the centre along it (infinite at
+    /// infinity). The angle does not move along such an edge, the distance
+    /// from the centre does.
+    radial: Option<(Point, [f64; 2])>,
+    /// Where the clearance turns strictly inside the edge, by `t`.
+    pub(super) knots: Vec<Knot>,
+}
+
+/// One end of a conic edge: a vertex, or infinity in a direction.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum ConicEnd {
+    At(Point),
+    Towards(Point),
+}
+
+impl ConicTrack {
+    /// The track of the edge between `sites` (one at least an arc) from
+    /// `start` to `end`. `None` without an arc, for a whole curve (both
+    /// ends at infinity) or numbers that are not finite.
+    pub(super) fn new(sites: [Site; 2], start: ConicEnd, end: ConicEnd) -> Option<ConicTrack> {
+        let (arc, other) = match sites {
+            [Site::Arc(arc), other] | [other, Site::Arc(arc)] => (arc, other),
+            _ => return None,
+        };
+        let c = arc.centre();
+        let position = |e: ConicEnd| match e {
+            ConicEnd::At(p) => Some(p),
+            ConicEnd::Towards(_) => None,
+        };
+        let ends = [position(start), position(end)];
+        // the side of the circle: from the end farther from it; an edge to
+        // infinity is outside
+        let convex = match ends {
+            [Some(p), Some(q)] => {
+                let off = |v: Point| c.distance(v) - arc.radius();
+                if off(p).abs() >= off(q).abs() {
+                    off(p) > 0.0
+                } else {
+                    off(q) > 0.0
+                }
+            }
+            [None, None] => return None,
+            _ => true,
+        };
+        let start_angle = (arc.start().y - c.y).atan2(arc.start().x - c.x);
+        let turn = if arc.is_counter_clockwise() { 1.0 } else { -1.0 };
+        let radial = tangent_join(&arc, &other).map(|u| {
+            let rho = |e: Option<Point>| e.map_or(f64::INFINITY, |v| (v.x - c.x) * u.x + (v.y - c.y) * u.y);
+            (u, [rho(ends[0]), rho(ends[1])])
+        });
+        let mut track = ConicTrack { arc, other, convex, start_angle, turn, along: [0.0; 2], ends, radial, knots: Vec::new() };
+        let direction = |e: ConicEnd| match e {
+            ConicEnd::At(p) => track.along(p),
+            ConicEnd::Towards(u) => track.along(Point::new(c.x + u.x, c.y + u.y)),
+        };
+        track.along = [direction(start), direction(end)];
+        if !(c.is_finite() && arc.radius().is_finite() && track.along.iter().all(|a| a.is_finite())) {
+            return None;
+        }
+        track.knots = track.find_knots();
+        Some(track)
+    }
+
+    /// The angle of `q` around the arc's centre from the arc's start,
+    /// along the arc, clamped to its sweep (the edge lies in the arc's
+    /// cone; a vertex on its boundary may round out of it).
+    fn along(&self, q: Point) -> f64 {
+        let c = self.arc.centre();
+        let full = std::f64::consts::TAU;
+        let angle = (q.y - c.y).atan2(q.x - c.x);
+        let along = (self.turn * (angle - self.start_angle)).rem_euclid(full);
+        let sweep = self.arc.sweep().abs();
+        if along <= sweep {
+            along
+        } else if along - sweep < full - along {
+            sweep
+        } else {
+            0.0
+        }
+    }
+
+    /// The point of the edge at parameter `t` (0 and 1: its ends); `None`
+    /// where the ray meets no point of the edge (toward an end at
+    /// infinity).
+    pub(super) fn point(&self, t: f64) -> Option<Point> {
+        if t <= 0.0 || t >= 1.0 {
+            if let Some(v) = self.ends[usize::from(t >= 1.0)] {
+                return Some(v);
+            }
+        }
+        if let Some((u, [r0, r1])) = self.radial {
+            // an end at infinity: the distance grows without bound toward it
+            let rho = match (r0.is_finite(), r1.is_finite()) {
+                (true, true) => r0 + t * (r1 - r0),
+                (true, false) => r0 + t / (1.0 - t) * self.arc.radius(),
+                (false, true) => r1 + (1.0 - t) / t * self.arc.radius(),
+                (false, false) => return None,
+            };
+            let c = self.arc.centre();
+            return Some(Point::new(c.x + rho * u.x, c.y + rho * u.y));
+        }
+        let [a0, a1] = self.along;
+        let angle = self.start_angle + self.turn * (a0 + t * (a1 - a0));
+        let u = Point::new(angle.cos(), angle.sin());
+        let rho = self.radius_along(u)?;
+        let c = self.arc.centre();
+        Some(Point::new(c.x + rho * u.x, c.y + rho * u.y))
+    }
+
+    /// How far from the centre the ray in direction `u` meets the edge: by
+    /// bisection on the difference of the distances to the two sites,
+    /// monotone along the ray on the edge's side of the circle.
+    fn radius_along(&self, u: Point) -> Option<f64> {
+        let (c, radius) = (self.arc.centre(), self.arc.radius());
+        let at = |rho: f64| Point::new(c.x + rho * u.x, c.y + rho * u.y);
+        // positive beyond the edge (away from the circle)
+        let beyond = |rho: f64| (rho - radius).abs() - self.other.distance(at(rho));
+        let (mut near, mut far) = if self.convex {
+            let mut step = radius;
+            let mut far = radius + step;
+            let mut found = false;
+            for _ in 0..2100 {
+                if beyond(far) > 0.0 {
+                    found = true;
+                    break;
+                }
+                step *= 2.0;
+                far = radius + step;
+                if !far.is_finite() {
+                    break;
+                }
+            }
+            if !found {
+                return None;
+            }
+            (radius, far)
+        } else {
+            if beyond(0.0) <= 0.0 {
+                return Some(0.0);
+            }
+            (radius, 0.0)
+        };
+        for _ in 0..200 {
+            let mid = 0.5 * (near + far);
+            if mid == near || mid == far {
+                break;
+            }
+            if beyond(mid) > 0.0 {
+                far = mid;
+            } else {
+                near = mid;
+            }
+        }
+        Some(0.5 * (near + far))
+    }
+
+    /// The clearance at parameter `t` (internal units): the distance to
+    /// the arc; infinite where the edge has gone to infinity.
+    pub(super) fn clearance(&self, t: f64) -> f64 {
+        match self.point(t) {
+            Some(q) => self.arc.distance(q),
+            None => f64::INFINITY,
+        }
+    }
+
+    /// The local extrema of the clearance strictly inside the edge.
+    fn find_knots(&self) -> Vec<Knot> {
+        let ts: Vec<f64> = (0..=SAMPLES).map(|k| k as f64 / SAMPLES as f64).collect();
+        let gs: Vec<f64> = ts.iter().map(|&t| self.clearance(t)).collect();
+        // flat: relative to the values compared (an edge to infinity
+        // reaches far larger ones)
+        let flat = |a: f64, b: f64| (a - b).abs() <= FLAT * (a.abs() + b.abs() + self.arc.radius());
+        // the steps that are not flat, with their direction (toward an end
+        // at infinity: rising); where the direction changes, the extremum
+        // lies among the samples between
+        let steps: Vec<(usize, bool)> = (1..gs.len())
+            .filter(|&k| !(gs[k] - gs[k - 1]).is_finite() || !flat(gs[k], gs[k - 1]))
+            .map(|k| (k, gs[k] > gs[k - 1] || (gs[k].is_infinite() && gs[k - 1].is_finite())))
+            .collect();
+        let mut knots = Vec::new();
+        for pair in steps.windows(2) {
+            let ((before, was), (after, rising)) = (pair[0], pair[1]);
+            if was != rising {
+                let peak = was;
+                let centre = extreme_sample(&gs, before - 1, after, peak);
+                knots.push(self.refine(&ts, centre, peak));
+            }
+        }
+        // a refinement may leave the order of close extrema: keep them by t
+        knots.sort_by(|a, b| a.t.total_cmp(&b.t));
+        knots
+    }
+
+    /// The extremum near sample `k` (a maximum if `peak`), by
+    /// golden-section search over the samples either side.
+    fn refine(&self, ts: &[f64], k: usize, peak: bool) -> Knot {
+        let (mut lo, mut hi) = (ts[k.saturating_sub(1)], ts[(k + 1).min(ts.len() - 1)]);
+        let better = |a: f64, b: f64| if peak { a > b } else { a < b };
+        let ratio = 0.5 * (5f64.sqrt() - 1.0);
+        let (mut x1, mut x2) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
+        let (mut g1, mut g2) = (self.clearance(x1), self.clearance(x2));
+        for _ in 0..60 {
+            if better(g1, g2) {
+                hi = x2;
+                x2 = x1;
+                g2 = g1;
+                x1 = hi - ratio * (hi - lo);
+                g1 = self.clearance(x1);
+            } else {
+                lo = x1;
+                x1 = x2;
+                g1 = g2;
+                x2 = lo + ratio * (hi - lo);
+                g2 = self.clearance(x2);
+            }
+        }
+        let t = 0.5 * (lo + hi);
+        // never at the ends: those are vertices
+        let t = t.clamp(f64::EPSILON, 1.0 - f64::EPSILON);
+        Knot { t, value: self.clearance(t), peak }
+    }
+
+    /// The parameter in `[a, b]` where the clearance, monotone there,
+    /// equals `level`, by bisection (to the precision of `f64`); an end
+    /// when it does not cross (rounding).
+    pub(super) fn root(&self, a: f64, b: f64, level: f64) -> f64 {
+        let (mut lo, mut hi) = (a, b);
+        let below_at_lo = self.clearance(lo) < level;
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if (self.clearance(mid) < level) == below_at_lo {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        0.5 * (lo + hi)
+    }
+}
+
+/// When `other` continues `arc` tangentially at an endpoint they share (a
+/// segment along the arc's tangent there, or an arc whose centre lies on
+/// the same line through that endpoint, e.g. of the same circle), the unit
+/// direction from the arc's centre through that endpoint: the edge
+/// between them lies along that ray.
+fn tangent_join(arc: &CircularArc, other: &Site) -> Option<Point> {
+    let c = arc.centre();
+    let [e0, e1] = [arc.start(), arc.end()];
+    let shared = match *other {
+        Site::Segment { a, b } => [a, b],
+        Site::Arc(o) => [o.start(), o.end()],
+        _ => return None,
+    };
+    let e = [e0, e1].into_iter().find(|e| shared.contains(e))?;
+    let radial = Point::new(e.x - c.x, e.y - c.y);
+    let length = radial.x.hypot(radial.y);
+    // the other's direction at `e` that must be parallel to the radius
+    // (a segment's normal, an arc's radius)
+    let across = match *other {
+        Site::Segment { a, b } => {
+            let f = if a == e { b } else { a };
+            Point::new(-(f.y - e.y), f.x - e.x)
+        }
+        Site::Arc(o) => Point::new(e.x - o.centre().x, e.y - o.centre().y),
+        _ => return None,
+    };
+    let cross = radial.x * across.y - radial.y * across.x;
+    let size = length * across.x.hypot(across.y);
+    (length > 0.0 && cross.abs() <= 1e-12 * size).then(|| Point::new(radial.x / length, radial.y / length))
+}
+
+/// Of samples `from..=to`, the one with the highest clearance (`peak`)
+/// or the lowest.
+fn extreme_sample(gs: &[f64], from: usize, to: usize, peak: bool) -> usize {
+    let range = from..to + 1;
+    let mut best = range.start;
+    for k in range {
+        if (peak && gs[k] > gs[best]) || (!peak && gs[k] < gs[best]) {
+            best = k;
+        }
+    }
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::CircularArc;
+
+    #[test]
+    fn an_ellipse_inside_an_arc_peaks_opposite_the_point() {
+        // a point at (0, 0.5) inside the unit circle's arc from 100° to
+        // 80° (the long way round): the bisector is the ellipse
+        // |q| + |q - p| = 1, clearance 0.25 at its top, 0.75 at its bottom
+        let at = |deg: f64| Point::new(deg.to_radians().cos(), deg.to_radians().sin());
+        let arc = CircularArc::through(at(100.0), at(270.0), at(80.0)).unwrap();
+        let p = Point::new(0.0, 0.5);
+        let sites = [Site::Arc(arc), Site::Point(p)];
+        // from the ellipse's right end to its left, the long way (through
+        // the bottom)
+        let x = 0.375; // |x| + sqrt(x² + 1/4) = 1 at y = 0
+        let track = ConicTrack::new(sites, ConicEnd::At(Point::new(-x, 0.0)), ConicEnd::At(Point::new(x, 0.0))).unwrap();
+        let peaks: Vec<&Knot> = track.knots.iter().filter(|k| k.peak).collect();
+        assert_eq!(peaks.len(), 1, "{:?}", track.knots);
+        assert!((peaks[0].value - 0.75).abs() < 1e-12, "{:?}", peaks[0]);
+        let bottom = track.point(peaks[0].t).unwrap();
+        assert!(bottom.x.abs() < 1e-6 && (bottom.y + 0.25).abs() < 1e-12, "{bottom:?}");
+        for t in [track.root(0.0, peaks[0].t, 0.7), track.root(peaks[0].t, 1.0, 0.7)] {
+            let q = track.point(t).unwrap();
+            assert!((q.distance(p) - 0.7).abs() < 1e-14 && (1.0 - q.distance(Point::new(0.0, 0.0)) - 0.7).abs() < 1e-14);
+        }
+    }
+}
