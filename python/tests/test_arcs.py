@@ -207,10 +207,13 @@ def test_arcs_with_a_line_geometry():
     d.validate()
 
 
-def test_arcs_with_polygons_are_refused_for_now():
-    # the library does not yet bound a domain by polygons beside arcs
-    with pytest.raises(segvoronoi.InvalidArgumentError, match="arcs"):
-        segvoronoi.voronoi(geometry=shapely.box(-10, -10, 10, 10), arcs=[[-1.0, 0.0, 1.0, 0.0, 1.0]])
+def test_arcs_inside_a_polygon_build():
+    # a domain bounded by a polygon, an arc obstacle inside it (issue 32:
+    # polygons together with arcs build)
+    d = segvoronoi.voronoi(geometry=shapely.box(-10, -10, 10, 10), arcs=[[-1.0, 0.0, 1.0, 0.0, 1.0]])
+    d.validate()
+    assert (d.site_kinds == 2).sum() == 1
+    assert d.site_arc_index[d.site_kinds == 2].tolist() == [0]
 
 
 def test_crossing_arcs_raise_intersecting_naming_both():
