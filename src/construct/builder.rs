@@ -8,7 +8,7 @@ use crate::diagram::Diagram;
 use crate::error::{Error, ErrorKind};
 use crate::geometry::{CircularArc, Point};
 
-use super::polygon_input::{name_rings, RingInput};
+use super::polygon_input::{name_rings, ChainPiece, RingInput};
 
 /// Most input points one diagram may have: every id must fit in 32 bits
 /// (a diagram of n points has up to 2n vertices of 3 half-edges each).
@@ -681,16 +681,6 @@ impl Builder {
         self.dropped_chain_points += points.len() - chain.len();
         Ok(made)
     }
-}
-
-/// What a piece of [`Builder::add_bulged_polyline`] became: the input index
-/// of a segment or of an arc.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ChainPiece {
-    /// A straight piece: this segment input index.
-    Segment(usize),
-    /// A curved piece: this arc input index.
-    Arc(usize),
 }
 
 /// The vertices of ring `ring` of polygon `polygon` (`add_bulged_polygon`)

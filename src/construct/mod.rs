@@ -42,7 +42,8 @@ mod state;
 mod status_treap;
 mod with_arcs;
 
-pub use builder::{Builder, ChainPiece, MAX_POINTS};
+pub use builder::{Builder, MAX_POINTS};
+pub use polygon_input::ChainPiece;
 #[cfg(feature = "fault-injection")]
 pub use restart::set_restart_budget;
 

@@ -4,8 +4,17 @@
 //! can name the ring. The builder's adders (`Builder::add_polygon`,
 //! `add_bulged_polygon`) make them.
 
-use super::builder::ChainPiece;
 use crate::error::{Error, ErrorKind};
+
+/// What a piece of [`Builder::add_bulged_polyline`](crate::Builder::add_bulged_polyline) became: the input index
+/// of a segment or of an arc.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ChainPiece {
+    /// A straight piece: this segment input index.
+    Segment(usize),
+    /// A curved piece: this arc input index.
+    Arc(usize),
+}
 
 /// One ring of a polygon as the builder keeps it: which polygon and ring
 /// it is, and the input indices of its segments, in ring order.
