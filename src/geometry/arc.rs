@@ -94,7 +94,7 @@ impl CircularArc {
         if via == start || via == end {
             return Err(invalid(format!("{}: the middle point repeats an endpoint", name())));
         }
-        if super::predicates::exact_orientation(start, via, end) == super::predicates::Orientation::Collinear {
+        if turn_through(start, via, end) == super::predicates::Orientation::Collinear {
             return Err(invalid(format!("{}: the three points are on one line (a segment)", name())));
         }
         CircularArc::new(start, end, Datum::Through(via), name)
@@ -104,9 +104,10 @@ impl CircularArc {
         let (centre, counter_clockwise, minor) = match datum {
             Datum::Bulge(b) => (bulge_centre(start, end, b), b > 0.0, b.abs() < 1.0),
             Datum::Through(m) => {
-                let ccw = super::predicates::exact_orientation(start, m, end) == super::predicates::Orientation::CounterClockwise;
+                let ccw = turn_through(start, m, end) == super::predicates::Orientation::CounterClockwise;
                 // less than a half turn: the angle at `m` is obtuse
-                (circumcentre(start, m, end), ccw, dot(m, start, end) < 0.0)
+                let [start_u, m_u, end_u] = near_unit([start, m, end]);
+                (circumcentre(start, m, end), ccw, dot(m_u, start_u, end_u) < 0.0)
             }
         };
         let radius = 0.5 * (centre.distance(start) + centre.distance(end));
@@ -349,6 +350,23 @@ impl CircularArc {
     }
 }
 
+/// The points multiplied by the power of two that brings their largest
+/// coordinate near 1: exact (unless a coordinate is `2^-1000` of the
+/// largest or less, where it rounds to what no product could see), so
+/// that the products of the exact predicates neither underflow near
+/// `1e-300` nor overflow near `1e300`.
+fn near_unit(points: [Point; 3]) -> [Point; 3] {
+    let largest = points.iter().fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+    let unit = super::site::unit_near_inverse(largest);
+    points.map(|p| Point::new(p.x * unit, p.y * unit))
+}
+
+/// The exact turn of `start → via → end`, at any magnitude.
+fn turn_through(start: Point, via: Point, end: Point) -> super::predicates::Orientation {
+    let [s, m, e] = near_unit([start, via, end]);
+    super::predicates::exact_orientation(s, m, e)
+}
+
 fn dot(c: Point, u: Point, v: Point) -> f64 {
     (u.x - c.x) * (v.x - c.x) + (u.y - c.y) * (v.y - c.y)
 }
@@ -395,6 +413,20 @@ mod tests {
 
     fn p(x: f64, y: f64) -> Point {
         Point::new(x, y)
+    }
+
+    #[test]
+    fn a_third_point_turns_the_same_way_at_every_magnitude() {
+        // the products of the orientation underflowed near 1e-200 (the arc
+        // came out clockwise, its complement) and overflowed near 1e200
+        for scale in [1.0, 0.1, 1e-200, 3e-300, 1e200, 1e300] {
+            let s = |x: f64, y: f64| p(x * scale, y * scale);
+            let major = CircularArc::through(s(0.5, 0.3), s(0.1, 0.0), s(0.5, -0.3)).unwrap();
+            assert!(major.is_counter_clockwise() && major.sweep() > std::f64::consts::PI, "{scale}: {major:?}");
+            let minor = CircularArc::through(s(0.5, 0.3), s(0.6, 0.0), s(0.5, -0.3)).unwrap();
+            assert!(!minor.is_counter_clockwise() && minor.sweep().abs() < std::f64::consts::PI, "{scale}: {minor:?}");
+            assert!(CircularArc::through(s(0.5, 0.3), s(0.5, 0.0), s(0.5, -0.3)).is_err(), "{scale}: collinear");
+        }
     }
 
     #[test]

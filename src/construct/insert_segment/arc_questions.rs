@@ -47,7 +47,7 @@ impl Construction {
             (false, false) => ArcContact::NoEnd,
         };
         let (centre, radius) = (self.store.position[v.index()], self.store.clearance[v.index()]);
-        arc_predicates::arc_depth(arc, contact, centre, radius)
+        arc_predicates::arc_depth(arc, contact, centre, radius, || sites.map(|s| self.site_geometry(s)))
     }
 
     /// The contact of a vertex with sites `sites` at the arc's endpoint

@@ -1,8 +1,10 @@
 //! The questions the insertion of an open arc asks (see `arcs`): the same
 //! four as for a segment (`segments::segment_predicates`), answered in
 //! floating point, with the tangent and curvature rules where the vertex
-//! touches one of the arc's endpoints.
+//! touches one of the arc's endpoints; a near tie of the arc with a
+//! vertex's circle is refined in big floats (`refined_depth`).
 
+use super::refined_depth;
 use crate::geometry::arc::CircularArc;
 use crate::geometry::curves::bisector::bisector_point;
 use crate::geometry::fault;
@@ -31,9 +33,22 @@ pub(crate) enum ArcContact {
 /// on the circle; the arc enters when its tangent there points into the
 /// disk, and where the tangent runs along the circle (a tangent join of a
 /// chain), when it curves into the disk more sharply than the circle.
-pub(crate) fn arc_depth(arc: &CircularArc, contact: ArcContact, centre: Point, radius: f64) -> SegmentDepth {
+pub(crate) fn arc_depth(
+    arc: &CircularArc,
+    contact: ArcContact,
+    centre: Point,
+    radius: f64,
+    sites: impl FnOnce() -> [Site; 3],
+) -> SegmentDepth {
     let depth = match contact {
-        ArcContact::NoEnd => arc.distance(centre) - radius,
+        ArcContact::NoEnd => {
+            let depth = arc.distance(centre) - radius;
+            if refined_depth::needs_refinement(depth, arc, centre, radius) {
+                refined_depth::refined_arc_depth(arc, &sites(), centre, radius).unwrap_or(depth)
+            } else {
+                depth
+            }
+        }
         ArcContact::BothEnds => {
             // on the bisector of the ends, a line through the arc's centre:
             // beyond the centre on the side of the arc's middle the arc is
@@ -230,23 +245,27 @@ mod tests {
         Point::new(x, y)
     }
 
+    fn no_sites() -> [Site; 3] {
+        unreachable!("clear depths are not refined")
+    }
+
     #[test]
     fn depth_from_outside_and_at_an_endpoint() {
         let arc = CircularArc::from_bulge([1.0, 0.0], [-1.0, 0.0], 1.0).unwrap();
         // a circle around (0, 3) of radius 1.5 reaches the arc's top (0, 1)
-        assert!(arc_depth(&arc, ArcContact::NoEnd, p(0.0, 3.0), 2.5).depth() < 0.0);
-        assert!(arc_depth(&arc, ArcContact::NoEnd, p(0.0, 3.0), 1.5).depth() > 0.0);
+        assert!(arc_depth(&arc, ArcContact::NoEnd, p(0.0, 3.0), 2.5, no_sites).depth() < 0.0);
+        assert!(arc_depth(&arc, ArcContact::NoEnd, p(0.0, 3.0), 1.5, no_sites).depth() > 0.0);
         // a circle through the start (1, 0) centred at (1, 2): the arc
         // leaves (1, 0) straight up, into it
         let at_start = ArcContact::OneEnd { end: p(1.0, 0.0), after: None, before: None };
-        assert!(arc_depth(&arc, at_start, p(1.0, 2.0), 2.0).depth() < 0.0);
-        assert!(arc_depth(&arc, at_start, p(1.0, -2.0), 2.0).depth() > 0.0);
+        assert!(arc_depth(&arc, at_start, p(1.0, 2.0), 2.0, no_sites).depth() < 0.0);
+        assert!(arc_depth(&arc, at_start, p(1.0, -2.0), 2.0, no_sites).depth() > 0.0);
         // tangent at the start: centred at (3, 0), radius 2, the arc curves away
-        assert!(arc_depth(&arc, at_start, p(3.0, 0.0), 2.0).depth() > 0.0);
+        assert!(arc_depth(&arc, at_start, p(3.0, 0.0), 2.0, no_sites).depth() > 0.0);
         // centred at (0.5, 0), radius 0.5: tangent, the arc's circle is larger: misses
-        assert!(arc_depth(&arc, at_start, p(0.5, 0.0), 0.5).depth() > 0.0);
+        assert!(arc_depth(&arc, at_start, p(0.5, 0.0), 0.5, no_sites).depth() > 0.0);
         // centred at (-1, 0), radius 2: tangent, the arc's circle (radius 1) is sharper: enters
-        assert!(arc_depth(&arc, at_start, p(-1.0, 0.0), 2.0).depth() < 0.0);
+        assert!(arc_depth(&arc, at_start, p(-1.0, 0.0), 2.0, no_sites).depth() < 0.0);
     }
 
     #[test]

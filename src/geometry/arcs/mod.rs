@@ -9,9 +9,13 @@
 //! Unlike segments, these decisions are taken in floating point with
 //! tolerances, not certified: the topology stays valid whatever they
 //! answer (the construction keeps P3–P5 by bookkeeping), but a near tie
-//! may be decided wrong. The answers use the same types as the segments'
+//! may be decided wrong. The conflict of an arc with a vertex's circle,
+//! the question asked most, is refined in big floats near a tie
+//! (`refined_depth`): there the answer is that of the exact circles to
+//! 2^-200, a tie below. The answers use the same types as the segments'
 //! (`segments::segment_predicates`), so the insertion asks both alike.
 
 pub(crate) mod arc_predicates;
 pub(crate) mod arc_vertex;
 pub(crate) mod at_infinity;
+pub(crate) mod refined_depth;
