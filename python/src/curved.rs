@@ -76,17 +76,25 @@ impl PieceNames {
         } else {
             return None;
         };
-        let named: Vec<String> = arcs
-            .iter()
-            .zip(error.indices())
-            .filter_map(|(arc, &i)| {
-                let arc = (*arc)?;
-                let [polygon, ring, row] = *self.names.get(&(arc, i))?;
-                let what = if arc { "arc" } else { "segment" };
-                Some(format!("{what} {i} is the piece from vertex {row} of polygon {polygon}, ring {ring}"))
-            })
-            .collect();
-        (!named.is_empty()).then(|| format!("{m} ({})", named.join("; ")))
+        // the library names a ring's segments by polygon and ring: those
+        // are told again with the vertex, the others added
+        let mut message = m.to_string();
+        let mut added = Vec::new();
+        for (arc, &i) in arcs.iter().zip(error.indices()) {
+            let Some(&[polygon, ring, row]) = arc.and_then(|arc| self.names.get(&(arc, i))) else { continue };
+            let what = if *arc == Some(true) { "arc" } else { "segment" };
+            let told = format!("{what} {i} is the piece from vertex {row} of polygon {polygon}, ring {ring}");
+            let library = format!("{what} {i} is in polygon {polygon}, ring {ring}");
+            if message.contains(&library) {
+                message = message.replacen(&library, &told, 1);
+            } else {
+                added.push(told);
+            }
+        }
+        if !added.is_empty() {
+            message = format!("{message} ({})", added.join("; "));
+        }
+        (message != m).then_some(message)
     }
 }
 
