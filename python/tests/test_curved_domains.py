@@ -131,7 +131,8 @@ def test_a_slots_largest_inscribed_circle_is_its_half_width(name):
     # its centre is on the segment between the half circles' centres
     c1, c2 = 0.5 * (ring[0, :2] + ring[3, :2]), 0.5 * (ring[1, :2] + ring[2, :2])
     u = (c2 - c1) / np.hypot(*(c2 - c1))
-    assert abs(float(np.cross(u, np.array([x, y]) - c1))) <= 1e-12 * np.hypot(*(c2 - c1)) + 1e-12 * half_width
+    w = np.array([x, y]) - c1
+    assert abs(float(u[0] * w[1] - u[1] * w[0])) <= 1e-12 * np.hypot(*(c2 - c1)) + 1e-12 * half_width
     assert -1e-9 <= float(u @ (np.array([x, y]) - c1)) <= np.hypot(*(c2 - c1)) + 1e-9
 
 
