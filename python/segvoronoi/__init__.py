@@ -20,10 +20,14 @@ True
 >>> round(L.buffer(-0.5, quad_segs=64).area, 3), round(L.buffer(0.5, quad_segs=64).area, 3)
 (9.054, 32.732)
 
+Polygons with circular arcs (DXF bulges) are :class:`segvoronoi.CurvedPolygon`;
+:func:`segvoronoi.offset_pieces` gives offsets as exact lines and arcs.
+
 Errors are subclasses of :class:`segvoronoi.Error`.
 """
 
-from ._api import max_inscribed_circle, medial_axis, offset, offsets
+from ._api import max_inscribed_circle, medial_axis, offset, offset_pieces, offsets
+from ._curved import PIECE_COLUMNS, CurvedPolygon, OffsetPieces
 from ._diagram import Diagram, voronoi
 from ._errors import (
     Error,
@@ -46,7 +50,11 @@ __all__ = [
     "max_inscribed_circle",
     "offset",
     "offsets",
+    "offset_pieces",
     "voronoi",
+    "CurvedPolygon",
+    "OffsetPieces",
+    "PIECE_COLUMNS",
     "Diagram",
     "Error",
     "IntersectingError",

@@ -1,6 +1,8 @@
 """The functions on geometries: medial axis, largest inscribed circle,
 offsets. Each takes one geometry or many (a list, an array, a GeoSeries);
-many are computed on every core with the GIL released."""
+many are computed on every core with the GIL released. A geometry is a
+shapely geometry, anything with ``__geo_interface__``, or a
+:class:`CurvedPolygon` (rings with circular arcs)."""
 
 from __future__ import annotations
 
@@ -11,11 +13,12 @@ import numpy as np
 import shapely
 
 from . import _native
+from ._curved import OffsetPieces, offset_pieces_of
 from ._errors import InvalidArgumentError, error_of
 from ._pack import is_many, pack_many, pack_one
 from ._shapes import multilinestrings, multipolygons
 
-__all__ = ["medial_axis", "max_inscribed_circle", "offset", "offsets"]
+__all__ = ["medial_axis", "max_inscribed_circle", "offset", "offsets", "offset_pieces"]
 
 Circle = Tuple[float, float, float]
 
@@ -53,15 +56,21 @@ def check_errors(errors: str) -> str:
     return errors
 
 
+def _raise_or_coerce(failures: list, many: bool, errors: str) -> list:
+    """Raises the first failure (by geometry) unless ``errors='coerce'``
+    with many geometries; returns the indices of the geometries that
+    failed."""
+    if failures and (errors == "raise" or not many):
+        raise min((error_of(f, many) for f in failures), key=lambda e: e.geometry_index or 0)
+    return [f[0] for f in failures]
+
+
 def _finish(results: np.ndarray, failures: list, many: bool, errors: str, like: Any) -> Any:
     """Raises the first failure (or with ``errors='coerce'`` sets the failed
     results to None); one result for one geometry, else an array, or a
     Series with the input's index for a pandas/GeoPandas input."""
-    if failures:
-        if errors == "raise" or not many:
-            raise min((error_of(f, many) for f in failures), key=lambda e: e.geometry_index or 0)
-        for f in failures:
-            results[f[0]] = None
+    for g in _raise_or_coerce(failures, many, errors):
+        results[g] = None
     if not many:
         return results[0]
     return _like(results, like)
@@ -109,8 +118,9 @@ def medial_axis(
         geom: a shapely geometry or anything with ``__geo_interface__``
             (polygons bound the domain by the even-odd rule; lines and
             points are obstacles, and without polygons the whole diagram's
-            edges between them are the axis), or a list, array or
-            GeoSeries of them.
+            edges between them are the axis), a :class:`CurvedPolygon`
+            (rings with circular arcs: beside an arc the axis is a conic,
+            sampled the same way), or a list, array or GeoSeries of them.
         tolerance: chord tolerance of the arcs, in input units (default
             1e-4 of the input's bounding-box diagonal).
         corner_angle: drop the branches into convex corners whose interior
@@ -139,6 +149,13 @@ def medial_axis(
     'MULTILINESTRING Z ((3 1 1, 1 1 1))'
     >>> [len(a.geoms) for a in medial_axis([box(0, 0, 4, 2), None], threads=2)]
     [5, 0]
+
+    A slot (two half circles of radius 1): its axis is the segment between
+    their centres, at clearance 1:
+
+    >>> from segvoronoi import CurvedPolygon
+    >>> medial_axis(CurvedPolygon([[0, 0, 0], [4, 0, 1], [4, 2, 0], [0, 2, 1]])).wkt
+    'MULTILINESTRING Z ((4 1 1, 0 1 1))'
     """
     tolerance = check_positive("tolerance", tolerance)
     corner_angle = check_corner_angle(corner_angle)
@@ -173,15 +190,24 @@ def max_inscribed_circle(
     >>> max_inscribed_circle([box(0, 0, 6, 6), box(1, 1, 3, 3)])
     array([[3., 3., 3.],
            [2., 2., 1.]])
+
+    A :class:`CurvedPolygon`: a 6 x 4 rectangle with corners rounded to
+    radius 1 about a hole of radius 0.5 at (2, 2). The circle touches the
+    bottom, the right side and the hole: centre ``(6 - r, r)``, ``r`` the
+    root of ``(4 - r)² + (r - 2)² = (r + 0.5)²``:
+
+    >>> from segvoronoi import CurvedPolygon
+    >>> q = 0.41421356237309503  # tan(pi / 8): a quarter circle
+    >>> shell = [[1, 0, 0], [5, 0, q], [6, 1, 0], [6, 3, q], [5, 4, 0], [1, 4, q], [0, 3, 0], [0, 1, q]]
+    >>> x, y, r = max_inscribed_circle(CurvedPolygon(shell, holes=[[[1.5, 2, 1], [2.5, 2, 1]]]))
+    >>> abs(r - (13 - 90**0.5) / 2) < 1e-12, abs(x - (6 - r)) < 1e-12, abs(y - r) < 1e-12
+    (True, True, True)
     """
     threads, errors = check_threads(threads), check_errors(errors)
     packed, many = _packed(geom)
     rows, failures = _native.inscribed_circle_batch(packed, bool(split_crossings), threads)
-    if failures:
-        if errors == "raise" or not many:
-            raise min((error_of(f, many) for f in failures), key=lambda e: e.geometry_index or 0)
-        for f in failures:
-            rows[f[0]] = np.nan
+    for g in _raise_or_coerce(failures, many, errors):
+        rows[g] = np.nan
     if many:
         return rows
     x, y, r = (float(v) for v in rows[0])
@@ -223,6 +249,14 @@ def offsets(
     >>> shrunk, grown = offsets(box(0, 0, 4, 2), [-0.5, 1.0], tolerance=1e-3)
     >>> round(shrunk.area, 9), round(grown.area, 3)
     (3.0, 23.138)
+
+    A :class:`CurvedPolygon`'s arcs are cut within ``tolerance`` too (see
+    :func:`offset_pieces` for the exact arcs); a disc of radius 2:
+
+    >>> from segvoronoi import CurvedPolygon
+    >>> disc = CurvedPolygon([[-2, 0, 1], [2, 0, 1]])
+    >>> [round(p.area / 3.141592653589793, 5) for p in offsets(disc, [-1, 1], tolerance=1e-7)]
+    [1.0, 9.0]
     """
     tolerance = check_positive("tolerance", tolerance)
     threads, errors = check_threads(threads), check_errors(errors)
@@ -233,11 +267,57 @@ def offsets(
     )
     flat = multipolygons(xy, ring_off, poly_off, multi_off)
     table = flat.reshape(-1, len(d)) if len(d) else np.empty((len(packed.gpt) - 1, 0), dtype=object)
-    if failures:
-        if errors == "raise" or not many:
-            raise min((error_of(f, many) for f in failures), key=lambda e: e.geometry_index or 0)
-        for f in failures:
-            table[f[0], :] = None
+    for g in _raise_or_coerce(failures, many, errors):
+        table[g, :] = None
+    return table if many else list(table[0])
+
+
+def offset_pieces(
+    geom: Any,
+    distances: Iterable[float],
+    *,
+    split_crossings: bool = False,
+    threads: Optional[int] = None,
+    errors: str = "raise",
+) -> Any:
+    """The offsets of a geometry as exact pieces: lines and circular arcs,
+    for whoever keeps arcs as arcs (CAM tool paths, DXF, G2/G3).
+
+    The same offsets as :func:`offsets` (same signs, same loops), not cut
+    into chords: each an :class:`OffsetPieces`, its loops ``(k, 9)`` arrays
+    of rows ``kind, x0, y0, x1, y1, cx, cy, radius, bulge`` (kind 0 a line,
+    1 an arc; :data:`PIECE_COLUMNS`), their nesting and which are holes.
+    ``bulged_rings()`` gives each loop as LWPOLYLINE vertices (x, y,
+    bulge), ``curved_polygon()`` the region as a :class:`CurvedPolygon`.
+
+    Returns:
+        A list of :class:`OffsetPieces`, one per distance; for many
+        geometries an ``(n, len(distances))`` object array (None where a
+        geometry failed, with ``errors='coerce'``).
+
+    A slot of half-width 1 shrunk by 0.25: two lines and two half circles
+    of radius 0.75 about the slot's centres (bulge 1: counter-clockwise):
+
+    >>> from segvoronoi import CurvedPolygon
+    >>> slot = CurvedPolygon([[0, 0, 0], [4, 0, 1], [4, 2, 0], [0, 2, 1]])
+    >>> (inner,) = offset_pieces(slot, [-0.25])
+    >>> loop = inner.loops[0]
+    >>> loop[:, 0].tolist()  # kinds
+    [1.0, 0.0, 1.0, 0.0]
+    >>> loop[loop[:, 0] == 1][:, 5:].tolist()  # cx, cy, radius, bulge
+    [[4.0, 1.0, 0.75, 1.0], [0.0, 1.0, 0.75, 1.0]]
+    >>> inner.holes.tolist(), inner.parents.tolist()
+    ([False], [-1])
+    """
+    threads, errors = check_threads(threads), check_errors(errors)
+    d = _distances(distances)
+    packed, many = _packed(geom)
+    *flat, failures = _native.offset_pieces_batch(packed, d, bool(split_crossings), threads)
+    table = np.empty((len(packed.gpt) - 1, len(d)), dtype=object)
+    for k, pieces in enumerate(offset_pieces_of(*flat, d)):
+        table[divmod(k, len(d))] = pieces  # one object: not unpacked as a sequence
+    for g in _raise_or_coerce(failures, many, errors):
+        table[g, :] = None
     return table if many else list(table[0])
 
 

@@ -10,6 +10,7 @@ import numpy as np
 import shapely
 
 from . import _native
+from ._curved import OffsetPieces, offset_pieces_of
 from ._api import check_corner_angle, check_errors, check_positive, check_threads
 from ._errors import InvalidArgumentError, InvalidGeometryError, error_of, raise_failure
 from ._pack import as_points, as_segments, is_many, pack_many, pack_one
@@ -36,8 +37,8 @@ def voronoi(
         segments: an ``(m, 2, 2)`` (or ``(m, 4)``) array of segments; they may
             share endpoints but not cross (:class:`IntersectingError`, naming
             both rows and a common point) unless ``split_crossings``.
-        geometry: a shapely geometry or ``__geo_interface__``; its polygons
-            bound the domain (for :meth:`Diagram.medial_axis` and
+        geometry: a shapely geometry, ``__geo_interface__`` or
+            :class:`CurvedPolygon`; its polygons bound the domain (for :meth:`Diagram.medial_axis` and
             :meth:`Diagram.offsets`), its lines and points are obstacles.
             Its points come after ``points`` and its segments after
             ``segments``.
@@ -53,9 +54,12 @@ def voronoi(
             may share endpoints with each other and with the segments but
             not cross, overlap or touch inside (:class:`IntersectingError`,
             naming both); an invalid row raises :class:`InvalidArcError`
-            naming it. Only with one geometry, and not yet with its
-            polygons nor with ``split_crossings``
-            (:class:`InvalidArgumentError`). See :attr:`Diagram.arc_circles`.
+            naming it. Only with one geometry, and not with
+            ``split_crossings`` (:class:`InvalidArgumentError`). See
+            :attr:`Diagram.arc_circles`. They are obstacles: to bound a
+            domain with arcs, give a :class:`CurvedPolygon` as
+            ``geometry`` (whose arcs come after these in
+            :attr:`Diagram.site_arc_index`).
         split_crossings: split crossings and overlaps by snap rounding
             instead of raising (the diagram is then that of the pieces).
 
@@ -407,6 +411,21 @@ class Diagram:
         if failures:
             raise_failure(failures[0])
         return list(multipolygons(xy, ring_off, poly_off, multi_off))
+
+    def offset_pieces(self, distances: Sequence[float]) -> List[OffsetPieces]:
+        """The offsets at several signed distances as exact lines and arcs
+        (see :func:`segvoronoi.offset_pieces`), from this diagram.
+
+        >>> from segvoronoi import CurvedPolygon
+        >>> d = voronoi(geometry=CurvedPolygon([[-2, 0, 1], [2, 0, 1]]))  # a disc of radius 2
+        >>> [p.loops[0][:, 7].tolist() for p in d.offset_pieces([-0.5, 1])]  # radii: two half circles
+        [[1.5, 1.5], [3.0, 3.0]]
+        """
+        d = np.ascontiguousarray(np.atleast_1d(np.asarray(distances, dtype=np.float64)))
+        *flat, failures = self._d.offset_pieces(d)
+        if failures:
+            raise_failure(failures[0])
+        return offset_pieces_of(*flat, d)
 
     def offset(self, distance: float, *, tolerance: Optional[float] = None) -> shapely.MultiPolygon:
         """The offset at one signed distance (see :meth:`offsets`)."""

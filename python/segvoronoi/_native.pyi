@@ -15,6 +15,9 @@ Failure = Tuple[int, str, str, List[int], Optional[Tuple[float, float]]]
 F64 = npt.NDArray[np.float64]
 I64 = npt.NDArray[np.int64]
 I8 = npt.NDArray[np.int8]
+Bool = npt.NDArray[np.bool_]
+# (rows (P, 9), loop offsets (L + 1,), holes (L,), parents (L,), offset offsets, failures)
+PieceArrays = Tuple[F64, I64, Bool, I64, I64, List[Failure]]
 
 def medial_axis_batch(
     packed: Packed,
@@ -34,6 +37,12 @@ def offsets_batch(
     split_crossings: bool,
     threads: Optional[int],
 ) -> Tuple[F64, I64, I64, I64, List[Failure]]: ...
+def offset_pieces_batch(
+    packed: Packed,
+    distances: F64,
+    split_crossings: bool,
+    threads: Optional[int],
+) -> PieceArrays: ...
 def build(packed: Packed, split_crossings: bool) -> Tuple[Optional[Diagram], Optional[Failure]]: ...
 def build_with_arcs(
     packed: Packed, arcs: F64, split_crossings: bool
@@ -61,5 +70,6 @@ class Diagram:
     ) -> Tuple[F64, I64]: ...
     def inscribed_circles(self) -> F64: ...
     def offsets(self, distances: F64, tolerance: Optional[float]) -> Tuple[F64, I64, I64, I64, List[Failure]]: ...
+    def offset_pieces(self, distances: F64) -> PieceArrays: ...
     def stats(self) -> dict: ...
     def validate(self) -> Optional[str]: ...

@@ -2,8 +2,9 @@
 arrays packed into the flat arrays the compiled module reads.
 
 A call on G geometries becomes one :class:`Packed`: per geometry its points,
-free segments, polygons (rings of points) and polylines, as coordinate
-arrays with offsets (the layout of ``shapely.to_ragged_array``). Packing is
+free segments, polygons (rings of points), polylines and curved polygons
+(:class:`CurvedPolygon`: rings of x, y, bulge), as coordinate arrays with
+offsets (the layout of ``shapely.to_ragged_array``). Packing is
 vectorised with shapely's array functions, so a column of a million parcels
 costs no Python loop per parcel.
 """
@@ -15,6 +16,7 @@ from typing import Any, NamedTuple, Optional, Sequence, Union
 import numpy as np
 import shapely
 
+from ._curved import CurvedPolygon
 from ._errors import InvalidGeometryError
 
 __all__ = ["Packed", "pack", "is_many", "as_geometry_array"]
@@ -41,13 +43,17 @@ class Packed(NamedTuple):
     line_xy: np.ndarray
     line_off: np.ndarray
     gline: np.ndarray
+    curve_xyb: np.ndarray
+    curve_ring_off: np.ndarray
+    curve_poly_off: np.ndarray
+    gcurve: np.ndarray
 
 
 def is_many(obj: Any) -> bool:
     """Whether ``obj`` is a collection of geometries (a list, tuple, numpy
     array, pandas or GeoPandas Series, GeoDataFrame or GeometryArray) rather
     than one geometry."""
-    if isinstance(obj, shapely.Geometry) or isinstance(obj, dict):
+    if isinstance(obj, (shapely.Geometry, dict, CurvedPolygon)):
         return False
     if isinstance(obj, (list, tuple, np.ndarray)):
         return True
@@ -55,8 +61,9 @@ def is_many(obj: Any) -> bool:
 
 
 def _to_shapely(obj: Any) -> Optional[shapely.Geometry]:
-    """One geometry as shapely (None stays None: an empty input)."""
-    if obj is None or isinstance(obj, shapely.Geometry):
+    """One geometry as shapely (None stays None: an empty input; a
+    :class:`CurvedPolygon` stays itself)."""
+    if obj is None or isinstance(obj, (shapely.Geometry, CurvedPolygon)):
         return obj
     if isinstance(obj, dict) or hasattr(obj, "__geo_interface__"):
         mapping = obj if isinstance(obj, dict) else obj.__geo_interface__
@@ -78,7 +85,7 @@ def _to_shapely(obj: Any) -> Optional[shapely.Geometry]:
 
 def as_geometry_array(many: Any) -> np.ndarray:
     """A collection of geometries as a 1-d object array of shapely
-    geometries (or None)."""
+    geometries, :class:`CurvedPolygon` or None."""
     if hasattr(many, "geometry") and type(many).__name__ == "GeoDataFrame":
         many = many.geometry
     values = getattr(many, "values", many)  # pandas: the array, not the index
@@ -87,7 +94,7 @@ def as_geometry_array(many: Any) -> np.ndarray:
     else:
         arr = np.empty(len(values), dtype=object)
         arr[:] = list(values)
-    if all(g is None or isinstance(g, shapely.Geometry) for g in arr):
+    if all(g is None or isinstance(g, (shapely.Geometry, CurvedPolygon)) for g in arr):
         return arr
     out = np.empty(len(arr), dtype=object)
     out[:] = [_to_shapely(g) for g in arr]
@@ -159,9 +166,15 @@ def as_segments(segments: Any) -> np.ndarray:
 
 
 def pack(geoms: Union[Sequence[Any], np.ndarray]) -> Packed:
-    """Packs ``geoms`` (shapely or None, see :func:`as_geometry_array`)."""
+    """Packs ``geoms`` (shapely, :class:`CurvedPolygon` or None, see
+    :func:`as_geometry_array`)."""
     arr = geoms if isinstance(geoms, np.ndarray) else as_geometry_array(geoms)
     n = len(arr)
+    curved = np.array([isinstance(g, CurvedPolygon) for g in arr], dtype=bool)
+    curves = _pack_curved(arr[curved], np.flatnonzero(curved), n)
+    if curved.any():
+        arr = arr.copy()
+        arr[curved] = None
     parts, owner = _explode(arr)
     types = shapely.get_type_id(parts)
 
@@ -183,7 +196,18 @@ def pack(geoms: Union[Sequence[Any], np.ndarray]) -> Packed:
 
     seg = np.zeros((0, 4), dtype=np.float64)
     gseg = np.zeros(n + 1, dtype=np.int64)
-    return Packed(pt_xy, gpt, seg, gseg, poly_xy, ring_off, poly_off, gpoly, line_xy, line_off, gline)
+    return Packed(pt_xy, gpt, seg, gseg, poly_xy, ring_off, poly_off, gpoly, line_xy, line_off, gline, *curves)
+
+
+def _pack_curved(polygons: np.ndarray, owner: np.ndarray, n: int):
+    """The rows, ring offsets, polygon offsets and per-geometry offsets of
+    curved polygons ``polygons`` of geometries ``owner`` (sorted) among
+    ``n``."""
+    rings = [r for p in polygons for r in p._rings]
+    xyb = np.concatenate(rings) if rings else np.zeros((0, 3), dtype=np.float64)
+    ring_off = _offsets(np.array([len(r) for r in rings], dtype=np.int64))
+    poly_off = _offsets(np.array([len(p._rings) for p in polygons], dtype=np.int64))
+    return np.ascontiguousarray(xyb), ring_off, poly_off, _per_geometry(owner, n)
 
 
 def pack_one(geom: Any) -> Packed:

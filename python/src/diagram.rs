@@ -6,9 +6,10 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use segvoronoi::{Diagram, EdgeEnd, EdgeId, Location, Point, SiteId, TopologyOptions};
 
+use crate::curved::Pieces;
 use crate::failure::FailureTuple;
 use crate::outputs::{self, AxisOptions, Polygons};
-use crate::{finish_polygons, index_array, offsets_into, ravel2, PolygonBatch};
+use crate::{finish_pieces, finish_polygons, index_array, offsets_into, pieces_into, ravel2, PieceBatch, PolygonBatch};
 
 /// The library's diagram; immutable and safe to read from many threads,
 /// so the queries release the GIL where they loop.
@@ -272,6 +273,24 @@ impl PyDiagram {
             }
         };
         finish_polygons(py, polygons, multi, errors)
+    }
+
+    /// The offsets at `distances` as exact pieces, packed as
+    /// `offset_pieces_batch` packs them for one geometry; a failure is
+    /// returned as the last element.
+    fn offset_pieces<'py>(&self, py: Python<'py>, distances: PyReadonlyArray1<'py, f64>) -> PyResult<PieceBatch<'py>> {
+        let distances: Vec<f64> = distances.as_array().iter().copied().collect();
+        let d = &self.inner;
+        let mut pieces = Pieces::default();
+        let errors: Vec<FailureTuple> = match py.detach(|| pieces_into(d, &distances, &mut pieces)) {
+            Ok(()) => Vec::new(),
+            Err(f) => {
+                pieces = Pieces::default();
+                pieces.push_empty(distances.len());
+                vec![f.to_tuple()]
+            }
+        };
+        finish_pieces(py, pieces, errors)
     }
 
     /// The build statistics, as a dict.

@@ -7,14 +7,16 @@
 
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::prelude::*;
-use segvoronoi::Diagram;
+use segvoronoi::{Diagram, Offset};
 
+mod curved;
 mod diagram;
 mod failure;
 mod input;
 mod outputs;
 mod parallel;
 
+use curved::Pieces;
 use failure::{Failure, FailureTuple};
 use input::{Batch, PackedArgs};
 use outputs::{AxisOptions, Lines, Polygons};
@@ -22,8 +24,24 @@ use outputs::{AxisOptions, Lines, Polygons};
 /// Builds geometry `g` of `batch` (errors carry the geometry index when the
 /// call is vectorised).
 fn build_one(batch: &Batch, g: usize, split_crossings: bool) -> Result<Diagram, Failure> {
-    let builder = batch.builder(g, split_crossings).map_err(|e| Failure::of(&e, None, Some(g)))?;
-    builder.build().map_err(|e| Failure::of(&e, Some(&builder), Some(g)))
+    build_with(batch, g, split_crossings, |_| Ok(()))
+}
+
+/// Builds geometry `g` of `batch` with `extra` added after its free
+/// segments (see `Batch::builder`); an input conflict in a curved polygon
+/// names the pieces by polygon, ring and vertex.
+fn build_with(
+    batch: &Batch,
+    g: usize,
+    split_crossings: bool,
+    extra: impl FnOnce(&mut segvoronoi::Builder) -> Result<(), Failure>,
+) -> Result<Diagram, Failure> {
+    let (builder, names) = batch.builder(g, split_crossings, extra).map_err(|f| f.at(g))?;
+    builder.build().map_err(|e| {
+        let mut f = Failure::of(&e, Some(&builder), Some(g));
+        f.message = names.name(&e).unwrap_or(f.message);
+        f
+    })
 }
 
 fn panicked(g: usize, message: String) -> Failure {
@@ -113,9 +131,21 @@ pub(crate) type PolygonBatch<'py> = (
     Vec<FailureTuple>,
 );
 
+/// The offsets of one diagram at every distance, in order: `each(Some)`
+/// per offset, `each(None)` for a negative distance without a domain
+/// (empty, as shapely's buffer of a line is).
+fn each_offset(diagram: &Diagram, distances: &[f64], mut each: impl FnMut(Option<&Offset>)) -> Result<(), Failure> {
+    let asked: Vec<f64> = distances.iter().copied().filter(|&d| diagram.has_domain() || !(d < 0.0)).collect();
+    let offsets = diagram.offsets(&asked).map_err(|e| Failure::of(&e, None, None))?;
+    let mut next = offsets.iter();
+    for &d in distances {
+        each((diagram.has_domain() || !(d < 0.0)).then(|| next.next().expect("one per distance asked")));
+    }
+    Ok(())
+}
+
 /// The offsets of one diagram at every distance, into `out`, one
-/// multipolygon per distance (`multi` gets its polygon offsets). Without a
-/// domain a negative distance is empty, as shapely's buffer of a line is.
+/// multipolygon per distance (`multi` gets its polygon offsets).
 pub(crate) fn offsets_into(
     diagram: &Diagram,
     distances: &[f64],
@@ -124,16 +154,35 @@ pub(crate) fn offsets_into(
     multi: &mut Vec<usize>,
 ) -> Result<(), Failure> {
     let tolerance = tolerance.unwrap_or_else(|| outputs::default_tolerance(diagram));
-    let asked: Vec<f64> = distances.iter().copied().filter(|&d| diagram.has_domain() || !(d < 0.0)).collect();
-    let offsets = diagram.offsets(&asked).map_err(|e| Failure::of(&e, None, None))?;
-    let mut next = offsets.iter();
-    for &d in distances {
+    each_offset(diagram, distances, |offset| {
         multi.push(out.poly_off.len());
-        if diagram.has_domain() || !(d < 0.0) {
-            outputs::offset_polygons(next.next().expect("one per distance asked"), tolerance, out);
+        if let Some(offset) = offset {
+            outputs::offset_polygons(offset, tolerance, out);
         }
-    }
-    Ok(())
+    })
+}
+
+/// The offsets of one diagram at every distance as exact pieces.
+pub(crate) fn pieces_into(diagram: &Diagram, distances: &[f64], out: &mut Pieces) -> Result<(), Failure> {
+    each_offset(diagram, distances, |offset| match offset {
+        Some(offset) => out.push(offset),
+        None => out.push_empty(1),
+    })
+}
+
+/// `job` on the diagram of each geometry, on up to `threads` threads: the
+/// results in order, None where the geometry failed, and the failures.
+fn per_geometry<T: Send>(
+    py: Python<'_>,
+    batch: &Batch,
+    split_crossings: bool,
+    threads: Option<usize>,
+    job: impl Fn(&Diagram) -> Result<T, Failure> + Sync,
+) -> PyResult<(Vec<Option<T>>, Vec<FailureTuple>)> {
+    let one = |g: usize| build_one(batch, g, split_crossings).and_then(|d| job(&d).map_err(|f| f.at(g)));
+    let results = parallel::map(py, batch.len(), threads, one, |g, m| Err(panicked(g, m)))?;
+    let errors = failures(&results);
+    Ok((results.into_iter().map(Result::ok).collect(), errors))
 }
 
 pub(crate) fn finish_polygons(
@@ -163,28 +212,78 @@ fn offsets_batch<'py>(
 ) -> PyResult<PolygonBatch<'py>> {
     let batch = Batch::from_args(&packed)?;
     let distances: Vec<f64> = distances.as_array().iter().copied().collect();
-    let job = |g: usize| -> Result<(Polygons, Vec<usize>), Failure> {
-        let diagram = build_one(&batch, g, split_crossings)?;
+    let (results, errors) = per_geometry(py, &batch, split_crossings, threads, |diagram| {
         let (mut polygons, mut multi) = (Polygons::default(), Vec::new());
-        offsets_into(&diagram, &distances, tolerance, &mut polygons, &mut multi).map_err(|f| f.at(g))?;
+        offsets_into(diagram, &distances, tolerance, &mut polygons, &mut multi)?;
         Ok((polygons, multi))
-    };
-    let results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
-    let errors = failures(&results);
+    })?;
     let (mut all, mut multi) = (Polygons::default(), Vec::new());
     for r in results {
         match r {
-            Ok((p, m)) => {
+            Some((p, m)) => {
                 let (xy0, ring0, poly0) = (all.xy.len(), all.ring_off.len(), all.poly_off.len());
                 all.xy.extend(p.xy);
                 all.ring_off.extend(p.ring_off.iter().map(|o| o + xy0));
                 all.poly_off.extend(p.poly_off.iter().map(|o| o + ring0));
                 multi.extend(m.iter().map(|o| o + poly0));
             }
-            Err(_) => multi.extend(std::iter::repeat(all.poly_off.len()).take(distances.len())),
+            None => multi.extend(std::iter::repeat(all.poly_off.len()).take(distances.len())),
         }
     }
     finish_polygons(py, all, multi, errors)
+}
+
+pub(crate) type PieceBatch<'py> = (
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray1<i64>>,
+    Bound<'py, PyArray1<bool>>,
+    Bound<'py, PyArray1<i64>>,
+    Bound<'py, PyArray1<i64>>,
+    Vec<FailureTuple>,
+);
+
+/// Exact pieces as arrays: `(rows (P, 9), loop_offsets, holes, parents,
+/// offset_offsets, failures)` (see `curved::Pieces`).
+pub(crate) fn finish_pieces(py: Python<'_>, mut all: Pieces, errors: Vec<FailureTuple>) -> PyResult<PieceBatch<'_>> {
+    all.loop_off.push(all.rows.len());
+    all.offset_off.push(all.loop_off.len() - 1);
+    Ok((
+        ravel2(py, all.rows)?,
+        index_array(py, all.loop_off),
+        all.hole.into_pyarray(py),
+        all.parent.into_pyarray(py),
+        index_array(py, all.offset_off),
+        errors,
+    ))
+}
+
+/// The offsets of each geometry at each distance as exact pieces (lines
+/// and arcs): `G * D` offsets, geometry-major; a failed geometry's are
+/// empty.
+#[pyfunction]
+#[pyo3(signature = (packed, distances, split_crossings, threads))]
+fn offset_pieces_batch<'py>(
+    py: Python<'py>,
+    packed: PackedArgs<'py>,
+    distances: PyReadonlyArray1<'py, f64>,
+    split_crossings: bool,
+    threads: Option<usize>,
+) -> PyResult<PieceBatch<'py>> {
+    let batch = Batch::from_args(&packed)?;
+    let distances: Vec<f64> = distances.as_array().iter().copied().collect();
+    let (results, errors) = per_geometry(py, &batch, split_crossings, threads, |diagram| {
+        let mut pieces = Pieces::default();
+        pieces_into(diagram, &distances, &mut pieces)?;
+        Ok(pieces)
+    })?;
+    let mut all = Pieces::default();
+    for r in results {
+        match r {
+            Some(pieces) => all.extend(pieces),
+            None => all.push_empty(distances.len()),
+        }
+    }
+    finish_pieces(py, all, errors)
 }
 
 /// Builds the diagram of one packed geometry: `(Diagram, None)` or
@@ -216,7 +315,8 @@ fn build<'py>(
 
 /// Builds the diagram of one packed geometry with circular arcs `arcs`
 /// (`(k, 5)` rows `[start_x, start_y, end_x, end_y, bulge]`, added after
-/// the geometry, so that their input indices are the rows): `(Diagram,
+/// its points and free segments and before its polygons, so that their
+/// input indices are the rows): `(Diagram,
 /// None)` or `(None, failure)`. An invalid row fails with the library's
 /// error and the row as its index.
 #[pyfunction]
@@ -233,14 +333,7 @@ fn build_with_arcs<'py>(
         return Err(pyo3::exceptions::PyValueError::new_err(format!("arcs: expected 5 columns, got {}", view.ncols())));
     }
     let rows: Vec<[f64; 5]> = view.rows().into_iter().map(|r| [r[0], r[1], r[2], r[3], r[4]]).collect();
-    let job = |_: usize| -> Result<Diagram, Failure> {
-        let mut builder = if batch.len() == 0 {
-            let mut b = segvoronoi::Builder::new();
-            b.split_crossings(split_crossings);
-            b
-        } else {
-            batch.builder(0, split_crossings).map_err(|e| Failure::of(&e, None, None))?
-        };
+    let add_arcs = |builder: &mut segvoronoi::Builder| -> Result<(), Failure> {
         for (i, r) in rows.iter().enumerate() {
             let invalid = |e: &segvoronoi::Error| {
                 let mut f = Failure::of(e, None, None);
@@ -251,7 +344,16 @@ fn build_with_arcs<'py>(
             let arc = segvoronoi::CircularArc::from_bulge([r[0], r[1]], [r[2], r[3]], r[4]).map_err(|e| invalid(&e))?;
             builder.add_arc(arc).map_err(|e| invalid(&e))?;
         }
-        builder.build().map_err(|e| Failure::of(&e, Some(&builder), None))
+        Ok(())
+    };
+    let job = |_: usize| -> Result<Diagram, Failure> {
+        if batch.len() == 0 {
+            let mut builder = segvoronoi::Builder::new();
+            builder.split_crossings(split_crossings);
+            add_arcs(&mut builder)?;
+            return builder.build().map_err(|e| Failure::of(&e, Some(&builder), None));
+        }
+        build_with(&batch, 0, split_crossings, add_arcs)
     };
     let mut result = parallel::map(py, 1, Some(1), job, |g, m| Err(panicked(g, m)))?;
     match result.pop().expect("one job") {
@@ -291,6 +393,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(medial_axis_batch, m)?)?;
     m.add_function(wrap_pyfunction!(inscribed_circle_batch, m)?)?;
     m.add_function(wrap_pyfunction!(offsets_batch, m)?)?;
+    m.add_function(wrap_pyfunction!(offset_pieces_batch, m)?)?;
     m.add_function(wrap_pyfunction!(build, m)?)?;
     m.add_function(wrap_pyfunction!(build_batch, m)?)?;
     m.add_function(wrap_pyfunction!(build_with_arcs, m)?)?;

@@ -59,7 +59,10 @@ pub fn medial_axis(diagram: &Diagram, options: AxisOptions) -> Lines {
         if pieces.is_empty() {
             continue;
         }
-        if let Some(points) = diagram.sample_chain(&Chain { pieces, closed: chain.closed }, tolerance) {
+        if let Some(mut points) = diagram.sample_chain(&Chain { pieces, closed: chain.closed }, tolerance) {
+            // pieces of no length (where the axis meets an arc's centre,
+            // or a vertex of more than three sites) repeat a point
+            points.dedup();
             if points.len() >= 2 {
                 out.off.push(out.xyz.len());
                 out.xyz.extend(points);
