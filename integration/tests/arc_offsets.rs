@@ -115,6 +115,44 @@ struct Seen {
     worst_hausdorff: f64,
 }
 
+/// The pieces of `offset` (of `d` at `distance`): closed loops, every end
+/// at the distance from its site (within `tol`), no piece that is a point
+/// but a loop's one whole circle (a few ulps of arc would be a whole circle
+/// to G-code that prints its ends rounded), arcs beside arcs concentric at
+/// the arc's radius plus or minus the distance, the band on their left
+/// where the offset grows.
+fn check_pieces(what: &str, d: &Diagram, offset: &Offset, distance: f64, tol: f64, seen: &mut Seen) {
+    let r = distance.abs();
+    for (l, lp) in offset.loops.iter().enumerate() {
+        assert!(!lp.pieces.is_empty(), "{what}: loop {l} empty");
+        for (k, piece) in lp.pieces.iter().enumerate() {
+            let next = lp.pieces[(k + 1) % lp.pieces.len()];
+            assert_eq!(piece.to(), next.from(), "{what}: loop {l} opens after piece {k}");
+            let whole_circle = lp.pieces.len() == 1 && piece.from() == piece.to();
+            assert!(
+                whole_circle || piece.from().distance(piece.to()) > 1e-9 * r,
+                "{what}: loop {l} piece {k} {piece:?} is a point"
+            );
+            let site = d.site(piece.site()).unwrap();
+            for end in [piece.from(), piece.to()] {
+                let off = (self::distance(&site, end) - r).abs();
+                assert!(off <= tol, "{what}: loop {l} piece {k} {piece:?} ends {off:e} off the distance from {site:?}");
+            }
+            if let (Site::Arc(arc), OffsetPiece::Arc { centre, radius, counter_clockwise, .. }) = (site, *piece) {
+                assert_eq!(centre, arc.centre(), "{what}: a piece along an arc about another centre");
+                let convex = (radius - (arc.radius() + r)).abs() <= tol;
+                let concave = (radius - (arc.radius() - r)).abs() <= tol;
+                assert!(convex || concave, "{what}: radius {radius} beside an arc of radius {}", arc.radius());
+                if distance > 0.0 {
+                    assert_eq!(counter_clockwise, convex, "{what}: the band is on the left of a piece");
+                }
+                seen.arc_pieces += 1;
+                seen.concave_pieces += usize::from(concave);
+            }
+        }
+    }
+}
+
 /// Checks the offset of `pieces` at `d` (see the module doc); `size` is
 /// the input's extent.
 fn check(name: &str, pieces: &[Piece], d: &Diagram, reference: &Diagram, distance_d: f64, size: f64, seen: &mut Seen) {
@@ -122,28 +160,7 @@ fn check(name: &str, pieces: &[Piece], d: &Diagram, reference: &Diagram, distanc
     let offset: Offset = d.offset(distance_d).unwrap_or_else(|e| panic!("{what}: {e}"));
     let want: Offset = reference.offset(distance_d).unwrap();
     let sites: Vec<Site> = d.site_ids().map(|s| d.site(s).unwrap()).collect();
-    let tol = 1e-9 * (size + distance_d);
-    for (l, lp) in offset.loops.iter().enumerate() {
-        assert!(!lp.pieces.is_empty(), "{what}: loop {l} empty");
-        for (k, piece) in lp.pieces.iter().enumerate() {
-            let next = lp.pieces[(k + 1) % lp.pieces.len()];
-            assert_eq!(piece.to(), next.from(), "{what}: loop {l} opens after piece {k}");
-            let site = d.site(piece.site()).unwrap();
-            for end in [piece.from(), piece.to()] {
-                let off = (distance(&site, end) - distance_d).abs();
-                assert!(off <= tol, "{what}: loop {l} piece {k} {piece:?} ends {off:e} off the distance from {site:?}");
-            }
-            if let (Site::Arc(arc), OffsetPiece::Arc { centre, radius, counter_clockwise, .. }) = (site, *piece) {
-                assert_eq!(centre, arc.centre(), "{what}: a piece along an arc about another centre");
-                let convex = (radius - (arc.radius() + distance_d)).abs() <= tol;
-                let concave = (radius - (arc.radius() - distance_d)).abs() <= tol;
-                assert!(convex || concave, "{what}: radius {radius} beside an arc of radius {}", arc.radius());
-                assert_eq!(counter_clockwise, convex, "{what}: the band is on the left of a piece");
-                seen.arc_pieces += 1;
-                seen.concave_pieces += usize::from(concave);
-            }
-        }
-    }
+    check_pieces(&what, d, &offset, distance_d, 1e-9 * (size + distance_d), seen);
     // every point of every polyline at the distance from the nearest site
     let polylines = offset.polylines(1e-5 * size).unwrap();
     for p in polylines.iter().flatten() {
@@ -502,25 +519,7 @@ fn check_domain_offsets(name: &str, rings: &[Ring], distances: &[f64], size: f64
         let what = format!("{name} at {r}");
         let offset = d.offset(r).unwrap_or_else(|e| panic!("{what}: {e}"));
         let want = reference.offset(r).unwrap();
-        let tol = 1e-9 * (size + r.abs());
-        for (l, lp) in offset.loops.iter().enumerate() {
-            for (k, piece) in lp.pieces.iter().enumerate() {
-                assert_eq!(piece.to(), lp.pieces[(k + 1) % lp.pieces.len()].from(), "{what}: loop {l} opens");
-                let site = d.site(piece.site()).unwrap();
-                for end in [piece.from(), piece.to()] {
-                    let off = (distance(&site, end) - r.abs()).abs();
-                    assert!(off <= tol, "{what}: loop {l} piece {k} {piece:?} ends {off:e} off the distance");
-                }
-                if let (Site::Arc(arc), OffsetPiece::Arc { centre, radius, .. }) = (site, *piece) {
-                    assert_eq!(centre, arc.centre(), "{what}");
-                    assert!(
-                        (radius - (arc.radius() + r.abs())).abs() <= tol || (radius - (arc.radius() - r.abs())).abs() <= tol,
-                        "{what}: radius {radius}"
-                    );
-                    seen.arc_pieces += 1;
-                }
-            }
-        }
+        check_pieces(&what, &d, &offset, r, 1e-9 * (size + r.abs()), &mut seen);
         assert_eq!(offset.loops.len(), want.loops.len(), "{what}: loops, against the chords'");
         for (a, b) in offset.loops.iter().zip(&want.loops) {
             assert_eq!(a.hole, b.hole, "{what}: holes");

@@ -371,9 +371,9 @@ impl Diagram {
         Offset { distance, loops }
     }
 
-    /// Which spans are nothing: a span whose ends meet, with the cell
-    /// boundary between them going nowhere (a whole circle if it goes
-    /// round), or one that rounding left the wrong way round. The end of a
+    /// Which spans are nothing: a span whose ends are one point (within
+    /// `COINCIDENT` of the distance), with the cell boundary between them
+    /// going nowhere (a whole circle if it goes round). The end of a
     /// dropped span moves to its start, so the pieces either side still
     /// meet.
     fn drop_empty_spans(&self, traced: &mut trace::Traced, r: f64) -> Vec<bool> {
@@ -386,7 +386,6 @@ impl Diagram {
             if from.distance(to) > near {
                 continue;
             }
-            let circle = self.circle_of_span(span.site, from, to, r);
             let centre = self.sites[span.site.index()].as_point();
             // Only an isolated point's cell can hold a whole circle: the
             // cell of a segment's endpoint lies in the half-plane beyond
@@ -397,9 +396,14 @@ impl Diagram {
             whole[k] = centre.is_some() && !self.is_segment_endpoint(span.site) && self.span_leaves(span, from, near);
             let whole = whole[k];
             // (an arc's cell neither: it lies in the arc's cone, and a span
-            // of it sweeps at most the arc's own sweep, less than a turn)
-            let backwards = circle.is_some_and(|(c, _, ccw)| approximation::sweep(c, from, to, ccw) > std::f64::consts::PI);
-            if !whole && (from == to || backwards) {
+            // of it sweeps at most the arc's own sweep, less than a turn).
+            // Any other span whose ends are one point is nothing, whether
+            // they are equal, a few ulps apart (the trace past the joint of
+            // a side and the arc continuing it along its tangent: a sliver
+            // of the joint's cell) or the wrong way round: kept, a tiny arc
+            // would be a whole circle to a program that prints its ends
+            // rounded (G-code).
+            if !whole {
                 empty[k] = true;
                 moved_to[span.to as usize] = span.from;
             }
