@@ -799,3 +799,54 @@ fn random_curved_domains_against_chords() {
     eprintln!("random curved domains: {built} built, {refused} refused by the arcs' vertex check");
     assert!(built >= 12, "{built} built, {refused} refused");
 }
+
+/// Holes bounded by shallow arcs, whose circles reach far beyond the shell
+/// (a letter's counter as biarcs: radius 585 for a hole 240 wide). The
+/// shell's box held the hole's circles, not the hole: the hole counted as
+/// outside its shell and every cell it touches was located on the wrong
+/// side (offsets as open loops of negative area, the inscribed circle a
+/// third of its size). Minimised from DejaVu Sans' B as biarcs; then a
+/// family of such holes, both ways round, in shells of both kinds.
+#[test]
+fn holes_of_shallow_arcs_inside_their_shell() {
+    let p = Point::new;
+    let letter_b = vec![
+        vec![(p(201.0, 1493.0), 0.0), (p(1260.0, 418.0), 0.0), (p(201.0, 0.0), 0.0)],
+        vec![
+            (p(968.5, 646.5), 0.10895931823946167),
+            (p(882.303761736809, 692.0082498286635), 0.06727698425695114),
+            (p(727.0, 713.0), 0.0),
+        ],
+    ];
+    check_domain_offsets("letter B's counter", &letter_b, &[-20.0, -5.0, 5.0, 40.0], 1500.0);
+    check_medial_axis("letter B's counter", &letter_b, 1500.0);
+    let mut rng = SplitMix64(585);
+    for case in 0..12 {
+        let shell = if case % 2 == 0 {
+            rounded_ring(0.0, 0.0, 12.0, 8.0, 1.5, rng.unit() < 0.5)
+        } else {
+            let square = vec![(p(0.0, 0.0), 0.0), (p(12.0, 0.0), 0.0), (p(12.0, 8.0), 0.0), (p(0.0, 8.0), 0.0)];
+            if rng.unit() < 0.5 {
+                square
+            } else {
+                reverse_ring(&square)
+            }
+        };
+        let mut rings = vec![shell];
+        // in each of three cells, a lens or a D of arcs bulging by 0.02 to 0.15
+        for cell in 0..3 {
+            let (x, y) = (1.0 + 3.6 * cell as f64 + 0.5 * rng.unit(), 2.0 + 2.0 * rng.unit());
+            let (w, h) = (1.8 + 0.8 * rng.unit(), 1.0 + 1.2 * rng.unit());
+            let shallow = |rng: &mut SplitMix64| 0.02 + 0.13 * rng.unit();
+            let hole = if rng.unit() < 0.5 {
+                vec![(p(x, y), shallow(&mut rng)), (p(x + w, y + 0.3 * h), shallow(&mut rng)), (p(x + 0.4 * w, y + h), 0.0)]
+            } else {
+                vec![(p(x, y), -shallow(&mut rng)), (p(x + w, y), shallow(&mut rng)), (p(x + w, y + h), 0.0), (p(x, y + h), 0.0)]
+            };
+            rings.push(if rng.unit() < 0.5 { hole.clone() } else { reverse_ring(&hole) });
+        }
+        let distances: Vec<f64> = (0..4).map(|k| if k % 2 == 0 { -1.0 } else { 1.0 } * (0.05 + 0.6 * rng.unit())).collect();
+        check_domain_offsets(&format!("shallow holes {case}"), &rings, &distances, 12.0);
+        check_medial_axis(&format!("shallow holes {case}"), &rings, 12.0);
+    }
+}

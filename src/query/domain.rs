@@ -617,10 +617,12 @@ impl Diagram {
                     })
                     .collect();
                 let corners: Vec<SiteId> = corners;
-                // an arc may bulge beyond its corners: its circle's box
+                // an arc may bulge beyond its corners: its own box (not its
+                // circle's, which may reach far beyond the ring: a shallow
+                // arc of a hole would then seem to stick out of its shell)
                 let reach = segments.iter().filter_map(|s| self.arc_of(*s)).flat_map(|arc| {
-                    let (c, r) = (arc.centre(), arc.radius());
-                    [Point::new(c.x - r, c.y - r), Point::new(c.x + r, c.y + r)]
+                    let [x0, x1, y0, y1] = crate::geometry::input::arc_contact::arc_box(&arc);
+                    [Point::new(x0, y0), Point::new(x1, y1)]
                 });
                 let bounds = Bounds::of(corners.iter().map(|&c| self.point_of(c)).chain(reach));
                 Ring { corners, segments, curved, left_inside: false, bounds, depth: 0, parent: None }
@@ -655,12 +657,15 @@ impl Diagram {
     }
 
     /// The other rings that contain ring `r` (rings neither cross nor
-    /// overlap, so one corner of `r` not on another ring tells).
+    /// overlap, so one corner of `r` not on another ring tells). A ring
+    /// that contains `r` holds its corners: their box, exact, is what the
+    /// other's box (its arcs' widened) must hold.
     fn enclosing_rings(&self, rings: &[Ring], r: usize) -> Vec<usize> {
         let corners = &rings[r].corners;
         let n = corners.len();
+        let corner_box = Bounds::of(corners.iter().map(|&c| self.point_of(c)));
         (0..rings.len())
-            .filter(|&other| other != r && rings[other].bounds.holds(&rings[r].bounds))
+            .filter(|&other| other != r && rings[other].bounds.holds(&corner_box))
             .filter(|&other| {
                 let by_corner = corners
                     .iter()
