@@ -388,7 +388,7 @@ mod tests {
             "POINT (7 7)\nCOMPOUNDCURVE((0 0, 4 0), CIRCULARSTRING(4 0, 5 1, 4 2), (4 2, 0 2), CIRCULARSTRING(0 2, -1 1, 0 0))\n\
                     CURVEPOLYGON(CIRCULARSTRING(10 0, 12 0, 10 0), (10.5 0, 11 0.5, 11.5 0, 10.5 0))";
         let input = Input::Shapes(wkt::parse(text).unwrap());
-        assert!(input.has_arcs() && input.rings().is_empty());
+        assert!(input.has_arcs() && input.rings().len() == 2);
         let mut b = Builder::new();
         let origins = input.add_to(&mut b).unwrap();
         assert_eq!((b.point_count(), b.segment_count(), b.arc_count()), (1, 5, 4));
@@ -406,5 +406,17 @@ mod tests {
         assert_eq!(origins.of_arc(3).as_deref(), Some("geometry 2 (a curve polygon), ring 0"));
         assert_eq!(origins.of_segment(4).as_deref(), Some("geometry 2 (a curve polygon), ring 1"));
         assert_eq!(origins.of_segment(0).as_deref(), Some("geometry 1 (a curve)"));
+        assert_eq!(b.build().map(|d| d.has_domain()), Ok(true));
+    }
+
+    #[test]
+    fn a_refused_ring_of_a_curve_polygon_is_named() {
+        // ring 1 goes there and back: two distinct vertices, no arc
+        let text = "POINT (9 9)\nCURVEPOLYGON(CIRCULARSTRING(0 0, 1 1, 2 0, 1 -1, 0 0), (0.5 0, 1.5 0, 0.5 0))";
+        let input = Input::Shapes(wkt::parse(text).unwrap());
+        let mut b = Builder::new();
+        let e = input.add_to(&mut b).unwrap_err();
+        assert!(e.starts_with("geometry 1 (a curve polygon): polygon 0, ring 1"), "{e}");
+        assert_eq!((b.segment_count(), b.arc_count()), (0, 0), "nothing of the polygon added");
     }
 }
