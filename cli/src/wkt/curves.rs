@@ -428,8 +428,8 @@ impl<'a> Reader<'a> {
     }
 
     /// A CURVEPOLYGON's body: closed curves. With an arc among them its
-    /// rings are obstacles (no domain with arcs yet); without, it is a
-    /// polygon like any other.
+    /// rings are chains of segments and arcs (a polygon bounded by arcs);
+    /// without, it is a polygon like any other.
     fn curve_polygon(&mut self, dim: Option<usize>) -> Result<Shape, ParseError> {
         let mut rings: Vec<Chain> = Vec::new();
         self.list("a CURVEPOLYGON", |r| {

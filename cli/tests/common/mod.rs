@@ -52,9 +52,14 @@ pub fn lwpolyline(vertices: &[(f64, f64, f64)], layer: &str) -> Entity {
     on_layer(EntityType::LwPolyline(p), layer)
 }
 
+/// The drawing saved as the temporary file `name`, whole: written aside
+/// and renamed, so that a test reading it while another (running in
+/// parallel) saves the same drawing again never sees half a file.
 pub fn save(drawing: &Drawing, name: &str) -> PathBuf {
     let path = temp_path(name);
-    drawing.save_file(&path).unwrap();
+    let aside = temp_path(&format!("{name}.{:?}", std::thread::current().id()).replace(['(', ')'], ""));
+    drawing.save_file(&aside).unwrap();
+    std::fs::rename(&aside, &path).unwrap();
     path
 }
 
