@@ -62,15 +62,31 @@ impl Origins {
     }
 
     /// A line for each site a message names ("arc 2", "segment 5",
-    /// "point 1"): where it is in the file and its coordinates. With arcs
-    /// an error's indices may be of either numbering, so the message's
-    /// own words say which.
+    /// "point 1", "arcs 0 and 2"), once each: where it is in the file and
+    /// its coordinates. With arcs an error's indices may be of either
+    /// numbering, so the message's own words say which.
     fn named_places(&self, message: &str, builder: &Builder) -> String {
         let mut text = String::new();
-        let words: Vec<&str> = message.split(|c: char| !c.is_ascii_alphanumeric()).collect();
-        for pair in words.windows(2) {
-            let Ok(index) = pair[1].parse::<usize>() else { continue };
-            let (place, coordinates) = match pair[0] {
+        let mut named: Vec<(&str, usize)> = Vec::new();
+        // the kind the last words named, kept over numbers and `and`
+        let mut kind: Option<&str> = None;
+        for word in message.split(|c: char| !c.is_ascii_alphanumeric()).filter(|w| !w.is_empty()) {
+            let Ok(index) = word.parse::<usize>() else {
+                kind = match word {
+                    "arc" | "arcs" => Some("arc"),
+                    "segment" | "segments" => Some("segment"),
+                    "point" | "points" => Some("point"),
+                    "and" => kind,
+                    _ => None,
+                };
+                continue;
+            };
+            let Some(what) = kind else { continue };
+            if named.contains(&(what, index)) {
+                continue;
+            }
+            named.push((what, index));
+            let (place, coordinates) = match what {
                 "arc" => (
                     self.of_arc(index),
                     builder.arc(index).map(|a| {
@@ -82,11 +98,10 @@ impl Origins {
                     self.of_segment(index),
                     builder.segment(index).map(|[a, b]| format!("({}, {}) - ({}, {})", a.x, a.y, b.x, b.y)),
                 ),
-                "point" => (self.of_point(index), builder.point(index).map(|p| format!("({}, {})", p.x, p.y))),
-                _ => continue,
+                _ => (self.of_point(index), builder.point(index).map(|p| format!("({}, {})", p.x, p.y))),
             };
             let place = place.map(|p| format!(", {p}")).unwrap_or_default();
-            text.push_str(&format!("\n  {} {index}{place}: {}", pair[0], coordinates.unwrap_or_default()));
+            text.push_str(&format!("\n  {what} {index}{place}: {}", coordinates.unwrap_or_default()));
         }
         text
     }
@@ -380,6 +395,9 @@ mod tests {
         let text = origins.named_places("arc 0 crosses segment 0", &b);
         assert!(text.contains("\n  arc 0, geometry 1 (a curve): (0, 1) - (2, 1) around (1, 1)"), "{text}");
         assert!(text.contains("\n  segment 0, geometry 0 (a linestring): (0, 0) - (1, 0)"), "{text}");
+        // two arcs, each once
+        let text = origins.named_places("arcs 0 and 0 touch (an end of arc 0 lies inside arc 0)", &b);
+        assert_eq!(text.matches("\n  arc 0, geometry 1 (a curve)").count(), 1, "{text}");
     }
 
     #[test]

@@ -538,4 +538,16 @@ fn a_refused_ring_names_its_entity() {
     assert_eq!(o.status.code(), Some(1), "{message}");
     assert!(message.contains("entity 1 (LWPOLYLINE, layer \"HOLE\")"), "{message}");
     assert!(message.contains("entity 0 (LWPOLYLINE, layer \"PART\")"), "{message}");
+    // two crossing circles of a MULTISURFACE: both named, with their rings
+    let input = write_input(
+        "crossing-circles.wkt",
+        "MULTISURFACE(CURVEPOLYGON(CIRCULARSTRING(0 0, 2 0, 0 0)), CURVEPOLYGON(CIRCULARSTRING(1 0, 3 0, 1 0)))",
+    );
+    let o = run(&[path_str(&input), "--max-inscribed-circle"]);
+    let message = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{message}");
+    assert!(message.contains("cross"), "{message}");
+    for geometry in ["geometry 0 (a curve polygon), ring 0: ", "geometry 1 (a curve polygon), ring 0: "] {
+        assert!(message.contains(geometry), "{message}");
+    }
 }
