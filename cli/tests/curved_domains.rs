@@ -523,6 +523,13 @@ fn the_picture_draws_the_curved_domain_and_its_axis() {
     assert!(picture.contains(r#"<g id="medial-axis""#) && picture.contains(r#"id="inscribed-circle""#));
     assert!(picture.contains(": medial axis,"), "the title says what is drawn");
     assert!(!picture.contains("NaN") && !picture.contains("inf"));
+    // an open curve inside a polygon is an obstacle, drawn as an arc
+    let input = write_input("obstacle-arc.wkt", "POLYGON((0 0, 10 0, 10 10, 0 10, 0 0))\nCIRCULARSTRING(3 3, 5 5, 7 3)\n");
+    let o = run(&[path_str(&input), "--svg", path_str(&svg)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let picture = std::fs::read_to_string(&svg).unwrap();
+    let obstacles = picture.lines().find(|l| l.starts_with(r#"<path id="obstacles""#)).expect("the obstacles");
+    assert_eq!(obstacles.matches(" A ").count(), 1, "{obstacles}");
 }
 
 #[test]
