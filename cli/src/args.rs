@@ -22,9 +22,9 @@ INPUT is read by its extension, else by its first characters:
     PostGIS writes them: CIRCULARSTRING (start, a point on the arc, end;
     two more points per further arc; three points on a line are a segment,
     start = end a full circle), COMPOUNDCURVE, CURVEPOLYGON, MULTICURVE,
-    MULTISURFACE: circular arcs are sites of the diagram (with arcs every
-    ring is an obstacle: no domain, medial axis, offsets or inscribed
-    circle yet);
+    MULTISURFACE: circular arcs are sites of the diagram; a CURVEPOLYGON
+    (alone or in a MULTISURFACE) bounds the domain like a polygon, its
+    arcs and all; open curves are obstacles;
   .geojson/.json, or text starting with `{`: a GeoJSON geometry, Feature
     or FeatureCollection (every polygon and multipolygon becomes rings of
     the domain, lines polylines, points points; properties are ignored);
@@ -37,9 +37,9 @@ INPUT is read by its extension, else by its first characters:
     coordinates say; other directions are refused. Endpoints within 1e-9
     of the drawing's extent of one met before are moved onto it, so that
     chains whose rounded ends do not quite meet stay closed. Closed
-    polylines of segments, and LINEs that close up, are polygon rings
-    (the domain, even-odd); polylines with arcs, ARCs and CIRCLEs are
-    obstacles (no domain with arcs yet); other entities (text,
+    polylines (with or without bulges), CIRCLEs, and LINEs and ARCs that
+    close up are polygon rings (the domain, even-odd); open polylines and
+    the other LINEs and ARCs are obstacles; other entities (text,
     dimensions, splines, ...) are left out, with a note on standard error.
     Messages name the entity, e.g. `entity 12 (LWPOLYLINE, layer
     \"PART\")`, counted from 0 in file order (a POLYLINE with its VERTEXes
@@ -68,6 +68,7 @@ Examples: segvoronoi glyph.wkt --medial-axis axis.wkt --svg axis.svg
           segvoronoi plate.dxf --offset -3 --offset -6 --offsets pocket.nc --feed 800
           segvoronoi plate.dxf --offset 1 --offsets outline.dxf --medial-axis axis.dxf
           segvoronoi part.wkt --offset 0.5 --offsets curved.wkt --curves
+          segvoronoi slot.dxf --max-inscribed-circle --medial-axis axis.json
 
 Exit status: 0 on success, 1 when the library rejects the input (a
 non-finite coordinate, segments that cross or overlap, a point inside a
@@ -111,7 +112,7 @@ struct Cli {
     #[arg(long, value_name = "OUT.json", value_parser = file_name)]
     diagram: Option<PathBuf>,
 
-    /// Write the medial axis (the Voronoi edges inside the domain that are not separators; without polygons every such edge). OUT.wkt: one MULTILINESTRING Z, a linestring per chain sampled within the tolerance, z the clearance at each point; the pieces of a chain that reach infinity (only without polygons) are cut off. OUT.geojson: a Feature with a MultiLineString of the same samples and z the clearance, and the property `clearance` (one array per line). OUT.json: the exact chains, each with `closed` and its pieces: Voronoi edge id, kind (line or parabola), both ends (a vertex id and point, or a direction to infinity), the clearance at both ends (null at infinity), for a parabola its focus and directrix. OUT.dxf: a DXF drawing (R2000) on the layer MEDIAL_AXIS, each straight piece a LINE, each curved one an open LWPOLYLINE sampled within the tolerance
+    /// Write the medial axis (the Voronoi edges inside the domain that are not separators; without polygons every such edge). OUT.wkt: one MULTILINESTRING Z, a linestring per chain sampled within the tolerance, z the clearance at each point; the pieces of a chain that reach infinity (only without polygons) are cut off. OUT.geojson: a Feature with a MultiLineString of the same samples and z the clearance, and the property `clearance` (one array per line). OUT.json: the exact chains, each with `closed` and its pieces: Voronoi edge id, kind (line, parabola, or conic beside a circular arc), both ends (a vertex id and point, or a direction to infinity), the clearance at both ends (null at infinity), for a parabola its focus and directrix, for a conic its two sites and the rational quadratic Bézier curve it is. OUT.dxf: a DXF drawing (R2000) on the layer MEDIAL_AXIS, each straight piece a LINE, each curved one an open LWPOLYLINE sampled within the tolerance
     #[arg(long, value_name = "OUT", value_parser = file_name)]
     medial_axis: Option<PathBuf>,
 

@@ -99,7 +99,7 @@ fn section(out: &mut String, title: &str, items: impl Iterator<Item = Value>) {
 }
 
 /// One site (see the module doc); `inputs`: the input points of a point site.
-fn site_json(diagram: &Diagram, site: SiteId, inputs: &[usize]) -> Value {
+pub fn site_json(diagram: &Diagram, site: SiteId, inputs: &[usize]) -> Value {
     let id = site.index();
     let endpoints = diagram.segment_endpoints(site).map(|e| e.map(SiteId::index));
     match diagram.site(site) {

@@ -13,7 +13,10 @@
 //! and holes are cut before the boundary around them frees the material.
 //! A whole circle is two half circles: a `G2`/`G3` that ends where it
 //! starts is read by some controllers as a full turn and by others as
-//! nothing.
+//! nothing. For the same reason a piece whose written end is the written
+//! position before it (a sliver of an arc where an offset passes a tangent
+//! joint of a curved boundary, or anything `--gcode-digits` rounds away)
+//! is left out, and an arc of less than a microradian is cut as its chord.
 //!
 //! Numbers are Rust's shortest round-trip form of each `f64` (never an
 //! exponent), so that the program reads back to the exact loops whatever
@@ -25,7 +28,7 @@ use std::fmt::Write;
 
 use segvoronoi::{Offset, Point};
 
-use crate::offset_arcs::{pieces, Piece};
+use crate::offset_arcs::{pieces, sweep, Piece};
 
 /// How to cut.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -68,11 +71,25 @@ pub fn program(offsets: &[Offset], settings: &Settings) -> String {
             let _ = writeln!(out, "G1 Z{} F{}", number(settings.plunge_depth), number(settings.plunge_feed));
             // the position as the controller has it: the printed numbers
             let mut at = rounded(start, settings.digits);
-            for (j, piece) in pieces.iter().enumerate() {
+            let mut feed = Some(settings.feed);
+            for piece in &pieces {
                 let to = piece.to();
+                // A piece that ends where the controller already is moves
+                // nowhere: left out. For an arc it matters: a G2/G3 whose
+                // end is its start cuts a whole circle (an offset passing a
+                // tangent joint of the boundary has such slivers).
+                if rounded(to, settings.digits) == at {
+                    continue;
+                }
+                // an arc of less than a microradian strays from its chord by
+                // less than 2e-13 of its radius: a line, which no
+                // controller can take for a whole circle
+                let straight = match *piece {
+                    Piece::Line { .. } => true,
+                    Piece::Arc { centre, from, counter_clockwise, .. } => sweep(centre, from, to, counter_clockwise) < 1e-6,
+                };
                 let _ = match *piece {
-                    Piece::Line { .. } => write!(out, "G1 X{} Y{}", number(to.x), number(to.y)),
-                    Piece::Arc { centre, counter_clockwise, .. } => write!(
+                    Piece::Arc { centre, counter_clockwise, .. } if !straight => write!(
                         out,
                         "{} X{} Y{} I{} J{}",
                         if counter_clockwise { "G3" } else { "G2" },
@@ -81,9 +98,10 @@ pub fn program(offsets: &[Offset], settings: &Settings) -> String {
                         number(centre.x - at.x),
                         number(centre.y - at.y)
                     ),
+                    _ => write!(out, "G1 X{} Y{}", number(to.x), number(to.y)),
                 };
-                if j == 0 {
-                    let _ = write!(out, " F{}", number(settings.feed));
+                if let Some(f) = feed.take() {
+                    let _ = write!(out, " F{}", number(f));
                 }
                 out.push('\n');
                 at = rounded(to, settings.digits);
@@ -191,5 +209,32 @@ mod tests {
         let text = program(&[d.offset(2.0).unwrap()], &Settings::default());
         assert!(text.contains("G0 X3 Y1\n"), "{text}");
         assert!(text.contains("G3 X-1 Y1 I-2 J0 F600\nG3 X3 Y1 I2 J0\n"), "{text}");
+    }
+
+    #[test]
+    fn a_sliver_at_a_tangent_joint_is_no_whole_circle() {
+        // a slot grown by 0.5: its loop passes the joints of the sides and
+        // the half circles with arcs of a sweep near 1e-16 around their
+        // ends, whose ends are equal once rounded
+        let mut b = Builder::new();
+        b.add_bulged_polygon(&[vec![([0.0, 0.0], 0.0), ([4.0, 0.0], 1.0), ([4.0, 2.0], 0.0), ([0.0, 2.0], 1.0)]]).unwrap();
+        let d = b.build().unwrap();
+        for digits in [None, Some(4)] {
+            let text = program(&[d.offset(0.5).unwrap()], &Settings { digits, ..Settings::default() });
+            let mut at = String::new();
+            for line in text.lines() {
+                let words: Vec<&str> = line.split_whitespace().collect();
+                let end = words.iter().filter(|w| w.starts_with(['X', 'Y'])).copied().collect::<Vec<_>>().join(" ");
+                if matches!(words.first(), Some(&("G2" | "G3"))) {
+                    assert_ne!(end, at, "{digits:?}: a whole circle: {text}");
+                }
+                if !end.is_empty() {
+                    at = end;
+                }
+            }
+            // the two half circles of radius 1.5, and a feed once
+            assert_eq!(text.matches("\nG3 ").count() - text.matches("J0.5").count() - text.matches("J-0.5").count(), 2, "{text}");
+            assert_eq!(text.matches(" F600").count(), 1, "{text}");
+        }
     }
 }

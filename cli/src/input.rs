@@ -5,7 +5,7 @@
 use std::io::Read;
 use std::ops::Range;
 
-use segvoronoi::{boost_text, Builder, Error};
+use segvoronoi::{boost_text, Builder, ChainPiece, Error};
 
 use crate::args::Source;
 use crate::wkt::{self, Shape, Shapes, Step, Xy};
@@ -62,15 +62,31 @@ impl Origins {
     }
 
     /// A line for each site a message names ("arc 2", "segment 5",
-    /// "point 1"): where it is in the file and its coordinates. With arcs
-    /// an error's indices may be of either numbering, so the message's
-    /// own words say which.
+    /// "point 1", "arcs 0 and 2"), once each: where it is in the file and
+    /// its coordinates. With arcs an error's indices may be of either
+    /// numbering, so the message's own words say which.
     fn named_places(&self, message: &str, builder: &Builder) -> String {
         let mut text = String::new();
-        let words: Vec<&str> = message.split(|c: char| !c.is_ascii_alphanumeric()).collect();
-        for pair in words.windows(2) {
-            let Ok(index) = pair[1].parse::<usize>() else { continue };
-            let (place, coordinates) = match pair[0] {
+        let mut named: Vec<(&str, usize)> = Vec::new();
+        // the kind the last words named, kept over numbers and `and`
+        let mut kind: Option<&str> = None;
+        for word in message.split(|c: char| !c.is_ascii_alphanumeric()).filter(|w| !w.is_empty()) {
+            let Ok(index) = word.parse::<usize>() else {
+                kind = match word {
+                    "arc" | "arcs" => Some("arc"),
+                    "segment" | "segments" => Some("segment"),
+                    "point" | "points" => Some("point"),
+                    "and" => kind,
+                    _ => None,
+                };
+                continue;
+            };
+            let Some(what) = kind else { continue };
+            if named.contains(&(what, index)) {
+                continue;
+            }
+            named.push((what, index));
+            let (place, coordinates) = match what {
                 "arc" => (
                     self.of_arc(index),
                     builder.arc(index).map(|a| {
@@ -82,11 +98,10 @@ impl Origins {
                     self.of_segment(index),
                     builder.segment(index).map(|[a, b]| format!("({}, {}) - ({}, {})", a.x, a.y, b.x, b.y)),
                 ),
-                "point" => (self.of_point(index), builder.point(index).map(|p| format!("({}, {})", p.x, p.y))),
-                _ => continue,
+                _ => (self.of_point(index), builder.point(index).map(|p| format!("({}, {})", p.x, p.y))),
             };
             let place = place.map(|p| format!(", {p}")).unwrap_or_default();
-            text.push_str(&format!("\n  {} {index}{place}: {}", pair[0], coordinates.unwrap_or_default()));
+            text.push_str(&format!("\n  {what} {index}{place}: {}", coordinates.unwrap_or_default()));
         }
         text
     }
@@ -207,16 +222,19 @@ pub fn read(source: &Source) -> Result<(String, Input), Failure> {
 
 impl Input {
     /// Adds everything to `builder`: WKT polygons one `add_polygon` each
-    /// (so that the domain is theirs; with arcs in the input their rings
-    /// as closed polylines, obstacles), linestrings as polylines, curves
-    /// piece by piece. Returns where each input index came from, for
-    /// messages.
-    pub fn add_to(&self, builder: &mut Builder) -> Result<Origins, Error> {
+    /// and curve polygons (rings with arcs) one `add_bulged_polygon` each,
+    /// so that the domain is theirs (even-odd over all rings);
+    /// linestrings as polylines, open curves piece by piece (obstacles).
+    /// Returns where each input index came from, for messages; an error
+    /// names the geometry (or DXF entity) the library refused.
+    pub fn add_to(&self, builder: &mut Builder) -> Result<Origins, String> {
         let mut origins = Origins::default();
         match self {
             Input::Boost(input) => {
-                builder.add_points(input.points.iter().copied())?;
-                builder.add_segments(input.segments.iter().map(|&[x1, y1, x2, y2]| [[x1, y1], [x2, y2]]))?;
+                let added = builder
+                    .add_points(input.points.iter().copied())
+                    .and_then(|_| builder.add_segments(input.segments.iter().map(|&[x1, y1, x2, y2]| [[x1, y1], [x2, y2]])));
+                added.map_err(|e| e.to_string())?;
                 origins.point_lines.clone_from(&input.point_lines);
                 origins.segment_lines.clone_from(&input.segment_lines);
             }
@@ -224,42 +242,40 @@ impl Input {
                 if let Input::Dxf(_, names) = self {
                     origins.names.clone_from(names);
                 }
-                let arcs = self.has_arcs();
                 for (k, shape) in shapes.iter().enumerate() {
+                    let place = |what: &'static str, ring: Option<usize>| Place { geometry: k, what, ring };
+                    let refused = |what: &'static str, e: Error| format!("{}: {e}", place(what, None).describe(&origins.names));
                     match shape {
                         Shape::Point(p) => {
-                            let i = builder.add_point(*p)?;
+                            let i = builder.add_point(*p).map_err(|e| refused("a point", e))?;
                             origins.wkt_points.push((i, k));
                         }
                         Shape::LineString(points) => {
-                            let made = builder.add_polyline(points)?;
-                            origins.wkt_segments.push((made, Place { geometry: k, what: "a linestring", ring: None }));
-                        }
-                        // With arcs there is no domain yet (the library takes
-                        // no polygons beside arcs): rings are obstacles.
-                        Shape::Polygon(rings) if arcs => {
-                            for (r, ring) in rings.iter().enumerate() {
-                                let made = builder.add_polyline(ring)?;
-                                origins.wkt_segments.push((made, Place { geometry: k, what: "a polygon", ring: Some(r) }));
-                            }
+                            let made = builder.add_polyline(points).map_err(|e| refused("a linestring", e))?;
+                            origins.wkt_segments.push((made, place("a linestring", None)));
                         }
                         Shape::Polygon(rings) => {
-                            for (r, made) in builder.add_polygon(rings)?.into_iter().enumerate() {
-                                origins.wkt_segments.push((made, Place { geometry: k, what: "a polygon", ring: Some(r) }));
+                            for (r, made) in
+                                builder.add_polygon(rings).map_err(|e| refused("a polygon", e))?.into_iter().enumerate()
+                            {
+                                origins.wkt_segments.push((made, place("a polygon", Some(r))));
                             }
                         }
                         Shape::Curve(steps) => {
-                            let (segments, arcs) = add_steps(builder, steps)?;
-                            let place = Place { geometry: k, what: "a curve", ring: None };
-                            origins.wkt_segments.push((segments, place));
-                            origins.wkt_arcs.push((arcs, place));
+                            let (segments, arcs) = add_steps(builder, steps).map_err(|e| refused("a curve", e))?;
+                            origins.wkt_segments.push((segments, place("a curve", None)));
+                            origins.wkt_arcs.push((arcs, place("a curve", None)));
                         }
                         Shape::CurveRings(rings) => {
-                            for (r, steps) in rings.iter().enumerate() {
-                                let (segments, arcs) = add_steps(builder, steps)?;
-                                let place = Place { geometry: k, what: "a curve polygon", ring: Some(r) };
-                                origins.wkt_segments.push((segments, place));
-                                origins.wkt_arcs.push((arcs, place));
+                            let bulged: Vec<Vec<(Xy, f64)>> = rings.iter().map(|steps| bulged_ring(steps)).collect();
+                            let (mut segments, mut arcs) = (builder.segment_count(), builder.arc_count());
+                            let made = builder.add_bulged_polygon(&bulged).map_err(|e| refused("a curve polygon", e))?;
+                            for (r, pieces) in made.iter().enumerate() {
+                                let arc_count = pieces.iter().filter(|p| matches!(p, ChainPiece::Arc(_))).count();
+                                let place = place("a curve polygon", Some(r));
+                                origins.wkt_segments.push((segments..segments + pieces.len() - arc_count, place));
+                                origins.wkt_arcs.push((arcs..arcs + arc_count, place));
+                                (segments, arcs) = (segments + pieces.len() - arc_count, arcs + arc_count);
                             }
                         }
                     }
@@ -269,48 +285,47 @@ impl Input {
         Ok(origins)
     }
 
-    /// Every ring of every polygon (none in Boost.Polygon's format): the
-    /// domain, even-odd, for the picture.
-    pub fn rings(&self) -> Vec<Vec<Xy>> {
-        match self {
-            Input::Boost(_) => Vec::new(),
-            Input::Shapes(Shapes { shapes, .. }) | Input::Dxf(Shapes { shapes, .. }, _) => shapes
-                .iter()
-                .flat_map(|s| match s {
-                    Shape::Polygon(rings) => rings.clone(),
-                    _ => Vec::new(),
-                })
-                .collect(),
-        }
+    /// Every ring of every polygon, plain or curved (none in
+    /// Boost.Polygon's format): the domain, even-odd, for the picture.
+    pub fn rings(&self) -> Vec<Vec<Step>> {
+        self.shapes()
+            .iter()
+            .flat_map(|s| match s {
+                Shape::Polygon(rings) => rings.iter().map(|ring| wkt::ring_steps(ring)).collect(),
+                Shape::CurveRings(rings) => rings.clone(),
+                _ => Vec::new(),
+            })
+            .collect()
     }
-}
 
-impl Input {
-    /// The linestrings and points of a WKT or GeoJSON input (the
-    /// obstacles, drawn when the picture leaves the diagram out).
-    pub fn obstacles(&self) -> (Vec<Vec<Xy>>, Vec<Xy>) {
+    /// The linestrings and open curves, and the points, of a WKT, GeoJSON
+    /// or DXF input (the obstacles, drawn when the picture leaves the
+    /// diagram out).
+    pub fn obstacles(&self) -> (Vec<Vec<Step>>, Vec<Xy>) {
         let (mut lines, mut points) = (Vec::new(), Vec::new());
-        if let Input::Shapes(Shapes { shapes, .. }) | Input::Dxf(Shapes { shapes, .. }, _) = self {
-            for shape in shapes {
-                match shape {
-                    Shape::LineString(line) => lines.push(line.clone()),
-                    Shape::Point(p) => points.push(*p),
-                    Shape::Polygon(_) | Shape::Curve(_) | Shape::CurveRings(_) => {}
-                }
+        for shape in self.shapes() {
+            match shape {
+                Shape::LineString(line) => lines.push(wkt::line_steps(line)),
+                Shape::Curve(steps) => lines.push(steps.clone()),
+                Shape::Point(p) => points.push(*p),
+                Shape::Polygon(_) | Shape::CurveRings(_) => {}
             }
         }
         (lines, points)
     }
 
-    /// Whether the input has a circular arc (a WKT curve with one): then
-    /// there is no domain, medial axis or offsets yet (issue 32).
-    pub fn has_arcs(&self) -> bool {
+    /// The shapes (none in Boost.Polygon's format).
+    fn shapes(&self) -> &[Shape] {
         match self {
-            Input::Shapes(Shapes { shapes, .. }) | Input::Dxf(Shapes { shapes, .. }, _) => {
-                shapes.iter().any(|s| matches!(s, Shape::Curve(_) | Shape::CurveRings(_)))
-            }
-            Input::Boost(_) => false,
+            Input::Shapes(Shapes { shapes, .. }) | Input::Dxf(Shapes { shapes, .. }, _) => shapes,
+            Input::Boost(_) => &[],
         }
+    }
+
+    /// Whether the input has a circular arc (a curve with one, open or a
+    /// ring).
+    pub fn has_arcs(&self) -> bool {
+        self.shapes().iter().any(|s| matches!(s, Shape::Curve(_) | Shape::CurveRings(_)))
     }
 
     /// The SRID an EWKT input declared (its coordinates are used as they
@@ -321,6 +336,20 @@ impl Input {
             Input::Boost(_) | Input::Dxf(..) => None,
         }
     }
+}
+
+/// A closed ring of segments and arcs as `add_bulged_polygon` takes it:
+/// each piece's start with its bulge (0 for a segment), so that the
+/// vertices are the input's own coordinates, exactly; an arc given by a
+/// third point (WKT's CIRCULARSTRING) gets the bulge of its sweep.
+fn bulged_ring(steps: &[Step]) -> Vec<(Xy, f64)> {
+    steps
+        .iter()
+        .map(|step| match step {
+            Step::Segment([a, _]) => (*a, 0.0),
+            Step::Arc(arc) => (step.start(), arc.bulge()),
+        })
+        .collect()
 }
 
 /// Adds a chain of segments and arcs piece by piece (an arc's endpoints
@@ -366,6 +395,9 @@ mod tests {
         let text = origins.named_places("arc 0 crosses segment 0", &b);
         assert!(text.contains("\n  arc 0, geometry 1 (a curve): (0, 1) - (2, 1) around (1, 1)"), "{text}");
         assert!(text.contains("\n  segment 0, geometry 0 (a linestring): (0, 0) - (1, 0)"), "{text}");
+        // two arcs, each once
+        let text = origins.named_places("arcs 0 and 0 touch (an end of arc 0 lies inside arc 0)", &b);
+        assert_eq!(text.matches("\n  arc 0, geometry 1 (a curve)").count(), 1, "{text}");
     }
 
     #[test]
@@ -374,7 +406,7 @@ mod tests {
             "POINT (7 7)\nCOMPOUNDCURVE((0 0, 4 0), CIRCULARSTRING(4 0, 5 1, 4 2), (4 2, 0 2), CIRCULARSTRING(0 2, -1 1, 0 0))\n\
                     CURVEPOLYGON(CIRCULARSTRING(10 0, 12 0, 10 0), (10.5 0, 11 0.5, 11.5 0, 10.5 0))";
         let input = Input::Shapes(wkt::parse(text).unwrap());
-        assert!(input.has_arcs() && input.rings().is_empty());
+        assert!(input.has_arcs() && input.rings().len() == 2);
         let mut b = Builder::new();
         let origins = input.add_to(&mut b).unwrap();
         assert_eq!((b.point_count(), b.segment_count(), b.arc_count()), (1, 5, 4));
@@ -392,5 +424,17 @@ mod tests {
         assert_eq!(origins.of_arc(3).as_deref(), Some("geometry 2 (a curve polygon), ring 0"));
         assert_eq!(origins.of_segment(4).as_deref(), Some("geometry 2 (a curve polygon), ring 1"));
         assert_eq!(origins.of_segment(0).as_deref(), Some("geometry 1 (a curve)"));
+        assert_eq!(b.build().map(|d| d.has_domain()), Ok(true));
+    }
+
+    #[test]
+    fn a_refused_ring_of_a_curve_polygon_is_named() {
+        // ring 1 goes there and back: two distinct vertices, no arc
+        let text = "POINT (9 9)\nCURVEPOLYGON(CIRCULARSTRING(0 0, 1 1, 2 0, 1 -1, 0 0), (0.5 0, 1.5 0, 0.5 0))";
+        let input = Input::Shapes(wkt::parse(text).unwrap());
+        let mut b = Builder::new();
+        let e = input.add_to(&mut b).unwrap_err();
+        assert!(e.starts_with("geometry 1 (a curve polygon): polygon 0, ring 1"), "{e}");
+        assert_eq!((b.segment_count(), b.arc_count()), (0, 0), "nothing of the polygon added");
     }
 }

@@ -3,8 +3,9 @@
 //! points and curves (circular arcs) of a WKT, GeoJSON or DXF file (or of
 //! a built-in demo) and writes an SVG picture, the whole diagram as JSON,
 //! the canonical topology text, statistics, the medial axis, the largest
-//! inscribed circle and offsets (the last three not yet with arcs; the
-//! axis and offsets also as DXF, offsets as G-code and curved WKT).
+//! inscribed circle and offsets, also of domains bounded by arcs (WKT's
+//! CURVEPOLYGON, DXF's closed polylines with bulges and circles); the axis
+//! and offsets also as DXF, offsets as G-code and curved WKT.
 //! `segvoronoi --help` for usage.
 
 mod args;
@@ -85,13 +86,11 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     });
     let (name, input) = input::read(&options.source)?;
     let arcs = input.has_arcs();
-    if arcs {
-        refuse_with_arcs(&options).map_err(|flag| {
-            failed(format!(
-                "{name}: {flag} is not available yet when the input has circular arcs: domains, the medial axis and offsets \
-                 of arcs are still to come (issue 32); the diagram itself is (--diagram, --topology, --svg, --stats)"
-            ))
-        })?;
+    if arcs && options.write_sites.is_some() {
+        return Err(failed(format!(
+            "{name}: --write-sites is not available when the input has circular arcs: Boost.Polygon's text has none \
+             (--diagram writes every site, arcs too)"
+        )));
     }
 
     // Library errors (a non-finite coordinate, crossing segments or rings,
@@ -127,9 +126,7 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
 
     let tolerance = options.tolerance.unwrap_or_else(|| default_tolerance(&diagram));
     // The axis is computed once, for the file and the picture alike.
-    // With arcs there is no domain yet (the options that need one were
-    // refused above): the picture is the diagram's.
-    let has_domain = diagram.has_domain() && !arcs;
+    let has_domain = diagram.has_domain();
     let needs_axis = options.medial_axis.is_some() || (options.svg.is_some() && has_domain);
     let axis = if needs_axis {
         progress.phase("medial axis");
@@ -229,25 +226,10 @@ fn sites_as_built(diagram: &Diagram, points: usize) -> String {
 fn title(name: &str, diagram: &Diagram, builder: &Builder) -> String {
     let name = Path::new(name).file_name().map_or(name.to_string(), |n| n.to_string_lossy().into_owned());
     let arcs = builder.arc_count();
-    let what = if diagram.has_domain() && arcs == 0 { "medial axis" } else { "Voronoi diagram" };
+    let what = if diagram.has_domain() { "medial axis" } else { "Voronoi diagram" };
     let segments = builder.segment_count();
     let arcs = if arcs > 0 { format!(", {arcs} arcs") } else { String::new() };
     format!("{name}: {what}, {} sites ({segments} segments{arcs})", diagram.site_count())
-}
-
-/// The first option given that needs what arcs do not have yet (a domain,
-/// the medial axis, offsets; Boost.Polygon's text for --write-sites has no
-/// arcs), by its flag.
-fn refuse_with_arcs(options: &Options) -> Result<(), &'static str> {
-    let refused = [
-        (options.medial_axis.is_some(), "--medial-axis"),
-        (options.offsets.is_some() || !options.offset_distances.is_empty(), "--offsets"),
-        (options.max_inscribed_circle, "--max-inscribed-circle"),
-        (options.corner_angle.is_some(), "--corner-angle"),
-        (options.prune_spurs.is_some(), "--prune-spurs"),
-        (options.write_sites.is_some(), "--write-sites (Boost.Polygon's text has no arcs)"),
-    ];
-    refused.iter().find(|(given, _)| *given).map_or(Ok(()), |&(_, flag)| Err(flag))
 }
 
 /// The medial axis, filtered as the options ask (no option: no filter).

@@ -10,17 +10,23 @@
 use segvoronoi::{Chain, Diagram, EdgeEnd, EdgeShape, MedialAxis, Point};
 use serde_json::{json, Value};
 
+use crate::diagram_output;
+
 /// The sampled points `[x, y, clearance]` of a chain within `tolerance`.
 /// The pieces that reach infinity (only without a domain) are cut off: they
 /// can only start or end a chain (an end at infinity has no other edges),
-/// so the rest is one connected path, or nothing.
+/// so the rest is one connected path, or nothing. A point equal to the one
+/// before is left out: the centre of a concave arc of the boundary is
+/// where several vertices meet, joined by pieces of zero length.
 pub fn sample(diagram: &Diagram, chain: &Chain, tolerance: f64) -> Option<Vec<[f64; 3]>> {
     let finite = |end: &EdgeEnd| matches!(end, EdgeEnd::Vertex(_));
     let pieces: Vec<_> = chain.pieces.iter().filter(|p| p.ends.iter().all(finite)).copied().collect();
     if pieces.is_empty() {
         return None;
     }
-    diagram.sample_chain(&Chain { pieces, closed: chain.closed }, tolerance)
+    let mut points = diagram.sample_chain(&Chain { pieces, closed: chain.closed }, tolerance)?;
+    points.dedup_by(|p, q| p[..2] == q[..2]);
+    Some(points)
 }
 
 /// One `MULTILINESTRING Z`, a linestring per chain (see [`sample`]),
@@ -43,11 +49,17 @@ pub fn wkt(diagram: &Diagram, axis: &MedialAxis, tolerance: f64) -> String {
 
 /// The exact chains as JSON:
 /// `{"domain": bool, "chains": [{"closed": bool, "pieces": [piece, ...]}, ...]}`,
-/// each piece `{"edge": id, "kind": "line" | "parabola", "reversed": bool,
-/// "ends": [end, end], "clearance": [r, r], "focus": [x, y],
-/// "directrix": [[x, y], [x, y]]}` (the last two for a parabola only), an
+/// each piece `{"edge": id, "reversed": bool, "ends": [end, end],
+/// "clearance": [r, r], "kind": "line" | "parabola" | "conic", ...}`, an
 /// end `{"vertex": id, "point": [x, y]}` or `{"direction": [dx, dy]}` (at
-/// infinity, where the clearance is `null`).
+/// infinity, where the clearance is `null`). A parabola (between a point
+/// and a segment) adds `"focus": [x, y], "directrix": [[x, y], [x, y]]`; a
+/// conic (beside a circular arc: a line, parabola, ellipse or hyperbola
+/// piece) adds `"sites"`, its two sites as `--diagram` writes them (the
+/// one on its left first, in the piece's direction), and, when finite and
+/// less than half a turn, `"bezier": {"points": [start, control, end],
+/// "weight": w}`, the rational quadratic Bézier curve it is, from the
+/// piece's first end to its last.
 pub fn json(diagram: &Diagram, axis: &MedialAxis) -> String {
     let chains: Vec<Value> = axis
         .chains
@@ -80,7 +92,18 @@ pub fn json(diagram: &Diagram, axis: &MedialAxis) -> String {
                         EdgeShape::Line => {
                             fields.insert("kind".into(), json!("line"));
                         }
-                        // `EdgeShape` may grow (curved sites); no such edge exists yet.
+                        EdgeShape::Conic { .. } => {
+                            fields.insert("kind".into(), json!("conic"));
+                            let sites = piece.sites.map(|s| diagram_output::site_json(diagram, s, &[]));
+                            fields.insert("sites".into(), json!(sites));
+                            if let Some((mut points, weight)) = diagram.edge_rational_bezier(piece.edge) {
+                                if piece.reversed {
+                                    points.reverse();
+                                }
+                                fields.insert("bezier".into(), json!({"points": points.map(point), "weight": number(weight)}));
+                            }
+                        }
+                        // `EdgeShape` may grow; no other edge exists yet.
                         _ => {
                             fields.insert("kind".into(), json!("other"));
                         }

@@ -31,6 +31,7 @@ use std::fmt::Write;
 use segvoronoi::{CircularArc, Diagram, Edge, EdgeEnd, EdgeShape, MedialAxis, Offset, OffsetLoop, OffsetPiece, Point, Site};
 
 use crate::medial_output;
+use crate::wkt::Step;
 
 /// The longer side of the picture, in pixels.
 const SIZE_PX: f64 = 800.0;
@@ -71,15 +72,15 @@ const OFFSET_WIDTH: f64 = 1.8;
 
 /// What the picture adds when the input has polygons.
 pub struct Domain<'a> {
-    /// Every ring of every polygon.
-    pub rings: &'a [Vec<[f64; 2]>],
+    /// Every ring of every polygon, segments and arcs.
+    pub rings: &'a [Vec<Step>],
     /// The medial axis to draw (filtered as the command line asks).
     pub axis: &'a MedialAxis,
     /// Chord tolerance of its samples, in input units.
     pub tolerance: f64,
-    /// The linestrings and points of the input (obstacles), drawn when the
-    /// diagram is not.
-    pub lines: &'a [Vec<[f64; 2]>],
+    /// The linestrings and open curves, and the points, of the input
+    /// (obstacles), drawn when the diagram is not.
+    pub lines: &'a [Vec<Step>],
     pub points: &'a [[f64; 2]],
 }
 
@@ -569,10 +570,7 @@ fn write_sites(out: &mut String, frame: &Frame, points: &[Point], segments: &[(P
 /// Without the diagram: the input's linestrings as one thin path and its
 /// points as dots (the rings are the domain's outline).
 fn write_obstacles(out: &mut String, frame: &Frame, domain: &Domain) {
-    let mut d = String::new();
-    for line in domain.lines {
-        d.push_str(&polyline_data(frame, line));
-    }
+    let d: String = domain.lines.iter().map(|line| chain_data(frame, line)).collect();
     let _ = writeln!(
         out,
         r#"<path id="obstacles" fill="none" stroke="{OUTLINE_COLOUR}" stroke-width="1.5" stroke-linejoin="round" d="{}"/>"#,
@@ -585,13 +583,21 @@ fn write_obstacles(out: &mut String, frame: &Frame, domain: &Domain) {
     let _ = writeln!(out, "</g>");
 }
 
-/// `M x y L x y ...` of input points in pixels, not finite ones left out.
-fn polyline_data(frame: &Frame, line: &[[f64; 2]]) -> String {
-    let mut d = String::new();
-    let pixels = line.iter().filter_map(|&[x, y]| frame.pixel(frame.unit(Point::new(x, y))));
-    for (k, (x, y)) in pixels.enumerate() {
-        let _ = write!(d, "{}{x:.2} {y:.2} ", if k == 0 { "M " } else { "L " });
+/// `M x y` at a chain's start, then `L x y` along its segments and `A ...`
+/// along its arcs, in pixels, pieces that are not finite there left out;
+/// empty for an empty chain.
+fn chain_data(frame: &Frame, chain: &[Step]) -> String {
+    let pixel = |p: [f64; 2]| frame.pixel(frame.unit(p.into())).map(|(x, y)| format!("{x:.2} {y:.2}"));
+    let Some(start) = chain.first().and_then(|s| pixel(s.start())) else { return String::new() };
+    let mut d = format!("M {start}");
+    for step in chain {
+        let to = match step {
+            Step::Segment([_, b]) => pixel(*b).map(|b| format!(" L {b}")),
+            Step::Arc(arc) => arc_to(frame, arc),
+        };
+        d.push_str(&to.unwrap_or_default());
     }
+    d.push(' ');
     d
 }
 
@@ -780,19 +786,14 @@ fn domain_top(diagram: &Diagram, domain: &Domain) -> f64 {
         .fold(circle.map_or(0.0, |(_, r)| r), |m, p| m.max(p[2]))
 }
 
-/// The domain's inside: one path of every ring, filled even-odd.
-/// With `outline` (the diagram, whose segment sites would show the rings,
-/// is not drawn) also its boundary, thin.
-fn write_domain(out: &mut String, frame: &Frame, rings: &[Vec<[f64; 2]>], outline: bool) {
+/// The domain's inside: one path of every ring (`L` along its segments,
+/// `A` along its arcs), filled even-odd. With `outline` (the diagram,
+/// whose sites would show the rings, is not drawn) also its boundary, thin.
+fn write_domain(out: &mut String, frame: &Frame, rings: &[Vec<Step>], outline: bool) {
     let mut d = String::new();
-    for ring in rings {
-        let pixels: Vec<(f64, f64)> = ring.iter().filter_map(|&[x, y]| frame.pixel(frame.unit(Point::new(x, y)))).collect();
-        for (k, (x, y)) in pixels.iter().enumerate() {
-            let _ = write!(d, "{}{x:.2} {y:.2} ", if k == 0 { "M " } else { "L " });
-        }
-        if !pixels.is_empty() {
-            d.push_str("Z ");
-        }
+    for ring in rings.iter().map(|ring| chain_data(frame, ring)).filter(|d| !d.is_empty()) {
+        d.push_str(&ring);
+        d.push_str("Z ");
     }
     let stroke = if outline {
         format!(r#"stroke="{OUTLINE_COLOUR}" stroke-width="0.8" stroke-linejoin="round""#)
@@ -944,12 +945,20 @@ fn loop_path(frame: &Frame, l: &OffsetLoop) -> Option<String> {
     Some(d)
 }
 
-/// An arc site as an SVG path `M start A r r 0 large sweep end`, flagged
-/// as `loop_path` flags the arcs of offsets (y down: counter-clockwise in
-/// the input is sweep flag 0); `None` if not finite in pixels. Ends on
-/// one pixel position (an arc too small to see) are drawn as a dot's worth
-/// of line, which SVG shows, rather than an arc it would drop.
+/// An arc site as an SVG path `M start A r r 0 large sweep end` (see
+/// [`arc_to`]); `None` if not finite in pixels.
 fn arc_path(frame: &Frame, arc: &CircularArc) -> Option<String> {
+    let start = frame.pixel(frame.unit(arc.start())).map(|(x, y)| format!("{x:.2} {y:.2}"))?;
+    Some(format!("M {start}{}", arc_to(frame, arc)?))
+}
+
+/// The path command that goes along an arc from its start: ` A r r 0
+/// large sweep end`, flagged as `loop_path` flags the arcs of offsets (y
+/// down: counter-clockwise in the input is sweep flag 0); `None` if not
+/// finite in pixels. Ends on one pixel position (an arc too small to see)
+/// are ` L end`, a dot's worth of line, which SVG shows, rather than an
+/// arc it would drop.
+fn arc_to(frame: &Frame, arc: &CircularArc) -> Option<String> {
     let pixel = |p: Point| frame.pixel(frame.unit(p)).map(|(x, y)| format!("{x:.2} {y:.2}"));
     let (start, end) = (pixel(arc.start())?, pixel(arc.end())?);
     let r = arc.radius() * frame.to_unit * frame.px;
@@ -957,11 +966,11 @@ fn arc_path(frame: &Frame, arc: &CircularArc) -> Option<String> {
         return None;
     }
     if start == end {
-        return Some(format!("M {start} L {end}"));
+        return Some(format!(" L {end}"));
     }
     let large = u8::from(arc.sweep().abs() > PI);
     let sweep = u8::from(!arc.is_counter_clockwise());
-    Some(format!("M {start} A {r:.2} {r:.2} 0 {large} {sweep} {end}"))
+    Some(format!(" A {r:.2} {r:.2} 0 {large} {sweep} {end}"))
 }
 
 /// The colour at `t` in `[0, 1]` of the clearance ramp (`RAMP`).
@@ -981,6 +990,11 @@ fn write_dot(out: &mut String, frame: &Frame, p: Point, radius: f64) {
 mod tests {
     use super::*;
     use segvoronoi::Builder;
+
+    /// Polygon rings as the domain's chains of segments.
+    fn steps(rings: &[Vec<[f64; 2]>]) -> Vec<Vec<Step>> {
+        rings.iter().map(|ring| crate::wkt::ring_steps(ring)).collect()
+    }
 
     fn diagram(points: &[[f64; 2]]) -> Diagram {
         let mut b = Builder::new();
@@ -1159,7 +1173,7 @@ mod tests {
         let axis = d.medial_axis();
         let svg = render(
             &d,
-            Some(&Domain { rings: &rings, axis: &axis, tolerance: 1e-3, lines: &[], points: &[] }),
+            Some(&Domain { rings: &steps(&rings), axis: &axis, tolerance: 1e-3, lines: &[], points: &[] }),
             &[],
             &Look::default(),
         );
@@ -1352,7 +1366,7 @@ mod tests {
         let axis = d.medial_axis();
         let svg = render(
             &d,
-            Some(&Domain { rings: &rings, axis: &axis, tolerance: 1e-3, lines: &[], points: &[] }),
+            Some(&Domain { rings: &steps(&rings), axis: &axis, tolerance: 1e-3, lines: &[], points: &[] }),
             &offsets,
             &Look::default(),
         );
@@ -1416,7 +1430,7 @@ mod tests {
         let d = b.build().unwrap();
         let axis = d.medial_axis();
         let offsets = d.offsets(&[-0.5, -1.0, 1.0]).unwrap();
-        let domain = Domain { rings: &rings, axis: &axis, tolerance: 1e-3, lines: &[], points: &[[5.0, 2.0]] };
+        let domain = Domain { rings: &steps(&rings), axis: &axis, tolerance: 1e-3, lines: &[], points: &[[5.0, 2.0]] };
         let look = Look { title: Some("box <1>".into()), units: Some("m".into()), diagram: false };
         let svg = render(&d, Some(&domain), &offsets, &look);
         check_numbers(&svg);

@@ -15,7 +15,7 @@ mod curves;
 
 use std::fmt;
 
-pub use curves::Step;
+pub use curves::{line_steps, ring_steps, Step};
 
 /// A position: the first two ordinates.
 pub type Xy = [f64; 2];
@@ -29,11 +29,12 @@ pub enum Shape {
     /// Its rings, the outer one first (the domain is even-odd anyway).
     Polygon(Vec<Vec<Xy>>),
     /// A chain of segments and at least one arc (a CIRCULARSTRING or
-    /// COMPOUNDCURVE, a member of a MULTICURVE): an obstacle.
+    /// COMPOUNDCURVE, a member of a MULTICURVE, an open DXF polyline with
+    /// bulges, an ARC): an obstacle.
     Curve(Vec<Step>),
-    /// The rings of a CURVEPOLYGON with at least one arc: obstacles, as
-    /// there is no domain with arcs yet (a CURVEPOLYGON without arcs is a
-    /// `Polygon`).
+    /// The closed rings of a CURVEPOLYGON with at least one arc (of a
+    /// closed DXF polyline with bulges, a CIRCLE): a polygon, bounding the
+    /// domain like any other (a CURVEPOLYGON without arcs is a `Polygon`).
     CurveRings(Vec<Vec<Step>>),
 }
 

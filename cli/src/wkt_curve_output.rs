@@ -4,12 +4,15 @@
 //! [`Offset::polygons`]: its ring, then its holes), each ring a
 //! `COMPOUNDCURVE` of linestrings (runs of straight pieces) and
 //! `CIRCULARSTRING`s (an arc each: start, the point halfway along it, end;
-//! a whole circle two half circles). `MULTISURFACE EMPTY` for an empty
+//! a whole circle two half circles; an arc so flat that its three points
+//! are on one line, as where an offset passes a tangent joint, its chord).
+//! `MULTISURFACE EMPTY` for an empty
 //! region. The ends are the loops' own, exactly (shortest round-trip
 //! numbers); the middle points are rounded, as any third point must be.
 
 use std::fmt::Write;
 
+use segvoronoi::geometry::predicates::{orientation, Orientation};
 use segvoronoi::{Offset, Point};
 
 use crate::offset_arcs::{middle, pieces, Piece};
@@ -52,16 +55,27 @@ fn ring(pieces: &[Piece]) -> String {
         run.clear();
     };
     for piece in pieces {
-        match *piece {
-            Piece::Line { from, to } => {
+        // an arc's point halfway along it; none for a line, and none for
+        // an arc so flat that its three points are on one line (a sliver
+        // where an offset passes a tangent joint), which no reader takes:
+        // its chord instead
+        let middle = match *piece {
+            Piece::Line { .. } => None,
+            Piece::Arc { centre, radius, from, to, counter_clockwise } => {
+                Some(middle(centre, radius, from, to, counter_clockwise))
+                    .filter(|&m| orientation(from, m, to) != Orientation::Collinear)
+            }
+        };
+        let (from, to) = (piece.from(), piece.to());
+        match middle {
+            None => {
                 if run.is_empty() {
                     run.push(from);
                 }
                 run.push(to);
             }
-            Piece::Arc { centre, radius, from, to, counter_clockwise } => {
+            Some(m) => {
                 flush(&mut run, &mut members);
-                let m = middle(centre, radius, from, to, counter_clockwise);
                 members.push(format!("CIRCULARSTRING ({}, {}, {})", xy(from), xy(m), xy(to)));
             }
         }

@@ -1,10 +1,13 @@
 //! The `segvoronoi` program, run as a user would: exit status, standard
 //! output and standard error, files written.
 
+mod common;
+
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
 
+use common::{multilinestring_z, segment_distance};
 use segvoronoi::{Builder, TopologyOptions};
 
 const BIN: &str = env!("CARGO_BIN_EXE_segvoronoi");
@@ -337,30 +340,10 @@ fn distance_to_rings(p: [f64; 2], rings: &[&[[f64; 2]]]) -> f64 {
     let mut best = f64::INFINITY;
     for ring in rings {
         for k in 0..ring.len() {
-            let (a, b) = (ring[k], ring[(k + 1) % ring.len()]);
-            let (d, v) = ([b[0] - a[0], b[1] - a[1]], [p[0] - a[0], p[1] - a[1]]);
-            let t = ((v[0] * d[0] + v[1] * d[1]) / (d[0] * d[0] + d[1] * d[1])).clamp(0.0, 1.0);
-            best = best.min((v[0] - t * d[0]).hypot(v[1] - t * d[1]));
+            best = best.min(segment_distance(p, ring[k], ring[(k + 1) % ring.len()]));
         }
     }
     best
-}
-
-/// The linestrings of one `MULTILINESTRING Z`, each a list of `[x, y, z]`.
-fn multilinestring_z(text: &str) -> Vec<Vec<[f64; 3]>> {
-    let body = text.trim().strip_prefix("MULTILINESTRING Z (").and_then(|t| t.strip_suffix(')')).expect(text);
-    body.split("), ")
-        .map(|line| {
-            line.trim_matches(['(', ')'])
-                .split(", ")
-                .map(|point| {
-                    let v: Vec<f64> = point.split(' ').map(|w| w.parse().expect(point)).collect();
-                    assert_eq!(v.len(), 3, "{point}");
-                    [v[0], v[1], v[2]]
-                })
-                .collect()
-        })
-        .collect()
 }
 
 fn holed_diagram() -> segvoronoi::Diagram {

@@ -416,23 +416,37 @@ fn postgis_examples_that_touch_are_refused_naming_both() {
 }
 
 #[test]
-fn medial_axis_offsets_and_domains_are_refused_with_arcs() {
-    let input = input_file("refused.wkt", SLOT);
-    let out = temp_path("refused-out.wkt");
+fn open_curves_are_obstacles_and_write_sites_is_refused() {
+    // the slot's outline as a COMPOUNDCURVE: an obstacle, not a domain
+    let input = input_file("obstacle.wkt", SLOT);
+    let out = temp_path("obstacle-out.json");
     let path = out.to_str().unwrap();
-    for args in [
-        vec!["--medial-axis", path],
-        vec!["--offset", "0.5", "--offsets", path],
-        vec!["--max-inscribed-circle"],
-        vec!["--corner-angle", "30", "--svg", path],
-        vec!["--write-sites", path],
-    ] {
+    let run_with = |args: &[&str]| {
         let mut all = vec![input.to_str().unwrap()];
-        all.extend_from_slice(&args);
-        let o = run(&all);
+        all.extend_from_slice(args);
+        run(&all)
+    };
+    // grown: the band around the outline, 14.283... (the grown slot less the shrunk one)
+    let o = run_with(&["--offset", "0.5", "--offsets", path]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let offsets: Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let area = offsets["offsets"][0]["area"].as_f64().unwrap();
+    let expected = (3.0 * 4.0 + std::f64::consts::PI * 2.25) - (4.0 + std::f64::consts::PI * 0.25);
+    assert!((area - expected).abs() < 1e-9 * expected, "{area} vs {expected}");
+    std::fs::remove_file(&out).unwrap();
+    let o = run_with(&["--medial-axis", path, "--corner-angle", "30", "--prune-spurs", "1"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // what needs a domain, or has no arcs, says so and writes nothing
+    for (args, words) in [
+        (&["--max-inscribed-circle"][..], &["--max-inscribed-circle needs a polygon"][..]),
+        (&["--offset=-0.5", "--offsets", path], &["negative", "no domain"]),
+        (&["--write-sites", path], &["--write-sites", "circular arcs"]),
+    ] {
+        std::fs::remove_file(&out).ok();
+        let o = run_with(args);
         assert_eq!(o.status.code(), Some(1), "{args:?}: {}", stderr(&o));
         let message = stderr(&o);
-        assert!(message.contains(args[0]) && message.contains("circular arcs") && message.contains("issue 32"), "{message}");
+        assert!(words.iter().all(|w| message.contains(w)), "{message}");
         assert!(!out.exists(), "{args:?} wrote a file");
     }
     std::fs::remove_file(&input).unwrap();

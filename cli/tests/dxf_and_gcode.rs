@@ -3,36 +3,17 @@
 //! R12 file as small programs write it), the program's outputs read back
 //! and compared with its exact loops (`--offsets OUT.json`).
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
 
-use dxf::entities::{Circle, Entity, EntityType, Insert, Line, LwPolyline};
+use std::path::{Path, PathBuf};
+
+use common::*;
+
+use dxf::entities::{Circle, Entity, EntityType, Insert};
 use dxf::enums::AcadVersion;
-use dxf::{Block, Drawing, LwPolylineVertex, Point as DxfPoint};
+use dxf::{Block, Drawing, Point as DxfPoint};
 use segvoronoi::{Builder, CircularArc};
 use serde_json::Value;
-
-const BIN: &str = env!("CARGO_BIN_EXE_segvoronoi");
-
-fn temp_path(name: &str) -> PathBuf {
-    std::env::temp_dir().join(format!("segvoronoi-cli-dxf-{}-{name}", std::process::id()))
-}
-
-fn run(args: &[&str]) -> Output {
-    Command::new(BIN).args(args).output().expect("the binary runs")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn path_str(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
 
 /// Whether the library builds arcs yet (as in `curves_and_diagram.rs`).
 fn arcs_build() -> bool {
@@ -46,32 +27,6 @@ fn arcs_build() -> bool {
             false
         }
     }
-}
-
-fn on_layer(specific: EntityType, layer: &str) -> Entity {
-    let mut e = Entity::new(specific);
-    e.common.layer = layer.to_string();
-    e
-}
-
-fn line(a: [f64; 2], b: [f64; 2], layer: &str) -> Entity {
-    on_layer(EntityType::Line(Line::new(DxfPoint::new(a[0], a[1], 0.0), DxfPoint::new(b[0], b[1], 0.0))), layer)
-}
-
-/// A closed LWPOLYLINE: `(x, y, bulge)` per vertex.
-fn lwpolyline(vertices: &[(f64, f64, f64)], layer: &str) -> Entity {
-    let mut p = LwPolyline {
-        vertices: vertices.iter().map(|&(x, y, bulge)| LwPolylineVertex { x, y, bulge, ..Default::default() }).collect(),
-        ..Default::default()
-    };
-    p.set_is_closed(true);
-    on_layer(EntityType::LwPolyline(p), layer)
-}
-
-fn save(drawing: &Drawing, name: &str) -> PathBuf {
-    let path = temp_path(name);
-    drawing.save_file(&path).unwrap();
-    path
 }
 
 /// A plate 100 × 60 with a square and a triangular hole, drawn only with
@@ -96,73 +51,6 @@ fn lines_plate() -> PathBuf {
         d.add_entity(e);
     }
     save(&d, "lines-plate.dxf")
-}
-
-/// The program's exact offsets (`--offsets OUT.json`) of `input`.
-fn exact_offsets(input: &Path, distances: &[&str], name: &str) -> Value {
-    let out = temp_path(name);
-    let mut args = vec![path_str(input).to_string(), "--offsets".into(), path_str(&out).into()];
-    for d in distances {
-        args.push(format!("--offset={d}"));
-    }
-    let o = Command::new(BIN).args(&args).output().unwrap();
-    assert!(o.status.success(), "{}", stderr(&o));
-    serde_json::from_str(&std::fs::read_to_string(out).unwrap()).unwrap()
-}
-
-/// A piece of a loop, from the JSON; a whole circle split into two halves
-/// as the writers split it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Piece {
-    Line { from: [f64; 2], to: [f64; 2] },
-    Arc { from: [f64; 2], to: [f64; 2], centre: [f64; 2], ccw: bool },
-}
-
-fn xy(v: &Value) -> [f64; 2] {
-    [v[0].as_f64().unwrap(), v[1].as_f64().unwrap()]
-}
-
-fn json_pieces(lp: &Value) -> Vec<Piece> {
-    let mut out = Vec::new();
-    for p in lp["pieces"].as_array().unwrap() {
-        let (from, to) = (xy(&p["from"]), xy(&p["to"]));
-        if p["kind"] == "line" {
-            out.push(Piece::Line { from, to });
-            continue;
-        }
-        let (centre, ccw) = (xy(&p["centre"]), p["counter_clockwise"].as_bool().unwrap());
-        if from == to {
-            let opposite = [2.0 * centre[0] - from[0], 2.0 * centre[1] - from[1]];
-            out.push(Piece::Arc { from, to: opposite, centre, ccw });
-            out.push(Piece::Arc { from: opposite, to, centre, ccw });
-        } else {
-            out.push(Piece::Arc { from, to, centre, ccw });
-        }
-    }
-    out
-}
-
-/// tan(sweep / 4), signed, from the angles (independently of the writer's
-/// chord formula).
-fn expected_bulge(piece: &Piece) -> f64 {
-    match *piece {
-        Piece::Line { .. } => 0.0,
-        Piece::Arc { from, to, centre, ccw } => {
-            let angle = |p: [f64; 2]| (p[1] - centre[1]).atan2(p[0] - centre[0]);
-            let turn = if ccw { angle(to) - angle(from) } else { angle(from) - angle(to) };
-            let sweep = if from == to { std::f64::consts::TAU } else { turn.rem_euclid(std::f64::consts::TAU) };
-            let b = (sweep / 4.0).tan();
-            if ccw {
-                b
-            } else {
-                -b
-            }
-        }
-    }
-}
-
-fn close(a: [f64; 2], b: [f64; 2], scale: f64) -> bool {
-    (a[0] - b[0]).abs() <= 1e-12 * scale && (a[1] - b[1]).abs() <= 1e-12 * scale
 }
 
 #[test]
@@ -230,59 +118,6 @@ fn points_grown_are_circles_in_dxf_and_two_half_arcs_in_gcode() {
     assert!(o.status.success(), "{}", stderr(&o));
     let text = std::fs::read_to_string(nc).unwrap();
     assert!(text.contains("G0 X2.5 Y2\nG1 Z-1 F100\nG3 X0.5 Y2 I-1 J0 F600\nG3 X2.5 Y2 I1 J0\nG0 Z5\n"), "{text}");
-}
-
-/// A loop as the G-code cuts it.
-struct CutLoop {
-    distance: f64,
-    index: usize,
-    pieces: Vec<Piece>,
-}
-
-/// Reads the program back: the comment before each loop names its
-/// distance and index; a plunge starts it, a retract ends it.
-fn parse_gcode(text: &str, plunge: &str) -> Vec<CutLoop> {
-    let mut loops = Vec::new();
-    let (mut at, mut current): ([f64; 2], Option<CutLoop>) = ([f64::NAN; 2], None);
-    let (mut distance, mut index) = (f64::NAN, usize::MAX);
-    for line in text.lines() {
-        if let Some(comment) = line.strip_prefix("(offset ") {
-            let (d, rest) = comment.split_once(": loop ").unwrap();
-            distance = d.parse().unwrap();
-            index = rest.split(',').next().unwrap().parse().unwrap();
-            continue;
-        }
-        let words: Vec<&str> = line.split_whitespace().collect();
-        let value = |letter: char| words.iter().find_map(|w| w.strip_prefix(letter)).map(|v| v.parse::<f64>().unwrap());
-        match words.first().copied() {
-            Some("G0") if value('Z').is_some() => {
-                if let Some(done) = current.take() {
-                    loops.push(done);
-                }
-            }
-            Some("G0") => at = [value('X').unwrap(), value('Y').unwrap()],
-            Some("G1") if value('Z').is_some() => {
-                assert_eq!(line, plunge);
-                current = Some(CutLoop { distance, index, pieces: Vec::new() });
-            }
-            Some(g @ ("G1" | "G2" | "G3")) => {
-                let to = [value('X').unwrap(), value('Y').unwrap()];
-                let piece = match g {
-                    "G1" => Piece::Line { from: at, to },
-                    _ => Piece::Arc {
-                        from: at,
-                        to,
-                        centre: [at[0] + value('I').unwrap(), at[1] + value('J').unwrap()],
-                        ccw: g == "G3",
-                    },
-                };
-                current.as_mut().expect("cutting inside a loop").pieces.push(piece);
-                at = to;
-            }
-            _ => {}
-        }
-    }
-    loops
 }
 
 #[test]
@@ -428,13 +263,15 @@ fn a_rounded_plate_with_bulges_and_circles_is_arcs() {
         d.add_entity(on_layer(EntityType::Circle(Circle::new(DxfPoint::new(x, 30.0, 0.0), 6.0)), "HOLES"));
     }
     let input = save(&d, "rounded.dxf");
-    // no domain with arcs yet: offsets refused, naming issue 32
-    let o = run(&[path_str(&input), "--offset=-1", "--offsets", path_str(&temp_path("rounded.nc"))]);
-    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
-    assert!(stderr(&o).contains("issue 32"), "{}", stderr(&o));
     if !arcs_build() {
         return;
     }
+    // a domain: the plate less the holes, shrunk by 1 (corners of radius
+    // 4, holes of radius 7)
+    let exact = exact_offsets(&input, &["-1"], "rounded-exact.json");
+    let area = exact["offsets"][0]["area"].as_f64().unwrap();
+    let expected = 98.0 * 58.0 - 16.0 * (4.0 - std::f64::consts::PI) - 3.0 * 49.0 * std::f64::consts::PI;
+    assert!((area - expected).abs() < 1e-9 * expected, "{area} vs {expected}");
     let diagram = temp_path("rounded-diagram.json");
     let o = run(&[path_str(&input), "--diagram", path_str(&diagram), "--stats"]);
     assert!(o.status.success(), "{}", stderr(&o));

@@ -4,7 +4,7 @@
 //! The file is parsed by the `dxf` crate (ASCII or binary, R12 to 2018);
 //! here its entities become the shapes WKT input becomes (`entities`,
 //! `shapes`), their endpoints snapped together first (`snap`), and LINEs
-//! joined into rings (`rings`).
+//! and ARCs joined into rings (`rings`).
 
 mod entities;
 mod rings;
@@ -17,7 +17,8 @@ use crate::wkt::Shapes;
 
 /// A drawing as the program takes it.
 pub struct Part {
-    /// The shapes, in file order (a ring of LINEs where its first LINE is).
+    /// The shapes, in file order (a ring of LINEs and ARCs where its first
+    /// piece is).
     pub shapes: Shapes,
     /// For each shape, the entities it came from, e.g. `entity 12
     /// (LWPOLYLINE, layer "PART")`.

@@ -4,11 +4,11 @@
 //! - a polyline (LWPOLYLINE, POLYLINE) of segments only: a polygon ring
 //!   when closed (by its flag, or by ending where it starts), else a
 //!   linestring;
-//! - a polyline with arcs, an ARC, a CIRCLE: a chain of segments and
-//!   arcs (closed or not), an obstacle: the library takes no domains
-//!   with arcs yet (issue 32);
-//! - LINEs: closed groups become polygon rings (see `rings`), the
-//!   others single segments.
+//! - a polyline with arcs, a CIRCLE: a chain of segments and arcs, a
+//!   polygon ring (bounding the domain) when closed, else an obstacle;
+//! - LINEs and ARCs (and open polylines of one piece): closed groups
+//!   become polygon rings (see `rings`), the others single segments and
+//!   arcs (obstacles).
 
 use segvoronoi::CircularArc;
 
@@ -25,46 +25,55 @@ pub struct Made {
 
 pub fn shapes(items: &[Item]) -> Result<Made, String> {
     let mut made = Made { shapes: Vec::new(), names: Vec::new(), notes: Vec::new() };
-    let lines: Vec<(usize, [Xy; 2])> = items
+    // the LINEs and ARCs (and open polylines of one piece): ends and bulge
+    let pieces: Vec<(usize, [Xy; 2], f64)> = items
         .iter()
         .enumerate()
-        .filter_map(|(k, item)| match item.raw {
-            Raw::Line(ends) => Some((k, ends)),
+        .filter_map(|(k, item)| match &item.raw {
+            Raw::Line(ends) => Some((k, *ends, 0.0)),
+            Raw::Chain { vertices, closed: false } if vertices.len() == 2 => {
+                Some((k, [vertices[0].0, vertices[1].0], vertices[0].1))
+            }
             _ => None,
         })
         .collect();
-    let joined = rings(&lines.iter().map(|&(_, ends)| ends).collect::<Vec<_>>());
-    // what each LINE item becomes: the first LINE of a ring stands for it
+    let joined = rings(&pieces.iter().map(|&(_, ends, bulge)| (ends, bulge)).collect::<Vec<_>>());
+    // what each piece becomes: the first piece of a ring stands for it
     let mut ring_at: std::collections::HashMap<usize, usize> = Default::default();
     let mut in_ring = std::collections::HashSet::new();
     for (r, ring) in joined.rings.iter().enumerate() {
-        let first = ring.lines.iter().map(|&l| lines[l].0).min().expect("a ring has lines");
+        let first = ring.lines.iter().map(|&l| pieces[l].0).min().expect("a ring has pieces");
         ring_at.insert(first, r);
-        in_ring.extend(ring.lines.iter().map(|&l| lines[l].0));
+        in_ring.extend(ring.lines.iter().map(|&l| pieces[l].0));
     }
     if !joined.dropped.is_empty() {
-        let names: Vec<&str> = joined.dropped.iter().map(|&l| items[lines[l].0].name.as_str()).collect();
+        let names: Vec<&str> = joined.dropped.iter().map(|&l| items[pieces[l].0].name.as_str()).collect();
         made.notes.push(format!(
-            "left out {} LINE{} of zero length or drawn twice: {}",
+            "left out {} LINE{} or ARC{} of zero length or drawn twice: {}",
             names.len(),
+            if names.len() == 1 { "" } else { "s" },
             if names.len() == 1 { "" } else { "s" },
             list(&names)
         ));
     }
-    let dropped: std::collections::HashSet<usize> = joined.dropped.iter().map(|&l| lines[l].0).collect();
+    let dropped: std::collections::HashSet<usize> = joined.dropped.iter().map(|&l| pieces[l].0).collect();
     for (k, item) in items.iter().enumerate() {
         check_finite(item)?;
+        if let Some(&r) = ring_at.get(&k) {
+            let ring = &joined.rings[r];
+            let names: Vec<&str> = ring.lines.iter().map(|&l| items[pieces[l].0].name.as_str()).collect();
+            let what = if ring.points.iter().any(|&(_, b)| b != 0.0) { "LINEs and ARCs" } else { "LINEs" };
+            let name = format!("the ring of {what} {}", list(&names));
+            let shape = chain(&ring.points, true, &name)?.expect("a ring has two vertices or more");
+            made.push(shape, name);
+            continue;
+        }
+        if in_ring.contains(&k) || dropped.contains(&k) {
+            continue;
+        }
         match &item.raw {
             Raw::Point(p) => made.push(Shape::Point(*p), item.name.clone()),
-            Raw::Line(ends) => {
-                if let Some(&r) = ring_at.get(&k) {
-                    let ring = &joined.rings[r];
-                    let names: Vec<&str> = ring.lines.iter().map(|&l| items[lines[l].0].name.as_str()).collect();
-                    made.push(Shape::Polygon(vec![ring.points.clone()]), format!("the ring of LINEs {}", list(&names)));
-                } else if !in_ring.contains(&k) && !dropped.contains(&k) {
-                    made.push(Shape::LineString(ends.to_vec()), item.name.clone());
-                }
-            }
+            Raw::Line(ends) => made.push(Shape::LineString(ends.to_vec()), item.name.clone()),
             Raw::Chain { vertices, closed } => match chain(vertices, *closed, &item.name)? {
                 Some(shape) => made.push(shape, item.name.clone()),
                 None => made.notes.push(format!("left out {}: fewer than two distinct vertices", item.name)),

@@ -428,8 +428,8 @@ impl<'a> Reader<'a> {
     }
 
     /// A CURVEPOLYGON's body: closed curves. With an arc among them its
-    /// rings are obstacles (no domain with arcs yet); without, it is a
-    /// polygon like any other.
+    /// rings are chains of segments and arcs (a polygon bounded by arcs);
+    /// without, it is a polygon like any other.
     fn curve_polygon(&mut self, dim: Option<usize>) -> Result<Shape, ParseError> {
         let mut rings: Vec<Chain> = Vec::new();
         self.list("a CURVEPOLYGON", |r| {
@@ -466,12 +466,24 @@ fn plain(points: &[Located]) -> Vec<Xy> {
     points.iter().map(|&(_, p)| p).collect()
 }
 
-/// A linestring as a chain: a segment between each two distinct
-/// consecutive points.
+/// A linestring as a chain (see [`line_steps`]).
 fn linear(at: usize, points: &[Located]) -> Chain {
-    let steps = points.windows(2).filter(|w| w[0].1 != w[1].1).map(|w| Step::Segment([w[0].1, w[1].1])).collect();
+    let steps = line_steps(&plain(points));
     let ends = points.first().zip(points.last()).map(|(&(_, a), &(_, b))| (a, b));
     Chain { at, steps, ends }
+}
+
+/// A closed ring of points (its first point repeated at the end or not)
+/// as a chain of segments back to its start.
+pub fn ring_steps(points: &[Xy]) -> Vec<Step> {
+    let closing = points.first().filter(|first| points.last() != Some(first));
+    line_steps(&points.iter().chain(closing).copied().collect::<Vec<_>>())
+}
+
+/// A linestring as a chain: a segment between each two distinct
+/// consecutive points.
+pub fn line_steps(points: &[Xy]) -> Vec<Step> {
+    points.windows(2).filter(|w| w[0] != w[1]).map(|w| Step::Segment([w[0], w[1]])).collect()
 }
 
 /// The points along a chain of segments: its start, then each end.
