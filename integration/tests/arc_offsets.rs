@@ -850,3 +850,67 @@ fn holes_of_shallow_arcs_inside_their_shell() {
         check_medial_axis(&format!("shallow holes {case}"), &rings, 12.0);
     }
 }
+
+/// Two arcs continuing each other along one tangent at a corner `J` (a
+/// quadratic of a letter as a biarc, then the next): every point on the
+/// normal at `J` is as far from `J` as from both circles, so the vertex of
+/// the two arcs and `J` solved as any other was one point of that line, as
+/// good as another — far out (a vertex with nearer sites: a wrong diagram)
+/// or refused. It is the corner itself, of radius zero. Minimised from
+/// DejaVu Sans' @ (refused) and G (wrong: a vertex 1008 out with nearer
+/// sites); then rings with two such joins, arcs of unequal radii level with
+/// their common rightmost point, both ways round (these the old solver
+/// happened to answer; the letters are in python/tests/test_curved_fonts.py).
+#[test]
+fn arcs_continuing_each_other_along_a_tangent() {
+    let p = Point::new;
+    let at_sign = vec![vec![
+        (p(762.0, 537.0), 0.0),
+        (p(1271.3575857432168, 402.6537842896344), 0.07637727960948802),
+        (p(1292.0, 537.0), 0.07840030666039141),
+        (p(1271.145955129038, 669.1797331733893), 0.10149140361213423),
+    ]];
+    check_domain_offsets("the @'s tangent arcs", &at_sign, &[-20.0, -5.0, 5.0, 40.0], 1500.0);
+    check_medial_axis("the @'s tangent arcs", &at_sign, 1500.0);
+    let letter_g = vec![vec![
+        (p(889.0, 614.0), 0.0),
+        (p(889.0, 780.0), 0.0),
+        (p(1296.8125388533142, 66.60631988944365), 0.0),
+        (p(312.5, 175.5), 0.0),
+        (p(312.5, 1315.5), 0.0),
+        (p(370.29754257493084, 1031.7864417833287), 0.07334724269384839),
+        (p(328.0, 745.0), 0.07349990352093251),
+        (p(370.2418884493109, 459.19222479276993), 0.11009676178142473),
+    ]];
+    check_domain_offsets("the G's tangent arcs", &letter_g, &[-20.0, -5.0, 5.0, 40.0], 1500.0);
+    check_medial_axis("the G's tangent arcs", &letter_g, 1500.0);
+    // the same shape turned and scaled: a left edge closing two arcs
+    // that meet at their rightmost point `J`, both centres level with it
+    // (radii r1 below, r2 above, unequal: a biarc of a letter's bowl), and
+    // such joins at several points of one ring
+    let mut rng = SplitMix64(1292);
+    for case in 0..12 {
+        let mut ring: Ring = Vec::new();
+        let (x, y) = (10.0 * rng.unit(), 10.0 * rng.unit());
+        let mut left = x - 6.0;
+        for bowl in 0..2 {
+            let y = y + 5.0 * bowl as f64;
+            let (r1, r2) = (1.0 + 2.0 * rng.unit(), 1.0 + 2.0 * rng.unit());
+            let (phi1, phi2) = (0.3 + 1.0 * rng.unit(), 0.3 + 1.0 * rng.unit());
+            // below: from the centre (x − r1, y) at angle −φ1 up to J = (x, y)
+            let start = p(x - r1 + r1 * phi1.cos(), y - r1 * phi1.sin());
+            let end = p(x - r2 + r2 * phi2.cos(), y + r2 * phi2.sin());
+            ring.push((start, (phi1 / 4.0).tan()));
+            ring.push((p(x, y), (phi2 / 4.0).tan()));
+            ring.push((end, 0.0));
+            left = left.min(start.x.min(end.x) - 1.0);
+        }
+        let (top, bottom) = (ring[5].0.y + 1.0, ring[0].0.y - 1.0);
+        ring.push((p(left, top), 0.0));
+        ring.push((p(left, bottom), 0.0));
+        let rings = vec![if case % 2 == 0 { ring.clone() } else { reverse_ring(&ring) }];
+        let distances: Vec<f64> = (0..4).map(|k| if k % 2 == 0 { -1.0 } else { 1.0 } * (0.05 + 1.5 * rng.unit())).collect();
+        check_domain_offsets(&format!("tangent arcs {case}"), &rings, &distances, 20.0);
+        check_medial_axis(&format!("tangent arcs {case}"), &rings, 20.0);
+    }
+}

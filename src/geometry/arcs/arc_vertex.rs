@@ -25,6 +25,7 @@
 //! Newton steps on the true distances. Not certified: the arcs' decisions
 //! in `arc_predicates` compare these positions with tolerances.
 
+use crate::geometry::arc::CircularArc;
 use crate::geometry::point::Point;
 use crate::geometry::site::Site;
 
@@ -32,6 +33,9 @@ use crate::geometry::site::Site;
 /// counter-clockwise order given; `None` when no candidate fits (the
 /// caller falls back as for other sites).
 pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
+    if let Some(vertex) = tangent_join_vertex(sites) {
+        return Some(vertex);
+    }
     // near the origin and of size about 1 (a power of two: exact), so
     // that the tolerances below mean the same at every magnitude
     let origin = local_origin(sites);
@@ -74,6 +78,26 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     let (centre, radius) = if score.fract() > 1e-14 { polish(&local, centre, radius) } else { (centre, radius) };
     let back = 1.0 / unit;
     Some((Point::new(centre.x * back + origin.x, centre.y * back + origin.y), radius.max(0.0) * back))
+}
+
+/// The vertex of two arcs that continue each other along one tangent at
+/// their common end `J`, and of `J`: at `J`, of radius zero.
+fn tangent_join_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
+    let k = (0..3).find(|&k| sites[k].as_point().is_some())?;
+    let j = sites[k].as_point()?;
+    let (Site::Arc(after), Site::Arc(before)) = (sites[(k + 1) % 3], sites[(k + 2) % 3]) else {
+        return None;
+    };
+    let ends_at_j = |arc: &CircularArc| arc.start() == j || arc.end() == j;
+    if !(ends_at_j(&after) && ends_at_j(&before)) {
+        return None;
+    }
+    let (d_after, d_before) = (after.tangent_into(j), before.tangent_into(j));
+    let cross = d_after.x * d_before.y - d_after.y * d_before.x;
+    if !(cross.abs() <= 1e-12 && d_after.x * d_before.x + d_after.y * d_before.y < 0.0) {
+        return None;
+    }
+    Some((j, 0.0))
 }
 
 /// Where a vertex may touch a site: a point at itself; a segment or an arc
