@@ -4,8 +4,8 @@
 # runs its tests: pytest over python/tests (against shapely/GEOS, the
 # README's examples, the Dask example on a local two-worker cluster) and
 # the doctests of the installed package. Needs the Rust toolchain and
-# Python 3.9+; installs python3-venv with apt-get when venv is missing
-# (Debian splits it out). pip fetches maturin, numpy, shapely, pytest,
+# Python 3.9+; installs python3-venv and fonts-dejavu-core with apt-get
+# when missing. pip fetches maturin, numpy, shapely, pytest, fonttools,
 # geopandas and dask from PyPI. SEGVORONOI_PY_MINIMAL=1 skips geopandas
 # and dask (their tests are then skipped).
 set -euo pipefail
@@ -13,11 +13,16 @@ cd "$(dirname "$0")/.."
 root="$(pwd)"
 python="${PYTHON:-python3}"
 
-if ! "$python" -c "import venv, ensurepip" >/dev/null 2>&1; then
+# python3-venv (Debian splits it out) and fonts-dejavu-core (the letters
+# of tests/test_curved_fonts.py), where missing
+need=()
+"$python" -c "import venv, ensurepip" >/dev/null 2>&1 || need+=(python3-venv)
+[ -e /usr/share/fonts/truetype/dejavu/DejaVuSerif.ttf ] || need+=(fonts-dejavu-core)
+if [ ${#need[@]} -gt 0 ]; then
   SUDO=""
   [ "$(id -u)" -eq 0 ] || SUDO="sudo"
   $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends python3-venv >/dev/null
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
 fi
 
 work="$(mktemp -d "${TMPDIR:-/tmp}/segvoronoi-python.XXXXXX")"
@@ -27,7 +32,7 @@ pip=("$work/venv/bin/python" -m pip --disable-pip-version-check -q)
 "${pip[@]}" install --upgrade pip
 # the package's own target directory, inside the temporary one: a clean build
 CARGO_TARGET_DIR="$work/target" "${pip[@]}" install "$root/python"
-"${pip[@]}" install pytest shapely numpy
+"${pip[@]}" install pytest shapely numpy fonttools
 if [ "${SEGVORONOI_PY_MINIMAL:-0}" != 1 ]; then
   "${pip[@]}" install geopandas "dask[distributed]"
 fi

@@ -114,7 +114,7 @@ def sagitta(shape: CurvedPolygon, d: float = 0.0) -> float:
     """The largest gap between an arc of the shape (grown or shrunk by
     ``d``) and the chords of its reference: ``R (1 - cos(pi / PER_CIRCLE))``."""
     radii = [arc_geometry((*r[k, :2], *r[(k + 1) % len(r), :2], r[k, 2]))[1] for r in shape.rings for k in range(len(r)) if r[k, 2]]
-    return (max(radii) + abs(d)) * (1 - math.cos(math.pi / PER_CIRCLE))
+    return (max(radii, default=0.0) + abs(d)) * (1 - math.cos(math.pi / PER_CIRCLE))
 
 
 def scale(geom) -> float:
