@@ -18,6 +18,7 @@
 //! *cone of influence*: the wedge at the centre between the rays through
 //! the endpoints. Beyond it the endpoints are nearer.
 
+use super::arithmetic::real::Real;
 use super::point::Point;
 use crate::error::{Error, ErrorKind};
 
@@ -270,6 +271,34 @@ impl CircularArc {
             Datum::Bulge(b) => (Some(b), None),
             Datum::Through(m) => (None, Some(m)),
         }
+    }
+
+    /// The centre and radius of the arc's circle in the arithmetic `T`
+    /// (`lift` takes an `f64` there), from its endpoints and its datum as
+    /// given, not from the rounded [`centre`](Self::centre): for the
+    /// refinement of near ties. `None` where the datum leaves `T`'s range.
+    pub(crate) fn circle_in<T: Real>(&self, lift: &impl Fn(f64) -> T) -> Option<(T, T, T)> {
+        let (sx, sy, ex, ey) = (lift(self.start.x), lift(self.start.y), lift(self.end.x), lift(self.end.y));
+        let half = lift(0.5);
+        let (cx, cy) = match self.datum {
+            Datum::Bulge(b) => {
+                // (s + e)/2 + k·perp(e − s), k = (1 − β²)/4β = (1/β − β)/4
+                let beta = lift(b);
+                let k = beta.recip().sub(&beta).mul(&lift(0.25));
+                let (dx, dy) = (ex.sub(&sx), ey.sub(&sy));
+                (sx.add(&ex).mul(&half).sub(&k.mul(&dy)), sy.add(&ey).mul(&half).add(&k.mul(&dx)))
+            }
+            Datum::Through(m) => {
+                // the circumcentre, relative to the start
+                let (bx, by) = (lift(m.x).sub(&sx), lift(m.y).sub(&sy));
+                let (qx, qy) = (ex.sub(&sx), ey.sub(&sy));
+                let d = bx.mul(&qy).sub(&by.mul(&qx)).mul(&lift(2.0));
+                let (b2, q2) = (bx.mul(&bx).add(&by.mul(&by)), qx.mul(&qx).add(&qy.mul(&qy)));
+                (sx.add(&qy.mul(&b2).sub(&by.mul(&q2)).div(&d)), sy.add(&bx.mul(&q2).sub(&qx.mul(&b2)).div(&d)))
+            }
+        };
+        let radius = T::hypot(&cx.sub(&sx), &cy.sub(&sy));
+        [cx.to_f64(), cy.to_f64(), radius.to_f64()].iter().all(|v| v.is_finite()).then_some((cx, cy, radius))
     }
 
     /// Whether the direction from the centre to `p` lies within the arc's

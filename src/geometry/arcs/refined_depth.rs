@@ -1,61 +1,74 @@
 //! The second stage of an arc's conflict with a vertex (`arc_predicates::
 //! arc_depth` without an endpoint of the arc among the vertex's sites):
 //! where the `f64` depth is within the rounding of the vertex and of the
-//! circles, the vertex is found again in big floats and the depth taken
+//! circles, the vertex is found again in double-double and the depth taken
 //! there.
 //!
 //! The vertex is the circle tangent to its three sites, each at the feature
 //! the `f64` vertex touches (a point, an endpoint, a segment's line, an
-//! arc's exact circle from outside or inside: `Feature`). Newton's method
-//! on the three equations `distance(x, feature) = t` from the `f64` vertex
-//! doubles the correct bits each step: five steps at 320 bits take an `f64`
-//! start to far beyond 2^-200 of the vertex's size. Arcs are their exact
-//! circles (`arc_contact::circle_in_bigfloat`, from the endpoints and the
-//! datum), not the `f64` roundings every other stage uses.
+//! arc's circle from outside or inside: `Feature`). Newton's method on the
+//! three equations `distance(x, feature) = t` from the `f64` vertex doubles
+//! the correct bits each step: four steps in double-double take an `f64`
+//! start to the arithmetic's own precision (about 2^-104). Arcs are their
+//! circles computed in double-double from the endpoints and the datum
+//! (`CircularArc::circle_in`), not the `f64` roundings every other stage
+//! uses. (Big floats were tried first: at 320 bits the tangent chains of
+//! the benchmark, where nearly every conflict is a tie, took 3.6 times as
+//! long.)
 //!
-//! Strength: not a proof. The depth at 320 bits decides when it exceeds
-//! 2^-200 of the vertex's size and coordinates; below that it is taken as
-//! the tie it almost surely is (equal rounded rectangles in a grid, arcs
-//! on one circle, concentric arcs), answered "touches", never "enters".
+//! Strength: not a proof. The refined depth decides when it exceeds 2^-90
+//! of the vertex's size and coordinates; below that it is taken as the tie
+//! it almost surely is (equal rounded rectangles in a grid, arcs on one
+//! circle, concentric arcs), answered "touches", never "enters".
 //! Two sites touched at one point (a vertex at a shared endpoint) leave
 //! Newton's system singular: such vertices keep the `f64` answer.
 
 use crate::geometry::arc::CircularArc;
-use crate::geometry::arithmetic::bigfloat::BigFloat;
-use crate::geometry::input::arc_contact::circle_in_bigfloat;
+use crate::geometry::arithmetic::double_double::DoubleDouble;
+use crate::geometry::arithmetic::real::Real;
 use crate::geometry::point::Point;
 use crate::geometry::site::{segment_parameter, Site};
 
-/// The precision of the refinement.
-const BITS: u64 = 320;
-
 /// Below this share of the vertex's size and coordinates a refined depth
-/// is a tie.
-const TIE_EXPONENT: i64 = -200;
+/// is a tie (double-double leaves some 2^-100 of them after the vertex's
+/// Newton steps).
+const TIE: f64 = 1.0 / (1u128 << 90) as f64;
 
 /// Where the `f64` depth needs the refinement: within this share of the
 /// vertex's size and coordinates (the solver's vertices and the arcs'
 /// rounded circles are good to some 2^-45 of them).
 const NEAR: f64 = 1.0 / (1u64 << 36) as f64;
 
-/// The part of a site a vertex touches, in big floats.
-enum Feature {
+/// An arithmetic the refinement runs in, which takes an `f64` exactly.
+trait Fine: Real + Copy {
+    fn lift(x: f64) -> Self;
+}
+
+impl Fine for DoubleDouble {
+    fn lift(x: f64) -> DoubleDouble {
+        DoubleDouble::from_f64(x)
+    }
+}
+
+/// An `f64` in the arithmetic `T`.
+fn lift<T: Fine>(x: f64) -> T {
+    T::lift(x)
+}
+
+/// The part of a site a vertex touches, in double-double.
+enum Feature<T> {
     /// A point (a point site or a piece's endpoint).
-    Point(BigFloat, BigFloat),
+    Point(T, T),
     /// A segment's line, with the unit normal toward the vertex.
-    Line { ax: BigFloat, ay: BigFloat, nx: BigFloat, ny: BigFloat },
+    Line { ax: T, ay: T, nx: T, ny: T },
     /// An arc's exact circle, touched from outside (`outside`) or inside.
-    Circle { cx: BigFloat, cy: BigFloat, r: BigFloat, outside: bool },
+    Circle { cx: T, cy: T, r: T, outside: bool },
 }
 
-fn big(x: f64) -> BigFloat {
-    BigFloat::from_f64(x, BITS)
-}
-
-impl Feature {
+impl<T: Fine> Feature<T> {
     /// The feature of `site` nearest to the `f64` vertex `x`.
-    fn of(site: &Site, x: Point) -> Option<Feature> {
-        let point = |p: Point| Feature::Point(big(p.x), big(p.y));
+    fn of(site: &Site, x: Point) -> Option<Feature<T>> {
+        let point = |p: Point| Feature::Point(lift::<T>(p.x), lift::<T>(p.y));
         Some(match *site {
             Site::Point(p) => point(p),
             Site::Segment { a, b } => {
@@ -63,21 +76,19 @@ impl Feature {
                 if !(t > 0.0 && t < 1.0) {
                     return Some(point(if a.distance_squared(x) <= b.distance_squared(x) { a } else { b }));
                 }
-                let (ux, uy) = (&big(b.x) - &big(a.x), &big(b.y) - &big(a.y));
-                let length = (&(&ux * &ux) + &(&uy * &uy)).sqrt();
-                // the left normal, turned toward the vertex
-                let (mut nx, mut ny) = ((-&uy).div(&length), ux.div(&length));
+                let (ux, uy) = (lift::<T>(b.x).sub(&lift::<T>(a.x)), lift::<T>(b.y).sub(&lift::<T>(a.y)));
+                let length = T::hypot(&ux, &uy);
                 let side = (b.x - a.x) * (x.y - a.y) - (b.y - a.y) * (x.x - a.x);
                 if side == 0.0 {
                     return None;
                 }
-                if side < 0.0 {
-                    (nx, ny) = (-&nx, -&ny);
-                }
-                Feature::Line { ax: big(a.x), ay: big(a.y), nx, ny }
+                // the left normal, turned toward the vertex
+                let (nx, ny) = (uy.neg().div(&length), ux.div(&length));
+                let (nx, ny) = if side < 0.0 { (nx.neg(), ny.neg()) } else { (nx, ny) };
+                Feature::Line { ax: lift::<T>(a.x), ay: lift::<T>(a.y), nx, ny }
             }
             Site::Arc(arc) if arc.spans(x) => {
-                let (cx, cy, r) = circle_in_bigfloat(&arc, BITS);
+                let (cx, cy, r) = arc.circle_in(&lift::<T>)?;
                 let outside = arc.centre().distance(x) > arc.radius();
                 Feature::Circle { cx, cy, r, outside }
             }
@@ -88,26 +99,22 @@ impl Feature {
     }
 
     /// The distance from `(x, y)` and its gradient.
-    fn distance(&self, x: &BigFloat, y: &BigFloat) -> (BigFloat, BigFloat, BigFloat) {
+    fn distance(&self, x: &T, y: &T) -> (T, T, T) {
         match self {
             Feature::Point(px, py) => {
-                let (dx, dy) = (x - px, y - py);
-                let d = (&(&dx * &dx) + &(&dy * &dy)).sqrt();
-                let (gx, gy) = (dx.div(&d), dy.div(&d));
-                (d, gx, gy)
+                let (dx, dy) = (x.sub(px), y.sub(py));
+                let d = T::hypot(&dx, &dy);
+                (d, dx.div(&d), dy.div(&d))
             }
-            Feature::Line { ax, ay, nx, ny } => {
-                let d = &(&(x - ax) * nx) + &(&(y - ay) * ny);
-                (d, nx.clone(), ny.clone())
-            }
+            Feature::Line { ax, ay, nx, ny } => (x.sub(ax).mul(nx).add(&y.sub(ay).mul(ny)), *nx, *ny),
             Feature::Circle { cx, cy, r, outside } => {
-                let (dx, dy) = (x - cx, y - cy);
-                let rho = (&(&dx * &dx) + &(&dy * &dy)).sqrt();
+                let (dx, dy) = (x.sub(cx), y.sub(cy));
+                let rho = T::hypot(&dx, &dy);
                 let (gx, gy) = (dx.div(&rho), dy.div(&rho));
                 if *outside {
-                    (&rho - r, gx, gy)
+                    (rho.sub(r), gx, gy)
                 } else {
-                    (r - &rho, -&gx, -&gy)
+                    (r.sub(&rho), gx.neg(), gy.neg())
                 }
             }
         }
@@ -116,60 +123,59 @@ impl Feature {
 
 /// The refined depth of the open `arc` in the circle of the vertex
 /// (`centre`, `radius`) of `sites`, none of which is an endpoint of `arc`:
-/// `Some(0.0)` for a tie, `Some(±size)` for a decided sign, `None` where
-/// the refinement does not apply (see the module).
+/// `Some(0.0)` for a tie, the depth (its sign certain to the refinement)
+/// otherwise, `None` where the refinement does not apply (see the module).
 pub(crate) fn refined_arc_depth(arc: &CircularArc, sites: &[Site; 3], centre: Point, radius: f64) -> Option<f64> {
-    let features: Vec<Feature> = sites.iter().map(|s| Feature::of(s, centre)).collect::<Option<_>>()?;
-    let (mut x, mut y, mut t) = (big(centre.x), big(centre.y), big(radius));
-    for _ in 0..5 {
+    refined_in::<DoubleDouble>(arc, sites, centre, radius)
+}
+
+/// [`refined_arc_depth`] in the arithmetic `T`.
+fn refined_in<T: Fine>(arc: &CircularArc, sites: &[Site; 3], centre: Point, radius: f64) -> Option<f64> {
+    let features: Vec<Feature<T>> = sites.iter().map(|s| Feature::of(s, centre)).collect::<Option<_>>()?;
+    let (mut x, mut y, mut t) = (lift::<T>(centre.x), lift::<T>(centre.y), lift::<T>(radius));
+    for _ in 0..4 {
         // F_i = d_i(x) − t, J_i = (∂d_i/∂x, ∂d_i/∂y, −1): solve J·δ = −F
         // by Cramer's rule, the third column all −1
-        let rows: Vec<_> = features.iter().map(|f| f.distance(&x, &y)).collect();
-        let f: Vec<BigFloat> = rows.iter().map(|(d, _, _)| d - &t).collect();
-        let (g1, g2, g3) = (&rows[0], &rows[1], &rows[2]);
-        let det3 = |c1: [&BigFloat; 3], c2: [&BigFloat; 3]| {
-            // det [c1 c2 (−1,−1,−1)] = −(c1 × c2)·(1,1,1)
-            let m = |i: usize, j: usize| &(c1[i] * c2[j]) - &(c1[j] * c2[i]);
-            -&(&(&m(1, 2) + &m(2, 0)) + &m(0, 1))
+        let rows: Vec<(T, T, T)> = features.iter().map(|f| f.distance(&x, &y)).collect();
+        let minus_f: Vec<T> = rows.iter().map(|(d, _, _)| t.sub(d)).collect();
+        let gx = [rows[0].1, rows[1].1, rows[2].1];
+        let gy = [rows[0].2, rows[1].2, rows[2].2];
+        // det [c1 c2 (−1, −1, −1)] = −(c1 × c2)·(1, 1, 1)
+        let det3 = |c1: [T; 3], c2: [T; 3]| {
+            let m = |i: usize, j: usize| c1[i].mul(&c2[j]).sub(&c1[j].mul(&c2[i]));
+            m(1, 2).add(&m(2, 0)).add(&m(0, 1)).neg()
         };
-        let gx = [&g1.1, &g2.1, &g3.1];
-        let gy = [&g1.2, &g2.2, &g3.2];
         let det = det3(gx, gy);
-        if det.to_f64().abs() < 1e-6 {
+        if !(det.to_f64().abs() >= 1e-6) {
             return None;
         }
-        let minus_f: Vec<BigFloat> = f.iter().map(|v| -v).collect();
-        let rhs = [&minus_f[0], &minus_f[1], &minus_f[2]];
+        let rhs = [minus_f[0], minus_f[1], minus_f[2]];
         let dx = det3(rhs, gy).div(&det);
         let dy = det3(gx, rhs).div(&det);
         // the third unknown from the first row: gx·dx + gy·dy − dt = −F
-        let dt = &(&(gx[0] * &dx) + &(gy[0] * &dy)) + &f[0];
-        x = &x + &dx;
-        y = &y + &dy;
-        t = &t + &dt;
+        let dt = gx[0].mul(&dx).add(&gy[0].mul(&dy)).sub(&minus_f[0]);
+        x = x.add(&dx);
+        y = y.add(&dy);
+        t = t.add(&dt);
     }
-    if t.signum() < 0 {
+    if t.signum() < 0 || !t.to_f64().is_finite() {
         return None;
     }
     let depth = match Feature::of(&Site::Arc(*arc), centre)? {
         Feature::Point(..) => {
-            let to = |p: Point| Feature::Point(big(p.x), big(p.y)).distance(&x, &y).0;
+            let to = |p: Point| Feature::<T>::Point(lift::<T>(p.x), lift::<T>(p.y)).distance(&x, &y).0;
             let (s, e) = (to(arc.start()), to(arc.end()));
-            let nearer = if (&s - &e).signum() <= 0 { s } else { e };
-            &nearer - &t
+            let nearer = if s.sub(&e).signum() <= 0 { s } else { e };
+            nearer.sub(&t)
         }
-        circle => {
-            let d = circle.distance(&x, &y).0;
-            &d.abs() - &t
-        }
+        circle => circle.distance(&x, &y).0.abs().sub(&t),
     };
     let size = radius.abs() + arc.radius() + centre.x.abs().max(centre.y.abs());
-    let tie = BigFloat::pow2(TIE_EXPONENT + size.log2().ceil() as i64, BITS);
-    if (&depth.abs() - &tie).signum() <= 0 {
-        return Some(0.0);
-    }
     let value = depth.to_f64();
-    Some(if value == 0.0 { depth.signum() as f64 * f64::MIN_POSITIVE } else { value })
+    if !value.is_finite() {
+        return None;
+    }
+    Some(if value.abs() <= TIE * size { 0.0 } else { value })
 }
 
 /// Whether an `f64` depth of the arc in the vertex's circle is close
@@ -202,9 +208,11 @@ mod tests {
     #[test]
     fn an_exact_tie_is_a_tie_and_an_ulp_off_is_decided() {
         // the arc's centre (0.4125, 0) · scale is no f64: its f64 depth is
-        // rounding noise
+        // rounding noise. (Scales as the construction has them, see
+        // `geometry::scale`; near 1e±160 the squares leave double-double's
+        // range and the refinement declines, keeping the `f64` answer.)
         let a = 0.1;
-        for scale in [1.0, 3.0, 0.1, 1e-200, 1e200, 2f64.powi(-1000), 2f64.powi(1000)] {
+        for scale in [1.0, 3.0, 0.1, 1e-15, 1e15, 2f64.powi(-60), 2f64.powi(60)] {
             let r = a * scale;
             let (centre, radius) = (p(0.0, 0.0), r);
             let (arc, sites) = touching(a, a, scale);
@@ -217,6 +225,12 @@ mod tests {
                 assert!(depth * sign > 0.0, "scale {scale}, via {via}: {depth}");
             }
         }
+    }
+
+    #[test]
+    fn out_of_range_the_refinement_declines() {
+        let (arc, sites) = touching(0.1, 0.1, 1e-200);
+        assert_eq!(refined_arc_depth(&arc, &sites, p(0.0, 0.0), 0.1 * 1e-200), None);
     }
 
     #[test]

@@ -50,7 +50,7 @@ use std::ops::{Add, Mul, Neg, Sub};
 use num_bigint::{BigInt, Sign};
 
 use crate::geometry::arc::CircularArc;
-use crate::geometry::arithmetic::bigfloat::{dyadic, BigFloat};
+use crate::geometry::arithmetic::bigfloat::dyadic;
 use crate::geometry::point::Point;
 
 /// An exact dyadic rational `m · 2^e`. Zero is `m = 0` (any `e`).
@@ -390,21 +390,6 @@ impl Circle {
         // could make it) gets some answer, never a panic: nothing divides.
         Circle { sd, d, q, a, b, c, f }
     }
-}
-
-/// The centre and radius of `arc`'s exact circle in `bits`-bit floating
-/// point: the centre `(−B/2A, −C/2A)` of the exact equation (two roundings
-/// each), the radius its distance to the start (a few more). For the
-/// refinement of near ties (`arcs::refined_depth`), where the `f64`
-/// circle's rounding would be the error left.
-pub(crate) fn circle_in_bigfloat(arc: &CircularArc, bits: u64) -> (BigFloat, BigFloat, BigFloat) {
-    let circle = Circle::new(arc);
-    let big = |d: &Dyadic| BigFloat::from_parts(&d.m, d.e, bits);
-    let two_a = big(&circle.a.times_pow2(1));
-    let (cx, cy) = ((-&big(&circle.b)).div(&two_a), (-&big(&circle.c)).div(&two_a));
-    let (dx, dy) = (&cx - &big(&circle.sd.x), &cy - &big(&circle.sd.y));
-    let radius = (&(&dx * &dx) + &(&dy * &dy)).sqrt();
-    (cx, cy, radius)
 }
 
 impl ExactArc {
