@@ -29,6 +29,8 @@
 
 #[path = "../offset_peers.rs"]
 mod offset_peers;
+#[path = "../text.rs"]
+mod text;
 
 #[cfg(has_clipper)]
 use offset_peers::clipper;
@@ -38,6 +40,7 @@ use offset_peers::quadsegs_within;
 use segvoronoi::{Builder, CircularArc, OffsetPiece};
 use segvoronoi_testgen::Rng;
 use std::time::Instant;
+use text::seconds;
 
 const TOLERANCE: f64 = 1e-4;
 const CHORDS: usize = 16;
@@ -191,16 +194,6 @@ fn other(ds: &[f64], budget: f64, mut run: impl FnMut(f64) -> (usize, usize)) ->
         measured: k,
         vertices: all.then_some(vertices),
         rings: all.then_some(rings),
-    }
-}
-
-fn seconds(s: f64) -> String {
-    if s >= 100.0 {
-        format!("{s:.0} s")
-    } else if s >= 1.0 {
-        format!("{s:.2} s")
-    } else {
-        format!("{:.1} ms", s * 1e3)
     }
 }
 

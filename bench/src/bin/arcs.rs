@@ -58,7 +58,7 @@ use contenders::Contender;
 use segments::Seg;
 use segvoronoi::splitmix::SplitMix64;
 use segvoronoi::{Builder, CircularArc, Point};
-use text::thousands;
+use text::{seconds, thousands};
 
 const SEED: u64 = 31;
 
@@ -584,16 +584,6 @@ fn run_family(family: Family, options: &Options, dir: &Path) -> FamilyResult {
         Err(e) => note = Some(format!("{title}: no {CHORDS}-chord rows: {e}")),
     }
     FamilyResult { family, arcs, rows, note }
-}
-
-fn seconds(s: f64) -> String {
-    if s >= 10.0 {
-        format!("{s:.1} s")
-    } else if s >= 1.0 {
-        format!("{s:.2} s")
-    } else {
-        format!("{:.0} ms", s * 1e3)
-    }
 }
 
 fn micros(s: f64) -> String {

@@ -62,7 +62,7 @@ use std::time::{Duration, Instant};
 use contenders::Contender;
 use segments::Seg;
 use segvoronoi::Builder;
-use text::thousands;
+use text::{seconds, thousands};
 
 /// The peers, in the table's column order (ours first).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -660,16 +660,6 @@ fn machine() -> String {
         .and_then(|s| s.lines().find_map(|l| l.strip_prefix("PRETTY_NAME=")).map(|v| v.trim_matches('"').to_string()))
         .unwrap_or_else(|| "unknown OS".into());
     format!("{cpu}, {cores} cores, {memory}, {os}")
-}
-
-fn seconds(s: f64) -> String {
-    if s >= 10.0 {
-        format!("{s:.1} s")
-    } else if s >= 1.0 {
-        format!("{s:.2} s")
-    } else {
-        format!("{:.0} ms", s * 1e3)
-    }
 }
 
 fn print_table(rows: &[(Prepared, Vec<Cell>)], options: &Options, load_before: &str, elapsed: Duration, notes: &[String]) {

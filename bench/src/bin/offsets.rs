@@ -45,6 +45,8 @@ mod offset_peers;
 mod peak;
 #[path = "../sheet.rs"]
 mod sheet;
+#[path = "../text.rs"]
+mod text;
 
 #[cfg(has_clipper)]
 use offset_peers::clipper;
@@ -54,6 +56,7 @@ use offset_peers::quadsegs_within;
 use segvoronoi::Builder;
 use sheet::{Polygon, HOLE, OUTER};
 use std::time::Instant;
+use text::seconds;
 
 const TOLERANCE: f64 = 1e-4;
 const ONE: f64 = -0.1;
@@ -155,16 +158,6 @@ fn other(ds: &[f64], budget: f64, mut run: impl FnMut(f64) -> (usize, usize)) ->
         hundred: elapsed * ds.len() as f64 / k as f64,
         measured: k,
         hundred_vertices: (k == ds.len()).then_some(vertices),
-    }
-}
-
-fn seconds(s: f64) -> String {
-    if s >= 100.0 {
-        format!("{s:.0} s")
-    } else if s >= 1.0 {
-        format!("{s:.2} s")
-    } else {
-        format!("{:.1} ms", s * 1e3)
     }
 }
 
