@@ -386,7 +386,7 @@ impl CircularArc {
 /// `1e-300` nor overflow near `1e300`.
 fn near_unit(points: [Point; 3]) -> [Point; 3] {
     let largest = points.iter().fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
-    let unit = super::site::unit_near_inverse(largest);
+    let unit = super::arithmetic::real::unit_near_inverse(largest);
     points.map(|p| Point::new(p.x * unit, p.y * unit))
 }
 

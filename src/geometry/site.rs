@@ -16,7 +16,7 @@
 //! the segment site, so no tolerance is wanted (or safe) here.
 
 use super::arc::CircularArc;
-use super::arithmetic::real::Real;
+use super::arithmetic::real::{unit_near_inverse, Real};
 use super::point::Point;
 
 /// A site as geometry: a point, or an open segment whose endpoints are
@@ -248,15 +248,6 @@ pub(crate) fn segment_parameter(a: Point, b: Point, p: Point) -> f64 {
     let unit = unit_near_inverse(ux.abs().max(uy.abs()));
     let (ux, uy) = (ux * unit, uy * unit);
     (ux * (p.x - a.x) + uy * (p.y - a.y)) / (ux * ux + uy * uy) * unit
-}
-
-/// A power of two near `1 / x` (for `x > 0`; subnormal `x` count as
-/// `2^-1023`), within `2^±1000`: numbers of `x`'s size times it are about
-/// 1, so that their products neither underflow nor overflow.
-#[inline]
-pub(crate) fn unit_near_inverse(x: f64) -> f64 {
-    let exponent = ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
-    2f64.powi((-exponent).clamp(-1000, 1000))
 }
 
 #[cfg(test)]

@@ -150,3 +150,12 @@ pub(crate) fn norm(dx: f64, dy: f64) -> f64 {
         dx.hypot(dy)
     }
 }
+
+/// A power of two near `1 / x` (for `x > 0`; subnormal `x` count as
+/// `2^-1023`), within `2^±1000`: numbers of `x`'s size times it are about
+/// 1, so that their products neither underflow nor overflow.
+#[inline]
+pub(crate) fn unit_near_inverse(x: f64) -> f64 {
+    let exponent = ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    2f64.powi((-exponent).clamp(-1000, 1000))
+}
