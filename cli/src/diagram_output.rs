@@ -38,7 +38,7 @@ use std::fmt::Write;
 use segvoronoi::{Diagram, EdgeEnd, EdgeShape, Site, SiteId};
 use serde_json::{json, Value};
 
-use crate::medial_output::{number, point};
+use crate::json_values::{number, point};
 
 /// The diagram as JSON (see the module doc), ending with a newline.
 /// `input_points` is how many points the builder was given.

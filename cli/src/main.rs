@@ -15,6 +15,7 @@ mod dxf;
 mod gcode;
 mod geojson_output;
 mod input;
+mod json_values;
 mod medial_output;
 mod offset_arcs;
 mod offset_output;

@@ -11,6 +11,7 @@ use segvoronoi::{Chain, Diagram, EdgeEnd, EdgeShape, MedialAxis, Point};
 use serde_json::{json, Value};
 
 use crate::diagram_output;
+use crate::json_values::{number, point, pretty};
 
 /// The sampled points `[x, y, clearance]` of a chain within `tolerance`.
 /// The pieces that reach infinity (only without a domain) are cut off: they
@@ -115,29 +116,6 @@ pub fn json(diagram: &Diagram, axis: &MedialAxis) -> String {
         })
         .collect();
     pretty(&json!({"domain": diagram.has_domain(), "chains": chains}))
-}
-
-/// The document, indented, with a final newline.
-pub fn pretty(value: &Value) -> String {
-    let mut text = serde_json::to_string_pretty(value).expect("a Value always serialises");
-    text.push('\n');
-    text
-}
-
-/// A JSON number, `null` when not finite (JSON has no infinity): what
-/// `serde_json` makes of a non-finite `f64`, said here so that the
-/// writers do not depend on it silently.
-pub fn number(v: f64) -> Value {
-    if v.is_finite() {
-        json!(v)
-    } else {
-        Value::Null
-    }
-}
-
-/// A JSON point `[x, y]` (see [`number`]).
-pub fn point(p: Point) -> Value {
-    json!([number(p.x), number(p.y)])
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@ use segvoronoi::{Offset, OffsetPiece};
 
 use serde_json::{json, Value};
 
-use crate::medial_output::{number, point, pretty};
+use crate::json_values::{number, point, pretty};
 
 /// One `MULTIPOLYGON` line per offset, in order: per outer loop (see
 /// [`Offset::polygons`]) its ring and then its holes, each sampled within
