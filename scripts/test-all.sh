@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 step() { printf '\n=== %s ===\n' "$*"; }
 
 need_packages=()
-for pkg in cmake g++ pkg-config valgrind libcgal-dev libgmp-dev libmpfr-dev libboost-dev libgeos-dev libpolyclipping-dev; do
+for pkg in cmake g++ pkg-config valgrind libcgal-dev libgmp-dev libmpfr-dev libboost-dev libgeos-dev libpolyclipping-dev librecad-data; do
   dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || need_packages+=("$pkg")
 done
 if [ ${#need_packages[@]} -gt 0 ]; then
