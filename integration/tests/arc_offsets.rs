@@ -914,3 +914,45 @@ fn arcs_continuing_each_other_along_a_tangent() {
         check_medial_axis(&format!("tangent arcs {case}"), &rings, 20.0);
     }
 }
+
+/// A segment bridging two rings from corner to corner (a wall across an
+/// annulus, between the points where each circle's two halves meet; a
+/// LibreCAD drawing has it): its cell lies in the region of the outer ring,
+/// which its first end is inside of though no corner of. That ring was not
+/// counted (its region "holds no direction" at a point not its corner):
+/// the wall and everything beside it was located outside. Curved and
+/// straight, the wall either way round.
+#[test]
+fn a_wall_from_a_holes_corner_to_its_shells() {
+    let p = Point::new;
+    let annulus = vec![vec![(p(15.0, 0.0), 1.0), (p(5.0, 0.0), 1.0)], vec![(p(13.0, 0.0), 1.0), (p(7.0, 0.0), 1.0)]];
+    let squares = vec![
+        vec![(p(0.0, 0.0), 0.0), (p(10.0, 0.0), 0.0), (p(10.0, 10.0), 0.0), (p(0.0, 10.0), 0.0)],
+        vec![(p(3.0, 3.0), 0.0), (p(7.0, 3.0), 0.0), (p(7.0, 7.0), 0.0), (p(3.0, 7.0), 0.0)],
+    ];
+    for (name, rings, wall) in
+        [("annulus", &annulus, [p(13.0, 0.0), p(15.0, 0.0)]), ("squares", &squares, [p(7.0, 7.0), p(10.0, 10.0)])]
+    {
+        for wall in [wall, [wall[1], wall[0]]] {
+            let build = |rings: &[Ring]| {
+                let mut b = Builder::new();
+                b.add_bulged_polygon(rings).unwrap();
+                b.add_segment(wall).unwrap();
+                b.build().unwrap()
+            };
+            let d = build(rings);
+            let chords: Vec<Ring> = rings.iter().map(|r| densified_ring(r).into_iter().map(|q| (q, 0.0)).collect()).collect();
+            let reference = build(&chords);
+            let wall_site =
+                d.site_ids().find(|&s| matches!(d.site(s), Some(Site::Segment { a, b }) if [a, b] == wall || [b, a] == wall));
+            assert_eq!(d.cell_location(wall_site.unwrap()), Some(segvoronoi::Location::Inside), "{name}: the wall's cell");
+            for distance in [-0.5, -0.25, 0.3] {
+                let (area, want) = (d.offset(distance).unwrap().area(), reference.offset(distance).unwrap().area());
+                assert!(
+                    (area - want).abs() <= 1e-3 * want.abs(),
+                    "{name} {wall:?} at {distance}: area {area} against the chords' {want}"
+                );
+            }
+        }
+    }
+}

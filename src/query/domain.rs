@@ -710,11 +710,23 @@ impl Diagram {
 
     /// Whether the segment from the ring corner `p` towards `q` starts
     /// inside the domain: the parity of the rings whose region holds that
-    /// direction at `p` (`ring_holds_direction`). Collinear with a ring's
-    /// side (an overlap the input check refuses): the boundary.
+    /// direction at `p` (`ring_holds_direction` at the rings `p` is a
+    /// corner of, `ring_location` of `p` for the others). Collinear with a
+    /// ring's side (an overlap the input check refuses): the boundary.
     fn direction_location(&self, rings: &[Ring], p: Point, q: Point) -> Location {
         let mut inside = false;
         for ring in rings.iter().filter(|r| r.bounds.holds_point(p)) {
+            if !ring.corners.iter().any(|&c| self.point_of(c) == p) {
+                // `p` is a corner of another ring only: this one holds the
+                // direction where it holds `p` (a segment from a hole's
+                // corner to its shell's crosses the shell's region)
+                match self.ring_location(ring, p) {
+                    Location::Inside => inside = !inside,
+                    Location::Outside => {}
+                    Location::Boundary => return Location::Boundary,
+                }
+                continue;
+            }
             match self.ring_holds_direction(ring, p, q) {
                 Some(holds) => inside ^= holds,
                 None => return Location::Boundary,
