@@ -8,21 +8,16 @@
 //! `R + d` (convex side) or `R - d` (concave side), loops close, and every
 //! point of every polyline is at the distance from the nearest site.
 //!
-//! Families (generators copied from `arcs.rs`): random arcs, segments and
+//! Families (generators shared with `arcs.rs`, `common/arc_inputs.rs`): random arcs, segments and
 //! points in the cells of a grid, rounded rectangles nested and apart,
 //! slots (with a point at an arc's centre), filleted polygons; each at
 //! several distances, including ones where loops merge.
 
+mod common;
+
+use common::arc_inputs::{distance, filleted_polygon, random_cells, rounded_rectangle, Piece};
 use segvoronoi::splitmix::SplitMix64;
 use segvoronoi::{Builder, CircularArc, Diagram, Offset, OffsetPiece, Point, Site};
-
-/// One input piece.
-#[derive(Clone, Copy, Debug)]
-enum Piece {
-    Point(Point),
-    Segment(Point, Point),
-    Arc(CircularArc),
-}
 
 /// Chords per arc in the reference.
 const CHORDS: usize = 256;
@@ -55,34 +50,6 @@ fn densified(pieces: &[Piece]) -> Diagram {
         }
     }
     b.build().unwrap_or_else(|e| panic!("densified: {e}: {pieces:?}"))
-}
-
-/// The distance from `p` to a site, computed here apart from the library
-/// (an arc by angles, not by the library's span test).
-fn distance(site: &Site, p: Point) -> f64 {
-    match *site {
-        Site::Point(q) => q.distance(p),
-        Site::Segment { a, b } => {
-            let (ux, uy) = (b.x - a.x, b.y - a.y);
-            let t = (((p.x - a.x) * ux + (p.y - a.y) * uy) / (ux * ux + uy * uy)).clamp(0.0, 1.0);
-            Point::new(a.x + t * ux, a.y + t * uy).distance(p)
-        }
-        Site::Arc(arc) => {
-            let c = arc.centre();
-            let angle = |q: Point| (q.y - c.y).atan2(q.x - c.x);
-            let sweep = arc.sweep();
-            let full = 2.0 * std::f64::consts::PI;
-            let along = angle(p) - angle(arc.start());
-            let along = if sweep > 0.0 { along.rem_euclid(full) } else { -(-along).rem_euclid(full) };
-            let ends = arc.start().distance(p).min(arc.end().distance(p));
-            if along.abs() <= sweep.abs() {
-                (c.distance(p) - arc.radius()).abs().min(ends)
-            } else {
-                ends
-            }
-        }
-        _ => unreachable!("no other site kinds"),
-    }
 }
 
 /// The distance from `p` to the segment `a b`.
@@ -200,61 +167,6 @@ fn check_all(name: &str, pieces: &[Piece], distances: &[f64], size: f64) -> Seen
     seen
 }
 
-/// A random arc inside the unit cell at `(x, y)`.
-fn random_arc(rng: &mut SplitMix64, x: f64, y: f64) -> CircularArc {
-    loop {
-        let c = Point::new(x + 0.5, y + 0.5);
-        let r = 0.05 + 0.35 * rng.unit();
-        let a0 = 2.0 * std::f64::consts::PI * rng.unit();
-        let sweep = (0.05 + 1.9 * rng.unit()) * std::f64::consts::PI * if rng.unit() < 0.5 { 1.0 } else { -1.0 };
-        let at = |t: f64| Point::new(c.x + r * t.cos(), c.y + r * t.sin());
-        let (s, e) = (at(a0), at(a0 + sweep));
-        let arc = if rng.unit() < 0.5 {
-            CircularArc::from_bulge(s, e, (sweep / 4.0).tan())
-        } else {
-            CircularArc::through(s, at(a0 + 0.5 * sweep), e)
-        };
-        if let Ok(arc) = arc {
-            return arc;
-        }
-    }
-}
-
-fn random_cells(seed: u64, side: usize) -> Vec<Piece> {
-    let mut rng = SplitMix64(seed);
-    let mut pieces = Vec::new();
-    for i in 0..side {
-        for j in 0..side {
-            let (x, y) = (i as f64, j as f64);
-            let cell = |rng: &mut SplitMix64| Point::new(x + 0.1 + 0.8 * rng.unit(), y + 0.1 + 0.8 * rng.unit());
-            match rng.next_u64() % 4 {
-                0 => pieces.push(Piece::Point(cell(&mut rng))),
-                1 => pieces.push(Piece::Segment(cell(&mut rng), cell(&mut rng))),
-                _ => pieces.push(Piece::Arc(random_arc(&mut rng, x, y))),
-            }
-        }
-    }
-    pieces
-}
-
-/// A rounded rectangle `w × h` at `(x, y)` with corner radius `r`.
-fn rounded_rectangle(x: f64, y: f64, w: f64, h: f64, r: f64) -> Vec<Piece> {
-    let q = (std::f64::consts::PI / 8.0).tan();
-    let p = Point::new;
-    let corners = [
-        (p(x + r, y), p(x + w - r, y), p(x + w, y + r)),
-        (p(x + w, y + r), p(x + w, y + h - r), p(x + w - r, y + h)),
-        (p(x + w - r, y + h), p(x + r, y + h), p(x, y + h - r)),
-        (p(x, y + h - r), p(x, y + r), p(x + r, y)),
-    ];
-    let mut pieces = Vec::new();
-    for (a, b, c) in corners {
-        pieces.push(Piece::Segment(a, b));
-        pieces.push(Piece::Arc(CircularArc::from_bulge(b, c, q).unwrap()));
-    }
-    pieces
-}
-
 /// A slot: two sides and two half circles.
 fn slot() -> Vec<Piece> {
     let p = Point::new;
@@ -264,37 +176,6 @@ fn slot() -> Vec<Piece> {
         Piece::Segment(p(4.0, 2.0), p(0.0, 2.0)),
         Piece::Arc(CircularArc::from_bulge(p(0.0, 2.0), p(0.0, 0.0), 1.0).unwrap()),
     ]
-}
-
-/// A convex polygon of `n` corners on the unit circle about `(cx, cy)`,
-/// each corner rounded by a tangent arc.
-fn filleted_polygon(rng: &mut SplitMix64, cx: f64, cy: f64, n: usize, radius: f64) -> Vec<Piece> {
-    let mut angles: Vec<f64> =
-        (0..n).map(|k| (k as f64 + 0.3 + 0.4 * rng.unit()) * 2.0 * std::f64::consts::PI / n as f64).collect();
-    angles.sort_by(f64::total_cmp);
-    let corners: Vec<Point> = angles.iter().map(|&t| Point::new(cx + t.cos(), cy + t.sin())).collect();
-    let mut ends = Vec::new(); // per corner: (before, after, bulge)
-    for k in 0..n {
-        let (prev, v, next) = (corners[(k + n - 1) % n], corners[k], corners[(k + 1) % n]);
-        let unit = |a: Point, b: Point| {
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            let l = dx.hypot(dy);
-            (dx / l, dy / l, l)
-        };
-        let (ux, uy, lu) = unit(prev, v);
-        let (wx, wy, lw) = unit(v, next);
-        let turn = (ux * wy - uy * wx).atan2(ux * wx + uy * wy);
-        let rho = radius * (0.3 + 0.7 * rng.unit());
-        let l = (rho * (turn / 2.0).tan()).min(0.45 * lu.min(lw));
-        ends.push((Point::new(v.x - l * ux, v.y - l * uy), Point::new(v.x + l * wx, v.y + l * wy), (turn / 4.0).tan()));
-    }
-    let mut pieces = Vec::new();
-    for k in 0..n {
-        let (before, after, bulge) = ends[k];
-        pieces.push(Piece::Arc(CircularArc::from_bulge(before, after, bulge).unwrap()));
-        pieces.push(Piece::Segment(after, ends[(k + 1) % n].0));
-    }
-    pieces
 }
 
 #[test]

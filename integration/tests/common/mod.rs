@@ -2,6 +2,8 @@
 //! checks, and the input generators of testgen/ re-exported.
 #![allow(dead_code)]
 
+pub mod arc_inputs;
+
 use segvoronoi::{Builder, Diagram, EdgeEnd, Point};
 
 // The generated inputs live in testgen/ with every other generator of the
