@@ -15,7 +15,7 @@
 
 mod common;
 
-use common::arc_inputs::{distance, filleted_polygon, random_cells, rounded_rectangle, Piece};
+use common::arc_inputs::{add_pieces, distance, filleted_polygon, random_cells, rounded_rectangle, Piece};
 use segvoronoi::splitmix::SplitMix64;
 use segvoronoi::{Builder, CircularArc, Diagram, Offset, OffsetPiece, Point, Site};
 
@@ -24,13 +24,7 @@ const CHORDS: usize = 256;
 
 fn build(pieces: &[Piece]) -> Diagram {
     let mut b = Builder::new();
-    for piece in pieces {
-        match *piece {
-            Piece::Point(p) => drop(b.add_point(p).unwrap()),
-            Piece::Segment(p, q) => drop(b.add_segment([p, q]).unwrap()),
-            Piece::Arc(arc) => drop(b.add_arc(arc).unwrap()),
-        }
-    }
+    add_pieces(&mut b, pieces);
     b.build().unwrap_or_else(|e| panic!("{e}: {pieces:?}"))
 }
 

@@ -8,7 +8,7 @@
 
 mod common;
 
-use common::arc_inputs::{distance, filleted_polygon, random_cells, rounded_rectangle, Piece};
+use common::arc_inputs::{add_pieces, distance, filleted_polygon, random_cells, rounded_rectangle, Piece};
 use segvoronoi::splitmix::SplitMix64;
 use segvoronoi::{Builder, CircularArc, Diagram, Point, Site};
 
@@ -102,13 +102,7 @@ fn audit(d: &Diagram, tol: f64) -> Vec<String> {
 
 fn build(pieces: &[Piece]) -> Diagram {
     let mut b = Builder::new();
-    for piece in pieces {
-        match *piece {
-            Piece::Point(p) => drop(b.add_point(p).unwrap()),
-            Piece::Segment(p, q) => drop(b.add_segment([p, q]).unwrap()),
-            Piece::Arc(arc) => drop(b.add_arc(arc).unwrap()),
-        }
-    }
+    add_pieces(&mut b, pieces);
     match b.build() {
         Ok(d) => d,
         Err(e) => panic!("{e}: {pieces:?}"),

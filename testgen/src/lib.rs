@@ -26,6 +26,7 @@
 #[doc = include_str!("../../docs/guide.md")]
 struct RustGuideDoctests;
 
+pub mod arcs;
 pub mod bench;
 pub mod exact;
 pub mod long_segments;

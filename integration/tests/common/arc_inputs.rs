@@ -4,7 +4,8 @@
 //! computed apart from the library, and the generators both use.
 
 use segvoronoi::splitmix::SplitMix64;
-use segvoronoi::{CircularArc, Point, Site};
+use segvoronoi::{Builder, CircularArc, Point, Site};
+use segvoronoi_testgen::arcs::random_arc;
 
 /// One input piece.
 #[derive(Clone, Copy, Debug)]
@@ -49,27 +50,6 @@ pub fn distance(site: &Site, p: Point) -> f64 {
             }
         }
         _ => unreachable!("no other site kinds"),
-    }
-}
-
-/// A random arc inside the unit cell at `(x, y)`: a chord inside it and a
-/// bulge such that the whole circle fits in the cell.
-pub fn random_arc(rng: &mut SplitMix64, x: f64, y: f64) -> CircularArc {
-    loop {
-        let c = Point::new(x + 0.5, y + 0.5);
-        let r = 0.05 + 0.35 * rng.unit();
-        let a0 = 2.0 * std::f64::consts::PI * rng.unit();
-        let sweep = (0.05 + 1.9 * rng.unit()) * std::f64::consts::PI * if rng.unit() < 0.5 { 1.0 } else { -1.0 };
-        let at = |t: f64| Point::new(c.x + r * t.cos(), c.y + r * t.sin());
-        let (s, e) = (at(a0), at(a0 + sweep));
-        let arc = if rng.unit() < 0.5 {
-            CircularArc::from_bulge(s, e, (sweep / 4.0).tan())
-        } else {
-            CircularArc::through(s, at(a0 + 0.5 * sweep), e)
-        };
-        if let Ok(arc) = arc {
-            return arc;
-        }
     }
 }
 
@@ -142,4 +122,15 @@ pub fn filleted_polygon(rng: &mut SplitMix64, cx: f64, cy: f64, n: usize, radius
         pieces.push(Piece::Segment(after, ends[(k + 1) % n].0));
     }
     pieces
+}
+
+/// Adds every piece to the builder, as given.
+pub fn add_pieces(b: &mut Builder, pieces: &[Piece]) {
+    for piece in pieces {
+        match *piece {
+            Piece::Point(p) => drop(b.add_point(p).unwrap()),
+            Piece::Segment(p, q) => drop(b.add_segment([p, q]).unwrap()),
+            Piece::Arc(arc) => drop(b.add_arc(arc).unwrap()),
+        }
+    }
 }
