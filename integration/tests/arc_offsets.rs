@@ -833,12 +833,15 @@ fn a_wall_from_a_holes_corner_to_its_shells() {
 }
 
 /// What users have, in curved domains: a slot whose long side has a
-/// straight (180°) vertex and one an ulp off straight, 1e6 from the origin.
-/// KNOWN WRONG (found by this test, not fixed yet): an offset piece ends
-/// 1.4 off its distance (a round join at the top corner, a tangent join),
-/// also at the origin; without the straight vertices the slot passes.
+/// straight (180°) vertex and one an ulp off straight, 1e6 from the origin,
+/// so that the side meets the half circle an ulp off tangent. Found wrong:
+/// the vertex of the arc's two ends and the side sat an ulp beyond the
+/// arc's centre, which a tolerance called the centre (now the exact turn
+/// at the join, `exact_join`); the vertex of the join and its two pieces
+/// was placed anywhere along the normal (now at the join); the offset
+/// along the edge beside the near-tangent join was found by an angle that
+/// does not move along it (now across the ray).
 #[test]
-#[ignore = "known wrong: offsets of a curved ring with a straight vertex (see the doc comment)"]
 fn a_curved_ring_with_straight_vertices_far_out() {
     let p = Point::new;
     let (x, y) = (1e6 + 0.37, -1e6 + 0.81);
@@ -867,10 +870,9 @@ fn a_slot_far_from_the_origin() {
 
 /// A lens-shaped hole of two arcs whose end touches the shell's side at a
 /// point inside it (rings touching at a point; the build cuts the side
-/// there). KNOWN WRONG (found by this test, not fixed yet): at +0.5 a piece
-/// along the lens ends off its distance.
+/// there). Found wrong: at +0.5 a piece along the lens ended off its
+/// distance (fixed with the exact turns at joins, see above).
 #[test]
-#[ignore = "known wrong: offsets of a curved hole touching its shell (see the doc comment)"]
 fn a_curved_hole_touching_its_shell() {
     let p = Point::new;
     let touching = vec![

@@ -679,6 +679,19 @@ fn minimised_regressions() {
             ],
             3.0,
         ),
+        // half circles in a row (LibreCAD's ant3.dxf), a cusp where they
+        // meet: the whole normal from the cusp to the next centre ties the
+        // cusp, both arcs and the next end; the exact turn (zero) must
+        // leave the decision to the rules built for such ties
+        (
+            "half circles meeting in a cusp",
+            vec![
+                arc(p(4.0, 3.0), p(0.0, 3.0), 1.0),
+                arc(p(8.0, 3.0), p(4.0, 3.0), 1.0),
+                Piece::Segment(p(12.0, 3.0), p(12.0, 0.0)),
+            ],
+            12.0,
+        ),
     ];
     for (k, (name, pieces, size)) in cases.into_iter().enumerate() {
         check_all_ways(name, &pieces, size, k as u64);

@@ -841,9 +841,13 @@ impl Diagram {
     }
 
     /// The turn of a curved ring at corner `here` from piece `before` into
-    /// piece `after`: the turn of their tangents there (floating point; a
-    /// tangent join, to 1e-10 of a radian, is straight). Where the tangents
-    /// are opposite (a cusp), the turn of the chords decides.
+    /// piece `after`: the turn of their tangents there (floating point). A
+    /// join is straight (tangent) to within what rounding its input can
+    /// do: 1e-10 of a radian, or the angle of a few ulps of the corner's
+    /// coordinates across the shorter piece's chord (a fillet written an
+    /// ulp off tangent far from the origin is a tangent join to its user,
+    /// and gets no branch of the medial axis). Where the tangents are
+    /// opposite (a cusp), the turn of the chords decides.
     fn corner_turn(&self, before: SiteId, here: SiteId, after: SiteId) -> Orientation {
         let at = self.point_of(here);
         let unit = |q: Point| {
@@ -855,7 +859,12 @@ impl Diagram {
         // arriving along -back, leaving along ahead
         let cross = -back.x * ahead.y + back.y * ahead.x;
         let dot = -back.x * ahead.x - back.y * ahead.y;
-        if cross.abs() > 1e-10 {
+        let chord = |s: SiteId| {
+            let [a, b] = self.sites[s.index()].ends();
+            a.distance(b)
+        };
+        let rounding = 8.0 * f64::EPSILON * at.x.abs().max(at.y.abs()) / chord(before).min(chord(after));
+        if cross.abs() > rounding.max(1e-10) {
             return if cross > 0.0 { Orientation::CounterClockwise } else { Orientation::Clockwise };
         }
         if dot > 0.0 {

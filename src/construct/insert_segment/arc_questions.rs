@@ -51,15 +51,15 @@ impl Construction {
     }
 
     /// The contact of a vertex with sites `sites` at the arc's endpoint
-    /// `end`: the directions of the pieces beside `end` that end there.
+    /// `end`: the pieces beside `end` that end there.
     fn arc_contact_at(&self, end: SiteId, sites: [SiteId; 3]) -> ArcContact {
         let k = sites.iter().position(|&s| s == end).unwrap_or(0);
         let at = self.sites[end.index()];
-        let direction = |s: SiteId| {
+        let piece = |s: SiteId| {
             self.far_end(s, end)?;
-            arc_predicates::piece_direction(&self.site_geometry(s), at)
+            Some(self.site_geometry(s))
         };
-        ArcContact::OneEnd { end: at, after: direction(sites[(k + 1) % 3]), before: direction(sites[(k + 2) % 3]) }
+        ArcContact::OneEnd { end: at, after: piece(sites[(k + 1) % 3]), before: piece(sites[(k + 2) % 3]) }
     }
 
     /// Whether the vertex at infinity `v` between the hull sites `x → y`

@@ -2,8 +2,11 @@
 //! four as for a segment (`segments::segment_predicates`), answered in
 //! floating point, with the tangent and curvature rules where the vertex
 //! touches one of the arc's endpoints; a near tie of the arc with a
-//! vertex's circle is refined in big floats (`refined_depth`).
+//! vertex's circle is refined in double-double (`refined_depth`), and
+//! where the vertex's sites meet the arc at an endpoint the turn between
+//! them is exact (`exact_join`).
 
+use super::exact_join;
 use super::refined_depth;
 use crate::geometry::arc::CircularArc;
 use crate::geometry::curves::bisector::bisector_point;
@@ -18,10 +21,9 @@ pub(crate) enum ArcContact {
     /// Both: the vertex is on the bisector of the endpoints, a line through
     /// the arc's centre.
     BothEnds,
-    /// The endpoint `end`, with the directions (pointing away from `end`)
-    /// of the pieces ending there that are the vertex's sites just after
-    /// and just before `end`, counter-clockwise.
-    OneEnd { end: Point, after: Option<Point>, before: Option<Point> },
+    /// The endpoint `end`, with the pieces ending there that are the
+    /// vertex's sites just after and just before `end`, counter-clockwise.
+    OneEnd { end: Point, after: Option<Site>, before: Option<Site> },
     /// Neither.
     NoEnd,
 }
@@ -57,12 +59,22 @@ pub(crate) fn arc_depth(
             // side the ends are nearer
             let (c, m) = (arc.centre(), arc.midpoint());
             let along = ((centre.x - c.x) * (m.x - c.x) + (centre.y - c.y) * (m.y - c.y)) / arc.radius();
-            if along > 1e-9 * arc.radius() {
-                -along.max(f64::MIN_POSITIVE)
-            } else if along < -1e-9 * arc.radius() {
-                -along
-            } else {
-                0.0
+            let size = along.abs().max(f64::MIN_POSITIVE);
+            // exact where the third site allows (a piece sharing an end, a
+            // point): a join an ulp off straight puts the vertex an ulp
+            // beyond or before the centre, not at it. At the centre exactly
+            // (a tangent join; a cusp, where a whole stretch of the normal
+            // ties four sites), the floating-point rule below stands: its
+            // answers are what the degenerate configurations were built
+            // and tested with.
+            let [s, e] = [Site::Point(arc.start()), Site::Point(arc.end())];
+            let third = sites().into_iter().find(|t| *t != s && *t != e);
+            match third.and_then(|t| exact_join::beyond_centre(arc, &t)) {
+                Some(1) => -size,
+                Some(-1) => size,
+                _ if along > 1e-9 * arc.radius() => -size,
+                _ if along < -1e-9 * arc.radius() => size,
+                _ => 0.0,
             }
         }
         ArcContact::OneEnd { end, after, before } => endpoint_depth(arc, end, after, before, centre, radius),
@@ -71,15 +83,18 @@ pub(crate) fn arc_depth(
 }
 
 /// [`arc_depth`] for a vertex with the arc's endpoint `end` among its sites.
-fn endpoint_depth(arc: &CircularArc, end: Point, after: Option<Point>, before: Option<Point>, centre: Point, radius: f64) -> f64 {
-    let leaving = direction_leaving(arc, end);
+fn endpoint_depth(arc: &CircularArc, end: Point, after: Option<Site>, before: Option<Site>, centre: Point, radius: f64) -> f64 {
     let (nx, ny) = (centre.x - end.x, centre.y - end.y);
     let n = nx.hypot(ny);
     if let (Some(from), Some(to)) = (after, before) {
         if n <= 1e-12 * (radius.abs() + end.x.abs().max(end.y.abs())) {
             // a vertex of radius 0 at `end`, standing for the sector from
             // one piece to the next: entered when the arc leaves into it
-            return if in_sector(from, to, leaving) { -f64::MIN_POSITIVE } else { f64::MIN_POSITIVE };
+            let entered = exact_sector(&from, &to, arc, end).unwrap_or_else(|| {
+                let direction = |s: &Site| piece_direction(s, end).unwrap_or(Point::new(0.0, 0.0));
+                in_sector(direction(&from), direction(&to), direction_leaving(arc, end))
+            });
+            return if entered { -f64::MIN_POSITIVE } else { f64::MIN_POSITIVE };
         }
     }
     if !(n > 0.0) {
@@ -87,9 +102,46 @@ fn endpoint_depth(arc: &CircularArc, end: Point, after: Option<Point>, before: O
     }
     let tangent = arc.tangent_into(end);
     let along = (tangent.x * nx + tangent.y * ny) / n;
+    let size = (along * radius).abs().max(f64::MIN_POSITIVE);
+    // With a piece ending at `end` among the vertex's sites, the vertex is
+    // on that piece's normal there, on the side the float cross product
+    // tells clearly (the vertex is `n` away): the arc enters when it turns
+    // from the piece toward that side, exactly. Where the two leave along
+    // one line (tangent, or a cusp) the floating-point rules below stand.
+    if let Some(piece) = after.or(before) {
+        let exact = (|| {
+            let (t_piece, t_arc) = (exact_join::leaving(&piece, end)?, exact_join::leaving(&Site::Arc(*arc), end)?);
+            let d = t_piece.approximate();
+            let side = d.x * ny - d.y * nx;
+            let side: i8 = if side > 0.0 { 1 } else { -1 };
+            Some(side * exact_join::cross_sign(&t_piece, &t_arc)?)
+        })();
+        match exact {
+            Some(1) => return -size,
+            Some(-1) => return size,
+            _ => {}
+        }
+    }
     if along.abs() > 1e-12 {
         return -along * radius.abs().max(f64::MIN_POSITIVE);
     }
+    tangent_depth(arc, end, nx, ny, radius)
+}
+
+/// Whether the arc leaving `end` turns strictly into the sector swept
+/// counter-clockwise from the piece `from` to the piece `to`, both leaving
+/// `end` too (exact turns, exact ties broken by curvature); `None` out of
+/// range.
+fn exact_sector(from: &Site, to: &Site, arc: &CircularArc, end: Point) -> Option<bool> {
+    let arc = Site::Arc(*arc);
+    let turn = |u: &Site, v: &Site| exact_join::turn_between(u, v, end);
+    let (after_from, before_to) = (turn(from, &arc)? > 0, turn(&arc, to)? > 0);
+    Some(if turn(from, to)? > 0 { after_from && before_to } else { after_from || before_to })
+}
+
+/// [`endpoint_depth`] where the arc leaves `end` along the tangent of the
+/// vertex's circle (`(nx, ny)` from `end` to the vertex).
+fn tangent_depth(arc: &CircularArc, end: Point, nx: f64, ny: f64, radius: f64) -> f64 {
     // along the circle's tangent: the arc enters when it curves toward the
     // vertex's centre, on a smaller circle
     let (cx, cy) = (arc.centre().x - end.x, arc.centre().y - end.y);
@@ -177,11 +229,19 @@ pub(crate) fn arc_left_degree(arc: &CircularArc, seen: ArcSiteSeen) -> LeftDegre
 fn side_near_end(arc: &CircularArc, site: &Site, end: Point) -> f64 {
     let inward = Point::new(arc.centre().x - end.x, arc.centre().y - end.y);
     let scale = inward.x.hypot(inward.y);
-    let inside = match piece_direction(site, end) {
-        None => {
+    // exactly, unless the piece leaves along the arc's tangent
+    let exact = (|| {
+        let (t_arc, t_piece) = (exact_join::leaving(&Site::Arc(*arc), end)?, exact_join::leaving(site, end)?);
+        let turn = exact_join::cross_sign(&t_arc, &t_piece)?;
+        let toward_centre: i8 = if exact_join::curves_left(arc, end) { 1 } else { -1 };
+        (turn != 0).then_some(turn == toward_centre)
+    })();
+    let inside = match (exact, piece_direction(site, end)) {
+        (Some(inside), _) => inside,
+        (None, None) => {
             return arc.left_of(site.midpoint());
         }
-        Some(d) => {
+        (None, Some(d)) => {
             let dot = (d.x * inward.x + d.y * inward.y) / scale;
             if dot.abs() > 1e-6 {
                 dot > 0.0

@@ -25,7 +25,7 @@
 //! Newton steps on the true distances. Not certified: the arcs' decisions
 //! in `arc_predicates` compare these positions with tolerances.
 
-use crate::geometry::arc::CircularArc;
+use super::exact_join;
 use crate::geometry::point::Point;
 use crate::geometry::site::Site;
 
@@ -80,24 +80,30 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     Some((Point::new(centre.x * back + origin.x, centre.y * back + origin.y), radius.max(0.0) * back))
 }
 
-/// The vertex of two arcs that continue each other along one tangent at
-/// their common end `J`, and of `J`: at `J`, of radius zero.
+/// The vertex of a point `J` and two pieces ending at `J`, one of them at
+/// least an arc: at `J`, of radius zero, unless their tangents there are
+/// exactly parallel. A circle through `J` that touches a piece ending
+/// there touches it at `J` (it would cut a segment's line or an arc's
+/// circle at `J` and touch it again elsewhere: three meetings), so its
+/// centre is on that piece's normal at `J`, and two normals that are not
+/// one line meet only at `J`. The turn is exact (`exact_join`): at a join
+/// an ulp off straight the floating-point solvers see the whole normal as
+/// solutions. Two arcs continuing each other along one tangent (their
+/// normals one line, every point of it a solution) meet there too; the
+/// other parallel cases go to the solvers.
 fn tangent_join_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     let k = (0..3).find(|&k| sites[k].as_point().is_some())?;
     let j = sites[k].as_point()?;
-    let (Site::Arc(after), Site::Arc(before)) = (sites[(k + 1) % 3], sites[(k + 2) % 3]) else {
-        return None;
-    };
-    let ends_at_j = |arc: &CircularArc| arc.start() == j || arc.end() == j;
-    if !(ends_at_j(&after) && ends_at_j(&before)) {
+    let (after, before) = (sites[(k + 1) % 3], sites[(k + 2) % 3]);
+    let arcs = [after, before].iter().filter(|s| matches!(s, Site::Arc(_))).count();
+    if arcs == 0 || !(after.has_endpoint(j) && before.has_endpoint(j)) {
         return None;
     }
-    let (d_after, d_before) = (after.tangent_into(j), before.tangent_into(j));
-    let cross = d_after.x * d_before.y - d_after.y * d_before.x;
-    if !(cross.abs() <= 1e-12 && d_after.x * d_before.x + d_after.y * d_before.y < 0.0) {
-        return None;
+    let (t_after, t_before) = (exact_join::leaving(&after, j)?, exact_join::leaving(&before, j)?);
+    if exact_join::cross_sign(&t_after, &t_before)? != 0 {
+        return Some((j, 0.0));
     }
-    Some((j, 0.0))
+    (arcs == 2 && exact_join::dot_sign(&t_after, &t_before)? < 0).then_some((j, 0.0))
 }
 
 /// Where a vertex may touch a site: a point at itself; a segment or an arc

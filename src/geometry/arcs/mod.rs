@@ -10,12 +10,17 @@
 //! tolerances, not certified: the topology stays valid whatever they
 //! answer (the construction keeps P3–P5 by bookkeeping), but a near tie
 //! may be decided wrong. The conflict of an arc with a vertex's circle,
-//! the question asked most, is refined in big floats near a tie
-//! (`refined_depth`): there the answer is that of the exact circles to
-//! 2^-200, a tie below. The answers use the same types as the segments'
-//! (`segments::segment_predicates`), so the insertion asks both alike.
+//! the question asked most, is refined in double-double near a tie
+//! (`refined_depth`: a tie below 2^-90 of the size). Where the arc meets
+//! the vertex's sites at one of its endpoints (the joins of a chain), the
+//! turns between the pieces there are exact (`exact_join`): a join an ulp
+//! off tangent is a corner, decided by its sign, and only an exactly
+//! tangent join is left to the curvature rules. The answers use the same
+//! types as the segments' (`segments::segment_predicates`), so the
+//! insertion asks both alike.
 
 pub(crate) mod arc_predicates;
 pub(crate) mod arc_vertex;
 pub(crate) mod at_infinity;
+pub(crate) mod exact_join;
 pub(crate) mod refined_depth;

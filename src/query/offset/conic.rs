@@ -63,12 +63,14 @@ pub(super) struct ConicTrack {
     along: [f64; 2],
     /// The vertices at the ends; `None` at infinity.
     ends: [Option<Point>; 2],
-    /// For an edge along a ray from the centre (the other site continues
-    /// the arc tangentially at a shared endpoint: every point of that ray
-    /// is equally far from both), the ray's unit direction and the
-    /// distances of the ends from the centre along it (infinite at
-    /// infinity). The angle does not move along such an edge, the distance
-    /// from the centre does.
+    /// For an edge along a ray from the centre, or nearly (the other site
+    /// continues the arc tangentially at a shared endpoint, or within a
+    /// microradian of it: every point of that ray is equally far from
+    /// both, or the edge stays beside it), the ray's unit direction and
+    /// the distances of the ends from the centre along it (infinite at
+    /// infinity). The angle hardly moves along such an edge, the distance
+    /// from the centre does: the edge's point at a distance is found
+    /// across the ray (`across_ray`).
     radial: Option<(Point, [f64; 2])>,
     /// Where the clearance turns strictly inside the edge, by `t`.
     pub(super) knots: Vec<Knot>,
@@ -164,8 +166,7 @@ impl ConicTrack {
                 (false, true) => r1 + (1.0 - t) / t * self.arc.radius(),
                 (false, false) => return None,
             };
-            let c = self.arc.centre();
-            return Some(Point::new(c.x + rho * u.x, c.y + rho * u.y));
+            return Some(self.across_ray(u, rho));
         }
         let [a0, a1] = self.along;
         let angle = self.start_angle + self.turn * (a0 + t * (a1 - a0));
@@ -173,6 +174,40 @@ impl ConicTrack {
         let rho = self.radius_along(u)?;
         let c = self.arc.centre();
         Some(Point::new(c.x + rho * u.x, c.y + rho * u.y))
+    }
+
+    /// The point of a (nearly) radial edge on the line across the ray `u`
+    /// at `rho` from the centre: where the distances to the two sites
+    /// cross, by bisection from a bracket widened from the ray outward
+    /// (on the ray itself for an exact tangent join).
+    fn across_ray(&self, u: Point, rho: f64) -> Point {
+        let c = self.arc.centre();
+        let at = |s: f64| Point::new(c.x + rho * u.x - s * u.y, c.y + rho * u.y + s * u.x);
+        let nearer_arc = |s: f64| {
+            let p = at(s);
+            self.arc.distance(p) < self.other.distance(p)
+        };
+        let mut step = f64::EPSILON * (self.arc.radius() + rho.abs());
+        while step < 2.0 * self.arc.radius() {
+            let (lo, hi) = (nearer_arc(-step), nearer_arc(step));
+            if lo != hi {
+                let (mut a, mut b) = (-step, step);
+                for _ in 0..200 {
+                    let mid = 0.5 * (a + b);
+                    if mid <= a || mid >= b {
+                        break;
+                    }
+                    if nearer_arc(mid) == lo {
+                        a = mid;
+                    } else {
+                        b = mid;
+                    }
+                }
+                return at(0.5 * (a + b));
+            }
+            step *= 2.0;
+        }
+        at(0.0)
     }
 
     /// How far from the centre the ray in direction `u` meets the edge: by
@@ -311,9 +346,11 @@ impl ConicTrack {
 
 /// When `other` continues `arc` tangentially at an endpoint they share (a
 /// segment along the arc's tangent there, or an arc whose centre lies on
-/// the same line through that endpoint, e.g. of the same circle), the unit
+/// the same line through that endpoint, e.g. of the same circle), or
+/// within a microradian of it (a join an ulp off straight), the unit
 /// direction from the arc's centre through that endpoint: the edge
-/// between them lies along that ray.
+/// between them lies along that ray, or beside it, where the angle around
+/// the centre cannot tell its points apart.
 fn tangent_join(arc: &CircularArc, other: &Site) -> Option<Point> {
     let c = arc.centre();
     let [e0, e1] = [arc.start(), arc.end()];
@@ -337,7 +374,7 @@ fn tangent_join(arc: &CircularArc, other: &Site) -> Option<Point> {
     };
     let cross = radial.x * across.y - radial.y * across.x;
     let size = length * across.x.hypot(across.y);
-    (length > 0.0 && cross.abs() <= 1e-12 * size).then(|| Point::new(radial.x / length, radial.y / length))
+    (length > 0.0 && cross.abs() <= 1e-6 * size).then(|| Point::new(radial.x / length, radial.y / length))
 }
 
 /// Of samples `from..=to`, the one with the highest clearance (`peak`)

@@ -1,0 +1,372 @@
+//! Exact signs where pieces meet: the direction in which a segment or an
+//! arc leaves one of its endpoints, as exact polynomials of the input
+//! (endpoints and bulge or third point), and the turns between such
+//! directions. At a join of a chain these decide what the floating-point
+//! tangents cannot: a vertex an ulp off straight is a corner, not a
+//! tangent join, and where the pieces meet at that corner is then fixed
+//! by the sign, not by rounding noise. Only an exactly tangent join (the
+//! cross product exactly zero) is left to the curvature rules.
+//!
+//! The directions are exact up to a positive factor; every sign here is
+//! exact unless a product leaves `f64`'s range (`None` then, and the
+//! caller keeps its floating-point answer).
+
+use crate::geometry::arc::CircularArc;
+use crate::geometry::arithmetic::expansion::Expansion;
+use crate::geometry::point::Point;
+use crate::geometry::predicates::exact_orientation;
+use crate::geometry::site::Site;
+
+fn coord(p: Point) -> robust::Coord<f64> {
+    robust::Coord { x: p.x, y: p.y }
+}
+
+/// A direction held exactly, up to a positive factor.
+#[derive(Clone)]
+pub(crate) struct Direction {
+    x: Expansion,
+    y: Expansion,
+}
+
+impl Direction {
+    fn new(x: Expansion, y: Expansion) -> Option<Direction> {
+        (x.is_finite() && y.is_finite() && (x.sign() != 0 || y.sign() != 0)).then_some(Direction { x, y })
+    }
+
+    /// The direction rounded to a unit vector (zero out of range).
+    pub(crate) fn approximate(&self) -> Point {
+        let (x, y) = (self.x.approximate(), self.y.approximate());
+        let n = x.hypot(y);
+        if n > 0.0 && n.is_finite() {
+            Point::new(x / n, y / n)
+        } else {
+            Point::new(0.0, 0.0)
+        }
+    }
+
+    /// `to − from`.
+    fn between(from: Point, to: Point) -> Option<Direction> {
+        Direction::new(Expansion::difference(to.x, from.x), Expansion::difference(to.y, from.y))
+    }
+}
+
+/// The sign of `u × v` (positive: `v` turns counter-clockwise from `u`);
+/// `None` out of range.
+pub(crate) fn cross_sign(u: &Direction, v: &Direction) -> Option<i8> {
+    let value = u.x.times(&v.y).minus(&u.y.times(&v.x));
+    value.is_finite().then(|| value.sign())
+}
+
+/// The sign of `u · v`; `None` out of range.
+pub(crate) fn dot_sign(u: &Direction, v: &Direction) -> Option<i8> {
+    let value = u.x.times(&v.x).plus(&u.y.times(&v.y));
+    value.is_finite().then(|| value.sign())
+}
+
+/// The direction in which the segment or arc `site` leaves its endpoint
+/// `end` (an arc: its tangent there, pointing into the arc). `None` when
+/// `end` is not an endpoint of `site`, or out of range.
+pub(crate) fn leaving(site: &Site, end: Point) -> Option<Direction> {
+    match *site {
+        Site::Segment { a, b } if a == end => Direction::between(a, b),
+        Site::Segment { a, b } if b == end => Direction::between(b, a),
+        Site::Arc(arc) if arc.start() == end || arc.end() == end => arc_leaving(&arc, end),
+        _ => None,
+    }
+}
+
+/// The tangent of `arc` pointing into it from its endpoint `end`.
+///
+/// With a bulge `β` and chord `D = end − start`, the tangent turns from
+/// the chord by half the sweep, whose cosine and sine are
+/// `(1 − β², 2β)/(1 + β²)`: it leaves the start along
+/// `(1 − β²) D − 2β D⊥` and arrives at the end along `(1 − β²) D + 2β D⊥`
+/// (`D⊥` is `D` turned a quarter counter-clockwise). Through a third point
+/// `V`, inverting about the start `A` maps the circle to the line through
+/// the images of `V` and the end `E`, which is parallel to the tangent at
+/// `A`: it leaves along `|AE|² (V − A) − |AV|² (E − A)`.
+fn arc_leaving(arc: &CircularArc, end: Point) -> Option<Direction> {
+    let (s, e) = (arc.start(), arc.end());
+    let at_start = end == s;
+    match arc.datum() {
+        (Some(beta), _) => {
+            // β² must not underflow for the polynomial to be exact
+            if beta != 0.0 && beta.abs() < 1e-150 {
+                return None;
+            }
+            let (dx, dy) = (Expansion::difference(e.x, s.x), Expansion::difference(e.y, s.y));
+            let mut cosine = Expansion::of(1.0);
+            cosine.add_product(-beta, beta);
+            let sine = Expansion::of(2.0 * beta);
+            // D⊥ = (−dy, dx); at the start −2β D⊥ = (2β dy, −2β dx)
+            let (along_x, along_y) = (cosine.times(&dx), cosine.times(&dy));
+            let (turn_x, turn_y) = (sine.times(&dy), sine.times(&dx).negated());
+            if at_start {
+                Direction::new(along_x.plus(&turn_x), along_y.plus(&turn_y))
+            } else {
+                // arriving along (1 − β²) D + 2β D⊥; leaving the end backward
+                Direction::new(turn_x.minus(&along_x), turn_y.minus(&along_y))
+            }
+        }
+        (None, Some(via)) => {
+            let (a, far) = if at_start { (s, e) } else { (e, s) };
+            let squared = |p: Point| {
+                let mut out = Expansion::default();
+                out.add_squared_difference(p.x, a.x);
+                out.add_squared_difference(p.y, a.y);
+                out
+            };
+            let (to_far, to_via) = (squared(far), squared(via));
+            let component = |v: f64, f: f64, a: f64| {
+                let mut out = Expansion::default();
+                out.add_product_with_difference(&to_far, (v, a));
+                let mut minus = Expansion::default();
+                minus.add_product_with_difference(&to_via, (f, a));
+                out.minus(&minus)
+            };
+            Direction::new(component(via.x, far.x, a.x), component(via.y, far.y, a.y))
+        }
+        _ => None,
+    }
+}
+
+/// Whether `arc`, leaving its endpoint `end`, curves to the left of its
+/// direction there (its centre on that side): a counter-clockwise arc
+/// from its start, a clockwise one from its end.
+pub(crate) fn curves_left(arc: &CircularArc, end: Point) -> bool {
+    arc.is_counter_clockwise() == (end == arc.start())
+}
+
+/// The signed curvature of a piece leaving `end` (positive curving left):
+/// zero for a segment. Floating point: it only breaks exact ties of
+/// direction.
+pub(crate) fn curvature_leaving(site: &Site, end: Point) -> f64 {
+    match *site {
+        Site::Arc(arc) => {
+            let k = 1.0 / arc.radius();
+            if curves_left(&arc, end) {
+                k
+            } else {
+                -k
+            }
+        }
+        _ => 0.0,
+    }
+}
+
+/// The sign of the turn from the piece `u` to the piece `v`, both leaving
+/// their common endpoint `end`, as their directions a hair away from it
+/// see it: by the exact tangents, and where those are exactly parallel by
+/// the curvatures (the one curving more to the left lies counter-clockwise
+/// of the other when both leave the same way, clockwise when they leave
+/// opposite ways). `None` out of range.
+pub(crate) fn turn_between(u: &Site, v: &Site, end: Point) -> Option<i8> {
+    let (tu, tv) = (leaving(u, end)?, leaving(v, end)?);
+    let sign = cross_sign(&tu, &tv)?;
+    if sign != 0 {
+        return Some(sign);
+    }
+    let same_way = dot_sign(&tu, &tv)?;
+    let bend = curvature_leaving(v, end) - curvature_leaving(u, end);
+    let bend = if bend > 0.0 {
+        1
+    } else if bend < 0.0 {
+        -1
+    } else {
+        0
+    };
+    Some(same_way * bend)
+}
+
+/// Whether a vertex of both endpoints of `arc` and of `third` lies beyond
+/// the arc's centre on the side of the arc's middle (1), before it (-1) or
+/// at it (0), for the `third` sites where that is exact: a segment or arc
+/// sharing one of the arc's endpoints (the vertex is where its normal at
+/// that endpoint meets the bisector of the arc's endpoints, the arc's
+/// centre where the arc's own normal does), and a point (the circle
+/// through the two endpoints and it, against the arc's circle). `None`
+/// for any other site or out of range.
+pub(crate) fn beyond_centre(arc: &CircularArc, third: &Site) -> Option<i8> {
+    let (s, e) = (arc.start(), arc.end());
+    // positive for a counter-clockwise arc (its middle right of s → e)
+    let ccw: i8 = if arc.is_counter_clockwise() { 1 } else { -1 };
+    match *third {
+        Site::Point(q) => beyond_centre_point(arc, q, ccw),
+        _ => {
+            let shared = if third.has_endpoint(s) {
+                s
+            } else if third.has_endpoint(e) {
+                e
+            } else {
+                return None;
+            };
+            let other = if shared == s { e } else { s };
+            let d = Direction::between(shared, other)?;
+            // Along the bisector, the point where a line through `shared`
+            // in direction w (turned toward `other`) meets it moves toward
+            // the arc's middle as w turns the way d × u says (u toward the
+            // middle: for the start, d × u = −ccw).
+            let toward_middle = if shared == s { -ccw } else { ccw };
+            let (t_arc, t_third) = (leaving(&Site::Arc(*arc), shared)?, leaving(third, shared)?);
+            // the normals (t turned a quarter) toward `other`
+            let (n_arc, n_third) = (cross_sign(&t_arc, &d)?, cross_sign(&t_third, &d)?);
+            if n_arc == 0 || n_third == 0 {
+                return None;
+            }
+            let turn = cross_sign(&t_arc, &t_third)?;
+            if turn == 0 && dot_sign(&t_arc, &t_third)? > 0 {
+                // A cusp: the third piece leaves the shared end along the
+                // arc and curves the other way. The normal from the cusp
+                // to the centre ties the cusp, both pieces and the arc's
+                // other end, but beside it the arc is nearer than the
+                // third piece (which bends away): the vertex is the
+                // arc's, in conflict with it, as beyond the centre.
+                let arc_curve = curvature_leaving(&Site::Arc(*arc), shared);
+                let third_curve = curvature_leaving(third, shared);
+                return Some(if arc_curve * third_curve < 0.0 { 1 } else { 0 });
+            }
+            Some(n_arc * n_third * turn * toward_middle)
+        }
+    }
+}
+
+/// [`beyond_centre`] for a point `q`: the circle through the arc's ends and
+/// `q` has its centre beyond the arc's when `q` lies outside the arc's
+/// circle on the side of the arc's middle, or inside it on the other side.
+fn beyond_centre_point(arc: &CircularArc, q: Point, ccw: i8) -> Option<i8> {
+    let (s, e) = (arc.start(), arc.end());
+    // the side of the chord s → e: the middle is right of it when ccw
+    let side = exact_orientation(s, e, q).sign();
+    let middle_side = side == -ccw;
+    if side == 0 {
+        return None;
+    }
+    let outside = match arc.datum() {
+        (Some(beta), _) => {
+            if beta.abs() < 1e-150 {
+                return None;
+            }
+            // 4β (C − s) = 2β D + (1 − β²) D⊥; the power of q is
+            // |q − s|² − 2 (q − s)·(C − s), of the sign of
+            // β (2β |q − s|² − (q − s)·4β (C − s))
+            let (dx, dy) = (Expansion::difference(e.x, s.x), Expansion::difference(e.y, s.y));
+            let mut cosine = Expansion::of(1.0);
+            cosine.add_product(-beta, beta);
+            let two_beta = Expansion::of(2.0 * beta);
+            let wx = two_beta.times(&dx).minus(&cosine.times(&dy));
+            let wy = two_beta.times(&dy).plus(&cosine.times(&dx));
+            let mut lift = Expansion::default();
+            lift.add_squared_difference(q.x, s.x);
+            lift.add_squared_difference(q.y, s.y);
+            let mut power = two_beta.times(&lift);
+            let mut along = Expansion::default();
+            along.add_product_with_difference(&wx, (q.x, s.x));
+            along.add_product_with_difference(&wy, (q.y, s.y));
+            power.subtract(&along);
+            if !power.is_finite() {
+                return None;
+            }
+            let sign = power.sign() * if beta > 0.0 { 1 } else { -1 };
+            if sign == 0 {
+                return Some(0);
+            }
+            sign > 0
+        }
+        (None, Some(via)) => {
+            // the circle through s, via, e, its points counter-clockwise
+            let (a, c) = if exact_orientation(s, via, e).sign() > 0 { (s, e) } else { (e, s) };
+            let det = robust::incircle(coord(a), coord(via), coord(c), coord(q));
+            if det == 0.0 {
+                return Some(0);
+            }
+            det < 0.0
+        }
+        _ => return None,
+    };
+    Some(if outside == middle_side { 1 } else { -1 })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    fn approx(d: &Direction) -> Point {
+        d.approximate()
+    }
+
+    #[test]
+    fn tangents_of_arcs_by_bulge_and_by_third_point_agree_with_the_centre() {
+        let mut seed = 0x1234_5678_9abc_def0_u64;
+        let mut unit = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for _ in 0..500 {
+            let (s, e) = (p(unit() * 10.0 - 5.0, unit() * 10.0 - 5.0), p(unit() * 10.0 - 5.0, unit() * 10.0 - 5.0));
+            let bulge = (unit() * 4.0 - 2.0).clamp(-1.9, 1.9);
+            if bulge.abs() < 0.01 {
+                continue;
+            }
+            let by_bulge = CircularArc::from_bulge(s, e, bulge).unwrap();
+            let via = by_bulge.midpoint();
+            let by_via = CircularArc::through(s, via, e).unwrap();
+            for arc in [by_bulge, by_via] {
+                for end in [s, e] {
+                    let t = approx(&leaving(&Site::Arc(arc), end).unwrap());
+                    let want = arc.tangent_into(end);
+                    assert!((t.x - want.x).abs() < 1e-6 && (t.y - want.y).abs() < 1e-6, "{arc:?} at {end:?}: {t:?} {want:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_join_one_ulp_off_straight_is_a_corner() {
+        // a segment into a half circle's start, its far end an ulp above or
+        // below the tangent line
+        let arc = CircularArc::from_bulge(p(4.0, 0.0), p(4.0, 2.0), 1.0).unwrap();
+        let tiny = f64::MIN_POSITIVE * 1e10;
+        for (y, want) in [(0.0, 0), (tiny, 1), (-tiny, -1), (1e-16, 1), (-1e-16, -1)] {
+            let segment = Site::Segment { a: p(3.0, y), b: p(4.0, 0.0) };
+            // arriving along the segment, leaving along the arc: the turn
+            // is the turn from the segment's way back to the arc, reversed
+            let turn = turn_between(&segment, &Site::Arc(arc), p(4.0, 0.0)).unwrap();
+            assert_eq!(turn, if want == 0 { -1 } else { -want }, "y = {y}");
+            assert_eq!(beyond_centre(&arc, &segment), Some(want), "y = {y}");
+        }
+    }
+
+    #[test]
+    fn a_cusp_puts_the_vertex_in_the_arcs_conflict() {
+        // half circles in a row meeting at (4, 3), both leaving it upward
+        let right = CircularArc::from_bulge(p(8.0, 3.0), p(4.0, 3.0), 1.0).unwrap();
+        let left = CircularArc::from_bulge(p(4.0, 3.0), p(0.0, 3.0), 1.0).unwrap();
+        assert_eq!(beyond_centre(&right, &Site::Arc(left)), Some(1));
+        assert_eq!(turn_between(&Site::Arc(left), &Site::Arc(right), p(4.0, 3.0)), Some(-1));
+        // the same half circle continued by a segment along its tangent:
+        // the vertex is the centre
+        let segment = Site::Segment { a: p(4.0, 3.0), b: p(4.0, 0.0) };
+        assert_eq!(beyond_centre(&right, &segment), Some(0));
+    }
+
+    #[test]
+    fn a_point_against_the_arcs_circle() {
+        let arc = CircularArc::from_bulge(p(4.0, 0.0), p(4.0, 2.0), 1.0).unwrap();
+        let via = CircularArc::through(p(4.0, 0.0), p(5.0, 1.0), p(4.0, 2.0)).unwrap();
+        for arc in [arc, via] {
+            // on the circle: the vertex is the centre
+            assert_eq!(beyond_centre(&arc, &Site::Point(p(3.0, 1.0))), Some(0));
+            assert_eq!(beyond_centre(&arc, &Site::Point(p(5.0, 1.0))), Some(0));
+            // outside on the middle's side, inside on the other
+            assert_eq!(beyond_centre(&arc, &Site::Point(p(5.5, 1.0))), Some(1));
+            assert_eq!(beyond_centre(&arc, &Site::Point(p(3.5, 1.0))), Some(1));
+            // inside on the middle's side, outside on the other
+            assert_eq!(beyond_centre(&arc, &Site::Point(p(4.5, 1.0))), Some(-1));
+            assert_eq!(beyond_centre(&arc, &Site::Point(p(2.5, 1.0))), Some(-1));
+        }
+    }
+}
