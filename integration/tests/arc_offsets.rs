@@ -66,6 +66,14 @@ fn directed_hausdorff(from: &[Vec<Point>], to: &[Vec<Point>]) -> f64 {
     worst
 }
 
+/// How far an offset piece's ends may be from their distance: 1e-9 of the
+/// size, and a few ulps of the coordinates (far from the origin an ulp is
+/// more than that).
+fn piece_tolerance(rings: &[Ring], size: f64, r: f64) -> f64 {
+    let magnitude = rings.iter().flatten().fold(0.0f64, |m, (p, _)| m.max(p.x.abs()).max(p.y.abs()));
+    1e-9 * (size + r.abs()) + 4.0 * f64::EPSILON * magnitude
+}
+
 /// What one offset of a diagram with arcs showed.
 #[derive(Default, Debug)]
 struct Seen {
@@ -394,13 +402,15 @@ fn check_domain_offsets(name: &str, rings: &[Ring], distances: &[f64], size: f64
         let what = format!("{name} at {r}");
         let offset = d.offset(r).unwrap_or_else(|e| panic!("{what}: {e}"));
         let want = reference.offset(r).unwrap();
-        check_pieces(&what, &d, &offset, r, 1e-9 * (size + r.abs()), &mut seen);
+        check_pieces(&what, &d, &offset, r, piece_tolerance(rings, size, r), &mut seen);
         assert_eq!(offset.loops.len(), want.loops.len(), "{what}: loops, against the chords'");
         for (a, b) in offset.loops.iter().zip(&want.loops) {
             assert_eq!(a.hole, b.hole, "{what}: holes");
         }
         let (area, reference_area) = (offset.area(), want.area());
-        let relative = (area - reference_area).abs() / reference_area.abs();
+        // (both empty beyond the deepest point)
+        let relative =
+            if area == 0.0 && reference_area == 0.0 { 0.0 } else { (area - reference_area).abs() / reference_area.abs() };
         assert!(relative <= 1e-4, "{what}: area {area} against the chords' {reference_area} ({relative:e})");
         let (ours, theirs) = (offset.polylines(1e-5 * size).unwrap(), want.polylines(1e-5 * size).unwrap());
         let hausdorff = directed_hausdorff(&ours, &theirs).max(directed_hausdorff(&theirs, &ours));
@@ -881,4 +891,92 @@ fn a_curved_hole_touching_its_shell() {
     ];
     check_domain_offsets("a lens touching its shell", &touching, &[-0.2, -0.6, 0.5], 9.0);
     check_medial_axis("a lens touching its shell", &touching, 9.0);
+}
+
+/// `ring` with a vertex inserted in every straight side: at a random point
+/// along it (rounded: a vertex a few ulps off the line), and where
+/// `nudge` is set moved by one ulp across the side as well; the whole
+/// moved by `shift` (far from the origin the sides' ends round too, and
+/// the joins with the arcs come out an ulp off tangent).
+fn with_straight_vertices(ring: &Ring, rng: &mut SplitMix64, nudge: bool, shift: Point) -> Ring {
+    let n = ring.len();
+    let moved = |q: Point| Point::new(q.x + shift.x, q.y + shift.y);
+    let mut out = Vec::with_capacity(2 * n);
+    for k in 0..n {
+        let ((a, bulge), (b, _)) = (ring[k], ring[(k + 1) % n]);
+        out.push((moved(a), bulge));
+        if bulge == 0.0 {
+            let t = 0.05 + 0.9 * rng.unit();
+            let mut m = moved(Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)));
+            if nudge {
+                // about one ulp of the side's coordinates toward its left
+                // (one ulp of 0.0 would be a subnormal, out of range)
+                let ulp = f64::EPSILON * [a.x, a.y, b.x, b.y].iter().fold(0.0f64, |m, v| m.max((v + shift.x.max(shift.y)).abs()));
+                let (dx, dy) = (b.x - a.x, b.y - a.y);
+                let length = dx.hypot(dy);
+                m = Point::new(m.x - ulp * dy / length, m.y + ulp * dx / length);
+            }
+            out.push((m, 0.0));
+        }
+    }
+    out
+}
+
+/// What users have: every curved family with a vertex on every straight
+/// side, straight to rounding or one ulp off, at the origin and far from
+/// it. The vertices an ulp off and the joins an ulp off tangent are
+/// corners to the exact predicates (`exact_join`), straight to the domain
+/// within rounding; offsets and the medial axis must not see the
+/// difference.
+#[test]
+fn curved_families_with_straight_and_ulp_off_vertices() {
+    let mut rng = SplitMix64(31);
+    let families: Vec<(&str, Vec<Ring>, f64)> = vec![
+        ("slot", vec![slot_ring(0.0, 0.0, 4.0, 1.0)], 6.0),
+        (
+            "rounded with holes",
+            vec![
+                rounded_ring(0.0, 0.0, 10.0, 6.0, 1.5, false),
+                circle_ring(3.0, 3.0, 1.0),
+                rounded_ring(5.0, 1.0, 4.0, 3.0, 1.0, true),
+            ],
+            10.0,
+        ),
+        ("filleted 3", vec![filleted_ring(&mut rng, 0.0, 0.0, 3, 0.3)], 2.0),
+        ("filleted 6", vec![filleted_ring(&mut rng, 0.0, 0.0, 6, 0.3)], 2.0),
+    ];
+    for (name, rings, size) in &families {
+        for shift in [Point::new(0.0, 0.0), Point::new(1e6 + 0.37, -1e6 + 0.81), Point::new(-3e7, 2.5e7)] {
+            for nudge in [false, true] {
+                let changed: Vec<Ring> = rings.iter().map(|r| with_straight_vertices(r, &mut rng, nudge, shift)).collect();
+                let what = format!("{name} at {shift:?}{}", if nudge { ", nudged" } else { "" });
+                let distances = [-0.03 * size, -0.08 * size, 0.1 * size];
+                check_domain_offsets(&what, &changed, &distances, *size);
+                check_medial_axis(&what, &changed, *size);
+                let reversed: Vec<Ring> = changed.iter().map(reverse_ring).collect();
+                check_domain_offsets(&format!("{what}, reversed"), &reversed, &distances, *size);
+                // -0.05 of the rounded rectangle with holes is the level
+                // where its corridors close (offsets touching themselves,
+                // found wrong: a crossing sent to the far end of its edge).
+                // Whether the loops part at a touching point or join there
+                // is rounding's choice far out and not yet the same both
+                // ways round (known: the order of two crossings at one
+                // vertex), so here the pieces and the region are checked.
+                let touching = -0.05 * size;
+                let mut seen = Seen::default();
+                let mut area = |rings: &[Ring]| {
+                    let (d, reference) = domain_and_reference(rings);
+                    let offset = d.offset(touching).unwrap();
+                    check_pieces(&what, &d, &offset, touching, piece_tolerance(rings, *size, touching), &mut seen);
+                    (offset.area(), reference.offset(touching).unwrap().area())
+                };
+                let ((forward, want), (backward, _)) = (area(&changed), area(&reversed));
+                assert!(
+                    (forward - want).abs() <= 1e-4 * want.abs(),
+                    "{what} at {touching}: {forward} against the chords' {want}"
+                );
+                assert!((forward - backward).abs() <= 1e-9 * size * size, "{what} at {touching}: {forward}, reversed {backward}");
+            }
+        }
+    }
 }

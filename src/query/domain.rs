@@ -446,7 +446,22 @@ impl Diagram {
                 _ => None,
             };
             let (Some(p0), Some(p1)) = (far(0), far(1)) else { continue };
-            let passes = !near(ends[0]) && !near(ends[1]) && self.edge_reach(e, at) <= tolerance;
+            // A separator (the corner and a piece ending there) lies on a
+            // line through the corner: it passes through it when its ends
+            // lie either side along that line. That is sure where the
+            // chord to a far end is not (a vertex far out is placed only
+            // to its solver's precision, which at 1e16 is no direction).
+            let along_separator = [u, v].iter().find_map(|&t| {
+                let other = if t == u { v } else { u };
+                (other == corner).then(|| self.toward(t, corner))
+            });
+            let either_side = along_separator.map(|q| {
+                // the separator runs across the piece's direction at the corner
+                let (dx, dy) = (q.x - at.x, q.y - at.y);
+                let side = |p: Point| (p.x - at.x) * dy - (p.y - at.y) * dx;
+                side(p0) * side(p1) < 0.0
+            });
+            let passes = !near(ends[0]) && !near(ends[1]) && either_side.unwrap_or_else(|| self.edge_reach(e, at) <= tolerance);
             // along the join's normal: the line from an arc's centre there
             let normal = [u, v].iter().find_map(|&t| match self.sites[t.index()] {
                 Site::Arc(a) => Some(a.centre()),

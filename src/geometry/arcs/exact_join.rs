@@ -341,6 +341,44 @@ mod tests {
     }
 
     #[test]
+    fn beyond_the_centre_agrees_with_the_vertex_in_every_orientation() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut unit = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for case in 0..2000 {
+            let (s, e) = (p(unit() * 2.0 - 1.0, unit() * 2.0 - 1.0), p(unit() * 2.0 - 1.0, unit() * 2.0 - 1.0));
+            let bulge = (0.1 + 1.5 * unit()) * if case % 2 == 0 { 1.0 } else { -1.0 };
+            let arc = CircularArc::from_bulge(s, e, bulge).unwrap();
+            let shared = if case % 4 < 2 { s } else { e };
+            let other = if shared == s { e } else { s };
+            // a segment leaving `shared` along the arc's tangent turned by a
+            // small angle either way (away from the arc: a join)
+            let t = arc.tangent_into(shared);
+            let angle = (unit() - 0.5) * 1e-3;
+            let (c, si) = (angle.cos(), angle.sin());
+            let back = p(-(t.x * c - t.y * si), -(t.x * si + t.y * c));
+            let segment = Site::Segment { a: shared, b: p(shared.x + back.x, shared.y + back.y) };
+            // the vertex: on the bisector of the ends and the segment's
+            // normal at `shared`
+            let n = p(-back.y, back.x);
+            let m = p(0.5 * (s.x + e.x), 0.5 * (s.y + e.y));
+            let d = p(other.x - shared.x, other.y - shared.y);
+            // shared + k n on the bisector: (shared + k n − m)·d = 0
+            let k = ((m.x - shared.x) * d.x + (m.y - shared.y) * d.y) / (n.x * d.x + n.y * d.y);
+            let v = p(shared.x + k * n.x, shared.y + k * n.y);
+            let (centre, middle) = (arc.centre(), arc.midpoint());
+            let along = (v.x - centre.x) * (middle.x - centre.x) + (v.y - centre.y) * (middle.y - centre.y);
+            if along.abs() < 1e-9 {
+                continue;
+            }
+            let want = if along > 0.0 { 1 } else { -1 };
+            assert_eq!(beyond_centre(&arc, &segment), Some(want), "case {case}: {arc:?} at {shared:?}, turned {angle}");
+        }
+    }
+
+    #[test]
     fn a_cusp_puts_the_vertex_in_the_arcs_conflict() {
         // half circles in a row meeting at (4, 3), both leaving it upward
         let right = CircularArc::from_bulge(p(8.0, 3.0), p(4.0, 3.0), 1.0).unwrap();

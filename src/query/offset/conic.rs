@@ -324,11 +324,13 @@ impl ConicTrack {
     }
 
     /// The parameter in `[a, b]` where the clearance, monotone there,
-    /// equals `level`, by bisection (to the precision of `f64`); an end
-    /// when it does not cross (rounding).
-    pub(super) fn root(&self, a: f64, b: f64, level: f64) -> f64 {
+    /// equals `level`, by bisection (to the precision of `f64`), given
+    /// whether it is below the level at `a` (the band's classification of
+    /// that end, which recomputing the clearance there may contradict by
+    /// rounding: the root is then at `a`); an end when it does not cross.
+    pub(super) fn root(&self, a: f64, b: f64, level: f64, below_at_a: bool) -> f64 {
         let (mut lo, mut hi) = (a, b);
-        let below_at_lo = self.clearance(lo) < level;
+        let below_at_lo = below_at_a;
         for _ in 0..200 {
             let mid = 0.5 * (lo + hi);
             if mid <= lo || mid >= hi {
@@ -413,7 +415,7 @@ mod tests {
         assert!((peaks[0].value - 0.75).abs() < 1e-12, "{:?}", peaks[0]);
         let bottom = track.point(peaks[0].t).unwrap();
         assert!(bottom.x.abs() < 1e-6 && (bottom.y + 0.25).abs() < 1e-12, "{bottom:?}");
-        for t in [track.root(0.0, peaks[0].t, 0.7), track.root(peaks[0].t, 1.0, 0.7)] {
+        for t in [track.root(0.0, peaks[0].t, 0.7, true), track.root(peaks[0].t, 1.0, 0.7, false)] {
             let q = track.point(t).unwrap();
             assert!((q.distance(p) - 0.7).abs() < 1e-14 && (1.0 - q.distance(Point::new(0.0, 0.0)) - 0.7).abs() < 1e-14);
         }

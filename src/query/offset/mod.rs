@@ -29,8 +29,15 @@ use index::{OffsetIndex, Side};
 
 /// Points of an offset at distance `r` closer than `COINCIDENT × r` are one
 /// point: the ends of a span that goes nowhere, a loop that is the trace of
-/// a part with no interior.
+/// a part with no interior. So are points a few ulps of their coordinates
+/// apart (`coincident`): far from the origin that is more.
 const COINCIDENT: f64 = 1e-9;
+
+/// How near two points of an offset at distance `r` around `at` are one
+/// point (see [`COINCIDENT`]).
+fn coincident(r: f64, at: Point) -> f64 {
+    (COINCIDENT * r).max(8.0 * f64::EPSILON * at.x.abs().max(at.y.abs()))
+}
 
 /// One piece of an offset loop, in the loop's direction. Every piece lies
 /// in the cell of one site and is at the offset's distance from it. More
@@ -297,7 +304,6 @@ impl Diagram {
         let mut traced = self.trace(index, r);
 
         let empty = self.drop_empty_spans(&mut traced, r);
-        let near = COINCIDENT * r;
         split_at_touching_points(&mut traced);
 
         // Follow the spans into loops; each loop's two regions (a leaf of
@@ -328,6 +334,7 @@ impl Diagram {
             }
             // a loop within rounding of one point is the trace of a part
             // with no interior (the region touching itself there)
+            let near = pieces.first().map_or(0.0, |p| coincident(r, p.from()));
             let tiny = pieces.iter().all(|p| matches!(p, OffsetPiece::Line { .. }) || p.from() != p.to())
                 && pieces
                     .iter()
@@ -377,12 +384,12 @@ impl Diagram {
     /// dropped span moves to its start, so the pieces either side still
     /// meet.
     fn drop_empty_spans(&self, traced: &mut trace::Traced, r: f64) -> Vec<bool> {
-        let near = COINCIDENT * r;
         let mut empty = vec![false; traced.spans.len()];
         let mut whole = vec![false; traced.spans.len()];
         let mut moved_to: Vec<u32> = (0..traced.crossings.len() as u32).collect();
         for (k, span) in traced.spans.iter().enumerate() {
             let (from, to) = (traced.crossings[span.from as usize].at, traced.crossings[span.to as usize].at);
+            let near = coincident(r, from);
             if from.distance(to) > near {
                 continue;
             }

@@ -210,7 +210,10 @@ impl Diagram {
                 continue;
             }
             let lowest = [a, b].into_iter().find(touching);
-            let t = lowest.map_or_else(|| conic.track.root(a.t, b.t, level), |stop| stop.t);
+            // (which end is in the band is the stops' word, not the
+            // clearance recomputed along the track: an end at the level
+            // to rounding must not send the root to the other end)
+            let t = lowest.map_or_else(|| conic.track.root(a.t, b.t, level, in_a), |stop| stop.t);
             let Some(at) = conic.track.point(t) else { continue };
             let at = self.scale.point_to_input(at);
             // next to a vertex (rounding: the vertex is at the level), the
