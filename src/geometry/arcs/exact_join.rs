@@ -294,17 +294,21 @@ mod tests {
         Point::new(x, y)
     }
 
+    /// Uniform numbers in [0, 1) from `seed` (a linear congruential step).
+    fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
+        move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
     fn approx(d: &Direction) -> Point {
         d.approximate()
     }
 
     #[test]
     fn tangents_of_arcs_by_bulge_and_by_third_point_agree_with_the_centre() {
-        let mut seed = 0x1234_5678_9abc_def0_u64;
-        let mut unit = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut unit = uniform(0x1234_5678_9abc_def0);
         for _ in 0..500 {
             let (s, e) = (p(unit() * 10.0 - 5.0, unit() * 10.0 - 5.0), p(unit() * 10.0 - 5.0, unit() * 10.0 - 5.0));
             let bulge = (unit() * 4.0 - 2.0).clamp(-1.9, 1.9);
@@ -342,11 +346,7 @@ mod tests {
 
     #[test]
     fn beyond_the_centre_agrees_with_the_vertex_in_every_orientation() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut unit = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut unit = uniform(0x9e37_79b9_7f4a_7c15);
         for case in 0..2000 {
             let (s, e) = (p(unit() * 2.0 - 1.0, unit() * 2.0 - 1.0), p(unit() * 2.0 - 1.0, unit() * 2.0 - 1.0));
             let bulge = (0.1 + 1.5 * unit()) * if case % 2 == 0 { 1.0 } else { -1.0 };
