@@ -981,37 +981,38 @@ fn curved_families_with_straight_and_ulp_off_vertices() {
     }
 }
 
-/// Never a wrong answer that looks valid: a square with a circle touching
-/// its side and a segment leaving the point where the circle's two halves
-/// meet (LibreCAD's Logic-NOT-IEC gate, minimised). Its outward offset had
-/// a piece 5 off its distance, an area of 393 for about 315. Known wrong
-/// (the arcs' decisions are not certified): until fixed, the offsets'
-/// check of their pieces refuses it as `Internal`; either that or the
-/// right answer passes, a wrong one fails.
+/// A square with a circle touching its side and a segment leaving the
+/// point where the circle's two halves meet (LibreCAD's Logic-NOT-IEC
+/// gate, minimised). Its outward offset had a piece 5 off its distance
+/// (an area of 393 for about 302): where the circle touches the square's
+/// side at the side's end, the arc and the side leave that point the same
+/// way (a cusp), and their edge was taken for the ray of a tangent join.
+/// Found by the offsets' check of their pieces, which refused it.
 #[test]
-fn a_segment_from_where_a_circles_halves_meet_is_right_or_refused() {
+fn a_circle_touching_a_side_at_its_end() {
     let p = Point::new;
     let rings = vec![
         vec![(p(10.0, 10.0), 0.0), (p(10.0, -10.0), 0.0), (p(20.0, -10.0), 0.0), (p(20.0, 10.0), 0.0)],
         vec![(p(25.0, 0.0), 1.0), (p(20.0, 0.0), 1.0)],
     ];
-    let build = |rings: &[Ring]| {
-        let mut b = Builder::new();
-        b.add_bulged_polygon(rings).unwrap();
-        b.add_segment([p(30.0, 0.0), p(25.0, 0.0)]).unwrap();
-        b.build().unwrap()
-    };
-    let d = build(&rings);
-    let chords: Vec<Ring> = rings.iter().map(|r| densified_ring(r).into_iter().map(|q| (q, 0.0)).collect()).collect();
-    let reference = build(&chords);
-    for distance in [1.0, 0.3, -0.5] {
-        let want = reference.offset(distance).unwrap().area();
-        match d.offset(distance) {
-            Ok(offset) => {
-                let area = offset.area();
-                assert!((area - want).abs() <= 1e-3 * want, "at {distance}: area {area} against the chords' {want}");
+    for with_segment in [false, true] {
+        let build = |rings: &[Ring]| {
+            let mut b = Builder::new();
+            b.add_bulged_polygon(rings).unwrap();
+            if with_segment {
+                b.add_segment([p(30.0, 0.0), p(25.0, 0.0)]).unwrap();
             }
-            Err(e) => assert_eq!(e.kind(), segvoronoi::ErrorKind::Internal, "at {distance}: {e}"),
+            b.build().unwrap()
+        };
+        let d = build(&rings);
+        let chords: Vec<Ring> = rings.iter().map(|r| densified_ring(r).into_iter().map(|q| (q, 0.0)).collect()).collect();
+        let reference = build(&chords);
+        for distance in [1.0, 0.3, -0.5] {
+            let want = reference.offset(distance).unwrap().area();
+            let offset = d.offset(distance).unwrap_or_else(|e| panic!("at {distance}: {e}"));
+            let area = offset.area();
+            assert!((area - want).abs() <= 1e-3 * want, "at {distance}: area {area} against the chords' {want}");
         }
     }
+    check_domain_offsets("a circle touching a side at its end", &rings, &[-0.5, -2.0, 0.3, 1.0], 20.0);
 }

@@ -346,9 +346,10 @@ impl ConicTrack {
     }
 }
 
-/// When `other` continues `arc` tangentially at an endpoint they share (a
-/// segment along the arc's tangent there, or an arc whose centre lies on
-/// the same line through that endpoint, e.g. of the same circle), or
+/// When `other` continues `arc` tangentially at an endpoint they share,
+/// leaving it the other way (a segment along the arc's tangent there, or
+/// an arc whose centre lies on the same line through that endpoint, e.g.
+/// of the same circle), or
 /// within a microradian of it (a join an ulp off straight), the unit
 /// direction from the arc's centre through that endpoint: the edge
 /// between them lies along that ray, or beside it, where the angle around
@@ -376,7 +377,20 @@ fn tangent_join(arc: &CircularArc, other: &Site) -> Option<Point> {
     };
     let cross = radial.x * across.y - radial.y * across.x;
     let size = length * across.x.hypot(across.y);
-    (length > 0.0 && cross.abs() <= 1e-6 * size).then(|| Point::new(radial.x / length, radial.y / length))
+    // continuing the arc: leaving `e` the other way (both leaving it the
+    // same way, a cusp, as a circle touching a side at a segment's end,
+    // the edge between them is a parabola, not the ray)
+    let ahead = arc.tangent_into(e);
+    let other_ahead = match *other {
+        Site::Segment { a, b } => {
+            let f = if a == e { b } else { a };
+            Point::new(f.x - e.x, f.y - e.y)
+        }
+        Site::Arc(o) => o.tangent_into(e),
+        _ => return None,
+    };
+    let continues = ahead.x * other_ahead.x + ahead.y * other_ahead.y < 0.0;
+    (length > 0.0 && continues && cross.abs() <= 1e-6 * size).then(|| Point::new(radial.x / length, radial.y / length))
 }
 
 /// Of samples `from..=to`, the one with the highest clearance (`peak`)
