@@ -580,20 +580,7 @@ impl Diagram {
         let mut cell = None;
         for k in 0..n {
             let ((u, to_u), (v, to_v)) = (around[k], around[(k + 1) % n]);
-            // Exactly, arcs by their tangents and, where those are one
-            // line, their curvature: the two halves of a circle leave a
-            // point of it opposite ways, a half turn apart by their
-            // tangents but less on the side they curve to (a segment
-            // leaving that point outward leaves the circle's inside no
-            // wedge of a half turn, where the corner's cell would lie).
-            let exact = crate::geometry::arcs::exact_join::turn_between(&self.sites[u.index()], &self.sites[v.index()], here);
-            let turn = match exact {
-                Some(1) => Orientation::CounterClockwise,
-                Some(-1) => Orientation::Clockwise,
-                Some(_) => Orientation::Collinear,
-                None => self.turn(here, to_u, to_v),
-            };
-            if turn == Orientation::CounterClockwise {
+            if self.turn(here, to_u, to_v) == Orientation::CounterClockwise {
                 continue; // less than a half turn from u to v
             }
             if cell.is_some() {
