@@ -67,8 +67,11 @@ pub(crate) fn arc_depth(
             // ties four sites), the floating-point rule below stands: its
             // answers are what the degenerate configurations were built
             // and tested with.
+            // (filtered: only where the floating-point answer is near the
+            // tie, far above the solver's error, is the exact one asked)
             let [s, e] = [Site::Point(arc.start()), Site::Point(arc.end())];
-            let third = sites().into_iter().find(|t| *t != s && *t != e);
+            let near_tie = along.abs() <= NEAR_TIE * arc.radius();
+            let third = near_tie.then(|| sites().into_iter().find(|t| *t != s && *t != e)).flatten();
             match third.and_then(|t| exact_join::beyond_centre(arc, &t)) {
                 Some(1) => -size,
                 Some(-1) => size,
@@ -81,6 +84,12 @@ pub(crate) fn arc_depth(
     };
     SegmentDepth::of(fault::perturb(depth))
 }
+
+/// Below this (a cosine, or a fraction of the radius) a floating-point
+/// answer at a join is near enough a tie for the exact one (`exact_join`)
+/// to be asked; above it the floating-point sign is right (the vertices'
+/// error is far smaller, and the bend of `direction_leaving` is 1e-7).
+const NEAR_TIE: f64 = 1e-6;
 
 /// [`arc_depth`] for a vertex with the arc's endpoint `end` among its sites.
 fn endpoint_depth(arc: &CircularArc, end: Point, after: Option<Site>, before: Option<Site>, centre: Point, radius: f64) -> f64 {
@@ -108,7 +117,7 @@ fn endpoint_depth(arc: &CircularArc, end: Point, after: Option<Site>, before: Op
     // tells clearly (the vertex is `n` away): the arc enters when it turns
     // from the piece toward that side, exactly. Where the two leave along
     // one line (tangent, or a cusp) the floating-point rules below stand.
-    if let Some(piece) = after.or(before) {
+    if let Some(piece) = after.or(before).filter(|_| along.abs() <= NEAR_TIE) {
         let exact = (|| {
             let (t_piece, t_arc) = (exact_join::leaving(&piece, end)?, exact_join::leaving(&Site::Arc(*arc), end)?);
             let d = t_piece.approximate();
@@ -229,13 +238,19 @@ pub(crate) fn arc_left_degree(arc: &CircularArc, seen: ArcSiteSeen) -> LeftDegre
 fn side_near_end(arc: &CircularArc, site: &Site, end: Point) -> f64 {
     let inward = Point::new(arc.centre().x - end.x, arc.centre().y - end.y);
     let scale = inward.x.hypot(inward.y);
-    // exactly, unless the piece leaves along the arc's tangent
-    let exact = (|| {
-        let (t_arc, t_piece) = (exact_join::leaving(&Site::Arc(*arc), end)?, exact_join::leaving(site, end)?);
-        let turn = exact_join::cross_sign(&t_arc, &t_piece)?;
-        let toward_centre: i8 = if exact_join::curves_left(arc, end) { 1 } else { -1 };
-        (turn != 0).then_some(turn == toward_centre)
-    })();
+    // exactly near the tangent (filtered: a clear floating-point turn
+    // stands, below), unless the piece leaves exactly along it
+    let clear = piece_direction(site, end).is_some_and(|d| ((d.x * inward.x + d.y * inward.y) / scale).abs() > NEAR_TIE);
+    let exact = if clear {
+        None
+    } else {
+        (|| {
+            let (t_arc, t_piece) = (exact_join::leaving(&Site::Arc(*arc), end)?, exact_join::leaving(site, end)?);
+            let turn = exact_join::cross_sign(&t_arc, &t_piece)?;
+            let toward_centre: i8 = if exact_join::curves_left(arc, end) { 1 } else { -1 };
+            (turn != 0).then_some(turn == toward_centre)
+        })()
+    };
     let inside = match (exact, piece_direction(site, end)) {
         (Some(inside), _) => inside,
         (None, None) => {
@@ -243,7 +258,7 @@ fn side_near_end(arc: &CircularArc, site: &Site, end: Point) -> f64 {
         }
         (None, Some(d)) => {
             let dot = (d.x * inward.x + d.y * inward.y) / scale;
-            if dot.abs() > 1e-6 {
+            if dot.abs() > NEAR_TIE {
                 dot > 0.0
             } else {
                 match *site {

@@ -99,6 +99,17 @@ fn tangent_join_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     if arcs == 0 || !(after.has_endpoint(j) && before.has_endpoint(j)) {
         return None;
     }
+    // a clear turn in floating point needs no exact one
+    let direction = |s: &Site| match *s {
+        Site::Arc(arc) => Some(arc.tangent_into(j)),
+        _ => crate::geometry::arcs::arc_predicates::piece_direction(s, j),
+    };
+    if let (Some(u), Some(v)) = (direction(&after), direction(&before)) {
+        let cross = (u.x * v.y - u.y * v.x) / (u.x.hypot(u.y) * v.x.hypot(v.y));
+        if cross.abs() > 1e-6 {
+            return Some((j, 0.0));
+        }
+    }
     let (t_after, t_before) = (exact_join::leaving(&after, j)?, exact_join::leaving(&before, j)?);
     if exact_join::cross_sign(&t_after, &t_before)? != 0 {
         return Some((j, 0.0));
