@@ -102,7 +102,7 @@ fn tangent_join_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     // a clear turn in floating point needs no exact one
     let direction = |s: &Site| match *s {
         Site::Arc(arc) => Some(arc.tangent_into(j)),
-        _ => crate::geometry::arcs::arc_predicates::piece_direction(s, j),
+        _ => s.other_endpoint(j).map(|f| Point::new(f.x - j.x, f.y - j.y)),
     };
     if let (Some(u), Some(v)) = (direction(&after), direction(&before)) {
         let cross = (u.x * v.y - u.y * v.x) / (u.x.hypot(u.y) * v.x.hypot(v.y));
