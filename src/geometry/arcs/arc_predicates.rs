@@ -118,13 +118,10 @@ fn endpoint_depth(arc: &CircularArc, end: Point, after: Option<Site>, before: Op
     // from the piece toward that side, exactly. Where the two leave along
     // one line (tangent, or a cusp) the floating-point rules below stand.
     if let Some(piece) = after.or(before).filter(|_| along.abs() <= NEAR_TIE) {
-        let exact = (|| {
-            let (t_piece, t_arc) = (exact_join::leaving(&piece, end)?, exact_join::leaving(&Site::Arc(*arc), end)?);
-            let d = t_piece.approximate();
-            let side = d.x * ny - d.y * nx;
-            let side: i8 = if side > 0.0 { 1 } else { -1 };
-            Some(side * exact_join::cross_sign(&t_piece, &t_arc)?)
-        })();
+        let exact = piece_direction(&piece, end).zip(exact_join::tangent_turn(&piece, &Site::Arc(*arc), end)).map(|(d, turn)| {
+            let side: i8 = if d.x * ny - d.y * nx > 0.0 { 1 } else { -1 };
+            side * turn
+        });
         match exact {
             Some(1) => return -size,
             Some(-1) => return size,
@@ -244,12 +241,8 @@ fn side_near_end(arc: &CircularArc, site: &Site, end: Point) -> f64 {
     let exact = if clear {
         None
     } else {
-        (|| {
-            let (t_arc, t_piece) = (exact_join::leaving(&Site::Arc(*arc), end)?, exact_join::leaving(site, end)?);
-            let turn = exact_join::cross_sign(&t_arc, &t_piece)?;
-            let toward_centre: i8 = if exact_join::curves_left(arc, end) { 1 } else { -1 };
-            (turn != 0).then_some(turn == toward_centre)
-        })()
+        let toward_centre: i8 = if exact_join::curves_left(arc, end) { 1 } else { -1 };
+        exact_join::tangent_turn(&Site::Arc(*arc), site, end).filter(|&turn| turn != 0).map(|turn| turn == toward_centre)
     };
     let inside = match (exact, piece_direction(site, end)) {
         (Some(inside), _) => inside,

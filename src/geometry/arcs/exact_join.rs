@@ -33,17 +33,6 @@ impl Direction {
         (x.is_finite() && y.is_finite() && (x.sign() != 0 || y.sign() != 0)).then_some(Direction { x, y })
     }
 
-    /// The direction rounded to a unit vector (zero out of range).
-    pub(crate) fn approximate(&self) -> Point {
-        let (x, y) = (self.x.approximate(), self.y.approximate());
-        let n = x.hypot(y);
-        if n > 0.0 && n.is_finite() {
-            Point::new(x / n, y / n)
-        } else {
-            Point::new(0.0, 0.0)
-        }
-    }
-
     /// `to − from`.
     fn between(from: Point, to: Point) -> Option<Direction> {
         Direction::new(Expansion::difference(to.x, from.x), Expansion::difference(to.y, from.y))
@@ -152,6 +141,13 @@ pub(crate) fn curvature_leaving(site: &Site, end: Point) -> f64 {
         }
         _ => 0.0,
     }
+}
+
+/// The sign of the turn from the tangent of the piece `u` to that of `v`,
+/// both leaving their common endpoint `end`: 0 where they are exactly
+/// parallel (a tangent join, a cusp). `None` out of range.
+pub(crate) fn tangent_turn(u: &Site, v: &Site, end: Point) -> Option<i8> {
+    cross_sign(&leaving(u, end)?, &leaving(v, end)?)
 }
 
 /// The sign of the turn from the piece `u` to the piece `v`, both leaving
@@ -302,8 +298,11 @@ mod tests {
         }
     }
 
+    /// The direction rounded to a unit vector.
     fn approx(d: &Direction) -> Point {
-        d.approximate()
+        let (x, y) = (d.x.approximate(), d.y.approximate());
+        let n = x.hypot(y);
+        p(x / n, y / n)
     }
 
     #[test]
