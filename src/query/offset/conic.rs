@@ -187,7 +187,15 @@ impl ConicTrack {
             let p = at(s);
             self.arc.distance(p) < self.other.distance(p)
         };
-        let mut step = f64::EPSILON * (self.arc.radius() + rho.abs());
+        // on the ray itself to rounding (an exact tangent join, or one a
+        // few ulps off: most of them), no search: this is asked for every
+        // sample of the edge's clearance
+        let on_ray = at(0.0);
+        let size = self.arc.radius() + rho.abs();
+        if (self.arc.distance(on_ray) - self.other.distance(on_ray)).abs() <= 16.0 * f64::EPSILON * size {
+            return on_ray;
+        }
+        let mut step = f64::EPSILON * size;
         while step < 2.0 * self.arc.radius() {
             let (lo, hi) = (nearer_arc(-step), nearer_arc(step));
             if lo != hi {
