@@ -28,27 +28,27 @@ const LIBRARY: &str = "/usr/share/librecad/library";
 
 /// The drawings the library refuses as `Internal` (the arcs' decisions
 /// are not certified yet): the build's check of its arc vertices found one
-/// off its sites (7), or the offsets' check of their pieces one off its
-/// distance (blk1, block2, l2, aw16: a segment ending within rounding of
-/// an arc's interior, a T-junction the exact input check sees as apart and
-/// the arcs' floating-point decisions as touching; these were answered
-/// wrong, arcs with an end off their circle, before the offsets checked
-/// their pieces). Refused naming an arc, never answered wrong. Any other
-/// file refused so fails the test. (dev15, hl_27 and Bathroom-basin-V were
-/// answered wrong until the joins' turns were exact; kin13 and the four
-/// Logic-*-IEC gates until a circle touching a side at the side's end was
-/// no tangent join; ed69 and elk61 until the domain counted a shell at a
-/// hole's corner.)
-const KNOWN_REFUSED: [&str; 11] = [
+/// off its sites (Headphone, an arc ending 1e-11 from a circle's interior
+/// on both sides; Chair-sofa-V), or the offsets' check of their pieces one
+/// off its distance (blk1, block2, l2, aw16: a segment ending within
+/// rounding of an arc's interior, a T-junction the exact input check sees
+/// as apart and the arcs' floating-point decisions as touching; these
+/// were answered wrong, arcs with an end off their circle, before the
+/// offsets checked their pieces). Refused naming an arc, never answered
+/// wrong. Any other file refused so fails the test, and a file listed
+/// here that is answered is reported (`answered_now`). (dev15, hl_27 and
+/// Bathroom-basin-V were answered wrong until the joins' turns were
+/// exact; kin13 and the four Logic-*-IEC gates until a circle touching a
+/// side at the side's end was no tangent join; ed69 and elk61 until the
+/// domain counted a shell at a hole's corner; c13, c14, nl and
+/// Resistor-heatfuse were refused until a vertex on an arc's circle at a
+/// cusp was in conflict with it, t2 until an arc leaving its end into a
+/// circle 1e16 across at an angle of 3e-16 was seen to enter it.)
+const KNOWN_REFUSED: [&str; 6] = [
     "block/blk1.dxf",
     "block/block2.dxf",
     "elektro/audio-iso/Headphone.dxf",
-    "elektro/connector/c13.dxf",
-    "elektro/connector/c14.dxf",
     "elektro/lamp/l2.dxf",
-    "elektro/lamp/nl.dxf",
-    "elektro/resistor-iso/Resistor-heatfuse.dxf",
-    "elektro/transformer/t2.dxf",
     "plan/air_water/aw16.dxf",
     "plan/architect/Chair-sofa-V.dxf",
 ];
@@ -106,6 +106,7 @@ fn every_part_of_librecads_library_is_answered() {
     files.sort();
     let (offsets, axis) = (temp_path("librecad_offsets.json"), temp_path("librecad_axis.wkt"));
     let (mut domains, mut no_polygon, mut refused, mut internal) = (0, 0, 0, 0);
+    let mut answered_now = Vec::new();
     let started = Instant::now();
     for file in &files {
         let name = file.strip_prefix(LIBRARY).unwrap_or(file).display().to_string();
@@ -130,6 +131,9 @@ fn every_part_of_librecads_library_is_answered() {
         match o.status.code() {
             Some(0) => {
                 domains += 1;
+                if KNOWN_REFUSED.contains(&name.trim_start_matches('/')) {
+                    answered_now.push(name.clone());
+                }
                 let value: Value = serde_json::from_str(&std::fs::read_to_string(&offsets).unwrap()).unwrap();
                 check_offsets(&name, &value);
                 for line in common::multilinestring_z(&std::fs::read_to_string(&axis).unwrap()) {
@@ -156,5 +160,8 @@ fn every_part_of_librecads_library_is_answered() {
         files.len(),
         started.elapsed()
     );
+    if !answered_now.is_empty() {
+        eprintln!("answered now, and checked, though listed in KNOWN_REFUSED (take them off): {answered_now:?}");
+    }
     assert!(domains >= 300, "{domains} domains");
 }

@@ -129,9 +129,21 @@ impl Construction {
             sweep -= 2.0 * std::f64::consts::PI;
         }
         let new_arc = Site::Arc(*arc);
+        // Sampled, and where the site's excess over the arc's circle is
+        // largest: toward a point of it from the arc's centre (a point
+        // a rounding outside the circle keeps a sliver of directions
+        // around that one only).
+        let c = arc.centre();
+        let toward = self.site_geometry(x).ends().into_iter().filter_map(|q| {
+            let t = ((q.y - c.y).atan2(q.x - c.x) - au).rem_euclid(2.0 * std::f64::consts::PI);
+            let t = if sweep < 0.0 { t - 2.0 * std::f64::consts::PI } else { t };
+            (t / sweep > 0.0 && t / sweep < 1.0).then_some(t / sweep)
+        });
         let margin = (1..16)
-            .map(|k| {
-                let d = at(k as f64 / 16.0, sweep);
+            .map(|k| k as f64 / 16.0)
+            .chain(toward)
+            .map(|t| {
+                let d = at(t, sweep);
                 support(x, d) - new_arc.support(d).0
             })
             .fold(f64::NEG_INFINITY, f64::max);

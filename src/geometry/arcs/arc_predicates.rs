@@ -80,7 +80,7 @@ pub(crate) fn arc_depth(
                 _ => 0.0,
             }
         }
-        ArcContact::OneEnd { end, after, before } => endpoint_depth(arc, end, after, before, centre, radius),
+        ArcContact::OneEnd { end, after, before } => endpoint_depth(arc, end, after, before, centre, radius, sites),
     };
     SegmentDepth::of(fault::perturb(depth))
 }
@@ -92,7 +92,15 @@ pub(crate) fn arc_depth(
 const NEAR_TIE: f64 = 1e-6;
 
 /// [`arc_depth`] for a vertex with the arc's endpoint `end` among its sites.
-fn endpoint_depth(arc: &CircularArc, end: Point, after: Option<Site>, before: Option<Site>, centre: Point, radius: f64) -> f64 {
+fn endpoint_depth(
+    arc: &CircularArc,
+    end: Point,
+    after: Option<Site>,
+    before: Option<Site>,
+    centre: Point,
+    radius: f64,
+    sites: impl FnOnce() -> [Site; 3],
+) -> f64 {
     let (nx, ny) = (centre.x - end.x, centre.y - end.y);
     let n = nx.hypot(ny);
     if let (Some(from), Some(to)) = (after, before) {
@@ -112,26 +120,66 @@ fn endpoint_depth(arc: &CircularArc, end: Point, after: Option<Site>, before: Op
     let tangent = arc.tangent_into(end);
     let along = (tangent.x * nx + tangent.y * ny) / n;
     let size = (along * radius).abs().max(f64::MIN_POSITIVE);
+    // Near a tie the arc leaves `end` nearly along the circle: leaving
+    // into it, it is inside just after `end`; leaving out of it, it still
+    // comes back in (a hair further on, where the two circles meet again)
+    // when it curves toward the vertex more sharply than the circle does,
+    // which the tangent rule below says.
+    let out = |cusp: bool| if tangent_depth(arc, end, nx, ny, radius, cusp) < 0.0 { -size } else { size };
     // With a piece ending at `end` among the vertex's sites, the vertex is
     // on that piece's normal there, on the side the float cross product
     // tells clearly (the vertex is `n` away): the arc enters when it turns
     // from the piece toward that side, exactly. Where the two leave along
     // one line (tangent, or a cusp) the floating-point rules below stand.
+    let mut cusp = false;
     if let Some(piece) = after.or(before).filter(|_| along.abs() <= NEAR_TIE) {
-        let exact = piece_direction(&piece, end).zip(exact_join::tangent_turn(&piece, &Site::Arc(*arc), end)).map(|(d, turn)| {
+        let turn = exact_join::tangent_turn(&piece, &Site::Arc(*arc), end);
+        let exact = piece_direction(&piece, end).zip(turn).map(|(d, turn)| {
             let side: i8 = if d.x * ny - d.y * nx > 0.0 { 1 } else { -1 };
             side * turn
         });
         match exact {
             Some(1) => return -size,
-            Some(-1) => return size,
+            Some(-1) => return out(false),
+            _ => {}
+        }
+        cusp = turn == Some(0) && exact_join::leave_the_same_way(&piece, &Site::Arc(*arc), end) == Some(true);
+    } else if along.abs() <= NEAR_TIE && !same_circle(arc, centre, radius) {
+        // The vertex of `end` and two more points: whether the arc leaves
+        // into their circle, exactly. Near a tie the circle can be huge
+        // (three points nearly in line, its centre 1e16 away), and then
+        // the arc enters it at an angle of rounding size, which the
+        // floating-point tangent cannot tell from running along it.
+        // Likewise with a point and a piece ending there (the circle
+        // through `end` touching the piece at that point). (Not where the
+        // vertex's circle is the arc's own to rounding, a quarter circle
+        // of a rounded bulge beside its other quarter's end: there the
+        // exact sign is the bulge's rounding, which the solvers, working
+        // from the rounded centre, cannot follow; the tie rules stand.)
+        let exact = match sites().into_iter().filter(|&s| s != Site::Point(end)).collect::<Vec<_>>()[..] {
+            [Site::Point(b), Site::Point(c)] => exact_join::leaves_into_circle(arc, end, b, c),
+            [Site::Point(q), piece] | [piece, Site::Point(q)] if piece.has_endpoint(q) => {
+                exact_join::leaves_into_tangent_circle(arc, end, q, &piece)
+            }
+            _ => None,
+        };
+        match exact {
+            Some(1) => return -size,
+            Some(-1) => return out(false),
             _ => {}
         }
     }
-    if along.abs() > 1e-12 {
+    if along > 1e-12 {
         return -along * radius.abs().max(f64::MIN_POSITIVE);
     }
-    tangent_depth(arc, end, nx, ny, radius)
+    if along < -1e-12 {
+        // leaving out of the circle clearly: in conflict only where the
+        // arc comes back into it further on, clearly (the circles' second
+        // meeting within the arc's span)
+        let back = arc.distance(centre) - radius;
+        return if back < -1e-9 * (radius + arc.radius()) { back } else { -along * radius.abs().max(f64::MIN_POSITIVE) };
+    }
+    tangent_depth(arc, end, nx, ny, radius, cusp)
 }
 
 /// Whether the arc leaving `end` turns strictly into the sector swept
@@ -145,17 +193,37 @@ fn exact_sector(from: &Site, to: &Site, arc: &CircularArc, end: Point) -> Option
     Some(if turn(from, to)? > 0 { after_from && before_to } else { after_from || before_to })
 }
 
+/// Whether the circle of a vertex (`centre`, `radius`) is the arc's own
+/// to within 1e-9 of its radius.
+fn same_circle(arc: &CircularArc, centre: Point, radius: f64) -> bool {
+    let tolerance = 1e-9 * arc.radius();
+    (radius - arc.radius()).abs() <= tolerance && arc.centre().distance(centre) <= tolerance
+}
+
 /// [`endpoint_depth`] where the arc leaves `end` along the tangent of the
-/// vertex's circle (`(nx, ny)` from `end` to the vertex).
-fn tangent_depth(arc: &CircularArc, end: Point, nx: f64, ny: f64, radius: f64) -> f64 {
+/// vertex's circle (`(nx, ny)` from `end` to the vertex); `cusp` where a
+/// piece among the vertex's sites leaves `end` along the arc, the same way.
+///
+/// An arc on the vertex's circle itself is a tie, kept out of conflict at
+/// a tangent join (the degenerate configurations of chains were built so),
+/// but in conflict at a cusp: there the vertex is on the normal from the
+/// cusp, where a whole stretch ties, and beside it (along the vertex's
+/// edge that leaves toward the arc) the arc is strictly nearer than any of
+/// the vertex's sites, so a vertex kept would leave that edge cut in its
+/// middle (`exact_join::beyond_centre` decides the cusp the same way where
+/// both of the arc's ends are the vertex's sites).
+fn tangent_depth(arc: &CircularArc, end: Point, nx: f64, ny: f64, radius: f64, cusp: bool) -> f64 {
     // along the circle's tangent: the arc enters when it curves toward the
     // vertex's centre, on a smaller circle
     let (cx, cy) = (arc.centre().x - end.x, arc.centre().y - end.y);
     let towards = cx * nx + cy * ny > 0.0;
     let sharper = arc.radius() < radius;
     let size = (radius - arc.radius()).abs().max(f64::MIN_POSITIVE);
-    if towards && sharper {
-        -size
+    // (at a cusp, the vertex's radius is the arc's to within its solver's
+    // rounding when the tie is exact in the input: within 1e-9, a tie)
+    let on_the_circle = (radius - arc.radius()).abs() <= 1e-9 * arc.radius();
+    if towards && (sharper || cusp && on_the_circle) {
+        -size.max(f64::MIN_POSITIVE)
     } else if towards && arc.radius() == radius {
         0.0
     } else {
@@ -328,12 +396,50 @@ mod tests {
         let at_start = ArcContact::OneEnd { end: p(1.0, 0.0), after: None, before: None };
         assert!(arc_depth(&arc, at_start, p(1.0, 2.0), 2.0, no_sites).depth() < 0.0);
         assert!(arc_depth(&arc, at_start, p(1.0, -2.0), 2.0, no_sites).depth() > 0.0);
+        // (the vertices below, of the start and two more points: the exact
+        // turn is asked, and finds them tangent too)
+        let points = |b: Point, c: Point| move || [Site::Point(p(1.0, 0.0)), Site::Point(b), Site::Point(c)];
         // tangent at the start: centred at (3, 0), radius 2, the arc curves away
-        assert!(arc_depth(&arc, at_start, p(3.0, 0.0), 2.0, no_sites).depth() > 0.0);
+        assert!(arc_depth(&arc, at_start, p(3.0, 0.0), 2.0, points(p(5.0, 0.0), p(3.0, 2.0))).depth() > 0.0);
         // centred at (0.5, 0), radius 0.5: tangent, the arc's circle is larger: misses
-        assert!(arc_depth(&arc, at_start, p(0.5, 0.0), 0.5, no_sites).depth() > 0.0);
+        assert!(arc_depth(&arc, at_start, p(0.5, 0.0), 0.5, points(p(0.0, 0.0), p(0.5, 0.5))).depth() > 0.0);
         // centred at (-1, 0), radius 2: tangent, the arc's circle (radius 1) is sharper: enters
-        assert!(arc_depth(&arc, at_start, p(-1.0, 0.0), 2.0, no_sites).depth() < 0.0);
+        assert!(arc_depth(&arc, at_start, p(-1.0, 0.0), 2.0, points(p(-3.0, 0.0), p(-1.0, 2.0))).depth() < 0.0);
+        // a circle 1e16 across through the start and two points nearly in
+        // line with it: the arc leaves the start up, into it by 1e-16 rad,
+        // which the floating-point tangent sees as along it (and curving
+        // away, out); the exact sign sees it enter
+        let (b, c) = (p(1.0 + 1e-15, 4.0), p(1.0, 8.0));
+        let far = exact_centre_estimate(p(1.0, 0.0), b, c);
+        assert!(far.x < -1e14, "{far:?}");
+        let radius = far.distance(p(1.0, 0.0));
+        assert!(arc_depth(&arc, at_start, far, radius, points(b, c)).depth() < 0.0);
+        let (b, c) = (p(1.0 - 1e-15, 4.0), p(1.0, 8.0));
+        let far = exact_centre_estimate(p(1.0, 0.0), b, c);
+        assert!(far.x > 1e14, "{far:?}");
+        let radius = far.distance(p(1.0, 0.0));
+        assert!(arc_depth(&arc, at_start, far, radius, points(b, c)).depth() < 0.0);
+        // leaving out of it: the arc, curving toward its centre, comes back
+        // in a hair further on where the circle is on the arc's side...
+        let (b, c) = (p(1.0 + 1e-15, -4.0), p(1.0, -8.0));
+        let far = exact_centre_estimate(p(1.0, 0.0), b, c);
+        assert!(far.x < -1e14, "{far:?}");
+        let radius = far.distance(p(1.0, 0.0));
+        assert!(arc_depth(&arc, at_start, far, radius, points(b, c)).depth() < 0.0);
+        // ...and stays out where it is not
+        let (b, c) = (p(1.0 - 1e-15, -4.0), p(1.0, -8.0));
+        let far = exact_centre_estimate(p(1.0, 0.0), b, c);
+        assert!(far.x > 1e14, "{far:?}");
+        let radius = far.distance(p(1.0, 0.0));
+        assert!(arc_depth(&arc, at_start, far, radius, points(b, c)).depth() > 0.0);
+    }
+
+    /// The circumcentre of three points in floating point.
+    fn exact_centre_estimate(a: Point, b: Point, c: Point) -> Point {
+        let (bx, by, cx, cy) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
+        let d = 2.0 * (bx * cy - by * cx);
+        let (lb, lc) = (bx * bx + by * by, cx * cx + cy * cy);
+        p(a.x + (cy * lb - by * lc) / d, a.y + (bx * lc - cx * lb) / d)
     }
 
     #[test]

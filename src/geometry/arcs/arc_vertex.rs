@@ -46,38 +46,71 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     let unit = 2f64.powi(-(size.log2().round() as i32));
     let local = sites.map(|s| shifted(&s, origin, unit));
     let scale = local.iter().map(|s| site_size(s, Point::new(0.0, 0.0))).fold(0.0f64, f64::max);
-    let mut best: Option<(f64, Point, f64)> = None;
     // a piece is touched at an end only where another site of the
     // triple is that point or ends there (`equations_of`)
     let options: [[Option<Touching>; 4]; 3] = std::array::from_fn(|k| {
         let shared = |e: Point| (0..3).any(|j| j != k && (local[j].as_point() == Some(e) || local[j].has_endpoint(e)));
         touchings(&local[k]).map(|t| t.filter(|t| !matches!(*t, Touching::AtEnd(e) if !shared(e))))
     });
-    // a fit to within rounding with every site touched inside or at a
-    // point site is the answer: no other candidate fits better (the
-    // sides inside come first, the most common tangency)
-    'search: for &t0 in options[0].iter().flatten() {
-        for &t1 in options[1].iter().flatten() {
-            for &t2 in options[2].iter().flatten() {
-                let touch = [t0, t1, t2];
-                let Some(equations) = equations_of(&local, touch) else { continue };
-                for (centre, radius) in solve(&equations).into_iter().flatten() {
-                    let Some(score) = fit(&local, touch, centre, radius, scale) else { continue };
-                    if best.map_or(true, |(s, _, _)| score < s) {
-                        best = Some((score, centre, radius));
-                    }
-                    if score < 1e-14 {
-                        break 'search;
-                    }
-                }
-            }
+    // Only where no candidate fits (scores of 10 and more: `fit`) is a
+    // vertex sought far away (`Reach`).
+    let best = match best_candidate(&local, &options, scale, Reach::Near) {
+        Some(near) if near.0 < 10.0 => Some(near),
+        near => {
+            [near, best_candidate(&local, &options, scale, Reach::Far)].into_iter().flatten().min_by(|a, b| a.0.total_cmp(&b.0))
         }
-    }
+    };
     let (score, centre, radius) = best?;
     // a fit to within rounding needs no Newton steps (most of the cost)
     let (centre, radius) = if score.fract() > 1e-14 { polish(&local, centre, radius) } else { (centre, radius) };
     let back = 1.0 / unit;
     Some((Point::new(centre.x * back + origin.x, centre.y * back + origin.y), radius.max(0.0) * back))
+}
+
+/// How far from its sites a vertex is sought. `Near`: where the lines of
+/// solutions are clearly apart from parallel (the vertex within about
+/// 1e12 of the sites' size) and a segment's foot inside it to 1e-9.
+/// `Far`: beyond, where two sites nearly in line (an arc's end a rounding
+/// below the line of a segment, say) put it 1e15 away, a segment's foot
+/// then moving along it with the rounding of the vertex's position. Far
+/// is asked only where nothing near fits: its looser tests would take
+/// the wrong circle where a near one exists.
+#[derive(Clone, Copy, PartialEq)]
+enum Reach {
+    Near,
+    Far,
+}
+
+/// The best fitting `(score, centre, radius)` among the candidates of
+/// every tangency pattern in `options`: a fit to within rounding with
+/// every site touched inside or at a point site is the answer, no other
+/// candidate fits better (the sides inside come first, the most common
+/// tangency).
+fn best_candidate(
+    local: &[Site; 3],
+    options: &[[Option<Touching>; 4]; 3],
+    scale: f64,
+    reach: Reach,
+) -> Option<(f64, Point, f64)> {
+    let mut best: Option<(f64, Point, f64)> = None;
+    for &t0 in options[0].iter().flatten() {
+        for &t1 in options[1].iter().flatten() {
+            for &t2 in options[2].iter().flatten() {
+                let touch = [t0, t1, t2];
+                let Some(equations) = equations_of(local, touch) else { continue };
+                for (centre, radius) in solve(&equations, reach).into_iter().flatten() {
+                    let Some(score) = fit(local, touch, centre, radius, scale, reach) else { continue };
+                    if best.map_or(true, |(s, _, _)| score < s) {
+                        best = Some((score, centre, radius));
+                    }
+                    if score < 1e-14 {
+                        return best;
+                    }
+                }
+            }
+        }
+    }
+    best
 }
 
 /// The vertex of a point `J` and two pieces ending at `J`, one of them at
@@ -228,7 +261,7 @@ impl Equation {
 }
 
 /// The solutions `(centre, radius)` of three equations (at most two).
-fn solve(equations: &[Equation; 3]) -> [Option<(Point, f64)>; 2] {
+fn solve(equations: &[Equation; 3], reach: Reach) -> [Option<(Point, f64)>; 2] {
     let Some(q) = equations.iter().position(Equation::is_circle) else { return [None; 2] };
     let base = equations[q].linear_part();
     // two linear equations: lines as they are, circles minus the base one
@@ -248,7 +281,8 @@ fn solve(equations: &[Equation; 3]) -> [Option<(Point, f64)>; 2] {
     let d = cross3(n1, n2);
     let dd = dot3(d, d);
     let size = dot3(n1, n1).sqrt() * dot3(n2, n2).sqrt();
-    if !(dd > 1e-24 * size * size) {
+    let apart = if reach == Reach::Near { 1e-24 } else { 1e-40 };
+    if !(dd > apart * size * size) {
         return [None; 2];
     }
     // the point of the line nearest the origin
@@ -268,6 +302,11 @@ fn solve(equations: &[Equation; 3]) -> [Option<(Point, f64)>; 2] {
     if qa.abs() <= 1e-14 {
         if qb != 0.0 {
             roots[0] = Some(at(-qc / qb));
+            // the other root, far out along the line (the roots sum to
+            // −qb/qa): sought only far
+            if reach == Reach::Far && qa != 0.0 {
+                roots[1] = Some(at(-qb / qa + qc / qb));
+            }
         }
         return roots;
     }
@@ -292,7 +331,7 @@ fn solve(equations: &[Equation; 3]) -> [Option<(Point, f64)>; 2] {
 /// `touch` says (smaller is better); `None` when it is not one: a negative
 /// radius, a site touched elsewhere than said, or the touching points in
 /// the wrong order.
-fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scale: f64) -> Option<f64> {
+fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scale: f64, reach: Reach) -> Option<f64> {
     if !centre.is_finite() || !radius.is_finite() {
         return None;
     }
@@ -309,8 +348,11 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
                 if sigma * cross < -slack {
                     return None;
                 }
+                // (the foot of a vertex far away moves along the segment by
+                // the rounding of its centre: `slack` along the segment)
                 let t = crate::geometry::site::segment_parameter(a, b, centre);
-                if !(t > -1e-9 && t < 1.0 + 1e-9) {
+                let along = if reach == Reach::Near { 1e-9 } else { 1e-9 + slack / dx.hypot(dy) };
+                if !(t > -along && t < 1.0 + along) {
                     return None;
                 }
             }
@@ -349,8 +391,12 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
     let near = 1e-9 * (scale + radius.abs());
     let touching: [Point; 3] = std::array::from_fn(|k| {
         let [a, b] = sites[k].ends();
-        let end =
-            [a, b].into_iter().find(|&e| plain[k].distance(e) <= near && (0..3).any(|j| j != k && plain[j].distance(e) <= near));
+        // (the nearer end where both are within `near`: a vertex far away,
+        // whose `near` spans the whole piece)
+        let end = [a, b]
+            .into_iter()
+            .filter(|&e| plain[k].distance(e) <= near && (0..3).any(|j| j != k && plain[j].distance(e) <= near))
+            .min_by(|&e, &f| plain[k].distance(e).total_cmp(&plain[k].distance(f)));
         match (sites[k], end) {
             (Site::Segment { .. }, Some(e)) => {
                 let far = if e == a { b } else { a };

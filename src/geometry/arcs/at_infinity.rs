@@ -57,8 +57,12 @@ pub(crate) fn arc_conflict_at_infinity(arc: &CircularArc, d: Point, x: &Site, y:
         return false;
     }
     let along_tie = TIE * (low.abs() + high.abs() + size);
-    // the arc's farthest point inside it, on L strictly between
-    if arc.spans(Point::new(c.x + d.x, c.y + d.y)) {
+    // the arc's farthest point inside it, on L strictly between (whether
+    // `d` is in the span asked at a point far enough along it that `c`'s
+    // rounding does not swallow a small component of `d`: the answer
+    // must not depend on where the input lies)
+    let far = (c.x.abs().max(c.y.abs()) + arc.radius()) * 2f64.powi(40);
+    if arc.spans(Point::new(c.x + far * d.x, c.y + far * d.y)) {
         let top = along(Point::new(c.x + arc.radius() * d.x, c.y + arc.radius() * d.y));
         if low + along_tie < top && top < high - along_tie {
             return true;

@@ -150,6 +150,13 @@ pub(crate) fn tangent_turn(u: &Site, v: &Site, end: Point) -> Option<i8> {
     cross_sign(&leaving(u, end)?, &leaving(v, end)?)
 }
 
+/// Whether the pieces `u` and `v`, both leaving their common endpoint
+/// `end`, leave it on the same side of its normal (exactly; a cusp when
+/// their tangents are also parallel). `None` out of range.
+pub(crate) fn leave_the_same_way(u: &Site, v: &Site, end: Point) -> Option<bool> {
+    Some(dot_sign(&leaving(u, end)?, &leaving(v, end)?)? > 0)
+}
+
 /// The sign of the turn from the piece `u` to the piece `v`, both leaving
 /// their common endpoint `end`, as their directions a hair away from it
 /// see it: by the exact tangents, and where those are exactly parallel by
@@ -219,11 +226,67 @@ pub(crate) fn beyond_centre(arc: &CircularArc, third: &Site) -> Option<i8> {
                 // arc's, in conflict with it, as beyond the centre.
                 let arc_curve = curvature_leaving(&Site::Arc(*arc), shared);
                 let third_curve = curvature_leaving(third, shared);
-                return Some(if arc_curve * third_curve < 0.0 { 1 } else { 0 });
+                return Some(if (arc_curve - third_curve) * arc_curve.signum() > 0.0 { 1 } else { 0 });
             }
             Some(n_arc * n_third * turn * toward_middle)
         }
     }
+}
+
+/// Whether `arc`, leaving its endpoint `end`, points into the circle
+/// through `end` and the points `b` and `c` (1), out of it (-1) or along
+/// it (0), exactly: the sign of its tangent there against the direction
+/// to the circle's centre. With `B = b − end`, `C = c − end`, the centre
+/// is `end + (C.y|B|² − B.y|C|², B.x|C|² − C.x|B|²) / 2(B × C)`. `None`
+/// where the three points are collinear, or out of range.
+pub(crate) fn leaves_into_circle(arc: &CircularArc, end: Point, b: Point, c: Point) -> Option<i8> {
+    let tangent = leaving(&Site::Arc(*arc), end)?;
+    let denominator = exact_orientation(end, b, c).sign();
+    if denominator == 0 {
+        return None;
+    }
+    let lift = |q: Point| {
+        let mut out = Expansion::default();
+        out.add_squared_difference(q.x, end.x);
+        out.add_squared_difference(q.y, end.y);
+        out
+    };
+    let (lift_b, lift_c) = (lift(b), lift(c));
+    let along = |lift_1: &Expansion, q1: f64, lift_2: &Expansion, q2: f64, e: f64| {
+        // lift_1 (q2 − e) − lift_2 (q1 − e)
+        let mut out = Expansion::default();
+        out.add_product_with_difference(lift_1, (q2, e));
+        let mut minus = Expansion::default();
+        minus.add_product_with_difference(lift_2, (q1, e));
+        out.minus(&minus)
+    };
+    let ux = along(&lift_b, b.y, &lift_c, c.y, end.y);
+    let uy = along(&lift_c, c.x, &lift_b, b.x, end.x);
+    let toward = Direction::new(ux, uy)?;
+    Some(dot_sign(&tangent, &toward)? * denominator)
+}
+
+/// Whether `arc`, leaving its endpoint `end`, points into the circle
+/// through `end` that touches the segment or arc `piece` at its endpoint
+/// `q` (1), out of it (-1) or along it (0), exactly. With `w = q − end`
+/// and `n` the normal of `piece` at `q`, that circle's centre is
+/// `q + λ n` with `λ = −|w|² / 2 n·w`, so the direction from `end` to it
+/// is `(2 (n·w) w − |w|² n) / 2 n·w`. `None` where `end` is on the
+/// tangent at `q`, or out of range.
+pub(crate) fn leaves_into_tangent_circle(arc: &CircularArc, end: Point, q: Point, piece: &Site) -> Option<i8> {
+    let tangent = leaving(&Site::Arc(*arc), end)?;
+    let along = leaving(piece, q)?;
+    let normal = Direction { x: along.y.negated(), y: along.x.clone() };
+    let w = Direction::between(end, q)?;
+    let nw = normal.x.times(&w.x).plus(&normal.y.times(&w.y));
+    let denominator = nw.sign();
+    if !nw.is_finite() || denominator == 0 {
+        return None;
+    }
+    let ww = w.x.times(&w.x).plus(&w.y.times(&w.y));
+    let two_nw = nw.plus(&nw);
+    let toward = Direction::new(two_nw.times(&w.x).minus(&ww.times(&normal.x)), two_nw.times(&w.y).minus(&ww.times(&normal.y)))?;
+    Some(dot_sign(&tangent, &toward)? * denominator)
 }
 
 /// [`beyond_centre`] for a point `q`: the circle through the arc's ends and
@@ -388,6 +451,103 @@ mod tests {
         // the vertex is the centre
         let segment = Site::Segment { a: p(4.0, 3.0), b: p(4.0, 0.0) };
         assert_eq!(beyond_centre(&right, &segment), Some(0));
+        // a segment leaving the cusp upward too (LibreCAD's c14): it bends
+        // away from the arc as much as the other half circle does
+        let up = Site::Segment { a: p(4.0, 3.0), b: p(4.0, 6.0) };
+        assert_eq!(leave_the_same_way(&up, &Site::Arc(right), p(4.0, 3.0)), Some(true));
+        assert_eq!(beyond_centre(&right, &up), Some(1));
+    }
+
+    /// The circumcentre of `end`, `b` and `c` in floating point.
+    fn circumcentre(end: Point, b: Point, c: Point) -> Point {
+        let (bx, by, cx, cy) = (b.x - end.x, b.y - end.y, c.x - end.x, c.y - end.y);
+        let d = 2.0 * (bx * cy - by * cx);
+        let (lb, lc) = (bx * bx + by * by, cx * cx + cy * cy);
+        p(end.x + (cy * lb - by * lc) / d, end.y + (bx * lc - cx * lb) / d)
+    }
+
+    #[test]
+    fn leaving_into_the_circle_of_points_agrees_with_floating_point_where_it_is_clear() {
+        let mut unit = uniform(0x5851_f42d_4c95_7f2d);
+        let mut clear = 0;
+        for _ in 0..2000 {
+            let (s, e) = (p(unit() * 4.0, unit() * 4.0), p(unit() * 4.0, unit() * 4.0));
+            let arc = CircularArc::from_bulge(s, e, unit() * 4.0 - 2.0).unwrap();
+            let (b, c) = (p(unit() * 8.0 - 2.0, unit() * 8.0 - 2.0), p(unit() * 8.0 - 2.0, unit() * 8.0 - 2.0));
+            for end in [s, e] {
+                let centre = circumcentre(end, b, c);
+                let t = arc.tangent_into(end);
+                let (nx, ny) = (centre.x - end.x, centre.y - end.y);
+                let along = (t.x * nx + t.y * ny) / nx.hypot(ny);
+                if along.abs() > 1e-6 && centre.is_finite() {
+                    clear += 1;
+                    assert_eq!(
+                        leaves_into_circle(&arc, end, b, c),
+                        Some(if along > 0.0 { 1 } else { -1 }),
+                        "{arc:?} {end:?} {b:?} {c:?}"
+                    );
+                }
+            }
+        }
+        assert!(clear > 3500, "{clear}");
+    }
+
+    #[test]
+    fn a_circle_1e16_across_is_entered_at_3e_16() {
+        // LibreCAD's t2.dxf: a half circle's top end 1.8e-15 below the
+        // line of two points beside it (their circle's centre 1.2e16 up);
+        // the arc leaves its top end level, so it points into that circle
+        let end = p(4.0, -1.7763568394002505e-15);
+        let arc = CircularArc::from_bulge(p(4.0, -4.000000000000002), end, 1.0).unwrap();
+        assert_eq!(leaves_into_circle(&arc, end, p(0.0, 0.0), p(15.0, 0.0)), Some(1));
+        // (it leaves toward the circle's centre, at x = 7.5; the half
+        // circle the other way round leaves away from it)
+        let other_way = CircularArc::from_bulge(end, p(4.0, -4.000000000000002), 1.0).unwrap();
+        assert_eq!(leaves_into_circle(&other_way, end, p(0.0, 0.0), p(15.0, 0.0)), Some(-1));
+        // the end an ulp above the line instead: the circle's centre is
+        // 1.2e16 below, still at x = 7.5
+        let up = p(4.0, 1.7763568394002505e-15);
+        let arc = CircularArc::from_bulge(p(4.0, -4.0), up, 1.0).unwrap();
+        assert_eq!(leaves_into_circle(&arc, up, p(0.0, 0.0), p(15.0, 0.0)), Some(1));
+        // exactly level: along the circle's tangent (a line: collinear)
+        let level = CircularArc::from_bulge(p(4.0, -4.0), p(4.0, 0.0), 1.0).unwrap();
+        assert_eq!(leaves_into_circle(&level, p(4.0, 0.0), p(0.0, 0.0), p(15.0, 0.0)), None);
+        // the circle through the end touching a segment at its end (t2's
+        // line into the neighbouring coil's top)
+        let segment = Site::Segment { a: p(11.0, -1.7763568394002505e-15), b: p(15.0, 0.0) };
+        let other = CircularArc::from_bulge(p(4.0, -4.000000000000002), end, 1.0).unwrap();
+        assert_eq!(leaves_into_tangent_circle(&other, end, p(11.0, -1.7763568394002505e-15), &segment), Some(1));
+    }
+
+    #[test]
+    fn leaving_into_a_tangent_circle_agrees_with_floating_point_where_it_is_clear() {
+        let mut unit = uniform(0x2545_f491_4f6c_dd1d);
+        let mut clear = 0;
+        for _ in 0..2000 {
+            let (s, e) = (p(unit() * 4.0, unit() * 4.0), p(unit() * 4.0, unit() * 4.0));
+            let arc = CircularArc::from_bulge(s, e, unit() * 4.0 - 2.0).unwrap();
+            let (q, far) = (p(unit() * 8.0 - 2.0, unit() * 8.0 - 2.0), p(unit() * 8.0 - 2.0, unit() * 8.0 - 2.0));
+            let piece = Site::Segment { a: q, b: far };
+            for end in [s, e] {
+                // the centre q + λ n, n the segment's normal at q
+                let (dx, dy) = (far.x - q.x, far.y - q.y);
+                let (nx, ny) = (-dy, dx);
+                let (wx, wy) = (q.x - end.x, q.y - end.y);
+                let lambda = -(wx * wx + wy * wy) / (2.0 * (nx * wx + ny * wy));
+                let centre = p(q.x + lambda * nx, q.y + lambda * ny);
+                assert!(
+                    (centre.distance(end) - centre.distance(q)).abs() <= 1e-6 * (1.0 + centre.distance(q)) || !centre.is_finite()
+                );
+                let t = arc.tangent_into(end);
+                let (vx, vy) = (centre.x - end.x, centre.y - end.y);
+                let along = (t.x * vx + t.y * vy) / vx.hypot(vy);
+                if along.abs() > 1e-6 && centre.is_finite() {
+                    clear += 1;
+                    assert_eq!(leaves_into_tangent_circle(&arc, end, q, &piece), Some(if along > 0.0 { 1 } else { -1 }));
+                }
+            }
+        }
+        assert!(clear > 3500, "{clear}");
     }
 
     #[test]
