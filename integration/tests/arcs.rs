@@ -733,6 +733,23 @@ fn minimised_regressions() {
             ],
             16.0,
         ),
+        // LibreCAD's alg30.dxf with its circle cut where a line along the
+        // circle's tangent starts (a cusp of the line and the quarter after
+        // the cut): the vertex at the centre of the segment, the quarter's
+        // far end and the other quarter ties with the new quarter (all of
+        // it on the circle), and an edge of it runs into the quarter's
+        // sector (in conflict then); the growth goes on past the centre,
+        // the cone's apex; three arcs of one circle meet at its centre
+        (
+            "a circle in three arcs and a segment along its tangent",
+            vec![
+                arc(p(10.0, 10.0), p(-10.0, 10.0), 1.0),
+                arc(p(-10.0, 10.0), p(0.0, 0.0), q),
+                arc(p(0.0, 0.0), p(10.0, 10.0), q),
+                Piece::Segment(p(0.0, 0.0), p(10.0, 0.0)),
+            ],
+            24.0,
+        ),
     ];
     for (k, (name, pieces, size)) in cases.into_iter().enumerate() {
         check_all_ways(name, &pieces, size, k as u64);

@@ -117,6 +117,9 @@ fn endpoint_depth(
     if !(n > 0.0) {
         return 0.0;
     }
+    // (asked at most once, below)
+    let mut sites = Some(sites);
+    let mut sites = move || sites.take().map(|f| f());
     let tangent = arc.tangent_into(end);
     let along = (tangent.x * nx + tangent.y * ny) / n;
     let size = (along * radius).abs().max(f64::MIN_POSITIVE);
@@ -156,7 +159,7 @@ fn endpoint_depth(
         // of a rounded bulge beside its other quarter's end: there the
         // exact sign is the bulge's rounding, which the solvers, working
         // from the rounded centre, cannot follow; the tie rules stand.)
-        let exact = match sites().into_iter().filter(|&s| s != Site::Point(end)).collect::<Vec<_>>()[..] {
+        let exact = match sites().into_iter().flatten().filter(|&s| s != Site::Point(end)).collect::<Vec<_>>()[..] {
             [Site::Point(b), Site::Point(c)] => exact_join::leaves_into_circle(arc, end, b, c),
             [Site::Point(q), piece] | [piece, Site::Point(q)] if piece.has_endpoint(q) => {
                 exact_join::leaves_into_tangent_circle(arc, end, q, &piece)
@@ -179,7 +182,59 @@ fn endpoint_depth(
         let back = arc.distance(centre) - radius;
         return if back < -1e-9 * (radius + arc.radius()) { back } else { -along * radius.abs().max(f64::MIN_POSITIVE) };
     }
+    if !cusp && same_circle(arc, centre, radius) {
+        // the arc on the vertex's circle (a tie): in conflict where one of
+        // the vertex's edges leaves it toward the arc's inside, which a
+        // vertex kept would leave cut in its middle (a circle's quarter
+        // beside a segment that touches the circle where the quarter
+        // starts: the edge between the segment and the next site runs
+        // inside the quarter's sector)
+        if sites().is_some_and(|sites| an_edge_leaves_into(arc, centre, &sites)) {
+            return -f64::MIN_POSITIVE;
+        }
+    }
     tangent_depth(arc, end, nx, ny, radius, cusp)
+}
+
+/// Whether an edge of the vertex at `centre` (the arc's own centre, its
+/// circle the arc's) with `sites`, counter-clockwise, leaves it strictly
+/// inside the arc's span. The edge between two consecutive sites leaves
+/// toward the middle of the gap between where they touch the circle (to
+/// first order each site is that point, or, an arc on that circle too,
+/// its whole span); gaps of no width (two sites touching at one point)
+/// have no edge leaving through them.
+fn an_edge_leaves_into(arc: &CircularArc, centre: Point, sites: &[Site; 3]) -> bool {
+    let full = 2.0 * std::f64::consts::PI;
+    let angle_of = |q: Point| (q.y - centre.y).atan2(q.x - centre.x);
+    // where a site touches the circle, counter-clockwise: first and last
+    let touching = |s: &Site| match *s {
+        Site::Arc(other) if same_circle(&other, centre, arc.radius()) => {
+            let (first, last) =
+                if other.is_counter_clockwise() { (other.start(), other.end()) } else { (other.end(), other.start()) };
+            (angle_of(first), angle_of(last))
+        }
+        _ => {
+            let a = angle_of(s.nearest_point(centre));
+            (a, a)
+        }
+    };
+    let (start, end) = (arc.start(), arc.end());
+    let near_an_end = |a: f64| {
+        [angle_of(start), angle_of(end)].iter().any(|&e| {
+            let d = (a - e).rem_euclid(full);
+            d.min(full - d) <= 1e-9
+        })
+    };
+    (0..3).any(|k| {
+        let (a, b) = (touching(&sites[k]).1, touching(&sites[(k + 1) % 3]).0);
+        let gap = (b - a).rem_euclid(full);
+        if gap <= 1e-9 || gap >= full - 1e-9 {
+            return false;
+        }
+        let middle = a + 0.5 * gap;
+        let r = arc.radius();
+        !near_an_end(middle) && arc.spans(Point::new(centre.x + r * middle.cos(), centre.y + r * middle.sin()))
+    })
 }
 
 /// Whether the arc leaving `end` turns strictly into the sector swept
@@ -343,8 +398,14 @@ fn side_near_end(arc: &CircularArc, site: &Site, end: Point) -> f64 {
 /// Whether a vertex (`centre`) lies in the arc's cone of influence, the
 /// wedge at its centre between the rays through its endpoints (the arcs'
 /// criterion 2.2); a vertex of both endpoints lies on their bisector, in
-/// the cone when on the side of the arc's middle.
+/// the cone when on the side of the arc's middle. A vertex at the arc's
+/// centre (to within 1e-9 of its radius: a vertex on the arc's circle) is
+/// the cone's apex, in it: its edges may lead into the cone whichever way
+/// the rounding of its position points.
 pub(crate) fn in_cone(arc: &CircularArc, centre: Point) -> bool {
+    if arc.centre().distance(centre) <= 1e-9 * arc.radius() {
+        return true;
+    }
     if fault::active() {
         let c = arc.centre();
         let jiggled = Point::new(c.x + fault::perturb(centre.x - c.x), c.y + fault::perturb(centre.y - c.y));

@@ -36,6 +36,9 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     if let Some(vertex) = tangent_join_vertex(sites) {
         return Some(vertex);
     }
+    if let Some(vertex) = common_centre(sites) {
+        return Some(vertex);
+    }
     // near the origin and of size about 1 (a power of two: exact), so
     // that the tolerances below mean the same at every magnitude
     let origin = local_origin(sites);
@@ -65,6 +68,23 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     let (centre, radius) = if score.fract() > 1e-14 { polish(&local, centre, radius) } else { (centre, radius) };
     let back = 1.0 / unit;
     Some((Point::new(centre.x * back + origin.x, centre.y * back + origin.y), radius.max(0.0) * back))
+}
+
+/// The centre of a circle that two or more of the arcs lie on, where the
+/// third site is as far from it (pieces of one circle, and a point on it or
+/// a segment touching it): every point of the circle is as near, and the
+/// equations of arcs on one circle are one equation, which leaves the
+/// solvers a plane of solutions.
+fn common_centre(sites: &[Site; 3]) -> Option<(Point, f64)> {
+    let arcs: Vec<_> = sites.iter().filter_map(|s| if let Site::Arc(a) = s { Some(*a) } else { None }).collect();
+    let first = arcs.first()?;
+    let (c, r) = (first.centre(), first.radius());
+    let tolerance = 1e-9 * r;
+    let on_circle = |a: &crate::geometry::CircularArc| a.centre().distance(c) <= tolerance && (a.radius() - r).abs() <= tolerance;
+    if arcs.len() < 2 || !arcs.iter().all(on_circle) {
+        return None;
+    }
+    sites.iter().all(|s| (s.distance(c) - r).abs() <= tolerance).then_some((c, r))
 }
 
 /// How far from its sites a vertex is sought. `Near`: where the lines of
