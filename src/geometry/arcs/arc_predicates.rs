@@ -471,36 +471,28 @@ mod tests {
         // which the floating-point tangent sees as along it (and curving
         // away, out); the exact sign sees it enter
         let (b, c) = (p(1.0 + 1e-15, 4.0), p(1.0, 8.0));
-        let far = exact_centre_estimate(p(1.0, 0.0), b, c);
+        let far = crate::geometry::solvers::circumcircle(p(1.0, 0.0), b, c).unwrap().0;
         assert!(far.x < -1e14, "{far:?}");
         let radius = far.distance(p(1.0, 0.0));
         assert!(arc_depth(&arc, at_start, far, radius, points(b, c)).depth() < 0.0);
         let (b, c) = (p(1.0 - 1e-15, 4.0), p(1.0, 8.0));
-        let far = exact_centre_estimate(p(1.0, 0.0), b, c);
+        let far = crate::geometry::solvers::circumcircle(p(1.0, 0.0), b, c).unwrap().0;
         assert!(far.x > 1e14, "{far:?}");
         let radius = far.distance(p(1.0, 0.0));
         assert!(arc_depth(&arc, at_start, far, radius, points(b, c)).depth() < 0.0);
         // leaving out of it: the arc, curving toward its centre, comes back
         // in a hair further on where the circle is on the arc's side...
         let (b, c) = (p(1.0 + 1e-15, -4.0), p(1.0, -8.0));
-        let far = exact_centre_estimate(p(1.0, 0.0), b, c);
+        let far = crate::geometry::solvers::circumcircle(p(1.0, 0.0), b, c).unwrap().0;
         assert!(far.x < -1e14, "{far:?}");
         let radius = far.distance(p(1.0, 0.0));
         assert!(arc_depth(&arc, at_start, far, radius, points(b, c)).depth() < 0.0);
         // ...and stays out where it is not
         let (b, c) = (p(1.0 - 1e-15, -4.0), p(1.0, -8.0));
-        let far = exact_centre_estimate(p(1.0, 0.0), b, c);
+        let far = crate::geometry::solvers::circumcircle(p(1.0, 0.0), b, c).unwrap().0;
         assert!(far.x > 1e14, "{far:?}");
         let radius = far.distance(p(1.0, 0.0));
         assert!(arc_depth(&arc, at_start, far, radius, points(b, c)).depth() > 0.0);
-    }
-
-    /// The circumcentre of three points in floating point.
-    fn exact_centre_estimate(a: Point, b: Point, c: Point) -> Point {
-        let (bx, by, cx, cy) = (b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y);
-        let d = 2.0 * (bx * cy - by * cx);
-        let (lb, lc) = (bx * bx + by * by, cx * cx + cy * cy);
-        p(a.x + (cy * lb - by * lc) / d, a.y + (bx * lc - cx * lb) / d)
     }
 
     #[test]
