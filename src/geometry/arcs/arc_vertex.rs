@@ -60,7 +60,27 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     let best = match best_candidate(&local, &options, scale, Reach::Near) {
         Some(near) if near.0 < 10.0 => Some(near),
         near => {
-            [near, best_candidate(&local, &options, scale, Reach::Far)].into_iter().flatten().min_by(|a, b| a.0.total_cmp(&b.0))
+            let best = [near, best_candidate(&local, &options, scale, Reach::Far)]
+                .into_iter()
+                .flatten()
+                .min_by(|a, b| a.0.total_cmp(&b.0));
+            if !best.is_some_and(|b| b.0 < 10.0) {
+                // nothing fits: an arc's centre, where all three sites are
+                // as far from it as the arc (a point on its circle, an arc
+                // touching that circle at their common end), is a vertex of
+                // all three that the solvers, seeing one circle touch
+                // another where a third site is, do not single out
+                if let Some(vertex) = sites.iter().find_map(|s| match s {
+                    Site::Arc(arc) => {
+                        let (c, r) = (arc.centre(), arc.radius());
+                        sites.iter().all(|t| (t.distance(c) - r).abs() <= 1e-9 * r).then_some((c, r))
+                    }
+                    _ => None,
+                }) {
+                    return Some(vertex);
+                }
+            }
+            best
         }
     };
     let (score, centre, radius) = best?;
