@@ -988,6 +988,33 @@ fn curved_families_with_straight_and_ulp_off_vertices() {
 /// side at the side's end, the arc and the side leave that point the same
 /// way (a cusp), and their edge was taken for the ray of a tangent join.
 /// Found by the offsets' check of their pieces, which refused it.
+/// LibreCAD's blk1 and block2: a rounded rectangle whose corners' bulges
+/// are written with six digits (0.414209 for tan 22.5°), so every join has
+/// a kink of 2e-6 rad. The edge between a side and a corner arc there is
+/// radial to within that, and its points were found by the angle around
+/// the arc's centre, which cannot tell them apart (pieces 1e-5 off their
+/// distance); within 1e-4 rad such an edge is found across the ray.
+#[test]
+fn a_rounded_rectangle_with_bulges_of_six_digits() {
+    let p = Point::new;
+    let b = 0.414209;
+    for (x0, y0) in [(0.0, 0.0), (1e6 + 0.37, -1e6 + 0.81)] {
+        let ring = vec![
+            (p(x0 + 30.0, y0), b),
+            (p(x0 + 35.0, y0 + 5.0), 0.0),
+            (p(x0 + 35.0, y0 + 15.0), b),
+            (p(x0 + 30.0, y0 + 20.0), 0.0),
+            (p(x0, y0 + 20.0), b),
+            (p(x0 - 5.0, y0 + 15.0), 0.0),
+            (p(x0 - 5.0, y0 + 5.0), b),
+            (p(x0, y0), 0.0),
+        ];
+        for ring in [ring.clone(), reverse_ring(&ring)] {
+            check_domain_offsets("rounded, six digits", &[ring], &[-0.5, -2.5, -4.9, 0.5, 3.0], 40.0);
+        }
+    }
+}
+
 #[test]
 fn a_circle_touching_a_side_at_its_end() {
     let p = Point::new;

@@ -358,10 +358,12 @@ impl ConicTrack {
 /// leaving it the other way (a segment along the arc's tangent there, or
 /// an arc whose centre lies on the same line through that endpoint, e.g.
 /// of the same circle), or
-/// within a microradian of it (a join an ulp off straight), the unit
+/// within 1e-4 rad of it (a join an ulp off straight, or a bulge written
+/// with six digits, as DXF files have them: a kink of 2e-6), the unit
 /// direction from the arc's centre through that endpoint: the edge
 /// between them lies along that ray, or beside it, where the angle around
-/// the centre cannot tell its points apart.
+/// the centre cannot tell its points apart (its points are found across
+/// the ray, `across_ray`).
 fn tangent_join(arc: &CircularArc, other: &Site) -> Option<Point> {
     let c = arc.centre();
     let [e0, e1] = [arc.start(), arc.end()];
@@ -398,7 +400,7 @@ fn tangent_join(arc: &CircularArc, other: &Site) -> Option<Point> {
         _ => return None,
     };
     let continues = ahead.x * other_ahead.x + ahead.y * other_ahead.y < 0.0;
-    (length > 0.0 && continues && cross.abs() <= 1e-6 * size).then(|| Point::new(radial.x / length, radial.y / length))
+    (length > 0.0 && continues && cross.abs() <= 1e-4 * size).then(|| Point::new(radial.x / length, radial.y / length))
 }
 
 /// Of samples `from..=to`, the one with the highest clearance (`peak`)
