@@ -192,6 +192,9 @@ pub fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
 
 /// The linestrings of one `MULTILINESTRING Z`, each a list of `[x, y, z]`.
 pub fn multilinestring_z(text: &str) -> Vec<Vec<[f64; 3]>> {
+    if text.trim() == "MULTILINESTRING Z EMPTY" {
+        return Vec::new();
+    }
     let body = text.trim().strip_prefix("MULTILINESTRING Z (").and_then(|t| t.strip_suffix(')')).expect(text);
     body.split("), ")
         .map(|line| {
