@@ -1015,6 +1015,41 @@ fn a_rounded_rectangle_with_bulges_of_six_digits() {
     }
 }
 
+/// LibreCAD's n13 with its circles cut where the lines along their tops
+/// and bottoms start (as the program's branch cutting T-junctions makes
+/// it): where a line leaves a cut circle along its tangent, a cusp beside
+/// a tangent join at one point, the outward offset's walk lost the line's
+/// piece and the loop came out open, each piece at its distance. The
+/// offsets' check now requires closed loops: refused as `Internal`, never
+/// returned open.
+#[test]
+fn an_open_loop_is_refused_not_returned() {
+    let p = Point::new;
+    let q = (std::f64::consts::PI / 8.0).tan();
+    let circle = |cx: f64| vec![(p(cx + 1.5, 0.0), q), (p(cx, 1.5), q), (p(cx - 1.5, 0.0), q), (p(cx, -1.5), q)];
+    let mut b = Builder::new();
+    b.add_bulged_polygon(&[circle(4.5), circle(11.5)]).unwrap();
+    for [s, e] in
+        [[p(3.0, 0.0), p(0.0, 0.0)], [p(16.0, 0.0), p(13.0, 0.0)], [p(4.5, 1.5), p(11.5, 1.5)], [p(4.5, -1.5), p(11.5, -1.5)]]
+    {
+        b.add_segment([s, e]).unwrap();
+    }
+    let d = b.build().unwrap();
+    for r in [1.0, 0.5, -0.5] {
+        match d.offset(r) {
+            Ok(offset) => {
+                for l in &offset.loops {
+                    let n = l.pieces.len();
+                    for k in 0..n {
+                        assert_eq!(l.pieces[k].to(), l.pieces[(k + 1) % n].from(), "at {r}: an open loop returned");
+                    }
+                }
+            }
+            Err(e) => assert_eq!(e.kind(), segvoronoi::ErrorKind::Internal, "at {r}: {e}"),
+        }
+    }
+}
+
 #[test]
 fn a_circle_touching_a_side_at_its_end() {
     let p = Point::new;

@@ -269,45 +269,55 @@ impl Diagram {
     }
 
     /// With arcs among the sites (whose decisions are not certified yet,
-    /// see `geometry::arcs`), every piece of an offset is checked before it
-    /// is returned: both its ends as far from its site as the distance, and
-    /// an arc's on its circle (to 1e-7 of the input's extent, as the build
-    /// checks its vertices). A
-    /// piece that is not is the mark of a wrong decision near an arc (a
-    /// segment's end within rounding of an arc's interior, in real
-    /// drawings); the offset is then refused as `Internal`, naming the arc
-    /// nearest that piece's end, rather than returned wrong.
+    /// see `geometry::arcs`), every loop of an offset is checked before it
+    /// is returned: closed (each piece ends exactly where the next begins)
+    /// and every piece with both its ends as far from its site as the
+    /// distance, and an arc's on its circle (to 1e-7 of the input's extent,
+    /// as the build checks its vertices). A loop that is not is the mark of
+    /// a wrong decision near an arc (a segment's end within rounding of an
+    /// arc's interior, in real drawings); the offset is then refused as
+    /// `Internal`, naming the arc nearest the place, rather than returned
+    /// wrong.
     fn check_pieces_beside_arcs(&self, offset: &Offset, distance: f64) -> Result<(), Error> {
         if self.arc_sites == 0 || crate::geometry::fault::active() {
             return Ok(());
         }
         let r = distance.abs();
         let tolerance = 1e-7 * (self.extent + r);
-        for piece in offset.loops.iter().flat_map(|l| &l.pieces) {
-            let Some(site) = self.site(piece.site()) else { continue };
-            for end in [piece.from(), piece.to()] {
-                // at the distance from its site, and an arc's on its circle
-                let round = match *piece {
-                    OffsetPiece::Arc { centre, radius, .. } => (centre.distance(end) - radius).abs(),
-                    OffsetPiece::Line { .. } => 0.0,
-                };
-                let off = (site.distance(end) - r).abs().max(round);
-                if off <= tolerance {
-                    continue;
+        let refuse = |what: String, end: Point| {
+            let first_arc = self.sites.len() - self.arc_sites;
+            let nearest = (first_arc..self.sites.len())
+                .min_by(|&a, &b| self.sites[a].distance(end).total_cmp(&self.sites[b].distance(end)))
+                .map_or(0, |s| self.arc_input.get(s - first_arc).copied().unwrap_or(0) as usize);
+            Err(Error::new(
+                ErrorKind::Internal,
+                format!(
+                    "offset distance {distance}: {what} at ({}, {}), beside arc {nearest}: a decision near the arcs went \
+                     wrong; please report this input",
+                    end.x, end.y
+                ),
+                vec![nearest],
+            ))
+        };
+        for pieces in offset.loops.iter().map(|l| &l.pieces) {
+            for (k, piece) in pieces.iter().enumerate() {
+                // closed: each piece ends where the next begins
+                let next = &pieces[(k + 1) % pieces.len()];
+                if piece.to() != next.from() {
+                    return refuse("a loop does not close".to_string(), piece.to());
                 }
-                let first_arc = self.sites.len() - self.arc_sites;
-                let nearest = (first_arc..self.sites.len())
-                    .min_by(|&a, &b| self.sites[a].distance(end).total_cmp(&self.sites[b].distance(end)))
-                    .map_or(0, |s| self.arc_input.get(s - first_arc).copied().unwrap_or(0) as usize);
-                return Err(Error::new(
-                    ErrorKind::Internal,
-                    format!(
-                        "offset distance {distance}: a piece ends {off:e} off its distance at ({}, {}), beside arc {nearest}: \
-                         a decision near the arcs went wrong; please report this input",
-                        end.x, end.y
-                    ),
-                    vec![nearest],
-                ));
+                let Some(site) = self.site(piece.site()) else { continue };
+                for end in [piece.from(), piece.to()] {
+                    // at the distance from its site, and an arc's on its circle
+                    let round = match *piece {
+                        OffsetPiece::Arc { centre, radius, .. } => (centre.distance(end) - radius).abs(),
+                        OffsetPiece::Line { .. } => 0.0,
+                    };
+                    let off = (site.distance(end) - r).abs().max(round);
+                    if off > tolerance {
+                        return refuse(format!("a piece ends {off:e} off its distance"), end);
+                    }
+                }
             }
         }
         Ok(())
