@@ -250,7 +250,7 @@ fn exact_sector(from: &Site, to: &Site, arc: &CircularArc, end: Point) -> Option
 
 /// Whether the circle of a vertex (`centre`, `radius`) is the arc's own
 /// to within 1e-9 of its radius.
-fn same_circle(arc: &CircularArc, centre: Point, radius: f64) -> bool {
+pub(crate) fn same_circle(arc: &CircularArc, centre: Point, radius: f64) -> bool {
     let tolerance = 1e-9 * arc.radius();
     (radius - arc.radius()).abs() <= tolerance && arc.centre().distance(centre) <= tolerance
 }

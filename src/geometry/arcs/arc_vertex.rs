@@ -25,6 +25,7 @@
 //! Newton steps on the true distances. Not certified: the arcs' decisions
 //! in `arc_predicates` compare these positions with tolerances.
 
+use super::arc_predicates::same_circle;
 use super::exact_join;
 use crate::geometry::point::Point;
 use crate::geometry::site::Site;
@@ -36,8 +37,10 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     if let Some(vertex) = tangent_join_vertex(sites) {
         return Some(vertex);
     }
-    if let Some(vertex) = common_centre(sites) {
-        return Some(vertex);
+    if arcs_of_one_circle(sites) {
+        if let Some(vertex) = centre_of_an_arc_touching_all(sites) {
+            return Some(vertex);
+        }
     }
     // near the origin and of size about 1 (a power of two: exact), so
     // that the tolerances below mean the same at every magnitude
@@ -70,13 +73,7 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
                 // touching that circle at their common end), is a vertex of
                 // all three that the solvers, seeing one circle touch
                 // another where a third site is, do not single out
-                if let Some(vertex) = sites.iter().find_map(|s| match s {
-                    Site::Arc(arc) => {
-                        let (c, r) = (arc.centre(), arc.radius());
-                        sites.iter().all(|t| (t.distance(c) - r).abs() <= 1e-9 * r).then_some((c, r))
-                    }
-                    _ => None,
-                }) {
+                if let Some(vertex) = centre_of_an_arc_touching_all(sites) {
                     return Some(vertex);
                 }
             }
@@ -90,21 +87,26 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     Some((Point::new(centre.x * back + origin.x, centre.y * back + origin.y), radius.max(0.0) * back))
 }
 
-/// The centre of a circle that two or more of the arcs lie on, where the
-/// third site is as far from it (pieces of one circle, and a point on it or
-/// a segment touching it): every point of the circle is as near, and the
-/// equations of arcs on one circle are one equation, which leaves the
-/// solvers a plane of solutions.
-fn common_centre(sites: &[Site; 3]) -> Option<(Point, f64)> {
+/// Whether two or more of the sites are arcs of one circle: their
+/// equations are then one equation, which leaves the solvers a plane of
+/// solutions (every point of the circle is as near from its centre).
+fn arcs_of_one_circle(sites: &[Site; 3]) -> bool {
     let arcs: Vec<_> = sites.iter().filter_map(|s| if let Site::Arc(a) = s { Some(*a) } else { None }).collect();
-    let first = arcs.first()?;
-    let (c, r) = (first.centre(), first.radius());
-    let tolerance = 1e-9 * r;
-    let on_circle = |a: &crate::geometry::CircularArc| a.centre().distance(c) <= tolerance && (a.radius() - r).abs() <= tolerance;
-    if arcs.len() < 2 || !arcs.iter().all(on_circle) {
-        return None;
-    }
-    sites.iter().all(|s| (s.distance(c) - r).abs() <= tolerance).then_some((c, r))
+    arcs.len() >= 2 && arcs[1..].iter().all(|a| same_circle(a, arcs[0].centre(), arcs[0].radius()))
+}
+
+/// The centre of an arc among the sites where all three are as far from
+/// it as the arc is (a point on its circle, a segment touching it, an arc
+/// on it or touching it at a common end), with that radius: a vertex of
+/// the three.
+fn centre_of_an_arc_touching_all(sites: &[Site; 3]) -> Option<(Point, f64)> {
+    sites.iter().find_map(|s| match s {
+        Site::Arc(arc) => {
+            let (c, r) = (arc.centre(), arc.radius());
+            sites.iter().all(|t| (t.distance(c) - r).abs() <= 1e-9 * r).then_some((c, r))
+        }
+        _ => None,
+    })
 }
 
 /// How far from its sites a vertex is sought. `Near`: where the lines of
