@@ -706,6 +706,19 @@ fn minimised_regressions() {
             ],
             16.0,
         ),
+        // c14 itself: the arc's ends lie exactly inside the rectangle's
+        // sides (split there by the build, as at any input vertex)
+        (
+            "half circle with its ends inside a rectangle's sides",
+            vec![
+                arc(p(8.75, -2.5), p(8.75, 2.5), 1.0),
+                Piece::Segment(p(5.0, 2.5), p(15.0, 2.5)),
+                Piece::Segment(p(15.0, 2.5), p(15.0, -2.5)),
+                Piece::Segment(p(15.0, -2.5), p(5.0, -2.5)),
+                Piece::Segment(p(5.0, -2.5), p(5.0, 2.5)),
+            ],
+            16.0,
+        ),
         // LibreCAD's t2.dxf, a transformer's coils: a half circle whose
         // top end lies 1.8e-15 below the line of the points beside it. The
         // circle of those points is 1e16 across, and the arc leaves its end
