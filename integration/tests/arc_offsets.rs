@@ -1078,3 +1078,76 @@ fn a_circle_touching_a_side_at_its_end() {
     }
     check_domain_offsets("a circle touching a side at its end", &rings, &[-0.5, -2.0, 0.3, 1.0], 20.0);
 }
+
+/// LibreCAD's ed125 and ed83 (power station symbols) with their circles
+/// cut where lines end on them, as the CLI cuts them: the cut arcs' ends
+/// are the lines' ends as written (eight digits), so neighbouring arcs lie
+/// on circles 1e-10 apart and meet at kinks of 1e-10 rad. In ed125 the
+/// cell of a kink's point took both sides of the ring (the arc joining it
+/// saw a tie of 1e-20 at infinity; now an exact turn,
+/// `at_infinity::beside_a_shared_end`) and a loop skipped a quarter of
+/// the circle; in ed83 a vertex was put at the circle's centre for the
+/// three sites in the wrong order, with a line 2 nearer (now the centre
+/// only for sites round it in the order asked). Offsets against 256-chord
+/// builds, the rings both ways round and mirrored.
+#[test]
+fn circles_cut_where_lines_end_on_them() {
+    let p = Point::new;
+    let ed125: (Vec<(Point, f64)>, Vec<[Point; 2]>) = (
+        vec![
+            (p(12.0, 22.0), 0.1000256901668162),
+            (p(11.05844178, 26.65949197), 0.663792257135762),
+            (p(-11.05844177, 26.65949197), 0.10002569024851948),
+            (p(-12.0, 22.0), 0.41421356237309503),
+            (p(0.0, 10.0), 0.41421356237309503),
+        ],
+        vec![[p(0.0, 0.0), p(0.0, 10.0)], [p(-11.05844177, 26.65949197), p(11.05844178, 26.65949197)]],
+    );
+    let ed83: (Vec<(Point, f64)>, Vec<[Point; 2]>) = (
+        vec![
+            (p(5.0, 10.0), 0.41421356237309503),
+            (p(0.0, 15.0), 0.2980619733770786),
+            (p(-4.581438725, 12.002603108), 0.10338726200537364),
+            (p(-5.0, 10.0), 0.41421356237309503),
+            (p(0.0, 5.0), 0.2982166266995688),
+            (p(4.582575695, 8.0), 0.10324371717470382),
+        ],
+        vec![
+            [p(0.0, 12.0), p(-4.581438725, 12.002603108)],
+            [p(-5.0, 10.0), p(-10.0, 10.0)],
+            [p(0.0, 5.0), p(0.0, 0.0)],
+            [p(0.0, 8.0), p(4.582575695, 8.0)],
+            [p(0.0, 15.0), p(0.0, 20.0)],
+        ],
+    );
+    for (name, (ring, lines)) in [("ed125", ed125), ("ed83", ed83)] {
+        for (way, mirrored, reversed) in [("as drawn", false, false), ("mirrored", true, false), ("reversed", false, true)] {
+            let flip = |q: Point| if mirrored { p(-q.x, q.y) } else { q };
+            let mut ring: Ring = ring.iter().map(|&(q, b)| (flip(q), if mirrored { -b } else { b })).collect();
+            if reversed {
+                ring = reverse_ring(&ring);
+            }
+            let build = |ring: &Ring| {
+                let mut b = Builder::new();
+                b.add_bulged_polygon(std::slice::from_ref(ring)).unwrap();
+                for &[s, e] in &lines {
+                    b.add_segment([flip(s), flip(e)]).unwrap();
+                }
+                b.build().unwrap_or_else(|e| panic!("{name} {way}: {e}"))
+            };
+            let d = build(&ring);
+            let chords: Ring = densified_ring(&ring).into_iter().map(|q| (q, 0.0)).collect();
+            let reference = build(&chords);
+            for distance in [1.0, 0.5, -0.5, -2.0] {
+                let what = format!("{name} {way} at {distance}");
+                let offset = d.offset(distance).unwrap_or_else(|e| panic!("{what}: {e}"));
+                for l in &offset.loops {
+                    let n = l.pieces.len();
+                    assert!((0..n).all(|k| l.pieces[k].to() == l.pieces[(k + 1) % n].from()), "{what}: an open loop");
+                }
+                let (area, want) = (offset.area(), reference.offset(distance).unwrap().area());
+                assert!((area - want).abs() <= 1e-3 * want.abs(), "{what}: area {area} against the chords' {want}");
+            }
+        }
+    }
+}

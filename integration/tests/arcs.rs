@@ -763,6 +763,22 @@ fn minimised_regressions() {
             ],
             24.0,
         ),
+        // LibreCAD's ed83 with its circle cut where lines end on it: two
+        // arcs 1e-10 off one circle meet at a line's end, a radial line
+        // leaves the second's far end, and a chord's end is 2 from the
+        // centre. The centre is as far from all three but lies the wrong
+        // way round for the vertex asked (it lies out along the join's
+        // normal); it was taken, not empty
+        (
+            "arcs a rounding off one circle, a radial line and a chord",
+            vec![
+                arc(p(0.0, 15.0), p(-4.581438725, 12.002603108), 0.2980619733770786),
+                arc(p(-4.581438725, 12.002603108), p(-5.0, 10.0), 0.10338726200537364),
+                Piece::Segment(p(-5.0, 10.0), p(-10.0, 10.0)),
+                Piece::Segment(p(0.0, 8.0), p(4.582575695, 8.0)),
+            ],
+            24.0,
+        ),
     ];
     for (k, (name, pieces, size)) in cases.into_iter().enumerate() {
         check_all_ways(name, &pieces, size, k as u64);

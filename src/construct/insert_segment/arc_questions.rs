@@ -76,6 +76,16 @@ impl Construction {
             return arc.is_counter_clockwise();
         }
         let d = self.store.position[v.index()];
+        // the far end of the edge between one of the arc's endpoints and a
+        // piece ending there too
+        for (end, piece) in [(x, y), (y, x)] {
+            if (end == a || end == b) && self.far_end(piece, end).is_some() {
+                let at = self.sites[end.index()];
+                if let Some(answer) = at_infinity::beside_a_shared_end(&arc, d, at, &self.site_geometry(piece)) {
+                    return answer;
+                }
+            }
+        }
         at_infinity::arc_conflict_at_infinity(&arc, d, &self.site_geometry(x), &self.site_geometry(y))
     }
 

@@ -38,7 +38,7 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
         return Some(vertex);
     }
     if arcs_of_one_circle(sites) {
-        if let Some(vertex) = centre_of_an_arc_touching_all(sites) {
+        if let Some(vertex) = centre_of_an_arc_touching_all(sites, true) {
             return Some(vertex);
         }
     }
@@ -73,7 +73,7 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
                 // touching that circle at their common end), is a vertex of
                 // all three that the solvers, seeing one circle touch
                 // another where a third site is, do not single out
-                if let Some(vertex) = centre_of_an_arc_touching_all(sites) {
+                if let Some(vertex) = centre_of_an_arc_touching_all(sites, false) {
                     return Some(vertex);
                 }
             }
@@ -98,15 +98,43 @@ fn arcs_of_one_circle(sites: &[Site; 3]) -> bool {
 /// The centre of an arc among the sites where all three are as far from
 /// it as the arc is (a point on its circle, a segment touching it, an arc
 /// on it or touching it at a common end), with that radius: a vertex of
-/// the three.
-fn centre_of_an_arc_touching_all(sites: &[Site; 3]) -> Option<(Point, f64)> {
+/// the three. `in_order`: only if they touch it counter-clockwise round
+/// in the order asked (`touched_from`). Two arcs a rounding off one
+/// circle, meeting at a join, have the normal there for their bisector; a
+/// third site touching the circle elsewhere is as far from the centre,
+/// but the vertex asked for with the sites the other way round lies out
+/// along that normal, and the centre need not even be empty (LibreCAD's
+/// ed83). Where nothing else fits, the order is not asked: at a cusp of
+/// two arcs whose stretch from the centre to the cusp ties them, the
+/// centre holds two vertices, one of them with the sites in either order
+/// (Chair-sofa-V).
+fn centre_of_an_arc_touching_all(sites: &[Site; 3], in_order: bool) -> Option<(Point, f64)> {
     sites.iter().find_map(|s| match s {
         Site::Arc(arc) => {
             let (c, r) = (arc.centre(), arc.radius());
-            sites.iter().all(|t| (t.distance(c) - r).abs() <= 1e-9 * r).then_some((c, r))
+            let touching = sites.iter().all(|t| (t.distance(c) - r).abs() <= 1e-9 * r);
+            (touching && !(in_order && clockwise_around(sites, c, r))).then_some((c, r))
         }
         _ => None,
     })
+}
+
+/// Whether the sites, each touching the circle of centre `c` and radius
+/// `r`, touch it clockwise round in the order given (`touched_from`).
+fn clockwise_around(sites: &[Site; 3], c: Point, r: f64) -> bool {
+    let [p, q, w] = sites.each_ref().map(|s| touched_from(s, c));
+    orientation_value(p, q, w) < -1e-9 * r * r
+}
+
+/// Where a vertex at `c` touches `site`: its nearest point, but for an arc
+/// centred at `c` (within rounding), every point of which is as near, its
+/// middle (arcs of one circle do not overlap, so their middles keep their
+/// order round it).
+fn touched_from(site: &Site, c: Point) -> Point {
+    match site {
+        Site::Arc(arc) if arc.centre().distance(c) <= 1e-9 * arc.radius() => arc.midpoint(),
+        _ => site.nearest_point(c),
+    }
 }
 
 /// How far from its sites a vertex is sought. `Near`: where the lines of
@@ -429,7 +457,7 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
     // end's point site or another piece ending there), the piece is taken
     // a hair along itself from there: the limit order of the touching
     // points as the vertex moves off the separator to its side
-    let plain = sites.map(|s| s.nearest_point(centre));
+    let plain = sites.map(|s| touched_from(&s, centre));
     let near = 1e-9 * (scale + radius.abs());
     let touching: [Point; 3] = std::array::from_fn(|k| {
         let [a, b] = sites[k].ends();

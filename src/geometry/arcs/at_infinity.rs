@@ -15,6 +15,7 @@
 //! every far point off `L`'s normal through that end).
 
 use crate::geometry::arc::CircularArc;
+use crate::geometry::arcs::exact_join;
 use crate::geometry::point::Point;
 use crate::geometry::site::Site;
 
@@ -81,6 +82,47 @@ pub(crate) fn arc_conflict_at_infinity(arc: &CircularArc, d: Point, x: &Site, y:
         let toward = t.x * u.x + t.y * u.y;
         ((s - low).abs() <= along_tie && toward > 0.0) || ((s - high).abs() <= along_tie && toward < 0.0)
     })
+}
+
+/// Whether the arc conflicts with the vertex at infinity of the edge
+/// between one of its endpoints `end` and a `piece` (segment or arc)
+/// ending there too: the far end of `piece`'s normal at `end`, in
+/// direction `d`. Both reach `end · d` along `d`, and so does the arc's
+/// circle, through `end`; the arc reaches further exactly when `d` lies in
+/// its span, on the side of its own normal at `end` that it leaves
+/// toward: `d · t > 0`, `t` its tangent leaving `end`, or `(d⊥-sign) ×
+/// (piece's tangent × t)`, an exact sign (`exact_join`). Where the pieces
+/// meet an ulp off tangent, floating point sees a tie of 1e-20 there and
+/// kept the end's cell on both sides of the join. `None` (the caller
+/// decides as before) where `d` is not near the arc's normal at `end`
+/// (within a fraction of its sweep, not a near tie then), where the
+/// pieces are exactly tangent (curvatures decide), or out of range.
+pub(crate) fn beside_a_shared_end(arc: &CircularArc, d: Point, end: Point, piece: &Site) -> Option<bool> {
+    let norm = d.x.hypot(d.y);
+    if !(norm.is_finite() && norm > 0.0) {
+        return None;
+    }
+    let d = Point::new(d.x / norm, d.y / norm);
+    let (c, r) = (arc.centre(), arc.radius());
+    let n = Point::new((end.x - c.x) / r, (end.y - c.y) / r);
+    let off_normal = (d.x * n.y - d.y * n.x).abs().asin();
+    if !(d.x * n.x + d.y * n.y > 0.0 && off_normal < (arc.sweep().abs() / 2.0).min(0.1)) {
+        return None;
+    }
+    let along_piece = exact_join::leaving(piece, end)?;
+    let along_arc = exact_join::leaving(&Site::Arc(*arc), end)?;
+    // `d` is the piece's tangent turned a quarter, one way or the other:
+    // which one is clear in floating point (they are perpendicular)
+    let t = along_piece.approximate();
+    let quarter = t.x * d.y - t.y * d.x;
+    if quarter.abs() < 0.5 * t.x.hypot(t.y) {
+        return None;
+    }
+    let turn = exact_join::cross_sign(&along_piece, &along_arc)?;
+    match turn * if quarter > 0.0 { 1 } else { -1 } {
+        0 => None,
+        s => Some(s > 0),
+    }
 }
 
 /// Where along `L` (counter-clockwise) the site touches it: the least and

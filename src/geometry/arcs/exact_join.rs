@@ -33,6 +33,11 @@ impl Direction {
         (x.is_finite() && y.is_finite() && (x.sign() != 0 || y.sign() != 0)).then_some(Direction { x, y })
     }
 
+    /// The direction rounded to floating point (its scale arbitrary).
+    pub(crate) fn approximate(&self) -> Point {
+        Point::new(self.x.approximate(), self.y.approximate())
+    }
+
     /// `to − from`.
     fn between(from: Point, to: Point) -> Option<Direction> {
         Direction::new(Expansion::difference(to.x, from.x), Expansion::difference(to.y, from.y))
