@@ -779,6 +779,21 @@ fn minimised_regressions() {
             ],
             24.0,
         ),
+        // LibreCAD's Logic-NAND: a half circle from a segment's end back to
+        // a quarter's start, on the quarter's radial line. The vertex of
+        // the two ends and the quarter (the half circle's centre) is a
+        // double root of the quarter touched inside; placed 5e-8 off, it
+        // fell outside the half circle's cone and its growth stopped there,
+        // keeping a vertex the half circle is 2 nearer
+        (
+            "half circle from a segment's end to a quarter's start",
+            vec![
+                Piece::Segment(p(35.0, 5.0), p(40.0, 5.0)),
+                arc(p(30.0, 5.0), p(20.0, 15.0), 0.41421356237309503),
+                arc(p(35.0, 5.0), p(30.0, 5.0), 1.0),
+            ],
+            24.0,
+        ),
     ];
     for (k, (name, pieces, size)) in cases.into_iter().enumerate() {
         check_all_ways(name, &pieces, size, k as u64);

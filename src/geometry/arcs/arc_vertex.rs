@@ -162,25 +162,62 @@ fn best_candidate(
     scale: f64,
     reach: Reach,
 ) -> Option<(f64, Point, f64)> {
-    let mut best: Option<(f64, Point, f64)> = None;
-    for &t0 in options[0].iter().flatten() {
+    let mut best: Option<(f64, Point, f64, [Touching; 3])> = None;
+    'patterns: for &t0 in options[0].iter().flatten() {
         for &t1 in options[1].iter().flatten() {
             for &t2 in options[2].iter().flatten() {
                 let touch = [t0, t1, t2];
                 let Some(equations) = equations_of(local, touch) else { continue };
                 for (centre, radius) in solve(&equations, reach).into_iter().flatten() {
                     let Some(score) = fit(local, touch, centre, radius, scale, reach) else { continue };
-                    if best.map_or(true, |(s, _, _)| score < s) {
-                        best = Some((score, centre, radius));
+                    if best.map_or(true, |(s, ..)| score < s) {
+                        best = Some((score, centre, radius, touch));
                     }
                     if score < 1e-14 {
-                        return best;
+                        break 'patterns;
                     }
                 }
             }
         }
     }
-    best
+    let (score, centre, radius, touch) = best?;
+    Some(at_an_end_point(local, touch, (centre, radius), options, scale, reach).unwrap_or((score, centre, radius)))
+}
+
+/// The same vertex solved again where `touch` has an arc touched inside
+/// a hair from an end whose point is another of the three sites: there
+/// the circle's distances to the arc and to the point agree to second
+/// order, a double root the solvers place only to the square root of the
+/// rounding (LibreCAD's Logic-NAND: 5e-8 off, which put a vertex outside
+/// the new arc's cone and stopped its growth). With the end's separator
+/// for the arc's equation (`Touching::AtEnd`) it is a simple root: the
+/// solution of that pattern within 1e-6 of the first, if one fits.
+fn at_an_end_point(
+    local: &[Site; 3],
+    touch: [Touching; 3],
+    (centre, radius): (Point, f64),
+    options: &[[Option<Touching>; 4]; 3],
+    scale: f64,
+    reach: Reach,
+) -> Option<(f64, Point, f64)> {
+    let near = 1e-6 * (scale + radius.abs());
+    (0..3).find_map(|k| {
+        let (Site::Arc(arc), Touching::Inside(_)) = (local[k], touch[k]) else { return None };
+        let q = arc.nearest_point(centre);
+        let end = [arc.start(), arc.end()]
+            .into_iter()
+            .find(|&e| q.distance(e) <= near && local.iter().any(|s| s.as_point() == Some(e)))?;
+        if !options[k].contains(&Some(Touching::AtEnd(end))) {
+            return None;
+        }
+        let mut again = touch;
+        again[k] = Touching::AtEnd(end);
+        let equations = equations_of(local, again)?;
+        solve(&equations, reach).into_iter().flatten().filter(|&(c, _)| c.distance(centre) <= near).find_map(|(c, r)| {
+            let score = fit(local, again, c, r, scale, reach)?;
+            (score < 1.0).then_some((score, c, r))
+        })
+    })
 }
 
 /// The vertex of a point `J` and two pieces ending at `J`, one of them at
