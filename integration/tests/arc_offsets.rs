@@ -1151,3 +1151,33 @@ fn circles_cut_where_lines_end_on_them() {
         }
     }
 }
+
+/// An arc with its chord (LibreCAD's kin10: a hatch line cuts a quarter
+/// circle, and the CLI cuts the arc at the line's ends): the edge between
+/// the arc and the chord has both ends on the circle, and which side of
+/// the circle it lies on was read from their rounding. Taken outside, the
+/// offsets' track of that edge ran off to 1e14, and a loop of two pieces
+/// far from both sites came back (refused by the offsets' check). Now the
+/// side is the chord's. As cut in kin10 (its arcs 1e-9 off one circle),
+/// and plain lenses, mirrored and reversed.
+#[test]
+fn an_arc_and_its_chord() {
+    let p = Point::new;
+    let arc = |s: Point, e: Point, b: f64| Piece::Arc(CircularArc::from_bulge(s, e, b).unwrap());
+    let kin10 = vec![
+        Piece::Segment(p(0.0, 0.0), p(4.0, 0.0)),
+        Piece::Segment(p(14.1711311583, 0.559442976), p(14.440557024, 0.828868841)),
+        arc(p(15.0, 1.0), p(14.440557024, 0.828868841), 0.14952810498430108),
+        arc(p(14.440557024, 0.828868841), p(14.1711311583, 0.559442976), 0.09613681550557843),
+    ];
+    check_all("kin10's cut quarter", &kin10, &[1.0, 0.3, 0.05], 16.0);
+    for (name, bulge) in [("shallow lens", 0.1), ("half disc", 1.0), ("deep lens", 2.5), ("clockwise lens", -0.4)] {
+        for (way, s, e) in
+            [("", p(3.0, 1.0), p(1.0, 2.0)), (" reversed", p(1.0, 2.0), p(3.0, 1.0)), (" mirrored", p(-3.0, 1.0), p(-1.0, 2.0))]
+        {
+            let bulge = if way == " mirrored" { -bulge } else { bulge };
+            let pieces = vec![arc(s, e, bulge), Piece::Segment(s, e)];
+            check_all(&format!("{name}{way}"), &pieces, &[1.0, 0.2, 0.01], 4.0);
+        }
+    }
+}

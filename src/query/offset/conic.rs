@@ -103,7 +103,17 @@ impl ConicTrack {
         let convex = match ends {
             [Some(p), Some(q)] => {
                 let off = |v: Point| c.distance(v) - arc.radius();
-                if off(p).abs() >= off(q).abs() {
+                let middle = Point::new((p.x + q.x) / 2.0 - c.x, (p.y + q.y) / 2.0 - c.y);
+                let length = middle.x.hypot(middle.y);
+                if off(p).abs().max(off(q).abs()) <= 1e-9 * arc.radius() && length > 1e-9 * arc.radius() {
+                    // both ends on the circle (an edge between an arc and
+                    // its chord): their sides are rounding; the edge lies
+                    // on the other site's side, beside the circle between
+                    // them
+                    let k = arc.radius() / length;
+                    let between = Point::new(c.x + k * middle.x, c.y + k * middle.y);
+                    off(other.nearest_point(between)) > 0.0
+                } else if off(p).abs() >= off(q).abs() {
                     off(p) > 0.0
                 } else {
                     off(q) > 0.0
