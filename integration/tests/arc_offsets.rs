@@ -1016,36 +1016,57 @@ fn a_rounded_rectangle_with_bulges_of_six_digits() {
 }
 
 /// LibreCAD's n13 with its circles cut where the lines along their tops
-/// and bottoms start (as the program's branch cutting T-junctions makes
-/// it): where a line leaves a cut circle along its tangent, a cusp beside
-/// a tangent join at one point, the outward offset's walk lost the line's
-/// piece and the loop came out open, each piece at its distance. The
-/// offsets' check now requires closed loops: refused as `Internal`, never
-/// returned open.
+/// and bottoms start (as the CLI cuts arcs where an entity ends on them):
+/// where a line leaves a cut circle along its tangent, a cusp beside a
+/// tangent join at one point. The line's direction from the circle's top
+/// runs along the ring's tangent there, and the domain took the line for
+/// part of the boundary: the separators at its ends were located there,
+/// the outward offset's walk skipped them, and the loop came out open,
+/// each piece at its distance (refused since the offsets' check requires
+/// closed loops). Now the line lies outside, as the circle curves away
+/// from it (`curved_corner_holds`). Against 256-chord builds, and mirrored.
 #[test]
-fn an_open_loop_is_refused_not_returned() {
+fn lines_along_the_tangents_of_two_circles() {
     let p = Point::new;
     let q = (std::f64::consts::PI / 8.0).tan();
-    let circle = |cx: f64| vec![(p(cx + 1.5, 0.0), q), (p(cx, 1.5), q), (p(cx - 1.5, 0.0), q), (p(cx, -1.5), q)];
-    let mut b = Builder::new();
-    b.add_bulged_polygon(&[circle(4.5), circle(11.5)]).unwrap();
-    for [s, e] in
-        [[p(3.0, 0.0), p(0.0, 0.0)], [p(16.0, 0.0), p(13.0, 0.0)], [p(4.5, 1.5), p(11.5, 1.5)], [p(4.5, -1.5), p(11.5, -1.5)]]
-    {
-        b.add_segment([s, e]).unwrap();
-    }
-    let d = b.build().unwrap();
-    for r in [1.0, 0.5, -0.5] {
-        match d.offset(r) {
-            Ok(offset) => {
-                for l in &offset.loops {
-                    let n = l.pieces.len();
-                    for k in 0..n {
-                        assert_eq!(l.pieces[k].to(), l.pieces[(k + 1) % n].from(), "at {r}: an open loop returned");
-                    }
-                }
+    for sign in [1.0, -1.0] {
+        let at = |x: f64, y: f64| p(sign * x, y);
+        let circle = |cx: f64| {
+            let ring = vec![(at(cx + 1.5, 0.0), q), (at(cx, 1.5), q), (at(cx - 1.5, 0.0), q), (at(cx, -1.5), q)];
+            if sign < 0.0 {
+                reverse_ring(&ring.iter().map(|&(v, b)| (v, -b)).collect())
+            } else {
+                ring
             }
-            Err(e) => assert_eq!(e.kind(), segvoronoi::ErrorKind::Internal, "at {r}: {e}"),
+        };
+        let build = |rings: &[Ring]| {
+            let mut b = Builder::new();
+            b.add_bulged_polygon(rings).unwrap();
+            for [s, e] in [
+                [at(3.0, 0.0), at(0.0, 0.0)],
+                [at(16.0, 0.0), at(13.0, 0.0)],
+                [at(4.5, 1.5), at(11.5, 1.5)],
+                [at(4.5, -1.5), at(11.5, -1.5)],
+            ] {
+                b.add_segment([s, e]).unwrap();
+            }
+            b.build().unwrap()
+        };
+        let rings = [circle(4.5), circle(11.5)];
+        let d = build(&rings);
+        let chords: Vec<Ring> = rings.iter().map(|r| densified_ring(r).into_iter().map(|v| (v, 0.0)).collect()).collect();
+        let reference = build(&chords);
+        for r in [1.0, 0.5, -0.5] {
+            let what = format!("mirrored {} at {r}", sign < 0.0);
+            let offset = d.offset(r).unwrap_or_else(|e| panic!("{what}: {e}"));
+            for l in &offset.loops {
+                let n = l.pieces.len();
+                assert!((0..n).all(|k| l.pieces[k].to() == l.pieces[(k + 1) % n].from()), "{what}: an open loop");
+            }
+            let want = reference.offset(r).unwrap();
+            assert_eq!(offset.loops.len(), want.loops.len(), "{what}: loops");
+            let (area, want) = (offset.area(), want.area());
+            assert!((area - want).abs() <= 1e-3 * want.abs(), "{what}: area {area} against the chords' {want}");
         }
     }
 }

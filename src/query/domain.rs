@@ -33,6 +33,7 @@
 
 use crate::construct::polygon_input::RingInput;
 use crate::diagram::{Diagram, EdgeId, SiteId, VertexId};
+use crate::geometry::arcs::exact_join;
 use crate::geometry::predicates::Orientation;
 use crate::geometry::{Point, Site};
 use crate::query::EdgeEnd;
@@ -759,12 +760,11 @@ impl Diagram {
         let n = ring.corners.len();
         let mut inside = false;
         for k in (0..n).filter(|&k| self.point_of(ring.corners[k]) == p) {
-            let (before, after) = if ring.curved {
-                // where the pieces leave the corner (along an arc's tangent)
-                (self.toward(ring.segments[(k + n - 1) % n], ring.corners[k]), self.toward(ring.segments[k], ring.corners[k]))
-            } else {
-                (self.point_of(ring.corners[(k + n - 1) % n]), self.point_of(ring.corners[(k + 1) % n]))
-            };
+            if ring.curved {
+                inside ^= self.curved_corner_holds(ring, k, p, q)?;
+                continue;
+            }
+            let (before, after) = (self.point_of(ring.corners[(k + n - 1) % n]), self.point_of(ring.corners[(k + 1) % n]));
             // the region's wedge runs counter-clockwise from `from` to `to`
             let (from, to) = if self.is_counter_clockwise(ring) { (after, before) } else { (before, after) };
             let (turn_from, turn_to) = (self.turn(p, from, q), self.turn(p, q, to));
@@ -781,6 +781,33 @@ impl Diagram {
             inside ^= holds;
         }
         Some(inside)
+    }
+
+    /// Whether the region of the curved `ring` holds the direction from its
+    /// corner `k` (at `p`) toward `q`, as the pieces a hair from the corner
+    /// see it: by exact turns, and where the direction runs along a piece's
+    /// tangent by the piece's curve (`exact_join::turn_between`; a segment
+    /// from a circle's top along its tangent lies outside it). `None` where
+    /// even that ties (the segment along a segment of the ring: an overlap)
+    /// or out of range.
+    fn curved_corner_holds(&self, ring: &Ring, k: usize, p: Point, q: Point) -> Option<bool> {
+        let n = ring.corners.len();
+        let piece = |s: SiteId| self.sites[s.index()];
+        let (before, after) = (piece(ring.segments[(k + n - 1) % n]), piece(ring.segments[k]));
+        // the region's wedge runs counter-clockwise from `from` to `to`
+        let (from, to) = if self.is_counter_clockwise(ring) { (after, before) } else { (before, after) };
+        let query = Site::Segment { a: p, b: q };
+        let turn = |u: &Site, v: &Site| exact_join::turn_between(u, v, p);
+        let (turn_from, turn_to) = (turn(&from, &query)?, turn(&query, &to)?);
+        if turn_from == 0 || turn_to == 0 {
+            return None;
+        }
+        Some(if turn(&from, &to)? > 0 {
+            turn_from > 0 && turn_to > 0
+        } else {
+            // a reflex wedge: all but the convex one the other way
+            turn_from > 0 || turn_to > 0
+        })
     }
 
     /// The even-odd location of `p` against all rings.
