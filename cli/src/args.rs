@@ -36,7 +36,10 @@ INPUT is read by its extension, else by its first characters:
     the extrusion direction (0, 0, -1) are mirrored in x as DXF's object
     coordinates say; other directions are refused. Endpoints within 1e-9
     of the drawing's extent of one met before are moved onto it, so that
-    chains whose rounded ends do not quite meet stay closed. Closed
+    chains whose rounded ends do not quite meet stay closed; an arc with
+    an entity's end as near its inside is cut there (a LINE ending on a
+    CIRCLE: the two then meet exactly; a note on standard error counts
+    the cuts). Closed
     polylines (with or without bulges), CIRCLEs, and LINEs and ARCs that
     close up are polygon rings (the domain, even-odd); open polylines and
     the other LINEs and ARCs are obstacles; other entities (text,

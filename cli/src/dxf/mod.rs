@@ -3,13 +3,15 @@
 //!
 //! The file is parsed by the `dxf` crate (ASCII or binary, R12 to 2018);
 //! here its entities become the shapes WKT input becomes (`entities`,
-//! `shapes`), their endpoints snapped together first (`snap`), and LINEs
-//! and ARCs joined into rings (`rings`).
+//! `shapes`), their endpoints snapped together first (`snap`), arcs cut
+//! where another entity ends on them (`t_junctions`), and LINEs and ARCs
+//! joined into rings (`rings`).
 
 mod entities;
 mod rings;
 mod shapes;
 mod snap;
+mod t_junctions;
 mod transform;
 pub mod write;
 
@@ -44,6 +46,7 @@ pub fn read(bytes: &[u8]) -> Result<Part, String> {
     let collected = entities::collect(&drawing)?;
     let mut items = collected.items;
     let moved = snap::snap(&mut items);
+    let cuts = t_junctions::split_arcs_at_vertices(&mut items);
     let made = shapes::shapes(&items)?;
     let mut notes = made.notes;
     if !collected.left_out.is_empty() {
@@ -54,6 +57,13 @@ pub fn read(bytes: &[u8]) -> Result<Part, String> {
         notes.push(format!(
             "moved {moved} endpoint{} onto an endpoint within {:e} of the drawing's extent (ends that did not quite meet)",
             if moved == 1 { "" } else { "s" },
+            snap::SNAP
+        ));
+    }
+    if cuts > 0 {
+        notes.push(format!(
+            "cut arcs at {cuts} vertex{} lying on them within {:e} of the drawing's extent (entities ending on an arc)",
+            if cuts == 1 { "" } else { "es" },
             snap::SNAP
         ));
     }

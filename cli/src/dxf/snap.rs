@@ -37,7 +37,7 @@ pub fn snap(items: &mut [Item]) -> usize {
 }
 
 /// The diagonal of the box of every finite vertex (0 without any).
-fn extent(items: &[Item]) -> f64 {
+pub(super) fn extent(items: &[Item]) -> f64 {
     let (mut low, mut high) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     let mut add = |p: &Xy| {
         if p.iter().all(|c| c.is_finite()) {
