@@ -90,6 +90,7 @@ pub(super) fn diagram_with_arcs(
     // purpose: there the topology is what is checked, by `accept`)
     if !crate::geometry::fault::active() {
         vertices_touch_their_arcs(&diagram)?;
+        arc_vertices_are_empty(&diagram)?;
     }
     let mut diagram = diagram;
     if !rings.is_empty() {
@@ -134,6 +135,59 @@ fn vertices_touch_their_arcs(diagram: &Diagram) -> Result<(), Error> {
     Ok(())
 }
 
+/// The other half of that check: no site whose cell borders one of the
+/// three cells of a vertex with an arc among its sites is nearer to it
+/// than its clearance (to the same tolerance). A wrong decision that
+/// keeps a vertex (or places one at the wrong root of its sites) leaves
+/// it touching its three sites with another nearer, and that site's cell
+/// then borders theirs: LibreCAD's ed83 with its circle cut, a vertex at
+/// the circle's centre with a chord's end 2 nearer, passed the touching
+/// check and was answered. A site beyond the neighbouring cells could
+/// only be nearer if those cells were wrong too.
+fn arc_vertices_are_empty(diagram: &Diagram) -> Result<(), Error> {
+    let first_arc = diagram.sites.len() - diagram.arc_sites;
+    let n = diagram.sites.len();
+    let mut neighbours: Vec<Vec<SiteId>> = vec![Vec::new(); n];
+    for e in diagram.edges() {
+        let [a, b] = e.sites;
+        if a.index() < n && b.index() < n {
+            neighbours[a.index()].push(b);
+            neighbours[b.index()].push(a);
+        }
+    }
+    for list in &mut neighbours {
+        list.sort_unstable();
+        list.dedup();
+    }
+    for v in diagram.vertices() {
+        if !v.sites.iter().any(|s| s.index() >= first_arc) || !v.clearance.is_finite() {
+            continue;
+        }
+        let tolerance = 1e-7 * (diagram.extent + v.clearance);
+        let nearer = v
+            .sites
+            .iter()
+            .filter(|s| s.index() < n)
+            .flat_map(|s| &neighbours[s.index()])
+            .find(|&&t| !v.sites.contains(&t) && diagram.sites[t.index()].distance(v.position) < v.clearance - tolerance);
+        if let Some(&t) = nearer {
+            let arc = v.sites.iter().find(|s| s.index() >= first_arc).map_or(0, |s| s.index() - first_arc);
+            let arc = diagram.arc_input.get(arc).copied().unwrap_or(0) as usize;
+            let by = v.clearance - diagram.sites[t.index()].distance(v.position);
+            return Err(Error::new(
+                ErrorKind::Internal,
+                format!(
+                    "construction could not complete: a vertex of arc {arc} at ({}, {}) has another site {by:e} nearer \
+                     than its own; please report this input",
+                    v.position.x, v.position.y
+                ),
+                vec![arc],
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// Inserts the arcs into the construction of the points and segments;
 /// arc `k`'s start and end are the construction's points
 /// `first_end + 2k` and `first_end + 2k + 1`. Returns the arcs' sites for
@@ -166,4 +220,29 @@ pub(super) fn insert_arcs(
         sites.push(ArcSite { input: k, internal, arc: *arc });
     }
     Ok(sites)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Builder;
+
+    /// A vertex of an arc moved out along its edge (as a wrong decision
+    /// leaves one: touching its three sites, another nearer) is caught.
+    #[test]
+    fn a_vertex_with_a_nearer_site_is_refused() {
+        let mut b = Builder::new();
+        b.add_arc(CircularArc::from_bulge([0.0, 0.0], [4.0, 0.0], 1.0).unwrap()).unwrap();
+        b.add_point([2.0, -1.0]).unwrap();
+        b.add_point([2.0, 3.0]).unwrap();
+        let mut diagram = b.build().unwrap();
+        assert!(arc_vertices_are_empty(&diagram).is_ok());
+        let first_arc = diagram.sites.len() - diagram.arc_sites;
+        let v = diagram.vertices().find(|v| v.sites.iter().any(|s| s.index() >= first_arc)).unwrap().id;
+        // three times as far as it is from its sites: its neighbours nearer
+        diagram.store.clearance[v.index()] *= 3.0;
+        let e = arc_vertices_are_empty(&diagram).unwrap_err();
+        assert_eq!(e.kind(), ErrorKind::Internal);
+        assert!(e.to_string().contains("nearer than its own"), "{e}");
+    }
 }
