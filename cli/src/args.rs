@@ -149,7 +149,7 @@ struct Cli {
     #[arg(long, value_name = "OUT", value_parser = file_name)]
     offsets: Option<PathBuf>,
 
-    /// With --offsets OUT.wkt: the exact arcs instead of chords, per D one MULTISURFACE of CURVEPOLYGONs (outer ring, then its holes) whose rings are COMPOUNDCURVEs of linestrings and CIRCULARSTRINGs (start, the middle of the arc, end; a whole circle as two half circles), as PostGIS writes curves; `MULTISURFACE EMPTY` for an empty region
+    /// With --offsets OUT.wkt (and --input-wkt): the exact arcs instead of chords, per D one MULTISURFACE of CURVEPOLYGONs (outer ring, then its holes) whose rings are COMPOUNDCURVEs of linestrings and CIRCULARSTRINGs (start, the middle of the arc, end; a whole circle as two half circles), as PostGIS writes curves; `MULTISURFACE EMPTY` for an empty region
     #[arg(long)]
     curves: bool,
 
@@ -176,6 +176,10 @@ struct Cli {
     /// Split the input where it crosses itself instead of refusing it: crossings, overlaps, T-junctions and points inside segments become shared endpoints, by snap rounding to pixels 2^-46 of the largest coordinate wide (--stats reports the crossings, pieces and the largest displacement)
     #[arg(long)]
     split_crossings: bool,
+
+    /// Write the input as read, in WKT (after a DXF's ends are snapped, its chains joined into rings and its arcs cut where entities end on them): one GEOMETRYCOLLECTION, each ring a POLYGON of its own (the domain is the even-odd region of all rings), each open chain or linestring a LINESTRING, each point a POINT; arcs as chords within the tolerance, or with --curves as CIRCULARSTRINGs in CURVEPOLYGONs and COMPOUNDCURVEs, as PostGIS writes curves
+    #[arg(long, value_name = "OUT.wkt", value_parser = file_name)]
+    input_wkt: Option<PathBuf>,
 
     /// Write the points and segments actually built (the pieces, where segments were cut) in Boost.Polygon's text format, each coordinate exactly
     #[arg(long, value_name = "OUT", value_parser = file_name)]
@@ -248,7 +252,8 @@ pub struct Options {
     /// `--offsets`: where and in which format. Given exactly when
     /// `offset_distances` is not empty.
     pub offsets: Option<(PathBuf, Format)>,
-    /// `--curves`: offsets' WKT with arcs (given only with WKT offsets).
+    /// `--curves`: WKT offsets and `--input-wkt` with arcs (given only with
+    /// one of them).
     pub curves: bool,
     /// The G-code settings (defaults when not asked for).
     pub gcode: crate::gcode::Settings,
@@ -256,6 +261,8 @@ pub struct Options {
     pub split_crossings: bool,
     /// `--write-sites`: where to write the input as built.
     pub write_sites: Option<PathBuf>,
+    /// `--input-wkt`: where to write the input as read.
+    pub input_wkt: Option<PathBuf>,
     /// `--progress`, `--quiet` or neither.
     pub progress: When,
 }
@@ -304,8 +311,11 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Options, Stop> {
     if matches!(medial_axis, Some((_, Format::Gcode))) {
         return usage("--medial-axis writes .wkt, .geojson, .json or .dxf: G-code is for --offsets");
     }
-    if cli.curves && !matches!(offsets, Some((_, Format::Wkt))) {
-        return usage("--curves writes the arcs of --offsets OUT.wkt; give --offsets with a .wkt file (or --format wkt)");
+    if cli.curves && !matches!(offsets, Some((_, Format::Wkt))) && cli.input_wkt.is_none() {
+        return usage(
+            "--curves writes the arcs of --offsets OUT.wkt and --input-wkt; give --offsets with a .wkt file (or --format wkt) \
+             or --input-wkt",
+        );
     }
     let gcode_asked = cli.feed.is_some()
         || cli.plunge_feed.is_some()
@@ -350,6 +360,7 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Options, Stop> {
         gcode,
         split_crossings: cli.split_crossings,
         write_sites: cli.write_sites,
+        input_wkt: cli.input_wkt,
         progress: match (cli.progress, cli.quiet) {
             (true, _) => When::Always,
             (_, true) => When::Never,

@@ -322,6 +322,15 @@ impl Input {
         }
     }
 
+    /// The points and segments of Boost.Polygon's text (`None` for the
+    /// other formats, whose shapes `rings` and `obstacles` give).
+    pub fn boost_sites(&self) -> Option<(&[[f64; 2]], &[[f64; 4]])> {
+        match self {
+            Input::Boost(input) => Some((&input.points, &input.segments)),
+            _ => None,
+        }
+    }
+
     /// Whether the input has a circular arc (a curve with one, open or a
     /// ring).
     pub fn has_arcs(&self) -> bool {

@@ -15,6 +15,7 @@ mod dxf;
 mod gcode;
 mod geojson_output;
 mod input;
+mod input_wkt;
 mod json_values;
 mod medial_output;
 mod offset_arcs;
@@ -176,6 +177,9 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     if let Some(path) = &options.write_sites {
         write_file(path, &sites_as_built(&diagram, builder.point_count()))?;
     }
+    if let Some(path) = &options.input_wkt {
+        write_file(path, &input_wkt::wkt(&input, tolerance, options.curves))?;
+    }
     progress.finish();
     if options.topology {
         print(&diagram.topology(TopologyOptions::default().with_voronoi_pairs(options.voronoi_pairs)))?;
@@ -265,6 +269,7 @@ fn wants_output(options: &Options) -> bool {
         || options.max_inscribed_circle
         || options.offsets.is_some()
         || options.write_sites.is_some()
+        || options.input_wkt.is_some()
 }
 
 fn write_file(path: &Path, text: &str) -> Result<(), Failure> {

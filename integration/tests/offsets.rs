@@ -434,3 +434,40 @@ fn rings_touching_at_points() {
         run(&from_rings(format!("rings-touching n={n} seed={seed}"), &rings), true, seed);
     }
 }
+
+/// Sides exactly `2 × distance` apart along a stretch leave a corridor of
+/// no width: traced, it was a loop of area 0 (LibreCAD's mk3: two stubs 5
+/// apart at 2.5) or a slit the outer loop ran into and back out of (ed9:
+/// a line 5 above a rectangle's top), polygons no reader takes. Now no
+/// loop has zero area and none runs back along itself; the areas are the
+/// brute-force check's (`check`).
+#[test]
+fn corridors_of_no_width_leave_no_loop_and_no_slit() {
+    let mut b = Builder::new();
+    b.add_polygon(&[vec![[5.0, -5.0], [15.0, -5.0], [15.0, 10.0], [5.0, 10.0]]]).unwrap();
+    for s in [[[0.0, 5.0], [5.0, 5.0]], [[15.0, 5.0], [20.0, 5.0]], [[0.0, 0.0], [5.0, 0.0]]] {
+        b.add_segment(s).unwrap();
+    }
+    let mk3 = Case::new("mk3".into(), b.build().unwrap());
+    let mut b = Builder::new();
+    b.add_polygon(&[vec![[0.0, 0.0], [20.0, 0.0], [20.0, 10.0], [0.0, 10.0]]]).unwrap();
+    b.add_polyline(&[[10.0, 10.0], [10.0, 15.0], [15.0, 15.0]]).unwrap();
+    let ed9 = Case::new("ed9".into(), b.build().unwrap());
+    for case in [mk3, ed9] {
+        for r in [2.5, 2.5 * (1.0 + 1e-12), -2.5] {
+            let o = case.diagram.offset(r).unwrap();
+            check(&case, &o);
+            for l in &o.loops {
+                assert!(l.signed_area().abs() > 1e-6, "{} at {r}: a loop of area {}", case.name, l.signed_area());
+                let n = l.pieces.len();
+                for k in 0..n {
+                    let (a, b) = (l.pieces[k], l.pieces[(k + 1) % n]);
+                    let (u, v) = ((a.to().x - a.from().x, a.to().y - a.from().y), (b.to().x - b.from().x, b.to().y - b.from().y));
+                    let along = (u.0 * v.1 - u.1 * v.0).abs() <= 1e-12 * u.0.hypot(u.1) * v.0.hypot(v.1);
+                    let back = u.0 * v.0 + u.1 * v.1 < 0.0 && along;
+                    assert!(!back, "{} at {r}: piece {k} of {n} runs back along the one before: {a:?} {b:?}", case.name);
+                }
+            }
+        }
+    }
+}

@@ -391,11 +391,12 @@ impl Diagram {
             // a loop within rounding of one point is the trace of a part
             // with no interior (the region touching itself there)
             let near = pieces.first().map_or(0.0, |p| coincident(r, p.from()));
+            cancel_slits(&mut pieces, near);
             let tiny = pieces.iter().all(|p| matches!(p, OffsetPiece::Line { .. }) || p.from() != p.to())
                 && pieces
                     .iter()
                     .all(|p| p.from().distance(pieces[0].from()) <= near && p.to().distance(pieces[0].from()) <= near);
-            if let (Some((above, below)), false) = (faces, tiny) {
+            if let (Some((above, below)), false, false) = (faces, tiny, a_line_both_ways(&pieces, near)) {
                 loops.push((pieces, above, below));
             }
         }
@@ -562,6 +563,85 @@ impl Diagram {
         }
         (parent, depth)
     }
+}
+
+/// Takes out of a loop the slits it runs into and back out of: a straight
+/// piece followed by one along the same line the other way (a corridor of
+/// the rest of the plane with no width at this distance, between two
+/// parallel sides exactly `2 × distance` apart, that the loop would enter
+/// and leave: LibreCAD's ed9 at 2.5, a line 5 above a rectangle's top).
+/// The two become the piece from the first's start to the second's end,
+/// of the site whose piece holds it, or nothing where that is one point;
+/// around the loop's start too. No loop then passes a stretch twice, and
+/// the polygons are valid for every reader.
+fn cancel_slits(pieces: &mut Vec<OffsetPiece>, near: f64) {
+    // the line piece from `a`'s start to `b`'s end, where `b` runs back
+    // along `a`: `Some(None)` where nothing is left
+    let merged = |a: &OffsetPiece, b: &OffsetPiece| -> Option<Option<OffsetPiece>> {
+        let (OffsetPiece::Line { from, to, site }, OffsetPiece::Line { from: back, to: end, site: other }) = (*a, *b) else {
+            return None;
+        };
+        let (u, v) = (Point::new(to.x - from.x, to.y - from.y), Point::new(end.x - back.x, end.y - back.y));
+        let (lu, lv) = (u.x.hypot(u.y), v.x.hypot(v.y));
+        let along_back = u.x * v.x + u.y * v.y < 0.0 && (u.x * v.y - u.y * v.x).abs() <= 1e-12 * lu * lv;
+        if to != back || !along_back || !(lu > 0.0 && lv > 0.0) {
+            return None;
+        }
+        if from.distance(end) <= near {
+            return Some(None);
+        }
+        // the rest lies on the longer of the two
+        let site = if lu >= lv { site } else { other };
+        Some(Some(OffsetPiece::Line { from, to: end, site }))
+    };
+    let mut out: Vec<OffsetPiece> = Vec::with_capacity(pieces.len());
+    for &p in pieces.iter() {
+        let mut next = Some(p);
+        while let (Some(q), Some(last)) = (next, out.last()) {
+            match merged(last, &q) {
+                Some(m) => {
+                    out.pop();
+                    next = m;
+                }
+                None => break,
+            }
+        }
+        out.extend(next);
+    }
+    // around the start
+    while out.len() >= 2 {
+        let (last, first) = (out[out.len() - 1], out[0]);
+        match merged(&last, &first) {
+            Some(m) => {
+                out.pop();
+                out.remove(0);
+                out.extend(m);
+            }
+            None => break,
+        }
+    }
+    *pieces = out;
+}
+
+/// Whether a loop of straight pieces encloses nothing: its area within
+/// rounding of zero (`near`, a few ulps of its coordinates, times its
+/// length). It is the trace of a part of the region (or of the rest of the
+/// plane) that is a line at this distance: a corridor between two sites
+/// exactly `2 × distance` apart, traced along one side and back (LibreCAD's
+/// mk3 at 2.5, two stubs 5 apart: a loop of two pieces of area 0, which
+/// no reader of polygons takes).
+fn a_line_both_ways(pieces: &[OffsetPiece], near: f64) -> bool {
+    if pieces.is_empty() || !pieces.iter().all(|p| matches!(p, OffsetPiece::Line { .. })) {
+        return false;
+    }
+    let o = pieces[0].from();
+    let (mut twice_area, mut length) = (0.0, 0.0);
+    for p in pieces {
+        let (a, b) = (p.from(), p.to());
+        twice_area += (a.x - o.x) * (b.y - o.y) - (b.x - o.x) * (a.y - o.y);
+        length += a.distance(b);
+    }
+    twice_area.abs() <= 2.0 * near * length
 }
 
 /// Where parts of the region touch at one point, a loop may pass that
