@@ -39,6 +39,10 @@ fi
 
 # From an empty directory, so that `segvoronoi` is the installed package
 # and not python/segvoronoi (which has no compiled module).
+# the program, for the LibreCAD drawings against GEOS (test_dxf_parts_geos)
+cargo build --quiet --release -p segvoronoi-cli
+export SEGVORONOI_CLI="$root/target/release/segvoronoi"
+
 mkdir "$work/run"
 cd "$work/run"
 "$work/venv/bin/python" -m pytest -q -p no:cacheprovider --doctest-modules --pyargs segvoronoi "$root/python/tests"

@@ -1202,3 +1202,21 @@ fn an_arc_and_its_chord() {
         }
     }
 }
+
+/// Two half discs facing each other across a gap (LibreCAD's Spark-gap):
+/// the edge between the two arcs is a whole line, infinite at both ends,
+/// and the offsets had no track for it: past half the gap the two loops
+/// came out apart and overlapping (found against GEOS). Also with unequal
+/// radii (a hyperbola branch) and the arcs the other way round, against
+/// 256-chord builds.
+#[test]
+fn half_discs_facing_across_a_gap() {
+    let p = Point::new;
+    for (r1, r2) in [(3.75, 3.75), (3.75, 2.0)] {
+        let lower = vec![(p(r1, 15.0), 1.0), (p(-r1, 15.0), 0.0)];
+        let upper = vec![(p(-r2, 25.0), 1.0), (p(r2, 25.0), 0.0)];
+        let name = format!("half discs of radii {r1} and {r2}");
+        check_domain_offsets(&name, &[lower.clone(), upper.clone()], &[0.5, 1.0, 2.2, 4.07, 9.0, -0.5], 40.0);
+        check_domain_offsets(&format!("{name}, reversed"), &[reverse_ring(&lower), reverse_ring(&upper)], &[2.2, 4.07], 40.0);
+    }
+}

@@ -85,8 +85,9 @@ pub(super) enum ConicEnd {
 
 impl ConicTrack {
     /// The track of the edge between `sites` (one at least an arc) from
-    /// `start` to `end`. `None` without an arc, for a whole curve (both
-    /// ends at infinity) or numbers that are not finite.
+    /// `start` to `end` (either or both at infinity: the bisector of two
+    /// arcs facing each other is a whole line or hyperbola branch). `None`
+    /// without an arc, or for numbers that are not finite.
     pub(super) fn new(sites: [Site; 2], start: ConicEnd, end: ConicEnd) -> Option<ConicTrack> {
         let (arc, other) = match sites {
             [Site::Arc(arc), other] | [other, Site::Arc(arc)] => (arc, other),
@@ -119,7 +120,7 @@ impl ConicTrack {
                     off(q) > 0.0
                 }
             }
-            [None, None] => return None,
+            // an edge to infinity (at one end or both) is outside
             _ => true,
         };
         let start_angle = (arc.start().y - c.y).atan2(arc.start().x - c.x);
