@@ -39,7 +39,8 @@ FRACTIONS = (-0.05, -0.01, 0.01, 0.1)
 
 def program() -> pathlib.Path | None:
     named = os.environ.get("SEGVORONOI_CLI")
-    candidates = [pathlib.Path(named)] if named else [ROOT / "target" / "release" / "segvoronoi", ROOT / "target" / "debug" / "segvoronoi"]
+    builds = [ROOT / "target" / "release" / "segvoronoi", ROOT / "target" / "debug" / "segvoronoi"]
+    candidates = [pathlib.Path(named)] if named else builds
     found = [c for c in candidates if c.is_file()]
     # the newest build
     return max(found, key=lambda c: c.stat().st_mtime) if found else None
