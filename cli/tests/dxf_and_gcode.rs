@@ -425,3 +425,39 @@ fn a_domain_written_by_ezdxf_with_a_rotated_block_and_a_mirrored_hole() {
     assert!((area - expected).abs() < 1e-9 * expected, "{area} vs {expected}");
     assert_eq!(exact["offsets"][0]["loops"].as_array().unwrap().len(), 3);
 }
+
+/// A spoke ending on a circle a hair outside it (a drawing's rounding):
+/// the program cuts the circle there, so the two meet exactly, and
+/// `--input-wkt` writes what it read: with `--curves` a CURVEPOLYGON whose
+/// arcs end at the spoke's end as written, which the program reads back
+/// into the same diagram; without, the circle as chords within the
+/// tolerance.
+#[test]
+fn a_spoke_ending_on_a_circle_is_read_as_meeting_it() {
+    let mut d = Drawing::new();
+    d.add_entity(on_layer(EntityType::Circle(Circle::new(DxfPoint::new(0.0, 0.0, 0.0), 2.0)), "0"));
+    d.add_entity(line([0.0, 5.0], [0.0, 2.0 + 1e-12], "0"));
+    let input = save(&d, "spoke.dxf");
+    let (curved, chords) = (temp_path("spoke-curves.wkt"), temp_path("spoke-chords.wkt"));
+    let o = run(&[path_str(&input), "--input-wkt", path_str(&curved), "--curves", "--topology"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stderr(&o).contains("cut arcs at 1 vertex"), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&curved).unwrap();
+    assert!(text.starts_with("GEOMETRYCOLLECTION (CURVEPOLYGON (COMPOUNDCURVE (CIRCULARSTRING"), "{text}");
+    assert!(text.contains("0 2.000000000001") && text.contains("LINESTRING (0 5, 0 2.000000000001)"), "{text}");
+    // read back: the same topology
+    let again = run(&[path_str(&curved), "--topology"]);
+    assert!(again.status.success(), "{}", stderr(&again));
+    assert_eq!(stdout(&again), stdout(&o));
+    let o = run(&[path_str(&input), "--input-wkt", path_str(&chords), "--tolerance", "0.001"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&chords).unwrap();
+    assert!(text.starts_with("GEOMETRYCOLLECTION (POLYGON ((") && !text.contains("CIRCULARSTRING"), "{text}");
+    // a circle of radius 2 within 0.001: 2π / (2 acos(1 − 0.0005)) = 99.3,
+    // so 100 chords (in three arcs: 101, and the spoke's 2 points)
+    let points = text.matches(',').count() + 1 - text.matches("), ").count();
+    assert!((100..=106).contains(&points), "{points} points: {text}");
+    for p in [input, curved, chords] {
+        std::fs::remove_file(p).unwrap();
+    }
+}
