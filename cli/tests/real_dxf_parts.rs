@@ -27,11 +27,8 @@ use std::time::{Duration, Instant};
 const LIBRARY: &str = "/usr/share/librecad/library";
 
 /// The drawings the library refuses as `Internal` (the arcs' decisions
-/// are not certified yet): Headphone, an arc ending 1e-11 from a circle's
-/// interior at both ends, whose offset inward has a piece off its distance
-/// (the offsets' check). Refused naming an arc, never answered wrong. Any
-/// other file refused so fails the test, and a file listed here that is
-/// answered is reported (`answered_now`).
+/// are not certified yet): none now. Any file refused so fails the test,
+/// and a file listed here that is answered is reported (`answered_now`).
 ///
 /// Answered since: dev15, hl_27 and Bathroom-basin-V once the joins'
 /// turns were exact; kin13 and the four Logic-*-IEC gates once a circle
@@ -52,8 +49,10 @@ const LIBRARY: &str = "/usr/share/librecad/library";
 /// round it in the order asked; Logic-NAND once a double root at an arc's
 /// end point was solved with the end's separator; kin10 once the edge
 /// between an arc and its chord lay on the chord's side; n13 once a line
-/// along a circle's tangent from a corner lay outside it.
-const KNOWN_REFUSED: [&str; 1] = ["elektro/audio-iso/Headphone.dxf"];
+/// along a circle's tangent from a corner lay outside it; Headphone once
+/// the edge between two arcs meeting at both ends, each over half a turn,
+/// lay on the side of the arc halfway between them.
+const KNOWN_REFUSED: [&str; 0] = [];
 
 fn dxf_files(dir: &Path, out: &mut Vec<PathBuf>) {
     let Ok(entries) = std::fs::read_dir(dir) else { return };

@@ -1220,3 +1220,30 @@ fn half_discs_facing_across_a_gap() {
         check_domain_offsets(&format!("{name}, reversed"), &[reverse_ring(&lower), reverse_ring(&upper)], &[2.2, 4.07], 40.0);
     }
 }
+
+/// A crescent of two arcs meeting at both ends, each more than half a
+/// turn (LibreCAD's Headphone band, its ends 1e-12 off round numbers):
+/// the edge between the arcs has both ends on both circles, and which
+/// side of the circle it lies on was taken beside the middle of its ends'
+/// chord, which lies across the centre from the arc: the inward offset
+/// ran off to (-4170, -1193) (refused by the offsets' check). Now beside
+/// the arc halfway between its ends. Against 256-chord builds, both ways
+/// round.
+#[test]
+fn a_crescent_of_two_arcs_over_half_a_turn() {
+    let p = Point::new;
+    let band = vec![
+        (p(28.750000000001577, 1.2500000000240854), 1.1530096874061824),
+        (p(11.249999999998423, 1.2500000000240807), -1.3257299841847874),
+    ];
+    for ring in [band.clone(), reverse_ring(&band)] {
+        check_domain_offsets("crescent", std::slice::from_ref(&ring), &[-0.2, 0.5, 1.0], 20.0);
+        // at -0.5 a thin lens of area 5.6, where the chords' own error is
+        // 1.2e-4 of it
+        let (d, reference) = domain_and_reference(std::slice::from_ref(&ring));
+        let offset = d.offset(-0.5).unwrap();
+        let want = reference.offset(-0.5).unwrap();
+        assert_eq!((offset.loops.len(), want.loops.len()), (1, 1));
+        assert!((offset.area() - want.area()).abs() <= 1e-3 * want.area(), "{} against {}", offset.area(), want.area());
+    }
+}

@@ -104,15 +104,18 @@ impl ConicTrack {
         let convex = match ends {
             [Some(p), Some(q)] => {
                 let off = |v: Point| c.distance(v) - arc.radius();
-                let middle = Point::new((p.x + q.x) / 2.0 - c.x, (p.y + q.y) / 2.0 - c.y);
-                let length = middle.x.hypot(middle.y);
-                if off(p).abs().max(off(q).abs()) <= 1e-9 * arc.radius() && length > 1e-9 * arc.radius() {
+                if off(p).abs().max(off(q).abs()) <= 1e-9 * arc.radius() {
                     // both ends on the circle (an edge between an arc and
-                    // its chord): their sides are rounding; the edge lies
-                    // on the other site's side, beside the circle between
-                    // them
-                    let k = arc.radius() / length;
-                    let between = Point::new(c.x + k * middle.x, c.y + k * middle.y);
+                    // its chord, or two arcs meeting at both ends): their
+                    // sides are rounding; the edge lies on the other
+                    // site's side, beside the arc halfway between them
+                    // (along the arc: the middle of the ends' chord may lie
+                    // across the centre)
+                    let (start, turn) =
+                        ((arc.start().y - c.y).atan2(arc.start().x - c.x), if arc.is_counter_clockwise() { 1.0 } else { -1.0 });
+                    let along = |v: Point| angle_along(&arc, start, turn, v);
+                    let angle = start + turn * (along(p) + along(q)) / 2.0;
+                    let between = Point::new(c.x + arc.radius() * angle.cos(), c.y + arc.radius() * angle.sin());
                     off(other.nearest_point(between)) > 0.0
                 } else if off(p).abs() >= off(q).abs() {
                     off(p) > 0.0
@@ -146,18 +149,7 @@ impl ConicTrack {
     /// along the arc, clamped to its sweep (the edge lies in the arc's
     /// cone; a vertex on its boundary may round out of it).
     fn along(&self, q: Point) -> f64 {
-        let c = self.arc.centre();
-        let full = std::f64::consts::TAU;
-        let angle = (q.y - c.y).atan2(q.x - c.x);
-        let along = (self.turn * (angle - self.start_angle)).rem_euclid(full);
-        let sweep = self.arc.sweep().abs();
-        if along <= sweep {
-            along
-        } else if along - sweep < full - along {
-            sweep
-        } else {
-            0.0
-        }
+        angle_along(&self.arc, self.start_angle, self.turn, q)
     }
 
     /// The point of the edge at parameter `t` (0 and 1: its ends); `None`
@@ -375,6 +367,24 @@ impl ConicTrack {
 /// between them lies along that ray, or beside it, where the angle around
 /// the centre cannot tell its points apart (its points are found across
 /// the ray, `across_ray`).
+/// The angle of `q` around the centre of `arc` from its start (at angle
+/// `start_angle`), the way it turns (`turn`, ±1), clamped to its sweep
+/// (an end a rounding outside it is at the nearer end, not a turn away).
+fn angle_along(arc: &CircularArc, start_angle: f64, turn: f64, q: Point) -> f64 {
+    let c = arc.centre();
+    let full = std::f64::consts::TAU;
+    let angle = (q.y - c.y).atan2(q.x - c.x);
+    let along = (turn * (angle - start_angle)).rem_euclid(full);
+    let sweep = arc.sweep().abs();
+    if along <= sweep {
+        along
+    } else if along - sweep < full - along {
+        sweep
+    } else {
+        0.0
+    }
+}
+
 fn tangent_join(arc: &CircularArc, other: &Site) -> Option<Point> {
     let c = arc.centre();
     let [e0, e1] = [arc.start(), arc.end()];
