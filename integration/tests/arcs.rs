@@ -794,6 +794,21 @@ fn minimised_regressions() {
             ],
             24.0,
         ),
+        // DejaVu Sans' æ as biarcs: two arcs of different radii meeting an
+        // ulp off tangent at the bottom of both circles, and a third arc
+        // beside them. The exact side of the join's point at infinity
+        // (asked there for kinks over 1e-12 rad only) left the bisector of
+        // the two arcs a direction at infinity the search cannot place,
+        // and a vertex 196 off its sites was refused
+        (
+            "biarcs an ulp off tangent and an arc beside them",
+            vec![
+                arc(p(1551.4238890980798, -23.49286533105294), p(1446.0, -29.0), -0.026101213169333854),
+                arc(p(1446.0, -29.0), p(1282.8746788617236, -12.222197506761372), -0.05129082412037185),
+                arc(p(660.7620668864039, -12.645282015561707), p(522.0, -29.0), -0.05872754765340209),
+            ],
+            2048.0,
+        ),
     ];
     for (k, (name, pieces, size)) in cases.into_iter().enumerate() {
         check_all_ways(name, &pieces, size, k as u64);

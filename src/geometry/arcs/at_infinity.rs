@@ -96,7 +96,7 @@ pub(crate) fn arc_conflict_at_infinity(arc: &CircularArc, d: Point, x: &Site, y:
 /// kept the end's cell on both sides of the join. `None` (the caller
 /// decides as before) where `d` is not near the arc's normal at `end`
 /// (within a fraction of its sweep, not a near tie then), where the
-/// pieces are exactly tangent (curvatures decide), or out of range.
+/// pieces are tangent to 1e-12 rad (curvatures decide), or out of range.
 pub(crate) fn beside_a_shared_end(arc: &CircularArc, d: Point, end: Point, piece: &Site) -> Option<bool> {
     let norm = d.x.hypot(d.y);
     if !(norm.is_finite() && norm > 0.0) {
@@ -116,6 +116,15 @@ pub(crate) fn beside_a_shared_end(arc: &CircularArc, d: Point, end: Point, piece
     let t = along_piece.approximate();
     let quarter = t.x * d.y - t.y * d.x;
     if quarter.abs() < 0.5 * t.x.hypot(t.y) {
+        return None;
+    }
+    // A join within 1e-12 rad of tangent (an ulp off, as where biarcs
+    // meet) stays with the curvature rules: the exact side there would
+    // need the direction at infinity of the two pieces' bisector, which
+    // the floating-point search places no better than the tie itself
+    // (a font's æ was refused once it was asked).
+    let u = along_arc.approximate();
+    if (t.x * u.y - t.y * u.x).abs() <= 1e-12 * t.x.hypot(t.y) * u.x.hypot(u.y) {
         return None;
     }
     let turn = exact_join::cross_sign(&along_piece, &along_arc)?;
