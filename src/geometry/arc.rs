@@ -214,6 +214,14 @@ impl CircularArc {
         }
     }
 
+    /// Whether the circle of centre `centre` and radius `radius` is the
+    /// arc's own to within 1e-9 of its radius (a vertex on it, another arc
+    /// of it; the arcs' decisions treat such circles as one).
+    pub(crate) fn has_circle(&self, centre: Point, radius: f64) -> bool {
+        let tolerance = 1e-9 * self.radius();
+        (radius - self.radius()).abs() <= tolerance && self.centre().distance(centre) <= tolerance
+    }
+
     /// The arc with start and end swapped (the same point set).
     pub fn reversed(&self) -> CircularArc {
         let datum = match self.datum {

@@ -147,7 +147,7 @@ fn endpoint_depth(
             _ => {}
         }
         cusp = turn == Some(0) && exact_join::leave_the_same_way(&piece, &Site::Arc(*arc), end) == Some(true);
-    } else if along.abs() <= NEAR_TIE && !same_circle(arc, centre, radius) {
+    } else if along.abs() <= NEAR_TIE && !arc.has_circle(centre, radius) {
         // The vertex of `end` and two more points: whether the arc leaves
         // into their circle, exactly. Near a tie the circle can be huge
         // (three points nearly in line, its centre 1e16 away), and then
@@ -182,7 +182,7 @@ fn endpoint_depth(
         let back = arc.distance(centre) - radius;
         return if back < -1e-9 * (radius + arc.radius()) { back } else { -along * radius.abs().max(f64::MIN_POSITIVE) };
     }
-    if !cusp && same_circle(arc, centre, radius) {
+    if !cusp && arc.has_circle(centre, radius) {
         // the arc on the vertex's circle (a tie): in conflict where one of
         // the vertex's edges leaves it toward the arc's inside, which a
         // vertex kept would leave cut in its middle (a circle's quarter
@@ -208,7 +208,7 @@ fn an_edge_leaves_into(arc: &CircularArc, centre: Point, sites: &[Site; 3]) -> b
     let angle_of = |q: Point| (q.y - centre.y).atan2(q.x - centre.x);
     // where a site touches the circle, counter-clockwise: first and last
     let touching = |s: &Site| match *s {
-        Site::Arc(other) if same_circle(&other, centre, arc.radius()) => {
+        Site::Arc(other) if other.has_circle(centre, arc.radius()) => {
             let (first, last) =
                 if other.is_counter_clockwise() { (other.start(), other.end()) } else { (other.end(), other.start()) };
             (angle_of(first), angle_of(last))
@@ -246,13 +246,6 @@ fn exact_sector(from: &Site, to: &Site, arc: &CircularArc, end: Point) -> Option
     let turn = |u: &Site, v: &Site| exact_join::turn_between(u, v, end);
     let (after_from, before_to) = (turn(from, &arc)? > 0, turn(&arc, to)? > 0);
     Some(if turn(from, to)? > 0 { after_from && before_to } else { after_from || before_to })
-}
-
-/// Whether the circle of a vertex (`centre`, `radius`) is the arc's own
-/// to within 1e-9 of its radius.
-pub(crate) fn same_circle(arc: &CircularArc, centre: Point, radius: f64) -> bool {
-    let tolerance = 1e-9 * arc.radius();
-    (radius - arc.radius()).abs() <= tolerance && arc.centre().distance(centre) <= tolerance
 }
 
 /// [`endpoint_depth`] where the arc leaves `end` along the tangent of the

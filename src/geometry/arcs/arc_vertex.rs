@@ -25,7 +25,6 @@
 //! Newton steps on the true distances. Not certified: the arcs' decisions
 //! in `arc_predicates` compare these positions with tolerances.
 
-use super::arc_predicates::same_circle;
 use super::exact_join;
 use crate::geometry::point::Point;
 use crate::geometry::site::Site;
@@ -92,7 +91,7 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
 /// solutions (every point of the circle is as near from its centre).
 fn arcs_of_one_circle(sites: &[Site; 3]) -> bool {
     let arcs: Vec<_> = sites.iter().filter_map(|s| if let Site::Arc(a) = s { Some(*a) } else { None }).collect();
-    arcs.len() >= 2 && arcs[1..].iter().all(|a| same_circle(a, arcs[0].centre(), arcs[0].radius()))
+    arcs.len() >= 2 && arcs[1..].iter().all(|a| a.has_circle(arcs[0].centre(), arcs[0].radius()))
 }
 
 /// The centre of an arc among the sites where all three are as far from
