@@ -72,6 +72,15 @@ pub(super) struct ConicTrack {
     /// from the centre does: the edge's point at a distance is found
     /// across the ray (`across_ray`).
     radial: Option<(Point, [f64; 2])>,
+    /// For the edge between two arcs of one circle (to rounding) from one
+    /// of their joins to the other: the two rays from the centre to those
+    /// joins. Every point inside the circle is nearest the arc its
+    /// direction falls in, so the edge runs in from one join to the centre
+    /// and out to the other; no vertex is at the centre, where only these
+    /// two sites are, and neither the angle (constant along each ray) nor
+    /// one ray describes it. The first half of `t` runs in, the second
+    /// out.
+    bent: Option<[Point; 2]>,
     /// Where the clearance turns strictly inside the edge, by `t`.
     pub(super) knots: Vec<Knot>,
 }
@@ -132,7 +141,26 @@ impl ConicTrack {
             let rho = |e: Option<Point>| e.map_or(f64::INFINITY, |v| (v.x - c.x) * u.x + (v.y - c.y) * u.y);
             (u, [rho(ends[0]), rho(ends[1])])
         });
-        let mut track = ConicTrack { arc, other, convex, start_angle, turn, along: [0.0; 2], ends, radial, knots: Vec::new() };
+        let bent = match (other, ends) {
+            (Site::Arc(second), [Some(p), Some(q)]) if second.has_circle(c, arc.radius()) => {
+                let ray = |v: Point| {
+                    let (dx, dy) = (v.x - c.x, v.y - c.y);
+                    let length = dx.hypot(dy);
+                    (length > 0.5 * arc.radius()).then(|| Point::new(dx / length, dy / length))
+                };
+                // both ends at joins on the circle, on two rays that are
+                // not one line (a diameter is `radial`'s)
+                let on_circle = |v: Point| (c.distance(v) - arc.radius()).abs() <= 1e-9 * arc.radius();
+                match (ray(p), ray(q)) {
+                    (Some(u), Some(w)) if on_circle(p) && on_circle(q) && (u.x * w.y - u.y * w.x).abs() > 1e-6 => Some([u, w]),
+                    _ => None,
+                }
+            }
+            _ => None,
+        };
+        let radial = if bent.is_some() { None } else { radial };
+        let mut track =
+            ConicTrack { arc, other, convex, start_angle, turn, along: [0.0; 2], ends, radial, bent, knots: Vec::new() };
         let direction = |e: ConicEnd| match e {
             ConicEnd::At(p) => track.along(p),
             ConicEnd::Towards(u) => track.along(Point::new(c.x + u.x, c.y + u.y)),
@@ -160,6 +188,11 @@ impl ConicTrack {
             if let Some(v) = self.ends[usize::from(t >= 1.0)] {
                 return Some(v);
             }
+        }
+        if let Some([u, w]) = self.bent {
+            let (c, radius) = (self.arc.centre(), self.arc.radius());
+            let (ray, rho) = if t <= 0.5 { (u, radius * (1.0 - 2.0 * t)) } else { (w, radius * (2.0 * t - 1.0)) };
+            return Some(Point::new(c.x + rho * ray.x, c.y + rho * ray.y));
         }
         if let Some((u, [r0, r1])) = self.radial {
             // an end at infinity: the distance grows without bound toward it
