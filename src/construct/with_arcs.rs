@@ -20,7 +20,7 @@ use super::Sites;
 use crate::diagram::{Diagram, SiteId};
 use crate::error::{Error, ErrorKind};
 use crate::geometry::scale::{Magnitudes, Scale, EXACT_SPAN};
-use crate::geometry::{CircularArc, Point};
+use crate::geometry::{CircularArc, Point, Site};
 
 /// Inputs with arcs whose coordinates span more than the exact range are
 /// refused before any work: segments beyond it are attempted and checked
@@ -147,30 +147,50 @@ fn vertices_touch_their_arcs(diagram: &Diagram) -> Result<(), Error> {
 fn arc_vertices_are_empty(diagram: &Diagram) -> Result<(), Error> {
     let first_arc = diagram.sites.len() - diagram.arc_sites;
     let n = diagram.sites.len();
-    let mut neighbours: Vec<Vec<SiteId>> = vec![Vec::new(); n];
+    // the neighbouring cells of every cell, in one array (`start[s]..start[s + 1]`)
+    let mut start = vec![0usize; n + 1];
+    for e in diagram.edges() {
+        for s in e.sites.iter().filter(|s| s.index() < n) {
+            start[s.index() + 1] += 1;
+        }
+    }
+    for s in 0..n {
+        start[s + 1] += start[s];
+    }
+    let mut neighbours = vec![SiteId::from_index(0); start[n]];
+    let mut filled = start.clone();
     for e in diagram.edges() {
         let [a, b] = e.sites;
         if a.index() < n && b.index() < n {
-            neighbours[a.index()].push(b);
-            neighbours[b.index()].push(a);
+            neighbours[filled[a.index()]] = b;
+            filled[a.index()] += 1;
+            neighbours[filled[b.index()]] = a;
+            filled[b.index()] += 1;
         }
     }
-    for list in &mut neighbours {
-        list.sort_unstable();
-        list.dedup();
-    }
+    // whether `site` is nearer to `p` than `reach` (cheap bounds first:
+    // most neighbours are far)
+    let nearer = |site: &Site, p: Point, reach: f64| match *site {
+        Site::Arc(arc) => {
+            // off the ring between the circles of radius R ± reach: far
+            let (c, r) = (arc.centre(), arc.radius());
+            let squared = (c.x - p.x).powi(2) + (c.y - p.y).powi(2);
+            let inner = (r - reach).max(0.0);
+            squared < (r + reach).powi(2) && squared > inner * inner && arc.distance(p) < reach
+        }
+        _ => site.distance_squared(p) < reach * reach,
+    };
     for v in diagram.vertices() {
         if !v.sites.iter().any(|s| s.index() >= first_arc) || !v.clearance.is_finite() {
             continue;
         }
-        let tolerance = 1e-7 * (diagram.extent + v.clearance);
-        let nearer = v
-            .sites
-            .iter()
-            .filter(|s| s.index() < n)
-            .flat_map(|s| &neighbours[s.index()])
-            .find(|&&t| !v.sites.contains(&t) && diagram.sites[t.index()].distance(v.position) < v.clearance - tolerance);
-        if let Some(&t) = nearer {
+        let reach = v.clearance - 1e-7 * (diagram.extent + v.clearance);
+        if !(reach > 0.0) {
+            continue;
+        }
+        let around = v.sites.iter().filter(|s| s.index() < n).flat_map(|s| &neighbours[start[s.index()]..start[s.index() + 1]]);
+        let found = around.copied().find(|&t| !v.sites.contains(&t) && nearer(&diagram.sites[t.index()], v.position, reach));
+        if let Some(t) = found {
             let arc = v.sites.iter().find(|s| s.index() >= first_arc).map_or(0, |s| s.index() - first_arc);
             let arc = diagram.arc_input.get(arc).copied().unwrap_or(0) as usize;
             let by = v.clearance - diagram.sites[t.index()].distance(v.position);
