@@ -358,6 +358,16 @@ fn domain_and_reference(rings: &[Ring]) -> (Diagram, Diagram) {
     (d, r.build().unwrap())
 }
 
+/// The polygon of `rings` with the segments `lines` as obstacles.
+fn domain_with_lines(rings: &[Ring], lines: &[[Point; 2]]) -> Result<Diagram, segvoronoi::Error> {
+    let mut b = Builder::new();
+    b.add_bulged_polygon(rings).unwrap();
+    for &s in lines {
+        b.add_segment(s).unwrap();
+    }
+    b.build()
+}
+
 /// The tangent joins of the rings: corners where a segment and an arc, or
 /// two arcs, meet with one tangent.
 fn tangent_joins(rings: &[Ring]) -> Vec<Point> {
@@ -1148,13 +1158,9 @@ fn circles_cut_where_lines_end_on_them() {
             if reversed {
                 ring = reverse_ring(&ring);
             }
+            let lines: Vec<[Point; 2]> = lines.iter().map(|&[s, e]| [flip(s), flip(e)]).collect();
             let build = |ring: &Ring| {
-                let mut b = Builder::new();
-                b.add_bulged_polygon(std::slice::from_ref(ring)).unwrap();
-                for &[s, e] in &lines {
-                    b.add_segment([flip(s), flip(e)]).unwrap();
-                }
-                b.build().unwrap_or_else(|e| panic!("{name} {way}: {e}"))
+                domain_with_lines(std::slice::from_ref(ring), &lines).unwrap_or_else(|e| panic!("{name} {way}: {e}"))
             };
             let d = build(&ring);
             let chords: Ring = densified_ring(&ring).into_iter().map(|q| (q, 0.0)).collect();
@@ -1306,14 +1312,7 @@ fn random_circles_cut_where_lines_end_on_them() {
         if seed % 2 == 1 {
             lines.push([points[0], points[1]]);
         }
-        let build = |ring: &Ring| {
-            let mut b = Builder::new();
-            b.add_bulged_polygon(std::slice::from_ref(ring)).unwrap();
-            for &s in &lines {
-                b.add_segment(s).unwrap();
-            }
-            b.build()
-        };
+        let build = |ring: &Ring| domain_with_lines(std::slice::from_ref(ring), &lines);
         let d = match build(&ring) {
             Ok(d) => d,
             Err(e) => {
@@ -1370,14 +1369,7 @@ fn a_random_circle_answered_wrong() {
     let ring: Ring = vec![(p(8.05032554, 20.51405669), 0.11044204803864038), (p(4.74689933, 21.29659965), 9.054522419306547)];
     let lines =
         [[p(8.05032554, 20.51405669), p(9.36222288, 23.21200506)], [p(8.05032554, 20.51405669), p(4.74689933, 21.29659965)]];
-    let build = |ring: &Ring| {
-        let mut b = Builder::new();
-        b.add_bulged_polygon(std::slice::from_ref(ring)).unwrap();
-        for &s in &lines {
-            b.add_segment(s).unwrap();
-        }
-        b.build().unwrap()
-    };
+    let build = |ring: &Ring| domain_with_lines(std::slice::from_ref(ring), &lines).unwrap();
     let chords: Ring = densified_ring(&ring).into_iter().map(|q| (q, 0.0)).collect();
     let (area, want) = (build(&ring).offset(1.0).unwrap().area(), build(&chords).offset(1.0).unwrap().area());
     assert!((area - want).abs() <= 1e-3 * want, "area {area} against the chords' {want}");
