@@ -1264,8 +1264,10 @@ fn a_crescent_of_two_arcs_over_half_a_turn() {
 /// kin10, n13 and Headphone, nobody's numbers. Offsets at four distances
 /// against the same input with every arc as 256 chords: closed loops, the
 /// chords' loop count, areas within 1e-3. It found a circle of two arcs
-/// whose edge runs in to the centre and out (`ConicTrack`'s `bent`), and
-/// a round join at a joint turned the long way (`no_whole_turn_at_a_joint`).
+/// whose edge runs in to the centre and out (`ConicTrack`'s `bent`), a
+/// round join at a joint turned the long way (`no_whole_turn_at_a_joint`),
+/// and an edge between two arcs sharing both ends taken along the wrong
+/// join's ray (`two_arcs_of_one_circle_and_a_line_out_from_a_join`).
 #[test]
 fn random_circles_cut_where_lines_end_on_them() {
     // at the origin and a million away (the same circles, then rounded there)
@@ -1278,17 +1280,14 @@ fn random_circles_cut_at(ox: f64, oy: f64) {
     // (four arcs 1e-9 apart round one centre, vertices of the joins'
     // points there located outside) and 30, each at both inward distances;
     // by the build's vertex check seed 74 (82 a million away). The next
-    // to fix, with 73.
+    // to fix.
     const KNOWN: usize = 5;
-    // Answered wrong, see `a_random_circle_answered_wrong` (ignored).
-    const KNOWN_WRONG: [u64; 1] = [73];
     let p = Point::new;
     let round8 = |x: f64| (x * 1e8).round() / 1e8;
     let mut rng = SplitMix64(20261205);
     let (mut cases, mut refused) = (0, Vec::new());
     for seed in 0..96 {
         let (cx, cy, r) = (round8(ox + 20.0 * rng.unit()), round8(oy + 20.0 * rng.unit()), round8(2.0 + 8.0 * rng.unit()));
-        let known_wrong = KNOWN_WRONG.contains(&seed);
         let k = 2 + (rng.next_u64() % 5) as usize;
         let mut angles: Vec<f64> = (0..k).map(|_| std::f64::consts::TAU * rng.unit()).collect();
         angles.sort_by(f64::total_cmp);
@@ -1330,9 +1329,6 @@ fn random_circles_cut_at(ox: f64, oy: f64) {
                 continue;
             }
         };
-        if known_wrong {
-            continue; // (drawn all the same, so that the seeds after it stay as they were)
-        }
         let chords: Ring = densified_ring(&ring).into_iter().map(|q| (q, 0.0)).collect();
         let reference = build(&chords).unwrap();
         for distance in [0.3, 1.0, -0.3, -0.25 * r] {
@@ -1364,20 +1360,36 @@ fn random_circles_cut_at(ox: f64, oy: f64) {
 }
 
 /// Seed 73 of `random_circles_cut_where_lines_end_on_them`, answered wrong
-/// (area 489.8 for 247.7 at distance 1), not yet fixed: a circle of two
-/// arcs (one of 0.44 rad), its chord, and a line out from one join along
-/// the radius. The edge between the two arcs runs along that radius
-/// through the join and on beside the line, where the line is at distance
-/// 0, and the offset crosses it there.
+/// (area 489.8 for 247.7 at distance 1): a circle of two arcs (one of
+/// 0.44 rad), a line out from one join along the radius, and with or
+/// without the chord. The two arcs share both ends, and the edge between
+/// them outside runs along the radius of the join without the line. Its
+/// track took the first shared end for the ray (`tangent_join`), the
+/// other join's, and the offset's arc swept a whole turn on each side.
+/// Both ways round, mirrored, at four distances, against 256 chords.
 #[test]
-#[ignore = "a known wrong answer, the next to fix"]
-fn a_random_circle_answered_wrong() {
+fn two_arcs_of_one_circle_and_a_line_out_from_a_join() {
     let p = Point::new;
     let ring: Ring = vec![(p(8.05032554, 20.51405669), 0.11044204803864038), (p(4.74689933, 21.29659965), 9.054522419306547)];
-    let lines =
-        [[p(8.05032554, 20.51405669), p(9.36222288, 23.21200506)], [p(8.05032554, 20.51405669), p(4.74689933, 21.29659965)]];
-    let build = |ring: &Ring| domain_with_lines(std::slice::from_ref(ring), &lines).unwrap();
-    let chords: Ring = densified_ring(&ring).into_iter().map(|q| (q, 0.0)).collect();
-    let (area, want) = (build(&ring).offset(1.0).unwrap().area(), build(&chords).offset(1.0).unwrap().area());
-    assert!((area - want).abs() <= 1e-3 * want, "area {area} against the chords' {want}");
+    let radial = [p(8.05032554, 20.51405669), p(9.36222288, 23.21200506)];
+    let chord = [p(8.05032554, 20.51405669), p(4.74689933, 21.29659965)];
+    let mirror = |q: Point| p(-q.x, q.y);
+    for lines in [vec![radial, chord], vec![radial]] {
+        for mirrored in [false, true] {
+            let ring: Ring = if mirrored { ring.iter().map(|&(q, b)| (mirror(q), -b)).collect() } else { ring.clone() };
+            let lines: Vec<[Point; 2]> = if mirrored { lines.iter().map(|l| l.map(mirror)).collect() } else { lines.clone() };
+            for ring in [ring.clone(), reverse_ring(&ring)] {
+                let d = domain_with_lines(std::slice::from_ref(&ring), &lines).unwrap();
+                let chords: Ring = densified_ring(&ring).into_iter().map(|q| (q, 0.0)).collect();
+                let reference = domain_with_lines(&[chords], &lines).unwrap();
+                for distance in [0.3, 1.0, -0.3, -1.0] {
+                    let what = format!("{} lines, mirrored {mirrored}, at {distance}: {ring:?}", lines.len());
+                    let (offset, want) = (d.offset(distance).unwrap(), reference.offset(distance).unwrap());
+                    assert_eq!(offset.loops.len(), want.loops.len(), "{what}: loops");
+                    let (area, want) = (offset.area(), want.area());
+                    assert!((area - want).abs() <= 1e-3 * want, "{what}: area {area} against the chords' {want}");
+                }
+            }
+        }
+    }
 }

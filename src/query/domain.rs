@@ -427,7 +427,15 @@ impl Diagram {
             let Some(edge) = self.edge(e) else { continue };
             let [u, v] = edge.sites;
             let (Some(cu), Some(cv)) = (join_of.get(&u), join_of.get(&v)) else { continue };
-            let Some(&corner) = cu.iter().find(|c| cv.contains(c)) else { continue };
+            // two arcs of one circle share both their ends: the corner
+            // the edge reaches (ends at or passes through)
+            let Some(&corner) = cu
+                .iter()
+                .filter(|c| cv.contains(c))
+                .min_by(|&&a, &&b| self.edge_reach(e, self.point_of(a)).total_cmp(&self.edge_reach(e, self.point_of(b))))
+            else {
+                continue;
+            };
             let at = self.point_of(corner);
             let ends = edge.ends.map(|end| match end {
                 EdgeEnd::Vertex(w) => Some(self.store.position[w.index()]),

@@ -137,7 +137,15 @@ impl ConicTrack {
         };
         let start_angle = (arc.start().y - c.y).atan2(arc.start().x - c.x);
         let turn = if arc.is_counter_clockwise() { 1.0 } else { -1.0 };
-        let radial = tangent_join(&arc, &other).map(|u| {
+        // the direction from the centre to the edge's farthest end
+        let toward = match (start, end) {
+            (ConicEnd::Towards(u), _) | (_, ConicEnd::Towards(u)) => u,
+            (ConicEnd::At(p), ConicEnd::At(q)) => {
+                let far = if c.distance(p) >= c.distance(q) { p } else { q };
+                Point::new(far.x - c.x, far.y - c.y)
+            }
+        };
+        let radial = tangent_join(&arc, &other, toward).map(|u| {
             let rho = |e: Option<Point>| e.map_or(f64::INFINITY, |v| (v.x - c.x) * u.x + (v.y - c.y) * u.y);
             (u, [rho(ends[0]), rho(ends[1])])
         });
@@ -390,16 +398,6 @@ impl ConicTrack {
     }
 }
 
-/// When `other` continues `arc` tangentially at an endpoint they share,
-/// leaving it the other way (a segment along the arc's tangent there, or
-/// an arc whose centre lies on the same line through that endpoint, e.g.
-/// of the same circle), or
-/// within 1e-4 rad of it (a join an ulp off straight, or a bulge written
-/// with six digits, as DXF files have them: a kink of 2e-6), the unit
-/// direction from the arc's centre through that endpoint: the edge
-/// between them lies along that ray, or beside it, where the angle around
-/// the centre cannot tell its points apart (its points are found across
-/// the ray, `across_ray`).
 /// The angle of `q` around the centre of `arc` from its start (at angle
 /// `start_angle`), the way it turns (`turn`, ±1), clamped to its sweep
 /// (an end a rounding outside it is at the nearer end, not a turn away).
@@ -418,15 +416,39 @@ fn angle_along(arc: &CircularArc, start_angle: f64, turn: f64, q: Point) -> f64 
     }
 }
 
-fn tangent_join(arc: &CircularArc, other: &Site) -> Option<Point> {
+/// When `other` continues `arc` tangentially at an endpoint they share,
+/// leaving it the other way (a segment along the arc's tangent there, or
+/// an arc whose centre lies on the same line through that endpoint, e.g.
+/// of the same circle), or
+/// within 1e-4 rad of it (a join an ulp off straight, or a bulge written
+/// with six digits, as DXF files have them: a kink of 2e-6), the unit
+/// direction from the arc's centre through that endpoint: the edge
+/// between them lies along that ray, or beside it, where the angle around
+/// the centre cannot tell its points apart (its points are found across
+/// the ray, `across_ray`).
+///
+/// Two arcs of one circle share both ends, and both joins qualify: the
+/// one whose ray the edge lies along is taken, the nearer in angle to
+/// `toward` (a direction from the centre to the edge's farthest end).
+fn tangent_join(arc: &CircularArc, other: &Site, toward: Point) -> Option<Point> {
+    let alignment = |u: &Point| u.x * toward.x + u.y * toward.y;
+    [arc.start(), arc.end()]
+        .into_iter()
+        .filter_map(|e| tangent_join_at(arc, other, e))
+        .max_by(|u, w| alignment(u).total_cmp(&alignment(w)))
+}
+
+/// `tangent_join` at one end `e` of `arc`.
+fn tangent_join_at(arc: &CircularArc, other: &Site, e: Point) -> Option<Point> {
     let c = arc.centre();
-    let [e0, e1] = [arc.start(), arc.end()];
     let shared = match *other {
         Site::Segment { a, b } => [a, b],
         Site::Arc(o) => [o.start(), o.end()],
         _ => return None,
     };
-    let e = [e0, e1].into_iter().find(|e| shared.contains(e))?;
+    if !shared.contains(&e) {
+        return None;
+    }
     let radial = Point::new(e.x - c.x, e.y - c.y);
     let length = radial.x.hypot(radial.y);
     // the other's direction at `e` that must be parallel to the radius
