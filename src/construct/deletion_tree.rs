@@ -17,6 +17,7 @@
 
 use super::state::Construction;
 use crate::diagram::{HalfEdgeId, SiteId};
+use crate::geometry::Point;
 
 impl Construction {
     /// Starts a new marking round: no vertex or cell is marked afterwards.
@@ -122,6 +123,14 @@ impl Construction {
             })
             .collect();
 
+        // An arc's vertex solver can find more than one circle touching
+        // the three sites in the order asked; the cut edges' ends, read
+        // before their slots are reused, tell it which one lies on the edge.
+        let cut_edges: Vec<Option<[Point; 2]>> = if self.inserting_arc.is_some() {
+            self.cuts.iter().zip(&outside).map(|(&(h, _, _), link)| link.ok().and_then(|t| self.edge_ends(h, t))).collect()
+        } else {
+            Vec::new()
+        };
         // New vertices reuse the tree's slots (a tree of m degree-3 vertices
         // has m + 2 leaving edges).
         self.new_vertices.clear();
@@ -150,7 +159,26 @@ impl Construction {
         }
         self.store.cell_edge[s.index()] = self.new_vertices[0].half_edge(1).0;
         for j in 0..k {
-            self.place_vertex(self.new_vertices[j]);
+            let on = cut_edges.get(j).copied().flatten();
+            self.place_vertex_on(self.new_vertices[j], on);
+        }
+    }
+
+    /// The ends of a cut edge: `h` leaving the tree's vertex, `t` its twin
+    /// leaving the kept one; an end at infinity far out along its
+    /// direction. `None` when both are at infinity.
+    fn edge_ends(&self, h: HalfEdgeId, t: HalfEdgeId) -> Option<[Point; 2]> {
+        let end = |v: crate::diagram::VertexId| (self.store.position[v.index()], self.store.clearance[v.index()]);
+        let ((p, rp), (q, rq)) = (end(h.origin()), end(t.origin()));
+        let far = |(from, r): (Point, f64), direction: Point| {
+            let reach = 1e3 * (from.x.abs() + from.y.abs() + r + 1.0);
+            Point::new(from.x + reach * direction.x, from.y + reach * direction.y)
+        };
+        match (rp.is_finite(), rq.is_finite()) {
+            (true, true) => Some([p, q]),
+            (true, false) => Some([p, far((p, rp), q)]),
+            (false, true) => Some([far((q, rq), p), q]),
+            (false, false) => None,
         }
     }
 }

@@ -147,13 +147,21 @@ impl Construction {
     /// (`geometry::segments::vertex_placement`): a vertex at infinity stores the
     /// direction of its edge and an infinite clearance.
     pub(super) fn place_vertex(&mut self, v: VertexId) {
+        self.place_vertex_on(v, None);
+    }
+
+    /// `place_vertex` for a vertex cut into the edge between `on` (its two
+    /// ends, one far out for an end at infinity): where its sites have
+    /// more than one circle in the order asked (an arc among them), the
+    /// one on that edge.
+    pub(super) fn place_vertex_on(&mut self, v: VertexId, on: Option<[Point; 2]>) {
         let sites = self.store.sites_of(v);
         let (pos, clearance) = match infinite_rotation(sites) {
             Some((x, y)) => {
                 let direction = vertex_placement::direction_at_infinity(self.site_geometry(x), self.site_geometry(y));
                 (direction, f64::INFINITY)
             }
-            None if self.has_segment(sites) => vertex_placement::circle_of_sites(&sites.map(|s| self.site_geometry(s))),
+            None if self.has_segment(sites) => vertex_placement::circle_of_sites_on(&sites.map(|s| self.site_geometry(s)), on),
             None => {
                 let [a, b, c] = sites.map(|s| self.sites[s.index()]);
                 vertex_placement::circle_of_points(a, b, c)

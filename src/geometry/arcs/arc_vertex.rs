@@ -32,7 +32,16 @@ use crate::geometry::site::Site;
 /// The circle of three sites of which at least one is an arc, in the
 /// counter-clockwise order given; `None` when no candidate fits (the
 /// caller falls back as for other sites).
+#[cfg(test)]
 pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
+    arc_vertex_on(sites, None)
+}
+
+/// [`arc_vertex`] for a vertex cut into the edge between the points `on`
+/// (its ends: the one that goes, then the one kept; one far out for an
+/// end at infinity), which tells apart two circles in the order asked
+/// (`best_candidate`).
+pub(crate) fn arc_vertex_on(sites: &[Site; 3], on: Option<[Point; 2]>) -> Option<(Point, f64)> {
     if let Some(vertex) = tangent_join_vertex(sites) {
         return Some(vertex);
     }
@@ -50,6 +59,7 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     }
     let unit = 2f64.powi(-(size.log2().round() as i32));
     let local = sites.map(|s| shifted(&s, origin, unit));
+    let on = on.map(|ends| ends.map(|p| Point::new((p.x - origin.x) * unit, (p.y - origin.y) * unit)));
     let scale = local.iter().map(|s| site_size(s, Point::new(0.0, 0.0))).fold(0.0f64, f64::max);
     // a piece is touched at an end only where another site of the
     // triple is that point or ends there (`equations_of`)
@@ -59,10 +69,10 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     });
     // Only where no candidate fits (scores of 10 and more: `fit`) is a
     // vertex sought far away (`Reach`).
-    let best = match best_candidate(&local, &options, scale, Reach::Near) {
+    let best = match best_candidate(&local, &options, scale, Reach::Near, on) {
         Some(near) if near.0 < 10.0 => Some(near),
         near => {
-            let best = [near, best_candidate(&local, &options, scale, Reach::Far)]
+            let best = [near, best_candidate(&local, &options, scale, Reach::Far, on)]
                 .into_iter()
                 .flatten()
                 .min_by(|a, b| a.0.total_cmp(&b.0));
@@ -160,8 +170,10 @@ fn best_candidate(
     options: &[[Option<Touching>; 4]; 3],
     scale: f64,
     reach: Reach,
+    on: Option<[Point; 2]>,
 ) -> Option<(f64, Point, f64)> {
     let mut best: Option<(f64, Point, f64, [Touching; 3])> = None;
+    let mut common_end = None;
     'patterns: for &t0 in options[0].iter().flatten() {
         for &t1 in options[1].iter().flatten() {
             for &t2 in options[2].iter().flatten() {
@@ -169,7 +181,12 @@ fn best_candidate(
                 let Some(equations) = equations_of(local, touch) else { continue };
                 for (centre, radius) in solve(&equations, reach).into_iter().flatten() {
                     let Some(score) = fit(local, touch, centre, radius, scale, reach) else { continue };
-                    if best.map_or(true, |(s, ..)| score < s) {
+                    if on.is_some() && at_a_common_end(local, centre, radius, scale) {
+                        // weighed against the others below, by the edge
+                        common_end = common_end.or(Some((score, centre, radius, touch)));
+                        continue;
+                    }
+                    if best.map_or(true, |(s, c, ..)| better((score, centre), (s, c), on)) {
                         best = Some((score, centre, radius, touch));
                     }
                     if score < 1e-14 {
@@ -179,8 +196,54 @@ fn best_candidate(
             }
         }
     }
+    // Three pieces meeting at one end have a circle of radius zero there
+    // that touches them in any order. Where another circle fits in the
+    // order asked, the vertex is the one nearer the edge's end that goes
+    // (the new site's region along the edge starts there): a line out of
+    // a join of two arcs of one circle meets the other arc's cell on the
+    // join's radius, not at the join.
+    best = match (best, common_end, on) {
+        (Some(other), Some(end), Some([going, _])) if other.0 < 10.0 => {
+            Some(if end.1.distance(going) < other.1.distance(going) { end } else { other })
+        }
+        (None, end, _) => end,
+        (other, _, _) => other,
+    };
     let (score, centre, radius, touch) = best?;
     Some(at_an_end_point(local, touch, (centre, radius), options, scale, reach).unwrap_or((score, centre, radius)))
+}
+
+/// Whether the candidate `(score, centre)` is better than `than`: the
+/// lower score; where both fit with as many pieces touched at an end with
+/// nothing there (the same whole part of their scores, `fit`) and the
+/// vertex is cut into an edge (`on`), the one nearer the edge's end that
+/// goes, where the new site's region along the edge starts. Two such
+/// circles in the order asked are a degenerate stretch (two arcs of one
+/// circle and a line out of their join tie along the join's radius), and
+/// only the one on the edge is this vertex.
+fn better((score, centre): (f64, Point), (than, at): (f64, Point), on: Option<[Point; 2]>) -> bool {
+    match on {
+        Some([going, _]) if score < 10.0 && than < 10.0 && score.floor() == than.floor() => {
+            let (d, e) = (centre.distance(going), at.distance(going));
+            d < e || d == e && score < than
+        }
+        _ => score < than,
+    }
+}
+
+/// Whether `(centre, radius)` is the circle of radius zero at an end all
+/// three pieces share (no point site among them), to 1e-6 of their size:
+/// the separators of two arcs of one circle there are one line, along
+/// which the solvers place that circle only to the square root of the
+/// rounding.
+fn at_a_common_end(sites: &[Site; 3], centre: Point, radius: f64, scale: f64) -> bool {
+    let near = 1e-6 * scale;
+    if radius.abs() > near || sites.iter().any(|s| s.as_point().is_some()) {
+        return false;
+    }
+    let [a, b] = sites[0].ends();
+    let e = if a.distance(centre) <= b.distance(centre) { a } else { b };
+    e.distance(centre) <= near && sites[1..].iter().all(|s| s.has_endpoint(e))
 }
 
 /// The same vertex solved again where `touch` has an arc touched inside

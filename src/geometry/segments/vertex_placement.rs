@@ -24,11 +24,15 @@ pub(crate) fn circle_of_points(a: Point, b: Point, c: Point) -> (Point, f64) {
 
 /// The centre and radius of the vertex of three sites, some of them
 /// segments.
+///
+/// `on`: for a vertex cut into an edge, that edge's ends before, by which
+/// an arc's solver picks among circles in the same order the one on that
+/// edge (`arcs::arc_vertex`).
 #[inline]
-pub(crate) fn circle_of_sites(sites: &[Site; 3]) -> (Point, f64) {
+pub(crate) fn circle_of_sites_on(sites: &[Site; 3], on: Option<[Point; 2]>) -> (Point, f64) {
     if sites.iter().any(|s| matches!(s, Site::Arc(_))) {
         // arcs: their own solver, in floating point (`arcs::arc_vertex`)
-        return crate::geometry::arcs::arc_vertex::arc_vertex(sites).unwrap_or_else(|| among_sites(sites));
+        return crate::geometry::arcs::arc_vertex::arc_vertex_on(sites, on).unwrap_or_else(|| among_sites(sites));
     }
     // No circle in `f64`: one beyond its range, or (only when the
     // predicates were made to lie) none; then keep the topology, place the
