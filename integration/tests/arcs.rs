@@ -809,6 +809,21 @@ fn minimised_regressions() {
             ],
             2048.0,
         ),
+        // Two arcs of a circle cut where lines end on it (`arc_offsets`'
+        // random cut circles, seed 120), ends written to 8 decimals: their
+        // circles 6e-9 apart, not sharing an end. Their vertex with an end
+        // point lies in a cluster within 1e-8 of the centre, where the
+        // solvers' equations are one to rounding; nothing fitted, and the
+        // build was refused (the fallback, an arc's centre, asked the
+        // sites to touch its circle to 1e-9 of the radius, now 1e-7)
+        (
+            "two arcs of circles a rounding apart, not sharing an end",
+            vec![
+                arc(p(5.39035147, 2.0853777), p(7.04046698, -0.52083896), 0.23403504305444195),
+                arc(p(8.60739031, -1.01891763), p(12.321979, 2.38764228), 0.4293765944397774),
+            ],
+            16.0,
+        ),
     ];
     for (k, (name, pieces, size)) in cases.into_iter().enumerate() {
         check_all_ways(name, &pieces, size, k as u64);

@@ -117,11 +117,18 @@ fn arcs_of_one_circle(sites: &[Site; 3]) -> bool {
 /// two arcs whose stretch from the centre to the cusp ties them, the
 /// centre holds two vertices, one of them with the sites in either order
 /// (Chair-sofa-V).
+///
+/// Where nothing else fits, the sites are asked to touch the circle only
+/// to 1e-7 of its radius: two arcs of circles a rounding apart (ends
+/// written to 8 decimals), not sharing an end, have their vertices with a
+/// third site on the circle in a cluster that close to the centre, where
+/// the solvers' equations are one equation to rounding.
 fn centre_of_an_arc_touching_all(sites: &[Site; 3], in_order: bool) -> Option<(Point, f64)> {
+    let within = if in_order { 1e-9 } else { 1e-7 };
     sites.iter().find_map(|s| match s {
         Site::Arc(arc) => {
             let (c, r) = (arc.centre(), arc.radius());
-            let touching = sites.iter().all(|t| (t.distance(c) - r).abs() <= 1e-9 * r);
+            let touching = sites.iter().all(|t| (t.distance(c) - r).abs() <= within * r);
             (touching && !(in_order && clockwise_around(sites, c, r))).then_some((c, r))
         }
         _ => None,
