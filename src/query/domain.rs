@@ -250,13 +250,21 @@ impl Diagram {
         }));
         through.sort_unstable();
         through.dedup_by_key(|&mut (e, _)| e);
+        // A kinked corner that a separator passes through (see
+        // `ring_segment_sides`) has its cell on both sides: it tells none.
+        let split_corners: Vec<SiteId> = through
+            .iter()
+            .filter_map(|&(e, _)| self.edge(e))
+            .flat_map(|edge| edge.sites)
+            .filter(|s| matches!(role[s.index()], Role::RingCorner { cell } if cell != Location::Boundary))
+            .collect();
         // The location an edge has seen from the cell on the left of its
         // half-edge `h`, where that cell tells.
         let seen_from = |h: crate::HalfEdge| -> Option<Location> {
             let s = self.half_edge_cell(h)?;
             match role[s.index()] {
                 Role::RingSegment { left_inside } => side_of[h.index()].map(|left| inside_if(left == left_inside)),
-                Role::RingCorner { cell } => (cell != Location::Boundary).then_some(cell),
+                Role::RingCorner { cell } => (cell != Location::Boundary && !split_corners.contains(&s)).then_some(cell),
                 Role::Obstacle => obstacle_location[s.index()],
             }
         };
@@ -266,6 +274,11 @@ impl Diagram {
                 seen_from(h).or_else(|| seen_from(t)).unwrap_or(Location::Boundary)
             })
             .collect();
+        // an edge through a corner lies on both sides of it (at a kinked
+        // corner, its cell would say one)
+        for &(e, _) in &through {
+            edge[e.index()] = Location::Boundary;
+        }
         for &(e, j) in &joins {
             edge[e.index()] = match j.at {
                 JoinAt::Through(_) => Location::Boundary,
@@ -369,14 +382,29 @@ impl Diagram {
             // on the side it comes from, and one that does neither passes
             // through the corner.
             for (h, corner, to_left) in [(around[at_b], b, true), (around[at_a], a, false)] {
-                if !straight(corner) {
-                    continue;
-                }
                 let at_corner = |end: Option<EdgeEnd>| match end {
                     Some(EdgeEnd::Vertex(v)) => self.touches_only(v, corner),
                     _ => false,
                 };
                 let (from, to) = (at_corner(self.half_edge_origin(h)), at_corner(self.half_edge_target(h)));
+                if !straight(corner) {
+                    // A corner kinked by a rounding between an arc and the
+                    // next piece (ends written to 8 decimals: 1e-9 rad) has
+                    // a cell of no width on its reflex side, but the
+                    // construction may give it as a line through the
+                    // corner, in to the centre of the arc's circle: that
+                    // separator passes through the corner as at a
+                    // straight one, located by its ends
+                    let arc = matches!(self.sites[s.index()], Site::Arc(_));
+                    let at = self.point_of(corner);
+                    let through = arc
+                        && !from
+                        && !to
+                        && self.edge_end_points(h.edge(), at).is_some_and(|p| either_side_of(at, self.toward(s, corner), p));
+                    if !through {
+                        continue;
+                    }
+                }
                 match (from, to) {
                     (true, false) => side[h.index()] = Some(to_left),
                     (false, true) => side[h.index()] = Some(!to_left),
@@ -445,16 +473,7 @@ impl Diagram {
             if near(ends[0]) && near(ends[1]) {
                 continue; // an edge of no length at the corner
             }
-            // a point standing for each end: the vertex, or far out toward infinity
-            let far = |k: usize| match (ends[k], edge.ends[k], ends[1 - k]) {
-                (Some(p), _, _) => Some(p),
-                (None, EdgeEnd::Infinite { direction }, Some(q)) => {
-                    let reach = 4.0 * self.extent.max(q.distance(at));
-                    Some(Point::new(q.x + reach * direction.x, q.y + reach * direction.y))
-                }
-                _ => None,
-            };
-            let (Some(p0), Some(p1)) = (far(0), far(1)) else { continue };
+            let Some([p0, p1]) = self.edge_end_points(e, at) else { continue };
             // A separator (the corner and a piece ending there) lies on a
             // line through the corner: it passes through it when its ends
             // lie either side along that line. That is sure where the
@@ -464,12 +483,7 @@ impl Diagram {
                 let other = if t == u { v } else { u };
                 (other == corner).then(|| self.toward(t, corner))
             });
-            let either_side = along_separator.map(|q| {
-                // the separator runs across the piece's direction at the corner
-                let (dx, dy) = (q.x - at.x, q.y - at.y);
-                let side = |p: Point| (p.x - at.x) * dy - (p.y - at.y) * dx;
-                side(p0) * side(p1) < 0.0
-            });
+            let either_side = along_separator.map(|q| either_side_of(at, q, [p0, p1]));
             let passes = !near(ends[0]) && !near(ends[1]) && either_side.unwrap_or_else(|| self.edge_reach(e, at) <= tolerance);
             // along the join's normal: the line from an arc's centre there
             let normal = [u, v].iter().find_map(|&t| match self.sites[t.index()] {
@@ -495,6 +509,27 @@ impl Diagram {
             }
         }
         out
+    }
+
+    /// A point standing for each end of edge `e`: its vertex, or for an end
+    /// at infinity a point far out toward it (beyond the extent and the
+    /// other end's distance from `at`). `None` for an edge infinite at
+    /// both ends.
+    fn edge_end_points(&self, e: EdgeId, at: Point) -> Option<[Point; 2]> {
+        let edge = self.edge(e)?;
+        let ends = edge.ends.map(|end| match end {
+            EdgeEnd::Vertex(w) => Some(self.store.position[w.index()]),
+            EdgeEnd::Infinite { .. } => None,
+        });
+        let far = |k: usize| match (ends[k], edge.ends[k], ends[1 - k]) {
+            (Some(p), _, _) => Some(p),
+            (None, EdgeEnd::Infinite { direction }, Some(q)) => {
+                let reach = 4.0 * self.extent.max(q.distance(at));
+                Some(Point::new(q.x + reach * direction.x, q.y + reach * direction.y))
+            }
+            _ => None,
+        };
+        Some([far(0)?, far(1)?])
     }
 
     /// Among the half-edges `around` the cell of ring piece `s`, the one
@@ -1033,6 +1068,15 @@ enum JoinAt {
 /// corners (`Domain::through`); `None` when `e` is not one.
 fn inside_end(through: &[(EdgeId, usize)], e: EdgeId) -> Option<usize> {
     through.binary_search_by_key(&e, |&(edge, _)| edge).ok().map(|k| through[k].1)
+}
+
+/// Whether `ends` lie either side of the line through `at` across the
+/// direction from `at` to `toward` (a piece's direction at its end `at`,
+/// across which its separator there runs).
+fn either_side_of(at: Point, toward: Point, [p0, p1]: [Point; 2]) -> bool {
+    let (dx, dy) = (toward.x - at.x, toward.y - at.y);
+    let side = |p: Point| (p.x - at.x) * dy - (p.y - at.y) * dx;
+    side(p0) * side(p1) < 0.0
 }
 
 fn inside_if(inside: bool) -> Location {
