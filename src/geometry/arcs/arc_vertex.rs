@@ -26,6 +26,7 @@
 //! in `arc_predicates` compare these positions with tolerances.
 
 use super::exact_join;
+use crate::geometry::arithmetic::real::{power_of_two, rounded_log2};
 use crate::geometry::point::Point;
 use crate::geometry::site::Site;
 
@@ -48,7 +49,7 @@ pub(crate) fn arc_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
     if !(size > 0.0 && size.is_finite()) {
         return None;
     }
-    let unit = 2f64.powi(-(size.log2().round() as i32));
+    let unit = power_of_two(-(rounded_log2(size) as i32));
     let local = sites.map(|s| shifted(&s, origin, unit));
     let scale = local.iter().map(|s| site_size(s, Point::new(0.0, 0.0))).fold(0.0f64, f64::max);
     // a piece is touched at an end only where another site of the
@@ -371,17 +372,20 @@ fn solve(equations: &[Equation; 3], reach: Reach) -> [Option<(Point, f64)>; 2] {
     let Some(q) = equations.iter().position(Equation::is_circle) else { return [None; 2] };
     let base = equations[q].linear_part();
     // two linear equations: lines as they are, circles minus the base one
-    let linear: Vec<[f64; 4]> = (0..3)
-        .filter(|&k| k != q)
-        .map(|k| {
-            let e = equations[k].linear_part();
-            if equations[k].is_circle() {
-                std::array::from_fn(|i| e[i] - base[i])
-            } else {
-                e
-            }
-        })
-        .collect();
+    // (the other two in order, in an array: no allocation per pattern)
+    let others = match q {
+        0 => [1, 2],
+        1 => [0, 2],
+        _ => [0, 1],
+    };
+    let linear: [[f64; 4]; 2] = others.map(|k| {
+        let e = equations[k].linear_part();
+        if equations[k].is_circle() {
+            std::array::from_fn(|i| e[i] - base[i])
+        } else {
+            e
+        }
+    });
     let (n1, n2) = ([linear[0][0], linear[0][1], linear[0][2]], [linear[1][0], linear[1][1], linear[1][2]]);
     let (d1, d2) = (-linear[0][3], -linear[1][3]);
     let d = cross3(n1, n2);
@@ -561,9 +565,13 @@ pub(crate) fn direction_at_infinity(x: &Site, y: &Site, guess: Point) -> Option<
     const STEPS: usize = 2048;
     let step = 2.0 * std::f64::consts::PI / STEPS as f64;
     let mut best: Option<(f64, Point)> = None;
+    // (each step's end is the next one's start: its value is kept, not
+    // computed again, which halves the scan)
+    let mut f_next = f(0.0);
     for k in 0..STEPS {
         let (mut lo, mut hi) = (k as f64 * step, (k + 1) as f64 * step);
-        let (mut flo, fhi) = (f(lo), f(hi));
+        let (mut flo, fhi) = (f_next, f(hi));
+        f_next = fhi;
         // a zero at a step, to within rounding, is a root itself (a tie
         // along an arc's end, as for two equal half circles facing each
         // other, where the sign may not change across the step's ends); a

@@ -160,13 +160,16 @@ pub(crate) fn unit_near_inverse(x: f64) -> f64 {
     2f64.powi((-exponent).clamp(-1000, 1000))
 }
 
-/// `2^e`, exactly, for `e` within `±1000` (normal numbers): the same value
-/// as `2f64.powi(e)` there, from the bits rather than by repeated
+/// `2f64.powi(e)`, the same value: for a normal result (`e` from -1022 to
+/// 1023, where it is exact) from the bits rather than by repeated
 /// squaring (`powi` is a loop in a library call, on the arcs' hot paths).
 #[inline]
 pub(crate) fn power_of_two(e: i32) -> f64 {
-    debug_assert!((-1000..=1000).contains(&e));
-    f64::from_bits(((e + 1023) as u64) << 52)
+    if (-1022..=1023).contains(&e) {
+        f64::from_bits(((e + 1023) as u64) << 52)
+    } else {
+        2f64.powi(e)
+    }
 }
 
 /// `x.log2().round()`, the same value, without the logarithm where the
@@ -214,7 +217,7 @@ mod tests {
 
     #[test]
     fn power_of_two_is_powi() {
-        for e in -1000..=1000 {
+        for e in (-1100..=1100).chain([i32::MIN + 1, -5000, 5000, i32::MAX]) {
             assert_eq!(power_of_two(e).to_bits(), 2f64.powi(e).to_bits(), "2^{e}");
         }
     }
