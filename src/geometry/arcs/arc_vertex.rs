@@ -505,7 +505,7 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
         // whose `near` spans the whole piece)
         let end = [a, b]
             .into_iter()
-            .filter(|&e| plain[k].distance(e) <= near && (0..3).any(|j| j != k && plain[j].distance(e) <= near))
+            .filter(|&e| within(plain[k], e, near) && (0..3).any(|j| j != k && within(plain[j], e, near)))
             .min_by(|&e, &f| plain[k].distance(e).total_cmp(&plain[k].distance(f)));
         match (sites[k], end) {
             (Site::Segment { .. }, Some(e)) => {
@@ -533,6 +533,24 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
         (0..3).filter(|&k| matches!(touch[k], Touching::AtEnd(e) if !sites.iter().any(|s| s.as_point() == Some(e)))).count();
     let fitting = residual <= 1e-6 * (scale + radius.abs());
     Some(if fitting { unbacked as f64 + residual / (scale + radius.abs()) } else { 10.0 + residual })
+}
+
+/// `p.distance(q) <= near`, the same answer, without the square root (or
+/// `hypot`, for equal points) where it is plain: equal points, or a
+/// squared distance (normal, so within a few roundings of the true one)
+/// clearly beyond `near`'s square. `fit` asks this of every end of every
+/// site against every touching point, most of them far apart.
+#[inline]
+fn within(p: Point, q: Point, near: f64) -> bool {
+    if p == q {
+        return 0.0 <= near;
+    }
+    let squared = p.distance_squared(q);
+    let reach = near * near;
+    if squared.is_normal() && reach.is_normal() && squared > reach * (1.0 + 1e-9) {
+        return false;
+    }
+    p.distance(q) <= near
 }
 
 fn orientation_value(a: Point, b: Point, c: Point) -> f64 {
