@@ -21,6 +21,7 @@ use crate::diagram::{Diagram, SiteId};
 use crate::error::{Error, ErrorKind};
 use crate::geometry::scale::{Magnitudes, Scale, EXACT_SPAN};
 use crate::geometry::{CircularArc, Point, Site};
+use crate::query::Vertex;
 
 /// Inputs with arcs whose coordinates span more than the exact range are
 /// refused before any work: segments beyond it are attempted and checked
@@ -89,8 +90,7 @@ pub(super) fn diagram_with_arcs(
     // (not under fault injection, whose lying numbers misplace vertices on
     // purpose: there the topology is what is checked, by `accept`)
     if !crate::geometry::fault::active() {
-        vertices_touch_their_arcs(&diagram)?;
-        arc_vertices_are_empty(&diagram)?;
+        check_arc_vertices(&diagram)?;
     }
     let mut diagram = diagram;
     if !rings.is_empty() {
@@ -101,6 +101,36 @@ pub(super) fn diagram_with_arcs(
     Ok(diagram)
 }
 
+/// The checks that stand in for the certified predicates arcs do not
+/// have yet, in one pass over the vertices with an arc among their sites
+/// (`vertices_touch_their_arcs` and `arc_vertices_are_empty` say what
+/// each asks). A vertex that misses its sites is reported before any
+/// with a nearer site, as when the two ran one after the other.
+fn check_arc_vertices(diagram: &Diagram) -> Result<(), Error> {
+    let around = Neighbourhoods::of(diagram);
+    let mut nearer = None;
+    for v in arc_vertices(diagram) {
+        misses_its_sites(diagram, &v)?;
+        if nearer.is_none() {
+            nearer = has_a_nearer_site(diagram, &around, &v).err();
+        }
+    }
+    nearer.map_or(Ok(()), Err)
+}
+
+/// The finite vertices with an arc among their sites.
+fn arc_vertices(diagram: &Diagram) -> impl Iterator<Item = Vertex> + '_ {
+    let first_arc = diagram.sites.len() - diagram.arc_sites;
+    diagram.vertices().filter(move |v| v.sites.iter().any(|s| s.index() >= first_arc) && v.clearance.is_finite())
+}
+
+/// The input arc of a vertex with an arc among its sites, for the errors.
+fn arc_of(diagram: &Diagram, v: &Vertex) -> usize {
+    let first_arc = diagram.sites.len() - diagram.arc_sites;
+    let arc = v.sites.iter().find(|s| s.index() >= first_arc).map_or(0, |s| s.index() - first_arc);
+    diagram.arc_input.get(arc).copied().unwrap_or(0) as usize
+}
+
 /// The check that stands in for the certified predicates arcs do not have
 /// yet: every finite vertex with an arc among its sites is as far from
 /// each of its three sites as its clearance says (to 1e-7 of the input's
@@ -109,30 +139,28 @@ pub(super) fn diagram_with_arcs(
 /// with [`ErrorKind::Internal`] rather than return a diagram that looks
 /// valid and is not. (It does not see every wrong decision: a vertex can
 /// touch its sites and still have another site nearer.)
+#[cfg(test)]
 fn vertices_touch_their_arcs(diagram: &Diagram) -> Result<(), Error> {
-    let first_arc = diagram.sites.len() - diagram.arc_sites;
-    for v in diagram.vertices() {
-        if !v.sites.iter().any(|s| s.index() >= first_arc) || !v.clearance.is_finite() {
-            continue;
-        }
-        let tolerance = 1e-7 * (diagram.extent + v.clearance);
-        let miss =
-            v.sites.iter().map(|&s| (diagram.sites[s.index()].distance(v.position) - v.clearance).abs()).fold(0.0, f64::max);
-        if !(miss <= tolerance) {
-            let arc = v.sites.iter().find(|s| s.index() >= first_arc).map_or(0, |s| s.index() - first_arc);
-            let arc = diagram.arc_input.get(arc).copied().unwrap_or(0) as usize;
-            return Err(Error::new(
-                ErrorKind::Internal,
-                format!(
-                    "construction could not complete: a vertex of arc {arc} at ({}, {}) misses its sites by {miss:e}; \
-                     please report this input",
-                    v.position.x, v.position.y
-                ),
-                vec![arc],
-            ));
-        }
+    arc_vertices(diagram).try_for_each(|v| misses_its_sites(diagram, &v))
+}
+
+/// `vertices_touch_their_arcs` at one vertex.
+fn misses_its_sites(diagram: &Diagram, v: &Vertex) -> Result<(), Error> {
+    let tolerance = 1e-7 * (diagram.extent + v.clearance);
+    let miss = v.sites.iter().map(|&s| (diagram.sites[s.index()].distance(v.position) - v.clearance).abs()).fold(0.0, f64::max);
+    if miss <= tolerance {
+        return Ok(());
     }
-    Ok(())
+    let arc = arc_of(diagram, v);
+    Err(Error::new(
+        ErrorKind::Internal,
+        format!(
+            "construction could not complete: a vertex of arc {arc} at ({}, {}) misses its sites by {miss:e}; \
+             please report this input",
+            v.position.x, v.position.y
+        ),
+        vec![arc],
+    ))
 }
 
 /// The other half of that check: no site whose cell borders one of the
@@ -144,68 +172,123 @@ fn vertices_touch_their_arcs(diagram: &Diagram) -> Result<(), Error> {
 /// the circle's centre with a chord's end 2 nearer, passed the touching
 /// check and was answered. A site beyond the neighbouring cells could
 /// only be nearer if those cells were wrong too.
+#[cfg(test)]
 fn arc_vertices_are_empty(diagram: &Diagram) -> Result<(), Error> {
-    let first_arc = diagram.sites.len() - diagram.arc_sites;
+    let around = Neighbourhoods::of(diagram);
+    arc_vertices(diagram).try_for_each(|v| has_a_nearer_site(diagram, &around, &v))
+}
+
+/// `arc_vertices_are_empty` at one vertex.
+fn has_a_nearer_site(diagram: &Diagram, around: &Neighbourhoods, v: &Vertex) -> Result<(), Error> {
+    let reach = v.clearance - 1e-7 * (diagram.extent + v.clearance);
+    if !(reach > 0.0) {
+        return Ok(());
+    }
     let n = diagram.sites.len();
-    // the neighbouring cells of every cell, in one array (`start[s]..start[s + 1]`)
-    let mut start = vec![0usize; n + 1];
-    for e in diagram.edges() {
-        for s in e.sites.iter().filter(|s| s.index() < n) {
-            start[s.index() + 1] += 1;
-        }
-    }
-    for s in 0..n {
-        start[s + 1] += start[s];
-    }
-    let mut neighbours = vec![SiteId::from_index(0); start[n]];
-    let mut filled = start.clone();
-    for e in diagram.edges() {
-        let [a, b] = e.sites;
-        if a.index() < n && b.index() < n {
-            neighbours[filled[a.index()]] = b;
-            filled[a.index()] += 1;
-            neighbours[filled[b.index()]] = a;
-            filled[b.index()] += 1;
-        }
-    }
-    // whether `site` is nearer to `p` than `reach` (cheap bounds first:
-    // most neighbours are far)
-    let nearer = |site: &Site, p: Point, reach: f64| match *site {
-        Site::Arc(arc) => {
-            // off the ring between the circles of radius R ± reach: far
-            let (c, r) = (arc.centre(), arc.radius());
-            let squared = (c.x - p.x).powi(2) + (c.y - p.y).powi(2);
-            let inner = (r - reach).max(0.0);
-            squared < (r + reach).powi(2) && squared > inner * inner && arc.distance(p) < reach
-        }
-        _ => site.distance_squared(p) < reach * reach,
+    let neighbours = v.sites.iter().filter(|s| s.index() < n).flat_map(|s| around.of_cell(*s));
+    let Some(t) = neighbours.copied().find(|&t| !v.sites.contains(&t) && around.nearer(diagram, t, v.position, reach)) else {
+        return Ok(());
     };
-    for v in diagram.vertices() {
-        if !v.sites.iter().any(|s| s.index() >= first_arc) || !v.clearance.is_finite() {
-            continue;
+    let arc = arc_of(diagram, v);
+    let by = v.clearance - diagram.sites[t.index()].distance(v.position);
+    Err(Error::new(
+        ErrorKind::Internal,
+        format!(
+            "construction could not complete: a vertex of arc {arc} at ({}, {}) has another site {by:e} nearer \
+             than its own; please report this input",
+            v.position.x, v.position.y
+        ),
+        vec![arc],
+    ))
+}
+
+/// The neighbouring cells of every cell, in one array
+/// (`start[s]..start[s + 1]`), and where each site lies (`Bound`): what
+/// the emptiness check reads for each of the millions of neighbours it
+/// tests, in 32 bytes a site rather than a [`Site`]'s 96 (the check is
+/// bound by memory, not arithmetic).
+struct Neighbourhoods {
+    start: Vec<usize>,
+    neighbours: Vec<SiteId>,
+    bounds: Vec<Bound>,
+}
+
+/// Where a site lies, for a cheap test that it is out of a vertex's reach.
+#[derive(Clone, Copy)]
+enum Bound {
+    /// A point site: itself.
+    Point(Point),
+    /// A segment: within the radius of the centre (its midpoint, and the
+    /// distance to its farther end, which the disk holds by convexity).
+    Disk(Point, f64),
+    /// An arc: on the circle.
+    Circle(Point, f64),
+}
+
+impl Neighbourhoods {
+    fn of(diagram: &Diagram) -> Neighbourhoods {
+        let n = diagram.sites.len();
+        let edges = || diagram.edges.iter().map(|&h| [diagram.store.left(h), diagram.store.right(h)]);
+        let mut start = vec![0usize; n + 1];
+        for sites in edges() {
+            for s in sites.iter().filter(|s| s.index() < n) {
+                start[s.index() + 1] += 1;
+            }
         }
-        let reach = v.clearance - 1e-7 * (diagram.extent + v.clearance);
-        if !(reach > 0.0) {
-            continue;
+        for s in 0..n {
+            start[s + 1] += start[s];
         }
-        let around = v.sites.iter().filter(|s| s.index() < n).flat_map(|s| &neighbours[start[s.index()]..start[s.index() + 1]]);
-        let found = around.copied().find(|&t| !v.sites.contains(&t) && nearer(&diagram.sites[t.index()], v.position, reach));
-        if let Some(t) = found {
-            let arc = v.sites.iter().find(|s| s.index() >= first_arc).map_or(0, |s| s.index() - first_arc);
-            let arc = diagram.arc_input.get(arc).copied().unwrap_or(0) as usize;
-            let by = v.clearance - diagram.sites[t.index()].distance(v.position);
-            return Err(Error::new(
-                ErrorKind::Internal,
-                format!(
-                    "construction could not complete: a vertex of arc {arc} at ({}, {}) has another site {by:e} nearer \
-                     than its own; please report this input",
-                    v.position.x, v.position.y
-                ),
-                vec![arc],
-            ));
+        // (a slot for an edge to the point at infinity stays site 0:
+        // tested, harmlessly, as it always was)
+        let mut neighbours = vec![SiteId::from_index(0); start[n]];
+        let mut filled = start.clone();
+        for [a, b] in edges() {
+            if a.index() < n && b.index() < n {
+                neighbours[filled[a.index()]] = b;
+                filled[a.index()] += 1;
+                neighbours[filled[b.index()]] = a;
+                filled[b.index()] += 1;
+            }
+        }
+        let bounds = diagram.sites.iter().map(Bound::of).collect();
+        Neighbourhoods { start, neighbours, bounds }
+    }
+
+    fn of_cell(&self, s: SiteId) -> &[SiteId] {
+        &self.neighbours[self.start[s.index()]..self.start[s.index() + 1]]
+    }
+
+    /// Whether site `t` is nearer to `p` than `reach`: out of reach by
+    /// its bound (most neighbours are far), else by its distance.
+    fn nearer(&self, diagram: &Diagram, t: SiteId, p: Point, reach: f64) -> bool {
+        let site = || &diagram.sites[t.index()];
+        // `squared` (a squared distance, normal: within a few roundings
+        // of the true one) clearly beyond `r`
+        let beyond = |squared: f64, r: f64| squared >= (r * r * (1.0 + 1e-9)).max(f64::MIN_POSITIVE);
+        match self.bounds[t.index()] {
+            Bound::Point(q) => !beyond(q.distance_squared(p), reach) && site().distance_squared(p) < reach * reach,
+            Bound::Disk(m, r) => !beyond(m.distance_squared(p), reach + r) && site().distance_squared(p) < reach * reach,
+            Bound::Circle(c, r) => {
+                // off the ring between the circles of radius R ± reach: far
+                let squared = (c.x - p.x).powi(2) + (c.y - p.y).powi(2);
+                let inner = (r - reach).max(0.0);
+                squared < (r + reach).powi(2) && squared > inner * inner && site().distance(p) < reach
+            }
         }
     }
-    Ok(())
+}
+
+impl Bound {
+    fn of(site: &Site) -> Bound {
+        match *site {
+            Site::Point(p) => Bound::Point(p),
+            Site::Segment { a, b } => {
+                let m = Point::new(0.5 * a.x + 0.5 * b.x, 0.5 * a.y + 0.5 * b.y);
+                Bound::Disk(m, m.distance(a).max(m.distance(b)))
+            }
+            Site::Arc(arc) => Bound::Circle(arc.centre(), arc.radius()),
+        }
+    }
 }
 
 /// Inserts the arcs into the construction of the points and segments;
@@ -257,6 +340,7 @@ mod tests {
         b.add_point([2.0, 3.0]).unwrap();
         let mut diagram = b.build().unwrap();
         assert!(arc_vertices_are_empty(&diagram).is_ok());
+        assert!(vertices_touch_their_arcs(&diagram).is_ok() && check_arc_vertices(&diagram).is_ok());
         let first_arc = diagram.sites.len() - diagram.arc_sites;
         let v = diagram.vertices().find(|v| v.sites.iter().any(|s| s.index() >= first_arc)).unwrap().id;
         // three times as far as it is from its sites: its neighbours nearer
@@ -264,5 +348,9 @@ mod tests {
         let e = arc_vertices_are_empty(&diagram).unwrap_err();
         assert_eq!(e.kind(), ErrorKind::Internal);
         assert!(e.to_string().contains("nearer than its own"), "{e}");
+        // it misses its sites too, which the pass of both reports first
+        let e = vertices_touch_their_arcs(&diagram).unwrap_err();
+        assert!(e.to_string().contains("misses its sites"), "{e}");
+        assert_eq!(check_arc_vertices(&diagram).unwrap_err().to_string(), e.to_string());
     }
 }

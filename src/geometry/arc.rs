@@ -18,7 +18,7 @@
 //! *cone of influence*: the wedge at the centre between the rays through
 //! the endpoints. Beyond it the endpoints are nearer.
 
-use super::arithmetic::real::Real;
+use super::arithmetic::real::{power_of_two, rounded_log2, Real};
 use super::point::Point;
 use crate::error::{Error, ErrorKind};
 
@@ -317,8 +317,8 @@ impl CircularArc {
         // the differences in units of about the radius (a power of two,
         // exact): at 1e-300 their products would underflow to zero, at
         // 1e300 overflow
-        let e = (-self.radius.log2().round()).clamp(-1000.0, 1000.0) as i32;
-        let unit = 2f64.powi(e);
+        let e = (-rounded_log2(self.radius)).clamp(-1000.0, 1000.0) as i32;
+        let unit = power_of_two(e);
         let from_centre = |u: Point| ((u.x - c.x) * unit, (u.y - c.y) * unit);
         let cross = |u: Point, v: Point| {
             let ((ux, uy), (vx, vy)) = (from_centre(u), from_centre(v));

@@ -26,6 +26,7 @@
 //! in `arc_predicates` compare these positions with tolerances.
 
 use super::exact_join;
+use crate::geometry::arithmetic::real::{power_of_two, rounded_log2};
 use crate::geometry::point::Point;
 use crate::geometry::site::Site;
 
@@ -57,7 +58,7 @@ pub(crate) fn arc_vertex_on(sites: &[Site; 3], on: Option<[Point; 2]>) -> Option
     if !(size > 0.0 && size.is_finite()) {
         return None;
     }
-    let unit = 2f64.powi(-(size.log2().round() as i32));
+    let unit = power_of_two(-(rounded_log2(size) as i32));
     let local = sites.map(|s| shifted(&s, origin, unit));
     let on = on.map(|ends| ends.map(|p| Point::new((p.x - origin.x) * unit, (p.y - origin.y) * unit)));
     let scale = local.iter().map(|s| site_size(s, Point::new(0.0, 0.0))).fold(0.0f64, f64::max);
@@ -441,17 +442,20 @@ fn solve(equations: &[Equation; 3], reach: Reach) -> [Option<(Point, f64)>; 2] {
     let Some(q) = equations.iter().position(Equation::is_circle) else { return [None; 2] };
     let base = equations[q].linear_part();
     // two linear equations: lines as they are, circles minus the base one
-    let linear: Vec<[f64; 4]> = (0..3)
-        .filter(|&k| k != q)
-        .map(|k| {
-            let e = equations[k].linear_part();
-            if equations[k].is_circle() {
-                std::array::from_fn(|i| e[i] - base[i])
-            } else {
-                e
-            }
-        })
-        .collect();
+    // (the other two in order, in an array: no allocation per pattern)
+    let others = match q {
+        0 => [1, 2],
+        1 => [0, 2],
+        _ => [0, 1],
+    };
+    let linear: [[f64; 4]; 2] = others.map(|k| {
+        let e = equations[k].linear_part();
+        if equations[k].is_circle() {
+            std::array::from_fn(|i| e[i] - base[i])
+        } else {
+            e
+        }
+    });
     let (n1, n2) = ([linear[0][0], linear[0][1], linear[0][2]], [linear[1][0], linear[1][1], linear[1][2]]);
     let (d1, d2) = (-linear[0][3], -linear[1][3]);
     let d = cross3(n1, n2);
@@ -571,7 +575,7 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
         // whose `near` spans the whole piece)
         let end = [a, b]
             .into_iter()
-            .filter(|&e| plain[k].distance(e) <= near && (0..3).any(|j| j != k && plain[j].distance(e) <= near))
+            .filter(|&e| within(plain[k], e, near) && (0..3).any(|j| j != k && within(plain[j], e, near)))
             .min_by(|&e, &f| plain[k].distance(e).total_cmp(&plain[k].distance(f)));
         match (sites[k], end) {
             (Site::Segment { .. }, Some(e)) => {
@@ -599,6 +603,24 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
         (0..3).filter(|&k| matches!(touch[k], Touching::AtEnd(e) if !sites.iter().any(|s| s.as_point() == Some(e)))).count();
     let fitting = residual <= 1e-6 * (scale + radius.abs());
     Some(if fitting { unbacked as f64 + residual / (scale + radius.abs()) } else { 10.0 + residual })
+}
+
+/// `p.distance(q) <= near`, the same answer, without the square root (or
+/// `hypot`, for equal points) where it is plain: equal points, or a
+/// squared distance (normal, so within a few roundings of the true one)
+/// clearly beyond `near`'s square. `fit` asks this of every end of every
+/// site against every touching point, most of them far apart.
+#[inline]
+fn within(p: Point, q: Point, near: f64) -> bool {
+    if p == q {
+        return 0.0 <= near;
+    }
+    let squared = p.distance_squared(q);
+    let reach = near * near;
+    if squared.is_normal() && reach.is_normal() && squared > reach * (1.0 + 1e-9) {
+        return false;
+    }
+    p.distance(q) <= near
 }
 
 fn orientation_value(a: Point, b: Point, c: Point) -> f64 {
@@ -631,9 +653,13 @@ pub(crate) fn direction_at_infinity(x: &Site, y: &Site, guess: Point) -> Option<
     const STEPS: usize = 2048;
     let step = 2.0 * std::f64::consts::PI / STEPS as f64;
     let mut best: Option<(f64, Point)> = None;
+    // (each step's end is the next one's start: its value is kept, not
+    // computed again, which halves the scan)
+    let mut f_next = f(0.0);
     for k in 0..STEPS {
         let (mut lo, mut hi) = (k as f64 * step, (k + 1) as f64 * step);
-        let (mut flo, fhi) = (f(lo), f(hi));
+        let (mut flo, fhi) = (f_next, f(hi));
+        f_next = fhi;
         // a zero at a step, to within rounding, is a root itself (a tie
         // along an arc's end, as for two equal half circles facing each
         // other, where the sign may not change across the step's ends); a

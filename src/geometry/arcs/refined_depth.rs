@@ -131,13 +131,16 @@ pub(crate) fn refined_arc_depth(arc: &CircularArc, sites: &[Site; 3], centre: Po
 
 /// [`refined_arc_depth`] in the arithmetic `T`.
 fn refined_in<T: Fine>(arc: &CircularArc, sites: &[Site; 3], centre: Point, radius: f64) -> Option<f64> {
-    let features: Vec<Feature<T>> = sites.iter().map(|s| Feature::of(s, centre)).collect::<Option<_>>()?;
+    // (arrays, not Vecs: nine allocations a call in the tangent chains,
+    // where nearly every conflict is refined)
+    let [f0, f1, f2] = sites.each_ref().map(|s| Feature::of(s, centre));
+    let features = [f0?, f1?, f2?];
     let (mut x, mut y, mut t) = (lift::<T>(centre.x), lift::<T>(centre.y), lift::<T>(radius));
     for _ in 0..4 {
         // F_i = d_i(x) − t, J_i = (∂d_i/∂x, ∂d_i/∂y, −1): solve J·δ = −F
         // by Cramer's rule, the third column all −1
-        let rows: Vec<(T, T, T)> = features.iter().map(|f| f.distance(&x, &y)).collect();
-        let minus_f: Vec<T> = rows.iter().map(|(d, _, _)| t.sub(d)).collect();
+        let rows: [(T, T, T); 3] = features.each_ref().map(|f| f.distance(&x, &y));
+        let minus_f: [T; 3] = rows.map(|(d, _, _)| t.sub(&d));
         let gx = [rows[0].1, rows[1].1, rows[2].1];
         let gy = [rows[0].2, rows[1].2, rows[2].2];
         // det [c1 c2 (−1, −1, −1)] = −(c1 × c2)·(1, 1, 1)

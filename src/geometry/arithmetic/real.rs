@@ -159,3 +159,66 @@ pub(crate) fn unit_near_inverse(x: f64) -> f64 {
     let exponent = ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
     2f64.powi((-exponent).clamp(-1000, 1000))
 }
+
+/// `2f64.powi(e)`, the same value: for a normal result (`e` from -1022 to
+/// 1023, where it is exact) from the bits rather than by repeated
+/// squaring (`powi` is a loop in a library call, on the arcs' hot paths).
+#[inline]
+pub(crate) fn power_of_two(e: i32) -> f64 {
+    if (-1022..=1023).contains(&e) {
+        f64::from_bits(((e + 1023) as u64) << 52)
+    } else {
+        2f64.powi(e)
+    }
+}
+
+/// `x.log2().round()`, the same value, without the logarithm where the
+/// bits decide it: for a positive normal `x = m · 2^k` (`1 ≤ m < 2`) it is
+/// `k`, or `k + 1` when `m > √2`. Only a mantissa within 1e-9 of `√2`
+/// (where `log2` lands within its own rounding of a half, and `round`
+/// goes by that rounding) and the other numbers (zero, subnormal,
+/// negative, not finite) ask `log2` itself.
+#[inline]
+pub(crate) fn rounded_log2(x: f64) -> f64 {
+    if x > 0.0 && x.is_normal() {
+        let bits = x.to_bits();
+        let k = (bits >> 52) as i32 - 1023;
+        let m = f64::from_bits((bits & ((1u64 << 52) - 1)) | (1023u64 << 52));
+        if (m - std::f64::consts::SQRT_2).abs() > 1e-9 {
+            return f64::from(k + i32::from(m > std::f64::consts::SQRT_2));
+        }
+    }
+    x.log2().round()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::splitmix::SplitMix64;
+
+    #[test]
+    fn rounded_log2_is_log2_rounded() {
+        let mut rng = SplitMix64(7);
+        let sqrt2 = std::f64::consts::SQRT_2;
+        let special = [0.0, -0.0, -1.0, f64::MIN_POSITIVE, 1e-310, f64::MAX, f64::INFINITY, f64::NAN, 1.0, 2.0, 0.5, 3.0];
+        // random bit patterns (every exponent), and mantissas on both
+        // sides of √2 and at its neighbours
+        let random = (0..200_000).map(|_| f64::from_bits(rng.next_u64()));
+        let near = (-2000i64..2000).flat_map(|k| {
+            let m = f64::from_bits((sqrt2.to_bits() as i64 + k) as u64);
+            [-1000, -3, -1, 0, 1, 5, 1000].map(move |e| m * 2f64.powi(e))
+        });
+        let boundary = (-40i32..40).flat_map(|k| [sqrt2 * (1.0 + k as f64 * 2.5e-11), 2.0 - k.abs() as f64 * f64::EPSILON]);
+        for x in special.into_iter().chain(random).chain(near).chain(boundary) {
+            let (got, want) = (rounded_log2(x), x.log2().round());
+            assert!(got == want || got.is_nan() && want.is_nan(), "{x:e}: {got} against {want}");
+        }
+    }
+
+    #[test]
+    fn power_of_two_is_powi() {
+        for e in (-1100..=1100).chain([i32::MIN + 1, -5000, 5000, i32::MAX]) {
+            assert_eq!(power_of_two(e).to_bits(), 2f64.powi(e).to_bits(), "2^{e}");
+        }
+    }
+}

@@ -618,8 +618,10 @@ fn arc_arc_contact_by<const FAST: bool>(first: &ExactArc, second: &ExactArc) -> 
         return Some(contact);
     }
     // an endpoint of one inside the other (common endpoints are on the
-    // chord, never inside)
-    let inside = |arc: &ExactArc, p: Point| arc.on_circle::<FAST>(p) && arc.on_circle_inside(&DPoint::from_point(p));
+    // chord, never inside: no exact test for them, as `contains_point`)
+    let own_end = |arc: &ExactArc, p: Point| FAST && (p == arc.s || p == arc.e);
+    let inside =
+        |arc: &ExactArc, p: Point| !own_end(arc, p) && arc.on_circle::<FAST>(p) && arc.on_circle_inside(&DPoint::from_point(p));
     if inside(first, second.s) || inside(first, second.e) {
         return Some(ArcArcContact::EndOfSecondOnFirst);
     }
@@ -635,7 +637,6 @@ fn crossing_of_circles<const FAST: bool>(first: &ExactArc, second: &ExactArc) ->
     // The radical line A₂G₁ − A₁G₂ = 0: Lx·x + Ly·y + L0 = 0.
     let lx = &(&second.circle().a * &first.circle().b) - &(&first.circle().a * &second.circle().b);
     let ly = &(&second.circle().a * &first.circle().c) - &(&first.circle().a * &second.circle().c);
-    let l0 = &(&second.circle().a * &first.circle().f) - &(&first.circle().a * &second.circle().f);
     if lx.is_zero() && ly.is_zero() {
         return None; // concentric, distinct: disjoint
     }
@@ -662,6 +663,8 @@ fn crossing_of_circles<const FAST: bool>(first: &ExactArc, second: &ExactArc) ->
         };
         return (side(first) == first.tau && side(second) == second.tau).then_some(ArcArcContact::Cross);
     }
+    // (L0 only here: a common endpoint above needs none)
+    let l0 = &(&second.circle().a * &first.circle().f) - &(&first.circle().a * &second.circle().f);
     let n = &lx.square() + &ly.square();
     let p0 = DPoint { x: -&(&l0 * &lx), y: -&(&l0 * &ly) };
     let alpha = &first.circle().a;
