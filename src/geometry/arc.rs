@@ -437,7 +437,7 @@ fn circumcentre(a: Point, b: Point, c: Point) -> Point {
     // in units of the triangle's size (a power of two), so that the
     // squares neither overflow near 1e300 nor underflow near 1e-300
     let size = [b.x - a.x, b.y - a.y, c.x - a.x, c.y - a.y].iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    let unit = if size > 0.0 && size.is_finite() { 2f64.powi(-(size.log2().round() as i32)) } else { 1.0 };
+    let unit = if size > 0.0 && size.is_finite() { power_of_two(-(rounded_log2(size) as i32)) } else { 1.0 };
     let (bx, by, cx, cy) = ((b.x - a.x) * unit, (b.y - a.y) * unit, (c.x - a.x) * unit, (c.y - a.y) * unit);
     let d = 2.0 * (bx * cy - by * cx);
     let (b2, c2) = (bx * bx + by * by, cx * cx + cy * cy);

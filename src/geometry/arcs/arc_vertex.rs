@@ -101,8 +101,10 @@ pub(crate) fn arc_vertex_on(sites: &[Site; 3], on: Option<[Point; 2]>) -> Option
 /// equations are then one equation, which leaves the solvers a plane of
 /// solutions (every point of the circle is as near from its centre).
 fn arcs_of_one_circle(sites: &[Site; 3]) -> bool {
-    let arcs: Vec<_> = sites.iter().filter_map(|s| if let Site::Arc(a) = s { Some(*a) } else { None }).collect();
-    arcs.len() >= 2 && arcs[1..].iter().all(|a| a.has_circle(arcs[0].centre(), arcs[0].radius()))
+    let mut arcs = sites.iter().filter_map(|s| if let Site::Arc(a) = s { Some(a) } else { None });
+    let Some(first) = arcs.next() else { return false };
+    let mut others = arcs.peekable();
+    others.peek().is_some() && others.all(|a| a.has_circle(first.centre(), first.radius()))
 }
 
 /// The centre of an arc among the sites where all three are as far from

@@ -157,18 +157,22 @@ pub(crate) fn norm(dx: f64, dy: f64) -> f64 {
 #[inline]
 pub(crate) fn unit_near_inverse(x: f64) -> f64 {
     let exponent = ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
-    2f64.powi((-exponent).clamp(-1000, 1000))
+    power_of_two((-exponent).clamp(-1000, 1000))
 }
 
-/// `2f64.powi(e)`, the same value: for a normal result (`e` from -1022 to
-/// 1023, where it is exact) from the bits rather than by repeated
-/// squaring (`powi` is a loop in a library call, on the arcs' hot paths).
+/// `2f64.powi(e)` for a normal result (`e` from -1022 to 1023), the same
+/// value from the bits rather than by repeated squaring (`powi` is a loop
+/// in a library call, on the arcs' hot paths; and no `powi` in any
+/// branch: the compiler hoists the call out of it and pays it every
+/// time). Beyond, where no caller goes: infinity above, zero below.
 #[inline]
 pub(crate) fn power_of_two(e: i32) -> f64 {
     if (-1022..=1023).contains(&e) {
         f64::from_bits(((e + 1023) as u64) << 52)
+    } else if e > 0 {
+        f64::INFINITY
     } else {
-        2f64.powi(e)
+        0.0
     }
 }
 
@@ -217,8 +221,14 @@ mod tests {
 
     #[test]
     fn power_of_two_is_powi() {
-        for e in (-1100..=1100).chain([i32::MIN + 1, -5000, 5000, i32::MAX]) {
+        for e in -1022..=1023 {
             assert_eq!(power_of_two(e).to_bits(), 2f64.powi(e).to_bits(), "2^{e}");
+        }
+        for e in [1024, 5000, i32::MAX] {
+            assert_eq!(power_of_two(e), f64::INFINITY);
+        }
+        for e in [-1023, -1100, -5000, i32::MIN] {
+            assert_eq!(power_of_two(e), 0.0);
         }
     }
 }
