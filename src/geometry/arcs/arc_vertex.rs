@@ -564,7 +564,6 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
             _ => {}
         }
     }
-    let residual: f64 = sites.iter().map(|s| (s.distance(centre) - radius.max(0.0)).abs()).sum();
     // where two sites touch at one point (a piece at its end, beside that
     // end's point site or another piece ending there), the piece is taken
     // a hair along itself from there: the limit order of the touching
@@ -597,6 +596,8 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
     if order < -1e-12 * scale * scale {
         return None;
     }
+    // (after the order, which rejects one root of most patterns)
+    let residual: f64 = sites.iter().map(|s| (s.distance(centre) - radius.max(0.0)).abs()).sum();
     // Two pieces touched at their common end with no point site there
     // stand for that end's own vertex (a circle through it), which fits
     // the distances too; it is this triple's vertex only where nothing
