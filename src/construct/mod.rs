@@ -125,12 +125,20 @@ enum Sites {
 /// first and second endpoint), insert the points and then the segments,
 /// renumber.
 fn build_sites(points: &[Point], segments: &[[Point; 2]], ring: &[bool]) -> Result<Sites, Error> {
-    build_sites_and_arcs(points, segments, ring, &[])
+    build_sites_and_arcs(points, segments, ring, &[], &|| Ok(()))
 }
 
 /// [`build_sites`] with circular arcs too, inserted after the segments:
 /// `points` ends with each arc's start and end (`with_arcs`).
-fn build_sites_and_arcs(points: &[Point], segments: &[[Point; 2]], ring: &[bool], arcs: &[CircularArc]) -> Result<Sites, Error> {
+/// `check_arcs` is the arcs' input check, run beside the point insertions
+/// with the segments' (its error first: it is the check asked first).
+fn build_sites_and_arcs(
+    points: &[Point],
+    segments: &[[Point; 2]],
+    ring: &[bool],
+    arcs: &[CircularArc],
+    check_arcs: &(dyn Fn() -> Result<(), Error> + Sync),
+) -> Result<Sites, Error> {
     // P<k> numbers the distinct points of this list by first appearance.
     let mut all: Vec<Point> = Vec::with_capacity(points.len() + 2 * segments.len());
     all.extend_from_slice(points);
@@ -143,13 +151,14 @@ fn build_sites_and_arcs(points: &[Point], segments: &[[Point; 2]], ring: &[bool]
     // The points go in whatever the input check finds (a repeated or
     // zero-length segment only repeats points), so on large inputs the
     // check runs on a second thread meanwhile; an error discards the points.
-    let (checked, stage) = if segments.len() >= PARALLEL_CHECK_FROM {
-        let (checked, stage) =
-            run_beside(|| check_segments(points, segments, ring, scale), || insert_points(&scaled, segments.len()));
+    let check = || (check_arcs(), check_segments(points, segments, ring, scale));
+    let ((arcs_checked, checked), stage) = if segments.len() + arcs.len() >= PARALLEL_CHECK_FROM {
+        let (checked, stage) = run_beside(check, || insert_points(&scaled, segments.len()));
         (checked, Some(stage))
     } else {
-        (check_segments(points, segments, ring, scale), None)
+        (check(), None)
     };
+    arcs_checked?;
     let checked = checked.map_err(|c| conflict_error(&c, segments))?;
     if let Some(pieces) = shared_stretches::shared_pieces(&checked, points, segments, ring) {
         // (the points inserted beside the check are dropped: the diagram is

@@ -66,17 +66,22 @@ pub(super) fn diagram_with_arcs(
             Vec::new(),
         ));
     }
-    // arcs against points, segments and arcs, exactly; segments against
-    // segments (and the arcs' endpoints, as points) in `build_sites`
-    super::input_check::arcs::check_arcs(points, segments, arcs)?;
-    refuse_beyond_the_exact_range(points, segments, arcs)?;
+    // arcs against points, segments and arcs, exactly (beside the point
+    // insertions on large inputs); segments against segments (and the
+    // arcs' endpoints, as points) in `build_sites`
+    let check_arcs = || super::input_check::arcs::check_arcs(points, segments, arcs);
+    if let Err(range) = refuse_beyond_the_exact_range(points, segments, arcs) {
+        // (crossing arcs are reported first, as the check asked first)
+        check_arcs()?;
+        return Err(range);
+    }
     let mut all = Vec::with_capacity(points.len() + 2 * arcs.len());
     all.extend_from_slice(points);
     for arc in arcs {
         all.push(arc.start());
         all.push(arc.end());
     }
-    let (mut diagram, outcome) = match super::build_sites_and_arcs(&all, segments, &[], arcs)? {
+    let (mut diagram, outcome) = match super::build_sites_and_arcs(&all, segments, &[], arcs, &check_arcs)? {
         Sites::Built(diagram, outcome) => (*diagram, outcome),
         Sites::Shared(..) => unreachable!("stretches are shared only by polygon rings"),
     };
