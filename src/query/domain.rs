@@ -252,19 +252,21 @@ impl Diagram {
         through.dedup_by_key(|&mut (e, _)| e);
         // A kinked corner that a separator passes through (see
         // `ring_segment_sides`) has its cell on both sides: it tells none.
-        let split_corners: Vec<SiteId> = through
-            .iter()
-            .filter_map(|&(e, _)| self.edge(e))
-            .flat_map(|edge| edge.sites)
-            .filter(|s| matches!(role[s.index()], Role::RingCorner { cell } if cell != Location::Boundary))
-            .collect();
+        // (a mask by site: asked for every edge, and a curved part can have
+        // thousands of such corners)
+        let mut split_corner = vec![false; self.sites.len()];
+        for s in through.iter().filter_map(|&(e, _)| self.edge(e)).flat_map(|edge| edge.sites) {
+            if matches!(role[s.index()], Role::RingCorner { cell } if cell != Location::Boundary) {
+                split_corner[s.index()] = true;
+            }
+        }
         // The location an edge has seen from the cell on the left of its
         // half-edge `h`, where that cell tells.
         let seen_from = |h: crate::HalfEdge| -> Option<Location> {
             let s = self.half_edge_cell(h)?;
             match role[s.index()] {
                 Role::RingSegment { left_inside } => side_of[h.index()].map(|left| inside_if(left == left_inside)),
-                Role::RingCorner { cell } => (cell != Location::Boundary && !split_corners.contains(&s)).then_some(cell),
+                Role::RingCorner { cell } => (cell != Location::Boundary && !split_corner[s.index()]).then_some(cell),
                 Role::Obstacle => obstacle_location[s.index()],
             }
         };
