@@ -154,7 +154,10 @@ fn endpoint_depth(
         // the arc enters it at an angle of rounding size, which the
         // floating-point tangent cannot tell from running along it.
         // Likewise with a point and a piece ending there (the circle
-        // through `end` touching the piece at that point). (Not where the
+        // through `end` touching the piece at that point), and with a
+        // point and another arc (a circle through `end` and the point
+        // touching the arc's circle: LibreCAD's t2.dxf, two half circles
+        // an ulp below a point's line). (Not where the
         // vertex's circle is the arc's own to rounding, a quarter circle
         // of a rounded bulge beside its other quarter's end: there the
         // exact sign is the bulge's rounding, which the solvers, working
@@ -163,6 +166,9 @@ fn endpoint_depth(
             [Site::Point(b), Site::Point(c)] => exact_join::leaves_into_circle(arc, end, b, c),
             [Site::Point(q), piece] | [piece, Site::Point(q)] if piece.has_endpoint(q) => {
                 exact_join::leaves_into_tangent_circle(arc, end, q, &piece)
+            }
+            [Site::Point(q), Site::Arc(other)] | [Site::Arc(other), Site::Point(q)] => {
+                exact_join::leaves_into_circle_touching(arc, end, q, &other, centre)
             }
             _ => None,
         };

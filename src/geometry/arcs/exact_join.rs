@@ -12,7 +12,10 @@
 //! caller keeps its floating-point answer).
 
 use crate::geometry::arc::CircularArc;
+use crate::geometry::arithmetic::bigfloat::BigFloat;
 use crate::geometry::arithmetic::expansion::Expansion;
+use crate::geometry::arithmetic::radical_tower::{exact_evaluation, Algebraic};
+use crate::geometry::arithmetic::real::Real;
 use crate::geometry::point::Point;
 use crate::geometry::predicates::exact_orientation;
 use crate::geometry::site::Site;
@@ -294,6 +297,86 @@ pub(crate) fn leaves_into_tangent_circle(arc: &CircularArc, end: Point, q: Point
     Some(dot_sign(&tangent, &toward)? * denominator)
 }
 
+/// Whether `arc`, leaving its endpoint `end`, points into the circle
+/// through `end` and the point `q` that touches the circle of the arc
+/// `other` (1), out of it (-1) or along it (0), exactly; of the up to two
+/// such circles, the one whose centre is nearer `near` (the vertex as
+/// floating point placed it). `None` where the two are not told apart
+/// clearly, where either arc's datum leaves the range, or where the exact
+/// evaluation gives up.
+///
+/// The centre is `end + w/2 + s·w⊥` (`w = q − end`, on the bisector of
+/// `end` and `q`). With `c` the other arc's centre less `end` and `r²` its
+/// squared radius, touching (`|centre − c| = R ± r`, `R² = |w|²(1/4 + s²)`)
+/// is `(a + b·s)² = r²|w|²(1 + 4s²)` with `a = |c|² − r² − w·c` and
+/// `b = −2 w⊥·c`: a quadratic in `s` with rational coefficients, whose
+/// root is one square root. The arc's tangent `t` points into the circle
+/// when `t·(w/2 + s·w⊥) > 0`. Its sign is decided in the radical tower
+/// (`arithmetic::radical_tower`), and the root is chosen in 512-bit
+/// floats: near a tie the circle can be 1e16 across, its centre a
+/// rounding of the bisector's direction off the floating-point one.
+pub(crate) fn leaves_into_circle_touching(
+    arc: &CircularArc,
+    end: Point,
+    q: Point,
+    other: &CircularArc,
+    near: Point,
+) -> Option<i8> {
+    if end == q || !near.is_finite() {
+        return None;
+    }
+    // the quadratic's coefficients (a·s² + 2b·s + c) and discriminant
+    // (b² − ac) in any arithmetic
+    fn quadratic<R: Real>(other: &CircularArc, end: Point, q: Point, lift: &impl Fn(f64) -> R) -> Option<[R; 4]> {
+        let (cx, cy, _) = other.circle_in(lift)?;
+        let (sx, sy) = (lift(other.start().x), lift(other.start().y));
+        let squared_radius = cx.sub(&sx).mul(&cx.sub(&sx)).add(&cy.sub(&sy).mul(&cy.sub(&sy)));
+        let (cx, cy) = (cx.sub(&lift(end.x)), cy.sub(&lift(end.y)));
+        let (wx, wy) = (lift(q.x).sub(&lift(end.x)), lift(q.y).sub(&lift(end.y)));
+        let ww = wx.mul(&wx).add(&wy.mul(&wy));
+        let a = cx.mul(&cx).add(&cy.mul(&cy)).sub(&squared_radius).sub(&wx.mul(&cx).add(&wy.mul(&cy)));
+        // w⊥ = (−wy, wx)
+        let b = wy.mul(&cx).sub(&wx.mul(&cy)).mul(&lift(2.0));
+        let g = squared_radius.mul(&ww);
+        let four_g = g.mul(&lift(4.0));
+        let discriminant = g.mul(&b.mul(&b).add(&a.mul(&a).mul(&lift(4.0))).sub(&four_g));
+        Some([b.mul(&b).sub(&four_g), a.mul(&b), a.mul(&a).sub(&g), discriminant])
+    }
+    // the two roots, and which sign of the square root each takes
+    let big = |x: f64| BigFloat::from_f64(x, 512);
+    let [qa, qb, _, discriminant] = quadratic(other, end, q, &big)?;
+    if qa.signum() == 0 || discriminant.signum() < 0 {
+        return None;
+    }
+    let root = discriminant.sqrt();
+    let roots = [-1.0, 1.0].map(|sign: f64| qb.neg().add(&root.mul(&big(sign))).div(&qa).to_f64());
+    let (wx, wy) = (q.x - end.x, q.y - end.y);
+    let s_near = ((near.x - end.x) * -wy + (near.y - end.y) * wx) / (wx * wx + wy * wy);
+    let [d0, d1] = roots.map(|s| (s - s_near).abs());
+    let sign_of_root = match () {
+        _ if !(d0.is_finite() && d1.is_finite()) => return None,
+        _ if 4.0 * d0 < d1 => -1.0,
+        _ if 4.0 * d1 < d0 => 1.0,
+        _ => return None,
+    };
+    exact_evaluation(|| {
+        let lift = |x: f64| Algebraic::from_f64(x);
+        let [qa, qb, _, discriminant] = quadratic(other, end, q, &lift)?;
+        let s = qb.neg().add(&discriminant.sqrt().mul(&lift(sign_of_root))).div(&qa);
+        // the tangent: the radius at `end` turned a quarter, toward the
+        // side the arc curves away from
+        let (cx, cy, _) = arc.circle_in(&lift)?;
+        let (rx, ry) = (lift(end.x).sub(&cx), lift(end.y).sub(&cy));
+        let (tx, ty) = if curves_left(arc, end) { (ry.neg(), rx) } else { (ry, rx.neg()) };
+        let (wx, wy) = (lift(q.x).sub(&lift(end.x)), lift(q.y).sub(&lift(end.y)));
+        // t·(w/2 + s·w⊥), doubled
+        let along = tx.mul(&wx).add(&ty.mul(&wy));
+        let across = tx.mul(&wy.neg()).add(&ty.mul(&wx));
+        Some(along.add(&across.mul(&s).mul(&lift(2.0))).signum() as i8)
+    })
+    .flatten()
+}
+
 /// [`beyond_centre`] for a point `q`: the circle through the arc's ends and
 /// `q` has its centre beyond the arc's when `q` lies outside the arc's
 /// circle on the side of the arc's middle, or inside it on the other side.
@@ -545,6 +628,91 @@ mod tests {
             }
         }
         assert!(clear > 3500, "{clear}");
+    }
+
+    /// The circles through `end` and `q` touching another arc's circle,
+    /// found by bisection along the bisector (no quadratic): where the
+    /// tangent clearly enters or leaves one, and the other is far, the
+    /// exact sign agrees.
+    #[test]
+    fn leaving_into_a_circle_touching_an_arc_agrees_with_bisection_where_it_is_clear() {
+        let mut unit = uniform(0x6a09_e667_f3bc_c908);
+        let mut clear = 0;
+        for _ in 0..500 {
+            let (s, e) = (p(unit() * 4.0, unit() * 4.0), p(unit() * 4.0, unit() * 4.0));
+            let arc = CircularArc::from_bulge(s, e, unit() * 4.0 - 2.0).unwrap();
+            let (os, oe) = (p(unit() * 8.0 - 2.0, unit() * 8.0 - 2.0), p(unit() * 8.0 - 2.0, unit() * 8.0 - 2.0));
+            let other = CircularArc::from_bulge(os, oe, unit() * 4.0 - 2.0).unwrap();
+            let q = p(unit() * 8.0 - 2.0, unit() * 8.0 - 2.0);
+            let (c, r) = (other.centre(), other.radius());
+            for end in [s, e] {
+                let (wx, wy) = (q.x - end.x, q.y - end.y);
+                let at = |t: f64| p(end.x + 0.5 * wx - t * wy, end.y + 0.5 * wy + t * wx);
+                let mut roots = Vec::new();
+                for sigma in [1.0, -1.0] {
+                    let f = |t: f64| at(t).distance(c) - (at(t).distance(end) + sigma * r).abs();
+                    let grid: Vec<f64> =
+                        (-300i32..=300).map(|k| f64::from(k).signum() * 10f64.powf(f64::from(k.abs()) / 50.0 - 3.0)).collect();
+                    for pair in grid.windows(2) {
+                        let (mut lo, mut hi) = (pair[0], pair[1]);
+                        if f(lo) * f(hi) >= 0.0 {
+                            continue;
+                        }
+                        for _ in 0..100 {
+                            let mid = 0.5 * (lo + hi);
+                            if f(lo) * f(mid) <= 0.0 {
+                                hi = mid
+                            } else {
+                                lo = mid
+                            }
+                        }
+                        roots.push(0.5 * (lo + hi));
+                    }
+                }
+                for &t in &roots {
+                    let apart = roots.iter().filter(|&&u| u != t).all(|&u| (u - t).abs() > 0.5 * (1.0 + t.abs()));
+                    let centre = at(t);
+                    let tangent = arc.tangent_into(end);
+                    let (vx, vy) = (centre.x - end.x, centre.y - end.y);
+                    let along = (tangent.x * vx + tangent.y * vy) / vx.hypot(vy);
+                    if apart && along.abs() > 1e-6 && (centre.distance(c) - r).abs() > 1e-6 {
+                        clear += 1;
+                        let expected = if along > 0.0 { 1 } else { -1 };
+                        assert_eq!(
+                            leaves_into_circle_touching(&arc, end, q, &other, centre),
+                            Some(expected),
+                            "{arc:?} {end:?} {q:?} {other:?} {t}"
+                        );
+                    }
+                }
+            }
+        }
+        assert!(clear > 500, "{clear}");
+    }
+
+    /// LibreCAD's t2.dxf minimised: two half circles whose tops lie
+    /// 1.8e-15 below the line of a point at height 0. The circle through
+    /// the second's top and that point touching the first is 2e15 across;
+    /// the second arc leaves its top 3e-16 rad into it, which floating
+    /// point took for along it.
+    #[test]
+    fn a_circle_touching_an_arc_2e15_across_is_entered_exactly() {
+        let top = -1.7763568394002505e-15;
+        let first = CircularArc::from_bulge(p(4.0, -4.000000000000002), p(4.0, top), 1.0).unwrap();
+        let second = CircularArc::from_bulge(p(11.0, top), p(11.0, -4.000000000000002), 1.0).unwrap();
+        let (end, q) = (p(11.0, top), p(15.0, 0.0));
+        let near = p(12.057190958417937, 2123017224175257.8);
+        let t = second.tangent_into(end);
+        let (vx, vy) = (near.x - end.x, near.y - end.y);
+        assert!(((t.x * vx + t.y * vy) / vx.hypot(vy)).abs() < 1e-12, "a tie to floating point");
+        let sign = leaves_into_circle_touching(&second, end, q, &first, near);
+        assert!(sign.is_some_and(|s| s != 0), "{sign:?}");
+        // mirrored (across the x axis, each arc reversed to keep its side),
+        // the answer is the same
+        let m = |a: Point| p(a.x, -a.y);
+        let first_m = CircularArc::from_bulge(m(first.end()), m(first.start()), 1.0).unwrap();
+        let second_m = CircularArc::from_bulge(m(second.end()), m(second.start()), 1.0).unwrap();
+        assert_eq!(leaves_into_circle_touching(&second_m, m(end), m(q), &first_m, m(near)), sign);
     }
 
     #[test]
