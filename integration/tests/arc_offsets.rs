@@ -1320,45 +1320,65 @@ fn random_circles_cut_at(ox: f64, oy: f64) {
         if seed % 2 == 1 {
             lines.push([points[0], points[1]]);
         }
-        let build = |ring: &Ring| domain_with_lines(std::slice::from_ref(ring), &lines);
-        let d = match build(&ring) {
-            Ok(d) => d,
-            Err(e) => {
-                // refused by the build's checks of its arc vertices
-                assert_eq!(e.kind(), segvoronoi::ErrorKind::Internal, "seed {seed}: {e}: {ring:?} {lines:?}");
-                eprintln!("refused: seed {seed}: {e}: {ring:?} {lines:?}");
-                refused.push((seed, 0.0));
-                continue;
-            }
-        };
-        let chords: Ring = densified_ring(&ring).into_iter().map(|q| (q, 0.0)).collect();
-        let reference = build(&chords).unwrap();
-        for distance in [0.3, 1.0, -0.3, -0.25 * r] {
-            let what = format!("seed {seed} ({ox}, {oy}) at {distance}: {ring:?} {lines:?}");
-            let offset = match d.offset(distance) {
-                Ok(offset) => offset,
-                Err(e) => {
-                    // refused by the offsets' checks, never answered wrong
-                    assert_eq!(e.kind(), segvoronoi::ErrorKind::Internal, "{what}: {e}");
-                    eprintln!("refused: {what}: {e}");
-                    refused.push((seed, distance));
-                    continue;
-                }
-            };
-            for l in &offset.loops {
-                let m = l.pieces.len();
-                assert!((0..m).all(|j| l.pieces[j].to() == l.pieces[(j + 1) % m].from()), "{what}: an open loop");
-            }
-            let want = reference.offset(distance).unwrap();
-            assert_eq!(offset.loops.len(), want.loops.len(), "{what}: loops");
-            let (area, want) = (offset.area(), want.area());
-            assert!((area - want).abs() <= 1e-3 * want.abs(), "{what}: area {area} against the chords' {want}");
+        // every tenth seed also reversed, and mirrored (x to −x: each arc's
+        // bulge negated, the ring turning the other way)
+        let mut ways = vec![("as drawn", ring.clone(), lines.clone())];
+        if seed % 10 == 0 {
+            let reversed_lines: Vec<[Point; 2]> = lines.iter().rev().map(|&[a, b]| [b, a]).collect();
+            ways.push(("reversed", reverse_ring(&ring), reversed_lines));
+            let m = |q: Point| p(-q.x, q.y);
+            let mirrored: Ring = ring.iter().map(|&(q, bulge)| (m(q), -bulge)).collect();
+            ways.push(("mirrored", mirrored, lines.iter().map(|&[a, b]| [m(a), m(b)]).collect()));
+        }
+        for (way, ring, lines) in &ways {
+            check_cut_circle(&format!("seed {seed} ({ox}, {oy}) {way}"), ring, lines, r, &mut refused);
         }
         cases += 1;
     }
     assert!(cases >= 16, "{cases} cases");
     eprintln!("{cases} circles, offsets refused: {refused:?}");
     assert!(refused.is_empty(), "{} offsets refused: {refused:?}", refused.len());
+}
+
+/// One case of `random_circles_cut_at` (`what` names it): the offsets of
+/// the cut circle `ring` of radius `r` with `lines` at four distances
+/// against the same with every arc as 256 chords. A refusal (never a
+/// wrong answer) is pushed to `refused`.
+fn check_cut_circle(what: &str, ring: &Ring, lines: &[[Point; 2]], r: f64, refused: &mut Vec<(String, f64)>) {
+    let build = |ring: &Ring| domain_with_lines(std::slice::from_ref(ring), lines);
+    let d = match build(ring) {
+        Ok(d) => d,
+        Err(e) => {
+            // refused by the build's checks of its arc vertices
+            assert_eq!(e.kind(), segvoronoi::ErrorKind::Internal, "{what}: {e}: {ring:?} {lines:?}");
+            eprintln!("refused: {what}: {e}: {ring:?} {lines:?}");
+            refused.push((what.to_string(), 0.0));
+            return;
+        }
+    };
+    let chords: Ring = densified_ring(ring).into_iter().map(|q| (q, 0.0)).collect();
+    let reference = build(&chords).unwrap();
+    for distance in [0.3, 1.0, -0.3, -0.25 * r] {
+        let case = format!("{what} at {distance}: {ring:?} {lines:?}");
+        let offset = match d.offset(distance) {
+            Ok(offset) => offset,
+            Err(e) => {
+                // refused by the offsets' checks, never answered wrong
+                assert_eq!(e.kind(), segvoronoi::ErrorKind::Internal, "{case}: {e}");
+                eprintln!("refused: {case}: {e}");
+                refused.push((what.to_string(), distance));
+                continue;
+            }
+        };
+        for l in &offset.loops {
+            let m = l.pieces.len();
+            assert!((0..m).all(|j| l.pieces[j].to() == l.pieces[(j + 1) % m].from()), "{case}: an open loop");
+        }
+        let want = reference.offset(distance).unwrap();
+        assert_eq!(offset.loops.len(), want.loops.len(), "{case}: loops");
+        let (area, want) = (offset.area(), want.area());
+        assert!((area - want).abs() <= 1e-3 * want.abs(), "{case}: area {area} against the chords' {want}");
+    }
 }
 
 /// Circles of two arcs with a line out from one join along the radius,
