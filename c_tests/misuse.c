@@ -162,6 +162,7 @@ CASE(null_builder_build_out, segvoronoi_builder_build(f->builder, NULL))
 CASE(null_builder_build_builder, segvoronoi_builder_build(NULL, &f->made))
 CASE(null_builder_check, segvoronoi_builder_check(NULL))
 CASE(null_builder_split, segvoronoi_builder_set_split_crossings(NULL, 1))
+CASE(null_builder_threads, segvoronoi_builder_set_threads(NULL, 1))
 CASE(null_builder_indices_count, segvoronoi_builder_last_error_indices(f->builder, NULL, 0, NULL))
 CASE(null_diagram_site, segvoronoi_diagram_site(NULL, 0, &f->site))
 CASE(null_diagram_site_out, segvoronoi_diagram_site(f->diagram, 0, NULL))
@@ -241,6 +242,7 @@ static const misuse_case table[] = {
     ROW(null_builder_build_builder, NULL_ARGUMENT, "`builder`"),
     ROW(null_builder_check, NULL_ARGUMENT, "`builder`"),
     ROW(null_builder_split, NULL_ARGUMENT, "`builder`"),
+    ROW(null_builder_threads, NULL_ARGUMENT, "`builder`"),
     ROW(null_builder_indices_count, NULL_ARGUMENT, "`count`"),
     ROW(null_diagram_site, NULL_ARGUMENT, "`diagram`"),
     ROW(null_diagram_site_out, NULL_ARGUMENT, "`out`"),

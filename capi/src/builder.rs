@@ -399,6 +399,26 @@ pub unsafe extern "C" fn segvoronoi_builder_set_split_crossings(builder: *mut se
     })
 }
 
+/// At most `threads` threads running at once in `segvoronoi_builder_build`
+/// (the calling one included); 0, the default, for as many as the machine
+/// has cores. The diagram is the same for every count. A build runs parts
+/// of its work on a second thread on large inputs (the input check beside
+/// the point insertions, the sort of the insertion order, the check of the
+/// arcs' vertices); 1 starts no thread at all, for programs that run many
+/// builds on threads of their own.
+///
+/// Errors: `NULL_ARGUMENT`.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_builder_set_threads(builder: *mut segvoronoi_builder, threads: usize) -> segvoronoi_status {
+    require_non_null!(builder);
+    guard(|| {
+        // SAFETY: non-null live builder, exclusive to this thread.
+        let b = unsafe { &mut *builder };
+        b.inner.threads(threads);
+        b.record(Ok(()))
+    })
+}
+
 /// Checks everything added so far as `segvoronoi_builder_build` does first,
 /// without building: `SEGVORONOI_STATUS_OK` when no two segments or arcs
 /// cross or overlap and no point lies inside a segment or an arc (shared

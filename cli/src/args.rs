@@ -177,6 +177,10 @@ struct Cli {
     #[arg(long)]
     split_crossings: bool,
 
+    /// At most N threads at once in the build, this one included (default: as many as the machine has cores; 1 starts none). The diagram is the same for every N
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    threads: Option<u32>,
+
     /// Write the input as read, in WKT (after a DXF's ends are snapped, its chains joined into rings and its arcs cut where entities end on them): one GEOMETRYCOLLECTION, each ring a POLYGON of its own (the domain is the even-odd region of all rings), each open chain or linestring a LINESTRING, each point a POINT; arcs as chords within the tolerance, or with --curves as CIRCULARSTRINGs in CURVEPOLYGONs and COMPOUNDCURVEs, as PostGIS writes curves
     #[arg(long, value_name = "OUT.wkt", value_parser = file_name)]
     input_wkt: Option<PathBuf>,
@@ -259,6 +263,8 @@ pub struct Options {
     pub gcode: crate::gcode::Settings,
     /// `--split-crossings`.
     pub split_crossings: bool,
+    /// `--threads`: most threads a build runs at once; 0 for the cores.
+    pub threads: usize,
     /// `--write-sites`: where to write the input as built.
     pub write_sites: Option<PathBuf>,
     /// `--input-wkt`: where to write the input as read.
@@ -359,6 +365,7 @@ pub fn parse<I: IntoIterator<Item = String>>(args: I) -> Result<Options, Stop> {
         curves: cli.curves,
         gcode,
         split_crossings: cli.split_crossings,
+        threads: cli.threads.map_or(0, |n| n as usize),
         write_sites: cli.write_sites,
         input_wkt: cli.input_wkt,
         progress: match (cli.progress, cli.quiet) {

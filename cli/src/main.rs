@@ -100,7 +100,7 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     // status 1 with that message.
     let mut builder = Builder::new();
     let origins = input.add_to(&mut builder).map_err(|e| failed(format!("{name}: {e}")))?;
-    builder.split_crossings(options.split_crossings);
+    builder.split_crossings(options.split_crossings).threads(options.threads);
     progress.phase(&format!(
         "building: the input check{}, then the diagram of {} points and {} segments{}",
         if options.split_crossings { " and the split" } else { "" },

@@ -983,3 +983,27 @@ fn progress_shows_the_phases_on_stderr_only() {
         let _ = std::fs::remove_file(path);
     }
 }
+
+/// `--threads N` (issue 33): the same topology at one thread and at the
+/// machine's cores, on 25k segments (from 20k the input check runs beside
+/// the point insertions); 0 and words are refused by the parser.
+#[test]
+fn threads_give_the_same_diagram() {
+    let mut text = String::from("0\n25000\n");
+    for k in 0..25_000u32 {
+        let (x, y) = (f64::from(k % 200) * 4.0, f64::from(k / 200) * 4.0);
+        text.push_str(&format!("{x} {y} {} {}\n", x + 1.0 + f64::from(k % 3), y + f64::from(k % 2)));
+    }
+    let path = input_file("threads.txt", &text);
+    let path = path.to_str().unwrap();
+    let one = run(&[path, "--threads", "1", "--topology"]);
+    assert!(one.status.success(), "{}", stderr(&one));
+    let all = run(&[path, "--topology"]);
+    assert!(all.status.success(), "{}", stderr(&all));
+    assert!(stdout(&one) == stdout(&all) && !stdout(&one).is_empty());
+    for bad in ["0", "two"] {
+        let o = run(&[path, "--threads", bad, "--topology"]);
+        assert_eq!(o.status.code(), Some(2), "--threads {bad}: {}", stderr(&o));
+        assert!(stderr(&o).contains("--threads"), "{}", stderr(&o));
+    }
+}

@@ -23,8 +23,20 @@ use outputs::{AxisOptions, Lines, Polygons};
 
 /// Builds geometry `g` of `batch` (errors carry the geometry index when the
 /// call is vectorised).
-fn build_one(batch: &Batch, g: usize, split_crossings: bool) -> Result<Diagram, Failure> {
-    build_with(batch, g, split_crossings, |_| Ok(()))
+fn build_one(batch: &Batch, g: usize, split_crossings: bool, threads: usize) -> Result<Diagram, Failure> {
+    build_with(batch, g, split_crossings, threads, |_| Ok(()))
+}
+
+/// The threads each build of a call may run at once (`Builder::threads`):
+/// one where the call builds many geometries (its workers are the
+/// parallelism, and a build that started threads of its own would
+/// oversubscribe the cores), else what the call allows (0: the cores).
+fn threads_per_build(geometries: usize, threads: Option<usize>) -> usize {
+    if geometries > 1 {
+        1
+    } else {
+        threads.unwrap_or(0)
+    }
 }
 
 /// Builds geometry `g` of `batch` with `extra` added after its free
@@ -34,9 +46,11 @@ fn build_with(
     batch: &Batch,
     g: usize,
     split_crossings: bool,
+    threads: usize,
     extra: impl FnOnce(&mut segvoronoi::Builder) -> Result<(), Failure>,
 ) -> Result<Diagram, Failure> {
-    let (builder, names) = batch.builder(g, split_crossings, extra).map_err(|f| f.at(g))?;
+    let (mut builder, names) = batch.builder(g, split_crossings, extra).map_err(|f| f.at(g))?;
+    builder.threads(threads);
     builder.build().map_err(|e| {
         let mut f = Failure::of(&e, Some(&builder), Some(g));
         f.message = names.name(&e).unwrap_or(f.message);
@@ -86,7 +100,8 @@ fn medial_axis_batch<'py>(
 ) -> PyResult<AxisBatch<'py>> {
     let batch = Batch::from_args(&packed)?;
     let options = AxisOptions { tolerance, corner_angle, prune_spurs };
-    let job = |g: usize| build_one(&batch, g, split_crossings).map(|d| outputs::medial_axis(&d, options));
+    let per_build = threads_per_build(batch.len(), threads);
+    let job = |g: usize| build_one(&batch, g, split_crossings, per_build).map(|d| outputs::medial_axis(&d, options));
     let results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
     let errors = failures(&results);
     // geometry g's lines are geom[g]..geom[g+1]; a failed geometry has none
@@ -114,8 +129,10 @@ fn inscribed_circle_batch<'py>(
     threads: Option<usize>,
 ) -> PyResult<(Bound<'py, PyArray2<f64>>, Vec<FailureTuple>)> {
     let batch = Batch::from_args(&packed)?;
+    let per_build = threads_per_build(batch.len(), threads);
     let job = |g: usize| {
-        build_one(&batch, g, split_crossings).map(|d| d.max_inscribed_circle().map_or([f64::NAN; 3], |(c, r)| [c.x, c.y, r]))
+        build_one(&batch, g, split_crossings, per_build)
+            .map(|d| d.max_inscribed_circle().map_or([f64::NAN; 3], |(c, r)| [c.x, c.y, r]))
     };
     let results = parallel::map(py, batch.len(), threads, job, |g, m| Err(panicked(g, m)))?;
     let errors = failures(&results);
@@ -179,7 +196,8 @@ fn per_geometry<T: Send>(
     threads: Option<usize>,
     job: impl Fn(&Diagram) -> Result<T, Failure> + Sync,
 ) -> PyResult<(Vec<Option<T>>, Vec<FailureTuple>)> {
-    let one = |g: usize| build_one(batch, g, split_crossings).and_then(|d| job(&d).map_err(|f| f.at(g)));
+    let per_build = threads_per_build(batch.len(), threads);
+    let one = |g: usize| build_one(batch, g, split_crossings, per_build).and_then(|d| job(&d).map_err(|f| f.at(g)));
     let results = parallel::map(py, batch.len(), threads, one, |g, m| Err(panicked(g, m)))?;
     let errors = failures(&results);
     Ok((results.into_iter().map(Result::ok).collect(), errors))
@@ -297,7 +315,7 @@ fn build<'py>(
 ) -> PyResult<(Option<diagram::PyDiagram>, Option<FailureTuple>)> {
     let batch = Batch::from_args(&packed)?;
     let mut result =
-        parallel::map(py, batch.len().min(1), Some(1), |g| build_one(&batch, g, split_crossings), |g, m| Err(panicked(g, m)))?;
+        parallel::map(py, batch.len().min(1), Some(1), |g| build_one(&batch, g, split_crossings, 0), |g, m| Err(panicked(g, m)))?;
     match result.pop() {
         Some(Ok(d)) => Ok((Some(diagram::PyDiagram::new(d)), None)),
         Some(Err(mut f)) => {
@@ -353,7 +371,7 @@ fn build_with_arcs<'py>(
             add_arcs(&mut builder)?;
             return builder.build().map_err(|e| Failure::of(&e, Some(&builder), None));
         }
-        build_with(&batch, 0, split_crossings, add_arcs)
+        build_with(&batch, 0, split_crossings, 0, add_arcs)
     };
     let mut result = parallel::map(py, 1, Some(1), job, |g, m| Err(panicked(g, m)))?;
     match result.pop().expect("one job") {
@@ -376,7 +394,14 @@ fn build_batch<'py>(
     threads: Option<usize>,
 ) -> PyResult<Vec<(Option<diagram::PyDiagram>, Option<FailureTuple>)>> {
     let batch = Batch::from_args(&packed)?;
-    let built = parallel::map(py, batch.len(), threads, |g| build_one(&batch, g, split_crossings), |g, m| Err(panicked(g, m)))?;
+    let per_build = threads_per_build(batch.len(), threads);
+    let built = parallel::map(
+        py,
+        batch.len(),
+        threads,
+        |g| build_one(&batch, g, split_crossings, per_build),
+        |g, m| Err(panicked(g, m)),
+    )?;
     Ok(built
         .into_iter()
         .map(|r| match r {

@@ -47,6 +47,8 @@ pub struct Builder {
     pub(super) dropped_chain_points: usize,
     /// Whether `build` splits crossings first (`split_crossings`).
     split_crossings: bool,
+    /// Most threads a build runs at once (`threads`); 0 for the cores.
+    threads: usize,
 }
 
 impl Builder {
@@ -333,6 +335,31 @@ impl Builder {
         self
     }
 
+    /// At most `n` threads running at once in [`build`](Self::build), the
+    /// calling one included; `0` (the default) for as many as the machine
+    /// has cores. The diagram is the same for every `n`.
+    ///
+    /// A build uses a second thread for parts of its work on large inputs
+    /// (the input check beside the point insertions, the sort of the
+    /// insertion order, the check of the arcs' vertices); `threads(1)`
+    /// starts none, for callers that run many builds on threads of their
+    /// own.
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, TopologyOptions};
+    /// let mut b = Builder::new();
+    /// b.add_segment([[0.0, 0.0], [1.0, 0.0]])?;
+    /// b.add_point([0.5, 1.0])?;
+    /// let one = b.threads(1).build()?.topology(TopologyOptions::default());
+    /// let all = b.threads(0).build()?.topology(TopologyOptions::default());
+    /// assert_eq!(one, all);
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn threads(&mut self, n: usize) -> &mut Builder {
+        self.threads = n;
+        self
+    }
+
     /// Builds the diagram. The builder is not consumed: more points may be
     /// added and the diagram built again.
     ///
@@ -393,7 +420,9 @@ impl Builder {
     /// stays as it was.
     pub fn build(&self) -> Result<Diagram, Error> {
         super::headroom::ensure_headroom(self.points.len(), self.segments.len())?;
-        super::exact_range::checked_build(&self.points, &self.segments, || self.build_at_any_span())
+        super::threads::with_threads(self.threads, || {
+            super::exact_range::checked_build(&self.points, &self.segments, || self.build_at_any_span())
+        })
     }
 
     /// `build` without the check of inputs beyond the exact range.

@@ -40,6 +40,7 @@ mod shared_stretches;
 mod split;
 mod state;
 mod status_treap;
+mod threads;
 mod with_arcs;
 
 pub use builder::{Builder, MAX_POINTS};
@@ -58,6 +59,7 @@ use insert_point::insert_points;
 use polygon_input::RingInput;
 use renumber::SegmentSite;
 use restart::{insert_all, insert_all_from, Outcome, Stuck};
+pub(crate) use threads::run_beside;
 
 /// The diagram of the builder's input, with the domain of `rings` (over
 /// the input segments; none: no domain), or the error that
@@ -322,22 +324,6 @@ fn input_scale(points: &[Point], segments: &[[Point; 2]]) -> Scale {
 /// `input` in the construction's coordinates (scaled, with `-0` made `+0`).
 fn to_internal(input: &[Point], scale: Scale) -> Vec<Point> {
     input.iter().map(|p| p.scaled(scale.to_internal).canonical_zero()).collect()
-}
-
-/// Runs `beside` on a second thread while `here` runs on this one, and
-/// returns both results. When no thread can be had (resource limits) both
-/// run here, one after the other. A panic in `beside` is passed on.
-pub(crate) fn run_beside<A: Send, B>(beside: impl FnOnce() -> A + Send, here: impl FnOnce() -> B) -> (A, B) {
-    // Whichever side gets to it runs the task: the thread, or this one if
-    // the thread could not start.
-    let task = std::sync::Mutex::new(Some(beside));
-    let take_and_run = || task.lock().ok().and_then(|mut t| t.take()).map(|f| f());
-    std::thread::scope(|scope| {
-        let handle = std::thread::Builder::new().spawn_scoped(scope, take_and_run).ok();
-        let b = here();
-        let a = handle.and_then(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).or_else(take_and_run);
-        (a.expect("the task ran on one of the two threads"), b)
-    })
 }
 
 /// The builder's error for an input conflict, naming both input indices

@@ -1,0 +1,118 @@
+//! How many threads a build may use (`Builder::threads`), and the one
+//! place a build starts a thread (`run_beside`).
+//!
+//! The budget is per build and per calling thread: `with_threads` sets how
+//! many threads the build on this thread may have running at once
+//! (itself included) while it runs. `run_beside` takes one of them for its
+//! second thread and gives it back at the join; with none left, both
+//! tasks run here, one after the other, with the same results. A helper
+//! thread itself never starts another. So a build never has more threads
+//! running than its budget, and with a budget of one it starts none: what
+//! a caller that runs many builds on its own threads (the Python package's
+//! vectorised functions) asks for.
+
+use std::cell::Cell;
+
+thread_local! {
+    /// Threads the build on this thread may still start; `None` outside a
+    /// build that set it (then the available cores, less this one).
+    static SPARE: Cell<Option<usize>> = const { Cell::new(None) };
+}
+
+/// Runs `build` with at most `threads` threads running at once (this one
+/// included); 0 for as many as the machine has cores.
+pub(crate) fn with_threads<R>(threads: usize, build: impl FnOnce() -> R) -> R {
+    let threads = if threads == 0 { available() } else { threads };
+    with_spare(threads - 1, build)
+}
+
+/// The cores of the machine, at least one.
+fn available() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get())
+}
+
+/// Runs `f` with `spare` threads to start, restoring the budget after
+/// (also when `f` panics, which the library's callers turn into errors).
+fn with_spare<R>(spare: usize, f: impl FnOnce() -> R) -> R {
+    struct Restore(Option<usize>);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            SPARE.with(|s| s.set(self.0));
+        }
+    }
+    let _restore = Restore(SPARE.with(|s| s.replace(Some(spare))));
+    f()
+}
+
+/// Threads this build may still start.
+fn spare() -> usize {
+    SPARE.with(|s| s.get()).unwrap_or_else(|| available() - 1)
+}
+
+/// Runs `beside` on a second thread while `here` runs on this one, and
+/// returns both results. With no thread left in the build's budget, or
+/// when none can be had (resource limits), both run here, one after the
+/// other. A panic in `beside` is passed on.
+pub(crate) fn run_beside<A: Send, B>(beside: impl FnOnce() -> A + Send, here: impl FnOnce() -> B) -> (A, B) {
+    let spare = spare();
+    if spare == 0 {
+        let b = here();
+        return (beside(), b);
+    }
+    // Whichever side gets to it runs the task: the thread (which starts
+    // no other), or this one if the thread could not start.
+    let task = std::sync::Mutex::new(Some(beside));
+    let take_and_run = || task.lock().ok().and_then(|mut t| t.take()).map(|f| f());
+    std::thread::scope(|scope| {
+        let handle = std::thread::Builder::new().spawn_scoped(scope, || with_spare(0, take_and_run)).ok();
+        // (the thread started holds one of the budget until the join)
+        let b = with_spare(spare - usize::from(handle.is_some()), here);
+        let a = handle.and_then(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).or_else(take_and_run);
+        (a.expect("the task ran on one of the two threads"), b)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn thread_of<T>(f: impl FnOnce() -> T) -> (std::thread::ThreadId, T) {
+        (std::thread::current().id(), f())
+    }
+
+    #[test]
+    fn one_thread_starts_none() {
+        let here = std::thread::current().id();
+        let ((a, x), (b, y)) = with_threads(1, || run_beside(|| thread_of(|| 1), || thread_of(|| 2)));
+        assert_eq!((a, b, x, y), (here, here, 1, 2));
+    }
+
+    #[test]
+    fn two_threads_start_one_and_no_more() {
+        let here = std::thread::current().id();
+        let ((a, inner_beside), (b, inner_here)) = with_threads(2, || {
+            run_beside(
+                // the helper starts none
+                || thread_of(|| run_beside(|| std::thread::current().id(), || std::thread::current().id())),
+                // nor does this side while the helper holds the budget
+                || thread_of(|| run_beside(|| std::thread::current().id(), || std::thread::current().id())),
+            )
+        });
+        assert_ne!(a, here);
+        assert_eq!(inner_beside, (a, a));
+        assert_eq!((b, inner_here), (here, (here, here)));
+        // and the budget is back after
+        assert_eq!(with_threads(2, spare), 1);
+        assert!(SPARE.with(|s| s.get()).is_none());
+    }
+
+    #[test]
+    fn three_threads_let_this_side_start_one_more() {
+        let here = std::thread::current().id();
+        let (_, (b, (c, d))) = with_threads(3, || {
+            run_beside(|| (), || thread_of(|| run_beside(|| std::thread::current().id(), || std::thread::current().id())))
+        });
+        assert_eq!((b, d), (here, here));
+        assert_ne!(c, here);
+    }
+}
