@@ -383,9 +383,9 @@ pub unsafe extern "C" fn segvoronoi_builder_build(
 /// (`segvoronoi_diagram_pieces_of_input`, `_inputs_of_piece`), each within
 /// `segvoronoi_diagram_max_split_displacement` of its input segments, and
 /// polygons bound the even-odd region of their split rings (see
-/// `Builder::split_crossings` in the Rust documentation). Arcs are not
-/// split yet: a build with arcs and splitting on is
-/// `SEGVORONOI_STATUS_INVALID_ARGUMENT`.
+/// `Builder::split_crossings` in the Rust documentation). Arcs are split
+/// too, into arcs; with arcs and polygons together splitting is not
+/// supported yet (`SEGVORONOI_STATUS_INVALID_ARGUMENT`).
 ///
 /// Errors: `NULL_ARGUMENT`.
 #[no_mangle]

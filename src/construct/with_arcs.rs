@@ -9,8 +9,9 @@
 //! once the diagram is built. Their segments go in as obstacles' do: rings
 //! sharing a stretch are refused as overlapping rather than cancelled.
 //!
-//! Not yet with arcs (refused with a clear error rather than built wrong):
-//! splitting crossings.
+//! Splitting crossings with arcs (`split::arcs`) builds the pieces here;
+//! not yet with polygons too (refused with a clear error rather than built
+//! wrong).
 
 use super::polygon_input::RingInput;
 use super::renumber::ArcSite;
@@ -60,11 +61,7 @@ pub(super) fn diagram_with_arcs(
     rings: &[RingInput],
 ) -> Result<Diagram, Error> {
     if split {
-        return Err(Error::new(
-            ErrorKind::InvalidArgument,
-            "splitting crossings is not supported with arcs yet: arcs must not cross".to_string(),
-            Vec::new(),
-        ));
+        return diagram_of_split_with_arcs(points, segments, arcs, rings);
     }
     // arcs against points, segments and arcs, exactly (beside the point
     // insertions on large inputs); segments against segments (and the
@@ -103,6 +100,66 @@ pub(super) fn diagram_with_arcs(
         // obstacles would, an overlap refused by the input check)
         diagram.set_domain(&super::polygon_input::rings_over_pieces(&diagram, rings));
     }
+    Ok(diagram)
+}
+
+/// The diagram of points, segments and arcs split where they meet
+/// (`split::arcs`): the strict build of the pieces, then which input each
+/// piece came from (the segments' as with `split_crossings` alone; an arc
+/// piece's input arc as its site's `arc_input_index`, and an input arc's
+/// site, `site_of_arc`, that of its first piece).
+fn diagram_of_split_with_arcs(
+    points: &[Point],
+    segments: &[[Point; 2]],
+    arcs: &[CircularArc],
+    rings: &[RingInput],
+) -> Result<Diagram, Error> {
+    if !rings.is_empty() {
+        return Err(Error::new(
+            ErrorKind::InvalidArgument,
+            "splitting crossings is not supported with arcs and polygons together yet: split the arcs and segments alone, \
+             or give polygons whose rings do not cross"
+                .to_string(),
+            Vec::new(),
+        ));
+    }
+    let super::split::arcs::SplitWithArcs { input: split, arcs: split_arcs } =
+        super::split::arcs::split_with_arcs(points, segments, arcs)?;
+    let ends: Vec<[Point; 2]> = split.pieces.iter().map(|p| p.ends).collect();
+    let arc_pieces: Vec<CircularArc> = split_arcs.iter().map(|a| a.arc).collect();
+    let mut diagram = diagram_with_arcs(&split.points, &ends, &arc_pieces, false, &[]).map_err(|e| {
+        if e.kind() == ErrorKind::Intersecting {
+            // (none is expected: the pieces passed the same exact tests)
+            Error::new(
+                ErrorKind::Internal,
+                format!("construction could not complete: after splitting crossings, {}; please report this input", e.message()),
+                Vec::new(),
+            )
+        } else {
+            e
+        }
+    })?;
+    let origins: Vec<Vec<u32>> = split.pieces.iter().map(|p| p.origins.clone()).collect();
+    diagram.split =
+        Some(Box::new(crate::diagram::SplitPieces::new(&origins, segments.len(), split.max_displacement, split.pixel)));
+    // arc sites are numbered by piece: name them by input arc
+    let first_arc = diagram.sites.len() - diagram.arc_sites;
+    let mut site_of_input_arc = vec![None; arcs.len()];
+    for (k, input) in diagram.arc_input.iter_mut().enumerate() {
+        let origin = split_arcs[*input as usize].origins[0];
+        *input = origin;
+        site_of_input_arc[origin as usize].get_or_insert(SiteId::from_index(first_arc + k));
+    }
+    // (an input arc that shrank to a point has none: `None` from there on)
+    diagram.arc_site = site_of_input_arc.into_iter().map_while(|s| s).collect();
+    let stats = &mut diagram.stats;
+    stats.input_segments = segments.len();
+    stats.input_arcs = arcs.len();
+    stats.pieces = split.pieces.len() + split_arcs.len();
+    stats.crossings = split.crossings;
+    stats.overlaps = split.overlaps;
+    stats.touchings = split.touchings;
+    stats.snap_rounds = split.rounds;
     Ok(diagram)
 }
 

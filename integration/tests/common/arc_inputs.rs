@@ -4,7 +4,7 @@
 //! computed apart from the library, and the generators both use.
 
 use segvoronoi::splitmix::SplitMix64;
-use segvoronoi::{Builder, CircularArc, Point, Site};
+use segvoronoi::{Builder, CircularArc, Diagram, Point, Site};
 use segvoronoi_testgen::arcs::random_arc;
 
 /// One input piece.
@@ -133,4 +133,137 @@ pub fn add_pieces(b: &mut Builder, pieces: &[Piece]) {
             Piece::Arc(arc) => drop(b.add_arc(arc).unwrap()),
         }
     }
+}
+
+/// The failures of the brute-force audit at tolerance `tol` (absolute).
+pub fn audit(d: &Diagram, tol: f64) -> Vec<String> {
+    let sites: Vec<Site> = d.site_ids().map(|s| d.site(s).unwrap()).collect();
+    let mut failures = Vec::new();
+    let nearest = |p: Point| sites.iter().map(|s| distance(s, p)).fold(f64::INFINITY, f64::min);
+    for v in d.vertices() {
+        let r = v.clearance;
+        for s in v.sites {
+            let ds = distance(&sites[s.index()], v.position);
+            if !((ds - r).abs() <= tol + 1e-12 * r) {
+                failures.push(format!(
+                    "vertex {:?} at {:?} r {r} of {:?}: its site {:?} at {ds}",
+                    v.id,
+                    v.position,
+                    v.sites.map(|s| sites[s.index()]),
+                    sites[s.index()]
+                ));
+            }
+        }
+        let tol = tol + 1e-12 * r; // far vertices: relative to their distance
+        let (k, n) = sites.iter().enumerate().map(|(k, s)| (k, distance(s, v.position))).fold((0, f64::INFINITY), |a, b| {
+            if b.1 < a.1 {
+                b
+            } else {
+                a
+            }
+        });
+        if n < r - tol {
+            failures.push(format!(
+                "vertex {:?} at {:?} r {r} of {:?}: site {k} {:?} nearer at {n}",
+                v.id,
+                v.position,
+                v.sites.map(|s| sites[s.index()]),
+                sites[k]
+            ));
+        }
+    }
+    // Grid points clearly nearest to two sites (the third well behind)
+    // lie on an edge between them: those two must be neighbours.
+    let neighbours: std::collections::HashSet<(usize, usize)> =
+        d.edges().map(|e| (e.sites[0].index().min(e.sites[1].index()), e.sites[0].index().max(e.sites[1].index()))).collect();
+    let points: Vec<Point> = sites.iter().filter_map(Site::as_point).collect();
+    let (lo, hi) = points
+        .iter()
+        .fold((Point::new(f64::INFINITY, f64::INFINITY), Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY)), |(lo, hi), p| {
+            (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y)))
+        });
+    let span = (hi.x - lo.x).max(hi.y - lo.y).max(tol);
+    let steps = 150;
+    let h = 2.0 * span / steps as f64;
+    for i in 0..=steps {
+        for j in 0..=steps {
+            let q = Point::new(lo.x - 0.5 * span + i as f64 * h, lo.y - 0.5 * span + j as f64 * h);
+            let mut best = [(f64::INFINITY, 0usize); 3];
+            for (k, site) in sites.iter().enumerate() {
+                let dk = distance(site, q);
+                if dk < best[2].0 {
+                    best[2] = (dk, k);
+                    best.sort_by(|x, y| x.0.total_cmp(&y.0));
+                }
+            }
+            let [(d1, s1), (d2, s2), (d3, _)] = best;
+            if d2 - d1 < 0.05 * h && d3 - d2 > 0.5 * h && !neighbours.contains(&(s1.min(s2), s1.max(s2))) {
+                failures.push(format!(
+                    "grid point {q:?}: sites {s1} {:?} and {s2} {:?} meet there but are not neighbours",
+                    sites[s1], sites[s2]
+                ));
+            }
+        }
+    }
+    for e in d.edges() {
+        let Some(poly) = d.edge_polyline(e.id, tol * 10.0) else { continue };
+        let [a, b] = e.sites.map(|s| sites[s.index()]);
+        for &q in &poly[1..poly.len() - 1] {
+            let (da, db) = (distance(&a, q), distance(&b, q));
+            if !((da - db).abs() <= 10.0 * tol) || nearest(q) < da.min(db) - 10.0 * tol {
+                failures.push(format!(
+                    "edge {:?} between {a:?} and {b:?}: point {q:?} at {da} / {db}, nearest {}",
+                    e.id,
+                    nearest(q)
+                ));
+                break;
+            }
+        }
+    }
+    failures
+}
+
+/// `pieces` and its variants: reversed arcs and segments, shuffled,
+/// mirrored, scaled by 2^-20 and 2^20; each with the factor of its size.
+pub fn variants(pieces: &[Piece], seed: u64) -> Vec<(&'static str, Vec<Piece>, f64)> {
+    let reversed: Vec<Piece> = pieces
+        .iter()
+        .map(|&p| match p {
+            Piece::Segment(a, b) => Piece::Segment(b, a),
+            Piece::Arc(arc) => Piece::Arc(arc.reversed()),
+            other => other,
+        })
+        .collect();
+    let mut shuffled = pieces.to_vec();
+    let mut rng = SplitMix64(seed);
+    for i in (1..shuffled.len()).rev() {
+        shuffled.swap(i, (rng.next_u64() % (i as u64 + 1)) as usize);
+    }
+    let map = |f: &dyn Fn(Point) -> Point, flip: bool| -> Vec<Piece> {
+        pieces
+            .iter()
+            .map(|&p| match p {
+                Piece::Point(q) => Piece::Point(f(q)),
+                Piece::Segment(a, b) => Piece::Segment(f(a), f(b)),
+                Piece::Arc(arc) => {
+                    let bulge = if flip { -arc.bulge() } else { arc.bulge() };
+                    Piece::Arc(match arc.via() {
+                        Some(m) => CircularArc::through(f(arc.start()), f(m), f(arc.end())).unwrap(),
+                        None => CircularArc::from_bulge(f(arc.start()), f(arc.end()), bulge).unwrap(),
+                    })
+                }
+            })
+            .collect()
+    };
+    let mirrored = map(&|q: Point| Point::new(-q.x, q.y), true);
+    let small = map(&|q: Point| Point::new(q.x * 2f64.powi(-20), q.y * 2f64.powi(-20)), false);
+    let large = map(&|q: Point| Point::new(q.x * 2f64.powi(20), q.y * 2f64.powi(20)), false);
+    vec![
+        ("plain", pieces.to_vec(), 1.0),
+        ("reversed", reversed, 1.0),
+        ("shuffled", shuffled, 1.0),
+        ("mirrored", mirrored, 1.0),
+        ("scaled down", small, 2f64.powi(-20)),
+        ("scaled up", large, 2f64.powi(20)),
+    ]
 }

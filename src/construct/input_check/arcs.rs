@@ -164,8 +164,26 @@ pub(crate) fn check_arcs(points: &[Point], segments: &[[Point; 2]], arcs: &[Circ
 /// are handled exactly. Fewer than `2^32` inputs in all (the builder's
 /// 32-bit ids).
 pub(crate) fn first_arc_conflict(points: &[Point], segments: &[[Point; 2]], arcs: &[CircularArc]) -> Option<ArcConflict> {
+    let best: std::cell::Cell<Option<ArcConflict>> = std::cell::Cell::new(None);
+    // (a pair that could not beat the best conflict found so far is not
+    // tested)
+    let wanted = |rank: (u8, usize, usize)| best.get().map_or(true, |c| rank < c.rank());
+    for_each_arc_conflict(points, segments, arcs, wanted, |found| best.set(Some(found)));
+    best.get()
+}
+
+/// Every conflict of a pair with an arc among them, in the sweep's order:
+/// `found` is called for each pair that `wanted` (asked with the pair's
+/// rank, as [`ArcConflict::rank`] gives it) lets through and that meets.
+pub(crate) fn for_each_arc_conflict(
+    points: &[Point],
+    segments: &[[Point; 2]],
+    arcs: &[CircularArc],
+    wanted: impl Fn((u8, usize, usize)) -> bool,
+    mut found: impl FnMut(ArcConflict),
+) {
     if arcs.is_empty() {
-        return None;
+        return;
     }
     let mut items: Vec<Item> = Vec::with_capacity(points.len() + segments.len() + arcs.len());
     items.extend(points.iter().enumerate().map(|(i, p)| Item { kind: Kind::Point, index: i, bx: [p.x, p.x, p.y, p.y] }));
@@ -184,7 +202,6 @@ pub(crate) fn first_arc_conflict(points: &[Point], segments: &[[Point; 2]], arcs
     // The exact form of an arc, made at its first exact test and dropped
     // when the sweep has passed it: the memory is that of the active arcs.
     let mut exact: Vec<Option<ExactArc>> = (0..arcs.len()).map(|_| None).collect();
-    let mut best: Option<ArcConflict> = None;
     box_sweep(&items, |event| {
         let (i, j) = match event {
             Event::Pair(i, j) => (i, j),
@@ -202,7 +219,7 @@ pub(crate) fn first_arc_conflict(points: &[Point], segments: &[[Point; 2]], arcs
             Kind::Segment => (1, arc.index, other.index),
             Kind::Arc => (2, arc.index, other.index),
         };
-        if best.is_some_and(|c| c.rank() <= rank) {
+        if !wanted(rank) {
             return;
         }
         let mut prepare = |k: usize| {
@@ -213,7 +230,7 @@ pub(crate) fn first_arc_conflict(points: &[Point], segments: &[[Point; 2]], arcs
             prepare(other.index);
         }
         let Some(x) = exact[arc.index].as_ref() else { return };
-        let found = match other.kind {
+        let conflict = match other.kind {
             Kind::Point => {
                 x.contains_point(points[other.index]).then_some(ArcConflict::PointOnArc { point: other.index, arc: arc.index })
             }
@@ -228,11 +245,10 @@ pub(crate) fn first_arc_conflict(points: &[Point], segments: &[[Point; 2]], arcs
                 contact,
             }),
         };
-        if found.is_some() {
-            best = found;
+        if let Some(conflict) = conflict {
+            found(conflict);
         }
     });
-    best
 }
 
 /// What the sweep reports.

@@ -4,7 +4,7 @@
 //! closed cycle that is, by its margin (from the vertices the cuts would
 //! create: `geometry::segments::segment_predicates::middle_margin`).
 
-use crate::construct::state::Construction;
+use crate::construct::state::{Construction, INFINITE};
 use crate::diagram::{HalfEdgeId, SiteId, VertexId};
 use crate::geometry::segments::segment_predicates::{self, in_strip, EdgeContact, EdgeMiddle, FiniteEdge, MiddleMargin};
 use crate::geometry::Point;
@@ -187,7 +187,17 @@ impl Construction {
     /// infinity in a whole range of directions, splitting another site's),
     /// an edge at infinity too.
     fn may_keep_middle(&self, h: HalfEdgeId) -> bool {
-        self.is_finite_edge(h) || (self.inserting_arc.is_some() && self.is_edge_at_infinity(h))
+        self.is_finite_edge(h) || (self.inserting_arc.is_some() && (self.is_edge_at_infinity(h) || self.is_ray(h)))
+    }
+
+    /// Whether `h` is an unbounded edge between two sites: one end at
+    /// infinity, the other not. An arc's cell can take a stretch of one
+    /// out of its middle (an arc past the end of another arc, the edge of
+    /// that end and the other arc running out to infinity beyond it).
+    fn is_ray(&self, h: HalfEdgeId) -> bool {
+        self.store.is_at_infinity(h.origin()) != self.store.is_at_infinity(self.store.target(h))
+            && self.store.left(h) != INFINITE
+            && self.store.right(h) != INFINITE
     }
 
     /// Whether neither end of `h` is at infinity.
@@ -214,6 +224,20 @@ impl Construction {
         let [left, right] = sides.map(|s| self.site_geometry(s));
         let (from, to) = (self.store.position[h.origin().index()], self.store.position[self.store.target(h).index()]);
         if let Some(arc) = self.inserting_arc {
+            if self.is_ray(h) {
+                // from the finite end out to a point far along the direction
+                let (end, direction, sites) = if self.store.is_at_infinity(h.origin()) {
+                    (self.store.target(h), from, [right, left])
+                } else {
+                    (h.origin(), to, [left, right])
+                };
+                let (p, r) = (self.store.position[end.index()], self.store.clearance[end.index()]);
+                let reach = 1e3 * (p.x.abs() + p.y.abs() + r + 1.0);
+                let far = Point::new(p.x + reach * direction.x, p.y + reach * direction.y);
+                let [left, right] = sites;
+                let ray = FiniteEdge { left, right, from: p, to: far };
+                return crate::geometry::arcs::arc_predicates::arc_middle_margin_on_ray(ray, &arc);
+            }
             return crate::geometry::arcs::arc_predicates::arc_middle_margin(FiniteEdge { left, right, from, to }, contact, &arc);
         }
         segment_predicates::middle_margin(FiniteEdge { left, right, from, to }, contact, self.segment_between(a, b))

@@ -42,6 +42,7 @@
 //! - Each piece keeps the sorted input indices of every segment it came
 //!   from.
 
+pub(crate) mod arcs;
 mod build;
 mod contacts;
 mod pixel_tree;
@@ -114,14 +115,7 @@ pub(crate) fn split(points: &[Point], segments: &[[Point; 2]]) -> Result<SplitIn
             break;
         }
         if rounds == MAX_ROUNDS {
-            return Err(Error::new(
-                ErrorKind::Internal,
-                format!(
-                    "splitting crossings did not converge: {} contacts remain after {MAX_ROUNDS} rounds of snapping; please report this input",
-                    counts.total()
-                ),
-                Vec::new(),
-            ));
+            return Err(not_converged(counts.total()));
         }
         hot.extend(found);
         pieces = route(pieces, &hot, &pixels);
@@ -151,10 +145,21 @@ pub(crate) fn split(points: &[Point], segments: &[[Point; 2]]) -> Result<SplitIn
     })
 }
 
+/// The error for `contacts` still found after [`MAX_ROUNDS`] rounds.
+pub(super) fn not_converged(contacts: usize) -> Error {
+    Error::new(
+        ErrorKind::Internal,
+        format!(
+            "splitting crossings did not converge: {contacts} contacts remain after {MAX_ROUNDS} rounds of snapping; please report this input"
+        ),
+        Vec::new(),
+    )
+}
+
 /// The largest distance from a piece's endpoint to an input segment it
 /// came from, in internal coordinates (where squares cannot overflow): the
 /// distance to a segment is convex, so no point of the piece is farther.
-fn max_displacement(pieces: &[Piece], segments: &[[Point; 2]], internal: impl Fn(Point) -> Point) -> f64 {
+pub(super) fn max_displacement(pieces: &[Piece], segments: &[[Point; 2]], internal: impl Fn(Point) -> Point) -> f64 {
     let mut worst = 0.0f64;
     for piece in pieces {
         for &i in &piece.origins {

@@ -12,7 +12,7 @@ use crate::geometry::Point;
 
 /// The hot pixels of every round so far.
 pub(super) struct HotPixels {
-    set: HashSet<Pixel>,
+    pub(super) set: HashSet<Pixel>,
 }
 
 impl HotPixels {
@@ -38,12 +38,24 @@ impl HotPixels {
 
 /// The pieces after one round of snapping through `hot`.
 pub(super) fn route(pieces: Vec<Piece>, hot: &HotPixels, pixels: &PixelGrid) -> Vec<Piece> {
+    route_also_through(pieces, hot, pixels, &HashMap::new())
+}
+
+/// [`route`], each piece also bent through the centres of its pixels in
+/// `also` (by piece index): a contact with an arc, whose pixel holds a
+/// rounded point that the piece may pass a hair beside.
+pub(super) fn route_also_through(
+    pieces: Vec<Piece>,
+    hot: &HotPixels,
+    pixels: &PixelGrid,
+    also: &HashMap<usize, Vec<Pixel>>,
+) -> Vec<Piece> {
     let mut out = Merged::default();
     // Built here, per round that routes: the last round's contact search
     // finds nothing and routes nothing.
     let tree = PixelTree::new(hot.set.iter().copied().collect());
     let mut met: Vec<Pixel> = Vec::new();
-    for piece in pieces {
+    for (k, piece) in pieces.into_iter().enumerate() {
         let [a, b] = piece.ends;
         if a == b {
             let q = hot.snap(pixels, a);
@@ -52,6 +64,9 @@ pub(super) fn route(pieces: Vec<Piece>, hot: &HotPixels, pixels: &PixelGrid) -> 
         }
         met.clear();
         tree.met_by(pixels, a, b, &mut met);
+        if let Some(extra) = also.get(&k) {
+            met.extend(extra.iter().filter(|x| !met.contains(x)).copied().collect::<Vec<_>>());
+        }
         let (pa, pb) = (pixels.pixel_of(a), pixels.pixel_of(b));
         met.retain(|&x| x != pa && x != pb);
         let (a2, b2) = (hot.snap(pixels, a), hot.snap(pixels, b));

@@ -419,10 +419,23 @@ pub(crate) fn in_cone(arc: &CircularArc, centre: Point) -> bool {
 /// edge (positive: a middle piece stays). Perturbed in fault injection.
 pub(crate) fn arc_middle_margin(edge: FiniteEdge, _contact: EdgeContact, arc: &CircularArc) -> MiddleMargin {
     const SAMPLES: usize = 24;
+    largest_excess(&edge, arc, (1..SAMPLES).map(|k| k as f64 / SAMPLES as f64))
+}
+
+/// [`arc_middle_margin`] for an unbounded edge, given from its finite end
+/// (`edge.from`) to a point far out along it (`edge.to`): sampled at
+/// fractions halving down from 1/2 to 2^-30, as the stretch the arc may
+/// leave in the middle lies anywhere from near the finite end to far out.
+pub(crate) fn arc_middle_margin_on_ray(edge: FiniteEdge, arc: &CircularArc) -> MiddleMargin {
+    largest_excess(&edge, arc, (1..=30).map(|k| 0.5f64.powi(k)))
+}
+
+/// The largest excess of the new arc's distance over the edge's own at
+/// the points of the edge at fractions `samples`.
+fn largest_excess(edge: &FiniteEdge, arc: &CircularArc, samples: impl Iterator<Item = f64>) -> MiddleMargin {
     let site = Site::Arc(*arc);
     let mut best = f64::NEG_INFINITY;
-    for k in 1..SAMPLES {
-        let t = k as f64 / SAMPLES as f64;
+    for t in samples {
         let q = bisector_point(&edge.left, &edge.right, edge.from, edge.to, t);
         let own = 0.5 * (edge.left.distance(q) + edge.right.distance(q));
         let excess = site.distance(q) - own;

@@ -3,6 +3,7 @@
 //! along the perpendicular to its chord, to where the two sites are
 //! equally far.
 
+use crate::geometry::arc::CircularArc;
 use crate::geometry::point::Point;
 use crate::geometry::site::Site;
 
@@ -20,6 +21,9 @@ use crate::geometry::site::Site;
 /// separator). The nearest meeting that touches its pieces inside is
 /// taken, else the nearest.
 pub(crate) fn bisector_point(left: &Site, right: &Site, from: Point, to: Point, t: f64) -> Point {
+    if let Some(q) = round_enclosed_point(left, right, from, to, t) {
+        return q;
+    }
     let base = Point::new(from.x + t * (to.x - from.x), from.y + t * (to.y - from.y));
     let (dx, dy) = (to.x - from.x, to.y - from.y);
     let length = dx.hypot(dy);
@@ -67,6 +71,38 @@ pub(crate) fn bisector_point(left: &Site, right: &Site, from: Point, to: Point, 
     let mut found: Vec<f64> = roots.iter().flatten().copied().collect();
     found.sort_by(|x, y| x.abs().total_cmp(&y.abs()));
     found.iter().copied().find(|&s| inside(at(s))).or(found.first().copied()).map_or(base, at)
+}
+
+/// The point at fraction `t` of the edge from `from` to `to` between a
+/// point and an arc whose circle holds it strictly, by the angle round the
+/// point; `None` for any other pair. Their bisector is then an ellipse
+/// round the point with the point's cell inside (a focus at the point:
+/// along the unit direction `u` from it, at `ρ = (r² − |w|²) / 2(r + w·u)`,
+/// `w` the point less the centre), and the edge runs round it with that
+/// cell on its left: counter-clockwise when the point is the left site.
+/// From the chord the edge may go either way round, the long way past the
+/// point's far side included (an arc's end a hair inside another arc's
+/// circle: the edge of that end's cell with the other arc runs round the
+/// end, and its middle, all that is left of the cell once a third arc
+/// passes, lies beyond the chord's ends, where no perpendicular from the
+/// chord meets it).
+fn round_enclosed_point(left: &Site, right: &Site, from: Point, to: Point, t: f64) -> Option<Point> {
+    let holds = |arc: &CircularArc, p: Point| arc.centre().distance(p) < arc.radius() * (1.0 - 1e-9);
+    let (p, arc, counter_clockwise) = match (*left, *right) {
+        (Site::Point(p), Site::Arc(arc)) if holds(&arc, p) => (p, arc, true),
+        (Site::Arc(arc), Site::Point(p)) if holds(&arc, p) => (p, arc, false),
+        _ => return None,
+    };
+    let angle = |q: Point| (q.y - p.y).atan2(q.x - p.x);
+    let (start, end) = (angle(from), angle(to));
+    let tau = std::f64::consts::TAU;
+    let sweep = if counter_clockwise { (end - start).rem_euclid(tau) } else { -(start - end).rem_euclid(tau) };
+    let (c, r) = (arc.centre(), arc.radius());
+    let (ux, uy) = ((start + t * sweep).cos(), (start + t * sweep).sin());
+    let (wx, wy) = (p.x - c.x, p.y - c.y);
+    let denominator = 2.0 * (r + wx * ux + wy * uy);
+    let rho = (r * r - (wx * wx + wy * wy)) / denominator;
+    (denominator > 0.0 && rho.is_finite()).then(|| Point::new(p.x + rho * ux, p.y + rho * uy))
 }
 
 /// Whether the point of `site` nearest to `q` lies inside it (a segment's
