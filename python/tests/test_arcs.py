@@ -267,9 +267,24 @@ def test_invalid_rows_raise_invalid_arc(row):
     assert info.value.indices == (1,)
 
 
-def test_arcs_with_split_crossings_are_refused_for_now():
-    with pytest.raises(segvoronoi.InvalidArgumentError, match="arcs"):
-        segvoronoi.voronoi(segments=SLOT_SEGMENTS, arcs=SLOT_ARCS, split_crossings=True)
+def test_arcs_crossed_by_a_segment_are_split():
+    # the slot crossed lengthwise by a segment through both half circles
+    across = np.array([[[-2.0, 1.0], [6.0, 1.0]]])
+    with pytest.raises(segvoronoi.IntersectingError):
+        segvoronoi.voronoi(segments=np.concatenate([SLOT_SEGMENTS, across]), arcs=SLOT_ARCS)
+    d = segvoronoi.voronoi(segments=np.concatenate([SLOT_SEGMENTS, across]), arcs=SLOT_ARCS, split_crossings=True)
+    d.validate()
+    assert d.stats["crossings"] == 2
+    # each half circle cut in two at the crossing; the pieces keep their input arcs
+    assert sorted(d.site_arc_index[d.site_arc_index >= 0].tolist()) == [0, 0, 1, 1]
+    # the crossing points are shared ends: (4 + 1, 1) right, (0 - 1, 1) left
+    ends = {tuple(p) for p in d.site_coordinates[d.site_kinds == 0, 0].tolist()}
+    assert {(5.0, 1.0), (-1.0, 1.0)} <= ends
+
+
+def test_arcs_with_polygons_and_split_crossings_are_refused_for_now():
+    with pytest.raises(segvoronoi.InvalidArgumentError, match="arcs and polygons"):
+        segvoronoi.voronoi(geometry=shapely.box(-1, -1, 5, 3), arcs=SLOT_ARCS, split_crossings=True)
 
 
 def test_arcs_with_many_geometries_are_refused():

@@ -15,8 +15,10 @@
 //! and every arc also through each hot pixel it passes within half a
 //! pixel's diagonal of. An arc bent through centres becomes arcs from one
 //! to the next, each through the point of the original circle halfway
-//! between them (a sub-arc's circle is then within a pixel of the
-//! original's). Arcs that come out with the same ends and the same middle
+//! between them, moved toward their chord by 2^-40 of its distance from
+//! it (`flattened`: a sub-arc's circle is then within a pixel of the
+//! original's, and a hair flatter, so that where the arc touched a line it
+//! does not cross it again beside the cut). Arcs that come out with the same ends and the same middle
 //! (to a pixel) merge. The loop ends when the exact tests find nothing,
 //! so the result is accepted by the strict check, as with segments.
 //!
