@@ -39,11 +39,13 @@ fn along(piece: &Piece, n: usize) -> Vec<Point> {
 
 /// The coverage checks of the module documentation, at `reach` beyond
 /// the reported displacement. An input is covered by the sites of its
-/// kind (a piece of two overlapping arcs is named by one of them); the
-/// pieces named by an input arc lie along it.
+/// kind; the pieces of an input arc (`inputs_of_arc_piece`, which
+/// `arc_pieces_of_input` agrees with) lie along it.
 fn check_covered(name: &str, d: &Diagram, pieces: &[Piece], reach: f64) {
     let moved = d.max_split_displacement() + reach;
-    let sites: Vec<(Site, Option<usize>)> = d.site_ids().map(|s| (d.site(s).unwrap(), d.arc_input_index(s))).collect();
+    // each site with the input arcs it came from (none for other sites)
+    let inputs = |s| d.arc_input_index(s).map_or(Vec::new(), |p| d.inputs_of_arc_piece(p).collect::<Vec<_>>());
+    let sites: Vec<(Site, Vec<usize>)> = d.site_ids().map(|s| (d.site(s).unwrap(), inputs(s))).collect();
     let mut arc_index = 0;
     for piece in pieces {
         let of_kind: Vec<&Site> = match piece {
@@ -56,10 +58,11 @@ fn check_covered(name: &str, d: &Diagram, pieces: &[Piece], reach: f64) {
             assert!(nearest <= moved, "{name}: {piece:?} at {q:?} is {nearest} from the pieces (displacement {moved})");
         }
         if let Piece::Arc(arc) = piece {
-            // and the pieces named by it lie along it (a piece of two
-            // arcs that coincide is named by one)
+            // and its pieces lie along it
             arc_index += 1;
-            let own: Vec<&Site> = sites.iter().filter(|(_, i)| *i == Some(arc_index - 1)).map(|(s, _)| s).collect();
+            let own: Vec<&Site> = sites.iter().filter(|(_, i)| i.contains(&(arc_index - 1))).map(|(s, _)| s).collect();
+            assert!(!own.is_empty(), "{name}: no piece of {arc:?}");
+            assert_eq!(d.arc_pieces_of_input(arc_index - 1).len(), own.len(), "{name}: {arc:?}");
             for s in &own {
                 let Site::Arc(a) = s else { panic!("{name}: an arc's piece {s:?}") };
                 for q in [a.start(), a.end(), a.midpoint()] {

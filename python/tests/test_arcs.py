@@ -275,8 +275,8 @@ def test_arcs_crossed_by_a_segment_are_split():
     d = segvoronoi.voronoi(segments=np.concatenate([SLOT_SEGMENTS, across]), arcs=SLOT_ARCS, split_crossings=True)
     d.validate()
     assert d.stats["crossings"] == 2
-    # each half circle cut in two at the crossing; the pieces keep their input arcs
-    assert sorted(d.site_arc_index[d.site_arc_index >= 0].tolist()) == [0, 0, 1, 1]
+    # each half circle cut in two at the crossing: four arc pieces
+    assert sorted(d.site_arc_index[d.site_arc_index >= 0].tolist()) == [0, 1, 2, 3]
     # the crossing points are shared ends: (4 + 1, 1) right, (0 - 1, 1) left
     ends = {tuple(p) for p in d.site_coordinates[d.site_kinds == 0, 0].tolist()}
     assert {(5.0, 1.0), (-1.0, 1.0)} <= ends

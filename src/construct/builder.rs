@@ -314,10 +314,11 @@ impl Builder {
     /// Circular arcs are split too (crossing, touching or overlapping
     /// segments, arcs and points): an arc is cut where something meets it
     /// into arcs through the pixel centres, each a hair flatter than its
-    /// circle, and coinciding pieces merge. An arc piece's
-    /// [`Diagram::arc_input_index`] is its input arc (one of them where
-    /// arcs coincide), [`Diagram::site_of_arc`] an input arc's first piece,
-    /// and [`BuildStats`] counts a pair with an arc once however often it
+    /// circle, and coinciding pieces merge. As for segments,
+    /// [`Diagram::site_of_arc`] and [`Diagram::arc_input_index`] then speak
+    /// of arc pieces, and [`Diagram::arc_pieces_of_input`] and
+    /// [`Diagram::inputs_of_arc_piece`] map between the input arcs and
+    /// them; [`BuildStats`] counts a pair with an arc once however often it
     /// meets. Not yet with polygons: arcs and polygons together with
     /// splitting give [`ErrorKind::InvalidArgument`]. Where the arcs'
     /// construction cannot place the pieces (an end a hair from another
@@ -355,6 +356,8 @@ impl Builder {
     /// [`Diagram::segment_input_index`]: crate::Diagram::segment_input_index
     /// [`Diagram::arc_input_index`]: crate::Diagram::arc_input_index
     /// [`Diagram::site_of_arc`]: crate::Diagram::site_of_arc
+    /// [`Diagram::arc_pieces_of_input`]: crate::Diagram::arc_pieces_of_input
+    /// [`Diagram::inputs_of_arc_piece`]: crate::Diagram::inputs_of_arc_piece
     /// [`ErrorKind::InvalidArgument`]: crate::ErrorKind::InvalidArgument
     /// [`ErrorKind::Internal`]: crate::ErrorKind::Internal
     /// [`BuildStats`]: crate::BuildStats

@@ -158,6 +158,7 @@ pub(super) fn renumber(
         scale,
         domain: None,
         split: None,
+        split_arcs: None,
     }
 }
 

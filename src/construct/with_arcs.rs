@@ -105,9 +105,9 @@ pub(super) fn diagram_with_arcs(
 
 /// The diagram of points, segments and arcs split where they meet
 /// (`split::arcs`): the strict build of the pieces, then which input each
-/// piece came from (the segments' as with `split_crossings` alone; an arc
-/// piece's input arc as its site's `arc_input_index`, and an input arc's
-/// site, `site_of_arc`, that of its first piece).
+/// piece came from (the segments' as with `split_crossings` alone, the
+/// arcs' likewise: `arc_input_index` and `site_of_arc` then speak of arc
+/// pieces, `arc_pieces_of_input` and `inputs_of_arc_piece` map between).
 fn diagram_of_split_with_arcs(
     points: &[Point],
     segments: &[[Point; 2]],
@@ -142,16 +142,10 @@ fn diagram_of_split_with_arcs(
     let origins: Vec<Vec<u32>> = split.pieces.iter().map(|p| p.origins.clone()).collect();
     diagram.split =
         Some(Box::new(crate::diagram::SplitPieces::new(&origins, segments.len(), split.max_displacement, split.pixel)));
-    // arc sites are numbered by piece: name them by input arc
-    let first_arc = diagram.sites.len() - diagram.arc_sites;
-    let mut site_of_input_arc = vec![None; arcs.len()];
-    for (k, input) in diagram.arc_input.iter_mut().enumerate() {
-        let origin = split_arcs[*input as usize].origins[0];
-        *input = origin;
-        site_of_input_arc[origin as usize].get_or_insert(SiteId::from_index(first_arc + k));
-    }
-    // (an input arc that shrank to a point has none: `None` from there on)
-    diagram.arc_site = site_of_input_arc.into_iter().map_while(|s| s).collect();
+    // (the arc sites are numbered by piece, as the segments' are:
+    // `arc_pieces_of_input` maps the input arcs to them)
+    let arc_origins: Vec<Vec<u32>> = split_arcs.iter().map(|a| a.origins.clone()).collect();
+    diagram.split_arcs = Some(Box::new(crate::diagram::SplitPieces::new(&arc_origins, arcs.len(), 0.0, 0.0)));
     let stats = &mut diagram.stats;
     stats.input_segments = segments.len();
     stats.input_arcs = arcs.len();

@@ -120,4 +120,6 @@ pub struct Diagram {
     pub(crate) domain: Option<crate::query::Domain>,
     /// With `split_crossings`: the pieces' input segments.
     pub(crate) split: Option<Box<super::pieces::SplitPieces>>,
+    /// With `split_crossings` and arcs: the arc pieces' input arcs.
+    pub(crate) split_arcs: Option<Box<super::pieces::SplitPieces>>,
 }

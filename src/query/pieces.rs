@@ -74,6 +74,38 @@ impl Diagram {
         }
     }
 
+    /// The arc pieces (indices of arc sites, as [`Diagram::site_of_arc`]
+    /// takes them, ascending) that input arc `input` became: with
+    /// `split_crossings` none (it shrank to a point), one or more, else the
+    /// arc itself. Empty out of range.
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, CircularArc};
+    /// let mut b = Builder::new();
+    /// b.add_arc(CircularArc::from_bulge([0.0, 0.0], [4.0, 0.0], 1.0)?)?;
+    /// b.add_segment([[2.0, 1.0], [2.0, -3.0]])?;
+    /// let d = b.split_crossings(true).build()?;
+    /// let pieces: Vec<usize> = d.arc_pieces_of_input(0).collect();
+    /// assert_eq!(pieces, vec![0, 1]);
+    /// assert_eq!(d.inputs_of_arc_piece(1).collect::<Vec<_>>(), vec![0]);
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    pub fn arc_pieces_of_input(&self, input: usize) -> Indices<'_> {
+        match &self.split_arcs {
+            Some(split) => Indices { list: split.pieces_of(input).iter(), single: None },
+            None => Indices { list: [].iter(), single: (input < self.stats.input_arcs).then_some(input) },
+        }
+    }
+
+    /// The input arcs (ascending) that arc piece `piece` came from: one,
+    /// or several where input arcs coincided. Empty out of range.
+    pub fn inputs_of_arc_piece(&self, piece: usize) -> Indices<'_> {
+        match &self.split_arcs {
+            Some(split) => Indices { list: split.inputs_of(piece).iter(), single: None },
+            None => Indices { list: [].iter(), single: (piece < self.stats.input_arcs).then_some(piece) },
+        }
+    }
+
     /// The endpoints of piece `piece` (input coordinates), as built; `None`
     /// out of range. For a piece that repeats an earlier one or has zero
     /// length this is its own geometry, though the diagram has one site for
