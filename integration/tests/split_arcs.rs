@@ -242,3 +242,15 @@ fn arcs_with_polygons_and_splitting_are_refused_clearly() {
     assert_eq!(e.kind(), ErrorKind::InvalidArgument);
     assert!(e.to_string().contains("arcs and polygons"), "{e}");
 }
+
+/// Arcs beyond the exact range are refused as without splitting (the
+/// cuts could land past the largest double), not as crossing: the C
+/// fuzzer's case of a point at 1.8e308 beside 1e-300.
+#[test]
+fn arcs_beyond_the_exact_range_are_refused_as_such_with_splitting() {
+    let mut b = Builder::new();
+    b.add_arc(CircularArc::from_bulge([-3.0, -2e-300], [2e-300, 1.7976931348623157e308], -1.0).unwrap()).unwrap();
+    b.add_segment([[-3.0, 1.0], [3.0, -1.0]]).unwrap();
+    let e = b.split_crossings(true).build().unwrap_err();
+    assert_eq!(e.kind(), ErrorKind::UnsupportedRange, "{e}");
+}

@@ -31,13 +31,20 @@ use crate::query::Vertex;
 /// than the coordinates around it has no answer at all (its endpoints
 /// round together once the input is scaled).
 fn refuse_beyond_the_exact_range(points: &[Point], segments: &[[Point; 2]], arcs: &[CircularArc]) -> Result<(), Error> {
+    let Err(range) = within_the_exact_range(points, segments, arcs) else { return Ok(()) };
+    // crossing segments first, as `Builder::check` reports them
+    super::check_input(points, segments, &[])?;
+    Err(range)
+}
+
+/// The range check of [`refuse_beyond_the_exact_range`] alone (with
+/// splitting, crossings are no error).
+fn within_the_exact_range(points: &[Point], segments: &[[Point; 2]], arcs: &[CircularArc]) -> Result<(), Error> {
     let ends: Vec<Point> = arcs.iter().flat_map(|a| [a.start(), a.end()]).collect();
     let magnitudes = Magnitudes::of_points(points.iter().chain(segments.iter().flatten()).chain(ends.iter()));
     if magnitudes.span() <= EXACT_SPAN {
         return Ok(());
     }
-    // crossing segments first, as `Builder::check` reports them
-    super::check_input(points, segments, &[])?;
     Err(Error::new(
         ErrorKind::UnsupportedRange,
         format!(
@@ -123,8 +130,24 @@ fn diagram_of_split_with_arcs(
             Vec::new(),
         ));
     }
+    // the arcs' range first, as without splitting (the cuts of an input
+    // beyond it could land past the largest double)
+    within_the_exact_range(points, segments, arcs)?;
     let super::split::arcs::SplitWithArcs { input: split, arcs: split_arcs } =
         super::split::arcs::split_with_arcs(points, segments, arcs)?;
+    let finite = |p: &Point| p.is_finite();
+    let pieces_finite = split.points.iter().all(finite)
+        && split.pieces.iter().all(|p| p.ends.iter().all(finite))
+        && split_arcs
+            .iter()
+            .all(|a| [a.arc.start(), a.arc.end(), a.arc.centre()].iter().all(finite) && a.arc.radius().is_finite());
+    if !pieces_finite {
+        return Err(Error::new(
+            ErrorKind::UnsupportedRange,
+            "splitting crossings moved a piece beyond the range of doubles; scale the input down".to_string(),
+            Vec::new(),
+        ));
+    }
     let ends: Vec<[Point; 2]> = split.pieces.iter().map(|p| p.ends).collect();
     let arc_pieces: Vec<CircularArc> = split_arcs.iter().map(|a| a.arc).collect();
     let mut diagram = diagram_with_arcs(&split.points, &ends, &arc_pieces, false, &[]).map_err(|e| {
