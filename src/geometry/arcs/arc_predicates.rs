@@ -9,7 +9,7 @@
 use super::exact_join;
 use super::refined_depth;
 use crate::geometry::arc::CircularArc;
-use crate::geometry::curves::bisector::bisector_point;
+use crate::geometry::curves::bisector::bisector_point_on_edge;
 use crate::geometry::fault;
 use crate::geometry::point::Point;
 use crate::geometry::segments::segment_predicates::{EdgeContact, FiniteEdge, LeftDegree, MiddleMargin, SegmentDepth};
@@ -436,7 +436,7 @@ fn largest_excess(edge: &FiniteEdge, arc: &CircularArc, samples: impl Iterator<I
     let site = Site::Arc(*arc);
     let mut best = f64::NEG_INFINITY;
     for t in samples {
-        let q = bisector_point(&edge.left, &edge.right, edge.from, edge.to, t);
+        let q = bisector_point_on_edge(&edge.left, &edge.right, edge.from, edge.to, t);
         let own = 0.5 * (edge.left.distance(q) + edge.right.distance(q));
         let excess = site.distance(q) - own;
         if excess > best || best.is_nan() {

@@ -21,9 +21,6 @@ use crate::geometry::site::Site;
 /// separator). The nearest meeting that touches its pieces inside is
 /// taken, else the nearest.
 pub(crate) fn bisector_point(left: &Site, right: &Site, from: Point, to: Point, t: f64) -> Point {
-    if let Some(q) = round_enclosed_point(left, right, from, to, t) {
-        return q;
-    }
     let base = Point::new(from.x + t * (to.x - from.x), from.y + t * (to.y - from.y));
     let (dx, dy) = (to.x - from.x, to.y - from.y);
     let length = dx.hypot(dy);
@@ -71,6 +68,15 @@ pub(crate) fn bisector_point(left: &Site, right: &Site, from: Point, to: Point, 
     let mut found: Vec<f64> = roots.iter().flatten().copied().collect();
     found.sort_by(|x, y| x.abs().total_cmp(&y.abs()));
     found.iter().copied().find(|&s| inside(at(s))).or(found.first().copied()).map_or(base, at)
+}
+
+/// [`bisector_point`] for an edge of the construction, `left` the cell on
+/// its left going from `from` to `to`: round the point where one site is
+/// a point inside the other's circle (`round_enclosed_point`), else from
+/// the chord. (Only where that orientation is known: the medial axis and
+/// the polylines pass their two sites in either order.)
+pub(crate) fn bisector_point_on_edge(left: &Site, right: &Site, from: Point, to: Point, t: f64) -> Point {
+    round_enclosed_point(left, right, from, to, t).unwrap_or_else(|| bisector_point(left, right, from, to, t))
 }
 
 /// The point at fraction `t` of the edge from `from` to `to` between a
