@@ -254,3 +254,28 @@ fn arcs_beyond_the_exact_range_are_refused_as_such_with_splitting() {
     let e = b.split_crossings(true).build().unwrap_err();
     assert_eq!(e.kind(), ErrorKind::UnsupportedRange, "{e}");
 }
+
+/// What users have beside arcs: a point exactly on a segment, a straight
+/// (180°) vertex where two segments continue each other across an arc, and
+/// the whole a million from the origin (the coordinates rounded there).
+#[test]
+fn a_point_on_a_segment_and_a_straight_vertex_far_from_the_origin() {
+    for (ox, oy) in [(0.0, 0.0), (1e6, -1e6)] {
+        let p = |x: f64, y: f64| Point::new(ox + x, oy + y);
+        let pieces = vec![
+            Piece::Arc(CircularArc::from_bulge(p(0.0, 0.0), p(4.0, 0.0), 1.0).unwrap()),
+            // straight at (2, 1): two segments on one line, crossing the arc
+            Piece::Segment(p(2.0, 1.0), p(2.0, -3.0)),
+            Piece::Segment(p(2.0, 3.0), p(2.0, 1.0)),
+            // a point exactly on a segment that crosses the arc
+            Piece::Segment(p(-1.0, -1.0), p(5.0, -1.0)),
+            Piece::Point(p(1.0, -1.0)),
+        ];
+        let name = format!("point on a segment, straight vertex at ({ox}, {oy})");
+        let ((c, _, t), refused) = check_split_all_ways(&name, &pieces, 8.0 + ox.abs(), 7, false);
+        assert!(refused.is_empty());
+        // the vertical line crosses the arc, the horizontal one crosses it
+        // twice (one pair) and the vertical line; the point touches
+        assert!(c >= 3 && t >= 1, "{name}: crossings {c}, touchings {t}");
+    }
+}
