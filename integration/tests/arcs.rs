@@ -428,6 +428,65 @@ fn minimised_regressions() {
         ),
     ];
     let cases: Vec<(&str, Vec<Piece>, f64)> = vec![
+        // Pieces of `split_arcs.rs`'s random family (its seeds 18 and 23,
+        // minimised; refused in 5 and 6 of their variants before the edges
+        // of a point site went round the point): an arc's end 0.013 from
+        // another arc's end, the second arc 0.038 long beside a segment;
+        // and a point 0.006 below a segment ending on an arc and 0.42
+        // inside the arc's circle, its cell a thin tongue across the arc
+        // whose only part left is its far end, by the point (the edge of
+        // the point and the segment, cut twice, was judged lost from the
+        // middle of its chord, 0.23 long across the tongue's foot). The
+        // least of it: the arc, the segment and the point alone.
+        (
+            "a point a hair from a segment ending on an arc, inside its circle",
+            vec![
+                through(
+                    p(5.117341867941843, 2.81283625319022),
+                    p(4.812002785450521, 3.860212031892211),
+                    p(4.570201258195539, 4.924054124744998),
+                ),
+                Piece::Segment(p(9.518620573920021, 1.6656106032598605), p(4.570201258195539, 4.924054124744998)),
+                Piece::Point(p(5.072411572380088, 4.588234845661327)),
+            ],
+            16.0,
+        ),
+        (
+            "an arc's end a hair from another arc's end, a segment from it",
+            vec![
+                through(
+                    p(1.956146326845328, 0.7527017914292173),
+                    p(2.350585294694265, 1.758247019095212),
+                    p(2.4467399658076374, 2.8340990458455053),
+                ),
+                through(
+                    p(2.4343895486438214, 2.8289796576520985),
+                    p(2.4191144204388824, 2.8178817841702366),
+                    p(2.40386548644298, 2.8067479461309466),
+                ),
+                Piece::Segment(p(2.4343895486438214, 2.8289796576520985), p(0.1411879009209216, 1.878421527896621)),
+                Piece::Segment(p(7.265873054502859, 0.0036845424673892513), p(1.956146326845328, 0.7527017914292173)),
+            ],
+            16.0,
+        ),
+        (
+            "a point a hair from a segment ending on an arc, another arc across",
+            vec![
+                through(
+                    p(5.117341867941843, 2.81283625319022),
+                    p(4.812002785450521, 3.860212031892211),
+                    p(4.570201258195539, 4.924054124744998),
+                ),
+                through(
+                    p(3.7134106448279454, 4.276760515748265),
+                    p(3.841511901692683, 3.6318740128627716),
+                    p(3.932755369665334, 2.980749475491824),
+                ),
+                Piece::Segment(p(9.518620573920021, 1.6656106032598605), p(4.570201258195539, 4.924054124744998)),
+                Piece::Point(p(5.072411572380088, 4.588234845661327)),
+            ],
+            16.0,
+        ),
         // equal half circles facing each other (and mirrored, at x = -0):
         // their ends tie at infinity, the direction of the edge there is
         // a sampled zero of the support functions' difference
@@ -762,7 +821,6 @@ fn refused_or_right() {
     let p = Point::new;
     let q = (std::f64::consts::PI / 8.0).tan();
     let arc = |s: Point, e: Point, b: f64| Piece::Arc(CircularArc::from_bulge(s, e, b).unwrap());
-    let through = |s: Point, m: Point, e: Point| Piece::Arc(CircularArc::through(s, m, e).unwrap());
     let cases: Vec<(&str, Vec<Piece>, f64, usize)> = vec![
         // LibreCAD's t2.dxf minimised: two half circles whose tops lie
         // 1.8e-15 below a point's line. The second arc's vertex with the
@@ -820,52 +878,6 @@ fn refused_or_right() {
             128.0,
             0,
         ),
-        // Two of the pieces `split_arcs.rs` still refuses (its seeds 18 and
-        // 23, minimised): an arc's end 0.013 from another arc's end, the
-        // second arc 0.038 long beside a segment; and a point 0.3 inside an
-        // arc's circle beside it, the arc shared with a segment at its end,
-        // another arc across from them (the vertex of that point, the
-        // other arc's start and the arc is asked for where none exists).
-        // Refused in 5 and 6 variants (the limits below, as measured; the
-        // first is answered reversed), never answered wrong.
-        (
-            "an arc's end a hair from another arc's end, a segment from it",
-            vec![
-                through(
-                    p(1.956146326845328, 0.7527017914292173),
-                    p(2.350585294694265, 1.758247019095212),
-                    p(2.4467399658076374, 2.8340990458455053),
-                ),
-                through(
-                    p(2.4343895486438214, 2.8289796576520985),
-                    p(2.4191144204388824, 2.8178817841702366),
-                    p(2.40386548644298, 2.8067479461309466),
-                ),
-                Piece::Segment(p(2.4343895486438214, 2.8289796576520985), p(0.1411879009209216, 1.878421527896621)),
-                Piece::Segment(p(7.265873054502859, 0.0036845424673892513), p(1.956146326845328, 0.7527017914292173)),
-            ],
-            16.0,
-            REFUSED_SPLIT_SEED_18,
-        ),
-        (
-            "a point inside an arc's circle beside it, another arc across",
-            vec![
-                through(
-                    p(5.117341867941843, 2.81283625319022),
-                    p(4.812002785450521, 3.860212031892211),
-                    p(4.570201258195539, 4.924054124744998),
-                ),
-                through(
-                    p(3.7134106448279454, 4.276760515748265),
-                    p(3.841511901692683, 3.6318740128627716),
-                    p(3.932755369665334, 2.980749475491824),
-                ),
-                Piece::Segment(p(9.518620573920021, 1.6656106032598605), p(4.570201258195539, 4.924054124744998)),
-                Piece::Point(p(5.072411572380088, 4.588234845661327)),
-            ],
-            16.0,
-            REFUSED_SPLIT_SEED_23,
-        ),
     ];
     for (k, (name, pieces, size, most_refused)) in cases.into_iter().enumerate() {
         let mut refused = Vec::new();
@@ -888,11 +900,6 @@ fn refused_or_right() {
         assert!(refused.len() <= most_refused, "{name}: refused {refused:?}, at most {most_refused} expected");
     }
 }
-
-/// Variants of the two `split_arcs.rs` seeds in `refused_or_right` that
-/// are refused (measured).
-const REFUSED_SPLIT_SEED_18: usize = 5;
-const REFUSED_SPLIT_SEED_23: usize = 6;
 
 /// Time per arc against time per segment on the same layout (each arc
 /// replaced by its chord): `cargo test --release --test arcs time_per_arc -- --ignored --nocapture`.

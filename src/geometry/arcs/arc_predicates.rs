@@ -9,7 +9,7 @@
 use super::exact_join;
 use super::refined_depth;
 use crate::geometry::arc::CircularArc;
-use crate::geometry::curves::bisector::bisector_point_on_edge;
+use crate::geometry::curves::bisector::{bisector_point, bisector_point_on_edge};
 use crate::geometry::fault;
 use crate::geometry::point::Point;
 use crate::geometry::segments::segment_predicates::{EdgeContact, FiniteEdge, LeftDegree, MiddleMargin, SegmentDepth};
@@ -419,24 +419,27 @@ pub(crate) fn in_cone(arc: &CircularArc, centre: Point) -> bool {
 /// edge (positive: a middle piece stays). Perturbed in fault injection.
 pub(crate) fn arc_middle_margin(edge: FiniteEdge, _contact: EdgeContact, arc: &CircularArc) -> MiddleMargin {
     const SAMPLES: usize = 24;
-    largest_excess(&edge, arc, (1..SAMPLES).map(|k| k as f64 / SAMPLES as f64))
+    let samples = (1..SAMPLES).map(|k| k as f64 / SAMPLES as f64);
+    largest_excess(&edge, arc, samples.map(|t| bisector_point_on_edge(&edge.left, &edge.right, edge.from, edge.to, t)))
 }
 
 /// [`arc_middle_margin`] for an unbounded edge, given from its finite end
 /// (`edge.from`) to a point far out along it (`edge.to`): sampled at
 /// fractions halving down from 1/2 to 2^-30, as the stretch the arc may
-/// leave in the middle lies anywhere from near the finite end to far out.
+/// leave in the middle lies anywhere from near the finite end to far out
+/// (from the chord: by the angle round a point site, the far stretch
+/// would crowd into the last fractions).
 pub(crate) fn arc_middle_margin_on_ray(edge: FiniteEdge, arc: &CircularArc) -> MiddleMargin {
-    largest_excess(&edge, arc, (1..=30).map(|k| 0.5f64.powi(k)))
+    let samples = (1..=30).map(|k| 0.5f64.powi(k));
+    largest_excess(&edge, arc, samples.map(|t| bisector_point(&edge.left, &edge.right, edge.from, edge.to, t)))
 }
 
 /// The largest excess of the new arc's distance over the edge's own at
-/// the points of the edge at fractions `samples`.
-fn largest_excess(edge: &FiniteEdge, arc: &CircularArc, samples: impl Iterator<Item = f64>) -> MiddleMargin {
+/// the edge's points `samples`.
+fn largest_excess(edge: &FiniteEdge, arc: &CircularArc, samples: impl Iterator<Item = Point>) -> MiddleMargin {
     let site = Site::Arc(*arc);
     let mut best = f64::NEG_INFINITY;
-    for t in samples {
-        let q = bisector_point_on_edge(&edge.left, &edge.right, edge.from, edge.to, t);
+    for q in samples {
         let own = 0.5 * (edge.left.distance(q) + edge.right.distance(q));
         let excess = site.distance(q) - own;
         if excess > best || best.is_nan() {

@@ -3,7 +3,6 @@
 //! along the perpendicular to its chord, to where the two sites are
 //! equally far.
 
-use crate::geometry::arc::CircularArc;
 use crate::geometry::point::Point;
 use crate::geometry::site::Site;
 
@@ -70,45 +69,86 @@ pub(crate) fn bisector_point(left: &Site, right: &Site, from: Point, to: Point, 
     found.iter().copied().find(|&s| inside(at(s))).or(found.first().copied()).map_or(base, at)
 }
 
-/// [`bisector_point`] for an edge of the construction, `left` the cell on
-/// its left going from `from` to `to`: round the point where one site is
-/// a point inside the other's circle (`round_enclosed_point`), else from
-/// the chord. (Only where that orientation is known: the medial axis and
-/// the polylines pass their two sites in either order.)
+/// [`bisector_point`] for a finite edge of the construction, `left` the
+/// cell on its left going from `from` to `to`: by the angle round the
+/// point site where one site is a point and the other a segment or an arc
+/// (`round_point_site`), else from the chord. (Only where that
+/// orientation is known: the medial axis and the polylines pass their two
+/// sites in either order.)
 pub(crate) fn bisector_point_on_edge(left: &Site, right: &Site, from: Point, to: Point, t: f64) -> Point {
-    round_enclosed_point(left, right, from, to, t).unwrap_or_else(|| bisector_point(left, right, from, to, t))
+    round_point_site(left, right, from, to, t).unwrap_or_else(|| bisector_point(left, right, from, to, t))
 }
 
 /// The point at fraction `t` of the edge from `from` to `to` between a
-/// point and an arc whose circle holds it strictly, by the angle round the
-/// point; `None` for any other pair. Their bisector is then an ellipse
-/// round the point with the point's cell inside (a focus at the point:
-/// along the unit direction `u` from it, at `ρ = (r² − |w|²) / 2(r + w·u)`,
-/// `w` the point less the centre), and the edge runs round it with that
-/// cell on its left: counter-clockwise when the point is the left site.
-/// From the chord the edge may go either way round, the long way past the
-/// point's far side included (an arc's end a hair inside another arc's
-/// circle: the edge of that end's cell with the other arc runs round the
-/// end, and its middle, all that is left of the cell once a third arc
-/// passes, lies beyond the chord's ends, where no perpendicular from the
-/// chord meets it).
-fn round_enclosed_point(left: &Site, right: &Site, from: Point, to: Point, t: f64) -> Option<Point> {
-    let holds = |arc: &CircularArc, p: Point| arc.centre().distance(p) < arc.radius() * (1.0 - 1e-9);
-    let (p, arc, counter_clockwise) = match (*left, *right) {
-        (Site::Point(p), Site::Arc(arc)) if holds(&arc, p) => (p, arc, true),
-        (Site::Arc(arc), Site::Point(p)) if holds(&arc, p) => (p, arc, false),
+/// point `p` and a segment or an arc, by the angle round `p`; `None` for
+/// any other pair, or a point on the segment's line or the arc's circle.
+///
+/// A point's cell is star-shaped from the point (every point between it
+/// and a point nearer it than the other site is nearer too), so each
+/// direction `u` from `p` meets the bisector once, at `ρ` from `p`, with a
+/// focus at `p`:
+/// - a segment at distance `h` along the unit normal `n` from `p` (the
+///   edge touches the segment inside, so its line): a parabola,
+///   `ρ = h / (1 + u·n)`;
+/// - an arc whose circle (centre `c`, radius `r`) holds `p`: an ellipse,
+///   `ρ = (r² − |w|²) / 2(r + w·u)`, `w = p − c`;
+/// - an arc whose circle leaves `p` outside (then its convex side faces
+///   the edge): a hyperbola's branch, `ρ = (|w|² − r²) / 2(r − w·u)`.
+///
+/// The edge runs round `p` with `p`'s cell on its left: counter-clockwise
+/// when `p` is the left site. From the chord it may go either way round,
+/// the long way past `p`'s far side included, where no perpendicular from
+/// the chord meets it: a point a hair from a segment (its cell a thin
+/// tongue, the edge's ends close together across it, its middle at the
+/// tongue's far end by the point), an arc's end a hair inside another
+/// arc's circle (the edge of that end's cell with the other arc runs round
+/// the end). Where a new arc takes both ends of such an edge, all that is
+/// left of the point's cell may be that middle.
+fn round_point_site(left: &Site, right: &Site, from: Point, to: Point, t: f64) -> Option<Point> {
+    let (p, other, counter_clockwise) = match (*left, *right) {
+        (Site::Point(p), other) => (p, other, true),
+        (other, Site::Point(p)) => (p, other, false),
         _ => return None,
     };
     let angle = |q: Point| (q.y - p.y).atan2(q.x - p.x);
     let (start, end) = (angle(from), angle(to));
     let tau = std::f64::consts::TAU;
     let sweep = if counter_clockwise { (end - start).rem_euclid(tau) } else { -(start - end).rem_euclid(tau) };
-    let (c, r) = (arc.centre(), arc.radius());
-    let (ux, uy) = ((start + t * sweep).cos(), (start + t * sweep).sin());
-    let (wx, wy) = (p.x - c.x, p.y - c.y);
-    let denominator = 2.0 * (r + wx * ux + wy * uy);
-    let rho = (r * r - (wx * wx + wy * wy)) / denominator;
-    (denominator > 0.0 && rho.is_finite()).then(|| Point::new(p.x + rho * ux, p.y + rho * uy))
+    let (uy, ux) = (start + t * sweep).sin_cos();
+    let rho = match other {
+        Site::Point(_) => return None,
+        Site::Segment { a, b } => {
+            let length = (b.x - a.x).hypot(b.y - a.y);
+            let (mut nx, mut ny) = (-(b.y - a.y) / length, (b.x - a.x) / length);
+            let mut h = (a.x - p.x) * nx + (a.y - p.y) * ny;
+            if h < 0.0 {
+                (nx, ny, h) = (-nx, -ny, -h);
+            }
+            let denominator = 1.0 + ux * nx + uy * ny;
+            if !(h > 0.0 && denominator > 0.0) {
+                return None;
+            }
+            h / denominator
+        }
+        Site::Arc(arc) => {
+            let (c, r) = (arc.centre(), arc.radius());
+            let (wx, wy) = (p.x - c.x, p.y - c.y);
+            let w = wx.hypot(wy);
+            let along = wx * ux + wy * uy;
+            let (numerator, denominator) = if w < r * (1.0 - 1e-9) {
+                (r * r - w * w, 2.0 * (r + along))
+            } else if w > r * (1.0 + 1e-9) {
+                (w * w - r * r, 2.0 * (r - along))
+            } else {
+                return None;
+            };
+            if !(denominator > 0.0) {
+                return None;
+            }
+            numerator / denominator
+        }
+    };
+    rho.is_finite().then(|| Point::new(p.x + rho * ux, p.y + rho * uy))
 }
 
 /// Whether the point of `site` nearest to `q` lies inside it (a segment's
@@ -121,5 +161,65 @@ fn touches_inside(site: &Site, q: Point) -> bool {
             t > -1e-9 && t < 1.0 + 1e-9
         }
         Site::Arc(arc) => arc.spans(q),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::arc::CircularArc;
+
+    fn p(x: f64, y: f64) -> Point {
+        Point::new(x, y)
+    }
+
+    /// As far from both sites.
+    fn on_bisector(left: &Site, right: &Site, q: Point) -> bool {
+        (left.distance(q) - right.distance(q)).abs() < 1e-9
+    }
+
+    #[test]
+    fn round_a_point_a_hair_from_a_segment() {
+        // the point's cell is a thin tongue hanging below it (the parabola
+        // x² = -0.02 y - 0.0001); the edge's ends lie on its two sides one
+        // and three below, and its middle is by the point, which no
+        // perpendicular from the chord reaches
+        let (point, segment) = (Site::Point(p(0.0, -0.01)), Site::Segment { a: p(-5.0, 0.0), b: p(5.0, 0.0) });
+        let (from, to) = (p(0.0199f64.sqrt(), -1.0), p(-0.0599f64.sqrt(), -3.0));
+        assert!(on_bisector(&point, &segment, from) && on_bisector(&point, &segment, to));
+        // the point on the left: counter-clockwise round it, over the top
+        let middle = bisector_point_on_edge(&point, &segment, from, to, 0.5);
+        assert!(on_bisector(&point, &segment, middle), "{middle:?}");
+        assert!(middle.y > -0.02, "{middle:?}");
+        // from the chord: halfway down the tongue
+        assert!(bisector_point(&point, &segment, from, to, 0.5).y < -1.0);
+        // the other way along the edge, the sites swapped: the same point
+        let back = bisector_point_on_edge(&segment, &point, to, from, 0.5);
+        assert!(back.distance(middle) < 1e-12, "{back:?}");
+        // a point on the segment's line has no tongue: from the chord
+        let on_line = Site::Point(p(6.0, 0.0));
+        assert_eq!(round_point_site(&on_line, &segment, p(5.5, 1.0), p(5.5, -1.0), 0.5), None);
+    }
+
+    #[test]
+    fn round_a_point_inside_and_outside_an_arc() {
+        // the upper half of the circle of radius 2 round the origin; a
+        // point inside it (an ellipse round the point) and outside (a
+        // hyperbola's branch), the edge between where it crosses x = ±0.3,
+        // going west: the point on its left when below the edge
+        let arc = Site::Arc(CircularArc::from_bulge([2.0, 0.0], [-2.0, 0.0], 1.0).unwrap());
+        for q in [p(0.0, 1.5), p(0.0, 3.0)] {
+            let point = Site::Point(q);
+            let end = |x: f64| bisector_point(&point, &arc, p(x - 0.1, 0.5 * (q.y + 2.0)), p(x + 0.1, 0.5 * (q.y + 2.0)), 0.5);
+            let (from, to) = (end(0.3), end(-0.3));
+            assert!(on_bisector(&point, &arc, from) && on_bisector(&point, &arc, to), "{q:?}");
+            let (left, right) = if q.y < 2.0 { (&point, &arc) } else { (&arc, &point) };
+            for t in [0.1, 0.5, 0.9] {
+                let on_edge = bisector_point_on_edge(left, right, from, to, t);
+                assert!(on_bisector(&point, &arc, on_edge), "{q:?} {t}: {on_edge:?}");
+                // the short way, between the ends, on the arc's side
+                assert!(on_edge.x.abs() < 0.3 && (on_edge.y - q.y).abs() < 0.6, "{q:?} {t}: {on_edge:?}");
+            }
+        }
     }
 }
