@@ -428,6 +428,99 @@ fn minimised_regressions() {
         ),
     ];
     let cases: Vec<(&str, Vec<Piece>, f64)> = vec![
+        // Three more of the random split family (`split_arcs.rs`, 200
+        // seeds: seeds 189, 75 and 96, shuffled or scaled down), minimised.
+        // Two arcs from one end, the shorter's other end 1.2e-4 inside the
+        // longer's circle: that end's cell, a needle from it to the
+        // longer's centre, loses its whole boundary to the shorter arc but
+        // the stretch of its edge with the longer arc past the shorter's
+        // end, outside its cone, where the distances tie (the arc is as
+        // far as its own end there).
+        (
+            "two arcs from one end, the shorter's end a hair inside the longer's circle",
+            vec![
+                through(
+                    p(5.651539346372829, 3.6620563868959835),
+                    p(5.373651382483308, 4.497849811024895),
+                    p(5.237946811337224, 5.368112206892874),
+                ),
+                through(
+                    p(5.651539346372829, 3.6620563868959835),
+                    p(5.511150236306625, 4.061969819814719),
+                    p(5.381834615586341, 4.465600004874951),
+                ),
+            ],
+            8.0,
+        ),
+        // The same, the longer arc in first, with a point and a third arc
+        // beside: the needle crosses the edge of that end and the point,
+        // 0.85 long, in a stretch of 0.01 that 23 samples miss.
+        (
+            "two arcs from one end, a needle of a cell across a point's edge",
+            vec![
+                through(
+                    p(5.651539346372829, 3.6620563868959835),
+                    p(5.373651382483308, 4.497849811024895),
+                    p(5.237946811337224, 5.368112206892874),
+                ),
+                through(
+                    p(5.986511868252364, 5.420543811886546),
+                    p(5.9361608889298045, 4.407673405529537),
+                    p(5.76844588578615, 3.4075167383452936),
+                ),
+                through(
+                    p(5.651539346372829, 3.6620563868959835),
+                    p(5.511150236306625, 4.061969819814719),
+                    p(5.381834615586341, 4.465600004874951),
+                ),
+                Piece::Point(p(5.890132807428784, 4.406534931214474)),
+            ],
+            8.0,
+        ),
+        // An arc's start 0.32 outside another arc's circle: the unbounded
+        // edge of that start and the other arc wraps round the start, and
+        // its stretch outside the first arc's cone stays, where no
+        // perpendicular from its chord reaches (scaled by 2^20 from the
+        // family's scaled-down variant).
+        (
+            "an arc's start a hair outside another arc's circle, its ray round the start",
+            vec![
+                through(
+                    p(0.18863703442089208, 7.207879912822123),
+                    p(-0.3024239688053415, 4.6100497653846455),
+                    p(1.1253094895582763, 2.384866726690234),
+                ),
+                through(
+                    p(0.4614383928924437, 2.505598139200984),
+                    p(2.9895535340801036, -1.3373239583276653),
+                    p(7.287707819070564, 0.3013603179117985),
+                ),
+            ],
+            8.0,
+        ),
+        // An arc's start 0.002 outside another arc's circle, as above, a
+        // third arc from the other's start.
+        (
+            "an arc starting 0.002 outside another arc, a third from that one's start",
+            vec![
+                through(
+                    p(3.0787640391943114, 9.034358862207682),
+                    p(5.538115282929401, 9.771612624551505),
+                    p(8.07833162653021, 9.398447007358836),
+                ),
+                through(
+                    p(5.055826535149097, 9.717999529777215),
+                    p(11.048404979349991, 7.125419801931789),
+                    p(9.139824873469442, 0.8812394686475844),
+                ),
+                through(
+                    p(3.0787640391943114, 9.034358862207682),
+                    p(2.452289331583585, 9.241759375725348),
+                    p(1.7951917203064272, 9.180863878870491),
+                ),
+            ],
+            16.0,
+        ),
         // Pieces of `split_arcs.rs`'s random family (its seeds 18 and 23,
         // minimised; refused in 5 and 6 of their variants before the edges
         // of a point site went round the point): an arc's end 0.013 from

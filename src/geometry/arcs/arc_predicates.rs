@@ -9,7 +9,7 @@
 use super::exact_join;
 use super::refined_depth;
 use crate::geometry::arc::CircularArc;
-use crate::geometry::curves::bisector::{bisector_point, bisector_point_on_edge};
+use crate::geometry::curves::bisector::{bisector_point, bisector_point_on_edge, round_point_site};
 use crate::geometry::fault;
 use crate::geometry::point::Point;
 use crate::geometry::segments::segment_predicates::{EdgeContact, FiniteEdge, LeftDegree, MiddleMargin, SegmentDepth};
@@ -415,38 +415,104 @@ pub(crate) fn in_cone(arc: &CircularArc, centre: Point) -> bool {
 
 /// How clearly the middle of a finite edge stays out of the new arc's cell
 /// when both its ends are in it: the largest excess of the distance to the
-/// arc over the distance to the edge's own sites, at points along the
-/// edge (positive: a middle piece stays). Perturbed in fault injection.
+/// arc over the distance to the edge's own sites along the edge (positive:
+/// a middle piece stays), from 23 even fractions of it, refined
+/// (`largest_excess`). Perturbed in fault injection.
 pub(crate) fn arc_middle_margin(edge: FiniteEdge, _contact: EdgeContact, arc: &CircularArc) -> MiddleMargin {
-    const SAMPLES: usize = 24;
-    let samples = (1..SAMPLES).map(|k| k as f64 / SAMPLES as f64);
-    largest_excess(&edge, arc, samples.map(|t| bisector_point_on_edge(&edge.left, &edge.right, edge.from, edge.to, t)))
+    let fractions: Vec<f64> = (1..24).map(|k| k as f64 / 24.0).collect();
+    let point_at = |t: f64| Some(bisector_point_on_edge(&edge.left, &edge.right, edge.from, edge.to, t));
+    MiddleMargin::of(fault::perturb(largest_excess(&edge, arc, &fractions, point_at)))
 }
 
 /// [`arc_middle_margin`] for an unbounded edge, given from its finite end
-/// (`edge.from`) to a point far out along it (`edge.to`): sampled at
-/// fractions halving down from 1/2 to 2^-30, as the stretch the arc may
-/// leave in the middle lies anywhere from near the finite end to far out
-/// (from the chord: by the angle round a point site, the far stretch
-/// would crowd into the last fractions).
+/// (`edge.from`) to a point far out along it (`edge.to`), as the stretch
+/// the arc may leave in the middle lies anywhere from near the finite end
+/// to far out: from the chord at fractions halving down from 1/2 to
+/// 2^-30; and where a site is a point, by the angle round it at 23 even
+/// fractions and at fractions halving up to 1 - 2^-30, far out (the edge
+/// may run the long way round the point from its finite end, where no
+/// perpendicular from the chord meets it: an arc's start a hair outside
+/// another arc's circle, the edge of that start and the other arc
+/// wrapping round it, its stretch outside the new arc's cone kept).
 pub(crate) fn arc_middle_margin_on_ray(edge: FiniteEdge, arc: &CircularArc) -> MiddleMargin {
-    let samples = (1..=30).map(|k| 0.5f64.powi(k));
-    largest_excess(&edge, arc, samples.map(|t| bisector_point(&edge.left, &edge.right, edge.from, edge.to, t)))
+    let (left, right, from, to) = (&edge.left, &edge.right, edge.from, edge.to);
+    let halving: Vec<f64> = (1..=30).rev().map(|k| 0.5f64.powi(k)).collect();
+    let from_chord = largest_excess(&edge, arc, &halving, |t| Some(bisector_point(left, right, from, to, t)));
+    let round: Vec<f64> = (1..24).map(|k| k as f64 / 24.0).chain((5..=30).map(|k| 1.0 - 0.5f64.powi(k))).collect();
+    let round = largest_excess(&edge, arc, &round, |t| round_point_site(left, right, from, to, t));
+    MiddleMargin::of(fault::perturb(from_chord.max(round)))
 }
 
 /// The largest excess of the new arc's distance over the edge's own at
-/// the edge's points `samples`.
-fn largest_excess(edge: &FiniteEdge, arc: &CircularArc, samples: impl Iterator<Item = Point>) -> MiddleMargin {
+/// its points `point_at(t)`, `t` over the increasing `fractions`; where
+/// none is positive, refined between the neighbours of the largest by a
+/// golden-section search (a middle that stays can be far narrower than the
+/// samples' spacing: a point a hair inside an arc's circle keeps a needle
+/// of a cell, from the point to the centre, which crosses the point's
+/// other edges).
+///
+/// A point outside the arc's cone stays out of its cell whatever the
+/// distances say (there the arc is as far as its nearer end, a site
+/// already: a tie where that end is one of the edge's sites), by as much
+/// as it lies outside the cone: an edge of the arc's end running round it
+/// keeps its stretch past the arc's end.
+fn largest_excess(edge: &FiniteEdge, arc: &CircularArc, fractions: &[f64], point_at: impl Fn(f64) -> Option<Point>) -> f64 {
     let site = Site::Arc(*arc);
-    let mut best = f64::NEG_INFINITY;
-    for q in samples {
-        let own = 0.5 * (edge.left.distance(q) + edge.right.distance(q));
-        let excess = site.distance(q) - own;
-        if excess > best || best.is_nan() {
-            best = excess;
+    let excess = |t: f64| {
+        let q = point_at(t)?;
+        Some(if arc.spans(q) {
+            site.distance(q) - 0.5 * (edge.left.distance(q) + edge.right.distance(q))
+        } else {
+            outside_cone(arc, q)
+        })
+    };
+    let mut best = (f64::NEG_INFINITY, None);
+    for (k, &t) in fractions.iter().enumerate() {
+        if let Some(e) = excess(t) {
+            if e > best.0 || best.0.is_nan() {
+                best = (e, Some(k));
+            }
         }
     }
-    MiddleMargin::of(fault::perturb(best))
+    let (found, Some(k)) = best else { return best.0 };
+    if found > 0.0 {
+        return found;
+    }
+    let (mut lo, mut hi) = (if k > 0 { fractions[k - 1] } else { 0.0 }, fractions.get(k + 1).copied().unwrap_or(1.0));
+    let ratio = 0.5 * (5f64.sqrt() - 1.0);
+    let mut most = found;
+    for _ in 0..40 {
+        let (x1, x2) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
+        let (e1, e2) = (excess(x1).unwrap_or(f64::NEG_INFINITY), excess(x2).unwrap_or(f64::NEG_INFINITY));
+        most = most.max(e1).max(e2);
+        if most > 0.0 {
+            break;
+        }
+        if e1 >= e2 {
+            hi = x2;
+        } else {
+            lo = x1;
+        }
+    }
+    most
+}
+
+/// How far `q` lies from the arc's cone, outside it: its distance to the
+/// nearer of the cone's two bounding rays, from the centre through the
+/// arc's ends.
+fn outside_cone(arc: &CircularArc, q: Point) -> f64 {
+    let c = arc.centre();
+    let to_ray = |end: Point| {
+        let (ux, uy) = (end.x - c.x, end.y - c.y);
+        let (qx, qy) = (q.x - c.x, q.y - c.y);
+        let along = ux * qx + uy * qy;
+        if along > 0.0 {
+            (ux * qy - uy * qx).abs() / ux.hypot(uy)
+        } else {
+            qx.hypot(qy)
+        }
+    };
+    to_ray(arc.start()).min(to_ray(arc.end()))
 }
 
 #[cfg(test)]

@@ -72,9 +72,12 @@ pub(crate) fn bisector_point(left: &Site, right: &Site, from: Point, to: Point, 
 /// [`bisector_point`] for a finite edge of the construction, `left` the
 /// cell on its left going from `from` to `to`: by the angle round the
 /// point site where one site is a point and the other a segment or an arc
-/// (`round_point_site`), else from the chord. (Only where that
-/// orientation is known: the medial axis and the polylines pass their two
-/// sites in either order.)
+/// (`round_point_site`), else from the chord. For the construction's
+/// margins only: the polylines, Bézier arcs and medial axis points keep to
+/// the chord, as an edge of two vertices of the same three sites a
+/// rounding apart can have its ends in the other order than its sites say
+/// (an arc, another arc's end and a third arc: 4e-7 apart, 0.1 from the
+/// end), and round the point that edge would be a whole loop.
 pub(crate) fn bisector_point_on_edge(left: &Site, right: &Site, from: Point, to: Point, t: f64) -> Point {
     round_point_site(left, right, from, to, t).unwrap_or_else(|| bisector_point(left, right, from, to, t))
 }
@@ -104,7 +107,7 @@ pub(crate) fn bisector_point_on_edge(left: &Site, right: &Site, from: Point, to:
 /// arc's circle (the edge of that end's cell with the other arc runs round
 /// the end). Where a new arc takes both ends of such an edge, all that is
 /// left of the point's cell may be that middle.
-fn round_point_site(left: &Site, right: &Site, from: Point, to: Point, t: f64) -> Option<Point> {
+pub(crate) fn round_point_site(left: &Site, right: &Site, from: Point, to: Point, t: f64) -> Option<Point> {
     let (p, other, counter_clockwise) = match (*left, *right) {
         (Site::Point(p), other) => (p, other, true),
         (other, Site::Point(p)) => (p, other, false),
