@@ -1033,6 +1033,16 @@ static void query_domain_pieces(ctx *c, const segvoronoi_diagram *d, rng *r, siz
     for (size_t i = 0; i < in_segments && i < 16; ++i)
         query_list_u32(c, "segvoronoi_diagram_pieces_of_input", r, npieces, segvoronoi_diagram_pieces_of_input, d, i, (uint32_t)npieces);
     expect(c, "segvoronoi_diagram_pieces_of_input", "bad id", segvoronoi_diagram_pieces_of_input(d, in_segments, NULL, 0, &count), SEGVORONOI_STATUS_OUT_OF_RANGE, NULL);
+    segvoronoi_stats arcs = {.struct_size = sizeof arcs};
+    if (outcome(c, "segvoronoi_diagram_stats", segvoronoi_diagram_stats(d, &arcs), 0, NULL) == 0) {
+        size_t na = segvoronoi_diagram_arc_site_count(d), in_arcs = arcs.input_arcs;
+        for (size_t i = 0; i < in_arcs && i < 16; ++i)
+            query_list_u32(c, "segvoronoi_diagram_arc_pieces_of_input", r, na, segvoronoi_diagram_arc_pieces_of_input, d, i, (uint32_t)na);
+        for (size_t i = 0; i < na && i < 16; ++i)
+            query_list_u32(c, "segvoronoi_diagram_inputs_of_arc_piece", r, in_arcs, segvoronoi_diagram_inputs_of_arc_piece, d, i, (uint32_t)in_arcs);
+        expect(c, "segvoronoi_diagram_arc_pieces_of_input", "bad id", segvoronoi_diagram_arc_pieces_of_input(d, in_arcs, NULL, 0, &count), SEGVORONOI_STATUS_OUT_OF_RANGE, NULL);
+        expect(c, "segvoronoi_diagram_inputs_of_arc_piece", "bad id", segvoronoi_diagram_inputs_of_arc_piece(d, na, NULL, 0, &count), SEGVORONOI_STATUS_OUT_OF_RANGE, NULL);
+    }
     double disp;
     if (outcome(c, "segvoronoi_diagram_max_split_displacement", segvoronoi_diagram_max_split_displacement(d, &disp), 0, NULL) == 0)
         finite(c, "segvoronoi_diagram_max_split_displacement", "value", disp);

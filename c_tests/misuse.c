@@ -201,6 +201,8 @@ CASE(bad_axis_piece, segvoronoi_medial_axis_piece(f->axis, 0, 99999, &f->piece))
 CASE(bad_loop, segvoronoi_offset_loop(f->offset, 9999, &f->loop))
 CASE(bad_loop_piece, segvoronoi_offset_piece(f->offset, 0, 99999, &f->loop_piece))
 CASE(bad_input_segment, segvoronoi_diagram_pieces_of_input(f->diagram, 9999, NULL, 0, &f->count))
+CASE(bad_input_arc, segvoronoi_diagram_arc_pieces_of_input(f->diagram, 9999, NULL, 0, &f->count))
+CASE(bad_arc_piece, segvoronoi_diagram_inputs_of_arc_piece(f->diagram, 9999, NULL, 0, &f->count))
 CASE(bad_segment_site, segvoronoi_diagram_segment_endpoints(f->diagram, 0, f->ids))
 CASE(bad_edge_polyline, segvoronoi_diagram_edge_polyline(f->diagram, 777777, 0.1, NULL, 0, &f->count))
 CASE(bad_topology_flags, segvoronoi_diagram_topology(f->diagram, 0x100, &f->text, NULL))
@@ -280,6 +282,8 @@ static const misuse_case table[] = {
     ROW(bad_loop, OUT_OF_RANGE, "loop 9999"),
     ROW(bad_loop_piece, OUT_OF_RANGE, "piece 99999"),
     ROW(bad_input_segment, OUT_OF_RANGE, "input segment 9999"),
+    ROW(bad_input_arc, OUT_OF_RANGE, "input arc 9999"),
+    ROW(bad_arc_piece, OUT_OF_RANGE, "arc piece 9999"),
     ROW(bad_segment_site, INVALID_ARGUMENT, "site 0 is a point site"),
     ROW(bad_edge_polyline, OUT_OF_RANGE, "edge 777777"),
     ROW(bad_topology_flags, INVALID_ARGUMENT, "0x100"),

@@ -1482,6 +1482,48 @@ static void test_split_crossings(void) {
     segvoronoi_diagram_free(d);
 }
 
+/* Splitting with arcs: a half circle crossed by a segment through its
+ * top becomes two arc pieces; the map between arc pieces and input arcs
+ * both ways, each piece's site and back, and out-of-range ids. */
+static void test_split_arcs(void) {
+    segvoronoi_builder *b = segvoronoi_builder_new();
+    segvoronoi_diagram *d = NULL;
+    segvoronoi_stats stats = {.struct_size = sizeof stats};
+    segvoronoi_arc arc = {.struct_size = sizeof arc};
+    uint32_t list[8], site = 0;
+    size_t n = 0, p, index = 99;
+    CHECK_STATUS(segvoronoi_builder_add_arc(b, 0, 0, 4, 0, 1, NULL), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_add_segment(b, 2, 1, 2, -3), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_build(b, &d), SEGVORONOI_STATUS_INTERSECTING);
+    CHECK_STATUS(segvoronoi_builder_set_split_crossings(b, 1), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_build(b, &d), SEGVORONOI_STATUS_OK);
+    segvoronoi_builder_free(b);
+    CHECK_STATUS(segvoronoi_diagram_validate(d), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_diagram_stats(d, &stats), SEGVORONOI_STATUS_OK);
+    CHECK(stats.input_arcs == 1 && stats.crossings == 1);
+    CHECK(segvoronoi_diagram_arc_site_count(d) == 2);
+    CHECK_STATUS(segvoronoi_diagram_arc_pieces_of_input(d, 0, NULL, 0, &n), SEGVORONOI_STATUS_OK);
+    CHECK(n == 2);
+    CHECK_STATUS(segvoronoi_diagram_arc_pieces_of_input(d, 0, list, 1, &n), SEGVORONOI_STATUS_BUFFER_TOO_SMALL);
+    CHECK_STATUS(segvoronoi_diagram_arc_pieces_of_input(d, 0, list, 8, &n), SEGVORONOI_STATUS_OK);
+    CHECK(n == 2 && list[0] == 0 && list[1] == 1);
+    CHECK_STATUS(segvoronoi_diagram_arc_pieces_of_input(d, 1, list, 8, &n), SEGVORONOI_STATUS_OUT_OF_RANGE);
+    CHECK_STATUS(segvoronoi_diagram_arc_pieces_of_input(NULL, 0, list, 8, &n), SEGVORONOI_STATUS_NULL_ARGUMENT);
+    for (p = 0; p < 2; ++p) {
+        CHECK_STATUS(segvoronoi_diagram_inputs_of_arc_piece(d, p, list, 8, &n), SEGVORONOI_STATUS_OK);
+        CHECK(n == 1 && list[0] == 0);
+        /* the piece's site, its arc (one end on the segment, at x = 2), and back */
+        CHECK_STATUS(segvoronoi_diagram_site_of_arc(d, p, &site), SEGVORONOI_STATUS_OK);
+        CHECK_STATUS(segvoronoi_diagram_arc(d, site, &arc), SEGVORONOI_STATUS_OK);
+        CHECK(arc.start[0] == 2.0 || arc.end[0] == 2.0);
+        CHECK_STATUS(segvoronoi_diagram_arc_input_index(d, site, &index), SEGVORONOI_STATUS_OK);
+        CHECK(index == p);
+    }
+    CHECK_STATUS(segvoronoi_diagram_inputs_of_arc_piece(d, 2, list, 8, &n), SEGVORONOI_STATUS_OUT_OF_RANGE);
+    CHECK_STATUS(segvoronoi_diagram_site_of_arc(d, 2, &site), SEGVORONOI_STATUS_OUT_OF_RANGE);
+    segvoronoi_diagram_free(d);
+}
+
 /* segvoronoi_builder_set_threads: the same topology text at 1 thread (no
  * thread started) and at the machine's cores, on 30,000 segments (from
  * 20,000 the input check runs beside the point insertions). */
@@ -1624,6 +1666,7 @@ int segvoronoi_run_c_tests(void) {
     test_polygon_domain();
     test_offsets();
     test_split_crossings();
+    test_split_arcs();
     test_threads();
     fprintf(stderr, "segvoronoi C API tests: %d checks, %d failed\n", checks, failures);
     return failures;

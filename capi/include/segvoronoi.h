@@ -660,7 +660,8 @@ enum segvoronoi_status segvoronoi_diagram_arc(const struct segvoronoi_diagram *d
 
 // The input index of the arc site `site` in `*out_index`: which
 // `segvoronoi_builder_add_arc` (or `_add_arc_through`, or arc of a bulged
-// polyline) it is.
+// polyline) it is; with splitting, which arc piece
+// (`segvoronoi_diagram_inputs_of_arc_piece` gives its input arcs).
 //
 // Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`site >= site_count`),
 // `INVALID_ARGUMENT` (a point or segment site); then nothing is written.
@@ -669,10 +670,13 @@ enum segvoronoi_status segvoronoi_diagram_arc_input_index(const struct segvorono
                                                           size_t site,
                                                           size_t *out_index);
 
-// The site that input arc `input_index` became, in `*out_site`.
+// The site that input arc `input_index` became, in `*out_site`; with
+// splitting, the site of arc piece `input_index` (below
+// `segvoronoi_diagram_arc_site_count`; `segvoronoi_diagram_arc_pieces_of_input`
+// gives an input arc's pieces).
 //
-// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (no such input arc); then
-// nothing is written.
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (no such input arc or arc
+// piece); then nothing is written.
 // Thread safety: reads the diagram only; safe from many threads at once.
 enum segvoronoi_status segvoronoi_diagram_site_of_arc(const struct segvoronoi_diagram *diagram,
                                                       size_t input_index,
@@ -1329,6 +1333,34 @@ enum segvoronoi_status segvoronoi_diagram_inputs_of_piece(const struct segvorono
                                                           uint32_t *inputs,
                                                           size_t capacity,
                                                           size_t *count);
+
+// The arc pieces (ascending indices below
+// `segvoronoi_diagram_arc_site_count`, as `segvoronoi_diagram_site_of_arc`
+// takes them) that input arc `input` became: with splitting none (it
+// shrank to a point), one or more where it was cut, else `input` itself.
+// Buffer rules as for `segvoronoi_diagram_pieces_of_input`.
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`input` is not an input arc),
+// `BUFFER_TOO_SMALL`.
+// Thread safety: reads the diagram only; safe from many threads at once.
+enum segvoronoi_status segvoronoi_diagram_arc_pieces_of_input(const struct segvoronoi_diagram *diagram,
+                                                              size_t input,
+                                                              uint32_t *pieces,
+                                                              size_t capacity,
+                                                              size_t *count);
+
+// The input arcs (ascending) that arc piece `piece` came from: one, or
+// several where input arcs coincided. Buffer rules as for
+// `segvoronoi_diagram_pieces_of_input`.
+//
+// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`piece >=
+// segvoronoi_diagram_arc_site_count`), `BUFFER_TOO_SMALL`.
+// Thread safety: reads the diagram only; safe from many threads at once.
+enum segvoronoi_status segvoronoi_diagram_inputs_of_arc_piece(const struct segvoronoi_diagram *diagram,
+                                                              size_t piece,
+                                                              uint32_t *inputs,
+                                                              size_t capacity,
+                                                              size_t *count);
 
 // The endpoints of piece `piece` in `out[0..4]` as `x0, y0, x1, y1`
 // (input coordinates, as built).

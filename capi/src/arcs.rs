@@ -439,7 +439,8 @@ pub unsafe extern "C" fn segvoronoi_diagram_arc(
 
 /// The input index of the arc site `site` in `*out_index`: which
 /// `segvoronoi_builder_add_arc` (or `_add_arc_through`, or arc of a bulged
-/// polyline) it is.
+/// polyline) it is; with splitting, which arc piece
+/// (`segvoronoi_diagram_inputs_of_arc_piece` gives its input arcs).
 ///
 /// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`site >= site_count`),
 /// `INVALID_ARGUMENT` (a point or segment site); then nothing is written.
@@ -462,10 +463,13 @@ pub unsafe extern "C" fn segvoronoi_diagram_arc_input_index(
     })
 }
 
-/// The site that input arc `input_index` became, in `*out_site`.
+/// The site that input arc `input_index` became, in `*out_site`; with
+/// splitting, the site of arc piece `input_index` (below
+/// `segvoronoi_diagram_arc_site_count`; `segvoronoi_diagram_arc_pieces_of_input`
+/// gives an input arc's pieces).
 ///
-/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (no such input arc); then
-/// nothing is written.
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (no such input arc or arc
+/// piece); then nothing is written.
 /// Thread safety: reads the diagram only; safe from many threads at once.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_diagram_site_of_arc(
@@ -476,7 +480,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_site_of_arc(
     require_non_null!(out_site);
     with_diagram(diagram, |d| match d.site_of_arc(input_index) {
         Some(s) => write_out(out_site, s.index() as u32),
-        None => out_of_range("input arc", input_index, d.stats().input_arcs),
+        None => out_of_range("arc", input_index, d.arc_site_count()),
     })
 }
 

@@ -1,6 +1,6 @@
-//! The pieces a diagram was built from and the input segments they came
-//! from (`Builder::split_crossings`; without splitting, piece `i` is input
-//! segment `i`).
+//! The pieces a diagram was built from and the input segments and arcs
+//! they came from (`Builder::split_crossings`; without splitting, piece
+//! `i` is input segment `i`, arc piece `i` input arc `i`).
 
 use super::diagram::{count, segvoronoi_diagram, with_diagram};
 use super::out::{require_buffer, write_buffer, write_out};
@@ -61,6 +61,56 @@ pub unsafe extern "C" fn segvoronoi_diagram_inputs_of_piece(
             return out_of_range("piece", piece, d.piece_count());
         }
         write_buffer(d.inputs_of_piece(piece).map(|i| i as u32), inputs, capacity, count)
+    })
+}
+
+/// The arc pieces (ascending indices below
+/// `segvoronoi_diagram_arc_site_count`, as `segvoronoi_diagram_site_of_arc`
+/// takes them) that input arc `input` became: with splitting none (it
+/// shrank to a point), one or more where it was cut, else `input` itself.
+/// Buffer rules as for `segvoronoi_diagram_pieces_of_input`.
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`input` is not an input arc),
+/// `BUFFER_TOO_SMALL`.
+/// Thread safety: reads the diagram only; safe from many threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_arc_pieces_of_input(
+    diagram: *const segvoronoi_diagram,
+    input: usize,
+    pieces: *mut u32,
+    capacity: usize,
+    count: *mut usize,
+) -> segvoronoi_status {
+    require_buffer!(pieces, capacity, count);
+    with_diagram(diagram, |d| {
+        if input >= d.stats().input_arcs {
+            return out_of_range("input arc", input, d.stats().input_arcs);
+        }
+        write_buffer(d.arc_pieces_of_input(input).map(|p| p as u32), pieces, capacity, count)
+    })
+}
+
+/// The input arcs (ascending) that arc piece `piece` came from: one, or
+/// several where input arcs coincided. Buffer rules as for
+/// `segvoronoi_diagram_pieces_of_input`.
+///
+/// Errors: `NULL_ARGUMENT`, `OUT_OF_RANGE` (`piece >=
+/// segvoronoi_diagram_arc_site_count`), `BUFFER_TOO_SMALL`.
+/// Thread safety: reads the diagram only; safe from many threads at once.
+#[no_mangle]
+pub unsafe extern "C" fn segvoronoi_diagram_inputs_of_arc_piece(
+    diagram: *const segvoronoi_diagram,
+    piece: usize,
+    inputs: *mut u32,
+    capacity: usize,
+    count: *mut usize,
+) -> segvoronoi_status {
+    require_buffer!(inputs, capacity, count);
+    with_diagram(diagram, |d| {
+        if piece >= d.arc_site_count() {
+            return out_of_range("arc piece", piece, d.arc_site_count());
+        }
+        write_buffer(d.inputs_of_arc_piece(piece).map(|i| i as u32), inputs, capacity, count)
     })
 }
 
