@@ -239,7 +239,9 @@ impl Diagram {
             EdgeEnd::Infinite { .. } => None,
         });
         let [Some(from), Some(to)] = positions else { return None };
-        let q = self.edge_curve(piece.edge, from, to)?.point(t);
+        // along the edge's own direction (a conic's points depend on it)
+        let curve = self.edge_curve(piece.edge)?;
+        let q = if piece.reversed { curve.point(1.0 - t) } else { curve.point(t) };
         let q = self.scale.point_to_input(q);
         if q.x.is_nan() || q.y.is_nan() {
             // the curve's parameters underflowed: an input beyond the exact
@@ -462,8 +464,7 @@ impl SampledPiece {
 
     /// The points of the edge's polyline from `first` to `last`.
     fn for_each_edge_point(&self, d: &Diagram, emit: impl FnMut(Point)) {
-        let (start, end) = (d.store.position[self.first], d.store.position[self.last]);
-        d.for_each_polyline_point(self.shape, start, end, self.tolerance, emit);
+        d.for_each_polyline_point(self.shape, [self.first, self.last], self.tolerance, emit);
     }
 
     /// Calls `emit(j, [x, y, clearance])` for each of its `n` points

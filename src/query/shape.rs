@@ -25,7 +25,7 @@
 //! points are the vertex positions themselves, so that drawings join up.
 
 use crate::diagram::{Diagram, EdgeId, SiteId};
-use crate::geometry::curves::bisector::bisector_point;
+use crate::geometry::curves::bisector::bisector_point_of_edge;
 use crate::geometry::curves::edge_curve::EdgeCurve;
 use crate::geometry::curves::parabola::{focus_and_directrix, Parabola};
 use crate::geometry::predicates::Orientation;
@@ -181,33 +181,35 @@ impl Diagram {
             return None;
         }
         let edge = self.edge(id)?;
-        let (start, end) = self.finite_ends(&edge)?;
-        self.for_each_polyline_point(self.shape_of(&edge), start, end, tolerance, emit);
+        let ends = self.finite_end_vertices(&edge)?;
+        self.for_each_polyline_point(self.shape_of(&edge), ends, tolerance, emit);
         Some(())
     }
 
     /// Calls `emit` with each point of the polyline of `edge_polyline` for
-    /// an edge of shape `shape` from `start` to `end` (the positions of its
+    /// an edge of shape `shape` between the finite vertices `ends` (its
     /// `ends[0]` and `ends[1]`), for a positive `tolerance`, in order,
-    /// allocating nothing: at least two points, the first `start` and the
-    /// last `end` exactly. (The parabola of a `Parabola` shape is the one of
+    /// allocating nothing (but for a curved edge's witnesses): at least
+    /// two points, the first and the last the vertices' positions exactly. (The parabola of a `Parabola` shape is the one of
     /// its edge's sites: the same focus and directrix points.)
     pub(crate) fn for_each_polyline_point(
         &self,
         shape: EdgeShape,
-        start: Point,
-        end: Point,
+        ends: [usize; 2],
         tolerance: f64,
         mut emit: impl FnMut(Point),
     ) {
+        let (start, end) = (self.store.position[ends[0]], self.store.position[ends[1]]);
         if let EdgeShape::Conic { sites } = shape {
             // in the build's power-of-two scaled coordinates, where
             // differences of distances do not underflow (input at 1e-300);
             // each point passed on when the next comes, so that the first
             // and the last are the vertices themselves
             let (f, scale) = (self.scale.to_internal, self.scale);
+            let witnesses = self.end_witnesses(&sites, ends).map(|w| w.map(|w| w.scaled(f)));
             let mut held: Option<Point> = None;
-            conic_polyline(&sites.map(|s| s.scaled(f)), start.scaled(f), end.scaled(f), tolerance * f, &mut |p: Point| {
+            let sites = sites.map(|s| s.scaled(f));
+            conic_polyline(&sites, &witnesses, start.scaled(f), end.scaled(f), tolerance * f, &mut |p: Point| {
                 held = Some(match held {
                     None => start,
                     Some(previous) => {
@@ -298,7 +300,8 @@ impl Diagram {
         match self.shape_of(&edge) {
             EdgeShape::Conic { sites } => {
                 let f = self.scale.to_internal;
-                let ([_, p1, _], w) = conic_bezier(&sites.map(|s| s.scaled(f)), start.scaled(f), end.scaled(f))?;
+                let witnesses = self.end_witnesses(&sites, self.finite_end_vertices(&edge)?).map(|w| w.map(|w| w.scaled(f)));
+                let ([_, p1, _], w) = conic_bezier(&sites.map(|s| s.scaled(f)), &witnesses, start.scaled(f), end.scaled(f))?;
                 let control = self.scale.point_to_input(p1);
                 control.is_finite().then_some(([start, control, end], w))
             }
@@ -309,10 +312,30 @@ impl Diagram {
 
     /// The positions of both ends of a finite edge.
     fn finite_ends(&self, e: &crate::query::Edge) -> Option<(Point, Point)> {
+        let [u, v] = self.finite_end_vertices(e)?;
+        Some((self.store.position[u], self.store.position[v]))
+    }
+
+    /// The vertices (indices) at both ends of a finite edge.
+    fn finite_end_vertices(&self, e: &crate::query::Edge) -> Option<[usize; 2]> {
         match e.ends {
-            [EdgeEnd::Vertex(u), EdgeEnd::Vertex(v)] => Some((self.store.position[u.index()], self.store.position[v.index()])),
+            [EdgeEnd::Vertex(u), EdgeEnd::Vertex(v)] => Some([u.index(), v.index()]),
             _ => None,
         }
+    }
+
+    /// The third site (input coordinates) of each of the vertices `ends`
+    /// of an edge between `sites`: the edge's points are no nearer it than
+    /// their own (`bisector_point_of_edge`).
+    pub(crate) fn end_witnesses(&self, sites: &[Site; 2], ends: [usize; 2]) -> [Option<Site>; 2] {
+        ends.map(|v| {
+            self.store
+                .sites_of(crate::diagram::VertexId(v as u32))
+                .iter()
+                .filter(|s| s.index() < self.sites.len())
+                .map(|s| self.sites[s.index()])
+                .find(|w| !sites.contains(w))
+        })
     }
 
     /// For a parabolic edge from `start` to `end`: its parabola in internal
@@ -335,33 +358,42 @@ impl Diagram {
         (from.is_finite() && to.is_finite()).then_some((parabola, from, to))
     }
 
-    /// The curve of edge `id` from `start` to `end` (input coordinates, in
-    /// either direction along it), in internal coordinates (the diagram's
-    /// power-of-two scale); `None` if the id is out of range.
-    pub(crate) fn edge_curve(&self, id: EdgeId, start: Point, end: Point) -> Option<EdgeCurve> {
-        Some(self.curve_of(&self.edge(id)?, start, end))
-    }
-
-    /// The curve of an edge already looked up (see `edge_curve`).
-    fn curve_of(&self, edge: &crate::query::Edge, start: Point, end: Point) -> EdgeCurve {
+    /// The curve of the finite edge `id` in its own direction, from its
+    /// `ends[0]` to its `ends[1]` (a conic's points depend on it), in
+    /// internal coordinates (the diagram's power-of-two scale); `None` if
+    /// the id is out of range or the edge reaches infinity.
+    pub(crate) fn edge_curve(&self, id: EdgeId) -> Option<EdgeCurve> {
+        let edge = self.edge(id)?;
+        let ends = self.finite_end_vertices(&edge)?;
         let f = self.scale.to_internal;
-        let [first, second] = edge.sites.map(|s| self.sites[s.index()].scaled(f));
-        EdgeCurve::between(&first, &second, start.scaled(f), end.scaled(f))
+        let sites = edge.sites.map(|s| self.sites[s.index()]);
+        let witnesses = self.end_witnesses(&sites, ends).map(|w| w.map(|w| w.scaled(f)));
+        let [first, second] = sites.map(|s| s.scaled(f));
+        let [start, end] = ends.map(|v| self.store.position[v].scaled(f));
+        Some(EdgeCurve::between(&first, &second, start, end).with_witnesses(witnesses))
     }
 }
 
-/// The polyline of a conic edge between `sites` from `start` to `end`
-/// (input coordinates): each chord halved, its middle put on the edge
-/// (`bisector_point`), until the edge's middle lies within `tolerance` of
+/// The polyline of a conic edge between `sites` (on its left, on its
+/// right) from `start` to `end`, its end vertices' third sites
+/// `witnesses`: each chord halved, its middle put on the edge
+/// (`bisector_point_of_edge`), until the edge's middle lies within `tolerance` of
 /// the chord, at most `MAX_POLYLINE_POINTS` points.
-fn conic_polyline(sites: &[Site; 2], start: Point, end: Point, tolerance: f64, emit: &mut impl FnMut(Point)) {
+fn conic_polyline(
+    sites: &[Site; 2],
+    witnesses: &[Option<Site>; 2],
+    start: Point,
+    end: Point,
+    tolerance: f64,
+    emit: &mut impl FnMut(Point),
+) {
     let [left, right] = sites;
     let mut points = 2usize;
     emit(start);
     // a stack of chords still to draw, the nearest last
     let mut stack = vec![(start, end, 0u32)];
     while let Some((p, q, depth)) = stack.pop() {
-        let m = bisector_point(left, right, p, q, 0.5);
+        let m = bisector_point_of_edge(left, right, p, q, 0.5, witnesses);
         let chord_middle = Point::new(0.5 * (p.x + q.x), 0.5 * (p.y + q.y));
         let off = m.distance(chord_middle);
         if depth < 40 && points < MAX_POLYLINE_POINTS && off > tolerance && m.is_finite() {
@@ -376,7 +408,7 @@ fn conic_polyline(sites: &[Site; 2], start: Point, end: Point, tolerance: f64, e
 
 /// The rational quadratic Bézier of a conic edge (see
 /// `Diagram::edge_rational_bezier`).
-fn conic_bezier(sites: &[Site; 2], start: Point, end: Point) -> Option<([Point; 3], f64)> {
+fn conic_bezier(sites: &[Site; 2], witnesses: &[Option<Site>; 2], start: Point, end: Point) -> Option<([Point; 3], f64)> {
     let [left, right] = sites;
     // the edge's tangent at `x`: across the difference of the two sites'
     // unit directions toward `x`
@@ -401,7 +433,7 @@ fn conic_bezier(sites: &[Site; 2], start: Point, end: Point) -> Option<([Point; 
     let control = Point::new(start.x + s * t0.x, start.y + s * t0.y);
     // ahead of `start` along the edge and behind `end`: the control point
     // is on the chord's side where the edge's middle is
-    let middle = bisector_point(left, right, start, end, 0.5);
+    let middle = bisector_point_of_edge(left, right, start, end, 0.5, witnesses);
     let side = |p: Point| (end.x - start.x) * (p.y - start.y) - (end.y - start.y) * (p.x - start.x);
     if !(side(middle) * side(control) > 0.0) || !control.is_finite() {
         return None;

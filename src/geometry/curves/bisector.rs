@@ -72,14 +72,35 @@ pub(crate) fn bisector_point(left: &Site, right: &Site, from: Point, to: Point, 
 /// [`bisector_point`] for a finite edge of the construction, `left` the
 /// cell on its left going from `from` to `to`: by the angle round the
 /// point site where one site is a point and the other a segment or an arc
-/// (`round_point_site`), else from the chord. For the construction's
-/// margins only: the polylines, Bézier arcs and medial axis points keep to
-/// the chord, as an edge of two vertices of the same three sites a
-/// rounding apart can have its ends in the other order than its sites say
-/// (an arc, another arc's end and a third arc: 4e-7 apart, 0.1 from the
-/// end), and round the point that edge would be a whole loop.
+/// (`round_point_site`), else from the chord.
 pub(crate) fn bisector_point_on_edge(left: &Site, right: &Site, from: Point, to: Point, t: f64) -> Point {
-    round_point_site(left, right, from, to, t).unwrap_or_else(|| bisector_point(left, right, from, to, t))
+    bisector_point_of_edge(left, right, from, to, t, &[])
+}
+
+/// [`bisector_point_on_edge`] for an edge of a built diagram, `witnesses`
+/// the third sites of its end vertices: the point round the point site is
+/// taken unless a witness is nearer there than the edge's own sites (it is
+/// then on their bisector but past the edge's ends: an edge between two
+/// vertices of the same three sites a rounding apart can have its ends in
+/// the other order than its sites say, an arc, another arc's end and a
+/// third arc 4e-7 apart and 0.1 from the end, and round the point that
+/// edge would be a whole loop); then from the chord.
+pub(crate) fn bisector_point_of_edge(
+    left: &Site,
+    right: &Site,
+    from: Point,
+    to: Point,
+    t: f64,
+    witnesses: &[Option<Site>],
+) -> Point {
+    let on_the_edge = |q: Point| {
+        let own = 0.5 * (left.distance(q) + right.distance(q));
+        witnesses.iter().flatten().all(|w| w.distance(q) >= own * (1.0 - 1e-9))
+    };
+    match round_point_site(left, right, from, to, t) {
+        Some(q) if on_the_edge(q) => q,
+        _ => bisector_point(left, right, from, to, t),
+    }
 }
 
 /// The point at fraction `t` of the edge from `from` to `to` between a
@@ -199,6 +220,13 @@ mod tests {
         // the other way along the edge, the sites swapped: the same point
         let back = bisector_point_on_edge(&segment, &point, to, from, 0.5);
         assert!(back.distance(middle) < 1e-12, "{back:?}");
+        // a third site of an end vertex nearer than the edge's own there:
+        // the round way is past the edge's ends, the chord's is taken
+        let witness = Some(Site::Point(p(0.0, -0.004)));
+        let checked = bisector_point_of_edge(&point, &segment, from, to, 0.5, &[None, witness]);
+        assert_eq!(checked, bisector_point(&point, &segment, from, to, 0.5));
+        let far = Some(Site::Point(p(0.0, 3.0)));
+        assert_eq!(bisector_point_of_edge(&point, &segment, from, to, 0.5, &[far, None]), middle);
         // a point on the segment's line has no tongue: from the chord
         let on_line = Site::Point(p(6.0, 0.0));
         assert_eq!(round_point_site(&on_line, &segment, p(5.5, 1.0), p(5.5, -1.0), 0.5), None);

@@ -22,18 +22,23 @@ pub(crate) enum EdgeCurve {
         from: f64,
         to: f64,
     },
-    /// The conic beside an arc between two positions: its point at `t` is
-    /// the bisector's point across the chord's point at `t`.
+    /// The conic beside an arc between two positions, `left` the site on
+    /// its left from `from` to `to`, `witnesses` the third sites of its end
+    /// vertices where known: its point at `t` is at the angle `t` of the
+    /// way round a point site, else across the chord's point at `t`
+    /// (`bisector_point_of_edge`).
     Conic {
         left: Site,
         right: Site,
         from: Point,
         to: Point,
+        witnesses: [Option<Site>; 2],
     },
 }
 
 impl EdgeCurve {
-    /// The edge of the sites `left` and `right` from `from` to `to`. A
+    /// The edge of the sites `left` and `right` (on its left and right)
+    /// from `from` to `to`. A
     /// parabola that cannot be set up in floating point (its focus so close
     /// to the directrix that their distance rounds to zero) is the straight
     /// piece it is within rounding.
@@ -41,11 +46,19 @@ impl EdgeCurve {
         let own_end = |s: &Site, t: &Site| t.as_point().is_some_and(|p| s.has_endpoint(p));
         let arc = |s: &Site| matches!(s, Site::Arc(_));
         if (arc(left) || arc(right)) && !own_end(left, right) && !own_end(right, left) {
-            return EdgeCurve::Conic { left: *left, right: *right, from, to };
+            return EdgeCurve::Conic { left: *left, right: *right, from, to, witnesses: [None, None] };
         }
         match Parabola::of_sites(left, right) {
             Some(parabola) => EdgeCurve::Parabola { parabola, from: parabola.parameter(from), to: parabola.parameter(to) },
             None => EdgeCurve::Line(from, to),
+        }
+    }
+
+    /// The same curve, its end vertices' third sites known (see `Conic`).
+    pub(crate) fn with_witnesses(self, ends: [Option<Site>; 2]) -> EdgeCurve {
+        match self {
+            EdgeCurve::Conic { left, right, from, to, .. } => EdgeCurve::Conic { left, right, from, to, witnesses: ends },
+            other => other,
         }
     }
 
@@ -54,10 +67,10 @@ impl EdgeCurve {
         match *self {
             EdgeCurve::Line(p, q) => Point::new(p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t),
             EdgeCurve::Parabola { ref parabola, from, to } => parabola.point(from + (to - from) * t),
-            EdgeCurve::Conic { ref left, ref right, from, to } => match t {
+            EdgeCurve::Conic { ref left, ref right, from, to, witnesses } => match t {
                 t if t <= 0.0 => from,
                 t if t >= 1.0 => to,
-                t => super::bisector::bisector_point(left, right, from, to, t),
+                t => super::bisector::bisector_point_of_edge(left, right, from, to, t, &witnesses),
             },
         }
     }
