@@ -212,9 +212,11 @@ fn random_crossing_arcs_and_segments_are_split_right() {
 
 /// The drawings of the random family that its wide run (`SPLIT_SEEDS=500`)
 /// found refused or answered wrong, each in every variant, none refused:
-/// 75 (scaled down), 96 (shuffled) and 189 (shuffled) were refused by the
-/// arcs' vertex checks (`arcs.rs` minimised regressions "two arcs from one
-/// end...", "an arc's start a hair outside another arc's circle..."); 96
+/// 75 (scaled down), 96 (shuffled), 189 (shuffled) and 476 (plain, scaled
+/// both ways) were refused by the arcs' vertex checks (`arcs.rs`
+/// minimised regressions "two arcs from one end...", "an arc's start a
+/// hair outside another arc's circle...", "an arc ending a hair outside
+/// another's circle, cut below its end"); 96
 /// (plain) and 223 (plain) had an edge's polyline off its edge, through a
 /// stretch of its bisector past its ends: the edge of a point inside an
 /// arc's circle runs round the point (223: the polyline went round the
@@ -224,8 +226,8 @@ fn random_crossing_arcs_and_segments_are_split_right() {
 /// sites of its end vertices tell (`bisector_point_of_edge`).
 #[test]
 fn random_drawings_the_wide_run_found() {
-    let drawings = random_drawings(224);
-    for seed in [75, 96, 189, 223] {
+    let drawings = random_drawings(477);
+    for seed in [75, 96, 189, 223, 476] {
         let (_, refused) = check_split_all_ways(&format!("seed {seed}"), &drawings[seed], (20.0, 20.0), seed as u64, false);
         assert!(refused.is_empty());
     }

@@ -196,10 +196,11 @@ fn best_candidate(
                         common_end = common_end.or(Some((score, centre, radius, touch)));
                         continue;
                     }
-                    if best.map_or(true, |(s, c, ..)| better((score, centre), (s, c), on)) {
+                    if best.map_or(true, |(s, c, ..)| better(local, (score, centre), (s, c), on)) {
                         best = Some((score, centre, radius, touch));
                     }
-                    if score < 1e-14 {
+                    // (a circle past the edge's kept end does not end the search)
+                    if score < 1e-14 && !along_edge(local, on, centre).is_some_and(|f| f > 1.0) {
                         break 'patterns;
                     }
                 }
@@ -226,19 +227,58 @@ fn best_candidate(
 /// Whether the candidate `(score, centre)` is better than `than`: the
 /// lower score; where both fit with as many pieces touched at an end with
 /// nothing there (the same whole part of their scores, `fit`) and the
-/// vertex is cut into an edge (`on`), the one nearer the edge's end that
-/// goes, where the new site's region along the edge starts. Two such
-/// circles in the order asked are a degenerate stretch (two arcs of one
-/// circle and a line out of their join tie along the join's radius), and
-/// only the one on the edge is this vertex.
-fn better((score, centre): (f64, Point), (than, at): (f64, Point), on: Option<[Point; 2]>) -> bool {
+/// vertex is cut into an edge (`on`), the one on the edge
+/// (`along_edge`), else the one nearer the edge's end that goes, where the
+/// new site's region along the edge starts. Two such circles in the order
+/// asked are a degenerate stretch (two arcs of one circle and a line out
+/// of their join tie along the join's radius), or the other lies on the
+/// same bisector past the edge's kept end (the edge of an arc's end a
+/// hair outside another arc's circle runs round the end, and the new arc
+/// ending there takes it from its far side), and only the one on the edge
+/// is this vertex.
+fn better(local: &[Site; 3], (score, centre): (f64, Point), (than, at): (f64, Point), on: Option<[Point; 2]>) -> bool {
     match on {
         Some([going, _]) if score < 10.0 && than < 10.0 && score.floor() == than.floor() => {
+            if let (Some(f), Some(g)) = (along_edge(local, on, centre), along_edge(local, on, at)) {
+                if (f <= 1.0) != (g <= 1.0) {
+                    return f <= 1.0;
+                }
+            }
             let (d, e) = (centre.distance(going), at.distance(going));
             d < e || d == e && score < than
         }
         _ => score < than,
     }
+}
+
+/// Where `centre` lies along the edge `on` (its end that goes, then the
+/// one kept) into which the vertex of `local` is cut, when the edge is
+/// that of a point and a segment or an arc: the fraction of the edge's
+/// turn round the point from the end that goes, at most 1 on the edge.
+/// The vertex's sites are the edge's right and left ones, then the new
+/// site (`Construction::replace_tree`), and the edge runs round the point
+/// with its cell on the left (`bisector::round_point_site`). `None` for
+/// other edges.
+fn along_edge(local: &[Site; 3], on: Option<[Point; 2]>, centre: Point) -> Option<f64> {
+    let [going, kept] = on?;
+    let (p, counter_clockwise) = match (local[0], local[1]) {
+        (Site::Point(_), Site::Point(_)) => return None,
+        (other, Site::Point(p)) if other.as_point().is_none() => (p, true),
+        (Site::Point(p), _) => (p, false),
+        _ => return None,
+    };
+    let angle = |q: Point| (q.y - p.y).atan2(q.x - p.x);
+    let tau = std::f64::consts::TAU;
+    let turn = |to: Point| {
+        let d = angle(to) - angle(going);
+        if counter_clockwise {
+            d.rem_euclid(tau)
+        } else {
+            (-d).rem_euclid(tau)
+        }
+    };
+    let whole = turn(kept);
+    (whole > 0.0).then(|| turn(centre) / whole)
 }
 
 /// Whether `(centre, radius)` is the circle of radius zero at an end all
