@@ -939,6 +939,7 @@ fn refused_or_right() {
     let p = Point::new;
     let q = (std::f64::consts::PI / 8.0).tan();
     let arc = |s: Point, e: Point, b: f64| Piece::Arc(CircularArc::from_bulge(s, e, b).unwrap());
+    let through = |s: Point, m: Point, e: Point| Piece::Arc(CircularArc::through(s, m, e).unwrap());
     let cases: Vec<(&str, Vec<Piece>, f64, usize)> = vec![
         // LibreCAD's t2.dxf minimised: two half circles whose tops lie
         // 1.8e-15 below a point's line. The second arc's vertex with the
@@ -996,6 +997,36 @@ fn refused_or_right() {
             128.0,
             0,
         ),
+        // The random split family's seed 541 (shuffled), the one build of
+        // 6000 (`SPLIT_SEEDS=1000`) still refused, minimised: an arc ending
+        // on another's end, a third arc starting 0.06 from there, nearly on
+        // the first's circle, and a point. Nothing fits the vertex of the
+        // three arcs, and the first's centre is taken for it, where the
+        // point is nearer; the build's check refuses it. Not yet minimised
+        // further (the next session's start).
+        (
+            "an arc's start nearly on another's circle by its end",
+            vec![
+                through(
+                    p(3.4370047627451026, 9.505708857571024),
+                    p(3.6482486700110983, 9.445289528456986),
+                    p(3.8545648817801066, 9.369737530145358),
+                ),
+                through(
+                    p(3.8680495183093626, 9.429848115412597),
+                    p(1.9830292494669661, 9.586333385922298),
+                    p(0.11901633611806517, 9.26501592187516),
+                ),
+                through(
+                    p(4.249176428047122, 5.470360329710957),
+                    p(3.740592761138627, 7.388548040255944),
+                    p(3.8545648817801066, 9.369737530145358),
+                ),
+                Piece::Point(p(5.380208355508902, 8.218026819909095)),
+            ],
+            16.0,
+            REFUSED_SPLIT_SEED_541,
+        ),
     ];
     for (k, (name, pieces, size, most_refused)) in cases.into_iter().enumerate() {
         let mut refused = Vec::new();
@@ -1018,6 +1049,10 @@ fn refused_or_right() {
         assert!(refused.len() <= most_refused, "{name}: refused {refused:?}, at most {most_refused} expected");
     }
 }
+
+/// Variants of the split family's seed 541 in `refused_or_right` that are
+/// refused (measured).
+const REFUSED_SPLIT_SEED_541: usize = 3;
 
 /// Time per arc against time per segment on the same layout (each arc
 /// replaced by its chord): `cargo test --release --test arcs time_per_arc -- --ignored --nocapture`.
