@@ -434,7 +434,7 @@ fn minimised_regressions() {
         // runs round the end, and the new arc, ending there, cuts it once
         // below the end; the vertex solver also fits a circle in the order
         // asked on the same bisector past the edge's kept end, nearer the
-        // end that goes, and took it (`arc_vertex::along_edge` now tells
+        // end that goes, and took it (`arc_vertex::past_kept_end` now tells
         // them apart by the turn round the point).
         (
             "an arc ending a hair outside another's circle, cut below its end",

@@ -446,7 +446,8 @@ pub(crate) fn arc_middle_margin_on_ray(edge: FiniteEdge, arc: &CircularArc) -> M
 /// The largest excess of the new arc's distance over the edge's own at
 /// its points `point_at(t)`, `t` over the increasing `fractions`; where
 /// none is positive, refined between the neighbours of the largest by a
-/// golden-section search (a middle that stays can be far narrower than the
+/// golden-section search where it is lost by less than a twentieth of
+/// the distance to the sites (a middle that stays can be far narrower than the
 /// samples' spacing: a point a hair inside an arc's circle keeps a needle
 /// of a cell, from the point to the centre, which crosses the point's
 /// other edges).
@@ -458,40 +459,46 @@ pub(crate) fn arc_middle_margin_on_ray(edge: FiniteEdge, arc: &CircularArc) -> M
 /// keeps its stretch past the arc's end.
 fn largest_excess(edge: &FiniteEdge, arc: &CircularArc, fractions: &[f64], point_at: impl Fn(f64) -> Option<Point>) -> f64 {
     let site = Site::Arc(*arc);
+    // (the excess, and the edge's own distance there)
     let excess = |t: f64| {
         let q = point_at(t)?;
-        Some(if arc.spans(q) {
-            site.distance(q) - 0.5 * (edge.left.distance(q) + edge.right.distance(q))
-        } else {
-            outside_cone(arc, q)
-        })
+        let own = 0.5 * (edge.left.distance(q) + edge.right.distance(q));
+        Some((if arc.spans(q) { site.distance(q) - own } else { outside_cone(arc, q) }, own))
     };
-    let mut best = (f64::NEG_INFINITY, None);
+    let mut best = (f64::NEG_INFINITY, 0.0, None);
     for (k, &t) in fractions.iter().enumerate() {
-        if let Some(e) = excess(t) {
+        if let Some((e, own)) = excess(t) {
             if e > best.0 || best.0.is_nan() {
-                best = (e, Some(k));
+                best = (e, own, Some(k));
             }
         }
     }
-    let (found, Some(k)) = best else { return best.0 };
-    if found > 0.0 {
+    let (found, own, Some(k)) = best else { return best.0 };
+    // clearly lost (by a twentieth of the distance to the sites there, as
+    // nearly every edge an arc takes is): no search
+    if found > 0.0 || !(found > -0.05 * own) {
         return found;
     }
     let (mut lo, mut hi) = (if k > 0 { fractions[k - 1] } else { 0.0 }, fractions.get(k + 1).copied().unwrap_or(1.0));
     let ratio = 0.5 * (5f64.sqrt() - 1.0);
-    let mut most = found;
-    for _ in 0..40 {
-        let (x1, x2) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
-        let (e1, e2) = (excess(x1).unwrap_or(f64::NEG_INFINITY), excess(x2).unwrap_or(f64::NEG_INFINITY));
-        most = most.max(e1).max(e2);
+    let value = |t: f64| excess(t).map_or(f64::NEG_INFINITY, |(e, _)| e);
+    let (mut x1, mut x2) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
+    let (mut e1, mut e2) = (value(x1), value(x2));
+    let mut most = found.max(e1).max(e2);
+    for _ in 0..30 {
         if most > 0.0 {
             break;
         }
         if e1 >= e2 {
-            hi = x2;
+            (hi, x2, e2) = (x2, x1, e1);
+            x1 = hi - ratio * (hi - lo);
+            e1 = value(x1);
+            most = most.max(e1);
         } else {
-            lo = x1;
+            (lo, x1, e1) = (x1, x2, e2);
+            x2 = lo + ratio * (hi - lo);
+            e2 = value(x2);
+            most = most.max(e2);
         }
     }
     most

@@ -200,7 +200,7 @@ fn best_candidate(
                         best = Some((score, centre, radius, touch));
                     }
                     // (a circle past the edge's kept end does not end the search)
-                    if score < 1e-14 && !along_edge(local, on, centre).is_some_and(|f| f > 1.0) {
+                    if score < 1e-14 && past_kept_end(local, on, centre) != Some(true) {
                         break 'patterns;
                     }
                 }
@@ -228,7 +228,7 @@ fn best_candidate(
 /// lower score; where both fit with as many pieces touched at an end with
 /// nothing there (the same whole part of their scores, `fit`) and the
 /// vertex is cut into an edge (`on`), the one on the edge
-/// (`along_edge`), else the one nearer the edge's end that goes, where the
+/// (`past_kept_end`), else the one nearer the edge's end that goes, where the
 /// new site's region along the edge starts. Two such circles in the order
 /// asked are a degenerate stretch (two arcs of one circle and a line out
 /// of their join tie along the join's radius), or the other lies on the
@@ -239,9 +239,9 @@ fn best_candidate(
 fn better(local: &[Site; 3], (score, centre): (f64, Point), (than, at): (f64, Point), on: Option<[Point; 2]>) -> bool {
     match on {
         Some([going, _]) if score < 10.0 && than < 10.0 && score.floor() == than.floor() => {
-            if let (Some(f), Some(g)) = (along_edge(local, on, centre), along_edge(local, on, at)) {
-                if (f <= 1.0) != (g <= 1.0) {
-                    return f <= 1.0;
+            if let (Some(past), Some(than_past)) = (past_kept_end(local, on, centre), past_kept_end(local, on, at)) {
+                if past != than_past {
+                    return !past;
                 }
             }
             let (d, e) = (centre.distance(going), at.distance(going));
@@ -251,15 +251,16 @@ fn better(local: &[Site; 3], (score, centre): (f64, Point), (than, at): (f64, Po
     }
 }
 
-/// Where `centre` lies along the edge `on` (its end that goes, then the
-/// one kept) into which the vertex of `local` is cut, when the edge is
-/// that of a point and a segment or an arc: the fraction of the edge's
-/// turn round the point from the end that goes, at most 1 on the edge.
-/// The vertex's sites are the edge's right and left ones, then the new
-/// site (`Construction::replace_tree`), and the edge runs round the point
-/// with its cell on the left (`bisector::round_point_site`). `None` for
-/// other edges.
-fn along_edge(local: &[Site; 3], on: Option<[Point; 2]>, centre: Point) -> Option<f64> {
+/// Whether `centre` lies past the kept end of the edge `on` (its end that
+/// goes, then the one kept) into which the vertex of `local` is cut, when
+/// the edge is that of a point and a segment or an arc: whether it takes
+/// a greater turn round the point from the end that goes than the kept
+/// end does. The vertex's sites are the edge's right and left ones, then
+/// the new site (`Construction::replace_tree`), and the edge runs round
+/// the point with its cell on the left (`bisector::round_point_site`).
+/// `None` for other edges. (Signs of products, no angles: this is asked
+/// of nearly every vertex an arc makes.)
+fn past_kept_end(local: &[Site; 3], on: Option<[Point; 2]>, centre: Point) -> Option<bool> {
     let [going, kept] = on?;
     let (p, counter_clockwise) = match (local[0], local[1]) {
         (Site::Point(_), Site::Point(_)) => return None,
@@ -267,18 +268,17 @@ fn along_edge(local: &[Site; 3], on: Option<[Point; 2]>, centre: Point) -> Optio
         (Site::Point(p), _) => (p, false),
         _ => return None,
     };
-    let angle = |q: Point| (q.y - p.y).atan2(q.x - p.x);
-    let tau = std::f64::consts::TAU;
-    let turn = |to: Point| {
-        let d = angle(to) - angle(going);
-        if counter_clockwise {
-            d.rem_euclid(tau)
-        } else {
-            (-d).rem_euclid(tau)
-        }
-    };
-    let whole = turn(kept);
-    (whole > 0.0).then(|| turn(centre) / whole)
+    // directions from the point, mirrored for a clockwise turn
+    let from = |q: Point| (q.x - p.x, if counter_clockwise { q.y - p.y } else { p.y - q.y });
+    let (u, k, c) = (from(going), from(kept), from(centre));
+    let cross = |a: (f64, f64), b: (f64, f64)| a.0 * b.1 - a.1 * b.0;
+    let dot = |a: (f64, f64), b: (f64, f64)| a.0 * b.0 + a.1 * b.1;
+    // the half turn a direction lies in, counter-clockwise from `u`
+    let half = |v: (f64, f64)| u8::from(!(cross(u, v) > 0.0 || (cross(u, v) == 0.0 && dot(u, v) > 0.0)));
+    Some(match half(c).cmp(&half(k)) {
+        std::cmp::Ordering::Equal => cross(k, c) > 0.0,
+        order => order == std::cmp::Ordering::Greater,
+    })
 }
 
 /// Whether `(centre, radius)` is the circle of radius zero at an end all
