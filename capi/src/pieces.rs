@@ -5,7 +5,7 @@
 use super::diagram::{count, segvoronoi_diagram, with_diagram};
 use super::out::{require_buffer, write_buffer, write_out};
 use super::plumbing::{out_of_range, require_non_null, segvoronoi_status};
-use segvoronoi::Diagram;
+use segvoronoi::{Diagram, Indices};
 
 /// The number of segments the diagram was built from: the pieces of a split
 /// input, else the input segments. 0 for NULL.
@@ -32,13 +32,18 @@ pub unsafe extern "C" fn segvoronoi_diagram_pieces_of_input(
     capacity: usize,
     count: *mut usize,
 ) -> segvoronoi_status {
-    require_buffer!(pieces, capacity, count);
-    with_diagram(diagram, |d| {
-        if input >= d.stats().input_segments {
-            return out_of_range("input segment", input, d.stats().input_segments);
-        }
-        write_buffer(d.pieces_of_input(input).map(|p| p as u32), pieces, capacity, count)
-    })
+    // SAFETY: passed on from the caller.
+    unsafe {
+        write_list(
+            diagram,
+            input,
+            ("input segment", |d| d.stats().input_segments),
+            Diagram::pieces_of_input,
+            pieces,
+            capacity,
+            count,
+        )
+    }
 }
 
 /// The input segments (ascending) that piece `piece` came from: one, or
@@ -55,13 +60,8 @@ pub unsafe extern "C" fn segvoronoi_diagram_inputs_of_piece(
     capacity: usize,
     count: *mut usize,
 ) -> segvoronoi_status {
-    require_buffer!(inputs, capacity, count);
-    with_diagram(diagram, |d| {
-        if piece >= d.piece_count() {
-            return out_of_range("piece", piece, d.piece_count());
-        }
-        write_buffer(d.inputs_of_piece(piece).map(|i| i as u32), inputs, capacity, count)
-    })
+    // SAFETY: passed on from the caller.
+    unsafe { write_list(diagram, piece, ("piece", Diagram::piece_count), Diagram::inputs_of_piece, inputs, capacity, count) }
 }
 
 /// The arc pieces (ascending indices below
@@ -81,13 +81,10 @@ pub unsafe extern "C" fn segvoronoi_diagram_arc_pieces_of_input(
     capacity: usize,
     count: *mut usize,
 ) -> segvoronoi_status {
-    require_buffer!(pieces, capacity, count);
-    with_diagram(diagram, |d| {
-        if input >= d.stats().input_arcs {
-            return out_of_range("input arc", input, d.stats().input_arcs);
-        }
-        write_buffer(d.arc_pieces_of_input(input).map(|p| p as u32), pieces, capacity, count)
-    })
+    // SAFETY: passed on from the caller.
+    unsafe {
+        write_list(diagram, input, ("input arc", |d| d.stats().input_arcs), Diagram::arc_pieces_of_input, pieces, capacity, count)
+    }
 }
 
 /// The input arcs (ascending) that arc piece `piece` came from: one, or
@@ -105,13 +102,10 @@ pub unsafe extern "C" fn segvoronoi_diagram_inputs_of_arc_piece(
     capacity: usize,
     count: *mut usize,
 ) -> segvoronoi_status {
-    require_buffer!(inputs, capacity, count);
-    with_diagram(diagram, |d| {
-        if piece >= d.arc_site_count() {
-            return out_of_range("arc piece", piece, d.arc_site_count());
-        }
-        write_buffer(d.inputs_of_arc_piece(piece).map(|i| i as u32), inputs, capacity, count)
-    })
+    // SAFETY: passed on from the caller.
+    unsafe {
+        write_list(diagram, piece, ("arc piece", Diagram::arc_site_count), Diagram::inputs_of_arc_piece, inputs, capacity, count)
+    }
 }
 
 /// The endpoints of piece `piece` in `out[0..4]` as `x0, y0, x1, y1`
@@ -149,4 +143,31 @@ pub unsafe extern "C" fn segvoronoi_diagram_max_split_displacement(
 ) -> segvoronoi_status {
     require_non_null!(out);
     with_diagram(diagram, |d| write_out(out, d.max_split_displacement()))
+}
+
+/// The indices `list(d, index)` for entry `index` of a kind named `what`,
+/// of which the diagram has `bound(d)`, by the buffer rules of
+/// `segvoronoi_diagram_pieces_of_input`.
+///
+/// # Safety
+/// As the calls above: `diagram` NULL or from `segvoronoi_builder_build`,
+/// `out` valid for `capacity` writes (or NULL with `capacity` 0), `count`
+/// NULL or valid.
+unsafe fn write_list(
+    diagram: *const segvoronoi_diagram,
+    index: usize,
+    (what, bound): (&str, impl Fn(&Diagram) -> usize),
+    list: impl for<'a> Fn(&'a Diagram, usize) -> Indices<'a>,
+    out: *mut u32,
+    capacity: usize,
+    count: *mut usize,
+) -> segvoronoi_status {
+    require_buffer!(out, capacity, count);
+    with_diagram(diagram, |d| {
+        let n = bound(d);
+        if index >= n {
+            return out_of_range(what, index, n);
+        }
+        write_buffer(list(d, index).map(|i| i as u32), out, capacity, count)
+    })
 }
