@@ -480,7 +480,7 @@ pub unsafe extern "C" fn segvoronoi_diagram_site_of_arc(
     require_non_null!(out_site);
     with_diagram(diagram, |d| match d.site_of_arc(input_index) {
         Some(s) => write_out(out_site, s.index() as u32),
-        None => out_of_range("arc", input_index, d.arc_site_count()),
+        None => out_of_range("input arc (an arc piece, with splitting)", input_index, d.arc_site_count()),
     })
 }
 
