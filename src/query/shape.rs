@@ -189,9 +189,9 @@ impl Diagram {
     /// Calls `emit` with each point of the polyline of `edge_polyline` for
     /// an edge of shape `shape` between the finite vertices `ends` (its
     /// `ends[0]` and `ends[1]`), for a positive `tolerance`, in order,
-    /// allocating nothing (but for a curved edge's witnesses): at least
-    /// two points, the first and the last the vertices' positions exactly. (The parabola of a `Parabola` shape is the one of
-    /// its edge's sites: the same focus and directrix points.)
+    /// allocating nothing: at least two points, the first and the last the
+    /// vertices' positions exactly. (The parabola of a `Parabola` shape is
+    /// the one of its edge's sites: the same focus and directrix points.)
     pub(crate) fn for_each_polyline_point(
         &self,
         shape: EdgeShape,
@@ -377,8 +377,8 @@ impl Diagram {
 /// The polyline of a conic edge between `sites` (on its left, on its
 /// right) from `start` to `end`, its end vertices' third sites
 /// `witnesses`: each chord halved, its middle put on the edge
-/// (`bisector_point_of_edge`), until the edge's middle lies within `tolerance` of
-/// the chord, at most `MAX_POLYLINE_POINTS` points.
+/// (`bisector_point_of_edge`), until the edge's middle lies within
+/// `tolerance` of the chord, at most `MAX_POLYLINE_POINTS` points.
 fn conic_polyline(
     sites: &[Site; 2],
     witnesses: &[Option<Site>; 2],
