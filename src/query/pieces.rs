@@ -30,6 +30,22 @@ impl Iterator for Indices<'_> {
 
 impl ExactSizeIterator for Indices<'_> {}
 
+impl<'a> Indices<'a> {
+    /// With splitting, the list `map` reads from `split`; without, `index`
+    /// itself where it is below `inputs` (piece `i` is input `i`).
+    fn through(
+        split: Option<&'a crate::diagram::SplitPieces>,
+        map: impl FnOnce(&'a crate::diagram::SplitPieces) -> &'a [u32],
+        index: usize,
+        inputs: usize,
+    ) -> Indices<'a> {
+        match split {
+            Some(split) => Indices { list: map(split).iter(), single: None },
+            None => Indices { list: [].iter(), single: (index < inputs).then_some(index) },
+        }
+    }
+}
+
 impl Diagram {
     /// The number of segments the diagram was built from: the pieces of a
     /// split input, else the input segments.
@@ -58,20 +74,14 @@ impl Diagram {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn pieces_of_input(&self, input: usize) -> Indices<'_> {
-        match &self.split {
-            Some(split) => Indices { list: split.pieces_of(input).iter(), single: None },
-            None => Indices { list: [].iter(), single: (input < self.stats.input_segments).then_some(input) },
-        }
+        Indices::through(self.split.as_deref(), |s| s.pieces_of(input), input, self.stats.input_segments)
     }
 
     /// The input segments (ascending) that piece `piece` came from: one, or
     /// several where collinear input segments overlapped. Empty out of
     /// range.
     pub fn inputs_of_piece(&self, piece: usize) -> Indices<'_> {
-        match &self.split {
-            Some(split) => Indices { list: split.inputs_of(piece).iter(), single: None },
-            None => Indices { list: [].iter(), single: (piece < self.stats.input_segments).then_some(piece) },
-        }
+        Indices::through(self.split.as_deref(), |s| s.inputs_of(piece), piece, self.stats.input_segments)
     }
 
     /// The arc pieces (indices of arc sites, as [`Diagram::site_of_arc`]
@@ -91,19 +101,13 @@ impl Diagram {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn arc_pieces_of_input(&self, input: usize) -> Indices<'_> {
-        match &self.split_arcs {
-            Some(split) => Indices { list: split.pieces_of(input).iter(), single: None },
-            None => Indices { list: [].iter(), single: (input < self.stats.input_arcs).then_some(input) },
-        }
+        Indices::through(self.split_arcs.as_deref(), |s| s.pieces_of(input), input, self.stats.input_arcs)
     }
 
     /// The input arcs (ascending) that arc piece `piece` came from: one,
     /// or several where input arcs coincided. Empty out of range.
     pub fn inputs_of_arc_piece(&self, piece: usize) -> Indices<'_> {
-        match &self.split_arcs {
-            Some(split) => Indices { list: split.inputs_of(piece).iter(), single: None },
-            None => Indices { list: [].iter(), single: (piece < self.stats.input_arcs).then_some(piece) },
-        }
+        Indices::through(self.split_arcs.as_deref(), |s| s.inputs_of(piece), piece, self.stats.input_arcs)
     }
 
     /// The endpoints of piece `piece` (input coordinates), as built; `None`
