@@ -261,15 +261,20 @@ impl CircularArc {
             Datum::Through(m) => Datum::Through(t(m)),
             bulge => bulge,
         };
-        let moved = CircularArc {
-            start: t(self.start),
-            end: t(self.end),
-            datum,
-            centre: t(self.centre),
-            radius: self.radius * unit,
-            ..*self
+        let (start, end) = (t(self.start), t(self.end));
+        // (the turn and the sweep's half are the arc's own: a shift and a
+        // positive scaling keep them, where deciding them again, exactly,
+        // cost every call of the arcs' vertex solver, and could turn an arc
+        // within a rounding of straight the other way)
+        let centre = match datum {
+            Datum::Bulge(b) => bulge_centre(start, end, b),
+            Datum::Through(m) => circumcentre(start, m, end),
         };
-        CircularArc::new(moved.start, moved.end, datum, String::new).unwrap_or(moved)
+        let radius = 0.5 * (centre.distance(start) + centre.distance(end));
+        if !centre.is_finite() || !radius.is_finite() || radius <= 0.0 {
+            return CircularArc { start, end, datum, centre: t(self.centre), radius: self.radius * unit, ..*self };
+        }
+        CircularArc { start, end, datum, centre, radius, ..*self }
     }
 
     /// The exact datum, for the exact input check: `(Some(bulge), None)` or
@@ -338,7 +343,13 @@ impl CircularArc {
     /// direction from the centre lies in the span, else to the nearer
     /// endpoint.
     pub fn distance(&self, p: Point) -> f64 {
-        if self.spans(p) {
+        self.distance_spanning(p, self.spans(p))
+    }
+
+    /// [`distance`](Self::distance) where whether the arc
+    /// [`spans`](Self::spans) `p` is known already.
+    pub(crate) fn distance_spanning(&self, p: Point, spans: bool) -> f64 {
+        if spans {
             (self.centre.distance(p) - self.radius).abs()
         } else {
             self.start.distance(p).min(self.end.distance(p))
@@ -347,7 +358,13 @@ impl CircularArc {
 
     /// The point of the closed arc nearest to `p`.
     pub fn nearest_point(&self, p: Point) -> Point {
-        if self.spans(p) {
+        self.nearest_point_spanning(p, self.spans(p))
+    }
+
+    /// [`nearest_point`](Self::nearest_point) where whether the arc
+    /// [`spans`](Self::spans) `p` is known already.
+    pub(crate) fn nearest_point_spanning(&self, p: Point, spans: bool) -> Point {
+        if spans {
             let d = self.centre.distance(p);
             if d > 0.0 {
                 let k = self.radius / d;

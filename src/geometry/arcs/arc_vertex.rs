@@ -26,7 +26,7 @@
 //! in `arc_predicates` compare these positions with tolerances.
 
 use super::exact_join;
-use crate::geometry::arithmetic::real::{power_of_two, rounded_log2};
+use crate::geometry::arithmetic::real::{norm, power_of_two, rounded_log2};
 use crate::geometry::point::Point;
 use crate::geometry::site::Site;
 
@@ -59,14 +59,26 @@ pub(crate) fn arc_vertex_on(sites: &[Site; 3], on: Option<[Point; 2]>) -> Option
         return None;
     }
     let unit = power_of_two(-(rounded_log2(size) as i32));
-    let local = sites.map(|s| shifted(&s, origin, unit));
+    let local: [Site; 3] = std::array::from_fn(|k| shifted(&sites[k], origin, unit));
     let on = on.map(|ends| ends.map(|p| Point::new((p.x - origin.x) * unit, (p.y - origin.y) * unit)));
     let scale = local.iter().map(|s| site_size(s, Point::new(0.0, 0.0))).fold(0.0f64, f64::max);
     // a piece is touched at an end only where another site of the
     // triple is that point or ends there (`equations_of`)
     let options: [[Option<Touching>; 4]; 3] = std::array::from_fn(|k| {
         let shared = |e: Point| (0..3).any(|j| j != k && (local[j].as_point() == Some(e) || local[j].has_endpoint(e)));
-        touchings(&local[k]).map(|t| t.filter(|t| !matches!(*t, Touching::AtEnd(e) if !shared(e))))
+        let mut options = touchings(&local[k]).map(|t| t.filter(|t| !matches!(*t, Touching::AtEnd(e) if !shared(e))));
+        // An arc's end that is a point site of the triple comes first: a
+        // circle through that end touches the arc there (a circle tangent
+        // to the arc's circle elsewhere would meet it twice), where the
+        // sides inside give the same circle only as a double root, to the
+        // square root of the rounding (`at_an_end_point`)
+        if let Site::Arc(arc) = &local[k] {
+            let is_a_point_site = |e: Point| local.iter().any(|s| s.as_point() == Some(e));
+            if let Some(first) = [arc.start(), arc.end()].into_iter().position(is_a_point_site) {
+                options[..3 + first].rotate_right(1);
+            }
+        }
+        options
     });
     // Only where no candidate fits (scores of 10 and more: `fit`) is a
     // vertex sought far away (`Reach`).
@@ -150,8 +162,15 @@ fn clockwise_around(sites: &[Site; 3], c: Point, r: f64) -> bool {
 /// middle (arcs of one circle do not overlap, so their middles keep their
 /// order round it).
 fn touched_from(site: &Site, c: Point) -> Point {
+    let spans = matches!(site, Site::Arc(arc) if arc.spans(c));
+    touched_from_spanning(site, c, spans)
+}
+
+/// [`touched_from`] where whether an arc spans `c` is known already.
+fn touched_from_spanning(site: &Site, c: Point, spans: bool) -> Point {
     match site {
         Site::Arc(arc) if arc.centre().distance(c) <= 1e-9 * arc.radius() => arc.midpoint(),
+        Site::Arc(arc) => arc.nearest_point_spanning(c, spans),
         _ => site.nearest_point(c),
     }
 }
@@ -314,11 +333,16 @@ fn at_an_end_point(
 ) -> Option<(f64, Point, f64)> {
     let near = 1e-6 * (scale + radius.abs());
     (0..3).find_map(|k| {
-        let (Site::Arc(arc), Touching::Inside(_)) = (local[k], touch[k]) else { return None };
+        let (Site::Arc(arc), Touching::Inside(_)) = (&local[k], touch[k]) else { return None };
+        // (the ends that are point sites first: most arcs have none here,
+        // and then no nearest point is sought)
+        let is_a_point_site = |e: Point| local.iter().any(|s| s.as_point() == Some(e));
+        let ends = [arc.start(), arc.end()].map(|e| is_a_point_site(e).then_some(e));
+        if ends == [None, None] {
+            return None;
+        }
         let q = arc.nearest_point(centre);
-        let end = [arc.start(), arc.end()]
-            .into_iter()
-            .find(|&e| q.distance(e) <= near && local.iter().any(|s| s.as_point() == Some(e)))?;
+        let end = ends.into_iter().flatten().find(|&e| q.distance(e) <= near)?;
         if !options[k].contains(&Some(Touching::AtEnd(end))) {
             return None;
         }
@@ -357,7 +381,7 @@ fn tangent_join_vertex(sites: &[Site; 3]) -> Option<(Point, f64)> {
         _ => s.other_endpoint(j).map(|f| Point::new(f.x - j.x, f.y - j.y)),
     };
     if let (Some(u), Some(v)) = (direction(&after), direction(&before)) {
-        let cross = (u.x * v.y - u.y * v.x) / (u.x.hypot(u.y) * v.x.hypot(v.y));
+        let cross = (u.x * v.y - u.y * v.x) / (norm(u.x, u.y) * norm(v.x, v.y));
         if cross.abs() > 1e-6 {
             return Some((j, 0.0));
         }
@@ -433,12 +457,12 @@ fn equations_of(sites: &[Site; 3], touch: [Touching; 3]) -> Option<[Equation; 3]
 /// For a piece ending at `e`: the unit direction along it there, which is
 /// the normal of its separator at `e` (the line through `e` across it).
 fn separator_normal(site: &Site, e: Point) -> Option<Point> {
-    let (dx, dy) = match *site {
+    let (dx, dy) = match site {
         Site::Segment { a, b } => (b.x - a.x, b.y - a.y),
         Site::Arc(arc) => (-(e.y - arc.centre().y), e.x - arc.centre().x),
         _ => return None,
     };
-    let n = dx.hypot(dy);
+    let n = norm(dx, dy);
     (n > 0.0 && n.is_finite()).then(|| Point::new(dx / n, dy / n))
 }
 
@@ -453,11 +477,11 @@ enum Equation {
 
 impl Equation {
     fn of(site: &Site, sigma: f64) -> Equation {
-        match *site {
-            Site::Point(p) => Equation::Circle { c: p, rho: 0.0, sigma: 1.0 },
-            Site::Segment { a, b } => {
+        match site {
+            &Site::Point(p) => Equation::Circle { c: p, rho: 0.0, sigma: 1.0 },
+            &Site::Segment { a, b } => {
                 let (dx, dy) = (b.x - a.x, b.y - a.y);
-                let len = dx.hypot(dy);
+                let len = norm(dx, dy);
                 let n = Point::new(-dy / len, dx / len);
                 Equation::Line { n, offset: n.x * a.x + n.y * a.y, sigma }
             }
@@ -561,19 +585,26 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
     if radius < -slack {
         return None;
     }
-    for (site, touching) in sites.iter().zip(touch) {
-        match (*site, touching) {
-            (Site::Segment { a, b }, Touching::Inside(sigma)) => {
+    // whether each arc spans the centre: asked once (for arcs, most of
+    // the cost of what follows), in the loop (which rejects most roots
+    // that do not fit, before the later arcs)
+    let mut spans = [false; 3];
+    for (k, (site, touching)) in sites.iter().zip(touch).enumerate() {
+        if let Site::Arc(arc) = site {
+            spans[k] = arc.spans(centre);
+        }
+        match (site, touching) {
+            (&Site::Segment { a, b }, Touching::Inside(sigma)) => {
                 // on the side σ (or on the line), the foot inside
                 let (dx, dy) = (b.x - a.x, b.y - a.y);
-                let cross = (dx * (centre.y - a.y) - dy * (centre.x - a.x)) / dx.hypot(dy);
+                let cross = (dx * (centre.y - a.y) - dy * (centre.x - a.x)) / norm(dx, dy);
                 if sigma * cross < -slack {
                     return None;
                 }
                 // (the foot of a vertex far away moves along the segment by
                 // the rounding of its centre: `slack` along the segment)
                 let t = crate::geometry::site::segment_parameter(a, b, centre);
-                let along = if reach == Reach::Near { 1e-9 } else { 1e-9 + slack / dx.hypot(dy) };
+                let along = if reach == Reach::Near { 1e-9 } else { 1e-9 + slack / norm(dx, dy) };
                 if !(t > -along && t < 1.0 + along) {
                     return None;
                 }
@@ -586,7 +617,7 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
                 // touched inside the span (or within rounding of an end):
                 // a circle tangent to the arc's circle elsewhere is not a
                 // vertex of the arc, even where it passes through an end
-                if !arc.spans(centre) {
+                if !spans[k] {
                     let c = arc.centre();
                     let k = arc.radius() / d;
                     let q = Point::new(c.x + k * (centre.x - c.x), c.y + k * (centre.y - c.y));
@@ -608,7 +639,7 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
     // end's point site or another piece ending there), the piece is taken
     // a hair along itself from there: the limit order of the touching
     // points as the vertex moves off the separator to its side
-    let plain = sites.map(|s| touched_from(&s, centre));
+    let plain: [Point; 3] = std::array::from_fn(|k| touched_from_spanning(&sites[k], centre, spans[k]));
     let near = 1e-9 * (scale + radius.abs());
     let touching: [Point; 3] = std::array::from_fn(|k| {
         let [a, b] = sites[k].ends();
@@ -637,7 +668,11 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
         return None;
     }
     // (after the order, which rejects one root of most patterns)
-    let residual: f64 = sites.iter().map(|s| (s.distance(centre) - radius.max(0.0)).abs()).sum();
+    let distance = |k: usize| match &sites[k] {
+        Site::Arc(arc) => arc.distance_spanning(centre, spans[k]),
+        site => site.distance(centre),
+    };
+    let residual: f64 = (0..3).map(|k| (distance(k) - radius.max(0.0)).abs()).sum();
     // Two pieces touched at their common end with no point site there
     // stand for that end's own vertex (a circle through it), which fits
     // the distances too; it is this triple's vertex only where nothing
@@ -682,7 +717,7 @@ pub(crate) fn direction_at_infinity(x: &Site, y: &Site, guess: Point) -> Option<
         if let (Site::Arc(arc), Some(e)) = (*s, t.as_point()) {
             if arc.start() == e || arc.end() == e {
                 let (dx, dy) = (e.x - arc.centre().x, e.y - arc.centre().y);
-                let n = dx.hypot(dy);
+                let n = norm(dx, dy);
                 return (n > 0.0).then(|| Point::new(dx / n, dy / n));
             }
         }
@@ -754,7 +789,7 @@ fn polish(sites: &[Site; 3], mut centre: Point, mut radius: f64) -> (Point, f64)
         let grad = |s: &Site| {
             let q = s.nearest_point(centre);
             let (dx, dy) = (centre.x - q.x, centre.y - q.y);
-            let n = dx.hypot(dy);
+            let n = norm(dx, dy);
             if n > 0.0 && n.is_finite() {
                 return [dx / n, dy / n, -1.0];
             }
@@ -816,9 +851,9 @@ fn local_origin(sites: &[Site; 3]) -> Point {
 /// The site moved by `-o`, then scaled by `unit` (a power of two).
 fn shifted(site: &Site, o: Point, unit: f64) -> Site {
     let s = |p: Point| Point::new((p.x - o.x) * unit, (p.y - o.y) * unit);
-    match *site {
-        Site::Point(p) => Site::Point(s(p)),
-        Site::Segment { a, b } => Site::Segment { a: s(a), b: s(b) },
+    match site {
+        &Site::Point(p) => Site::Point(s(p)),
+        &Site::Segment { a, b } => Site::Segment { a: s(a), b: s(b) },
         Site::Arc(arc) => Site::Arc(arc.transformed(o, unit)),
     }
 }
@@ -828,7 +863,7 @@ fn shifted(site: &Site, o: Point, unit: f64) -> Site {
 fn site_size(site: &Site, origin: Point) -> f64 {
     let [a, b] = site.ends();
     let far = |p: Point| (p.x - origin.x).abs().max((p.y - origin.y).abs());
-    match *site {
+    match site {
         Site::Arc(arc) => far(a).max(far(b)).max(arc.radius()),
         _ => far(a).max(far(b)),
     }
