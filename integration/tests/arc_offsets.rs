@@ -1481,3 +1481,29 @@ fn offsets_all_ways_against_chords(ring: &Ring, lines: &[[Point; 2]], distances:
         }
     }
 }
+
+/// Found by the C API's fuzzer (case 0x97abe643d20d0a51, minimised by its
+/// shrinker): a slot from (-4, -3) to (4, -1), tangent-continuous, and three
+/// points, one of them (-2, -3.4e-131), a hair below the line y = 0. Every
+/// offset was refused by its own check (a piece ending at a vertex of
+/// clearance 1, not at the distance): the point's tiny coordinate makes the
+/// internal coordinates about 1e65, where the offset's track of the edge of
+/// the left half circle and the point (-4, 1), to infinity, took the
+/// direction at infinity's angle from the centre plus that unit direction,
+/// which rounded back to the centre (an angle of zero: a track of one
+/// point). The same with the hair above the line, at 1e-200 and at zero.
+#[test]
+fn a_slot_and_a_point_a_hair_off_a_line_offset_at_any_magnitude() {
+    for hair in [-3.366460833513009e-131, 3.366460833513009e-131, -1e-140, 0.0] {
+        let mut b = Builder::new();
+        for p in [Point::new(-2.0, hair), Point::new(-1.0, -8.0), Point::new(-4.0, 1.0)] {
+            b.add_point(p).unwrap();
+        }
+        b.add_bulged_polyline(&[((-4.0, -3.0), 0.0), ((4.0, -3.0), 1.0), ((4.0, -1.0), 0.0), ((-4.0, -1.0), 1.0)], true).unwrap();
+        let d = b.build().unwrap_or_else(|e| panic!("hair {hair:e}: {e}"));
+        for distance in [0.5, 2.0, 2.5, 3.0, 3.5, 10.0] {
+            let offset = d.offset(distance).unwrap_or_else(|e| panic!("hair {hair:e}, distance {distance}: {e}"));
+            assert!(!offset.loops.is_empty(), "hair {hair:e}, distance {distance}: no loop");
+        }
+    }
+}

@@ -324,14 +324,32 @@ impl CircularArc {
         // 1e300 overflow
         let e = (-rounded_log2(self.radius)).clamp(-1000.0, 1000.0) as i32;
         let unit = power_of_two(e);
+        self.spans_from_centre(((p.x - c.x) * unit, (p.y - c.y) * unit), unit)
+    }
+
+    /// Whether the direction `d` (from the centre) lies within the arc's
+    /// angular span, as [`spans`](Self::spans) says of a point: for a
+    /// direction at infinity, where the centre plus `d` could round back
+    /// to the centre (a centre far larger than `d`).
+    pub(crate) fn spans_direction(&self, d: Point) -> bool {
+        let e = (-rounded_log2(self.radius)).clamp(-1000.0, 1000.0) as i32;
+        let step = super::arithmetic::real::unit_near_inverse(d.x.abs().max(d.y.abs()));
+        self.spans_from_centre((d.x * step, d.y * step), power_of_two(e))
+    }
+
+    /// `spans` of the direction `d` from the centre, of about unit size;
+    /// `unit` the power of two near the inverse radius that brings the
+    /// arc's ends' differences from the centre to that size.
+    fn spans_from_centre(&self, (dx, dy): (f64, f64), unit: f64) -> bool {
+        let c = self.centre;
         let from_centre = |u: Point| ((u.x - c.x) * unit, (u.y - c.y) * unit);
-        let cross = |u: Point, v: Point| {
-            let ((ux, uy), (vx, vy)) = (from_centre(u), from_centre(v));
-            ux * vy - uy * vx
+        let cross_to = |u: Point| {
+            let (ux, uy) = from_centre(u);
+            ux * dy - uy * dx
         };
         // counter-clockwise from `from` to `to`
         let (from, to) = if self.counter_clockwise { (self.start, self.end) } else { (self.end, self.start) };
-        let (after_from, before_to) = (cross(from, p) >= 0.0, cross(p, to) >= 0.0);
+        let (after_from, before_to) = (cross_to(from) >= 0.0, -cross_to(to) >= 0.0);
         if self.minor {
             after_from && before_to
         } else {

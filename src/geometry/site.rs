@@ -157,7 +157,9 @@ impl Site {
         let along = |q: Point| d.x * q.x + d.y * q.y;
         if let Site::Arc(arc) = *self {
             let c = arc.centre();
-            if arc.spans(Point::new(c.x + d.x, c.y + d.y)) {
+            // (the direction itself: the centre plus `d` rounds back to the
+            // centre where the centre is far larger)
+            if arc.spans_direction(d) {
                 let n = d.x.hypot(d.y);
                 let k = arc.radius() / n;
                 return (along(c) + arc.radius() * n, Point::new(c.x + k * d.x, c.y + k * d.y));

@@ -169,9 +169,12 @@ impl ConicTrack {
         let radial = if bent.is_some() { None } else { radial };
         let mut track =
             ConicTrack { arc, other, convex, start_angle, turn, along: [0.0; 2], ends, radial, bent, knots: Vec::new() };
+        // (a direction's own angle: the centre plus a unit step rounds back
+        // to the centre where the centre is far larger than 1, as in the
+        // internal coordinates of an input with coordinates near 1e-130)
         let direction = |e: ConicEnd| match e {
             ConicEnd::At(p) => track.along(p),
-            ConicEnd::Towards(u) => track.along(Point::new(c.x + u.x, c.y + u.y)),
+            ConicEnd::Towards(u) => angle_along_direction(&track.arc, track.start_angle, track.turn, u),
         };
         track.along = [direction(start), direction(end)];
         if !(c.is_finite() && arc.radius().is_finite() && track.along.iter().all(|a| a.is_finite())) {
@@ -403,8 +406,13 @@ impl ConicTrack {
 /// (an end a rounding outside it is at the nearer end, not a turn away).
 fn angle_along(arc: &CircularArc, start_angle: f64, turn: f64, q: Point) -> f64 {
     let c = arc.centre();
+    angle_along_direction(arc, start_angle, turn, Point::new(q.x - c.x, q.y - c.y))
+}
+
+/// [`angle_along`] of the direction `u` from the centre.
+fn angle_along_direction(arc: &CircularArc, start_angle: f64, turn: f64, u: Point) -> f64 {
     let full = std::f64::consts::TAU;
-    let angle = (q.y - c.y).atan2(q.x - c.x);
+    let angle = u.y.atan2(u.x);
     let along = (turn * (angle - start_angle)).rem_euclid(full);
     let sweep = arc.sweep().abs();
     if along <= sweep {
