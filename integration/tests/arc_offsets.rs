@@ -1491,19 +1491,52 @@ fn offsets_all_ways_against_chords(ring: &Ring, lines: &[[Point; 2]], distances:
 /// the left half circle and the point (-4, 1), to infinity, took the
 /// direction at infinity's angle from the centre plus that unit direction,
 /// which rounded back to the centre (an angle of zero: a track of one
-/// point). The same with the hair above the line, at 1e-200 and at zero.
+/// point). The same with the hair above the line, at 1e-140 (near the
+/// arcs' exact range) and at zero; and as users draw it: a straight
+/// (180°) vertex in the slot's long side, a point exactly on that side,
+/// and the whole a million from the origin (where the hair rounds away:
+/// what stays is the slot far out). Each offset has the area of
+/// the plain one (the hair, the point on the side and the straight vertex
+/// change no region).
 #[test]
 fn a_slot_and_a_point_a_hair_off_a_line_offset_at_any_magnitude() {
-    for hair in [-3.366460833513009e-131, 3.366460833513009e-131, -1e-140, 0.0] {
+    let distances = [0.5, 2.0, 2.5, 3.0, 3.5, 10.0];
+    let areas = |hair: f64, straight: bool, on_side: bool, shift: f64| -> Vec<f64> {
+        let at = |x: f64, y: f64| Point::new(x + shift, y + shift);
         let mut b = Builder::new();
-        for p in [Point::new(-2.0, hair), Point::new(-1.0, -8.0), Point::new(-4.0, 1.0)] {
+        let mut points = vec![at(-2.0, hair), at(-1.0, -8.0), at(-4.0, 1.0)];
+        if on_side {
+            points.push(at(1.0, -3.0));
+        }
+        for p in points {
             b.add_point(p).unwrap();
         }
-        b.add_bulged_polyline(&[((-4.0, -3.0), 0.0), ((4.0, -3.0), 1.0), ((4.0, -1.0), 0.0), ((-4.0, -1.0), 1.0)], true).unwrap();
-        let d = b.build().unwrap_or_else(|e| panic!("hair {hair:e}: {e}"));
-        for distance in [0.5, 2.0, 2.5, 3.0, 3.5, 10.0] {
-            let offset = d.offset(distance).unwrap_or_else(|e| panic!("hair {hair:e}, distance {distance}: {e}"));
-            assert!(!offset.loops.is_empty(), "hair {hair:e}, distance {distance}: no loop");
+        let mut ring = vec![(at(-4.0, -3.0), 0.0), (at(4.0, -3.0), 1.0), (at(4.0, -1.0), 0.0), (at(-4.0, -1.0), 1.0)];
+        if straight {
+            ring.insert(1, (at(0.0, -3.0), 0.0));
+        }
+        b.add_bulged_polyline(&ring, true).unwrap();
+        let what = format!("hair {hair:e}, straight {straight}, on the side {on_side}, shift {shift}");
+        let d = b.build().unwrap_or_else(|e| panic!("{what}: {e}"));
+        distances
+            .iter()
+            .map(|&r| {
+                let offset = d.offset(r).unwrap_or_else(|e| panic!("{what}, distance {r}: {e}"));
+                assert!(!offset.loops.is_empty(), "{what}, distance {r}: no loop");
+                offset.area()
+            })
+            .collect()
+    };
+    let plain = areas(0.0, false, false, 0.0);
+    for hair in [-3.366460833513009e-131, 3.366460833513009e-131, -1e-140] {
+        for (straight, on_side, shift) in [(false, false, 0.0), (true, true, 0.0), (true, true, 1e6)] {
+            let got = areas(hair, straight, on_side, shift);
+            for ((r, a), want) in distances.iter().zip(got).zip(&plain) {
+                assert!(
+                    (a - want).abs() <= 1e-9 * want,
+                    "hair {hair:e}, straight {straight}, on the side {on_side}, shift {shift}, distance {r}: area {a} against {want}"
+                );
+            }
         }
     }
 }

@@ -319,12 +319,16 @@ impl CircularArc {
     /// near the bounding rays the answer may be either.
     pub fn spans(&self, p: Point) -> bool {
         let c = self.centre;
-        // the differences in units of about the radius (a power of two,
-        // exact): at 1e-300 their products would underflow to zero, at
-        // 1e300 overflow
-        let e = (-rounded_log2(self.radius)).clamp(-1000.0, 1000.0) as i32;
-        let unit = power_of_two(e);
+        // (the differences in units of about the radius: exact)
+        let unit = self.unit_near_inverse_radius();
         self.spans_from_centre(((p.x - c.x) * unit, (p.y - c.y) * unit), unit)
+    }
+
+    /// A power of two near `1 / radius` (within `2^±1000`): differences
+    /// from the centre times it are about 1, so that their products
+    /// neither underflow near 1e-300 nor overflow near 1e300.
+    fn unit_near_inverse_radius(&self) -> f64 {
+        power_of_two((-rounded_log2(self.radius)).clamp(-1000.0, 1000.0) as i32)
     }
 
     /// Whether the direction `d` (from the centre) lies within the arc's
@@ -332,9 +336,8 @@ impl CircularArc {
     /// direction at infinity, where the centre plus `d` could round back
     /// to the centre (a centre far larger than `d`).
     pub(crate) fn spans_direction(&self, d: Point) -> bool {
-        let e = (-rounded_log2(self.radius)).clamp(-1000.0, 1000.0) as i32;
         let step = super::arithmetic::real::unit_near_inverse(d.x.abs().max(d.y.abs()));
-        self.spans_from_centre((d.x * step, d.y * step), power_of_two(e))
+        self.spans_from_centre((d.x * step, d.y * step), self.unit_near_inverse_radius())
     }
 
     /// `spans` of the direction `d` from the centre, of about unit size;

@@ -73,8 +73,7 @@ pub(crate) fn arc_vertex_on(sites: &[Site; 3], on: Option<[Point; 2]>) -> Option
         // sides inside give the same circle only as a double root, to the
         // square root of the rounding (`at_an_end_point`)
         if let Site::Arc(arc) = &local[k] {
-            let is_a_point_site = |e: Point| local.iter().any(|s| s.as_point() == Some(e));
-            if let Some(first) = [arc.start(), arc.end()].into_iter().position(is_a_point_site) {
+            if let Some(first) = [arc.start(), arc.end()].into_iter().position(|e| is_a_point_site(&local, e)) {
                 options[..3 + first].rotate_right(1);
             }
         }
@@ -336,8 +335,7 @@ fn at_an_end_point(
         let (Site::Arc(arc), Touching::Inside(_)) = (&local[k], touch[k]) else { return None };
         // (the ends that are point sites first: most arcs have none here,
         // and then no nearest point is sought)
-        let is_a_point_site = |e: Point| local.iter().any(|s| s.as_point() == Some(e));
-        let ends = [arc.start(), arc.end()].map(|e| is_a_point_site(e).then_some(e));
+        let ends = [arc.start(), arc.end()].map(|e| is_a_point_site(local, e).then_some(e));
         if ends == [None, None] {
             return None;
         }
@@ -677,8 +675,7 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
     // stand for that end's own vertex (a circle through it), which fits
     // the distances too; it is this triple's vertex only where nothing
     // else fits (a tangent join, where the two separators are one line).
-    let unbacked =
-        (0..3).filter(|&k| matches!(touch[k], Touching::AtEnd(e) if !sites.iter().any(|s| s.as_point() == Some(e)))).count();
+    let unbacked = (0..3).filter(|&k| matches!(touch[k], Touching::AtEnd(e) if !is_a_point_site(sites, e))).count();
     let fitting = residual <= 1e-6 * (scale + radius.abs());
     Some(if fitting { unbacked as f64 + residual / (scale + radius.abs()) } else { 10.0 + residual })
 }
@@ -846,6 +843,11 @@ fn local_origin(sites: &[Site; 3]) -> Point {
         Point::new(0.5 * a.x + 0.5 * b.x, 0.5 * a.y + 0.5 * b.y)
     });
     Point::new((m[0].x + m[1].x + m[2].x) / 3.0, (m[0].y + m[1].y + m[2].y) / 3.0)
+}
+
+/// Whether `e` is one of the point sites among `sites`.
+fn is_a_point_site(sites: &[Site; 3], e: Point) -> bool {
+    sites.iter().any(|s| s.as_point() == Some(e))
 }
 
 /// The site moved by `-o`, then scaled by `unit` (a power of two).
