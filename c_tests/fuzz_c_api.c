@@ -1279,7 +1279,7 @@ static void exercise(ctx *c, const input *in, uint64_t qseed) {
     int split = in->split;
     int chk = -1;
     if (chance(&r, 50)) chk = outcome(c, "segvoronoi_builder_check", segvoronoi_builder_check(b), S_INTER, b);
-    /* with arcs, polygons and splitting are INVALID_ARGUMENT (not supported yet) */
+    /* with arcs, what arcs do not take yet may be INVALID_ARGUMENT */
     unsigned with_arcs = segvoronoi_builder_arc_count(b) > 0 ? S_ARG : 0;
     /* the builds of inputs with arcs sign apart (KNOWN lists them while the library's arcs are fixed) */
     const char *build = with_arcs ? "segvoronoi_builder_build (arcs)" : "segvoronoi_builder_build";

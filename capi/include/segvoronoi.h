@@ -806,8 +806,10 @@ enum segvoronoi_status segvoronoi_builder_build(struct segvoronoi_builder *build
 // `segvoronoi_diagram_max_split_displacement` of its input segments, and
 // polygons bound the even-odd region of their split rings (see
 // `Builder::split_crossings` in the Rust documentation). Arcs are split
-// too, into arcs; with arcs and polygons together splitting is not
-// supported yet (`SEGVORONOI_STATUS_INVALID_ARGUMENT`).
+// too, into arcs (`segvoronoi_diagram_arc_pieces_of_input`), and polygons
+// with arcs (`segvoronoi_builder_add_bulged_polygon`, or plain polygons
+// beside arcs) bound the even-odd region of their split rings, arcs and
+// segments alike.
 //
 // Errors: `NULL_ARGUMENT`.
 enum segvoronoi_status segvoronoi_builder_set_split_crossings(struct segvoronoi_builder *builder,

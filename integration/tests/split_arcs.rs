@@ -287,16 +287,21 @@ fn random_drawings(n: usize) -> Vec<Vec<Piece>> {
         .collect()
 }
 
-/// What stays refused, with a clear error: arcs and polygons split
-/// together.
+/// Arcs and polygons split together (refused before): a half circle
+/// obstacle across a triangle is cut where it crosses its three sides (the
+/// bottom twice), the triangle's domain unchanged
+/// (`split_curved_domains.rs` checks curved rings so).
 #[test]
-fn arcs_with_polygons_and_splitting_are_refused_clearly() {
+fn arcs_with_polygons_split_together() {
     let mut b = Builder::new();
     b.add_arc(CircularArc::from_bulge([0.0, 0.0], [4.0, 0.0], 1.0).unwrap()).unwrap();
     b.add_polygon(&[&[[0.0, -1.0], [4.0, -1.0], [2.0, 3.0]][..]]).unwrap();
-    let e = b.split_crossings(true).build().unwrap_err();
-    assert_eq!(e.kind(), ErrorKind::InvalidArgument);
-    assert!(e.to_string().contains("arcs and polygons"), "{e}");
+    let d = b.split_crossings(true).build().unwrap();
+    assert_eq!(d.stats().crossings, 3); // (a pair with an arc counts once)
+    assert_eq!(d.arc_pieces_of_input(0).len(), 5);
+    let p = Point::new;
+    assert_eq!(d.locate_point(p(2.0, 0.0)), Some(segvoronoi::Location::Inside));
+    assert_eq!(d.locate_point(p(0.2, 1.0)), Some(segvoronoi::Location::Outside));
 }
 
 /// Arcs beyond the exact range are refused as without splitting (the

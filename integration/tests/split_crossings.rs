@@ -213,3 +213,31 @@ fn overlapping_glyph_outlines() {
     }
     assert!(seen >= 5, "the overlapping glyph fixtures are missing");
 }
+
+/// A stretch two rings share cancels (even-odd) and is dropped, as the
+/// strict build drops it, not kept as an obstacle: a hole along its
+/// shell's top side is a notch open at the top, and the offsets outward
+/// have no hole there. Found wrong: splitting kept the cancelled stretch
+/// as a segment, and the outward offsets had a hole below it (the band
+/// around the stretch closed the notch), a valid-looking wrong answer.
+#[test]
+fn a_stretch_two_rings_share_cancels_with_splitting() {
+    let rings: [&[[f64; 2]]; 2] =
+        [&[[0.0, 0.0], [8.0, 0.0], [8.0, 5.0], [0.0, 5.0]], &[[2.0, 4.0], [5.0, 4.0], [5.0, 5.0], [2.0, 5.0]]];
+    let mut b = segvoronoi::Builder::new();
+    b.add_polygon(&rings).unwrap();
+    let strict = b.build().unwrap();
+    let split = b.split_crossings(true).build().unwrap();
+    assert_eq!(split.stats().cancelled_ring_pieces, strict.stats().cancelled_ring_pieces);
+    assert_eq!(split.stats().cancelled_ring_pieces, 2);
+    for r in [-0.2, 0.25, 0.6] {
+        let (want, got) = (strict.offset(r).unwrap(), split.offset(r).unwrap());
+        assert_eq!(got.loops.len(), want.loops.len(), "at {r}");
+        assert!(got.loops.iter().all(|l| !l.hole), "at {r}: a hole");
+        assert!((got.area() - want.area()).abs() <= 1e-12 * want.area(), "at {r}: {} against {}", got.area(), want.area());
+    }
+    // a segment along the shared stretch is an obstacle, and stays
+    b.add_segment([[5.0, 5.0], [2.0, 5.0]]).unwrap();
+    let with_obstacle = b.build().unwrap();
+    assert!(with_obstacle.offset(0.25).unwrap().loops.iter().any(|l| l.hole));
+}

@@ -282,9 +282,16 @@ def test_arcs_crossed_by_a_segment_are_split():
     assert {(5.0, 1.0), (-1.0, 1.0)} <= ends
 
 
-def test_arcs_with_polygons_and_split_crossings_are_refused_for_now():
-    with pytest.raises(segvoronoi.InvalidArgumentError, match="arcs and polygons"):
-        segvoronoi.voronoi(geometry=shapely.box(-1, -1, 5, 3), arcs=SLOT_ARCS, split_crossings=True)
+def test_arcs_with_polygons_and_split_crossings():
+    # the slot's half circles touch the box's sides from inside (refused
+    # before issue 32's split with polygons): each is cut where it touches,
+    # and the box's domain is as it was
+    d = segvoronoi.voronoi(geometry=shapely.box(-1, -1, 5, 3), arcs=SLOT_ARCS, split_crossings=True)
+    d.validate()
+    assert d.stats["touchings"] == 2
+    assert (d.site_kinds == 2).sum() == 4
+    plain = segvoronoi.voronoi(geometry=shapely.box(-1, -1, 5, 3))
+    assert d.locate([[2.0, 1.0], [6.0, 1.0], [-0.5, -0.5]]).tolist() == plain.locate([[2.0, 1.0], [6.0, 1.0], [-0.5, -0.5]]).tolist()
 
 
 def test_arcs_with_many_geometries_are_refused():

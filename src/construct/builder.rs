@@ -319,8 +319,11 @@ impl Builder {
     /// of arc pieces, and [`Diagram::arc_pieces_of_input`] and
     /// [`Diagram::inputs_of_arc_piece`] map between the input arcs and
     /// them; [`BuildStats`] counts a pair with an arc once however often it
-    /// meets. Not yet with polygons: arcs and polygons together with
-    /// splitting give [`ErrorKind::InvalidArgument`]. Where the arcs'
+    /// meets. Polygons with arcs (rings of [`Builder::add_bulged_polygon`],
+    /// and plain rings beside arcs) split the same way: the domain is the
+    /// even-odd region of the split rings, arcs and segments pieces alike,
+    /// and a shell and a hole that cross, or rings that share a stretch,
+    /// bound what the even-odd rule says. Where the arcs'
     /// construction cannot place the pieces (an end a hair from another
     /// piece, as the cuts put them), the build is refused with
     /// [`ErrorKind::Internal`] by its own checks, never answered wrong.
@@ -358,7 +361,6 @@ impl Builder {
     /// [`Diagram::site_of_arc`]: crate::Diagram::site_of_arc
     /// [`Diagram::arc_pieces_of_input`]: crate::Diagram::arc_pieces_of_input
     /// [`Diagram::inputs_of_arc_piece`]: crate::Diagram::inputs_of_arc_piece
-    /// [`ErrorKind::InvalidArgument`]: crate::ErrorKind::InvalidArgument
     /// [`ErrorKind::Internal`]: crate::ErrorKind::Internal
     /// [`BuildStats`]: crate::BuildStats
     /// [`BuildStats::snap_rounds`]: crate::BuildStats::snap_rounds
@@ -459,7 +461,10 @@ impl Builder {
 
     /// `build` without the check of inputs beyond the exact range.
     fn build_at_any_span(&self) -> Result<Diagram, Error> {
-        if !self.arcs.is_empty() {
+        // (rings of `add_bulged_polygon` are split with the arcs' rings, as
+        // chains of pieces, even where every bulge was zero)
+        let bulged_rings = self.rings.iter().any(|r| r.pieces.is_some());
+        if !self.arcs.is_empty() || (self.split_crossings && bulged_rings) {
             return super::with_arcs::diagram_with_arcs(
                 &self.points,
                 &self.segments,
@@ -467,13 +472,6 @@ impl Builder {
                 self.split_crossings,
                 &self.rings,
             );
-        }
-        if self.split_crossings && self.rings.iter().any(|r| r.pieces.is_some()) {
-            return Err(Error::new(
-                ErrorKind::InvalidArgument,
-                "splitting crossings is not supported with rings of add_bulged_polygon".to_string(),
-                Vec::new(),
-            ));
         }
         if self.split_crossings && !self.segments.is_empty() {
             let mut diagram = super::split::diagram_of_split(&self.points, &self.segments, &self.rings)?;

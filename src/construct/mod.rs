@@ -73,7 +73,7 @@ pub(super) fn diagram_of(points: &[Point], segments: &[[Point; 2]], rings: &[Rin
     let (diagram, outcome) = match build_sites(points, segments, &ring)? {
         Sites::Built(diagram, outcome) => (*diagram, outcome),
         Sites::Shared(checked, pieces) => {
-            return shared_stretches::diagram_of_shared(points, segments, rings, &ring, &checked, pieces);
+            return shared_stretches::diagram_of_shared(points, segments, rings, &checked, pieces);
         }
     };
     let mut diagram = accept(diagram, outcome, points, segments)?;

@@ -136,18 +136,11 @@ pub(super) fn diagram_of_shared(
     points: &[Point],
     segments: &[[Point; 2]],
     rings: &[RingInput],
-    ring: &[bool],
     checked: &CheckedInput,
     pieces: Vec<Piece>,
 ) -> Result<Diagram, Error> {
-    let cancelled: usize = pieces.iter().map(|p| ring_copies(p, ring)).filter(|&k| k > 1).map(|k| k - k % 2).sum();
-    let (mut pieces, rings_left) = split_rings(pieces, rings, segments.len());
-    // The cancelled pieces are among the rest, after every ring's pieces,
-    // so the rings' ranges stay as they are.
-    pieces.retain(|p| {
-        let k = ring_copies(p, ring);
-        !(k > 0 && k % 2 == 0 && k == p.origins.len())
-    });
+    // (the cancelled pieces are dropped there)
+    let (pieces, rings_left, cancelled) = split_rings(pieces, rings, segments.len());
     let ends: Vec<[Point; 2]> = pieces.iter().map(|p| p.ends).collect();
     let mut diagram = super::diagram_of(points, &ends, &[]).map_err(|e| in_input_terms(e, &pieces))?;
     diagram.set_domain(&rings_left);

@@ -9,9 +9,10 @@
 //! once the diagram is built. Their segments go in as obstacles' do: rings
 //! sharing a stretch are refused as overlapping rather than cancelled.
 //!
-//! Splitting crossings with arcs (`split::arcs`) builds the pieces here;
-//! not yet with polygons too (refused with a clear error rather than built
-//! wrong).
+//! Splitting crossings with arcs (`split::arcs`) builds the pieces here,
+//! and with polygons the rings of their even-odd region over the pieces
+//! (`split::rings`). Rings of `Builder::add_bulged_polygon` come here to be
+//! split even without an arc among them.
 
 use super::polygon_input::RingInput;
 use super::renumber::ArcSite;
@@ -121,20 +122,23 @@ fn diagram_of_split_with_arcs(
     arcs: &[CircularArc],
     rings: &[RingInput],
 ) -> Result<Diagram, Error> {
-    if !rings.is_empty() {
-        return Err(Error::new(
-            ErrorKind::InvalidArgument,
-            "splitting crossings is not supported with arcs and polygons together yet: split the arcs and segments alone, \
-             or give polygons whose rings do not cross"
-                .to_string(),
-            Vec::new(),
-        ));
-    }
     // the arcs' range first, as without splitting (the cuts of an input
     // beyond it could land past the largest double)
     within_the_exact_range(points, segments, arcs)?;
-    let super::split::arcs::SplitWithArcs { input: split, arcs: split_arcs } =
+    let super::split::arcs::SplitWithArcs { input: mut split, arcs: mut split_arcs } =
         super::split::arcs::split_with_arcs(points, segments, arcs)?;
+    // the boundary of the rings' even-odd region, as rings of pieces
+    let (mut split_rings, mut cancelled) = (Vec::new(), 0);
+    if !rings.is_empty() {
+        let (pieces, arc_pieces, over_pieces, dropped) = super::split::split_rings_with_arcs(
+            std::mem::take(&mut split.pieces),
+            std::mem::take(&mut split_arcs),
+            rings,
+            segments.len(),
+            arcs.len(),
+        );
+        (split.pieces, split_arcs, split_rings, cancelled) = (pieces, arc_pieces, over_pieces, dropped);
+    }
     let finite = |p: &Point| p.is_finite();
     let pieces_finite = split.points.iter().all(finite)
         && split.pieces.iter().all(|p| p.ends.iter().all(finite))
@@ -162,6 +166,10 @@ fn diagram_of_split_with_arcs(
             e
         }
     })?;
+    if !rings.is_empty() {
+        // (before the split's maps are set: the rings name pieces)
+        diagram.set_domain(&super::polygon_input::rings_over_pieces(&diagram, &split_rings));
+    }
     let origins: Vec<Vec<u32>> = split.pieces.iter().map(|p| p.origins.clone()).collect();
     diagram.split =
         Some(Box::new(crate::diagram::SplitPieces::new(&origins, segments.len(), split.max_displacement, split.pixel)));
@@ -177,6 +185,7 @@ fn diagram_of_split_with_arcs(
     stats.overlaps = split.overlaps;
     stats.touchings = split.touchings;
     stats.snap_rounds = split.rounds;
+    stats.cancelled_ring_pieces = cancelled;
     Ok(diagram)
 }
 

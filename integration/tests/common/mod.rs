@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 pub mod arc_inputs;
+pub mod curved_rings;
 
 use segvoronoi::{Builder, Diagram, EdgeEnd, Point};
 

@@ -22,9 +22,9 @@
 //! (to a pixel) merge. The loop ends when the exact tests find nothing,
 //! so the result is accepted by the strict check, as with segments.
 //!
-//! Not yet: polygons (rings) with arcs and splitting, and the pieces of an
-//! input arc as a query (each arc piece's input arc is its site's
-//! `arc_input_index`).
+//! Polygons' rings are put together again from the pieces by
+//! `split::rings::split_rings_with_arcs` (the even-odd boundary, arcs
+//! included).
 
 use std::collections::HashMap;
 
@@ -152,11 +152,13 @@ fn arc_contacts(points: &[Point], pieces: &[Piece], arcs: &[ArcPiece], pixels: &
     for conflict in conflicts {
         let (at, segment, arcs_met): (Vec<Point>, Option<usize>, Vec<usize>) = match conflict {
             ArcConflict::PointOnArc { point, arc } => (vec![points[point]], None, vec![arc]),
-            ArcConflict::ArcSegment { arc, segment, .. } => {
-                (segment_meets_arc(segments[segment], &geometry[arc], near), Some(segment), vec![arc])
+            ArcConflict::ArcSegment { arc, segment, contact } => {
+                let tangent = contact == SegmentArcContact::Tangent;
+                (segment_meets_arc(segments[segment], &geometry[arc], near, tangent), Some(segment), vec![arc])
             }
-            ArcConflict::Arcs { first, second, .. } => {
-                (arc_meets_arc(&geometry[first], &geometry[second], near), None, vec![first, second])
+            ArcConflict::Arcs { first, second, contact } => {
+                let tangent = contact == ArcArcContact::Tangent;
+                (arc_meets_arc(&geometry[first], &geometry[second], near, tangent), None, vec![first, second])
             }
         };
         for p in at {
@@ -175,9 +177,12 @@ fn arc_contacts(points: &[Point], pieces: &[Piece], arcs: &[ArcPiece], pixels: &
 
 /// Where the segment `s` meets the arc (rounded): the line's points on
 /// the circle, and `s`'s ends on the arc, within `near` of both; where
-/// rounding loses all (a tangent), the point of the circle nearest the
-/// line.
-fn segment_meets_arc(s: [Point; 2], arc: &CircularArc, near: f64) -> Vec<Point> {
+/// rounding loses all, the point of the circle nearest the line. Where
+/// they are `tangent` (decided exactly), that point alone: the rounded
+/// roots of a tangent line stand apart by the square root of rounding
+/// (1e-7 of the radius), and cutting the arc at both would leave between
+/// them a piece of arc straight to the last bit.
+fn segment_meets_arc(s: [Point; 2], arc: &CircularArc, near: f64, tangent: bool) -> Vec<Point> {
     let [a, b] = s;
     let (c, r) = (arc.centre(), arc.radius());
     let (dx, dy) = (b.x - a.x, b.y - a.y);
@@ -189,8 +194,10 @@ fn segment_meets_arc(s: [Point; 2], arc: &CircularArc, near: f64) -> Vec<Point> 
         let foot = Point::new(a.x + t * dx, a.y + t * dy);
         let h2 = r * r - foot.distance_squared(c);
         let half = h2.max(0.0).sqrt() / length2.sqrt();
-        for sign in [-1.0, 1.0] {
-            candidates.push(Point::new(foot.x + sign * half * dx, foot.y + sign * half * dy));
+        if !tangent {
+            for sign in [-1.0, 1.0] {
+                candidates.push(Point::new(foot.x + sign * half * dx, foot.y + sign * half * dy));
+            }
         }
     }
     let segment = Site::Segment { a, b };
@@ -207,13 +214,14 @@ fn segment_meets_arc(s: [Point; 2], arc: &CircularArc, near: f64) -> Vec<Point> 
 
 /// Where two arcs meet (rounded): their circles' common points, and the
 /// ends of each on the other, within `near` of both; where rounding loses
-/// all (a tangent), the point of the first circle toward the second's
+/// all, or where they are `tangent` (decided exactly: see
+/// `segment_meets_arc`), the point of the first circle toward the second's
 /// centre, or away from it.
-fn arc_meets_arc(x: &CircularArc, y: &CircularArc, near: f64) -> Vec<Point> {
+fn arc_meets_arc(x: &CircularArc, y: &CircularArc, near: f64, tangent: bool) -> Vec<Point> {
     let (c1, r1, c2, r2) = (x.centre(), x.radius(), y.centre(), y.radius());
     let mut candidates = vec![x.start(), x.end(), y.start(), y.end()];
     let d = c1.distance(c2);
-    if d > 0.0 {
+    if d > 0.0 && !tangent {
         // along the centres' line from c1, and across it
         let along = (d * d + r1 * r1 - r2 * r2) / (2.0 * d);
         let across = (r1 * r1 - along * along).max(0.0).sqrt();
@@ -293,7 +301,7 @@ fn route_arcs(
             let sub = if (p0, p1) == (arc.start(), arc.end()) {
                 arc
             } else {
-                CircularArc::through(p0, flattened(p0, arc.point_at(0.5 * (t0 + t1)), p1), p1).map_err(|e| {
+                sub_arc(&arc, (t0, p0), (t1, p1)).map_err(|e| {
                     Error::new(
                         ErrorKind::Internal,
                         format!(
@@ -308,6 +316,23 @@ fn route_arcs(
         }
     }
     Ok(out)
+}
+
+/// The part of `arc` from fraction `t0` of its sweep to `t1`, its ends
+/// moved to `p0` and `p1` (pixel centres): through the point of the arc
+/// halfway between, `flattened`. Where that point rounds onto the line of
+/// the ends (a piece 1e-7 long of a radius near 1, between two crossings
+/// of nearly tangent circles, bends from its chord by less than an ulp),
+/// the piece is given by its bulge instead, from the same share of the
+/// sweep and as much flatter: what its three points cannot hold.
+fn sub_arc(arc: &CircularArc, (t0, p0): (f64, Point), (t1, p1): (f64, Point)) -> Result<CircularArc, Error> {
+    CircularArc::through(p0, flattened(p0, arc.point_at(0.5 * (t0 + t1)), p1), p1).or_else(|straight| {
+        let bulge = ((t1 - t0) * arc.sweep() / 4.0).tan() * (1.0 - 2f64.powi(-40));
+        if bulge == 0.0 || !bulge.is_finite() {
+            return Err(straight);
+        }
+        CircularArc::from_bulge(p0, p1, bulge)
+    })
 }
 
 /// `m` (the middle of a sub-arc from `p0` to `p1`) moved toward their

@@ -12,11 +12,10 @@ use crate::geometry::Point;
 /// are the polygons' rings over the input segments.
 pub(crate) fn diagram_of_split(points: &[Point], segments: &[[Point; 2]], rings: &[RingInput]) -> Result<Diagram, Error> {
     let mut split = split(points, segments)?;
-    let mut split_rings_over_pieces = Vec::new();
+    let (mut split_rings_over_pieces, mut cancelled) = (Vec::new(), 0);
     if !rings.is_empty() {
-        let (pieces, new_rings) = split_rings(std::mem::take(&mut split.pieces), rings, segments.len());
-        split.pieces = pieces;
-        split_rings_over_pieces = new_rings;
+        let (pieces, new_rings, dropped) = split_rings(std::mem::take(&mut split.pieces), rings, segments.len());
+        (split.pieces, split_rings_over_pieces, cancelled) = (pieces, new_rings, dropped);
     }
     let ends: Vec<[Point; 2]> = split.pieces.iter().map(|p| p.ends).collect();
     let mut diagram = crate::construct::diagram_of(&split.points, &ends, &[]).map_err(|e| in_input_terms(e, &split))?;
@@ -34,6 +33,7 @@ pub(crate) fn diagram_of_split(points: &[Point], segments: &[[Point; 2]], rings:
     stats.overlaps = split.overlaps;
     stats.touchings = split.touchings;
     stats.snap_rounds = split.rounds;
+    stats.cancelled_ring_pieces = cancelled;
     Ok(diagram)
 }
 

@@ -55,7 +55,7 @@ use crate::geometry::scale::Scale;
 use crate::geometry::{Point, Site};
 pub(crate) use build::diagram_of_split;
 use contacts::{contact_pixels, ContactCounts};
-pub(crate) use rings::split_rings;
+pub(crate) use rings::{split_rings, split_rings_with_arcs};
 use route::{route, HotPixels};
 
 /// Most rounds of snapping before giving up (an internal error): on every

@@ -189,6 +189,34 @@ pub(crate) fn turn_between(u: &Site, v: &Site, end: Point) -> Option<i8> {
     Some(same_way * bend)
 }
 
+/// The order of the pieces `u` and `v` leaving their common endpoint `end`
+/// counter-clockwise from the direction of the positive x axis, as their
+/// directions a hair away from it see it: by the exact tangents (their
+/// half-plane first, then their turn), and where those coincide by the
+/// curvatures (the one curving more to the left comes later). A piece that
+/// leaves along the x axis curving right belongs at the end of the turn
+/// rather than at its start; ordered first, it only rotates the cyclic
+/// order by one, which the callers (pairing pieces around a point) accept.
+/// `None` out of range.
+pub(crate) fn compare_leaving(u: &Site, v: &Site, end: Point) -> Option<std::cmp::Ordering> {
+    use std::cmp::Ordering;
+    let (tu, tv) = (leaving(u, end)?, leaving(v, end)?);
+    let lower = |d: &Direction| {
+        let y = d.y.sign();
+        y < 0 || (y == 0 && d.x.sign() < 0)
+    };
+    match (lower(&tu), lower(&tv)) {
+        (false, true) => return Some(Ordering::Less),
+        (true, false) => return Some(Ordering::Greater),
+        _ => {}
+    }
+    match cross_sign(&tu, &tv)? {
+        1 => Some(Ordering::Less),
+        -1 => Some(Ordering::Greater),
+        _ => curvature_leaving(u, end).partial_cmp(&curvature_leaving(v, end)),
+    }
+}
+
 /// Whether a vertex of both endpoints of `arc` and of `third` lies beyond
 /// the arc's centre on the side of the arc's middle (1), before it (-1) or
 /// at it (0), for the `third` sites where that is exact: a segment or arc
