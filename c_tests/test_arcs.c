@@ -1115,6 +1115,55 @@ static void test_domain_with_arcs(void) {
     segvoronoi_builder_free(b);
 }
 
+/* Two overlapping discs as one curved polygon: refused as crossing, and
+ * with splitting the domain is their symmetric difference (even-odd), each
+ * circle cut where the other crosses it; its area is 8π/3 + 4√3, which the
+ * offsets at ±0.01 must bracket (the boundary is 8π long). */
+static void test_split_curved_polygon(void) {
+    static const double xy[8] = {-2, 0, 2, 0, 0, 0, 4, 0};
+    static const double bulges[4] = {1, 1, 1, 1};
+    static const size_t rings[2] = {2, 2};
+    const double area = 8.0 * 3.14159265358979323846 / 3.0 + 4.0 * sqrt(3.0), perimeter = 8.0 * 3.14159265358979323846;
+    segvoronoi_builder *b = segvoronoi_builder_new();
+    segvoronoi_diagram *d = NULL;
+    segvoronoi_offset *o = NULL;
+    uint32_t where = 99;
+    size_t k, n = 0;
+    static const double probes[4][3] = {{-1, 0, SEGVORONOI_LOCATION_INSIDE}, {1, 0, SEGVORONOI_LOCATION_OUTSIDE},
+                                        {3, 0.5, SEGVORONOI_LOCATION_INSIDE}, {5, 0, SEGVORONOI_LOCATION_OUTSIDE}};
+    CHECK_STATUS(segvoronoi_builder_add_bulged_polygon(b, xy, bulges, rings, 2), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_build(b, &d), SEGVORONOI_STATUS_INTERSECTING);
+    CHECK(d == NULL);
+    CHECK_STATUS(segvoronoi_builder_set_split_crossings(b, 1), SEGVORONOI_STATUS_OK);
+    CHECK_STATUS(segvoronoi_builder_build(b, &d), SEGVORONOI_STATUS_OK);
+    if (d == NULL) {
+        segvoronoi_builder_free(b);
+        return;
+    }
+    /* each half circle cut once: eight arc pieces, four of each circle */
+    CHECK_STATUS(segvoronoi_diagram_arc_pieces_of_input(d, 0, NULL, 0, &n), SEGVORONOI_STATUS_OK);
+    CHECK(n == 2);
+    for (k = 0; k < 4; ++k) {
+        CHECK_STATUS(segvoronoi_diagram_locate_point(d, probes[k][0], probes[k][1], &where), SEGVORONOI_STATUS_OK);
+        CHECK(where == (uint32_t)probes[k][2]);
+    }
+    CHECK_STATUS(segvoronoi_diagram_offset(d, 0.01, &o), SEGVORONOI_STATUS_OK);
+    if (o != NULL) {
+        double a = segvoronoi_offset_area(o);
+        CHECK(a > area && a < area + 0.01 * perimeter + 1e-3);
+        segvoronoi_offset_free(o);
+        o = NULL;
+    }
+    CHECK_STATUS(segvoronoi_diagram_offset(d, -0.01, &o), SEGVORONOI_STATUS_OK);
+    if (o != NULL) {
+        double a = segvoronoi_offset_area(o);
+        CHECK(a < area && a > area - 0.01 * perimeter - 1e-3);
+        segvoronoi_offset_free(o);
+    }
+    segvoronoi_diagram_free(d);
+    segvoronoi_builder_free(b);
+}
+
 /* Whether `m` contains each of the NULL-terminated `words`. */
 static bool names_all(const char *m, const char *const *words) {
     for (; *words != NULL; ++words)
@@ -1201,6 +1250,7 @@ int segvoronoi_run_arc_tests(void) {
     test_random_rounded_polygons(0);
     test_domain_with_arcs();
     test_crossing_arcs();
+    test_split_curved_polygon();
     if (audit_failed > 0)
         fprintf(stderr, "test_arcs: %d parts of the audit of the library's arcs fail (LIBRARY above; not counted)\n", audit_failed);
     if (conic_pieces_refused > 0)

@@ -615,9 +615,9 @@ enum segvoronoi_status segvoronoi_builder_add_bulged_polyline(struct segvoronoi_
 // that makes no arc), naming the polygon, the ring and the vertex within
 // it (`segvoronoi_builder_last_error_indices`); `TOO_LARGE`,
 // `OUT_OF_MEMORY`. The builder is then unchanged. Rings that cross or
-// overlap are `INTERSECTING` from `segvoronoi_builder_build`, and such
-// rings cannot be built with `segvoronoi_builder_set_split_crossings`
-// (`INVALID_ARGUMENT`).
+// overlap are `INTERSECTING` from `segvoronoi_builder_build`; with
+// `segvoronoi_builder_set_split_crossings` they are cut where they meet
+// (arcs into arcs) and bound the even-odd region of the pieces.
 // Thread safety: one builder must not be used from two threads at once.
 enum segvoronoi_status segvoronoi_builder_add_bulged_polygon(struct segvoronoi_builder *builder,
                                                              const double *xy,

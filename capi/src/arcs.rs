@@ -308,9 +308,9 @@ pub unsafe extern "C" fn segvoronoi_builder_add_bulged_polyline(
 /// that makes no arc), naming the polygon, the ring and the vertex within
 /// it (`segvoronoi_builder_last_error_indices`); `TOO_LARGE`,
 /// `OUT_OF_MEMORY`. The builder is then unchanged. Rings that cross or
-/// overlap are `INTERSECTING` from `segvoronoi_builder_build`, and such
-/// rings cannot be built with `segvoronoi_builder_set_split_crossings`
-/// (`INVALID_ARGUMENT`).
+/// overlap are `INTERSECTING` from `segvoronoi_builder_build`; with
+/// `segvoronoi_builder_set_split_crossings` they are cut where they meet
+/// (arcs into arcs) and bound the even-odd region of the pieces.
 /// Thread safety: one builder must not be used from two threads at once.
 #[no_mangle]
 pub unsafe extern "C" fn segvoronoi_builder_add_bulged_polygon(

@@ -47,7 +47,9 @@ class CurvedPolygon:
     touch one another at points only. Errors name the ring and the vertex
     (:class:`InvalidCoordinateError`, :class:`InvalidPolygonError`,
     :class:`InvalidArcError`; :class:`IntersectingError` for pieces that
-    cross). Not with ``split_crossings=True``.
+    cross). With ``split_crossings=True`` the rings may cross and overlap:
+    they are cut where they meet, arcs into arcs, and bound the even-odd
+    region of the pieces.
 
     >>> import segvoronoi
     >>> slot = CurvedPolygon([[0, 0, 0], [4, 0, 1], [4, 2, 0], [0, 2, 1]])  # two half circles
