@@ -132,7 +132,9 @@ unsafe fn add_one_arc(
 /// success.
 /// Errors: `NULL_ARGUMENT` (`builder`), `INVALID_COORDINATE` (a coordinate
 /// is NaN or infinite), `INVALID_ARC` (the bulge is 0, NaN or infinite, the
-/// endpoints are equal, or the circle is beyond the range of `double`),
+/// endpoints are equal, the circle is beyond the range of `double`, or the
+/// arc is straight to within the rounding of its centre: a bulge below
+/// about 2^-42, whose centre lies over 2^40 chords away; add a segment),
 /// `TOO_LARGE`, `OUT_OF_MEMORY`. The builder is then unchanged, and
 /// `segvoronoi_builder_last_error` and `_last_error_indices` name the
 /// index the arc would have had.
@@ -158,7 +160,9 @@ pub unsafe extern "C" fn segvoronoi_builder_add_arc(
 /// Ownership: as `segvoronoi_builder_add_arc`.
 /// Errors: `NULL_ARGUMENT` (`builder`), `INVALID_COORDINATE` (a coordinate
 /// is NaN or infinite), `INVALID_ARC` (two of the points are equal, the
-/// three are on one line, or the circle is beyond the range of `double`),
+/// three are on one line, the circle is beyond the range of `double`, or
+/// the arc is straight to within the rounding of its centre, as for
+/// `segvoronoi_builder_add_arc`),
 /// `TOO_LARGE`, `OUT_OF_MEMORY`; the builder is then unchanged and the
 /// last error names the arc's index.
 /// Thread safety: one builder must not be used from two threads at once.
@@ -202,7 +206,9 @@ pub unsafe extern "C" fn segvoronoi_builder_add_arc_through(
 /// Errors: `NULL_ARGUMENT` (`builder`, or `xy` or `bulges` NULL with
 /// `n > 0`); `INVALID_COORDINATE` (a non-finite coordinate) or
 /// `INVALID_ARC` (a non-finite bulge, or a piece that is no arc: equal
-/// endpoints cannot happen, a circle beyond `double` can), naming the
+/// endpoints cannot happen, a circle beyond `double` can; a bulge so small
+/// that its arc is straight to within the rounding of its centre, below
+/// about 2^-42, makes a segment), naming the
 /// vertex (`segvoronoi_builder_last_error_indices`); `TOO_LARGE` (checked
 /// before `xy` is read), `OUT_OF_MEMORY`. The builder is then unchanged.
 /// Thread safety: one builder must not be used from two threads at once.

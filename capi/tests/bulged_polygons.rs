@@ -88,7 +88,7 @@ fn bad_rings_are_refused_naming_the_vertex() {
     let cases: [(Vec<(f64, f64, f64)>, segvoronoi_status, Vec<usize>); 3] = [
         (vec![(0.0, 0.0, 0.0), (1.0, 0.0, f64::NAN), (1.0, 1.0, 0.0)], segvoronoi_status::InvalidCoordinate, vec![1, 0, 1]),
         (vec![(0.0, 0.0, 0.0), (1.0, 0.0, 0.0)], segvoronoi_status::InvalidPolygon, vec![1, 0]),
-        (vec![(0.0, 0.0, 0.0), (1e10, 0.0, 0.0), (1e10, 1e10, 1e-300)], segvoronoi_status::InvalidArc, vec![1, 0, 2]),
+        (vec![(0.0, 0.0, 0.0), (1e10, 0.0, 0.0), (1e10, 1e10, 1e300)], segvoronoi_status::InvalidArc, vec![1, 0, 2]),
     ];
     for (ring, status, indices) in cases {
         unsafe {

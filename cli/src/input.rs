@@ -369,6 +369,9 @@ fn add_steps(builder: &mut Builder, steps: &[Step]) -> Result<(Range<usize>, Ran
     for step in steps {
         match *step {
             Step::Segment(ends) => builder.add_segment(ends).map(drop)?,
+            // (an arc straight to within the rounding of its centre, which
+            // the builder refuses, is its chord)
+            Step::Arc(arc) if arc.is_straight_within_rounding() => builder.add_segment([arc.start(), arc.end()]).map(drop)?,
             Step::Arc(arc) => builder.add_arc(arc).map(drop)?,
         }
     }

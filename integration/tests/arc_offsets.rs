@@ -302,7 +302,7 @@ fn bad_bulged_rings_are_refused_naming_the_vertex() {
         (vec![(p(0.0, 0.0), 0.0), (p(1.0, f64::INFINITY), 0.0), (p(1.0, 1.0), 0.0)], ErrorKind::InvalidCoordinate, vec![1, 1, 1]),
         (vec![(p(0.0, 0.0), 0.0), (p(1.0, 0.0), f64::NAN), (p(1.0, 1.0), 0.0)], ErrorKind::InvalidCoordinate, vec![1, 1, 1]),
         (vec![(p(0.0, 0.0), 0.0), (p(1.0, 0.0), 0.0), (p(0.0, 0.0), 0.0)], ErrorKind::InvalidPolygon, vec![1, 1]),
-        (vec![(p(0.0, 0.0), 0.0), (p(1e10, 0.0), 0.0), (p(1e10, 1e10), 1e-300)], ErrorKind::InvalidArc, vec![1, 1, 2]),
+        (vec![(p(0.0, 0.0), 0.0), (p(1e10, 0.0), 0.0), (p(1e10, 1e10), 1e300)], ErrorKind::InvalidArc, vec![1, 1, 2]),
     ];
     for (bad, kind, indices) in cases {
         let mut b = Builder::new();
@@ -1273,4 +1273,44 @@ fn a_slot_and_a_point_a_hair_off_a_line_offset_at_any_magnitude() {
             }
         }
     }
+}
+
+/// Arcs straight to within the rounding of their centre (a bulge below
+/// about 2^-42: the centre 2^40 chords away or more) are no arcs to the
+/// builder: `add_arc` refuses one (its offsets were refused at a bulge of
+/// 1e-17, and 1e12 from the origin a bulge of 1e-20 was offset as a
+/// circle, a valid-looking wrong answer), and a bulged polygon takes that
+/// piece as a segment. Just above the line, arcs offset as the stadium
+/// they all but are, at every magnitude.
+#[test]
+fn nearly_straight_arcs() {
+    use segvoronoi::{ChainPiece, ErrorKind};
+    let stadium = 20.0 + std::f64::consts::PI;
+    for (x, bulge) in [(0.0, 1e-17), (1e6, 2.5e-17), (1e12, 1e-20), (0.0, -1e-13)] {
+        let mut b = Builder::new();
+        let arc = CircularArc::from_bulge([x, x], [x + 10.0, x], bulge).unwrap();
+        let e = b.add_arc(arc).unwrap_err();
+        assert_eq!(e.kind(), ErrorKind::InvalidArc, "{x} {bulge}");
+        assert!(e.message().contains("straight"), "{e}");
+        assert_eq!(b.arc_count(), 0);
+    }
+    for (x, bulge) in [(0.0, 3e-13), (1e6, 3e-13), (1e12, -3e-13), (-1e15, 3e-13), (1e-6, 3e-13), (0.0, 1e-9)] {
+        let mut b = Builder::new();
+        b.add_arc(CircularArc::from_bulge([x, x], [x + 10.0, x], bulge).unwrap()).unwrap();
+        let o = b.build().unwrap().offset(1.0).unwrap_or_else(|e| panic!("{x} {bulge}: {e}"));
+        assert!((o.area() - stadium).abs() <= 1e-9 * stadium, "{x} {bulge}: {}", o.area());
+        assert!(o.polylines(1e-3).unwrap().iter().map(Vec::len).sum::<usize>() < 200, "{x} {bulge}");
+    }
+    // a square with a side of bulge 1e-17 is the square
+    let p = Point::new;
+    let ring = vec![(p(0.0, 0.0), 1e-17), (p(4.0, 0.0), 0.0), (p(4.0, 4.0), 0.0), (p(0.0, 4.0), 0.0)];
+    let mut b = Builder::new();
+    let made = b.add_bulged_polygon(&[ring]).unwrap();
+    assert_eq!(made[0][0], ChainPiece::Segment(0));
+    assert_eq!(b.arc_count(), 0);
+    let area = b.build().unwrap().offset(-0.5).unwrap().area();
+    assert!((area - 9.0).abs() <= 1e-12, "{area}");
+    let mut b = Builder::new();
+    let made = b.add_bulged_polyline(&[([0.0, 0.0], 1e-17), ([4.0, 0.0], 0.0)], false).unwrap();
+    assert_eq!(made, vec![ChainPiece::Segment(0)]);
 }

@@ -6,6 +6,7 @@
 
 use crate::diagram::Diagram;
 use crate::error::{Error, ErrorKind};
+use crate::geometry::arc::straight_within_rounding;
 use crate::geometry::{CircularArc, Point};
 
 use super::polygon_input::{name_rings, ChainPiece, RingInput};
@@ -85,7 +86,19 @@ impl Builder {
     /// Arcs may share endpoints with any number of segments and arcs;
     /// whether they cross, overlap or touch inside is checked by
     /// [`Builder::build`]. Fails with [`ErrorKind::TooLarge`] when its
-    /// endpoints would pass [`MAX_POINTS`]; the builder is then unchanged.
+    /// endpoints would pass [`MAX_POINTS`], and with
+    /// [`ErrorKind::InvalidArc`] for an arc straight to within the
+    /// rounding of its centre (a minor arc whose radius is over 2^40 times
+    /// its chord, a bulge below about 2^-42: add it as a segment); the
+    /// builder is then unchanged.
+    ///
+    /// ```
+    /// use segvoronoi::{Builder, CircularArc, ErrorKind};
+    /// let mut b = Builder::new();
+    /// let flat = CircularArc::from_bulge([0.0, 0.0], [10.0, 0.0], 1e-17)?;
+    /// assert_eq!(b.add_arc(flat).unwrap_err().kind(), ErrorKind::InvalidArc);
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
     ///
     /// ```
     /// use segvoronoi::{Builder, CircularArc, Site};
@@ -102,6 +115,23 @@ impl Builder {
     /// # Ok::<(), segvoronoi::Error>(())
     /// ```
     pub fn add_arc(&mut self, arc: CircularArc) -> Result<usize, Error> {
+        if arc.is_straight_within_rounding() {
+            let (a, b) = (arc.start(), arc.end());
+            return Err(Error::new(
+                ErrorKind::InvalidArc,
+                format!(
+                    "arc ({:?}, {:?}) - ({:?}, {:?}) is straight to within the rounding of its centre (its radius {:e} is \
+                     over 2^40 times its chord {:e}); add it as a segment",
+                    a.x,
+                    a.y,
+                    b.x,
+                    b.y,
+                    arc.radius(),
+                    a.distance(b)
+                ),
+                Vec::new(),
+            ));
+        }
         let endpoints = self.points.len().saturating_add(2 * (self.segments.len() + self.arcs.len() + 1));
         check_capacity(endpoints)?;
         self.arcs.try_reserve(1).map_err(|_| out_of_memory("arcs", 1, std::mem::size_of::<CircularArc>()))?;
@@ -116,6 +146,10 @@ impl Builder {
     /// consecutive vertices are dropped (with their piece). Returns what
     /// each piece became, in order. A polyline is an obstacle: it does not
     /// bound the domain.
+    ///
+    /// A piece whose bulge is so small that its arc is straight to within
+    /// the rounding of its centre (below about 2^-42, as
+    /// [`Builder::add_arc`] refuses) is a segment.
     ///
     /// Errors, with nothing added: a non-finite coordinate or bulge
     /// ([`ErrorKind::InvalidCoordinate`], naming the vertex), or
@@ -164,6 +198,7 @@ impl Builder {
             chain.pop();
         }
         let pieces = if closed && chain.len() > 2 { chain.len() } else { chain.len().saturating_sub(1) };
+        straighten(&mut chain, pieces);
         let mut made = Vec::new();
         made.try_reserve(pieces).map_err(|_| out_of_memory("polyline pieces", pieces, std::mem::size_of::<ChainPiece>()))?;
         let (segments, arcs) = (self.segments.len(), self.arcs.len());
@@ -644,8 +679,11 @@ impl Builder {
     /// ([`ErrorKind::InvalidPolygon`]); a bulge that makes no arc
     /// ([`ErrorKind::InvalidArc`]); [`ErrorKind::TooLarge`]. Rings with arcs
     /// may touch others only at points, and share no stretches with them
-    /// (an overlap is [`ErrorKind::Intersecting`] at build time); they
-    /// cannot be built with [`Builder::split_crossings`].
+    /// (an overlap is [`ErrorKind::Intersecting`] at build time), unless
+    /// [`Builder::split_crossings`] cuts them where they meet. A piece
+    /// whose bulge is so small that its arc is straight to within the
+    /// rounding of its centre (below about 2^-42, as [`Builder::add_arc`]
+    /// refuses) is a segment.
     ///
     /// ```
     /// use segvoronoi::{Builder, ChainPiece, Location, Point};
@@ -775,6 +813,8 @@ fn bulged_ring<P: Into<Point> + Copy>(polygon: usize, ring: usize, vertices: &[(
             }
         }
     }
+    let pieces = chain.len();
+    straighten(&mut chain, pieces);
     let arcs = chain.iter().filter(|(_, b)| *b != 0.0).count();
     // two vertices close a ring with an arc between them (a half circle
     // and its diameter, a circle as two halves); one never does
@@ -790,6 +830,18 @@ fn bulged_ring<P: Into<Point> + Copy>(polygon: usize, ring: usize, vertices: &[(
         ));
     }
     Ok(chain)
+}
+
+/// The first `pieces` bulges of a chain (piece `k` from vertex `k` to the
+/// next, around) set to zero where their arc is straight to within the
+/// rounding of its centre (`straight_within_rounding`: a DXF bulge of
+/// 1e-17): those pieces are segments.
+fn straighten(chain: &mut [(Point, f64)], pieces: usize) {
+    for (_, bulge) in chain.iter_mut().take(pieces) {
+        if *bulge != 0.0 && straight_within_rounding(*bulge) {
+            *bulge = 0.0;
+        }
+    }
 }
 
 /// The points with repeated consecutive ones dropped, or the error for the

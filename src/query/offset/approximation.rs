@@ -23,17 +23,52 @@ const MAX_ARC_POINTS: usize = 1_000_000;
 /// each strays at most `tolerance` from it and spans at most a quarter
 /// turn, and there are at most [`MAX_ARC_POINTS`].
 fn arc_chords(turn: f64, radius: f64, tolerance: f64) -> usize {
-    // a chord over angle a strays r (1 − cos(a/2)) from the arc
-    let step = if tolerance >= radius { PI } else { 2.0 * (1.0 - tolerance / radius).acos() };
+    // a chord over angle a strays r (1 − cos(a/2)) = 2r sin²(a/4) from the
+    // arc; where the tolerance is tiny beside the radius (a nearly
+    // straight arc), 1 − t/r rounds to 1 and its arccosine to 0, so the
+    // sine form, which keeps it
+    let ratio = tolerance / radius;
+    let step = if tolerance >= radius {
+        PI
+    } else if ratio < 1e-8 {
+        4.0 * (0.5 * ratio).sqrt().asin()
+    } else {
+        2.0 * (1.0 - ratio).acos()
+    };
     // `as` turns a NaN (from non-finite input) into 0: one chord then
     ((turn / step.min(PI / 2.0)).ceil().clamp(1.0, MAX_ARC_POINTS as f64) as usize).max(1)
 }
 
+/// The area between an arc of `radius` turning `turn` and its chord,
+/// `r²/2 (θ − sin θ)`. For a small turn it is taken from the arc's length
+/// `L = rθ` as `L²θ/12 (1 − θ²/20 + θ⁴/840)` (the series, to 1e-17 below
+/// θ = 0.01): a nearly straight arc's radius can be past the square root
+/// of the largest double while the area is not, and `θ − sin θ` cancels.
+fn circular_segment_area(radius: f64, turn: f64) -> f64 {
+    if turn < 0.01 {
+        let (length, squared) = (radius * turn, turn * turn);
+        length * length * turn / 12.0 * (1.0 - squared / 20.0 + squared * squared / 840.0)
+    } else {
+        0.5 * radius * (radius * (turn - turn.sin()))
+    }
+}
+
 /// The angle swept from `from` to `to` around `centre` the given way
 /// round, in `(0, 2π]` (equal ends: a whole circle).
+///
+/// The angle is that between the two radii as unit vectors (the `atan2`
+/// of their cross and dot products), not the difference of their angles:
+/// an offset beside a nearly straight arc (radius 1e199 over a chord of
+/// 1e103) turns by 1e-96, which the difference of two angles near π/2
+/// rounds to zero, a whole circle.
 pub(super) fn sweep(centre: Point, from: Point, to: Point, counter_clockwise: bool) -> f64 {
-    let angle = |p: Point| (p.y - centre.y).atan2(p.x - centre.x);
-    let mut turn = angle(to) - angle(from);
+    let unit = |p: Point| {
+        let (dx, dy) = (p.x - centre.x, p.y - centre.y);
+        let length = dx.hypot(dy);
+        (dx / length, dy / length)
+    };
+    let ((ux, uy), (vx, vy)) = (unit(from), unit(to));
+    let mut turn = (ux * vy - uy * vx).atan2(ux * vx + uy * vy);
     if !counter_clockwise {
         turn = -turn;
     }
@@ -115,8 +150,7 @@ impl OffsetPiece {
         match *self {
             OffsetPiece::Line { .. } => triangle,
             OffsetPiece::Arc { centre, radius, from, to, counter_clockwise, .. } => {
-                let turn = sweep(centre, from, to, counter_clockwise);
-                let segment = radius * radius / 2.0 * (turn - turn.sin());
+                let segment = circular_segment_area(radius, sweep(centre, from, to, counter_clockwise));
                 triangle + if counter_clockwise { segment } else { -segment }
             }
         }
@@ -197,5 +231,44 @@ impl Offset {
             }
         }
         polygons
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{arc_chords, circular_segment_area, sweep};
+    use crate::Point;
+
+    /// A piece of a circle 1e199 across over a chord of 2e103 (an offset
+    /// beside a nearly straight arc) turns by 2e-96: not a whole circle,
+    /// as the difference of its ends' angles said; its segment's area is
+    /// finite (the radius squared is not); its polyline has the chords its
+    /// tolerance needs, not the million the arccosine of 1 asked for.
+    #[test]
+    fn a_nearly_straight_piece_turns_a_hair() {
+        let centre = Point::new(0.0, -1e199);
+        let (from, to) = (Point::new(-1e103, 0.0), Point::new(1e103, 0.0));
+        let turn = sweep(centre, from, to, false);
+        assert!((turn - 2e-96).abs() <= 1e-108, "{turn:e}");
+        assert!((sweep(centre, to, from, true) - turn).abs() <= 1e-108);
+        // the other way round is all but a whole turn
+        assert!((sweep(centre, from, to, true) - std::f64::consts::TAU).abs() <= 1e-12);
+        let area = circular_segment_area(1e199, turn);
+        let want = (1e199 * turn).powi(2) * turn / 12.0;
+        assert!(area.is_finite() && (area - want).abs() <= 1e-12 * want, "{area:e} against {want:e}");
+        // (5e6 from its chord: each chord within the tolerance, and no more
+        // of them than that needs)
+        let n = arc_chords(turn, 1e199, 1e-3);
+        let stray = |n: usize| 2e199 * (turn / n as f64 / 4.0).sin().powi(2);
+        assert!(stray(n) <= 1e-3 * (1.0 + 1e-9) && stray(n - 1) > 1e-3, "{n}");
+        // and the small-turn form agrees with the plain one where both hold
+        for turn in [0.009, 0.0099999, 0.01, 0.011] {
+            let plain = 0.5 * 3.0 * (3.0 * (turn - f64::sin(turn)));
+            assert!((circular_segment_area(3.0, turn) - plain).abs() <= 1e-9 * plain, "{turn}");
+        }
+        // a tolerance 1e-18 of the radius: as many chords as that needs
+        let n = arc_chords(1e-3, 1e12, 1e-6);
+        let stray = |n: usize| 2e12 * (1e-3 / n as f64 / 4.0).sin().powi(2);
+        assert!(stray(n) <= 1e-6 * (1.0 + 1e-9) && stray(n - 1) > 1e-6, "{n}");
     }
 }
