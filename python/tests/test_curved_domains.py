@@ -359,9 +359,15 @@ def test_a_non_finite_bulge_is_refused_naming_ring_and_vertex(bad):
 
 
 def test_a_bulge_that_makes_no_arc_is_refused_naming_ring_and_vertex():
+    # (a bulge of 1e300 makes a circle beyond the doubles)
     with pytest.raises(segvoronoi.InvalidArcError) as info:
-        segvoronoi.medial_axis(CurvedPolygon([[0, 0, 0], [1e10, 0, 0], [1e10, 1e10, 1e-300]]))
+        segvoronoi.medial_axis(CurvedPolygon([[0, 0, 0], [1e10, 0, 0], [1e10, 1e10, 1e300]]))
     assert info.value.indices == (0, 0, 2) and "vertex 2" in info.value.message
+    # a bulge of 1e-300 is straight to within the rounding of its centre:
+    # that side is a segment, and the triangle is the plain one
+    curved = segvoronoi.max_inscribed_circle(CurvedPolygon([[0, 0, 0], [1e10, 0, 0], [1e10, 1e10, 1e-300]]))
+    plain = segvoronoi.max_inscribed_circle(shapely.Polygon([[0, 0], [1e10, 0], [1e10, 1e10]]))
+    assert np.allclose(curved, plain, rtol=1e-12)
 
 
 def test_crossing_pieces_are_named_by_ring_and_vertex():
