@@ -84,6 +84,23 @@ pub(crate) fn ring_segments(rings: &[RingInput], segments: usize) -> Vec<bool> {
     ring
 }
 
+/// Per input segment (`segments` of them) and per input arc (`arcs`),
+/// whether a ring of `rings` made it: its plain segments and the pieces of
+/// a bulged ring alike (the splits' even-odd rule counts both).
+pub(crate) fn ring_inputs(rings: &[RingInput], segments: usize, arcs: usize) -> (Vec<bool>, Vec<bool>) {
+    let (mut segment, mut arc) = (vec![false; segments], vec![false; arcs]);
+    for ring in rings {
+        ring.segments.clone().for_each(|j| segment[j] = true);
+        for piece in ring.pieces.iter().flatten() {
+            match *piece {
+                ChainPiece::Segment(j) => segment[j] = true,
+                ChainPiece::Arc(k) => arc[k] = true,
+            }
+        }
+    }
+    (segment, arc)
+}
+
 /// An input error with the polygons and rings of the segments it names
 /// added to its message (a ring that crosses itself or another ring, or
 /// a ring segment that an obstacle overlaps).

@@ -18,7 +18,7 @@ use std::collections::HashMap;
 
 use super::arcs::ArcPiece;
 use super::Piece;
-use crate::construct::polygon_input::{ChainPiece, RingInput};
+use crate::construct::polygon_input::{ring_inputs, ChainPiece, RingInput};
 use crate::geometry::arcs::exact_join::compare_leaving;
 use crate::geometry::predicates::compare_directions;
 use crate::geometry::{Point, Site};
@@ -93,13 +93,13 @@ fn odd(origins: &[u32], in_ring: &[bool]) -> bool {
     origins.iter().filter(|&&i| in_ring[i as usize]).count() % 2 == 1
 }
 
-/// Whether a piece of nonzero length that is on no ring cancelled: every
-/// input it came from is a ring's (an even number of them), so it bounds
-/// nothing and is no obstacle either. It is dropped, as the strict build
-/// drops shared stretches (`construct::shared_stretches`); a piece that an
-/// obstacle also made stays, as that obstacle.
+/// Whether a piece of nonzero length cancelled: every input it came from
+/// is a ring's, an even number of them, so it bounds nothing and is no
+/// obstacle either. It is dropped, as the strict build drops shared
+/// stretches (`construct::shared_stretches`); a piece that an obstacle
+/// also made stays, as that obstacle.
 fn cancelled(origins: &[u32], in_ring: &[bool]) -> bool {
-    origins.iter().all(|&i| in_ring[i as usize])
+    !odd(origins, in_ring) && origins.iter().all(|&i| in_ring[i as usize])
 }
 
 /// How many ring copies cancelled among pieces with these `origins`: of
@@ -114,10 +114,7 @@ fn cancelled_copies<'a>(origins: impl Iterator<Item = &'a [u32]>, in_ring: &[boo
 /// cancelled, `cancelled`); the rings over them; and how many ring
 /// copies cancelled (`cancelled_copies`).
 pub(crate) fn split_rings(pieces: Vec<Piece>, rings: &[RingInput], input_segments: usize) -> (Vec<Piece>, Vec<RingInput>, usize) {
-    let mut ring_segment = vec![false; input_segments];
-    for j in rings.iter().flat_map(|r| r.segments.clone()) {
-        ring_segment[j] = true;
-    }
+    let (ring_segment, _) = ring_inputs(rings, input_segments, 0);
     let cancelled_pieces = cancelled_copies(pieces.iter().map(|p| &p.origins[..]), &ring_segment);
     let (boundary, mut rest): (Vec<Piece>, Vec<Piece>) =
         pieces.into_iter().partition(|p| p.ends[0] != p.ends[1] && odd(&p.origins, &ring_segment));
@@ -157,20 +154,11 @@ pub(crate) fn split_rings_with_arcs(
     input_segments: usize,
     input_arcs: usize,
 ) -> (Vec<Piece>, Vec<ArcPiece>, Vec<RingInput>, usize) {
-    let (mut ring_segment, mut ring_arc) = (vec![false; input_segments], vec![false; input_arcs]);
-    for ring in rings {
-        ring.segments.clone().for_each(|j| ring_segment[j] = true);
-        for piece in ring.pieces.iter().flatten() {
-            match *piece {
-                ChainPiece::Segment(j) => ring_segment[j] = true,
-                ChainPiece::Arc(k) => ring_arc[k] = true,
-            }
-        }
-    }
+    let (ring_segment, ring_arc) = ring_inputs(rings, input_segments, input_arcs);
     let cancelled_pieces = cancelled_copies(pieces.iter().map(|p| &p.origins[..]), &ring_segment)
         + cancelled_copies(arcs.iter().map(|a| &a.origins[..]), &ring_arc);
-    pieces.retain(|p| p.ends[0] == p.ends[1] || odd(&p.origins, &ring_segment) || !cancelled(&p.origins, &ring_segment));
-    arcs.retain(|a| odd(&a.origins, &ring_arc) || !cancelled(&a.origins, &ring_arc));
+    pieces.retain(|p| p.ends[0] == p.ends[1] || !cancelled(&p.origins, &ring_segment));
+    arcs.retain(|a| !cancelled(&a.origins, &ring_arc));
     // the boundary, as chain pieces and sites
     let mut boundary: Vec<(ChainPiece, Site)> = Vec::new();
     for (k, p) in pieces.iter().enumerate() {

@@ -172,12 +172,17 @@ pub(crate) fn leave_the_same_way(u: &Site, v: &Site, end: Point) -> Option<bool>
 /// of the other when both leave the same way, clockwise when they leave
 /// opposite ways). `None` out of range.
 pub(crate) fn turn_between(u: &Site, v: &Site, end: Point) -> Option<i8> {
-    let (tu, tv) = (leaving(u, end)?, leaving(v, end)?);
-    let sign = cross_sign(&tu, &tv)?;
+    turn_between_leaving(u, &leaving(u, end)?, v, &leaving(v, end)?, end)
+}
+
+/// [`turn_between`] with the pieces' exact leaving directions `tu` and
+/// `tv` known already.
+fn turn_between_leaving(u: &Site, tu: &Direction, v: &Site, tv: &Direction, end: Point) -> Option<i8> {
+    let sign = cross_sign(tu, tv)?;
     if sign != 0 {
         return Some(sign);
     }
-    let same_way = dot_sign(&tu, &tv)?;
+    let same_way = dot_sign(tu, tv)?;
     let bend = curvature_leaving(v, end) - curvature_leaving(u, end);
     let bend = if bend > 0.0 {
         1
@@ -191,9 +196,10 @@ pub(crate) fn turn_between(u: &Site, v: &Site, end: Point) -> Option<i8> {
 
 /// The order of the pieces `u` and `v` leaving their common endpoint `end`
 /// counter-clockwise from the direction of the positive x axis, as their
-/// directions a hair away from it see it: by the exact tangents (their
-/// half-plane first, then their turn), and where those coincide by the
-/// curvatures (the one curving more to the left comes later). A piece that
+/// directions a hair away from it see it: by the half-plane of their exact
+/// tangents, then by [`turn_between`] (the turn, and where the tangents
+/// coincide the curvatures: the one curving more to the left comes
+/// later). A piece that
 /// leaves along the x axis curving right belongs at the end of the turn
 /// rather than at its start; ordered first, it only rotates the cyclic
 /// order by one, which the callers (pairing pieces around a point) accept.
@@ -210,11 +216,12 @@ pub(crate) fn compare_leaving(u: &Site, v: &Site, end: Point) -> Option<std::cmp
         (true, false) => return Some(Ordering::Greater),
         _ => {}
     }
-    match cross_sign(&tu, &tv)? {
-        1 => Some(Ordering::Less),
-        -1 => Some(Ordering::Greater),
-        _ => curvature_leaving(u, end).partial_cmp(&curvature_leaving(v, end)),
-    }
+    // (in one half-plane, parallel tangents leave the same way)
+    Some(match turn_between_leaving(u, &tu, v, &tv, end)? {
+        1 => Ordering::Less,
+        -1 => Ordering::Greater,
+        _ => Ordering::Equal,
+    })
 }
 
 /// Whether a vertex of both endpoints of `arc` and of `third` lies beyond
