@@ -27,11 +27,18 @@ use segvoronoi::{Builder, CircularArc, Diagram, ErrorKind, Location, Point, Site
 /// The split diagram of the polygon of `rings`, and of its 256-chord
 /// version split the same way.
 fn split_and_reference(rings: &[Ring]) -> Result<(Diagram, Diagram), segvoronoi::Error> {
+    split_and_reference_with_points(rings, &[])
+}
+
+/// [`split_and_reference`] with isolated `points` added to both.
+fn split_and_reference_with_points(rings: &[Ring], points: &[Point]) -> Result<(Diagram, Diagram), segvoronoi::Error> {
     let mut b = Builder::new();
     b.add_bulged_polygon(rings).unwrap();
+    b.add_points(points.iter().copied()).unwrap();
     let d = b.split_crossings(true).build()?;
     let mut r = Builder::new();
     r.add_polygon(&chords(rings)).unwrap();
+    r.add_points(points.iter().copied()).unwrap();
     let reference = r.split_crossings(true).build().unwrap_or_else(|e| panic!("the chords: {e}"));
     Ok((d, reference))
 }
@@ -304,6 +311,41 @@ fn rings_touching_at_points() {
         10.0,
         &["plain", "reversed", "mirrored", "scaled down", "scaled up", "far out"],
     );
+}
+
+/// Points exactly on the rings: on a straight side, on an arc (a
+/// Pythagorean point of a circle, exactly on it), on the top side where a
+/// crossing is near; each cuts its piece, and the domain and offsets are
+/// the chords' with the same points: as drawn (the medial axis too),
+/// mirrored and scaled by 2^20 (moved far out, the point on the arc would
+/// round off it).
+#[test]
+fn points_exactly_on_curved_rings() {
+    let p = Point::new;
+    let rings = [rounded_ring(0.0, 0.0, 8.0, 5.0, 1.0, false), circle_ring(8.0, 2.0, 2.5)];
+    let points = [p(4.0, 0.0), p(9.5, 4.0), p(6.0, 5.0)];
+    let (d, reference) = split_and_reference_with_points(&rings, &points).unwrap();
+    assert!(d.stats().touchings >= 3, "{:?}", d.stats());
+    check_locations("points on the rings", &d, &rings, 12.0);
+    let joins: Vec<Point> = tangent_joins(&rings).into_iter().filter(|&j| still_tangent(&d, j)).collect();
+    check_domain_offsets_of("points on the rings", (&d, &reference), &rings, &[-0.2, -0.6, 0.3], 12.0);
+    check_medial_axis_of("points on the rings", (&d, &reference), &joins, 12.0);
+    // mirrored and scaled by 2^20: the points stay exactly on their pieces
+    let big = 2f64.powi(20);
+    let map = |f: &dyn Fn(Point) -> Point, flip: bool| -> Vec<Ring> {
+        rings.iter().map(|r| r.iter().map(|&(q, b)| (f(q), if flip { -b } else { b })).collect()).collect()
+    };
+    for (name, f, flip, size) in [
+        ("mirrored", &(|q: Point| p(-q.x, q.y)) as &dyn Fn(Point) -> Point, true, 12.0),
+        ("scaled up", &(|q: Point| p(q.x * big, q.y * big)) as &dyn Fn(Point) -> Point, false, 12.0 * big),
+    ] {
+        let (rings, points) = (map(f, flip), points.map(f));
+        let (d, reference) = split_and_reference_with_points(&rings, &points).unwrap();
+        assert!(d.stats().touchings >= 3, "{name}: {:?}", d.stats());
+        check_locations(name, &d, &rings, size);
+        let distances: Vec<f64> = [-0.2, -0.6, 0.3].iter().map(|r| r * size / 12.0).collect();
+        check_domain_offsets_of(name, (&d, &reference), &rings, &distances, size);
+    }
 }
 
 /// A random ring: a circle, a rounded rectangle, a slot or a filleted
