@@ -544,7 +544,19 @@ fn solve(equations: &[Equation; 3], reach: Reach) -> [Option<(Point, f64)>; 2] {
     let at = |l: f64| (Point::new(p[0] + l * d[0], p[1] + l * d[1]), p[2] + l * d[2]);
     let mut roots = [None; 2];
     if qa.abs() <= 1e-14 {
-        if qb != 0.0 {
+        // Near, a slope within the rounding of the terms it is made of is
+        // no slope: its root, 1/rounding away, is noise. (A line out of a
+        // tangent join whose third circle is flattened by a hair: the
+        // exact equations have no root, rounding gave one 1e15 away,
+        // below the line, that fit every distance to rounding.)
+        let terms = 2.0 * (p[0] * d[0]).abs()
+            + 2.0 * (p[1] * d[1]).abs()
+            + 2.0 * (p[2] * d[2]).abs()
+            + (base[0] * d[0]).abs()
+            + (base[1] * d[1]).abs()
+            + (base[2] * d[2]).abs();
+        let noise = if reach == Reach::Near { 1e-12 * terms } else { 0.0 };
+        if qb.abs() > noise {
             roots[0] = Some(at(-qc / qb));
             // the other root, far out along the line (the roots sum to
             // −qb/qa): sought only far
