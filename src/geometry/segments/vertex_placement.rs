@@ -32,7 +32,9 @@ pub(crate) fn circle_of_points(a: Point, b: Point, c: Point) -> (Point, f64) {
 pub(crate) fn circle_of_sites_on(sites: &[Site; 3], on: Option<[Point; 2]>) -> (Point, f64) {
     if sites.iter().any(|s| matches!(s, Site::Arc(_))) {
         // arcs: their own solver, in floating point (`arcs::arc_vertex`)
-        return crate::geometry::arcs::arc_vertex::arc_vertex_on(sites, on).unwrap_or_else(|| among_sites(sites));
+        return crate::geometry::arcs::arc_vertex::arc_vertex_on(sites, on)
+            .or_else(|| on.and_then(|on| along_the_edge(sites, on)))
+            .unwrap_or_else(|| among_sites(sites));
     }
     // No circle in `f64`: one beyond its range, or (only when the
     // predicates were made to lie) none; then keep the topology, place the
@@ -154,6 +156,47 @@ const ILL_CONDITIONED: f64 = 1000.0;
 /// The fallback position of a vertex no solver can place: the centroid of
 /// the points standing for its sites ([`Site::midpoint`]), the radius its
 /// distance from the first site.
+/// Where the arcs' solver finds no circle for a vertex cut into an edge
+/// (`on`: its end that goes, then the one kept): the point of that edge
+/// where the new site (the third) is as near as the edge's own two, by
+/// bisection along the edge; `None` where the edge's ends are not on
+/// either side of that point. The topology has decided that the vertex
+/// is there; this keeps it on its edge, within rounding of its sites,
+/// where the equations are too degenerate for the solver (an arc's end
+/// a hair from the centre of another arc's circle: the separators of the
+/// two meet at a tangent, a double root the solver places only to the
+/// square root of the rounding, or misses).
+fn along_the_edge(sites: &[Site; 3], [going, kept]: [Point; 2]) -> Option<(Point, f64)> {
+    if !(going.is_finite() && kept.is_finite()) || going == kept {
+        return None;
+    }
+    // the vertex's sites are the edge's right and left ones, then the new
+    // site (`Construction::replace_tree`)
+    let [right, left, new] = sites;
+    let at = |t: f64| crate::geometry::curves::bisector::bisector_point_on_edge(left, right, going, kept, t);
+    let gap = |q: Point| new.distance(q) - 0.5 * (left.distance(q) + right.distance(q));
+    if !(gap(at(0.0)) <= 0.0 && gap(at(1.0)) > 0.0) {
+        return None;
+    }
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    for _ in 0..64 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if gap(at(mid)) <= 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let q = at(0.5 * (lo + hi));
+    let distances = sites.map(|s| s.distance(q));
+    let radius = (distances[0] + distances[1] + distances[2]) / 3.0;
+    let spread = distances.iter().map(|d| (d - radius).abs()).fold(0.0f64, f64::max);
+    (q.is_finite() && spread <= 1e-9 * (radius + going.distance(kept))).then_some((q, radius))
+}
+
 fn among_sites(sites: &[Site; 3]) -> (Point, f64) {
     let r = sites.map(|s| s.midpoint());
     let g = Point::new((r[0].x + r[1].x + r[2].x) / 3.0, (r[0].y + r[1].y + r[2].y) / 3.0);
