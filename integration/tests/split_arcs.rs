@@ -340,3 +340,51 @@ fn a_point_on_a_segment_and_a_straight_vertex_far_from_the_origin() {
         assert!(c >= 3 && t >= 1, "{name}: crossings {c}, touchings {t}");
     }
 }
+
+/// The area of the intersection of two discs of radii `r1` and `r2`
+/// whose centres are `d` apart.
+fn lens_area(r1: f64, r2: f64, d: f64) -> f64 {
+    if d >= r1 + r2 {
+        return 0.0;
+    }
+    if d <= (r1 - r2).abs() {
+        return std::f64::consts::PI * r1.min(r2).powi(2);
+    }
+    let kite = ((-d + r1 + r2) * (d + r1 - r2) * (d - r1 + r2) * (d + r1 + r2)).sqrt();
+    r1 * r1 * ((d * d + r1 * r1 - r2 * r2) / (2.0 * d * r1)).acos()
+        + r2 * r2 * ((d * d + r2 * r2 - r1 * r1) / (2.0 * d * r2)).acos()
+        - 0.5 * kite
+}
+
+/// LibreCAD's t7: two circles of radius 5, centres 5 apart, each given as
+/// two half circles, split where they cross. A piece the split cuts from
+/// a half circle is a hair flatter than its circle, so at its far end it
+/// meets the next half circle with their circles 4.6e-12 apart; the
+/// arcs' solver took a root of those two (near) equations 5e12 away, and
+/// the offsets were refused or went wrong. The offsets at `t` are exact:
+/// the union of two annuli, by inclusion and exclusion of lens areas.
+#[test]
+fn two_circles_of_half_circles_crossing() {
+    let p = Point::new;
+    let mut pieces = Vec::new();
+    for cy in [2.5, -2.5] {
+        pieces.push(Piece::Arc(CircularArc::from_bulge(p(5.0, cy), p(-5.0, cy), 1.0).unwrap()));
+        pieces.push(Piece::Arc(CircularArc::from_bulge(p(-5.0, cy), p(5.0, cy), 1.0).unwrap()));
+    }
+    for (way, input, scale) in variants(&pieces, 7) {
+        let d = split_build(&input).unwrap_or_else(|e| panic!("{way}: {e}"));
+        d.validate().unwrap_or_else(|e| panic!("{way}: invalid: {e:?}"));
+        for v in d.vertices() {
+            assert!(v.clearance < 10.0 * scale, "{way}: vertex {:?} at {:?}, clearance {:e}", v.id, v.position, v.clearance);
+        }
+        for t in [0.5, 1.0, 2.0] {
+            let (outer, inner) = (5.0 + t, 5.0 - t);
+            let annulus = std::f64::consts::PI * (outer * outer - inner * inner);
+            let both = lens_area(outer, outer, 5.0) - 2.0 * lens_area(inner, outer, 5.0) + lens_area(inner, inner, 5.0);
+            let want = (2.0 * annulus - both) * scale * scale;
+            let o = d.offset(t * scale).unwrap_or_else(|e| panic!("{way}, offset {t}: {e}"));
+            let area = o.area();
+            assert!((area - want).abs() <= 1e-9 * want, "{way}, offset {t}: area {area} against {want}");
+        }
+    }
+}

@@ -592,7 +592,7 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
         return None;
     }
     let slack = 1e-9 * (scale + radius.abs());
-    if radius < -slack {
+    if radius < -slack || arcs_of_one_circle_touched_alike(sites, touch, 1e-9 * scale) {
         return None;
     }
     // whether each arc spans the centre: asked once (for arcs, most of
@@ -626,12 +626,19 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
                 }
                 // touched inside the span (or within rounding of an end):
                 // a circle tangent to the arc's circle elsewhere is not a
-                // vertex of the arc, even where it passes through an end
+                // vertex of the arc, even where it passes through an end.
+                // The touching point moves with the centre's rounding
+                // (`slack`) shrunk by the radius over the distance: a
+                // vertex far out touches an arc within a millionth of its
+                // radius of where its direction says (it was let touch an
+                // arc 60 long 3.6 degrees past its end when 1e14 away,
+                // a thousand slacks being 1.5e8: LibreCAD's door d2)
                 if !spans[k] {
                     let c = arc.centre();
                     let k = arc.radius() / d;
                     let q = Point::new(c.x + k * (centre.x - c.x), c.y + k * (centre.y - c.y));
-                    if q.distance(arc.start()).min(q.distance(arc.end())) > 1e3 * slack {
+                    let moves = 1e3 * slack * k.min(1.0);
+                    if q.distance(arc.start()).min(q.distance(arc.end())) > moves {
                         return None;
                     }
                 }
@@ -690,6 +697,27 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
     let unbacked = (0..3).filter(|&k| matches!(touch[k], Touching::AtEnd(e) if !is_a_point_site(sites, e))).count();
     let fitting = residual <= 1e-6 * (scale + radius.abs());
     Some(if fitting { unbacked as f64 + residual / (scale + radius.abs()) } else { 10.0 + residual })
+}
+
+/// Whether two arcs whose circles are one to `near` (centres and radii)
+/// are touched inside from the same side: their two equations are then
+/// one to that, and the solvers' roots are noise. Arcs of one circle that
+/// do not overlap share no direction from its centre but at a common end,
+/// where their vertices are the end's pattern (`Touching::AtEnd`, the
+/// circle through the end on the separator there) or the centre's
+/// (`centre_of_an_arc_touching_all`). Taken, such a root was a vertex
+/// 5e12 away at the join of two arcs of one circle, one of them a piece
+/// the split flattened, 4.6e-12 off its neighbour's circle (LibreCAD's
+/// t7).
+fn arcs_of_one_circle_touched_alike(sites: &[Site; 3], touch: [Touching; 3], near: f64) -> bool {
+    (0..3).any(|j| {
+        (j + 1..3).any(|k| match (&sites[j], &sites[k], touch[j], touch[k]) {
+            (Site::Arc(x), Site::Arc(y), Touching::Inside(s), Touching::Inside(t)) => {
+                s == t && x.centre().distance(y.centre()) <= near && (x.radius() - y.radius()).abs() <= near
+            }
+            _ => false,
+        })
+    })
 }
 
 /// `p.distance(q) <= near`, the same answer, without the square root (or
