@@ -86,7 +86,7 @@ impl CircularArc {
     /// The arc from `start` through `via` to `end`.
     ///
     /// Errors ([`ErrorKind::InvalidArc`]): a non-finite coordinate, two of
-    /// the three points equal or all three on one line, a circle too
+    /// the three points equal or all three on one line, or a circle too
     /// large or small for `f64`.
     pub fn through(start: impl Into<Point>, via: impl Into<Point>, end: impl Into<Point>) -> Result<CircularArc, Error> {
         let (start, via, end) = (start.into(), via.into(), end.into());
@@ -119,7 +119,6 @@ impl CircularArc {
         if !centre.is_finite() || !radius.is_finite() || radius <= 0.0 {
             return Err(invalid(format!("{}: its circle is out of the range of f64", name())));
         }
-
         Ok(CircularArc { start, end, datum, centre, radius, counter_clockwise, minor })
     }
 
@@ -428,6 +427,24 @@ impl CircularArc {
             -inside
         }
     }
+
+    /// Whether the arc is straight to within the rounding of its centre: a
+    /// minor arc whose radius is over 2^40 times its chord (a bulge below
+    /// about 2^-42), which [`Builder::add_arc`] refuses; its centre lies so
+    /// far away that the distances taken from it are wrong by more than
+    /// the arc's bend. Add its chord as a segment instead.
+    ///
+    /// ```
+    /// use segvoronoi::CircularArc;
+    /// assert!(!CircularArc::from_bulge([0.0, 0.0], [10.0, 0.0], 1e-9)?.is_straight_within_rounding());
+    /// assert!(CircularArc::from_bulge([0.0, 0.0], [10.0, 0.0], 1e-17)?.is_straight_within_rounding());
+    /// # Ok::<(), segvoronoi::Error>(())
+    /// ```
+    ///
+    /// [`Builder::add_arc`]: crate::Builder::add_arc
+    pub fn is_straight_within_rounding(&self) -> bool {
+        self.minor && self.radius > FLATTEST * self.start.distance(self.end)
+    }
 }
 
 /// The points multiplied by the power of two that brings their largest
@@ -485,6 +502,25 @@ fn circumcentre(a: Point, b: Point, c: Point) -> Point {
     let d = 2.0 * (bx * cy - by * cx);
     let (b2, c2) = (bx * bx + by * by, cx * cx + cy * cy);
     Point::new(a.x + (cy * b2 - by * c2) / d / unit, a.y + (bx * c2 - cx * b2) / d / unit)
+}
+
+/// The largest radius a minor arc may have as a builder's input, as a
+/// multiple of its chord: 2^40 (a bulge of about 2^-42). A flatter arc is
+/// straight to within the rounding of its centre, which lies that far
+/// away: a bulge of 1e-17 over a chord of 10 puts it 2.5e17 away, rounded
+/// by 32, and the distances taken from it are wrong by as much (its
+/// offsets were refused, or, far from the origin, answered as a circle).
+/// The builder refuses such an arc (`Builder::add_arc`), and a bulged
+/// polyline or polygon takes that piece as a segment. The pieces that
+/// splitting cuts are not held to it: a piece a pixel long of a circle is
+/// as precise as that circle.
+const FLATTEST: f64 = 1_099_511_627_776.0;
+
+/// Whether the arc of `bulge` (finite, nonzero) over any chord is straight
+/// to within the rounding of its centre (see [`FLATTEST`]): its radius,
+/// chord (1 + β²) / (4 |β|), over 2^40 chords.
+pub(crate) fn straight_within_rounding(bulge: f64) -> bool {
+    bulge.abs() < 1.0 && 1.0 + bulge * bulge > 4.0 * FLATTEST * bulge.abs()
 }
 
 #[cfg(test)]
@@ -570,43 +606,4 @@ mod tests {
         let nearly_full = CircularArc::from_bulge([0.0, 0.0], [1e-3, 0.0], 1e6).unwrap();
         assert!(nearly_full.sweep() > 6.28);
     }
-}
-
-/// The largest radius a minor arc may have as a builder's input, as a
-/// multiple of its chord: 2^40 (a bulge of about 2^-42). A flatter arc is
-/// straight to within the rounding of its centre, which lies that far
-/// away: a bulge of 1e-17 over a chord of 10 puts it 2.5e17 away, rounded
-/// by 32, and the distances taken from it are wrong by as much (its
-/// offsets were refused, or, far from the origin, answered as a circle).
-/// The builder refuses such an arc (`Builder::add_arc`), and a bulged
-/// polyline or polygon takes that piece as a segment. The pieces that
-/// splitting cuts are not held to it: a piece a pixel long of a circle is
-/// as precise as that circle.
-const FLATTEST: f64 = 1_099_511_627_776.0;
-
-impl CircularArc {
-    /// Whether the arc is straight to within the rounding of its centre: a
-    /// minor arc whose radius is over 2^40 times its chord (a bulge below
-    /// about 2^-42), which [`Builder::add_arc`] refuses; its centre lies so
-    /// far away that the distances taken from it are wrong by more than
-    /// the arc's bend. Add its chord as a segment instead.
-    ///
-    /// ```
-    /// use segvoronoi::CircularArc;
-    /// assert!(!CircularArc::from_bulge([0.0, 0.0], [10.0, 0.0], 1e-9)?.is_straight_within_rounding());
-    /// assert!(CircularArc::from_bulge([0.0, 0.0], [10.0, 0.0], 1e-17)?.is_straight_within_rounding());
-    /// # Ok::<(), segvoronoi::Error>(())
-    /// ```
-    ///
-    /// [`Builder::add_arc`]: crate::Builder::add_arc
-    pub fn is_straight_within_rounding(&self) -> bool {
-        self.minor && self.radius > FLATTEST * self.start.distance(self.end)
-    }
-}
-
-/// Whether the arc of `bulge` (finite, nonzero) over any chord is straight
-/// to within the rounding of its centre (see [`FLATTEST`]): its radius,
-/// chord (1 + β²) / (4 |β|), over 2^40 chords.
-pub(crate) fn straight_within_rounding(bulge: f64) -> bool {
-    bulge.abs() < 1.0 && 1.0 + bulge * bulge > 4.0 * FLATTEST * bulge.abs()
 }

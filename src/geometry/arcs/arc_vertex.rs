@@ -206,7 +206,7 @@ fn best_candidate(
         for &t1 in options[1].iter().flatten() {
             for &t2 in options[2].iter().flatten() {
                 let touch = [t0, t1, t2];
-                let Some(equations) = equations_of(local, touch) else { continue };
+                let Some(equations) = equations_of(local, touch, scale) else { continue };
                 for (centre, radius) in solve(&equations, reach).into_iter().flatten() {
                     let Some(score) = fit(local, touch, centre, radius, scale, reach) else { continue };
                     if on.is_some() && at_a_common_end(local, centre, radius, scale) {
@@ -346,7 +346,7 @@ fn at_an_end_point(
         }
         let mut again = touch;
         again[k] = Touching::AtEnd(end);
-        let equations = equations_of(local, again)?;
+        let equations = equations_of(local, again, scale)?;
         solve(&equations, reach).into_iter().flatten().filter(|&(c, _)| c.distance(centre) <= near).find_map(|(c, r)| {
             let score = fit(local, again, c, r, scale, reach)?;
             (score < 1.0).then_some((score, c, r))
@@ -415,8 +415,13 @@ fn touchings(site: &Site) -> [Option<Touching>; 4] {
 /// touched at one point (an endpoint they share, or a point site and a
 /// piece ending there), the second's equation would repeat the first's;
 /// the vertex then lies on the piece's separator there (its normal line),
-/// which takes its place.
-fn equations_of(sites: &[Site; 3], touch: [Touching; 3]) -> Option<[Equation; 3]> {
+/// which takes its place. `None` where the pattern has no vertex of its
+/// own: an end touched with nothing else there, or two arcs of one circle
+/// (to 1e-9 of `scale`) touched alike (`arcs_of_one_circle_touched_alike`).
+fn equations_of(sites: &[Site; 3], touch: [Touching; 3], scale: f64) -> Option<[Equation; 3]> {
+    if arcs_of_one_circle_touched_alike(sites, touch, 1e-9 * scale) {
+        return None;
+    }
     let point_of = |k: usize| match touch[k] {
         Touching::Itself => sites[k].as_point(),
         Touching::AtEnd(e) => Some(e),
@@ -450,6 +455,28 @@ fn equations_of(sites: &[Site; 3], touch: [Touching; 3]) -> Option<[Equation; 3]
         };
     }
     Some(equations)
+}
+
+/// Whether two arcs whose circles are one to `near` (centres and radii)
+/// are touched inside from the same side: their two equations are then
+/// one to that, and the solvers' roots are noise (the pattern is not
+/// solved at all). Arcs of one circle that
+/// do not overlap share no direction from its centre but at a common end,
+/// where their vertices are the end's pattern (`Touching::AtEnd`, the
+/// circle through the end on the separator there) or the centre's
+/// (`centre_of_an_arc_touching_all`). Taken, such a root was a vertex
+/// 5e12 away at the join of two arcs of one circle, one of them a piece
+/// the split flattened, 4.6e-12 off its neighbour's circle (LibreCAD's
+/// t7).
+fn arcs_of_one_circle_touched_alike(sites: &[Site; 3], touch: [Touching; 3], near: f64) -> bool {
+    (0..3).any(|j| {
+        (j + 1..3).any(|k| match (&sites[j], &sites[k], touch[j], touch[k]) {
+            (Site::Arc(x), Site::Arc(y), Touching::Inside(s), Touching::Inside(t)) => {
+                s == t && x.centre().distance(y.centre()) <= near && (x.radius() - y.radius()).abs() <= near
+            }
+            _ => false,
+        })
+    })
 }
 
 /// For a piece ending at `e`: the unit direction along it there, which is
@@ -592,7 +619,7 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
         return None;
     }
     let slack = 1e-9 * (scale + radius.abs());
-    if radius < -slack || arcs_of_one_circle_touched_alike(sites, touch, 1e-9 * scale) {
+    if radius < -slack {
         return None;
     }
     // whether each arc spans the centre: asked once (for arcs, most of
@@ -697,27 +724,6 @@ fn fit(sites: &[Site; 3], touch: [Touching; 3], centre: Point, radius: f64, scal
     let unbacked = (0..3).filter(|&k| matches!(touch[k], Touching::AtEnd(e) if !is_a_point_site(sites, e))).count();
     let fitting = residual <= 1e-6 * (scale + radius.abs());
     Some(if fitting { unbacked as f64 + residual / (scale + radius.abs()) } else { 10.0 + residual })
-}
-
-/// Whether two arcs whose circles are one to `near` (centres and radii)
-/// are touched inside from the same side: their two equations are then
-/// one to that, and the solvers' roots are noise. Arcs of one circle that
-/// do not overlap share no direction from its centre but at a common end,
-/// where their vertices are the end's pattern (`Touching::AtEnd`, the
-/// circle through the end on the separator there) or the centre's
-/// (`centre_of_an_arc_touching_all`). Taken, such a root was a vertex
-/// 5e12 away at the join of two arcs of one circle, one of them a piece
-/// the split flattened, 4.6e-12 off its neighbour's circle (LibreCAD's
-/// t7).
-fn arcs_of_one_circle_touched_alike(sites: &[Site; 3], touch: [Touching; 3], near: f64) -> bool {
-    (0..3).any(|j| {
-        (j + 1..3).any(|k| match (&sites[j], &sites[k], touch[j], touch[k]) {
-            (Site::Arc(x), Site::Arc(y), Touching::Inside(s), Touching::Inside(t)) => {
-                s == t && x.centre().distance(y.centre()) <= near && (x.radius() - y.radius()).abs() <= near
-            }
-            _ => false,
-        })
-    })
 }
 
 /// `p.distance(q) <= near`, the same answer, without the square root (or

@@ -153,9 +153,6 @@ impl Memo {
 /// residuals alone do not show it.
 const ILL_CONDITIONED: f64 = 1000.0;
 
-/// The fallback position of a vertex no solver can place: the centroid of
-/// the points standing for its sites ([`Site::midpoint`]), the radius its
-/// distance from the first site.
 /// Where the arcs' solver finds no circle for a vertex cut into an edge
 /// (`on`: its end that goes, then the one kept): the point of that edge
 /// where the new site (the third) is as near as the edge's own two, by
@@ -197,6 +194,9 @@ fn along_the_edge(sites: &[Site; 3], [going, kept]: [Point; 2]) -> Option<(Point
     (q.is_finite() && spread <= 1e-9 * (radius + going.distance(kept))).then_some((q, radius))
 }
 
+/// The fallback position of a vertex no solver can place: the centroid of
+/// the points standing for its sites ([`Site::midpoint`]), the radius its
+/// distance from the first site.
 fn among_sites(sites: &[Site; 3]) -> (Point, f64) {
     let r = sites.map(|s| s.midpoint());
     let g = Point::new((r[0].x + r[1].x + r[2].x) / 3.0, (r[0].y + r[1].y + r[2].y) / 3.0);

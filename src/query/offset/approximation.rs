@@ -24,17 +24,10 @@ const MAX_ARC_POINTS: usize = 1_000_000;
 /// turn, and there are at most [`MAX_ARC_POINTS`].
 fn arc_chords(turn: f64, radius: f64, tolerance: f64) -> usize {
     // a chord over angle a strays r (1 − cos(a/2)) = 2r sin²(a/4) from the
-    // arc; where the tolerance is tiny beside the radius (a nearly
-    // straight arc), 1 − t/r rounds to 1 and its arccosine to 0, so the
-    // sine form, which keeps it
-    let ratio = tolerance / radius;
-    let step = if tolerance >= radius {
-        PI
-    } else if ratio < 1e-8 {
-        4.0 * (0.5 * ratio).sqrt().asin()
-    } else {
-        2.0 * (1.0 - ratio).acos()
-    };
+    // arc; the sine form, because where the tolerance is tiny beside the
+    // radius (a nearly straight arc) 1 − t/r rounds to 1 and its
+    // arccosine to 0
+    let step = if tolerance >= radius { PI } else { 4.0 * (0.5 * tolerance / radius).sqrt().asin() };
     // `as` turns a NaN (from non-finite input) into 0: one chord then
     ((turn / step.min(PI / 2.0)).ceil().clamp(1.0, MAX_ARC_POINTS as f64) as usize).max(1)
 }
