@@ -945,6 +945,27 @@ fn minimised_regressions() {
             ],
             40.0,
         ),
+        // LibreCAD's Lamp.dxf minimised: arcs of radius 2.5 round (0, 22.5)
+        // and (0, 17.5) touching at (0, 20), their rounded circles 2.6e-15
+        // apart; a third through both the lower one's centre and its end,
+        // a segment's end 2.5 below that centre. The vertex of the lower
+        // arc's two ends and the upper arc lies a rounding beyond the
+        // centre, so the lower arc takes it; the rounded answer (at the
+        // centre: a tie) left the upper arc's cell reaching the centre and
+        // the lower arc's cell a point there, and the third arc then found
+        // a vertex 2.5 from its own, another site nearer. Now decided
+        // exactly (`exact_join::beyond_centre_touching`: the distance
+        // between the circles against the sum of their radii).
+        (
+            "arcs touching at a point of both, a third through a centre",
+            vec![
+                arc(p(0.0, 25.0), p(2.165063509461096, 21.25), 1.7320508075688767),
+                arc(p(2.165063509461097, 18.75), p(-1.2499999999999996, 19.665063509461095), 0.41421356237309503),
+                arc(p(-2.5, 20.0), p(2.165063509461097, 18.75), 0.7673269879789604),
+                Piece::Segment(p(0.0, 15.0), p(0.0, 0.0)),
+            ],
+            50.0,
+        ),
     ];
     for (k, (name, pieces, size)) in cases.into_iter().enumerate() {
         check_all_ways(name, &pieces, size, k as u64);

@@ -291,6 +291,13 @@ fn past_kept_end(local: &[Site; 3], on: Option<[Point; 2]>, centre: Point) -> Op
     let (u, k, c) = (from(going), from(kept), from(centre));
     let cross = |a: (f64, f64), b: (f64, f64)| a.0 * b.1 - a.1 * b.0;
     let dot = |a: (f64, f64), b: (f64, f64)| a.0 * b.0 + a.1 * b.1;
+    if dot(u, k) < 0.0 && cross(u, k).abs() <= 1e-9 * dot(u, k).abs() {
+        // the ends half a turn apart round the point: the edge is a line
+        // through it (the separator of a piece's free end and the piece),
+        // and past its kept end means further along that line
+        let along = (c.0 - k.0, c.1 - k.1);
+        return Some(dot(along, (k.0 - u.0, k.1 - u.1)) > 0.0);
+    }
     // the half turn a direction lies in, counter-clockwise from `u`
     let half = |v: (f64, f64)| u8::from(!(cross(u, v) > 0.0 || (cross(u, v) == 0.0 && dot(u, v) > 0.0)));
     Some(match half(c).cmp(&half(k)) {

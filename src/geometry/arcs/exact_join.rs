@@ -230,8 +230,10 @@ pub(crate) fn compare_leaving(u: &Site, v: &Site, end: Point) -> Option<std::cmp
 /// sharing one of the arc's endpoints (the vertex is where its normal at
 /// that endpoint meets the bisector of the arc's endpoints, the arc's
 /// centre where the arc's own normal does), and a point (the circle
-/// through the two endpoints and it, against the arc's circle). `None`
-/// for any other site or out of range.
+/// through the two endpoints and it, against the arc's circle); a segment
+/// or an arc apart from the arc's ends, touching the arc's circle near a
+/// point clear of its own ends (`beyond_centre_touching`). `None` for any
+/// other site or out of range.
 pub(crate) fn beyond_centre(arc: &CircularArc, third: &Site) -> Option<i8> {
     let (s, e) = (arc.start(), arc.end());
     // positive for a counter-clockwise arc (its middle right of s → e)
@@ -244,7 +246,7 @@ pub(crate) fn beyond_centre(arc: &CircularArc, third: &Site) -> Option<i8> {
             } else if third.has_endpoint(e) {
                 e
             } else {
-                return None;
+                return beyond_centre_touching(arc, third, ccw);
             };
             let other = if shared == s { e } else { s };
             let d = Direction::between(shared, other)?;
@@ -410,6 +412,135 @@ pub(crate) fn leaves_into_circle_touching(
         Some(along.add(&across.mul(&s).mul(&lift(2.0))).signum() as i8)
     })
     .flatten()
+}
+
+/// [`beyond_centre`] for a segment or an arc `third` apart from the arc's
+/// ends that comes within a rounding of the arc's circle: as for a point
+/// (`beyond_centre_point`), at the point `q` where it comes nearest the
+/// arc's centre. The vertex's circle passes through the arc's ends and
+/// touches `third` near `q`; it reaches beyond the arc's circle on the side
+/// of the arc's middle exactly when `third` stays outside the arc's circle
+/// there (`stays_outside_circle`). (Two arcs touching at a point of both,
+/// their circles a rounding apart: the floating-point vertex sits at the
+/// centre, and the rounding decided which arc's cell kept it.)
+///
+/// `None` where the nearest point is near the arc's ends, or where
+/// `stays_outside_circle` has no answer.
+fn beyond_centre_touching(arc: &CircularArc, third: &Site, ccw: i8) -> Option<i8> {
+    let (q, outside) = stays_outside_circle(arc, third)?;
+    let (s, e) = (arc.start(), arc.end());
+    if s.distance(q).min(e.distance(q)) < CLEAR * arc.radius() {
+        return None;
+    }
+    let side = exact_orientation(s, e, q).sign();
+    if side == 0 {
+        return None;
+    }
+    let middle_side = side == -ccw;
+    Some(match outside {
+        0 => 0,
+        o if (o > 0) == middle_side => 1,
+        _ => -1,
+    })
+}
+
+/// Whether the segment or arc `other`, which comes within a rounding of
+/// the circle of `arc`, stays outside that circle (1), touches it (0) or
+/// enters it (-1) where it comes nearest the circle's centre, exactly,
+/// with that nearest point (in floating point). A comparison of exact
+/// numbers of the input: the distance from the centre to the segment's
+/// line, or to the other arc's circle (`|d − ρ|` for centres `d` apart and
+/// the other radius `ρ`), against the radius, all from the arcs' ends and
+/// bulges (`exact_circle`).
+///
+/// `None` where the nearest point is near an end of `other` (the end is a
+/// point site of its own, nearer there), where `other` does not come near
+/// the circle, for an arc given by three points, or out of range.
+fn stays_outside_circle(arc: &CircularArc, other: &Site) -> Option<(Point, i8)> {
+    let (c, r) = (arc.centre(), arc.radius());
+    let (x, y, k, rk2) = exact_circle(arc)?;
+    let (q, outside) = match *other {
+        Site::Segment { a, b } => {
+            let t = crate::geometry::site::segment_parameter(a, b, c);
+            if !(CLEAR..=1.0 - CLEAR).contains(&t) {
+                return None;
+            }
+            let q = Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
+            // the distance to the line times |b − a| times k: (b − a) × (kC − ka)
+            let (ux, uy) = (Expansion::difference(b.x, a.x), Expansion::difference(b.y, a.y));
+            let xa = x.minus(&k.times(&Expansion::of(a.x)));
+            let ya = y.minus(&k.times(&Expansion::of(a.y)));
+            let cross = ux.times(&ya).minus(&uy.times(&xa));
+            let length2 = ux.times(&ux).plus(&uy.times(&uy));
+            let excess = cross.times(&cross).minus(&rk2.times(&length2));
+            if !excess.is_finite() {
+                return None;
+            }
+            (q, excess.sign())
+        }
+        Site::Arc(o) => {
+            let (oc, rho) = (o.centre(), o.radius());
+            let d = oc.distance(c);
+            // the centre clearly off the other circle (else the arcs are
+            // of nearly one circle, or the arc's radius is nearly zero)
+            if !(d > CLEAR * r) || (d - rho).abs() < CLEAR * r {
+                return None;
+            }
+            let q = Point::new(oc.x + rho * (c.x - oc.x) / d, oc.y + rho * (c.y - oc.y) / d);
+            if !o.spans(q) || o.start().distance(q).min(o.end().distance(q)) < CLEAR * rho {
+                return None;
+            }
+            let (ox, oy, ok, ork2) = exact_circle(&o)?;
+            // with both scaled by k·k': d² → n, ρ² → u, r² → v
+            let px = ox.times(&k).minus(&x.times(&ok));
+            let py = oy.times(&k).minus(&y.times(&ok));
+            let n = px.times(&px).plus(&py.times(&py));
+            let (u, v) = (ork2.times(&k.times(&k)), rk2.times(&ok.times(&ok)));
+            // |d − ρ| against r: d against ρ + r with the centre outside
+            // the other circle, against ρ − r inside it; with
+            // l = d² − ρ² − r², that is l against 2ρr, or against −2ρr
+            let l = n.minus(&u).minus(&v);
+            let beyond = l.times(&l).minus(&Expansion::of(4.0).times(&u).times(&v));
+            if !beyond.is_finite() {
+                return None;
+            }
+            let outside = match (d > rho, l.sign(), beyond.sign()) {
+                (_, _, 0) => 0,
+                (true, -1 | 0, _) | (false, 1 | 0, _) => -1,
+                (_, _, b) => b,
+            };
+            (q, outside)
+        }
+        Site::Point(_) => return None,
+    };
+    ((q.distance(c) - r).abs() <= CLEAR * r).then_some((q, outside))
+}
+
+/// How clear of an end (a share of the length or radius) the nearest point
+/// of a third site must be for `beyond_centre_touching`.
+const CLEAR: f64 = 1e-6;
+
+/// The arc's circle exactly, from its ends and bulge: the centre
+/// `(x / k, y / k)` and the radius squared `rk2 / k²`, with `k = 4β`
+/// (`4β (C − s) = 2β D + (1 − β²) D⊥`, `|2β D + (1 − β²) D⊥| = |D| (1 + β²)`).
+/// `None` for an arc given by three points or a bulge near zero.
+fn exact_circle(arc: &CircularArc) -> Option<(Expansion, Expansion, Expansion, Expansion)> {
+    let beta = arc.datum().0?;
+    if beta.abs() < 1e-150 || beta.abs() > 1e150 {
+        return None;
+    }
+    let (s, e) = (arc.start(), arc.end());
+    let (dx, dy) = (Expansion::difference(e.x, s.x), Expansion::difference(e.y, s.y));
+    let mut cosine = Expansion::of(1.0);
+    cosine.add_product(-beta, beta);
+    let two_beta = Expansion::of(2.0 * beta);
+    let wx = two_beta.times(&dx).minus(&cosine.times(&dy));
+    let wy = two_beta.times(&dy).plus(&cosine.times(&dx));
+    let k = Expansion::of(4.0 * beta);
+    let x = k.times(&Expansion::of(s.x)).plus(&wx);
+    let y = k.times(&Expansion::of(s.y)).plus(&wy);
+    let rk2 = wx.times(&wx).plus(&wy.times(&wy));
+    (x.is_finite() && y.is_finite() && rk2.is_finite()).then_some((x, y, k, rk2))
 }
 
 /// [`beyond_centre`] for a point `q`: the circle through the arc's ends and
@@ -765,5 +896,41 @@ mod tests {
             assert_eq!(beyond_centre(&arc, &Site::Point(p(4.5, 1.0))), Some(-1));
             assert_eq!(beyond_centre(&arc, &Site::Point(p(2.5, 1.0))), Some(-1));
         }
+    }
+
+    #[test]
+    fn a_segment_or_an_arc_touching_the_arcs_circle() {
+        // the half circle round (4, 1) through (5, 1), radius 1
+        let arc = CircularArc::from_bulge(p(4.0, 0.0), p(4.0, 2.0), 1.0).unwrap();
+        let segment = |x: f64| Site::Segment { a: p(x, -3.0), b: p(x, 5.0) };
+        let (ulp_5, ulp_3) = (5.0f64.next_up() - 5.0, 3.0f64.next_up() - 3.0);
+        // a line touching the circle on the middle's side: the vertex of
+        // the ends and the line is the centre; an ulp out it lies beyond,
+        // an ulp in before
+        assert_eq!(beyond_centre(&arc, &segment(5.0)), Some(0));
+        assert_eq!(beyond_centre(&arc, &segment(5.0 + ulp_5)), Some(1));
+        assert_eq!(beyond_centre(&arc, &segment(5.0 - ulp_5)), Some(-1));
+        // on the other side the other way round
+        assert_eq!(beyond_centre(&arc, &segment(3.0)), Some(0));
+        assert_eq!(beyond_centre(&arc, &segment(3.0 - ulp_3)), Some(-1));
+        assert_eq!(beyond_centre(&arc, &segment(3.0 + ulp_3)), Some(1));
+        // an arc round (x, 1) through (x − 1, 1), touching from outside at
+        // (5, 1) for x = 6 (LibreCAD's lamp: two coils touching)
+        let outside = |x: f64| Site::Arc(CircularArc::from_bulge(p(x, 0.0), p(x, 2.0), -1.0).unwrap());
+        let ulp_6 = 6.0f64.next_up() - 6.0;
+        assert_eq!(beyond_centre(&arc, &outside(6.0)), Some(0));
+        assert_eq!(beyond_centre(&arc, &outside(6.0 + ulp_6)), Some(1));
+        assert_eq!(beyond_centre(&arc, &outside(6.0 - ulp_6)), Some(-1));
+        // an arc of radius 1.5 round (x, 1) through (x − 1.5, 1), the
+        // arc's circle inside it touching at (3, 1) for x = 4.5: the arc's
+        // centre inside that circle
+        let around = |x: f64| Site::Arc(CircularArc::from_bulge(p(x, -0.5), p(x, 2.5), -1.0).unwrap());
+        let ulp_4 = 4.5f64.next_up() - 4.5;
+        assert_eq!(beyond_centre(&arc, &around(4.5)), Some(0));
+        assert_eq!(beyond_centre(&arc, &around(4.5 - ulp_4)), Some(-1));
+        assert_eq!(beyond_centre(&arc, &around(4.5 + ulp_4)), Some(1));
+        // not near the circle, or nearest at an end: not answered here
+        assert_eq!(beyond_centre(&arc, &segment(5.5)), None);
+        assert_eq!(beyond_centre(&arc, &Site::Segment { a: p(5.0, 1.0), b: p(5.0, 5.0) }), None);
     }
 }
