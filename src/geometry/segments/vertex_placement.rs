@@ -34,6 +34,7 @@ pub(crate) fn circle_of_sites_on(sites: &[Site; 3], on: Option<[Point; 2]>) -> (
         // arcs: their own solver, in floating point (`arcs::arc_vertex`)
         return crate::geometry::arcs::arc_vertex::arc_vertex_on(sites, on)
             .or_else(|| on.and_then(|on| along_the_edge(sites, on)))
+            .or_else(|| by_the_tangent_at_an_end(sites))
             .unwrap_or_else(|| among_sites(sites));
     }
     // No circle in `f64`: one beyond its range, or (only when the
@@ -192,6 +193,37 @@ fn along_the_edge(sites: &[Site; 3], [going, kept]: [Point; 2]) -> Option<(Point
     let radius = (distances[0] + distances[1] + distances[2]) / 3.0;
     let spread = distances.iter().map(|d| (d - radius).abs()).fold(0.0f64, f64::max);
     (q.is_finite() && spread <= 1e-9 * (radius + going.distance(kept))).then_some((q, radius))
+}
+
+/// Where the arcs' solver finds no circle for an arc, a point site at one
+/// of its ends and a point or segment: the circle through that end
+/// touching the arc there has its centre on the arc's normal at the end,
+/// as one touching the arc's tangent there does, so it is the vertex of
+/// the point, the other site and a segment along that tangent, which the
+/// segments' solvers (with their big floats for far vertices) find. A
+/// segment nearly along the normal of an arc's end leaves that circle far
+/// away, 1e16 and more, beyond the arcs' solver (LibreCAD's LA-2: a line
+/// 1.8e-16 rad off the tangent of a half circle's end, the vertex 6.5e16
+/// out). Accepted where the three distances agree to 1e-9 of the radius.
+fn by_the_tangent_at_an_end(sites: &[Site; 3]) -> Option<(Point, f64)> {
+    let k = sites.iter().position(|s| matches!(s, Site::Arc(_)))?;
+    let Site::Arc(arc) = sites[k] else { return None };
+    if sites.iter().enumerate().any(|(j, s)| j != k && matches!(s, Site::Arc(_))) {
+        return None;
+    }
+    let is_a_point_site = |e: Point| sites.contains(&Site::Point(e));
+    let end = [arc.start(), arc.end()].into_iter().find(|&e| is_a_point_site(e))?;
+    // a segment along the tangent at `end`, the arc's way (leaving its
+    // start, arriving at its end), as long as the arc's chord
+    let length = arc.start().distance(arc.end());
+    let t = arc.tangent_into(end);
+    let along = Point::new(end.x + length * t.x, end.y + length * t.y);
+    let tangent = if end == arc.start() { Site::Segment { a: end, b: along } } else { Site::Segment { a: along, b: end } };
+    let mut substituted = *sites;
+    substituted[k] = tangent;
+    let (centre, radius) = solved_circle(&substituted).or_else(|| beyond_range(&substituted))?;
+    let spread = sites.iter().map(|s| (s.distance(centre) - radius).abs()).fold(0.0f64, f64::max);
+    (centre.is_finite() && radius.is_finite() && spread <= 1e-9 * radius).then_some((centre, radius))
 }
 
 /// The fallback position of a vertex no solver can place: the centroid of
