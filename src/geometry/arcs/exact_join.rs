@@ -529,18 +529,24 @@ fn exact_circle(arc: &CircularArc) -> Option<(Expansion, Expansion, Expansion, E
     if beta.abs() < 1e-150 || beta.abs() > 1e150 {
         return None;
     }
-    let (s, e) = (arc.start(), arc.end());
-    let (dx, dy) = (Expansion::difference(e.x, s.x), Expansion::difference(e.y, s.y));
-    let mut cosine = Expansion::of(1.0);
-    cosine.add_product(-beta, beta);
-    let two_beta = Expansion::of(2.0 * beta);
-    let wx = two_beta.times(&dx).minus(&cosine.times(&dy));
-    let wy = two_beta.times(&dy).plus(&cosine.times(&dx));
+    let s = arc.start();
+    let (wx, wy) = from_start_to_centre(s, arc.end(), beta);
     let k = Expansion::of(4.0 * beta);
     let x = k.times(&Expansion::of(s.x)).plus(&wx);
     let y = k.times(&Expansion::of(s.y)).plus(&wy);
     let rk2 = wx.times(&wx).plus(&wy.times(&wy));
     (x.is_finite() && y.is_finite() && rk2.is_finite()).then_some((x, y, k, rk2))
+}
+
+/// `4β (C − s) = 2β D + (1 − β²) D⊥` exactly, for the arc from `s` to `e`
+/// of bulge `β` with centre `C` (`D = e − s`, `D⊥` turned a quarter
+/// counter-clockwise).
+fn from_start_to_centre(s: Point, e: Point, beta: f64) -> (Expansion, Expansion) {
+    let (dx, dy) = (Expansion::difference(e.x, s.x), Expansion::difference(e.y, s.y));
+    let mut cosine = Expansion::of(1.0);
+    cosine.add_product(-beta, beta);
+    let two_beta = Expansion::of(2.0 * beta);
+    (two_beta.times(&dx).minus(&cosine.times(&dy)), two_beta.times(&dy).plus(&cosine.times(&dx)))
 }
 
 /// [`beyond_centre`] for a point `q`: the circle through the arc's ends and
@@ -562,12 +568,8 @@ fn beyond_centre_point(arc: &CircularArc, q: Point, ccw: i8) -> Option<i8> {
             // 4β (C − s) = 2β D + (1 − β²) D⊥; the power of q is
             // |q − s|² − 2 (q − s)·(C − s), of the sign of
             // β (2β |q − s|² − (q − s)·4β (C − s))
-            let (dx, dy) = (Expansion::difference(e.x, s.x), Expansion::difference(e.y, s.y));
-            let mut cosine = Expansion::of(1.0);
-            cosine.add_product(-beta, beta);
             let two_beta = Expansion::of(2.0 * beta);
-            let wx = two_beta.times(&dx).minus(&cosine.times(&dy));
-            let wy = two_beta.times(&dy).plus(&cosine.times(&dx));
+            let (wx, wy) = from_start_to_centre(s, e, beta);
             let mut lift = Expansion::default();
             lift.add_squared_difference(q.x, s.x);
             lift.add_squared_difference(q.y, s.y);
