@@ -15,7 +15,7 @@
 
 mod common;
 
-use common::arc_inputs::{add_pieces, distance, filleted_polygon, random_cells, rounded_rectangle, Piece};
+use common::arc_inputs::{add_pieces, distance, filleted_polygon, random_cells, rounded_rectangle, variants, Piece};
 use common::curved_rings::{
     check_domain_offsets_of, check_medial_axis_of, check_pieces, circle_ring, densified_ring, directed_hausdorff, filleted_ring,
     piece_tolerance, reverse_ring, rounded_ring, slot_ring, tangent_joins, with_straight_vertices, Ring, Seen, CHORDS,
@@ -199,6 +199,32 @@ fn a_point_inside_a_nearly_closed_arc() {
     assert!(holes.iter().any(|l| l.pieces.len() == 2), "{below:?}");
     let above = d.offset(peak + 1e-4).unwrap();
     assert!(above.loops.len() < below.loops.len(), "{above:?}");
+}
+
+/// LibreCAD's tp3.dxf minimised: a half circle continued by a segment
+/// 3.5e-15 rad off its tangent, beside a line and two pieces of a small
+/// circle. The edge between the half circle and the segment runs down the
+/// join's normal to a vertex 1.1e15 away; along it the offsets' parameter
+/// was linear in the distance from the centre, which `t`'s ulp near the
+/// join resolved to 0.125, and the offset 1 from the join ended 0.75 from
+/// it (refused as a wrong decision). In every variant, against the chords.
+#[test]
+fn a_join_an_ulp_off_tangent_whose_edge_runs_1e15_out() {
+    let p = Point::new;
+    let arc = |s: Point, e: Point, b: f64| Piece::Arc(CircularArc::from_bulge(s, e, b).unwrap());
+    let pieces = vec![
+        arc(p(23.0, 0.0), p(23.0, -10.0), 1.0),
+        Piece::Segment(p(23.0, -10.0), p(25.0, -10.000000000000007)),
+        Piece::Segment(p(5.0, -10.000000000000007), p(15.317225141903236, -5.31035220822605)),
+        arc(p(16.75, -5.0), p(15.25, -5.0), 1.0),
+        arc(p(15.25, -5.0), p(15.317225141903236, -5.31035220822605), 0.10706315386359738),
+    ];
+    // the far vertex is there (else the test would not test it)
+    let far = build(&pieces).vertices().map(|v| v.clearance).fold(0.0f64, f64::max);
+    assert!(far > 1e14, "no far vertex: {far}");
+    for (way, input, scale) in variants(&pieces, 5) {
+        check_all(&format!("join an ulp off tangent, {way}"), &input, &[0.5 * scale, scale, 2.0 * scale], 30.0 * scale);
+    }
 }
 
 // ---- domains bounded by rings of segments and arcs ----------------------

@@ -208,6 +208,13 @@ impl ConicTrack {
         if let Some((u, [r0, r1])) = self.radial {
             // an end at infinity: the distance grows without bound toward it
             let rho = match (r0.is_finite(), r1.is_finite()) {
+                // Ends far apart in distance (a vertex 1e15 out along a
+                // tangent join's ray, the other at the join): geometric,
+                // so that `t` resolves the distance relatively at both
+                // ends. Linear, `t`'s ulp near 1 was 0.125 of distance
+                // there, and an offset 1 from the join ended 0.75 from it
+                // (LibreCAD's tp3).
+                (true, true) if r0 > 0.0 && r1 > 0.0 && (r0 > 4.0 * r1 || r1 > 4.0 * r0) => r0 * (r1 / r0).powf(t),
                 (true, true) => r0 + t * (r1 - r0),
                 (true, false) => r0 + t / (1.0 - t) * self.arc.radius(),
                 (false, true) => r1 + (1.0 - t) / t * self.arc.radius(),
