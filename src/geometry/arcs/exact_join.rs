@@ -458,25 +458,15 @@ fn beyond_centre_touching(arc: &CircularArc, third: &Site, ccw: i8) -> Option<i8
 /// the circle, for an arc given by three points, or out of range.
 fn stays_outside_circle(arc: &CircularArc, other: &Site) -> Option<(Point, i8)> {
     let (c, r) = (arc.centre(), arc.radius());
-    let (x, y, k, rk2) = exact_circle(arc)?;
-    let (q, outside) = match *other {
+    // where `other` comes nearest the centre, in floating point, and the
+    // cases that are not answered here, before any exact arithmetic
+    let q = match *other {
         Site::Segment { a, b } => {
             let t = crate::geometry::site::segment_parameter(a, b, c);
             if !(CLEAR..=1.0 - CLEAR).contains(&t) {
                 return None;
             }
-            let q = Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
-            // the distance to the line times |b − a| times k: (b − a) × (kC − ka)
-            let (ux, uy) = (Expansion::difference(b.x, a.x), Expansion::difference(b.y, a.y));
-            let xa = x.minus(&k.times(&Expansion::of(a.x)));
-            let ya = y.minus(&k.times(&Expansion::of(a.y)));
-            let cross = ux.times(&ya).minus(&uy.times(&xa));
-            let length2 = ux.times(&ux).plus(&uy.times(&uy));
-            let excess = cross.times(&cross).minus(&rk2.times(&length2));
-            if !excess.is_finite() {
-                return None;
-            }
-            (q, excess.sign())
+            Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y))
         }
         Site::Arc(o) => {
             let (oc, rho) = (o.centre(), o.radius());
@@ -490,6 +480,29 @@ fn stays_outside_circle(arc: &CircularArc, other: &Site) -> Option<(Point, i8)> 
             if !o.spans(q) || o.start().distance(q).min(o.end().distance(q)) < CLEAR * rho {
                 return None;
             }
+            q
+        }
+        Site::Point(_) => return None,
+    };
+    if !((q.distance(c) - r).abs() <= CLEAR * r) {
+        return None;
+    }
+    let (x, y, k, rk2) = exact_circle(arc)?;
+    let outside = match *other {
+        Site::Segment { a, b } => {
+            // the distance to the line times |b − a| times k: (b − a) × (kC − ka)
+            let (ux, uy) = (Expansion::difference(b.x, a.x), Expansion::difference(b.y, a.y));
+            let xa = x.minus(&k.times(&Expansion::of(a.x)));
+            let ya = y.minus(&k.times(&Expansion::of(a.y)));
+            let cross = ux.times(&ya).minus(&uy.times(&xa));
+            let length2 = ux.times(&ux).plus(&uy.times(&uy));
+            let excess = cross.times(&cross).minus(&rk2.times(&length2));
+            if !excess.is_finite() {
+                return None;
+            }
+            excess.sign()
+        }
+        Site::Arc(o) => {
             let (ox, oy, ok, ork2) = exact_circle(&o)?;
             // with both scaled by k·k': d² → n, ρ² → u, r² → v
             let px = ox.times(&k).minus(&x.times(&ok));
@@ -504,16 +517,15 @@ fn stays_outside_circle(arc: &CircularArc, other: &Site) -> Option<(Point, i8)> 
             if !beyond.is_finite() {
                 return None;
             }
-            let outside = match (d > rho, l.sign(), beyond.sign()) {
+            match (o.centre().distance(c) > o.radius(), l.sign(), beyond.sign()) {
                 (_, _, 0) => 0,
                 (true, -1 | 0, _) | (false, 1 | 0, _) => -1,
                 (_, _, b) => b,
-            };
-            (q, outside)
+            }
         }
         Site::Point(_) => return None,
     };
-    ((q.distance(c) - r).abs() <= CLEAR * r).then_some((q, outside))
+    Some((q, outside))
 }
 
 /// How clear of an end (a share of the length or radius) the nearest point
