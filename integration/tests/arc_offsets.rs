@@ -225,6 +225,24 @@ fn a_join_an_ulp_off_tangent_whose_edge_runs_1e15_out() {
     for (way, input, scale) in variants(&pieces, 5) {
         check_all(&format!("join an ulp off tangent, {way}"), &input, &[0.5 * scale, scale, 2.0 * scale], 30.0 * scale);
     }
+    // the join exactly tangent (a straight join: no far vertex)
+    let mut tangent = pieces.clone();
+    tangent[1] = Piece::Segment(p(23.0, -10.0), p(25.0, -10.0));
+    check_all("join exactly tangent", &tangent, &[0.5, 1.0, 2.0], 30.0);
+    // a thousand and a million from the origin (the join is then another
+    // rounding of a tangent one)
+    for shift in [1e3, 1e6] {
+        let moved = |q: Point| p(q.x + shift, q.y - shift);
+        let input: Vec<Piece> = pieces
+            .iter()
+            .map(|&piece| match piece {
+                Piece::Point(q) => Piece::Point(moved(q)),
+                Piece::Segment(a, b) => Piece::Segment(moved(a), moved(b)),
+                Piece::Arc(a) => arc(moved(a.start()), moved(a.end()), a.bulge()),
+            })
+            .collect();
+        check_all(&format!("join an ulp off tangent, {shift} out"), &input, &[0.5, 1.0, 2.0], 30.0);
+    }
 }
 
 // ---- domains bounded by rings of segments and arcs ----------------------

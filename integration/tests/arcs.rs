@@ -1106,6 +1106,70 @@ fn refused_or_right() {
     }
 }
 
+/// The LibreCAD cases of `minimised_regressions` that hang on roundings
+/// of 1e-15 (arcs touching with their circles 2e-15 apart; a line 1.8e-16
+/// rad off an arc's tangent), a thousand and a million from the origin:
+/// there the rounding of the coordinates is larger than the configuration,
+/// which becomes another one (the touching arcs cross at 1e3, and are
+/// split); each must be answered right (`validate` and the audit) or
+/// refused as `Internal`, never answered wrong.
+#[test]
+fn touching_and_ulp_off_tangent_cases_far_from_the_origin() {
+    let p = Point::new;
+    let arc = |s: Point, e: Point, b: f64| Piece::Arc(CircularArc::from_bulge(s, e, b).unwrap());
+    let cases: Vec<(&str, Vec<Piece>, f64)> = vec![
+        (
+            "arcs touching at a point of both, a third through a centre",
+            vec![
+                arc(p(0.0, 25.0), p(2.165063509461096, 21.25), 1.7320508075688767),
+                arc(p(2.165063509461097, 18.75), p(-1.2499999999999996, 19.665063509461095), 0.41421356237309503),
+                arc(p(-2.5, 20.0), p(2.165063509461097, 18.75), 0.7673269879789604),
+                Piece::Segment(p(0.0, 15.0), p(0.0, 0.0)),
+            ],
+            50.0,
+        ),
+        (
+            "a line an ulp off a half circle's tangent at its start",
+            vec![Piece::Segment(p(0.0, 0.0), p(-1.46957615898e-15, -8.0)), arc(p(0.0, 6.0), p(4.0, 6.0), 1.0)],
+            16.0,
+        ),
+    ];
+    let mut answered = 0;
+    for (name, pieces, size) in cases {
+        for shift in [1e3, 1e6] {
+            let moved = |q: Point| p(q.x + shift, q.y - shift);
+            let input: Vec<Piece> = pieces
+                .iter()
+                .map(|&piece| match piece {
+                    Piece::Point(q) => Piece::Point(moved(q)),
+                    Piece::Segment(a, b) => Piece::Segment(moved(a), moved(b)),
+                    Piece::Arc(a) => arc(moved(a.start()), moved(a.end()), a.bulge()),
+                })
+                .collect();
+            let mut b = Builder::new();
+            add_pieces(&mut b, &input);
+            // the arcs' rounded circles may cross there: split, as a user
+            // told so would
+            let built = match b.build() {
+                Err(e) if e.kind() == segvoronoi::ErrorKind::Intersecting => b.split_crossings(true).build(),
+                other => other,
+            };
+            match built {
+                Ok(d) => {
+                    d.validate().unwrap_or_else(|e| panic!("{name} at {shift}: invalid: {e:?}"));
+                    // the audit's tolerance: the size's, or the rounding there
+                    let f = audit(&d, (1e-8 * size).max(1e-9 * shift));
+                    assert!(f.is_empty(), "{name} at {shift}: answered wrong: {}", f[..f.len().min(5)].join("\n"));
+                    answered += 1;
+                }
+                Err(e) => assert_eq!(e.kind(), segvoronoi::ErrorKind::Internal, "{name} at {shift}: {e}"),
+            }
+        }
+    }
+    // (measured: all four answered)
+    assert_eq!(answered, 4, "far from the origin: {answered} of 4 answered");
+}
+
 /// Variants of the split family's seed 541 in `refused_or_right` that are
 /// refused (measured: none since the solver's order of tangencies put an
 /// arc's end that is a point site first; 3 before).
