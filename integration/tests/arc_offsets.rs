@@ -1235,6 +1235,33 @@ fn a_circle_cut_in_four_with_kinks_of_a_rounding() {
     offsets_all_ways_against_chords(&ring, &lines, &[0.3, 1.0, -0.3, -1.170745845, -4.0]);
 }
 
+/// A line tangent to a circle, ending at the tangent point and dipping
+/// 1e-11 into it by rounding (LibreCAD's Relay, as its split and the
+/// CLI's cut leave it): the circle is cut 1.1e-11 before the line's end,
+/// the piece between is straight, and the cut arcs' centres are 1.6e-11
+/// apart. Their edges run from the join in to the centre, out to
+/// infinity, and between the two arcs within 1e-11 of the centre; the
+/// offsets' angle around the centre could not tell their points apart
+/// (every offset refused: a piece ending at the join or at the centre).
+/// Now such an edge is followed across the ray to its far end. Scaled,
+/// and a thousand from the origin (where the configuration rounds
+/// another way), both ways round and mirrored.
+#[test]
+fn a_tangent_line_dipping_into_a_circle_by_rounding() {
+    let p = Point::new;
+    let (a, b) = (p(4.239412447758696, 19.22797120299265), p(4.239412447750055, 19.227971202999925));
+    let ring: Ring = vec![(p(5.875, 20.0), 1.0), (p(3.875, 20.0), 0.2241515709905449), (b, 0.0), (a, 0.6337846124526398)];
+    let lines = [[p(8.60297120298, 15.6355875522), a]];
+    // as drawn, scaled by powers of two (exactly) and a thousand out
+    for (scale, shift) in [(1.0, 0.0), (0.125, 0.0), (1024.0, 0.0), (1.0, 1e3)] {
+        let at = |q: Point| p(q.x * scale + shift, q.y * scale - shift);
+        let ring: Ring = ring.iter().map(|&(q, bulge)| (at(q), bulge)).collect();
+        let lines = lines.map(|l| l.map(at));
+        let distances = [-0.1, -0.5, -0.9, 0.5, 1.0, 3.0].map(|d| d * scale);
+        offsets_all_ways_against_chords(&ring, &lines, &distances);
+    }
+}
+
 /// The offsets of `ring` with `lines` as obstacles, both ways round and
 /// mirrored, at `distances`: the loop count and area of the same input
 /// with every arc as 256 chords (to 1e-3).

@@ -24,6 +24,11 @@
 
 use crate::geometry::{CircularArc, Point, Site};
 
+/// The widest turn around the arc's centre between an edge's ends that
+/// the angle is not asked to resolve: such an edge is found across the ray
+/// to its farther end instead (`narrow_ray`).
+const NARROW: f64 = 1e-9;
+
 /// Samples of the clearance along an edge, to find where it turns.
 const SAMPLES: usize = 48;
 
@@ -180,6 +185,9 @@ impl ConicTrack {
         if !(c.is_finite() && arc.radius().is_finite() && track.along.iter().all(|a| a.is_finite())) {
             return None;
         }
+        if track.radial.is_none() && track.bent.is_none() && (track.along[1] - track.along[0]).abs() <= NARROW {
+            track.radial = narrow_ray(c, [start, end]);
+        }
         track.knots = track.find_knots();
         Some(track)
     }
@@ -317,6 +325,12 @@ impl ConicTrack {
             }
         }
         Some(0.5 * (near + far))
+    }
+
+    /// `p`, a crossing of `level` found along the track, moved onto both
+    /// sites' offset curves where they meet (`level_point::onto_level`).
+    pub(super) fn onto_level(&self, p: Point, level: f64) -> Point {
+        super::level_point::onto_level(&self.arc, &self.other, p, level)
     }
 
     /// The clearance at parameter `t` (internal units): the distance to
@@ -492,6 +506,38 @@ fn tangent_join_at(arc: &CircularArc, other: &Site, e: Point) -> Option<Point> {
     };
     let continues = ahead.x * other_ahead.x + ahead.y * other_ahead.y < 0.0;
     (length > 0.0 && continues && cross.abs() <= 1e-4 * size).then(|| Point::new(radial.x / length, radial.y / length))
+}
+
+/// For an edge whose ends lie within [`NARROW`] of one ray from the
+/// centre `c`: that ray's direction (toward the end at infinity, else the
+/// farther end) and the ends' distances along it (infinite at infinity),
+/// for `ConicTrack::radial`; `None` for two ends at infinity. Such edges
+/// run beside a piece of rounding size: an arc cut a hair (1e-11) before
+/// a point or a short segment that continues it (a tangent line split off
+/// a circle it dips into), from the join in to the centre or out to
+/// infinity, or between two arcs of one circle to rounding, all within
+/// 1e-11 of the centre. Their angles, rounding and clamped to the sweep,
+/// could not tell their points apart: the clearance sampled along them
+/// dipped to zero where it stays near the radius, and a crossing of a
+/// level came out at the join (LibreCAD's Relay).
+fn narrow_ray(c: Point, ends: [ConicEnd; 2]) -> Option<(Point, [f64; 2])> {
+    let unit = |v: Point| {
+        let length = v.x.hypot(v.y);
+        Point::new(v.x / length, v.y / length)
+    };
+    let u = match ends {
+        [ConicEnd::Towards(u), ConicEnd::At(_)] | [ConicEnd::At(_), ConicEnd::Towards(u)] => unit(u),
+        [ConicEnd::At(p), ConicEnd::At(q)] => {
+            let far = if c.distance(p) >= c.distance(q) { p } else { q };
+            unit(Point::new(far.x - c.x, far.y - c.y))
+        }
+        [ConicEnd::Towards(_), ConicEnd::Towards(_)] => return None,
+    };
+    let rho = |e: ConicEnd| match e {
+        ConicEnd::At(v) => (v.x - c.x) * u.x + (v.y - c.y) * u.y,
+        ConicEnd::Towards(_) => f64::INFINITY,
+    };
+    u.is_finite().then(|| (u, ends.map(rho)))
 }
 
 /// Of samples `from..=to`, the one with the highest clearance (`peak`)

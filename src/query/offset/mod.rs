@@ -16,6 +16,7 @@ mod approximation;
 mod conic;
 mod index;
 mod interval_tree;
+mod level_point;
 mod level_tree;
 mod trace;
 

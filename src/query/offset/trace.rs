@@ -218,6 +218,9 @@ impl Diagram {
             // to rounding must not send the root to the other end)
             let t = lowest.map_or_else(|| conic.track.root(a.t, b.t, level, in_a), |stop| stop.t);
             let Some(at) = conic.track.point(t) else { continue };
+            // (a turning point at the level is where it is; a root is
+            // polished onto both offset curves)
+            let at = if lowest.is_none() { conic.track.onto_level(at, level) } else { at };
             let at = self.scale.point_to_input(at);
             // next to a vertex (rounding: the vertex is at the level), the
             // vertex itself, so that the loops of both its cells agree
