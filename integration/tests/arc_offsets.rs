@@ -1266,13 +1266,15 @@ fn a_tangent_line_dipping_into_a_circle_by_rounding() {
 /// given to the library whole (a circle, and the line ending 1e-11 inside
 /// it) with `split_crossings`: the split cuts the circle where the line's
 /// rounded roots are, 5e-6 before its end, and leaves that stub inside.
-/// The offsets inside agree with the chords; those outside are refused
-/// ("a loop does not close"): the stub's free end is 1e-11 inside the
-/// circle, the structure has its cell reach infinity, the edges from it
-/// are located inside, and the conic between that end and the arc has no
-/// point at exact distances (issue 32, analysed in its note, not fixed).
+/// The stub's free end lies on the circle to rounding, and the structure
+/// gives it a cell at infinity beside the arc. That edge went to infinity
+/// 12.6 degrees off (no root found: the support functions only touch
+/// there), and the edges from the stub's end were located inside the
+/// domain with an end at infinity: every offset outside was refused (a
+/// loop that does not close). Now the edge runs out along the end's
+/// radius (`arc_vertex::direction_at_infinity`) and an edge to infinity
+/// is never inside (`domain::classify`).
 #[test]
-#[ignore = "issue 32: outward offsets of a circle with a tangent line split by the library are refused"]
 fn a_tangent_line_dipping_into_a_circle_split_by_the_library() {
     let p = Point::new;
     let build = |ring: &Ring| {

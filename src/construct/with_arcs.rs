@@ -101,6 +101,7 @@ pub(super) fn diagram_with_arcs(
     // purpose: there the topology is what is checked, by `accept`)
     if !crate::geometry::fault::active() {
         check_arc_vertices(&diagram)?;
+        directions_at_infinity_turn_once(&diagram)?;
     }
     let mut diagram = diagram;
     if !rings.is_empty() {
@@ -233,6 +234,99 @@ fn arc_vertices(diagram: &Diagram, ids: std::ops::Range<usize>) -> impl Iterator
 }
 
 /// The input arc of a vertex with an arc among its sites, for the errors.
+/// The check of the diagram's edges to infinity that stands beside
+/// `check_arc_vertices`. Each site whose cell reaches infinity owns the
+/// directions in which it reaches furthest out (its support function is
+/// the largest), so walking round the cell of the point at infinity:
+/// - at each vertex there, the direction is one in which its two sites
+///   reach equally far (their supports tie);
+/// - the directions turn one way, once round.
+///
+/// A decision at infinity that kept a cell there where another site
+/// reaches further breaks one of them: a point a hair off an arc's
+/// circle whose cell at infinity was left behind when an arc ending on
+/// it went in (the directions step back), or a stub's free end 1e-11
+/// inside a circle given a cell at infinity beside the arc (its support
+/// 0.024 short of the arc's there: LibreCAD's Relay, split). No vertex
+/// check sees these: the finite vertices are right, the edges to
+/// infinity between them are not. O(h) for h edges to infinity.
+fn directions_at_infinity_turn_once(diagram: &Diagram) -> Result<(), Error> {
+    let store = &diagram.store;
+    let ring: Vec<(Point, [SiteId; 2])> = store
+        .cell_boundary(store.infinite_site)
+        .map(|h| {
+            let v = h.origin();
+            let mut real = store.sites_of(v).into_iter().filter(|&s| s != store.infinite_site);
+            let x = real.next().unwrap_or(store.infinite_site);
+            (store.position[v.index()], [x, real.next().unwrap_or(x)])
+        })
+        .collect();
+    if ring.len() < 3 {
+        return Ok(());
+    }
+    let refuse = |k: usize, what: &str| {
+        let (d, [x, _]) = ring[k];
+        let first_arc = diagram.sites.len() - diagram.arc_sites;
+        let near = diagram.sites.get(x.index()).map_or(Point::new(0.0, 0.0), Site::midpoint);
+        let arc = (first_arc..diagram.sites.len())
+            .min_by(|&a, &b| diagram.sites[a].distance(near).total_cmp(&diagram.sites[b].distance(near)))
+            .map_or(0, |s| diagram.arc_input.get(s - first_arc).copied().unwrap_or(0) as usize);
+        Err(Error::new(
+            ErrorKind::Internal,
+            format!(
+                "construction could not complete: an edge to infinity beside arc {arc} (toward ({}, {})) {what}: a decision \
+                 at infinity went wrong; please report this input",
+                d.x, d.y
+            ),
+            vec![arc],
+        ))
+    };
+    for (k, &(d, [x, y])) in ring.iter().enumerate() {
+        let (Some(x), Some(y)) = (diagram.sites.get(x.index()), diagram.sites.get(y.index())) else { continue };
+        let (rx, ry) = (x.support(d).0, y.support(d).0);
+        // (relative to the terms of an arc's support, the centre's far
+        // out for a nearly straight arc)
+        let size = |s: &Site| match *s {
+            Site::Arc(arc) => (arc.centre().x * d.x).abs() + (arc.centre().y * d.y).abs() + arc.radius(),
+            _ => s.support(d).0.abs(),
+        };
+        let tolerance = 1e-9 * (size(x) + size(y) + diagram.extent);
+        if !((rx - ry).abs() <= tolerance) {
+            return refuse(k, "has sites that do not reach equally far that way");
+        }
+    }
+    // The walk with the point at infinity's cell on its left goes round
+    // clockwise: each step turns clockwise by the directions the cell
+    // between its ends owns, more than half a turn for a long arc's. A
+    // step back shows as a turn of nearly a whole one, and the steps then
+    // sum to more than one turn. (Ties are common: the separators of a
+    // segment's ends run parallel. A point on an arc's circle to 1e-9 of
+    // its radius meets the arc at infinity along its radius, where the
+    // true ties may lie 4.5e-5 rad either side,
+    // `arc_vertex::direction_at_infinity`. A step back within `BACK` is
+    // none.)
+    const BACK: f64 = 1e-4;
+    let full = std::f64::consts::TAU;
+    let angle = |d: Point| d.y.atan2(d.x);
+    let steps: Vec<f64> = (0..ring.len())
+        .map(|k| {
+            let step = (angle(ring[k].0) - angle(ring[(k + 1) % ring.len()].0)).rem_euclid(full);
+            if step > full - BACK {
+                0.0
+            } else {
+                step
+            }
+        })
+        .collect();
+    let total: f64 = steps.iter().sum();
+    if (total - full).abs() <= 1e-6 {
+        return Ok(());
+    }
+    // the step that turned furthest: the one back
+    let back = (0..steps.len()).max_by(|&i, &j| steps[i].total_cmp(&steps[j])).unwrap_or(0);
+    refuse((back + 1) % ring.len(), "turns back from the one before")
+}
+
 fn arc_of(diagram: &Diagram, v: &Vertex) -> usize {
     let first_arc = diagram.sites.len() - diagram.arc_sites;
     let arc = v.sites.iter().find(|s| s.index() >= first_arc).map_or(0, |s| s.index() - first_arc);

@@ -334,6 +334,28 @@ impl Diagram {
                 }
             }
         }
+        // The domain is bounded: an edge to infinity located inside (by an
+        // obstacle's cell: a stub that a split left 1e-11 inside a circle,
+        // whose free end the structure treats as on the circle, LibreCAD's
+        // Relay) leaves the domain at its finite end, to rounding, and is
+        // taken as passing through the boundary there. Located inside
+        // alone, the offsets outside never crossed it and a loop stayed
+        // open.
+        let unbounded_inside: Vec<(EdgeId, usize)> = (0..edge.len())
+            .filter(|&e| edge[e] == Location::Inside && !is_through(e))
+            .filter_map(|e| {
+                let ends = self.edge(EdgeId::from_index(e))?.ends;
+                let finite = ends.iter().position(|end| matches!(end, crate::EdgeEnd::Vertex(_)))?;
+                ends.iter().any(|end| matches!(end, crate::EdgeEnd::Infinite { .. })).then_some((EdgeId::from_index(e), finite))
+            })
+            .collect();
+        if !unbounded_inside.is_empty() {
+            for &(e, _) in &unbounded_inside {
+                edge[e.index()] = Location::Boundary;
+            }
+            through.extend(unbounded_inside);
+            through.sort_unstable();
+        }
         let mut join_normals: Vec<EdgeId> = joins.iter().filter(|(_, j)| j.normal).map(|&(e, _)| e).collect();
         join_normals.sort_unstable();
         Domain { rings, vertex, edge, cell, through, join_normals }

@@ -205,6 +205,27 @@ pub fn audit(d: &Diagram, tol: f64) -> Vec<String> {
             }
         }
     }
+    // Far out in the direction of an edge to infinity, its two sites are
+    // the nearest (to the curvature, span²/far): a site that reached
+    // further that way would own the direction. (The grid above only
+    // sees the box around the input.)
+    let centre = Point::new(0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y));
+    let far = 1e6 * span;
+    for e in d.edges() {
+        for end in e.ends {
+            let segvoronoi::EdgeEnd::Infinite { direction: u } = end else { continue };
+            let length = u.x.hypot(u.y);
+            let q = Point::new(centre.x + far * u.x / length, centre.y + far * u.y / length);
+            let [a, b] = e.sites.map(|s| sites[s.index()]);
+            let (da, db, n) = (distance(&a, q), distance(&b, q), nearest(q));
+            if da.max(db) > n + 1e-5 * span {
+                failures.push(format!(
+                    "edge {:?} between {a:?} and {b:?} to infinity toward {u:?}: there at {da} / {db}, another site at {n}",
+                    e.id
+                ));
+            }
+        }
+    }
     for e in d.edges() {
         let Some(poly) = d.edge_polyline(e.id, tol * 10.0) else { continue };
         let [a, b] = e.sites.map(|s| sites[s.index()]);

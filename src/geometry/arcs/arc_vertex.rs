@@ -772,6 +772,9 @@ pub(crate) fn direction_at_infinity(x: &Site, y: &Site, guess: Point) -> Option<
             }
         }
     }
+    if let Some(u) = beside_a_point_on_the_circle(x, y) {
+        return Some(u);
+    }
     let origin = local_origin(&[*x, *y, *x]);
     let (x, y) = (shifted(x, origin, 1.0), shifted(y, origin, 1.0));
     let support = |s: &Site, d: Point| s.support(d);
@@ -822,6 +825,35 @@ pub(crate) fn direction_at_infinity(x: &Site, y: &Site, guess: Point) -> Option<
         }
     }
     best.map(|(_, d)| d)
+}
+
+/// For an arc and a point on its circle to rounding (within 1e-9 of the
+/// radius) whose direction from the centre the arc's cone holds (or
+/// misses by a microradian at an end): that direction. The two support
+/// functions only touch there: a hair outside the circle they cross
+/// twice within `sqrt(2 · hair / radius)` of it (7e-6 rad for a point
+/// 2e-11 off a circle of radius 1.8), which the scan's steps of 3e-3 rad
+/// step over; a hair inside they tie to rounding and never cross. The
+/// scan then found no root, and the edge went to infinity in the
+/// caller's guess, 0.08 degrees or more off (LibreCAD's Relay, a line
+/// ending where it touches a circle).
+fn beside_a_point_on_the_circle(x: &Site, y: &Site) -> Option<Point> {
+    [(x, y), (y, x)].into_iter().find_map(|(s, t)| {
+        let (Site::Arc(arc), Some(p)) = (*s, t.as_point()) else { return None };
+        let c = arc.centre();
+        let (dx, dy) = (p.x - c.x, p.y - c.y);
+        let n = norm(dx, dy);
+        if !(n > 0.0 && (n - arc.radius()).abs() <= 1e-9 * arc.radius()) {
+            return None;
+        }
+        let u = Point::new(dx / n, dy / n);
+        let near_end = [arc.start(), arc.end()].into_iter().any(|e| {
+            let (ex, ey) = (e.x - c.x, e.y - c.y);
+            let m = norm(ex, ey);
+            m > 0.0 && ((ex * u.y - ey * u.x) / m).abs() <= 1e-6 && ex * u.x + ey * u.y > 0.0
+        });
+        (arc.spans_direction(u) || near_end).then_some(u)
+    })
 }
 
 /// A few Newton steps on the true distances `d_k(x) − t = 0`.

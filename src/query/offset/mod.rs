@@ -459,7 +459,11 @@ impl Diagram {
             // most half a turn, and one whose ends meet sweeps nothing (the
             // cell of a straight or nearly straight joint is a line or a
             // wedge thinner than rounding).
-            whole[k] = centre.is_some() && !self.is_segment_endpoint(span.site) && self.span_leaves(span, from, near);
+            whole[k] = centre.is_some_and(|c| {
+                !self.is_segment_endpoint(span.site)
+                    && self.span_leaves(span, from, near)
+                    && self.holds_the_circle(span.site, c, from)
+            });
             let whole = whole[k];
             // (an arc's cell neither: it lies in the arc's cone, and a span
             // of it sweeps at most the arc's own sweep, less than a turn).

@@ -300,6 +300,35 @@ impl Diagram {
         self.cell_half_edges(p).any(|h| self.is_separator(h.edge()) == Some(true))
     }
 
+    /// Whether the circle round the point site `site` (at `centre`)
+    /// through `at` lies in the site's cell, sampled a quarter, a half and
+    /// three quarters of a turn from `at`: no neighbouring site nearer to
+    /// those. A whole circle touches its cell's boundary at one point and
+    /// holds the rest; a cell thinner than rounding that reaches
+    /// out past the circle (a point a rounding off a tangent joint,
+    /// LibreCAD's LA-2: its cell a sliver along the joint's normal) has
+    /// its two crossings a rounding apart, possibly the wrong way round,
+    /// and holds none of it.
+    pub(super) fn holds_the_circle(&self, site: SiteId, centre: Point, at: Point) -> bool {
+        let (dx, dy) = (at.x - centre.x, at.y - centre.y);
+        let r = dx.hypot(dy);
+        // the point opposite and the two a quarter turn either side (one
+        // alone may tie: opposite a point on an arc, along its radius)
+        let samples = [
+            Point::new(centre.x - dx, centre.y - dy),
+            Point::new(centre.x - dy, centre.y + dx),
+            Point::new(centre.x + dy, centre.y - dx),
+        ];
+        let neighbours: Vec<&Site> = self
+            .cell_half_edges(site)
+            .filter_map(|h| self.edge(h.edge()))
+            .flat_map(|e| e.sites)
+            .filter(|&s| s != site)
+            .filter_map(|s| self.sites.get(s.index()))
+            .collect();
+        samples.iter().all(|&q| neighbours.iter().all(|other| other.distance(q) >= r * (1.0 - 1e-9)))
+    }
+
     /// Whether the cell boundary between the span's two crossings goes
     /// anywhere farther than `tolerance` from `at` (or to infinity): so that
     /// crossings at one point mean a whole circle, not nothing.
