@@ -63,6 +63,30 @@ fn right_or_refused(name: &str, pieces: &[Piece], size: f64, seed: u64) -> Vec<&
     refused
 }
 
+/// A single arc of nearly a whole turn (bulge -2.5e7: all but 1.6e-7 rad),
+/// found by the C API's fuzzer at 1e-300 (case 0x5647c6b33fd94086): its
+/// cell at infinity owns all but the sliver of directions its ends' cells
+/// take, a step round the cell at infinity of nearly a whole turn, which
+/// the build's check of the edges to infinity first took for a step back
+/// and refused. Answered right at 1e-300, 1 and 1e180 (exact powers of two
+/// apart), audited (the edges to infinity far out included).
+#[test]
+fn a_nearly_whole_circle_alone() {
+    let ends = [Point::new(1.0, 0.0), Point::new(-1.0, 0.0)];
+    for scale in [2f64.powi(-997), 1.0, 2f64.powi(600)] {
+        for bulge in [-2.5e7, 2.5e7] {
+            let at = |q: Point| Point::new(q.x * scale, q.y * scale);
+            let arc = CircularArc::from_bulge(at(ends[0]), at(ends[1]), bulge).unwrap();
+            let mut b = Builder::new();
+            b.add_arc(arc).unwrap();
+            let d = b.build().unwrap_or_else(|e| panic!("scale {scale:e}, bulge {bulge}: {e}"));
+            d.validate().unwrap();
+            let f = audit(&d, 1e-8 * arc.radius());
+            assert!(f.is_empty(), "scale {scale:e}, bulge {bulge}: {}", f.join("\n"));
+        }
+    }
+}
+
 #[test]
 fn random_arcs_segments_and_points_in_cells() {
     for seed in 0..12 {

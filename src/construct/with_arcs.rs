@@ -297,33 +297,32 @@ fn directions_at_infinity_turn_once(diagram: &Diagram) -> Result<(), Error> {
     }
     // The walk with the point at infinity's cell on its left goes round
     // clockwise: each step turns clockwise by the directions the cell
-    // between its ends owns, more than half a turn for a long arc's. A
-    // step back shows as a turn of nearly a whole one, and the steps then
-    // sum to more than one turn. (Ties are common: the separators of a
-    // segment's ends run parallel. A point on an arc's circle to 1e-9 of
-    // its radius meets the arc at infinity along its radius, where the
-    // true ties may lie 4.5e-5 rad either side,
-    // `arc_vertex::direction_at_infinity`. A step back within `BACK` is
-    // none.)
+    // between its ends owns, more than half a turn for a long arc's, and
+    // the steps sum to one turn. Each step is read modulo a whole turn: a
+    // step back reads as a turn of nearly a whole one and adds a turn to
+    // the sum. Steps back within `BACK` are rounding: ties are common (the
+    // separators of a segment's ends run parallel), and a point on an
+    // arc's circle to 1e-9 of its radius meets the arc at infinity along
+    // its radius, where the true ties may lie 4.5e-5 rad either side
+    // (`arc_vertex::direction_at_infinity`). But so does the cell of an
+    // arc of nearly a whole turn read, all but the sliver of directions its
+    // ends' cells take (the fuzzer's case 0x5647c6b33fd94086). So the ring
+    // is right when the sum is a whole number of turns, one more than at
+    // most as many steps as read as nearly a whole turn; a step back
+    // further than `BACK` adds a turn that none of those explains.
     const BACK: f64 = 1e-4;
     let full = std::f64::consts::TAU;
     let angle = |d: Point| d.y.atan2(d.x);
-    let steps: Vec<f64> = (0..ring.len())
-        .map(|k| {
-            let step = (angle(ring[k].0) - angle(ring[(k + 1) % ring.len()].0)).rem_euclid(full);
-            if step > full - BACK {
-                0.0
-            } else {
-                step
-            }
-        })
-        .collect();
+    let steps: Vec<f64> =
+        (0..ring.len()).map(|k| (angle(ring[k].0) - angle(ring[(k + 1) % ring.len()].0)).rem_euclid(full)).collect();
+    let nearly_whole = steps.iter().filter(|&&t| t > full - BACK).count();
     let total: f64 = steps.iter().sum();
-    if (total - full).abs() <= 1e-6 {
+    let turns = (total / full).round();
+    if (total - turns * full).abs() <= 1e-6 * turns && turns >= 1.0 && turns <= (nearly_whole + 1) as f64 {
         return Ok(());
     }
-    // the step that turned furthest: the one back
-    let back = (0..steps.len()).max_by(|&i, &j| steps[i].total_cmp(&steps[j])).unwrap_or(0);
+    // the step back: the largest turn short of nearly a whole one
+    let back = (0..steps.len()).filter(|&k| steps[k] <= full - BACK).max_by(|&i, &j| steps[i].total_cmp(&steps[j])).unwrap_or(0);
     refuse((back + 1) % ring.len(), "turns back from the one before")
 }
 
