@@ -15,7 +15,7 @@
 
 mod common;
 
-use common::arc_inputs::{add_pieces, distance, filleted_polygon, random_cells, rounded_rectangle, variants, Piece};
+use common::arc_inputs::{add_pieces, distance, filleted_polygon, mapped, random_cells, rounded_rectangle, variants, Piece};
 use common::curved_rings::{
     check_domain_offsets_of, check_medial_axis_of, check_pieces, circle_ring, densified_ring, directed_hausdorff, filleted_ring,
     piece_tolerance, reverse_ring, rounded_ring, slot_ring, tangent_joins, with_straight_vertices, Ring, Seen, CHORDS,
@@ -232,15 +232,7 @@ fn a_join_an_ulp_off_tangent_whose_edge_runs_1e15_out() {
     // a thousand and a million from the origin (the join is then another
     // rounding of a tangent one)
     for shift in [1e3, 1e6] {
-        let moved = |q: Point| p(q.x + shift, q.y - shift);
-        let input: Vec<Piece> = pieces
-            .iter()
-            .map(|&piece| match piece {
-                Piece::Point(q) => Piece::Point(moved(q)),
-                Piece::Segment(a, b) => Piece::Segment(moved(a), moved(b)),
-                Piece::Arc(a) => arc(moved(a.start()), moved(a.end()), a.bulge()),
-            })
-            .collect();
+        let input = mapped(&pieces, &|q: Point| p(q.x + shift, q.y - shift), false);
         check_all(&format!("join an ulp off tangent, {shift} out"), &input, &[0.5, 1.0, 2.0], 30.0);
     }
 }

@@ -8,7 +8,9 @@
 
 mod common;
 
-use common::arc_inputs::{add_pieces, audit, distance, filleted_polygon, random_cells, rounded_rectangle, variants, Piece};
+use common::arc_inputs::{
+    add_pieces, audit, distance, filleted_polygon, mapped, random_cells, rounded_rectangle, variants, Piece,
+};
 use segvoronoi::splitmix::SplitMix64;
 use segvoronoi::{Builder, CircularArc, Diagram, Point, Site};
 
@@ -1177,15 +1179,7 @@ fn touching_and_ulp_off_tangent_cases_far_from_the_origin() {
     let mut answered = 0;
     for (name, pieces, size) in cases {
         for shift in [1e3, 1e6] {
-            let moved = |q: Point| p(q.x + shift, q.y - shift);
-            let input: Vec<Piece> = pieces
-                .iter()
-                .map(|&piece| match piece {
-                    Piece::Point(q) => Piece::Point(moved(q)),
-                    Piece::Segment(a, b) => Piece::Segment(moved(a), moved(b)),
-                    Piece::Arc(a) => arc(moved(a.start()), moved(a.end()), a.bulge()),
-                })
-                .collect();
+            let input = mapped(&pieces, &|q: Point| p(q.x + shift, q.y - shift), false);
             let mut b = Builder::new();
             add_pieces(&mut b, &input);
             // the arcs' rounded circles may cross there: split, as a user

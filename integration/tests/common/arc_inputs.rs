@@ -244,6 +244,25 @@ pub fn audit(d: &Diagram, tol: f64) -> Vec<String> {
     failures
 }
 
+/// `pieces` with every point moved by `f` (an arc through its moved ends
+/// and middle, or with its bulge, negated where `f` `flip`s orientation).
+pub fn mapped(pieces: &[Piece], f: &dyn Fn(Point) -> Point, flip: bool) -> Vec<Piece> {
+    pieces
+        .iter()
+        .map(|&p| match p {
+            Piece::Point(q) => Piece::Point(f(q)),
+            Piece::Segment(a, b) => Piece::Segment(f(a), f(b)),
+            Piece::Arc(arc) => {
+                let bulge = if flip { -arc.bulge() } else { arc.bulge() };
+                Piece::Arc(match arc.via() {
+                    Some(m) => CircularArc::through(f(arc.start()), f(m), f(arc.end())).unwrap(),
+                    None => CircularArc::from_bulge(f(arc.start()), f(arc.end()), bulge).unwrap(),
+                })
+            }
+        })
+        .collect()
+}
+
 /// `pieces` and its variants: reversed arcs and segments, shuffled,
 /// mirrored, scaled by 2^-20 and 2^20; each with the factor of its size.
 pub fn variants(pieces: &[Piece], seed: u64) -> Vec<(&'static str, Vec<Piece>, f64)> {
@@ -260,22 +279,7 @@ pub fn variants(pieces: &[Piece], seed: u64) -> Vec<(&'static str, Vec<Piece>, f
     for i in (1..shuffled.len()).rev() {
         shuffled.swap(i, (rng.next_u64() % (i as u64 + 1)) as usize);
     }
-    let map = |f: &dyn Fn(Point) -> Point, flip: bool| -> Vec<Piece> {
-        pieces
-            .iter()
-            .map(|&p| match p {
-                Piece::Point(q) => Piece::Point(f(q)),
-                Piece::Segment(a, b) => Piece::Segment(f(a), f(b)),
-                Piece::Arc(arc) => {
-                    let bulge = if flip { -arc.bulge() } else { arc.bulge() };
-                    Piece::Arc(match arc.via() {
-                        Some(m) => CircularArc::through(f(arc.start()), f(m), f(arc.end())).unwrap(),
-                        None => CircularArc::from_bulge(f(arc.start()), f(arc.end()), bulge).unwrap(),
-                    })
-                }
-            })
-            .collect()
-    };
+    let map = |f: &dyn Fn(Point) -> Point, flip: bool| mapped(pieces, f, flip);
     let mirrored = map(&|q: Point| Point::new(-q.x, q.y), true);
     let small = map(&|q: Point| Point::new(q.x * 2f64.powi(-20), q.y * 2f64.powi(-20)), false);
     let large = map(&|q: Point| Point::new(q.x * 2f64.powi(20), q.y * 2f64.powi(20)), false);
