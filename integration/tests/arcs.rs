@@ -406,13 +406,17 @@ fn tiny_arcs_and_far_from_the_origin() {
         Piece::Point(p(0.5, 0.5)),
         Piece::Segment(p(0.0, 1.0), p(1.0, 1.0)),
     ];
-    // Right or refused: the arc four ulps long was answered in every
-    // variant with the separator of its end running to infinity through
-    // the segment above (its direction the arc's radius there, pure
-    // rounding), which the audit's far check now sees; the build's check
-    // of the edges to infinity refuses it (issue 32, not fixed).
-    let refused = right_or_refused("tiny arcs", &pieces, 1.0, 9);
-    assert!(refused.len() <= 6, "tiny arcs: refused {refused:?}");
+    // The arc four ulps long, its ends on the line x = 1 with the
+    // segment's end, lies beyond that line by its sagitta (2.2e-16, a
+    // rounding of its coordinates): it takes the vertex at infinity of its
+    // end and the segment's (`at_infinity`: an arc leaving a hull site
+    // that is its own end clearly outward). Taken for a tie, the end's
+    // separator ran to infinity through the segment above, answered in
+    // every variant and then refused by the check of the edges to
+    // infinity. The arc one ulp long was refused alone: its vertex missed
+    // its sites by less than the rounding of its coordinates, which the
+    // check's tolerance now counts.
+    check_all_ways("tiny arcs", &pieces, 1.0, 9);
     // a rounded rectangle 1e6 from the origin (not a power of two: the
     // geometry itself moves by rounding, the audit must still pass)
     let far: Vec<Piece> = rounded_rectangle(1e6, 1e6, 10.0, 6.0, 1.5);
@@ -1033,6 +1037,25 @@ fn minimised_regressions() {
             vec![Piece::Segment(p(0.0, 0.0), p(-1.46957615898e-15, -8.0)), arc(p(0.0, 6.0), p(4.0, 6.0), 1.0)],
             16.0,
         ),
+        // LibreCAD's Headphone.dxf: an arc whose start is 1e-11 outside a
+        // half circle. That start's cell is a sliver out to infinity round
+        // the half circle's radius, bounded by one edge with both ends at
+        // infinity; the arc reaches further in all its directions (4.7 at
+        // the radius) and takes both ends, and the start keeps that edge's
+        // middle, a 1e-11 cell (`growth::is_line`,
+        // `arc_middle_margin_on_line`). With the half circle in first it
+        // kept its cell at infinity (61 degrees of directions where the
+        // other arc reaches further), which passed `validate` and the grid
+        // audit; the far check sees it. Refused, once the build checked its
+        // edges to infinity, until the tree took the edge's middle.
+        (
+            "an arc ending a hair outside a half circle",
+            vec![
+                arc(p(14.26776695297, 0.0), p(10.73223304703, 0.0), 1.0),
+                arc(p(11.249999999998423, 1.2500000000240807), p(28.750000000001577, 1.2500000000240854), -1.3257299841847874),
+            ],
+            32.0,
+        ),
     ];
     for (k, (name, pieces, size)) in cases.into_iter().enumerate() {
         check_all_ways(name, &pieces, size, k as u64);
@@ -1074,25 +1097,6 @@ fn refused_or_right() {
             ],
             16.0,
             0,
-        ),
-        // LibreCAD's Headphone.dxf: an arc ending 1e-11 outside a half
-        // circle. That end keeps a sliver of directions at infinity, around
-        // the one from the half circle's centre, which sampled directions
-        // missed. It was answered in every variant, and wrong when the half
-        // circle goes in first (the order every variant here takes): the
-        // end kept its cell at infinity, 61 degrees of directions in which
-        // the other arc reaches 4.7 further out. The audit's far check
-        // (edges to infinity) sees it; the build's check of the edges to
-        // infinity (`directions_at_infinity_turn_once`) now refuses it as
-        // `Internal`. The other order is right (issue 32, not fixed)
-        (
-            "an arc ending a hair outside a half circle",
-            vec![
-                arc(p(14.26776695297, 0.0), p(10.73223304703, 0.0), 1.0),
-                arc(p(11.249999999998423, 1.2500000000240807), p(28.750000000001577, 1.2500000000240854), -1.3257299841847874),
-            ],
-            32.0,
-            6,
         ),
         // LibreCAD's Chair-sofa-V.dxf: two quarter circles meeting in a
         // cusp, both leaving it downward and curving apart. The vertex of

@@ -347,7 +347,10 @@ fn vertices_touch_their_arcs(diagram: &Diagram) -> Result<(), Error> {
 
 /// `vertices_touch_their_arcs` at one vertex.
 fn misses_its_sites(diagram: &Diagram, v: &Vertex) -> Result<(), Error> {
-    let tolerance = 1e-7 * (diagram.extent + v.clearance);
+    // and a few roundings of the position's coordinates, which can be
+    // larger than the whole input (an arc of an ulp's length at 0.5)
+    let rounding = 8.0 * f64::EPSILON * (v.position.x.abs() + v.position.y.abs());
+    let tolerance = 1e-7 * (diagram.extent + v.clearance) + rounding;
     let miss = v.sites.iter().map(|&s| (diagram.sites[s.index()].distance(v.position) - v.clearance).abs()).fold(0.0, f64::max);
     if miss <= tolerance {
         return Ok(());

@@ -187,7 +187,21 @@ impl Construction {
     /// infinity in a whole range of directions, splitting another site's),
     /// an edge at infinity too.
     fn may_keep_middle(&self, h: HalfEdgeId) -> bool {
-        self.is_finite_edge(h) || (self.inserting_arc.is_some() && (self.is_edge_at_infinity(h) || self.is_ray(h)))
+        self.is_finite_edge(h)
+            || (self.inserting_arc.is_some() && (self.is_edge_at_infinity(h) || self.is_ray(h) || self.is_line(h)))
+    }
+
+    /// Whether `h` is a whole bisector between two sites: both ends at
+    /// infinity, neither side the point at infinity. An arc's end a hair
+    /// outside another arc's circle has such a cell (no finite vertex: a
+    /// sliver out to infinity round that circle's radius); an arc ending
+    /// there and reaching further out takes both its vertices at infinity,
+    /// and the end keeps the bisector's middle.
+    fn is_line(&self, h: HalfEdgeId) -> bool {
+        self.store.is_at_infinity(h.origin())
+            && self.store.is_at_infinity(self.store.target(h))
+            && self.store.left(h) != INFINITE
+            && self.store.right(h) != INFINITE
     }
 
     /// Whether `h` is an unbounded edge between two sites: one end at
@@ -213,6 +227,17 @@ impl Construction {
         if let Some(arc) = self.inserting_arc {
             if self.is_edge_at_infinity(h) {
                 return self.arc_middle_at_infinity(h, &arc);
+            }
+            if self.is_line(h) {
+                let sides = [self.store.left(h), self.store.right(h)].map(|s| self.site_geometry(s));
+                let toward = [h.origin(), self.store.target(h)].map(|v| self.store.position[v.index()]);
+                return crate::geometry::arcs::arc_predicates::arc_middle_margin_on_line(
+                    (&sides[0], &sides[1]),
+                    toward[0],
+                    toward[1],
+                    &arc,
+                )
+                .unwrap_or(MiddleMargin::of(f64::NEG_INFINITY));
             }
         }
         let sides = [self.store.left(h), self.store.right(h)];

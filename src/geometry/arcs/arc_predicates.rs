@@ -443,6 +443,45 @@ pub(crate) fn arc_middle_margin_on_ray(edge: FiniteEdge, arc: &CircularArc) -> M
     MiddleMargin::of(fault::perturb(from_chord.max(round)))
 }
 
+/// [`arc_middle_margin`] for an edge with both ends at infinity between
+/// two sites, one of them a point `p` (a whole bisector: an arc's end a
+/// hair outside another arc's circle keeps a cell with no finite vertex,
+/// a sliver out to infinity round that circle's radius). Its finite point
+/// nearest `p` is halfway from `p` to its foot on the other site (equally
+/// far from both, the foot being the other's nearest point to it); the
+/// edge is that point and the two rays from it toward its ends'
+/// directions (`toward_origin`, `toward_target`). `None` where neither site is a
+/// point.
+pub(crate) fn arc_middle_margin_on_line(
+    (left, right): (&Site, &Site),
+    toward_origin: Point,
+    toward_target: Point,
+    arc: &CircularArc,
+) -> Option<MiddleMargin> {
+    let (p, other) = match (left.as_point(), right.as_point()) {
+        (Some(p), _) => (p, right),
+        (None, Some(p)) => (p, left),
+        (None, None) => return None,
+    };
+    let foot = other.nearest_point(p);
+    let middle = Point::new(0.5 * (p.x + foot.x), 0.5 * (p.y + foot.y));
+    let reach = 1e3 * (middle.x.abs() + middle.y.abs() + p.distance(foot) + 1.0);
+    let far = |d: Point| Point::new(middle.x + reach * d.x, middle.y + reach * d.y);
+    let there = FiniteEdge { left: *left, right: *right, from: middle, to: middle };
+    let at_middle = excess_at(&there, arc, middle).0;
+    let to_target = FiniteEdge { left: *left, right: *right, from: middle, to: far(toward_target) };
+    let to_origin = FiniteEdge { left: *right, right: *left, from: middle, to: far(toward_origin) };
+    let rays = [to_target, to_origin].map(|ray| arc_middle_margin_on_ray(ray, arc).margin());
+    Some(MiddleMargin::of(fault::perturb(at_middle.max(rays[0]).max(rays[1]))))
+}
+
+/// The excess of the new arc's distance over the edge's own at `q`, and
+/// the edge's own distance there (see `largest_excess`).
+fn excess_at(edge: &FiniteEdge, arc: &CircularArc, q: Point) -> (f64, f64) {
+    let own = 0.5 * (edge.left.distance(q) + edge.right.distance(q));
+    (if arc.spans(q) { Site::Arc(*arc).distance(q) - own } else { outside_cone(arc, q) }, own)
+}
+
 /// The largest excess of the new arc's distance over the edge's own at
 /// its points `point_at(t)`, `t` over the increasing `fractions`; where
 /// none is positive, refined between the neighbours of the largest by a
@@ -458,13 +497,8 @@ pub(crate) fn arc_middle_margin_on_ray(edge: FiniteEdge, arc: &CircularArc) -> M
 /// as it lies outside the cone: an edge of the arc's end running round it
 /// keeps its stretch past the arc's end.
 fn largest_excess(edge: &FiniteEdge, arc: &CircularArc, fractions: &[f64], point_at: impl Fn(f64) -> Option<Point>) -> f64 {
-    let site = Site::Arc(*arc);
     // (the excess, and the edge's own distance there)
-    let excess = |t: f64| {
-        let q = point_at(t)?;
-        let own = 0.5 * (edge.left.distance(q) + edge.right.distance(q));
-        Some((if arc.spans(q) { site.distance(q) - own } else { outside_cone(arc, q) }, own))
-    };
+    let excess = |t: f64| Some(excess_at(edge, arc, point_at(t)?));
     let mut best = (f64::NEG_INFINITY, 0.0, None);
     for (k, &t) in fractions.iter().enumerate() {
         if let Some((e, own)) = excess(t) {

@@ -46,6 +46,18 @@ pub(crate) fn arc_conflict_at_infinity(arc: &CircularArc, d: Point, x: &Site, y:
     if reach - level < -tie {
         return false;
     }
+    // One of x and y is an end of the arc (on L exactly, where that site
+    // touches it) and the arc leaves it clearly to the far side of L: the
+    // arc's points next to it reach beyond L, by however little (an arc
+    // of a few ulps, whose sagitta is a rounding of its coordinates, lies
+    // beyond the line its ends are on as a bigger one would)
+    let leaves_beyond = |e: Point| {
+        let t = arc.tangent_into(e);
+        [x, y].iter().any(|s| s.as_point() == Some(e)) && t.x * d.x + t.y * d.y > ALONG
+    };
+    if leaves_beyond(arc.start()) || leaves_beyond(arc.end()) {
+        return true;
+    }
     // along L, counter-clockwise round the hull
     let u = Point::new(-d.y, d.x);
     let along = |p: Point| u.x * p.x + u.y * p.y;
@@ -175,6 +187,22 @@ mod tests {
         assert!(!arc_conflict_at_infinity(&across, p(1.0, 0.0), &x, &y));
         let along = CircularArc::from_bulge(p(1.0, 0.0), p(0.0, 1.0), 0.4142135623730951).unwrap();
         assert!(arc_conflict_at_infinity(&along, p(1.0, 0.0), &x, &y));
+    }
+
+    #[test]
+    fn an_arc_of_a_few_ulps_leaving_its_end_on_the_hull_line_outward() {
+        // hull points (1, 1) and the arc's end (1, 4 ulps), the line x = 1,
+        // outward (1, 0); the arc from (1, 0) bulges right of x = 1 by
+        // 2.2e-16, a rounding of 1 (a tie by the support functions), but
+        // leaves its end at 53 degrees outward: it reaches beyond the line
+        let ulp = f64::EPSILON;
+        let (top, end) = (Site::Point(p(1.0, 1.0)), Site::Point(p(1.0, 4.0 * ulp)));
+        let out = CircularArc::from_bulge(p(1.0, 0.0), p(1.0, 4.0 * ulp), 0.5).unwrap();
+        assert!(arc_conflict_at_infinity(&out, p(1.0, 0.0), &top, &end));
+        assert!(arc_conflict_at_infinity(&out, p(1.0, 0.0), &end, &top));
+        // bulging left of the line, into the hull: no conflict
+        let inward = CircularArc::from_bulge(p(1.0, 0.0), p(1.0, 4.0 * ulp), -0.5).unwrap();
+        assert!(!arc_conflict_at_infinity(&inward, p(1.0, 0.0), &top, &end));
     }
 
     #[test]
