@@ -193,3 +193,95 @@ fn a_straight_joint_has_the_same_topology_text_in_every_order() {
         assert_eq!(shape(&order), first, "order {order:?}");
     }
 }
+
+/// The topology text names sites by input position; this writes each name
+/// as its site's coordinates instead, so that texts of one input given in
+/// two orders can be compared line by line.
+fn text_by_coordinates(d: &segvoronoi::Diagram, segments: &[Segment], text: &str) -> Vec<String> {
+    let site = |word: &str| -> String {
+        if let Some(k) = word.strip_prefix('P') {
+            let p = d.site(segvoronoi::SiteId::from_index(k.parse().unwrap())).unwrap();
+            format!("{p:?}")
+        } else if let Some(j) = word.strip_prefix('S') {
+            let mut ends = segments[j.parse::<usize>().unwrap()];
+            ends.sort_by(|a, b| a.partial_cmp(b).unwrap());
+            format!("{ends:?}")
+        } else {
+            word.to_string()
+        }
+    };
+    let mut lines: Vec<String> = Vec::new();
+    let mut section: Vec<String> = Vec::new();
+    for line in text.lines() {
+        if line.split(' ').nth(1).is_some_and(|w| w.parse::<usize>().is_ok()) && !line.starts_with(['P', 'S', 'A']) {
+            section.sort();
+            lines.append(&mut section);
+            lines.push(line.to_string());
+            continue;
+        }
+        let mut words: Vec<String> = line.split(' ').map(site).collect();
+        words.sort();
+        section.push(words.join(" "));
+    }
+    section.sort();
+    lines.append(&mut section);
+    lines
+}
+
+/// Degenerate vertices (cocircular points, segments along the grid lines
+/// through them, tangent segments round one circle) are cut into degree-3
+/// ones the same way whatever the order of the input, and so whatever the
+/// insertion order: the whole text, `EDGES` and `FACES` included, names
+/// read as coordinates, is the same for the input reversed and shuffled
+/// (`topology::canonical_cut`; before it, `EDGES` and `FACES` of the grid
+/// differed, only `VPAIRS` and `VVERTICES` agreed).
+#[test]
+fn degenerate_vertices_are_cut_the_same_way_for_the_input_in_any_order() {
+    use segvoronoi::{Builder, TopologyOptions};
+    let grid: Vec<[f64; 2]> = (0..10).flat_map(|i| (0..10).map(move |j| [i as f64, j as f64])).collect();
+    let columns: Vec<Segment> =
+        (0..9).flat_map(|i| (0..10).step_by(3).map(move |j| [[i as f64, j as f64], [i as f64 + 1.0, j as f64]])).collect();
+    let octagons: Vec<[f64; 2]> = (1..4)
+        .flat_map(|r| (0..8).map(move |k| [r as f64 * (k as f64 * TAU / 8.0).cos(), r as f64 * (k as f64 * TAU / 8.0).sin()]))
+        .chain(std::iter::once([0.0, 0.0]))
+        .collect();
+    let families: Vec<(&str, Vec<[f64; 2]>, Vec<Segment>)> = vec![
+        ("grid", grid.clone(), vec![]),
+        ("grid with segments along its lines", grid, columns),
+        ("concentric octagons", octagons, vec![]),
+        ("tangent segments", vec![[0.0, 0.0]], tangent_segments(12)),
+    ];
+    for (name, points, segments) in families {
+        let text = |points: &[[f64; 2]], segments: &[Segment]| {
+            let mut b = Builder::new();
+            b.add_points(points.iter().copied()).unwrap();
+            b.add_segments(segments.iter().copied()).unwrap();
+            let d = b.build().unwrap();
+            let text = d.topology(TopologyOptions::default().with_voronoi_pairs(true));
+            text_by_coordinates(&d, segments, &text)
+        };
+        let first = text(&points, &segments);
+        let mut seed = 7u64;
+        for way in ["reversed", "shuffled 1", "shuffled 2", "shuffled 3"] {
+            let (mut p, mut s) = (points.clone(), segments.clone());
+            if way == "reversed" {
+                p.reverse();
+                s.reverse();
+            } else {
+                for k in (1..p.len()).rev() {
+                    seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                    p.swap(k, (seed >> 33) as usize % (k + 1));
+                }
+                for k in (1..s.len()).rev() {
+                    seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                    s.swap(k, (seed >> 33) as usize % (k + 1));
+                }
+            }
+            let other = text(&p, &s);
+            assert_eq!(other.len(), first.len(), "{name} {way}");
+            for (a, b) in first.iter().zip(&other) {
+                assert_eq!(a, b, "{name} {way}: the texts differ");
+            }
+        }
+    }
+}

@@ -22,6 +22,15 @@
 //! (`predicates::in_circle`), by the certified segment predicate
 //! (`geometry::segments::oracle`) otherwise. [`ZERO_LENGTH`] is a tolerance a user may
 //! ask for instead ([`TopologyOptions::zero_length_tolerance`]).
+//!
+//! A degenerate vertex (four or more sites on one circle) is stored as
+//! degree-3 vertices joined by zero-length edges, and which cut the
+//! construction leaves depends on the insertion order. `EDGES` and `FACES`
+//! give each such vertex one cut whatever the order: the fan from the
+//! site round it that comes first by its coordinates (decided exactly, as
+//! above; arcs keep the construction's cut). So the text of an input is
+//! the same for the input in any order, names read as the sites they
+//! stand for, and for any order a parallel build inserts in.
 
 use crate::query::partition::Partition;
 use std::fmt::Write;
@@ -113,14 +122,97 @@ impl Diagram {
     /// ```
     pub fn topology(&self, options: TopologyOptions) -> String {
         let mut out = String::new();
-        let edges = self.edges().map(|e| vec![self.name(e.sites[0]), self.name(e.sites[1])]).collect();
+        let (edges, faces) = self.edges_and_faces();
         write_section(&mut out, "EDGES", edges);
-        let faces = self.vertices().map(|v| v.sites.iter().map(|&s| self.name(s)).collect()).collect();
         write_section(&mut out, "FACES", faces);
         if options.voronoi_pairs {
             self.write_voronoi_pairs(&mut out, options.zero_length_tolerance);
         }
         out
+    }
+
+    /// The `EDGES` and `FACES` lines, each degenerate vertex cut the same
+    /// way whatever the insertion order and the order of the input
+    /// (`canonical_cut`).
+    fn edges_and_faces(&self) -> (Vec<Vec<Name>>, Vec<Vec<Name>>) {
+        let pair = |e: &crate::query::Edge| vec![self.name(e.sites[0]), self.name(e.sites[1])];
+        let names = |sites: &[SiteId]| sites.iter().map(|&s| self.name(s)).collect::<Vec<Name>>();
+        let mut joined = Partition::new(self.vertex_count());
+        let mut inside = vec![false; self.edges.len()];
+        let mut degenerate = vec![false; self.vertex_count()];
+        for e in self.edges() {
+            if let Some((a, b)) = self.finite_vertices_of(&e) {
+                if self.is_zero_length_edge(a, b) {
+                    joined.join(a.index(), b.index());
+                    inside[e.id.index()] = true;
+                    degenerate[a.index()] = true;
+                    degenerate[b.index()] = true;
+                }
+            }
+        }
+        let mut faces = Vec::with_capacity(self.vertex_count());
+        // (cluster, vertex) for the vertices of zero-length edges, grouped
+        let mut members: Vec<(usize, VertexId)> = Vec::new();
+        for v in self.vertices() {
+            if degenerate[v.id.index()] {
+                members.push((joined.find(v.id.index()), v.id));
+            } else {
+                faces.push(names(&v.sites));
+            }
+        }
+        members.sort_unstable_by_key(|&(root, v)| (root, v.index()));
+        let mut diagonals = Vec::new();
+        let mut kept = std::collections::HashSet::new();
+        for cluster in members.chunk_by(|x, y| x.0 == y.0) {
+            let root = cluster[0].0;
+            let triangles: Vec<[SiteId; 3]> = cluster.iter().map(|&(_, v)| self.store.sites_of(v)).collect();
+            // a cluster at a shared endpoint (radius 0): its cut is the
+            // endpoint's separators', not a matter of cocircular sites
+            let at_a_point = cluster.iter().any(|&(_, v)| self.store.clearance[v.index()] == 0.0);
+            let cut = if at_a_point || !self.decided_at_every_scale(&triangles) {
+                None
+            } else {
+                canonical_cut(&triangles, |s| self.sites.get(s.index()).map(site_key))
+            };
+            match cut {
+                Some((fan, cuts)) => {
+                    faces.extend(fan.iter().map(|t| names(t)));
+                    diagonals.extend(cuts.iter().map(|d| names(d)));
+                }
+                None => {
+                    faces.extend(triangles.iter().map(|t| names(t)));
+                    kept.insert(root);
+                }
+            }
+        }
+        let mut edges: Vec<Vec<Name>> = self
+            .edges()
+            .filter(|e| {
+                !inside[e.id.index()] || self.finite_vertices_of(e).is_some_and(|(a, _)| kept.contains(&joined.find(a.index())))
+            })
+            .map(|e| pair(&e))
+            .collect();
+        edges.extend(diagonals);
+        (edges, faces)
+    }
+
+    /// Whether the zero-length test of a cluster's edges gives one answer
+    /// whatever the input's scale: its sites' nonzero coordinates span
+    /// less than 2^150 (beyond, the exact test's products of four
+    /// differences can fall below the range of `f64` at one scale and not
+    /// at another, and a cluster found at one scale is missed at the
+    /// other). Such a cluster keeps the construction's cut.
+    fn decided_at_every_scale(&self, triangles: &[[SiteId; 3]]) -> bool {
+        let (mut least, mut most) = (f64::INFINITY, 0f64);
+        for s in triangles.iter().flatten() {
+            for p in self.sites[s.index()].ends() {
+                for c in [p.x.abs(), p.y.abs()].into_iter().filter(|&c| c > 0.0) {
+                    least = least.min(c);
+                    most = most.max(c);
+                }
+            }
+        }
+        !(most > least * 2f64.powi(150))
     }
 
     /// The two ends of an edge with two finite ends, or `None` for rays and
@@ -179,9 +271,86 @@ impl Diagram {
     }
 }
 
+/// A site's place in an order that does not depend on how the input was
+/// numbered: its coordinates (a point as a segment of no length, a
+/// segment from its lesser end). `None` for an arc.
+fn site_key(site: &crate::geometry::Site) -> Option<[f64; 4]> {
+    use crate::geometry::Site;
+    match *site {
+        Site::Point(p) => Some([p.x, p.y, p.x, p.y]),
+        Site::Segment { a, b } => {
+            let (lo, hi) = if (a.x, a.y) <= (b.x, b.y) { (a, b) } else { (b, a) };
+            Some([lo.x, lo.y, hi.x, hi.y])
+        }
+        Site::Arc(_) => None,
+    }
+}
+
+/// One cut of a degenerate vertex into degree-3 ones, the same for every
+/// cut given: from `triangles`, the sites of the vertices joined by
+/// zero-length edges (each counter-clockwise), the sites round the point
+/// they share, counter-clockwise, are the sides that no two triangles
+/// share. The fan from the least of them by `key` (their coordinates: the
+/// answer is the same for the input in any order): its triangles and its
+/// diagonals (the zero-length edges). `None` where the sides do not close
+/// into one ring of distinct sites (an arc can touch one circle twice) or
+/// a site has no key (arcs, whose zero-length test is not exact).
+fn canonical_cut(
+    triangles: &[[SiteId; 3]],
+    key: impl Fn(SiteId) -> Option<Option<[f64; 4]>>,
+) -> Option<(Vec<[SiteId; 3]>, Vec<[SiteId; 2]>)> {
+    let mut sides: Vec<(SiteId, SiteId)> = triangles.iter().flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])]).collect();
+    sides.sort_unstable_by_key(|&(a, b)| (a.index(), b.index()));
+    let key_of = |&(a, b): &(SiteId, SiteId)| (a.index(), b.index());
+    let shared = |a: SiteId, b: SiteId| sides.binary_search_by_key(&(b.index(), a.index()), key_of).is_ok();
+    // the ring's sides, sorted by their first site (as `sides` is)
+    let next: Vec<(SiteId, SiteId)> = sides.iter().copied().filter(|&(a, b)| !shared(a, b)).collect();
+    if next.windows(2).any(|w| w[0].0 == w[1].0) {
+        return None;
+    }
+    let following = |a: SiteId| next.binary_search_by_key(&a.index(), |&(x, _)| x.index()).ok().map(|k| next[k].1);
+    let ring_length = triangles.len() + 2;
+    let keys: Vec<(SiteId, [f64; 4])> = next.iter().map(|&(s, _)| Some((s, key(s)??))).collect::<Option<_>>()?;
+    let least = |x: &[f64; 4], y: &[f64; 4]| x.iter().zip(y).map(|(a, b)| a.total_cmp(b)).find(|o| o.is_ne());
+    let (apex, apex_key) = *keys.iter().min_by(|x, y| least(&x.1, &y.1).unwrap_or(std::cmp::Ordering::Equal))?;
+    // two sites with one key (a segment given twice): no order to go by
+    if keys.iter().filter(|(_, k)| least(k, &apex_key).is_none()).count() > 1 {
+        return None;
+    }
+    let mut ring = vec![apex];
+    while ring.len() <= ring_length {
+        let following = following(*ring.last()?)?;
+        if following == apex {
+            break;
+        }
+        ring.push(following);
+    }
+    if ring.len() != ring_length || next.len() != ring_length {
+        return None;
+    }
+    let fan = (1..ring_length - 1).map(|k| [apex, ring[k], ring[k + 1]]).collect();
+    let diagonals = (2..ring_length - 1).map(|k| [apex, ring[k]]).collect();
+    Some((fan, diagonals))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn both_cuts_of_four_cocircular_sites_give_one_fan() {
+        let s = SiteId::from_index;
+        // the square's corners 1, 2, 3, 4 counter-clockwise, cut by either
+        // diagonal; keys put site 3 first
+        let key = |x: SiteId| Some(Some([[0.0; 4], [5.0; 4], [6.0; 4], [1.0; 4], [7.0; 4]][x.index()]));
+        let one = canonical_cut(&[[s(1), s(2), s(3)], [s(1), s(3), s(4)]], key).unwrap();
+        let other = canonical_cut(&[[s(2), s(3), s(4)], [s(2), s(4), s(1)]], key).unwrap();
+        assert_eq!(one, other);
+        assert_eq!(one.0, vec![[s(3), s(4), s(1)], [s(3), s(1), s(2)]]);
+        assert_eq!(one.1, vec![[s(3), s(1)]]);
+        // a side given twice is no ring: no cut
+        assert!(canonical_cut(&[[s(1), s(2), s(3)], [s(1), s(2), s(4)]], key).is_none());
+    }
 
     #[test]
     fn arcs_are_named_last() {
