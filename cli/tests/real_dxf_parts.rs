@@ -196,12 +196,12 @@ fn every_part_of_librecads_library_is_answered() {
         "with --split-crossings, of the {refused} refused: {split_domains} answered and checked, {} refused by the arcs' own checks: {split_internal:?}",
         split_internal.len()
     );
-    // what the library gives now (2026-12-06: 434 answered, 21 refused as
-    // internal: arcs' vertex checks after the split's cuts, offsets beside
-    // near-tangent cusps and pieces 1e-11 long, splits that did not
-    // converge)
-    assert!(split_domains >= 438, "{split_domains} split domains");
-    assert!(split_internal.len() <= 17, "{} split refused as internal", split_internal.len());
+    // what the library gives now (2026-12-06, the fourteenth session: 441
+    // answered, 14 refused as internal: arcs' vertex checks after the
+    // split's cuts, offsets beside near-tangent cusps and pieces 1e-11
+    // long, splits that did not converge; kin3 answered since)
+    assert!(split_domains >= 440, "{split_domains} split domains");
+    assert!(split_internal.len() <= 15, "{} split refused as internal", split_internal.len());
     if !answered_now.is_empty() {
         eprintln!("answered now, and checked, though listed in KNOWN_REFUSED (take them off): {answered_now:?}");
     }

@@ -1409,3 +1409,75 @@ fn nearly_straight_arcs() {
     let made = b.add_bulged_polyline(&[([0.0, 0.0], 1e-17), ([4.0, 0.0], 0.0)], false).unwrap();
     assert_eq!(made, vec![ChainPiece::Segment(0)]);
 }
+
+/// LibreCAD's kin3.dxf minimised: a circle of radius 0.75 with a circle of
+/// radius 2 touching it from above (two arcs meeting at the tangent point)
+/// and an arc of radius 2 touching it from inside below, as the CLI reads
+/// them (the circle cut where the arcs end on it), split. The drawing's
+/// rounded numbers make the tangencies crossings; the split cuts the
+/// circles at both roots, 4e-8 apart, and leaves an arc piece of that
+/// size. Edges from a circle's centre to those pieces
+/// were tracked by their angle round that centre, which is rounding there:
+/// every offset inside and out was refused (a piece ending on the input).
+/// An edge with an end at its arc's centre is now tracked along the radius
+/// (`conic::from_the_centre`). Inside, the offset is the circle of radius
+/// 0.75 - d exactly; outside, the chords' answer.
+#[test]
+fn a_circle_between_two_it_touches_split_at_both_roots() {
+    let p = Point::new;
+    let (cx, cy) = (15.4483276641, -0.239048498506);
+    let on = |y: f64, degrees: f64| p(cx + 2.0 * degrees.to_radians().cos(), y + 2.0 * degrees.to_radians().sin());
+    // the drawing's arcs as the CLI reads them, the circle cut where they
+    // end on it (within 1e-9: the CLI's snapping), so that they touch it
+    // at its own vertices
+    let (top, bottom) = (p(cx, 0.51095150149), p(cx, -0.98904849851));
+    let sweep = (29.638383688f64.to_radians() / 4.0).tan();
+    let obstacles = [
+        CircularArc::from_bulge(bottom, on(1.01095150149, 299.638383688), sweep).unwrap(),
+        CircularArc::from_bulge(top, on(2.51095150149, 299.638383688), sweep).unwrap(),
+        CircularArc::from_bulge(on(2.51095150149, 240.361616312), top, sweep).unwrap(),
+    ];
+    let q = (std::f64::consts::PI / 8.0).tan();
+    let ring: Ring = vec![(p(cx + 0.75, cy), q), (top, q), (p(cx - 0.75, cy), q), (bottom, q)];
+    let build = |chords: bool| {
+        let mut b = Builder::new();
+        if chords {
+            let ring: Ring = densified_ring(&ring).into_iter().map(|q| (q, 0.0)).collect();
+            b.add_bulged_polygon(std::slice::from_ref(&ring)).unwrap();
+            for a in &obstacles {
+                let points: Vec<Point> = (0..=256).map(|k| a.point_at(k as f64 / 256.0)).collect();
+                for w in points.windows(2) {
+                    b.add_segment([w[0], w[1]]).unwrap();
+                }
+            }
+        } else {
+            b.add_bulged_polygon(std::slice::from_ref(&ring)).unwrap();
+            for a in &obstacles {
+                b.add_arc(*a).unwrap();
+            }
+        }
+        b.split_crossings(true).build().unwrap()
+    };
+    let (d, reference) = (build(false), build(true));
+    for distance in [-0.1, -0.25, -0.4, -0.5, -0.74] {
+        let area = d.offset(distance).unwrap_or_else(|e| panic!("at {distance}: {e}")).area();
+        let want = std::f64::consts::PI * (0.75 + distance) * (0.75 + distance);
+        assert!((area - want).abs() <= 1e-9 * want, "at {distance}: area {area}, the circle's {want}");
+    }
+    // Outside: right or refused, never wrong. Refused for now: the split
+    // of this input (unlike the CLI's of the drawing, which snaps the
+    // drawing's points within 1e-9 first, and whose offsets
+    // `real_dxf_parts.rs` checks) leaves a loop inside the circle round a
+    // piece of rounding size, and the offsets' check refuses it.
+    for distance in [0.1, 0.5, 2.0] {
+        match d.offset(distance) {
+            Ok(offset) => {
+                let want = reference.offset(distance).unwrap();
+                assert_eq!(offset.loops.len(), want.loops.len(), "at {distance}: loops");
+                let (area, want) = (offset.area(), want.area());
+                assert!((area - want).abs() <= 1e-3 * want, "at {distance}: area {area} against the chords' {want}");
+            }
+            Err(e) => assert_eq!(e.kind(), segvoronoi::ErrorKind::Internal, "at {distance}: {e}"),
+        }
+    }
+}

@@ -185,7 +185,8 @@ impl ConicTrack {
         if !(c.is_finite() && arc.radius().is_finite() && track.along.iter().all(|a| a.is_finite())) {
             return None;
         }
-        if track.radial.is_none() && track.bent.is_none() && (track.along[1] - track.along[0]).abs() <= NARROW {
+        let narrow = (track.along[1] - track.along[0]).abs() <= NARROW;
+        if track.radial.is_none() && track.bent.is_none() && (narrow || from_the_centre(c, arc.radius(), ends)) {
             track.radial = narrow_ray(c, [start, end]);
         }
         track.knots = track.find_knots();
@@ -538,6 +539,22 @@ fn narrow_ray(c: Point, ends: [ConicEnd; 2]) -> Option<(Point, [f64; 2])> {
         ConicEnd::Towards(_) => f64::INFINITY,
     };
     u.is_finite().then(|| (u, ends.map(rho)))
+}
+
+/// Whether one end of an edge is the arc's centre `c` (to 1e-9 of the
+/// radius) and the other is not, nor outside the circle. Such an edge
+/// lies on the radius from the centre to where the other site touches the
+/// circle (a distance is 1-Lipschitz, so the arc's own inside, the radius
+/// less the distance from the centre, meets the other site's along no
+/// other ray; an edge that goes on outside can turn there), and the
+/// centre's angle is rounding: between the pieces of a circle cut at both roots
+/// of a tangency (4e-8 apart: LibreCAD's kin3), the offsets' crossings
+/// came out at the far end.
+fn from_the_centre(c: Point, radius: f64, ends: [Option<Point>; 2]) -> bool {
+    let at_centre = |e: Option<Point>| e.is_some_and(|p| c.distance(p) <= 1e-9 * radius);
+    let not_outside = |e: Option<Point>| e.is_some_and(|p| c.distance(p) <= (1.0 + 1e-9) * radius);
+    (at_centre(ends[0]) && !at_centre(ends[1]) && not_outside(ends[1]))
+        || (at_centre(ends[1]) && !at_centre(ends[0]) && not_outside(ends[0]))
 }
 
 /// Of samples `from..=to`, the one with the highest clearance (`peak`)
