@@ -1481,3 +1481,44 @@ fn a_circle_between_two_it_touches_split_at_both_roots() {
         }
     }
 }
+
+/// LibreCAD's mik2.dxf as the library is given it with exact numbers: a
+/// circle of radius 4, a line along the tangent at its top and a line out
+/// from its rightmost point, split. Here the tangency is exact and decided
+/// so (the drawing as the program reads it is split at both roots of it,
+/// 1.7e-7 apart: `cli/tests/real_dxf_parts.rs`,
+/// `minimised_tangencies_split_at_both_roots`). Inside, the offset is the
+/// circle of radius 4 - d exactly; outside, the chords' answer or a
+/// refusal.
+#[test]
+fn a_circle_under_its_tangent_split_at_both_roots() {
+    let p = Point::new;
+    let ring: Ring = vec![(p(13.0, 0.0), 1.0), (p(5.0, 0.0), 1.0)];
+    let lines = [[p(18.0, 0.0), p(13.0, 0.0)], [p(13.000000000000002, 4.0), p(5.0, 4.0)]];
+    let build = |ring: &Ring| {
+        let mut b = Builder::new();
+        b.add_bulged_polygon(std::slice::from_ref(ring)).unwrap();
+        for l in &lines {
+            b.add_segment(*l).unwrap();
+        }
+        b.split_crossings(true).build().unwrap()
+    };
+    let d = build(&ring);
+    let reference = build(&densified_ring(&ring).into_iter().map(|q| (q, 0.0)).collect());
+    for distance in [-0.5, -1.0, -2.0, -3.9] {
+        let area = d.offset(distance).unwrap_or_else(|e| panic!("at {distance}: {e}")).area();
+        let want = std::f64::consts::PI * (4.0 + distance) * (4.0 + distance);
+        assert!((area - want).abs() <= 1e-9 * want, "at {distance}: area {area}, the circle's {want}");
+    }
+    for distance in [0.5, 2.0] {
+        match d.offset(distance) {
+            Ok(offset) => {
+                let want = reference.offset(distance).unwrap();
+                assert_eq!(offset.loops.len(), want.loops.len(), "at {distance}: loops");
+                let (area, want) = (offset.area(), want.area());
+                assert!((area - want).abs() <= 1e-3 * want, "at {distance}: area {area} against the chords' {want}");
+            }
+            Err(e) => assert_eq!(e.kind(), segvoronoi::ErrorKind::Internal, "at {distance}: {e}"),
+        }
+    }
+}

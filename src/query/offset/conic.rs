@@ -314,12 +314,22 @@ impl ConicTrack {
             }
             (radius, 0.0)
         };
+        // A difference within the rounding of its terms is taken as beyond:
+        // where the two distances tie along a stretch of the ray to
+        // rounding, the edge is the end of it nearest the circle (between
+        // an arc and its chord a rounding apart, split off a tangency, the
+        // difference is the sagitta, 1e-15, everywhere below the chord, and
+        // its sign noise sent the edge 1 below it: LibreCAD's mik2).
+        // (the rounding of the distances themselves; the centre's distance
+        // from the origin is left out, so that far out the threshold does
+        // not move the edge by more than its own rounding)
+        let noise = |rho: f64| 8.0 * f64::EPSILON * (radius + rho.abs());
         for _ in 0..200 {
             let mid = 0.5 * (near + far);
             if mid == near || mid == far {
                 break;
             }
-            if beyond(mid) > 0.0 {
+            if beyond(mid) > -noise(mid) {
                 far = mid;
             } else {
                 near = mid;
