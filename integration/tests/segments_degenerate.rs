@@ -231,10 +231,10 @@ fn text_by_coordinates(d: &segvoronoi::Diagram, segments: &[Segment], text: &str
 /// Degenerate vertices (cocircular points, segments along the grid lines
 /// through them, tangent segments round one circle) are cut into degree-3
 /// ones the same way whatever the order of the input, and so whatever the
-/// insertion order: the whole text, `EDGES` and `FACES` included, names
-/// read as coordinates, is the same for the input reversed and shuffled
-/// (`topology::canonical_cut`; before it, `EDGES` and `FACES` of the grid
-/// differed, only `VPAIRS` and `VVERTICES` agreed).
+/// insertion order: the whole text with `canonical_cuts`, `EDGES` and
+/// `FACES` included, names read as coordinates, is the same for the input
+/// reversed and shuffled (`topology::canonical_cut`; without it, `EDGES`
+/// and `FACES` of the grid differ, only `VPAIRS` and `VVERTICES` agree).
 #[test]
 fn degenerate_vertices_are_cut_the_same_way_for_the_input_in_any_order() {
     use segvoronoi::{Builder, TopologyOptions};
@@ -257,7 +257,7 @@ fn degenerate_vertices_are_cut_the_same_way_for_the_input_in_any_order() {
             b.add_points(points.iter().copied()).unwrap();
             b.add_segments(segments.iter().copied()).unwrap();
             let d = b.build().unwrap();
-            let text = d.topology(TopologyOptions::default().with_voronoi_pairs(true));
+            let text = d.topology(TopologyOptions::default().with_voronoi_pairs(true).with_canonical_cuts(true));
             text_by_coordinates(&d, segments, &text)
         };
         let first = text(&points, &segments);

@@ -25,12 +25,14 @@
 //!
 //! A degenerate vertex (four or more sites on one circle) is stored as
 //! degree-3 vertices joined by zero-length edges, and which cut the
-//! construction leaves depends on the insertion order. `EDGES` and `FACES`
-//! give each such vertex one cut whatever the order: the fan from the
-//! site round it that comes first by its coordinates (decided exactly, as
-//! above; arcs keep the construction's cut). So the text of an input is
-//! the same for the input in any order, names read as the sites they
-//! stand for, and for any order a parallel build inserts in.
+//! construction leaves depends on the insertion order. By default `EDGES`
+//! and `FACES` list the diagram's own edges and vertices, as its arrays
+//! hold them. With [`TopologyOptions::canonical_cuts`] they give each such
+//! vertex one cut whatever the order: the fan from the site round it that
+//! comes first by its coordinates (decided exactly, as above; arcs keep
+//! the construction's cut). That text is the same for the input in any
+//! order, names read as the sites they stand for, and for any order a
+//! parallel build inserts in.
 
 use crate::query::partition::Partition;
 use std::fmt::Write;
@@ -61,12 +63,22 @@ pub struct TopologyOptions {
     /// diagonal as zero-length too (`None`, the default: only edges whose
     /// sites are exactly cocircular).
     pub zero_length_tolerance: Option<f64>,
+    /// Cut every degenerate vertex one way in `EDGES` and `FACES`, the
+    /// same for the input in any order (see the module documentation).
+    /// Off by default: then `FACES` lists the diagram's own vertices, as
+    /// its arrays hold them.
+    pub canonical_cuts: bool,
 }
 
 impl TopologyOptions {
     /// These options with [`TopologyOptions::voronoi_pairs`] set to `on`.
     pub fn with_voronoi_pairs(self, on: bool) -> TopologyOptions {
         TopologyOptions { voronoi_pairs: on, ..self }
+    }
+
+    /// These options with [`TopologyOptions::canonical_cuts`] set to `on`.
+    pub fn with_canonical_cuts(self, on: bool) -> TopologyOptions {
+        TopologyOptions { canonical_cuts: on, ..self }
     }
 
     /// These options with [`TopologyOptions::zero_length_tolerance`] set to
@@ -122,7 +134,12 @@ impl Diagram {
     /// ```
     pub fn topology(&self, options: TopologyOptions) -> String {
         let mut out = String::new();
-        let (edges, faces) = self.edges_and_faces();
+        let (edges, faces) = if options.canonical_cuts {
+            self.edges_and_faces()
+        } else {
+            let edges = self.edges().map(|e| vec![self.name(e.sites[0]), self.name(e.sites[1])]).collect();
+            (edges, self.vertices().map(|v| v.sites.iter().map(|&s| self.name(s)).collect()).collect())
+        };
         write_section(&mut out, "EDGES", edges);
         write_section(&mut out, "FACES", faces);
         if options.voronoi_pairs {
