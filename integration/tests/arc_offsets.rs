@@ -1499,17 +1499,21 @@ fn circle_inside_chords_outside(d: &Diagram, reference: &Diagram, radius: f64, i
 /// refusal.
 #[test]
 fn a_circle_under_its_tangent_split_at_both_roots() {
-    let p = Point::new;
-    let ring: Ring = vec![(p(13.0, 0.0), 1.0), (p(5.0, 0.0), 1.0)];
-    let lines = [[p(18.0, 0.0), p(13.0, 0.0)], [p(13.000000000000002, 4.0), p(5.0, 4.0)]];
-    let build = |ring: &Ring| {
-        let mut b = Builder::new();
-        b.add_bulged_polygon(std::slice::from_ref(ring)).unwrap();
-        for l in &lines {
-            b.add_segment(*l).unwrap();
-        }
-        b.split_crossings(true).build().unwrap()
-    };
-    let reference = build(&densified_ring(&ring).into_iter().map(|q| (q, 0.0)).collect());
-    circle_inside_chords_outside(&build(&ring), &reference, 4.0, &[-0.5, -1.0, -2.0, -3.9], &[0.5, 2.0]);
+    // as drawn, and far from the origin (shifts exact in binary: the
+    // tangency stays exact)
+    for (dx, dy) in [(0.0, 0.0), (1024.0, -1024.0), (1048576.0, 1048576.0)] {
+        let p = |x: f64, y: f64| Point::new(x + dx, y + dy);
+        let ring: Ring = vec![(p(13.0, 0.0), 1.0), (p(5.0, 0.0), 1.0)];
+        let lines = [[p(18.0, 0.0), p(13.0, 0.0)], [p(13.000000000000002, 4.0), p(5.0, 4.0)]];
+        let build = |ring: &Ring| {
+            let mut b = Builder::new();
+            b.add_bulged_polygon(std::slice::from_ref(ring)).unwrap();
+            for l in &lines {
+                b.add_segment(*l).unwrap();
+            }
+            b.split_crossings(true).build().unwrap()
+        };
+        let reference = build(&densified_ring(&ring).into_iter().map(|q| (q, 0.0)).collect());
+        circle_inside_chords_outside(&build(&ring), &reference, 4.0, &[-0.5, -1.0, -2.0, -3.9], &[0.5, 2.0]);
+    }
 }
