@@ -85,9 +85,12 @@ pub mod fault_injection {
 
 /// Diagnostics for benchmarks and tests: how the segment predicates of
 /// the builds on this thread were decided (the `f64` filter, or one of the
-/// refinement stages of `geometry::segments::oracle`). Rust only; not part of the C
+/// refinement stages of `geometry::segments::oracle`), and how a build ran
+/// in halves on two threads (`take_halves_report`; `set_halves_from`
+/// makes small builds run so, for tests). Rust only; not part of the C
 /// API.
 pub mod diagnostics {
+    pub use crate::construct::{set_halves_from, take_halves_report, HalvesReport};
     pub use crate::geometry::segments::oracle::{take_predicate_counts, PredicateCounts};
 }
 

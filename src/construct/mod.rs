@@ -28,6 +28,7 @@ mod builder;
 mod collinear;
 mod deletion_tree;
 mod exact_range;
+pub(crate) mod halves;
 mod headroom;
 mod input_check;
 mod insert_point;
@@ -44,6 +45,7 @@ mod threads;
 mod with_arcs;
 
 pub use builder::{Builder, MAX_POINTS};
+pub use halves::{set_halves_from, take_halves_report, HalvesReport};
 pub use polygon_input::ChainPiece;
 #[cfg(feature = "fault-injection")]
 pub use restart::set_restart_budget;
@@ -150,32 +152,63 @@ fn build_sites_and_arcs(
     let scale = input_scale(points, segments);
     let scaled = to_internal(&all, scale);
 
+    // With a spare thread and no arcs, a large build runs in halves
+    // (`halves/`): the check runs first on one thread, while the other
+    // inserts its half's points.
+    let kept_pairs = |checked: &CheckedInput| -> Vec<[usize; 2]> {
+        checked.segments.iter().map(|&(j, _)| endpoint_index(points.len(), j)).collect()
+    };
+    let mut checked_beside_halves = None;
+    let built_in_halves = if arcs.is_empty() && halves::worth_it(scaled.len() + segments.len()) {
+        let raw: Vec<[usize; 2]> = (0..segments.len()).map(|j| endpoint_index(points.len(), j)).collect();
+        halves::insert_all_in_halves_after(&scaled, &raw, || {
+            let checked = check_segments(points, segments, ring, scale);
+            let shared = checked.as_ref().ok().and_then(|c| shared_stretches::shared_pieces(c, points, segments, ring));
+            // only plain input goes on in halves: no error, shared stretches or split
+            let plain = match &checked {
+                Ok(c) if shared.is_none() && c.splits.is_empty() => Some(kept_pairs(c)),
+                _ => None,
+            };
+            checked_beside_halves = Some((checked, shared));
+            plain
+        })
+    } else {
+        None
+    };
+
     // The points go in whatever the input check finds (a repeated or
     // zero-length segment only repeats points), so on large inputs the
     // check runs on a second thread meanwhile; an error discards the points.
     let check = || (check_arcs(), check_segments(points, segments, ring, scale));
-    let ((arcs_checked, checked), stage) = if segments.len() + arcs.len() >= PARALLEL_CHECK_FROM {
-        let (checked, stage) = run_beside(check, || insert_points(&scaled, segments.len()));
-        (checked, Some(stage))
-    } else {
-        (check(), None)
+    let ((arcs_checked, checked), stage, shared) = match checked_beside_halves {
+        Some((checked, shared)) => ((check_arcs(), checked), None, Some(shared)),
+        None if built_in_halves.is_none() && segments.len() + arcs.len() >= PARALLEL_CHECK_FROM => {
+            let (checked, stage) = run_beside(check, || insert_points(&scaled, segments.len()));
+            (checked, Some(stage), None)
+        }
+        None => (check(), None, None),
     };
     arcs_checked?;
     let checked = checked.map_err(|c| conflict_error(&c, segments))?;
-    if let Some(pieces) = shared_stretches::shared_pieces(&checked, points, segments, ring) {
+    let shared = shared.unwrap_or_else(|| shared_stretches::shared_pieces(&checked, points, segments, ring));
+    if let Some(pieces) = shared {
         // (the points inserted beside the check are dropped: the diagram is
         // built of the pieces left)
         return Ok(Sites::Shared(checked, pieces));
     }
-    let stage = stage.unwrap_or_else(|| insert_points(&scaled, segments.len()));
-    if !checked.splits.is_empty() {
-        let (diagram, outcome) = build_split(stage, &checked, points, segments, &all, &scaled, scale, arcs)?;
-        return Ok(Sites::Built(Box::new(diagram), outcome));
-    }
-
     let kept: Vec<usize> = checked.segments.iter().map(|&(j, _)| j).collect();
-    let pairs: Vec<[usize; 2]> = kept.iter().map(|&j| endpoint_index(points.len(), j)).collect();
-    let (mut built, site_of_input, segment_sites, outcome) = insert_all_from(stage, &scaled, &pairs);
+    let pairs = kept_pairs(&checked);
+    let (mut built, site_of_input, segment_sites, outcome) = match built_in_halves {
+        Some(built) => built,
+        None => {
+            let stage = stage.unwrap_or_else(|| insert_points(&scaled, segments.len()));
+            if !checked.splits.is_empty() {
+                let (diagram, outcome) = build_split(stage, &checked, points, segments, &all, &scaled, scale, arcs)?;
+                return Ok(Sites::Built(Box::new(diagram), outcome));
+            }
+            insert_all_from(stage, &scaled, &pairs)
+        }
+    };
     let described: Vec<SegmentSite> =
         kept.iter().zip(segment_sites).map(|(&j, internal)| SegmentSite { input: j, internal, ends: segments[j] }).collect();
     let arc_sites = with_arcs::insert_arcs(&mut built, &site_of_input, points.len() - 2 * arcs.len(), arcs, scale, &outcome)?;

@@ -99,6 +99,35 @@ impl Construction {
         Parts { store: self.store, sites: self.sites, segment_ends: self.segment_ends }
     }
 
+    /// A construction over a store assembled elsewhere (the parallel
+    /// build's glued halves, `halves/`): `sites` per site id (entry 0 the
+    /// point at infinity, segments `NaN`), the segments from
+    /// `first_segment` on (`u32::MAX`: none) with their endpoint sites.
+    pub(super) fn assembled(store: Store, sites: Vec<Point>, first_segment: u32, segment_ends: Vec<[SiteId; 2]>) -> Construction {
+        let mut c = Construction::new(0);
+        c.vertex_mark = vec![0; store.vertex_count()];
+        c.cell_mark = vec![0; sites.len()];
+        c.store = store;
+        c.sites = sites;
+        c.first_segment = first_segment;
+        c.segment_ends = segment_ends;
+        c
+    }
+
+    /// The coordinates of site `s` (a point site's, or a segment's two
+    /// ends; arcs are not asked), read by the parallel build's checks.
+    pub(super) fn site_points(&self, s: SiteId) -> ([Point; 2], usize) {
+        match self.ends_of(s) {
+            Some([a, b]) => ([self.sites[a.index()], self.sites[b.index()]], 2),
+            None => ([self.sites[s.index()]; 2], 1),
+        }
+    }
+
+    /// The store, read by the parallel build's checks.
+    pub(super) fn store(&self) -> &Store {
+        &self.store
+    }
+
     /// Adds the open arc between its endpoint sites `a` (its start) and
     /// `b` (its end), after every segment.
     pub(super) fn add_arc_site(&mut self, a: SiteId, b: SiteId, arc: CircularArc) -> SiteId {

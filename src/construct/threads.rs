@@ -45,7 +45,7 @@ fn with_spare<R>(spare: usize, f: impl FnOnce() -> R) -> R {
 }
 
 /// Threads this build may still start.
-fn spare() -> usize {
+pub(crate) fn spare() -> usize {
     SPARE.with(|s| s.get()).unwrap_or_else(|| available() - 1)
 }
 

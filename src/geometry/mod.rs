@@ -32,6 +32,7 @@ pub(crate) mod input;
 pub mod point;
 pub mod predicates;
 pub(crate) mod scale;
+pub(crate) mod seam;
 pub(crate) mod segments;
 pub mod site;
 pub mod solvers;

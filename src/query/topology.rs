@@ -244,8 +244,19 @@ impl Diagram {
 
     /// Whether the finite vertices `a` and `b`, joined by an edge, are one
     /// point: the site of `b` that `a` lacks is exactly on `a`'s circle.
+    ///
+    /// Asked from the vertex whose sites, sorted, come first: near ties far
+    /// from the origin are decided in floating point where the certified
+    /// predicate cannot, and the question must not depend on how the
+    /// diagram numbers its vertices (a build in halves numbers them
+    /// otherwise than one thread).
     pub(crate) fn is_zero_length_edge(&self, a: VertexId, b: VertexId) -> bool {
         let (Some(va), Some(vb)) = (self.vertex(a), self.vertex(b)) else { return false };
+        let sorted = |mut s: [SiteId; 3]| {
+            s.sort();
+            s
+        };
+        let (va, vb) = if sorted(vb.sites) < sorted(va.sites) { (vb, va) } else { (va, vb) };
         let Some(&fourth) = vb.sites.iter().find(|s| !va.sites.contains(s)) else {
             // the same three sites: two different circles touching them
             return false;

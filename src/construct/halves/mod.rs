@@ -1,0 +1,479 @@
+//! The parallel build (issue 33): the input cut in two halves at the
+//! median x, each half built apart on its own thread by the sequential
+//! construction, and the two diagrams glued into one.
+//!
+//! Why this way: the sequential build inserts each site where the last
+//! one worked (BRIO rounds along a Hilbert curve), so consecutive sites
+//! touch the same vertices and cannot be inserted at once (the study in
+//! `docs/studies/parallel-build.md` measured 1.3 commits per round for
+//! deterministic reservations). Two halves built apart keep that locality
+//! and run all of the insertion work in parallel; the diagram does not
+//! depend on the insertion order, so the glued diagram is the one a single
+//! thread builds (the canonical topology text byte for byte, vertex
+//! positions bit for bit: `vertex_placement` places a vertex from its
+//! sites alone).
+//!
+//! Each half is built with a halo: the other half's sites within a band
+//! beside the cut (and the endpoints of every segment it holds). A cell of
+//! a site the half owns is then final when no site left out can come
+//! nearer to any of its points (`geometry::seam`, asked of every vertex of
+//! such a cell). The glue (`glue.rs`) takes the owned cells of each half:
+//! every vertex with a site the left half owns from the left, every other
+//! from the right, and links the edges across by the vertices both halves
+//! hold (the same three sites). Where a check fails, the band is widened
+//! once to what the failing vertices need; where it fails again, or the
+//! halves' vertices do not pair up (a degenerate vertex cut two ways
+//! across the cut), the build starts over on one thread. So the answer is
+//! always the single thread's; only the time differs.
+
+mod glue;
+
+use super::insert_point::{insert_points, PointStage};
+use super::restart::{insert_all_from, Outcome};
+use super::state::{infinite_rotation, Construction, INFINITE};
+use crate::diagram::{SiteId, VertexId, NONE};
+use crate::geometry::seam::{edge_to_infinity_clears, hull_candidate_indices, hull_candidates, vertex_stays_short_of, Enclosure};
+use crate::geometry::Point;
+
+/// From this many sites on (points and segments), a build with a spare
+/// thread runs in halves: below, the second thread and the glue cost more
+/// than they save.
+const HALVES_FROM: usize = 60_000;
+
+/// The first band's width, in mean spacings of the sites (the side of the
+/// square each site would have if they covered the bounding box evenly).
+/// Cells beside the cut reach a few spacings across it on uniform data.
+const FIRST_BAND: f64 = 8.0;
+
+/// The width of the input's boundary that both halves hold, in mean
+/// spacings: the circles of the cells along the hull are huge, but dip
+/// below its sides by less than a spacing on uniform data.
+const RIM: f64 = 2.0;
+
+/// Whether [`set_halves_from`] set the threshold: then the halves run
+/// whatever they cost (tests), only a failed check or glue stops them.
+fn forced() -> bool {
+    HALVES_FROM_HERE.with(|h| h.get()).is_some()
+}
+
+/// Whether a build of this many sites (points and segments) runs in
+/// halves: from [`HALVES_FROM`] on (or what [`set_halves_from`] set), with
+/// a spare thread.
+pub(super) fn worth_it(sites: usize) -> bool {
+    sites >= HALVES_FROM_HERE.with(|h| h.get()).unwrap_or(HALVES_FROM) && super::threads::spare() > 0
+}
+
+thread_local! {
+    static HALVES_FROM_HERE: std::cell::Cell<Option<usize>> = const { std::cell::Cell::new(None) };
+    static LAST_REPORT: std::cell::Cell<Option<HalvesReport>> = const { std::cell::Cell::new(None) };
+}
+
+/// Builds on this thread run in halves from this many sites (points and
+/// segments) on, when they may start a thread; `None` restores the
+/// default (60,000). For tests, which exercise the halves on small
+/// inputs, and benchmarks.
+pub fn set_halves_from(sites: Option<usize>) {
+    HALVES_FROM_HERE.with(|h| h.set(sites));
+}
+
+/// How the last build on this thread that tried halves went (taken: the
+/// next call returns `None` until another build tries).
+pub fn take_halves_report() -> Option<HalvesReport> {
+    LAST_REPORT.with(|r| r.take())
+}
+
+/// What a build in halves did ([`take_halves_report`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct HalvesReport {
+    /// The sites of the whole input (points, with each segment's ends, and
+    /// segments).
+    pub sites: usize,
+    /// The sites each half held in its last attempt (its own and its halo).
+    pub held: [usize; 2],
+    /// Attempts: 1, or 2 when the first band was too narrow.
+    pub attempts: u32,
+    /// Whether the halves were glued; otherwise the build ran again on one
+    /// thread.
+    pub glued: bool,
+}
+
+fn report(update: impl FnOnce(&mut HalvesReport)) {
+    LAST_REPORT.with(|r| {
+        let mut current = r.get().unwrap_or_default();
+        update(&mut current);
+        r.set(Some(current));
+    });
+}
+
+/// A build's result: the construction, the site of each input point, the
+/// site of each segment, and how it ended (as `restart::insert_all_from`).
+pub(super) type Built = (Construction, Vec<SiteId>, Vec<SiteId>, Outcome);
+
+/// The diagram of `points` and `segments` (pairs of indices into
+/// `points`; distinct, not crossing, no point inside one) built in two
+/// halves on two threads; `None` when there is no spare thread, the input
+/// is small, or the halves could not be glued (the caller builds on one
+/// thread).
+pub(super) fn insert_all_in_halves(points: &[Point], segments: &[[usize; 2]]) -> Option<Built> {
+    if !worth_it(points.len() + segments.len()) {
+        return None;
+    }
+    insert_all_in_halves_after(points, segments, || Some(segments.to_vec()))
+}
+
+/// [`insert_all_in_halves`] of the segments that `check` returns (`None`:
+/// none may be built), run first on this thread while the other thread
+/// inserts its half's points: an input check that runs beside the build.
+/// `raw` are all segments the check may return (their ends are held by
+/// the halves from the start). `check` runs exactly once, unless there is
+/// no spare thread or the input is small (then not at all).
+pub(super) fn insert_all_in_halves_after(
+    points: &[Point],
+    raw: &[[usize; 2]],
+    check: impl FnOnce() -> Option<Vec<[usize; 2]>>,
+) -> Option<Built> {
+    if !worth_it(points.len() + raw.len()) {
+        return None;
+    }
+    report(|r| *r = HalvesReport { sites: points.len() + raw.len(), ..HalvesReport::default() });
+    // The left half also runs the check, so it takes fewer sites.
+    let left_share = if raw.is_empty() { 0.5 } else { LEFT_SHARE_BESIDE_THE_CHECK };
+    let plan = Plan::of(points, raw.len(), left_share);
+    let (segments, first) = match plan {
+        Some(plan) => {
+            let (tx, rx) = std::sync::mpsc::channel::<Option<std::sync::Arc<Vec<[usize; 2]>>>>();
+            let shared_plan = &plan;
+            let (right, left) = super::threads::run_beside(
+                move || {
+                    let plan = shared_plan;
+                    let half = Half::select(points, raw, plan, plan.band, Side::Right);
+                    let stage = half.insert_points(points, raw.len());
+                    let segments = rx.recv().ok().flatten()?;
+                    half.finish(stage, points, &segments)
+                },
+                || {
+                    let segments = check().map(std::sync::Arc::new);
+                    // (the other thread stops at its points when the send fails or sends none)
+                    let _ = tx.send(segments.clone());
+                    let segments = segments?;
+                    let half = Half::select(points, raw, &plan, plan.band, Side::Left);
+                    let stage = half.insert_points(points, raw.len());
+                    let built = half.finish(stage, points, &segments);
+                    Some((segments, built))
+                },
+            );
+            let (segments, left) = left?;
+            (segments, Some((plan, left, right)))
+        }
+        None => (std::sync::Arc::new(check()?), None),
+    };
+    let (plan, left, right) = first?;
+    let (left, right) = (left?, right?);
+    report(|r| {
+        r.attempts = 1;
+        r.held = [left.held_sites(), right.held_sites()];
+    });
+    let band = match (left.needed_band, right.needed_band) {
+        (None, None) => return glued(glue::glue(left, right, points.len(), segments.len(), plan.cut)),
+        (l, r) => 1.25 * l.unwrap_or(0.0).max(r.unwrap_or(0.0)),
+    };
+    drop((left, right));
+    // Once more with the band the failing cells need, if that is worth it.
+    if !(band.is_finite() && (band < plan.band * WIDEST_BAND || forced())) {
+        return None;
+    }
+    let (right, left) = super::threads::run_beside(
+        || Half::select(points, &segments, &plan, band, Side::Right).build(points, &segments),
+        || Half::select(points, &segments, &plan, band, Side::Left).build(points, &segments),
+    );
+    let (left, right) = (left?, right?);
+    report(|r| {
+        r.attempts = 2;
+        r.held = [left.held_sites(), right.held_sites()];
+    });
+    match (left.needed_band, right.needed_band) {
+        (None, None) => glued(glue::glue(left, right, points.len(), segments.len(), plan.cut)),
+        _ => None,
+    }
+}
+
+/// `built`, recorded in the report.
+fn glued(built: Option<Built>) -> Option<Built> {
+    report(|r| r.glued = built.is_some());
+    built
+}
+
+/// The share of the sites the left half takes when it runs the input
+/// check first (the check costs about a tenth of a build with segments).
+const LEFT_SHARE_BESIDE_THE_CHECK: f64 = 0.45;
+
+/// The widest band a second attempt may take, in first bands: wider, the
+/// halves overlap so much that one thread is as fast.
+const WIDEST_BAND: f64 = 8.0;
+
+/// Where the halves are cut, and what both hold.
+struct Plan {
+    cut: f64,
+    band: f64,
+    rim: f64,
+    enclosure: Enclosure,
+    /// Per point: held by both halves ([`held_by_both`]).
+    both: Vec<bool>,
+}
+
+impl Plan {
+    /// `None` when halves would not pay (points all on a line, or too
+    /// many on the boundary).
+    fn of(points: &[Point], segments: usize, left_share: f64) -> Option<Plan> {
+        let cut = quantile_x(points, left_share)?;
+        let spacing = mean_spacing(points, segments)?;
+        let (band, rim) = (FIRST_BAND * spacing, RIM * spacing);
+        let enclosure = Enclosure::of(points.iter().copied());
+        let both = held_by_both(points, &enclosure, rim)?;
+        Some(Plan { cut, band, rim, enclosure, both })
+    }
+}
+
+/// Which half: the left one owns the points with x below the cut and the
+/// segments with an end below it; the right one owns the rest.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Side {
+    Left,
+    Right,
+}
+
+impl Side {
+    /// Whether a site with these points (a point's once, a segment's two
+    /// ends) belongs to this side of the cut `x = cut`.
+    fn owns(self, points: &[Point], cut: f64) -> bool {
+        let lowest = points.iter().map(|p| p.x).fold(f64::INFINITY, f64::min);
+        (lowest < cut) == (self == Side::Left)
+    }
+
+    /// `1.0` for the left half (whose outside lies to the right), `-1.0`.
+    fn toward_outside(self) -> f64 {
+        match self {
+            Side::Left => 1.0,
+            Side::Right => -1.0,
+        }
+    }
+}
+
+/// One half's input: what it owns and its halo.
+struct Half<'a> {
+    side: Side,
+    plan: &'a Plan,
+    band: f64,
+    /// Input points it holds (indices into the build's points).
+    points: Vec<u32>,
+    /// Segments it holds (indices into the build's segments).
+    segments: Vec<u32>,
+    /// Per input point: whether it holds it.
+    held: Vec<bool>,
+}
+
+/// What a half knows of the sites it leaves out: every one lies at or
+/// beyond `line` (on the far side from the half), and `hull` holds their
+/// points that may be vertices of their convex hull.
+struct Outside {
+    line: f64,
+    hull: Vec<Point>,
+}
+
+/// A half built: its construction, per held point and segment its site,
+/// and the band its checks found wanting (`None`: every owned cell final).
+pub(super) struct BuiltHalf {
+    side: Side,
+    construction: Construction,
+    points: Vec<u32>,
+    segments: Vec<u32>,
+    site_of_point: Vec<SiteId>,
+    site_of_segment: Vec<SiteId>,
+    needed_band: Option<f64>,
+}
+
+impl BuiltHalf {
+    fn held_sites(&self) -> usize {
+        self.points.len() + self.segments.len()
+    }
+}
+
+impl Half<'_> {
+    /// The points `side` owns, and the other side's within `band` of the
+    /// cut, with both ends of each of `segments` that it holds (a segment
+    /// of the other side is held when its end nearest the cut is in the
+    /// band, or an end is held by both halves).
+    fn select<'a>(points: &[Point], segments: &[[usize; 2]], plan: &'a Plan, band: f64, side: Side) -> Half<'a> {
+        let mut held: Vec<bool> =
+            points.iter().zip(&plan.both).map(|(p, &both)| both || Half::near(side, plan, band, &[*p])).collect();
+        let mut chosen = Vec::new();
+        for (k, &[a, b]) in segments.iter().enumerate() {
+            if Half::holds_segment(side, plan, band, points, [a, b]) {
+                chosen.push(k as u32);
+                held[a] = true;
+                held[b] = true;
+            }
+        }
+        let held_points: Vec<u32> = (0..points.len() as u32).filter(|&i| held[i as usize]).collect();
+        Half { side, plan, band, points: held_points, segments: chosen, held }
+    }
+
+    /// Whether a site with these points is `side`'s, or within `band` of
+    /// the cut on the other side (a segment by its end nearest the cut).
+    fn near(side: Side, plan: &Plan, band: f64, points: &[Point]) -> bool {
+        let t = side.toward_outside();
+        side.owns(points, plan.cut) || points.iter().any(|p| p.x * t < plan.cut * t + band)
+    }
+
+    fn holds_segment(side: Side, plan: &Plan, band: f64, points: &[Point], [a, b]: [usize; 2]) -> bool {
+        Half::near(side, plan, band, &[points[a], points[b]]) || plan.both[a] || plan.both[b]
+    }
+
+    /// The half's points inserted (the left's with room for the right
+    /// half's vertices: its store is the glued one, and grows in place;
+    /// memory not touched is not taken).
+    fn insert_points(&self, points: &[Point], segments: usize) -> PointStage {
+        let local: Vec<Point> = self.points.iter().map(|&i| points[i as usize]).collect();
+        let room = if self.side == Side::Left { points.len() + segments } else { segments };
+        insert_points(&local, room)
+    }
+
+    /// Builds the half on this thread and checks its owned cells; `None`
+    /// when its construction restarted or gave up (the single thread's
+    /// build then decides what to report).
+    fn build(self, points: &[Point], segments: &[[usize; 2]]) -> Option<BuiltHalf> {
+        let stage = self.insert_points(points, segments.len());
+        self.finish(stage, points, segments)
+    }
+
+    /// [`build`](Self::build) after the points: the segments it holds of
+    /// `segments` (which `select` saw, or fewer), then the checks.
+    fn finish(mut self, stage: PointStage, points: &[Point], segments: &[[usize; 2]]) -> Option<BuiltHalf> {
+        let mut local_of = vec![NONE; points.len()];
+        let local_points: Vec<Point> = self
+            .points
+            .iter()
+            .enumerate()
+            .map(|(local, &i)| {
+                local_of[i as usize] = local as u32;
+                points[i as usize]
+            })
+            .collect();
+        self.segments = (0..segments.len() as u32)
+            .filter(|&k| Half::holds_segment(self.side, self.plan, self.band, points, segments[k as usize]))
+            .collect();
+        let mut pairs = Vec::with_capacity(self.segments.len());
+        for &k in &self.segments {
+            let [a, b] = segments[k as usize].map(|i| local_of[i]);
+            if a == NONE || b == NONE {
+                return None; // (an end not held: `segments` was not what `select` saw)
+            }
+            pairs.push([a as usize, b as usize]);
+        }
+        drop(local_of);
+        let (construction, site_of_point, site_of_segment, outcome) = insert_all_from(stage, &local_points, &pairs);
+        if outcome.restarts > 0 || outcome.stuck.is_some() {
+            return None;
+        }
+        let outside = self.outside(points, segments);
+        let needed_band = outside.and_then(|outside| self.band_needed(&construction, &outside));
+        Some(BuiltHalf {
+            side: self.side,
+            construction,
+            points: self.points,
+            segments: self.segments,
+            site_of_point,
+            site_of_segment,
+            needed_band,
+        })
+    }
+
+    /// The sites this half leaves out (`None`: none): the points it does
+    /// not hold and the ends of the segments it does not hold.
+    fn outside(&self, points: &[Point], segments: &[[usize; 2]]) -> Option<Outside> {
+        let mut held_segment = vec![false; segments.len()];
+        self.segments.iter().for_each(|&k| held_segment[k as usize] = true);
+        let left_out = (0..points.len())
+            .filter(|&i| !self.held[i])
+            .map(|i| points[i])
+            .chain(segments.iter().zip(&held_segment).filter(|(_, &held)| !held).flat_map(|(&[a, b], _)| [points[a], points[b]]));
+        let t = self.side.toward_outside();
+        let line = left_out.clone().map(|p| p.x * t).fold(f64::INFINITY, f64::min) * t;
+        line.is_finite().then(|| Outside { line, hull: hull_candidates(left_out) })
+    }
+
+    /// `None` when every cell this half owns is final (no site left out
+    /// can come nearer to any of its points); otherwise the band that the
+    /// failing vertices would need (infinite when no band helps: an edge
+    /// to infinity whose supporting line a site left out reaches).
+    fn band_needed(&self, c: &Construction, outside: &Outside) -> Option<f64> {
+        let t = self.side.toward_outside();
+        let owned = |s: SiteId| {
+            let (points, n) = c.site_points(s);
+            s != INFINITE && self.side.owns(&points[..n], self.plan.cut)
+        };
+        let store = c.store();
+        let mut needed: Option<f64> = None;
+        for v in (0..store.vertex_count()).map(VertexId::from_index) {
+            let sites = store.sites_of(v);
+            if !sites.iter().any(|&s| owned(s)) {
+                continue;
+            }
+            let (position, clearance) = (store.position[v.index()], store.clearance[v.index()]);
+            let want = match infinite_rotation(sites) {
+                Some((x, y)) => {
+                    let ((px, nx), (py, ny)) = (c.site_points(x), c.site_points(y));
+                    let both = [px[0], px[1], py[0], py[1]];
+                    let touching = [&both[..nx], &both[2..2 + ny]].concat();
+                    (!edge_to_infinity_clears(position, &touching, &outside.hull)).then_some(f64::INFINITY)
+                }
+                None => (!vertex_stays_short_of(position, clearance, outside.line, t)
+                    && !self.plan.enclosure.vertex_beyond_a_side(position, clearance, self.plan.rim))
+                .then(|| (position.x - self.plan.cut) * t + clearance),
+            };
+            if let Some(want) = want {
+                needed = Some(needed.map_or(want, |w: f64| w.max(want)));
+            }
+        }
+        needed
+    }
+}
+
+/// The points both halves hold whatever the band: every point that may
+/// be a vertex of the hull (so that the edges to infinity of both halves
+/// are the whole diagram's) and every point within `rim` of the input's
+/// `enclosure` (cells along the hull reach along it, far across the cut:
+/// their huge circles are checked against the enclosure instead);
+/// `None` when they are too many for halves to pay.
+fn held_by_both(points: &[Point], enclosure: &Enclosure, rim: f64) -> Option<Vec<bool>> {
+    let candidates = hull_candidate_indices(points);
+    if candidates.len() > points.len() / 64 && !forced() {
+        return None;
+    }
+    let mut both: Vec<bool> = points.iter().map(|&p| enclosure.near_a_side(p, rim)).collect();
+    candidates.into_iter().for_each(|i| both[i] = true);
+    (both.iter().filter(|&&b| b).count() < points.len() / 16 || forced()).then_some(both)
+}
+
+/// The x that `share` of the points lie left of (the cut), `None` when it
+/// would leave one half empty (every point at or right of it).
+fn quantile_x(points: &[Point], share: f64) -> Option<f64> {
+    let mut xs: Vec<f64> = points.iter().map(|p| p.x).collect();
+    let middle = ((xs.len() as f64 * share) as usize).min(xs.len() - 1);
+    let (_, &mut cut, _) = xs.select_nth_unstable_by(middle, f64::total_cmp);
+    points.iter().any(|p| p.x < cut).then_some(cut)
+}
+
+/// The side of the square each site would have if they covered the
+/// points' bounding box evenly; `None` for a box of no area.
+fn mean_spacing(points: &[Point], segments: usize) -> Option<f64> {
+    let (mut lo, mut hi) = (points[0], points[0]);
+    for p in points {
+        lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
+        hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
+    }
+    let area = (hi.x - lo.x) * (hi.y - lo.y);
+    let spacing = (area / (points.len() + segments) as f64).sqrt();
+    (spacing.is_finite() && spacing > 0.0).then_some(spacing)
+}

@@ -1,0 +1,231 @@
+//! The two questions the parallel build (`construct/halves`) asks before it
+//! keeps a cell built in one half: can a site left out of that half come
+//! nearer to some point of the cell than the cell's own site.
+//!
+//! The sites left out of a half lie in a known box beyond a vertical line
+//! (the split line moved by the halo's width). A point `p` of a cell is
+//! safe from them when its disk (centre `p`, radius its clearance) stays on
+//! this side of the box's near side. Along a Voronoi edge the disk's reach
+//! in x (`p.x ± clearance`) is convex (a line, a hyperbola's or parabola's
+//! branch, parametrised linearly), and from any point of a cell the reach
+//! grows along the ray away from the site's nearest point, which stays in
+//! the cell: so over a bounded cell the reach is largest at a vertex
+//! ([`vertex_stays_short_of`]). An unbounded cell reaches infinitely far in
+//! x, and there what matters is the hull: far along an edge to infinity the
+//! disks become the half-plane beyond the supporting line of the edge's two
+//! sites, and the box must lie strictly inside it
+//! ([`edge_to_infinity_clears`]).
+//!
+//! Both answers are in floating point with a margin far above the rounding
+//! of a stored vertex (positions and clearances are correctly rounded
+//! solutions, to a few ulps): `false` is always allowed (the build then
+//! takes a wider halo or one thread), `true` must never be wrong.
+
+use crate::geometry::Point;
+
+/// The relative margin of both questions.
+const MARGIN: f64 = 1e-7;
+
+/// Whether the disk of a finite vertex (centre `position`, radius
+/// `clearance`) stays strictly short of the vertical line `x = line`, on
+/// the side `toward` (`1.0`: the line lies to the right, the left half's
+/// question; `-1.0`: to the left).
+pub(crate) fn vertex_stays_short_of(position: Point, clearance: f64, line: f64, toward: f64) -> bool {
+    let reach = position.x * toward + clearance;
+    let margin = MARGIN * (position.x.abs() + clearance + line.abs());
+    reach.is_finite() && clearance >= 0.0 && reach + margin < line * toward
+}
+
+/// Whether every point of `outside` lies strictly inside the supporting
+/// line of an edge to infinity: the line with outward unit normal
+/// `direction` (the stored direction of a vertex at infinity) touching the
+/// edge's `sites` (each given by its points: a point site once, a segment
+/// by its ends).
+pub(crate) fn edge_to_infinity_clears(direction: Point, sites: &[Point], outside: &[Point]) -> bool {
+    let along = |p: &Point| p.x * direction.x + p.y * direction.y;
+    let support = sites.iter().map(along).fold(f64::NEG_INFINITY, f64::max);
+    let beyond = outside.iter().map(along).fold(f64::NEG_INFINITY, f64::max);
+    let size = outside.iter().chain(sites).map(|p| p.x.abs() + p.y.abs()).fold(0.0, f64::max);
+    support.is_finite() && !beyond.is_nan() && beyond + MARGIN * size < support
+}
+
+/// The points of `points` that may be vertices of their convex hull: all
+/// but those strictly inside the octagon of their extremes in eight
+/// directions (with a margin: a point kept is never wrong). What
+/// [`edge_to_infinity_clears`] needs of the sites left out, in a few
+/// points where they are many.
+pub(crate) fn hull_candidates(points: impl Iterator<Item = Point> + Clone) -> Vec<Point> {
+    let all: Vec<Point> = points.clone().collect();
+    hull_candidate_indices(&all).into_iter().map(|i| all[i]).collect()
+}
+
+/// [`hull_candidates`] as indices into `points`.
+pub(crate) fn hull_candidate_indices(points: &[Point]) -> Vec<usize> {
+    let points = points.iter().copied();
+    const DIRECTIONS: [(f64, f64); 8] =
+        [(1.0, 0.0), (1.0, 1.0), (0.0, 1.0), (-1.0, 1.0), (-1.0, 0.0), (-1.0, -1.0), (0.0, -1.0), (1.0, -1.0)];
+    let mut extreme: [Option<Point>; 8] = [None; 8];
+    let mut size: f64 = 0.0;
+    for p in points.clone() {
+        size = size.max(p.x.abs() + p.y.abs());
+        for (k, (dx, dy)) in DIRECTIONS.iter().enumerate() {
+            let better = match extreme[k] {
+                None => true,
+                Some(e) => p.x * dx + p.y * dy > e.x * dx + e.y * dy,
+            };
+            if better {
+                extreme[k] = Some(p);
+            }
+        }
+    }
+    let corners: Vec<Point> = extreme.iter().flatten().copied().collect();
+    let mut edges: Vec<(Point, Point)> = Vec::with_capacity(8);
+    for k in 0..corners.len() {
+        let (a, b) = (corners[k], corners[(k + 1) % corners.len()]);
+        if a != b {
+            edges.push((a, b));
+        }
+    }
+    let margin = MARGIN * size * size;
+    let strictly_inside =
+        |p: Point| edges.len() >= 3 && edges.iter().all(|&(a, b)| (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) > margin);
+    points.enumerate().filter(|&(_, p)| !strictly_inside(p)).map(|(i, _)| i).collect()
+}
+
+/// The directions of [`Enclosure`]'s sides: sixteen, evenly spaced.
+const SIDES: usize = 16;
+
+/// A convex polygon round a set of points: the half-planes of their
+/// extremes in sixteen directions. A point of the set within `band` of a
+/// side is near the boundary; the others lie inside every side moved in by
+/// `band`, which a disk beyond one of those moved sides cannot reach.
+pub(crate) struct Enclosure {
+    support: [f64; SIDES],
+    /// A margin above the rounding of a point's value along a direction.
+    slack: f64,
+}
+
+impl Enclosure {
+    pub(crate) fn of(points: impl Iterator<Item = Point>) -> Enclosure {
+        let mut support = [f64::NEG_INFINITY; SIDES];
+        let mut size: f64 = 0.0;
+        for p in points {
+            size = size.max(p.x.abs() + p.y.abs());
+            for (k, s) in support.iter_mut().enumerate() {
+                *s = s.max(along(p, k));
+            }
+        }
+        Enclosure { support, slack: MARGIN * size }
+    }
+
+    /// Whether `p` lies within `band` of a side (or near enough that
+    /// rounding cannot tell): such points are held by both halves.
+    pub(crate) fn near_a_side(&self, p: Point, band: f64) -> bool {
+        (0..SIDES).any(|k| along(p, k) > self.support[k] - band - self.slack)
+    }
+
+    /// Whether the disk of a finite vertex (centre `position`, radius
+    /// `clearance`) lies wholly beyond some side moved in by `band`: then
+    /// it holds no point that is not [`near_a_side`](Self::near_a_side).
+    pub(crate) fn vertex_beyond_a_side(&self, position: Point, clearance: f64, band: f64) -> bool {
+        let margin = self.slack + MARGIN * clearance.min(1.0) + 1e-12 * clearance;
+        clearance >= 0.0
+            && clearance.is_finite()
+            && (0..SIDES).any(|k| along(position, k) - clearance > self.support[k] - band + margin)
+    }
+}
+
+/// `p` along the `k`-th direction of the sides.
+#[inline]
+fn along(p: Point, k: usize) -> f64 {
+    let (cos, sin) = DIRECTIONS[k];
+    p.x * cos + p.y * sin
+}
+
+/// The sides' directions, `(cos, sin)` of `k` sixteenths of a turn.
+const DIRECTIONS: [(f64, f64); SIDES] = {
+    // cos and sin of multiples of 22.5 degrees
+    const C1: f64 = 0.923_879_532_511_286_7;
+    const C2: f64 = std::f64::consts::FRAC_1_SQRT_2;
+    const C3: f64 = 0.382_683_432_365_089_8;
+    [
+        (1.0, 0.0),
+        (C1, C3),
+        (C2, C2),
+        (C3, C1),
+        (0.0, 1.0),
+        (-C3, C1),
+        (-C2, C2),
+        (-C1, C3),
+        (-1.0, 0.0),
+        (-C1, -C3),
+        (-C2, -C2),
+        (-C3, -C1),
+        (0.0, -1.0),
+        (C3, -C1),
+        (C2, -C2),
+        (C1, -C3),
+    ]
+};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_disk_reaching_the_line_is_not_short_of_it() {
+        let c = Point::new(0.0, 0.0);
+        assert!(vertex_stays_short_of(c, 0.9, 1.0, 1.0));
+        assert!(!vertex_stays_short_of(c, 1.0, 1.0, 1.0));
+        assert!(!vertex_stays_short_of(c, 1.1, 1.0, 1.0));
+        assert!(vertex_stays_short_of(c, 0.9, -1.0, -1.0));
+        assert!(!vertex_stays_short_of(c, 0.9, -0.5, -1.0));
+        assert!(!vertex_stays_short_of(c, f64::INFINITY, 1.0, 1.0));
+        assert!(!vertex_stays_short_of(c, f64::NAN, 1.0, 1.0));
+    }
+
+    #[test]
+    fn points_beyond_or_on_the_hull_line_are_not_clear() {
+        // the edge to infinity of (0,0) and (1,0) going down: the hull line y = 0
+        let sites = [Point::new(0.0, 0.0), Point::new(1.0, 0.0)];
+        let down = Point::new(0.0, -1.0);
+        let above = [Point::new(5.0, 0.5), Point::new(9.0, 3.0)];
+        assert!(edge_to_infinity_clears(down, &sites, &above));
+        assert!(edge_to_infinity_clears(down, &sites, &[]));
+        assert!(!edge_to_infinity_clears(down, &sites, &[above[0], Point::new(5.0, 0.0)]));
+        assert!(!edge_to_infinity_clears(down, &sites, &[Point::new(5.0, -0.5), above[1]]));
+    }
+
+    #[test]
+    fn a_disk_beyond_a_side_moved_in_misses_the_points_not_near_one() {
+        let points: Vec<Point> =
+            (0..11).flat_map(|i| (0..11).map(move |j| Point::new(i as f64 / 10.0, j as f64 / 10.0))).collect();
+        let e = Enclosure::of(points.iter().copied());
+        assert!(e.near_a_side(Point::new(0.5, 0.95), 0.1));
+        assert!(!e.near_a_side(Point::new(0.5, 0.85), 0.1));
+        // a huge circle through three points along the top
+        assert!(e.vertex_beyond_a_side(Point::new(0.5, 101.0), 100.05, 0.1));
+        assert!(!e.vertex_beyond_a_side(Point::new(0.5, 101.0), 100.15, 0.1));
+        assert!(!e.vertex_beyond_a_side(Point::new(0.5, 0.5), 0.1, 0.1));
+    }
+
+    #[test]
+    fn hull_candidates_keep_every_hull_vertex_and_drop_the_inside() {
+        let mut points = vec![Point::new(0.0, 0.0), Point::new(4.0, 0.0), Point::new(4.0, 4.0), Point::new(0.0, 4.0)];
+        points.extend((1..4).flat_map(|i| (1..4).map(move |j| Point::new(i as f64, j as f64))));
+        points.push(Point::new(2.0, 0.0)); // on the hull, not a vertex: may stay
+        let kept = hull_candidates(points.iter().copied());
+        for corner in &points[..4] {
+            assert!(kept.contains(corner));
+        }
+        assert!(!kept.contains(&Point::new(2.0, 2.0)));
+        // for every direction, the kept points reach as far as all of them
+        for k in 0..64 {
+            let a = k as f64 * std::f64::consts::TAU / 64.0;
+            let along = |p: &Point| p.x * a.cos() + p.y * a.sin();
+            let all = points.iter().map(along).fold(f64::NEG_INFINITY, f64::max);
+            let some = kept.iter().map(along).fold(f64::NEG_INFINITY, f64::max);
+            assert_eq!(all, some);
+        }
+    }
+}
