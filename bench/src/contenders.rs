@@ -173,6 +173,14 @@ pub fn measure_segments(contender: Contender, file: &std::path::Path, runs: usiz
     }
 }
 
+/// The environment variable that sets `Builder::threads` of segvoronoi's
+/// builds here (unset: the default, every core).
+pub const THREADS_VARIABLE: &str = "SEGVORONOI_BENCH_THREADS";
+
+fn bench_threads() -> usize {
+    std::env::var(THREADS_VARIABLE).ok().and_then(|v| v.parse().ok()).unwrap_or(0)
+}
+
 /// Ends a child with a message for the parent's report.
 pub fn fail(message: String) -> ! {
     eprintln!("{message}");
@@ -199,6 +207,7 @@ fn boostvoronoi_counts(d: &boostvoronoi::prelude::Diagram) -> Counts {
 
 fn segvoronoi_segments(segments: &[[[f64; 2]; 2]]) -> segvoronoi::Diagram {
     let mut builder = segvoronoi::Builder::new();
+    builder.threads(bench_threads());
     builder.add_segments(segments.iter().copied()).expect("finite input");
     builder.build().unwrap_or_else(|e| {
         fail(format!(
@@ -223,6 +232,7 @@ fn boostvoronoi_segments(segments: &[Seg]) -> boostvoronoi::prelude::Diagram {
 
 fn segvoronoi_build(points: &[[f64; 2]]) -> segvoronoi::Diagram {
     let mut builder = segvoronoi::Builder::new();
+    builder.threads(bench_threads());
     builder.add_points(points.iter().copied()).expect("finite input");
     builder.build().expect("segvoronoi build")
 }

@@ -182,7 +182,9 @@ fn run(arguments: impl Iterator<Item = String>) -> Result<(), Failure> {
     }
     progress.finish();
     if options.topology {
-        print(&diagram.topology(TopologyOptions::default().with_voronoi_pairs(options.voronoi_pairs)))?;
+        let text_options =
+            TopologyOptions::default().with_voronoi_pairs(options.voronoi_pairs).with_canonical_cuts(options.canonical_cuts);
+        print(&diagram.topology(text_options))?;
     }
     if options.max_inscribed_circle {
         // A domain whose every vertex is on its boundary has no inside

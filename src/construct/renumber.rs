@@ -4,9 +4,15 @@
 
 use super::input_check::CheckedInput;
 use super::state::{Construction, Parts, INFINITE};
+use super::threads::run_beside;
 use crate::diagram::{BuildStats, Diagram, HalfEdgeId, SiteId, VertexId, NONE};
 use crate::geometry::scale::Scale;
 use crate::geometry::{Point, Site};
+
+/// From this many vertices on, the renaming of the cells and the list of
+/// edges run on two threads by halves (when the build may start one):
+/// below, starting a thread costs more than it saves.
+const PARALLEL_FROM: usize = 1 << 17;
 
 /// A segment site for the renumbering: its input index, its internal id and
 /// its endpoints in input coordinates.
@@ -72,8 +78,15 @@ pub(super) fn renumber(
         .collect();
     let infinite = SiteId(sites.len() as u32);
     public_of[INFINITE.index()] = infinite.0;
-    for r in store.right.iter_mut() {
-        *r = SiteId(public_of[r.index()]);
+    // (large stores on two threads, by halves, when the build may start one)
+    let (half, large) = (store.right.len() / 2, store.vertex_count() >= PARALLEL_FROM);
+    let (low, high) = store.right.split_at_mut(half);
+    let rename = |part: &mut [SiteId]| part.iter_mut().for_each(|r| *r = SiteId(public_of[r.index()]));
+    if large {
+        run_beside(|| rename(high), || rename(low));
+    } else {
+        rename(low);
+        rename(high);
     }
     let mut cell_edge = vec![NONE; internal_sites.len()];
     for (internal, &e) in store.cell_edge.iter().enumerate() {
@@ -118,13 +131,25 @@ pub(super) fn renumber(
     }
 
     // Public edges: one per pair of twins, between two real sites.
-    let mut edges = Vec::with_capacity(store.twin.len() / 2);
-    for h in (0..store.twin.len()).map(HalfEdgeId::from_index) {
-        let t = store.twin(h);
-        if h < t && store.left(h) != infinite && store.right(h) != infinite {
-            edges.push(h);
+    let edges_in = |range: std::ops::Range<usize>| -> Vec<HalfEdgeId> {
+        let mut edges = Vec::with_capacity(range.len() / 2);
+        for h in range.map(HalfEdgeId::from_index) {
+            let t = store.twin(h);
+            if h < t && store.left(h) != infinite && store.right(h) != infinite {
+                edges.push(h);
+            }
         }
-    }
+        edges
+    };
+    let edges = if large {
+        let middle = 3 * (store.vertex_count() / 2);
+        let (high, mut low) = run_beside(|| edges_in(middle..store.twin.len()), || edges_in(0..middle));
+        low.reserve_exact(high.len());
+        low.extend_from_slice(&high);
+        low
+    } else {
+        edges_in(0..store.twin.len())
+    };
 
     let extent = bounding_box_diagonal(&sites[..point_sites]);
     let stats = BuildStats {

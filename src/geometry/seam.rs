@@ -54,42 +54,67 @@ pub(crate) fn edge_to_infinity_clears(direction: Point, sites: &[Point], outside
 /// directions (with a margin: a point kept is never wrong). What
 /// [`edge_to_infinity_clears`] needs of the sites left out, in a few
 /// points where they are many.
-pub(crate) fn hull_candidates(points: impl Iterator<Item = Point> + Clone) -> Vec<Point> {
-    let all: Vec<Point> = points.clone().collect();
-    hull_candidate_indices(&all).into_iter().map(|i| all[i]).collect()
+pub(crate) fn hull_candidates(points: &[Point]) -> Vec<Point> {
+    let octagon = Extremes::of(points);
+    points.iter().copied().filter(|&p| octagon.may_be_on_the_hull(p)).collect()
 }
 
-/// [`hull_candidates`] as indices into `points`.
-pub(crate) fn hull_candidate_indices(points: &[Point]) -> Vec<usize> {
-    let points = points.iter().copied();
-    const DIRECTIONS: [(f64, f64); 8] =
-        [(1.0, 0.0), (1.0, 1.0), (0.0, 1.0), (-1.0, 1.0), (-1.0, 0.0), (-1.0, -1.0), (0.0, -1.0), (1.0, -1.0)];
-    let mut extreme: [Option<Point>; 8] = [None; 8];
-    let mut size: f64 = 0.0;
-    for p in points.clone() {
-        size = size.max(p.x.abs() + p.y.abs());
-        for (k, (dx, dy)) in DIRECTIONS.iter().enumerate() {
-            let better = match extreme[k] {
-                None => true,
-                Some(e) => p.x * dx + p.y * dy > e.x * dx + e.y * dy,
-            };
-            if better {
-                extreme[k] = Some(p);
+/// The extreme points of a set in eight directions (mergeable, so that
+/// two threads can each take half the set).
+#[derive(Clone, Copy)]
+pub(crate) struct Extremes {
+    best: [(f64, Point); 8],
+    size: f64,
+}
+
+/// The eight directions of [`Extremes`], counter-clockwise.
+const EIGHT: [(f64, f64); 8] =
+    [(1.0, 0.0), (1.0, 1.0), (0.0, 1.0), (-1.0, 1.0), (-1.0, 0.0), (-1.0, -1.0), (0.0, -1.0), (1.0, -1.0)];
+
+impl Extremes {
+    pub(crate) fn of(points: &[Point]) -> Extremes {
+        let mut best = [(f64::NEG_INFINITY, Point::new(f64::NAN, f64::NAN)); 8];
+        let mut size: f64 = 0.0;
+        for &p in points {
+            size = size.max(p.x.abs() + p.y.abs());
+            for (k, &(dx, dy)) in EIGHT.iter().enumerate() {
+                let v = p.x * dx + p.y * dy;
+                if v > best[k].0 {
+                    best[k] = (v, p);
+                }
             }
         }
+        Extremes { best, size }
     }
-    let corners: Vec<Point> = extreme.iter().flatten().copied().collect();
-    let mut edges: Vec<(Point, Point)> = Vec::with_capacity(8);
-    for k in 0..corners.len() {
-        let (a, b) = (corners[k], corners[(k + 1) % corners.len()]);
-        if a != b {
-            edges.push((a, b));
+
+    /// The extremes of the union of the two sets.
+    pub(crate) fn merge(self, other: Extremes) -> Extremes {
+        let mut best = self.best;
+        for (b, o) in best.iter_mut().zip(other.best) {
+            if o.0 > b.0 {
+                *b = o;
+            }
         }
+        Extremes { best, size: self.size.max(other.size) }
     }
-    let margin = MARGIN * size * size;
-    let strictly_inside =
-        |p: Point| edges.len() >= 3 && edges.iter().all(|&(a, b)| (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) > margin);
-    points.enumerate().filter(|&(_, p)| !strictly_inside(p)).map(|(i, _)| i).collect()
+
+    /// Whether `p` (of the set) may be a vertex of its convex hull: it is
+    /// not strictly inside the octagon of the extremes, by a margin.
+    pub(crate) fn may_be_on_the_hull(&self, p: Point) -> bool {
+        let margin = MARGIN * self.size * self.size;
+        let mut edges = 0;
+        for k in 0..8 {
+            let (a, b) = (self.best[k].1, self.best[(k + 1) % 8].1);
+            if a == b || !(a.x.is_finite() && b.x.is_finite()) {
+                continue;
+            }
+            edges += 1;
+            if (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) <= margin {
+                return true;
+            }
+        }
+        edges < 3
+    }
 }
 
 /// The directions of [`Enclosure`]'s sides: sixteen, evenly spaced.
@@ -106,16 +131,29 @@ pub(crate) struct Enclosure {
 }
 
 impl Enclosure {
-    pub(crate) fn of(points: impl Iterator<Item = Point>) -> Enclosure {
+    pub(crate) fn of(points: &[Point]) -> Enclosure {
         let mut support = [f64::NEG_INFINITY; SIDES];
         let mut size: f64 = 0.0;
-        for p in points {
+        for &p in points {
             size = size.max(p.x.abs() + p.y.abs());
             for (k, s) in support.iter_mut().enumerate() {
                 *s = s.max(along(p, k));
             }
         }
         Enclosure { support, slack: MARGIN * size }
+    }
+
+    /// The enclosure of the union of the two sets.
+    pub(crate) fn merge(self, other: Enclosure) -> Enclosure {
+        let mut support = self.support;
+        support.iter_mut().zip(other.support).for_each(|(s, o)| *s = s.max(o));
+        Enclosure { support, slack: self.slack.max(other.slack) }
+    }
+
+    /// The area of the set's bounding box (the sides along the axes).
+    pub(crate) fn box_area(&self) -> f64 {
+        let s = &self.support;
+        (s[0] + s[SIDES / 2]) * (s[SIDES / 4] + s[3 * SIDES / 4])
     }
 
     /// Whether `p` lies within `band` of a side (or near enough that
@@ -200,7 +238,8 @@ mod tests {
     fn a_disk_beyond_a_side_moved_in_misses_the_points_not_near_one() {
         let points: Vec<Point> =
             (0..11).flat_map(|i| (0..11).map(move |j| Point::new(i as f64 / 10.0, j as f64 / 10.0))).collect();
-        let e = Enclosure::of(points.iter().copied());
+        let e = Enclosure::of(&points);
+        assert_eq!(e.box_area(), 1.0);
         assert!(e.near_a_side(Point::new(0.5, 0.95), 0.1));
         assert!(!e.near_a_side(Point::new(0.5, 0.85), 0.1));
         // a huge circle through three points along the top
@@ -214,7 +253,7 @@ mod tests {
         let mut points = vec![Point::new(0.0, 0.0), Point::new(4.0, 0.0), Point::new(4.0, 4.0), Point::new(0.0, 4.0)];
         points.extend((1..4).flat_map(|i| (1..4).map(move |j| Point::new(i as f64, j as f64))));
         points.push(Point::new(2.0, 0.0)); // on the hull, not a vertex: may stay
-        let kept = hull_candidates(points.iter().copied());
+        let kept = hull_candidates(&points);
         for corner in &points[..4] {
             assert!(kept.contains(corner));
         }

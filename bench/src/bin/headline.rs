@@ -68,6 +68,8 @@ use text::{seconds, thousands};
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Peer {
     Ours,
+    /// Ours with `Builder::threads(1)` (the build in halves needs two).
+    OursOneThread,
     BoostCpp,
     Boostvoronoi,
     Spade,
@@ -76,12 +78,13 @@ enum Peer {
     Clipper,
 }
 
-const PEERS: [Peer; 7] = [Peer::Ours, Peer::BoostCpp, Peer::Boostvoronoi, Peer::Spade, Peer::Cgal, Peer::Geos, Peer::Clipper];
+const PEERS: [Peer; 8] = [Peer::Ours, Peer::OursOneThread, Peer::BoostCpp, Peer::Boostvoronoi, Peer::Spade, Peer::Cgal, Peer::Geos, Peer::Clipper];
 
 impl Peer {
     fn name(self) -> &'static str {
         match self {
             Peer::Ours => "segvoronoi",
+            Peer::OursOneThread => "segvoronoi-1-thread",
             Peer::BoostCpp => "boost-cpp",
             Peer::Boostvoronoi => "boostvoronoi",
             Peer::Spade => "spade",
@@ -94,6 +97,7 @@ impl Peer {
     fn title(self) -> &'static str {
         match self {
             Peer::Ours => "segvoronoi",
+            Peer::OursOneThread => "segvoronoi, 1 thread",
             Peer::BoostCpp => "Boost.Polygon (C++)",
             Peer::Boostvoronoi => "boostvoronoi",
             Peer::Spade => "spade",
@@ -120,7 +124,7 @@ impl Peer {
 
     fn contender(self) -> Option<Contender> {
         match self {
-            Peer::Ours => Some(Contender::Segvoronoi),
+            Peer::Ours | Peer::OursOneThread => Some(Contender::Segvoronoi),
             Peer::BoostCpp => Some(Contender::BoostCpp),
             Peer::Boostvoronoi => Some(Contender::Boostvoronoi),
             Peer::Spade => Some(Contender::Spade),
@@ -179,8 +183,10 @@ impl Workload {
     fn peers(self) -> &'static [Peer] {
         use Peer::*;
         match self {
-            Workload::Points => &[Ours, BoostCpp, Boostvoronoi, Spade, Cgal],
-            Workload::Short | Workload::Long | Workload::Polygons | Workload::Coast => &[Ours, BoostCpp, Boostvoronoi, Cgal],
+            Workload::Points => &[Ours, OursOneThread, BoostCpp, Boostvoronoi, Spade, Cgal],
+            Workload::Short | Workload::Long | Workload::Polygons | Workload::Coast => {
+                &[Ours, OursOneThread, BoostCpp, Boostvoronoi, Cgal]
+            }
             Workload::MedialAxis => &[Ours],
             Workload::Offsets => &[Ours, Geos, Clipper],
             Workload::SplitRoads | Workload::SplitCoast => &[Ours, Cgal],
@@ -463,6 +469,9 @@ fn run_child(workload: Workload, peer: Peer, arg: &str, options: &Options) -> Re
     let exe = std::env::current_exe().map_err(|e| format!("cannot find own executable: {e}"))?;
     let mut command = Command::new(exe);
     command.args(["--child", workload.name(), peer.name(), &options.runs.to_string(), arg]);
+    if peer == Peer::OursOneThread {
+        command.env(contenders::THREADS_VARIABLE, "1");
+    }
     // a cell has room for one line: a timeout, or the child's last words
     let stdout = child::run(command, options.timeout).map_err(|e| match e.lines().last() {
         Some(last) if e.starts_with("child exited") => format!("failed: {}", last.rsplit(": ").next().unwrap_or(last)),

@@ -31,8 +31,9 @@ mod glue;
 use super::insert_point::{insert_points, PointStage};
 use super::restart::{insert_all_from, Outcome};
 use super::state::{infinite_rotation, Construction, INFINITE};
+use super::threads::run_beside;
 use crate::diagram::{SiteId, VertexId, NONE};
-use crate::geometry::seam::{edge_to_infinity_clears, hull_candidate_indices, hull_candidates, vertex_stays_short_of, Enclosure};
+use crate::geometry::seam::{edge_to_infinity_clears, hull_candidates, vertex_stays_short_of, Enclosure, Extremes};
 use crate::geometry::Point;
 
 /// From this many sites on (points and segments), a build with a spare
@@ -96,6 +97,9 @@ pub struct HalvesReport {
     /// Whether the halves were glued; otherwise the build ran again on one
     /// thread.
     pub glued: bool,
+    /// Wall time of the plan (the cut, the sites both halves hold), of the
+    /// halves' builds (with the input check beside them), and of the glue.
+    pub times: [std::time::Duration; 3],
 }
 
 fn report(update: impl FnOnce(&mut HalvesReport)) {
@@ -139,12 +143,15 @@ pub(super) fn insert_all_in_halves_after(
     report(|r| *r = HalvesReport { sites: points.len() + raw.len(), ..HalvesReport::default() });
     // The left half also runs the check, so it takes fewer sites.
     let left_share = if raw.is_empty() { 0.5 } else { LEFT_SHARE_BESIDE_THE_CHECK };
+    let started = std::time::Instant::now();
     let plan = Plan::of(points, raw.len(), left_share);
+    report(|r| r.times[0] = started.elapsed());
+    let started = std::time::Instant::now();
     let (segments, first) = match plan {
         Some(plan) => {
             let (tx, rx) = std::sync::mpsc::channel::<Option<std::sync::Arc<Vec<[usize; 2]>>>>();
             let shared_plan = &plan;
-            let (right, left) = super::threads::run_beside(
+            let (right, left) = run_beside(
                 move || {
                     let plan = shared_plan;
                     let half = Half::select(points, raw, plan, plan.band, Side::Right);
@@ -171,11 +178,12 @@ pub(super) fn insert_all_in_halves_after(
     let (plan, left, right) = first?;
     let (left, right) = (left?, right?);
     report(|r| {
+        r.times[1] = started.elapsed();
         r.attempts = 1;
         r.held = [left.held_sites(), right.held_sites()];
     });
     let band = match (left.needed_band, right.needed_band) {
-        (None, None) => return glued(glue::glue(left, right, points.len(), segments.len(), plan.cut)),
+        (None, None) => return glued(left, right, points.len(), segments.len(), plan.cut),
         (l, r) => 1.25 * l.unwrap_or(0.0).max(r.unwrap_or(0.0)),
     };
     drop((left, right));
@@ -193,14 +201,19 @@ pub(super) fn insert_all_in_halves_after(
         r.held = [left.held_sites(), right.held_sites()];
     });
     match (left.needed_band, right.needed_band) {
-        (None, None) => glued(glue::glue(left, right, points.len(), segments.len(), plan.cut)),
+        (None, None) => glued(left, right, points.len(), segments.len(), plan.cut),
         _ => None,
     }
 }
 
-/// `built`, recorded in the report.
-fn glued(built: Option<Built>) -> Option<Built> {
-    report(|r| r.glued = built.is_some());
+/// The halves glued (`glue::glue`), recorded in the report.
+fn glued(left: BuiltHalf, right: BuiltHalf, points: usize, segments: usize, cut: f64) -> Option<Built> {
+    let started = std::time::Instant::now();
+    let built = glue::glue(left, right, points, segments, cut);
+    report(|r| {
+        r.glued = built.is_some();
+        r.times[2] = started.elapsed();
+    });
     built
 }
 
@@ -218,7 +231,11 @@ struct Plan {
     band: f64,
     rim: f64,
     enclosure: Enclosure,
-    /// Per point: held by both halves ([`held_by_both`]).
+    /// Per point: held by both halves, whatever the band: every point that
+    /// may be a vertex of the hull (so that the edges to infinity of both
+    /// halves are the whole diagram's) and every point within `rim` of the
+    /// input's `enclosure` (cells along the hull reach along it, far across
+    /// the cut: their huge circles are checked against the enclosure).
     both: Vec<bool>,
 }
 
@@ -226,11 +243,38 @@ impl Plan {
     /// `None` when halves would not pay (points all on a line, or too
     /// many on the boundary).
     fn of(points: &[Point], segments: usize, left_share: f64) -> Option<Plan> {
-        let cut = quantile_x(points, left_share)?;
-        let spacing = mean_spacing(points, segments)?;
+        // two passes over the points, each on both threads by halves
+        let (low, high) = points.split_at(points.len() / 2);
+        let bounds = |part: &[Point]| (Enclosure::of(part), Extremes::of(part));
+        let ((enclosure_high, extremes_high), (enclosure_low, extremes_low)) = run_beside(|| bounds(high), || bounds(low));
+        let (enclosure, extremes) = (enclosure_low.merge(enclosure_high), extremes_low.merge(extremes_high));
+        let spacing = (enclosure.box_area() / (points.len() + segments) as f64).sqrt();
+        if !(spacing.is_finite() && spacing > 0.0) {
+            return None;
+        }
         let (band, rim) = (FIRST_BAND * spacing, RIM * spacing);
-        let enclosure = Enclosure::of(points.iter().copied());
-        let both = held_by_both(points, &enclosure, rim)?;
+        let held = |part: &[Point]| -> (Vec<bool>, usize, usize) {
+            let (mut on_hull, mut count) = (0, 0);
+            let both = part
+                .iter()
+                .map(|&p| {
+                    let hull = extremes.may_be_on_the_hull(p);
+                    let held = hull || enclosure.near_a_side(p, rim);
+                    on_hull += usize::from(hull);
+                    count += usize::from(held);
+                    held
+                })
+                .collect();
+            (both, on_hull, count)
+        };
+        let ((both_high, hull_high, count_high), (mut both, hull_low, count_low)) = run_beside(|| held(high), || held(low));
+        both.extend_from_slice(&both_high);
+        // Both halves hold these: too many, and halves would not pay.
+        let too_many = hull_low + hull_high > points.len() / 64 || count_low + count_high > points.len() / 16;
+        if too_many && !forced() {
+            return None;
+        }
+        let cut = quantile_x(points, left_share)?;
         Some(Plan { cut, band, rim, enclosure, both })
     }
 }
@@ -400,7 +444,7 @@ impl Half<'_> {
             .chain(segments.iter().zip(&held_segment).filter(|(_, &held)| !held).flat_map(|(&[a, b], _)| [points[a], points[b]]));
         let t = self.side.toward_outside();
         let line = left_out.clone().map(|p| p.x * t).fold(f64::INFINITY, f64::min) * t;
-        line.is_finite().then(|| Outside { line, hull: hull_candidates(left_out) })
+        line.is_finite().then(|| Outside { line, hull: hull_candidates(&left_out.collect::<Vec<Point>>()) })
     }
 
     /// `None` when every cell this half owns is final (no site left out
@@ -440,22 +484,6 @@ impl Half<'_> {
     }
 }
 
-/// The points both halves hold whatever the band: every point that may
-/// be a vertex of the hull (so that the edges to infinity of both halves
-/// are the whole diagram's) and every point within `rim` of the input's
-/// `enclosure` (cells along the hull reach along it, far across the cut:
-/// their huge circles are checked against the enclosure instead);
-/// `None` when they are too many for halves to pay.
-fn held_by_both(points: &[Point], enclosure: &Enclosure, rim: f64) -> Option<Vec<bool>> {
-    let candidates = hull_candidate_indices(points);
-    if candidates.len() > points.len() / 64 && !forced() {
-        return None;
-    }
-    let mut both: Vec<bool> = points.iter().map(|&p| enclosure.near_a_side(p, rim)).collect();
-    candidates.into_iter().for_each(|i| both[i] = true);
-    (both.iter().filter(|&&b| b).count() < points.len() / 16 || forced()).then_some(both)
-}
-
 /// The x that `share` of the points lie left of (the cut), `None` when it
 /// would leave one half empty (every point at or right of it).
 fn quantile_x(points: &[Point], share: f64) -> Option<f64> {
@@ -463,17 +491,4 @@ fn quantile_x(points: &[Point], share: f64) -> Option<f64> {
     let middle = ((xs.len() as f64 * share) as usize).min(xs.len() - 1);
     let (_, &mut cut, _) = xs.select_nth_unstable_by(middle, f64::total_cmp);
     points.iter().any(|p| p.x < cut).then_some(cut)
-}
-
-/// The side of the square each site would have if they covered the
-/// points' bounding box evenly; `None` for a box of no area.
-fn mean_spacing(points: &[Point], segments: usize) -> Option<f64> {
-    let (mut lo, mut hi) = (points[0], points[0]);
-    for p in points {
-        lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
-        hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
-    }
-    let area = (hi.x - lo.x) * (hi.y - lo.y);
-    let spacing = (area / (points.len() + segments) as f64).sqrt();
-    (spacing.is_finite() && spacing > 0.0).then_some(spacing)
 }
