@@ -78,7 +78,8 @@ enum Peer {
     Clipper,
 }
 
-const PEERS: [Peer; 8] = [Peer::Ours, Peer::OursOneThread, Peer::BoostCpp, Peer::Boostvoronoi, Peer::Spade, Peer::Cgal, Peer::Geos, Peer::Clipper];
+const PEERS: [Peer; 8] =
+    [Peer::Ours, Peer::OursOneThread, Peer::BoostCpp, Peer::Boostvoronoi, Peer::Spade, Peer::Cgal, Peer::Geos, Peer::Clipper];
 
 impl Peer {
     fn name(self) -> &'static str {

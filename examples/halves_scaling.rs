@@ -1,0 +1,70 @@
+//! The figures of the parallel build's scaling model (issue 33,
+//! `docs/studies/parallel-build.md`): for uniform random points and short
+//! random segments at the sizes given, the build at one thread and at two
+//! (in halves), with the parts of the two-thread build that
+//! `diagnostics::take_halves_report` times (the plan, the halves with the
+//! input check beside them, the glue) and the sites each half held.
+//!
+//! `cargo run --release --example halves_scaling -- [points|segments] [SIZE ...]`
+//! (default: both, 1M).
+
+use segvoronoi::diagnostics::take_halves_report;
+use segvoronoi::splitmix::SplitMix64;
+use segvoronoi::Builder;
+use std::time::Instant;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let kinds: Vec<&str> = match args.first().map(String::as_str) {
+        Some(k @ ("points" | "segments")) => vec![k],
+        _ => vec!["points", "segments"],
+    };
+    let sizes: Vec<usize> = args.iter().filter_map(|a| a.parse().ok()).collect();
+    let sizes = if sizes.is_empty() { vec![1_000_000] } else { sizes };
+    println!("| input | size | 1 thread | 2 threads | speed-up | plan | halves | glue | rest | held by the halves |");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for kind in kinds {
+        for &n in &sizes {
+            let mut b = Builder::new();
+            let mut rng = SplitMix64(7);
+            if kind == "points" {
+                b.add_points((0..n).map(|_| [rng.unit(), rng.unit()])).expect("finite");
+            } else {
+                // one segment of length 0.3 per unit cell, starting in its
+                // lower left 0.3 x 0.3: none meet
+                let k = (n as f64).sqrt().ceil() as usize;
+                b.add_segments((0..n).map(|i| {
+                    let (x, y) = ((i % k) as f64 + 0.3 * rng.unit(), (i / k) as f64 + 0.3 * rng.unit());
+                    let a = rng.unit() * std::f64::consts::TAU;
+                    [[x, y], [x + 0.3 * a.cos(), y + 0.3 * a.sin()]]
+                }))
+                .expect("finite");
+            }
+            let one = time(|| b.threads(1).build().map(|_| ()));
+            let two = time(|| b.threads(2).build().map(|_| ()));
+            let r = take_halves_report().unwrap_or_default();
+            let [plan, halves, glue] = r.times.map(|t| t.as_secs_f64());
+            println!(
+                "| {kind} | {n} | {one:.3} s | {two:.3} s | {:.2}x | {plan:.3} s | {halves:.3} s | {glue:.3} s | {:.3} s | {} + {} of {} ({:.1} % more){} |",
+                one / two,
+                two - plan - halves - glue,
+                r.held[0],
+                r.held[1],
+                r.sites,
+                100.0 * ((r.held[0] + r.held[1]) as f64 / r.sites as f64 - 1.0),
+                if r.glued { "" } else { ", not glued" },
+            );
+        }
+    }
+}
+
+/// Seconds of the fastest of three runs.
+fn time(mut build: impl FnMut() -> Result<(), segvoronoi::Error>) -> f64 {
+    (0..3)
+        .map(|_| {
+            let start = Instant::now();
+            build().expect("a diagram");
+            start.elapsed().as_secs_f64()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
