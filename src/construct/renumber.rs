@@ -95,21 +95,30 @@ pub(super) fn renumber(
     store.cell_edge = cell_edge;
     store.infinite_site = infinite;
 
-    // Vertices at infinity to the end (there are only as many as hull edges).
-    let mut end = store.vertex_count();
-    let mut v = 0;
-    while v < end {
-        if store.is_at_infinity(VertexId::from_index(v)) {
-            end -= 1;
-            while end > v && store.is_at_infinity(VertexId::from_index(end)) {
-                end -= 1;
-            }
-            store.swap_vertices(VertexId::from_index(v), VertexId::from_index(end));
+    // Vertices at infinity to the end (there are only as many as hull
+    // edges): each one below the finite count, in increasing order, swaps
+    // with the last finite vertex not yet swapped. Finding them reads every
+    // vertex, on two threads for large stores.
+    let count = store.vertex_count();
+    let at_infinity = |range: std::ops::Range<usize>| -> Vec<usize> {
+        range.filter(|&v| store.is_at_infinity(VertexId::from_index(v))).collect()
+    };
+    let at_infinity_ids = if large {
+        let (high, mut low) = run_beside(|| at_infinity(count / 2..count), || at_infinity(0..count / 2));
+        low.extend_from_slice(&high);
+        low
+    } else {
+        at_infinity(0..count)
+    };
+    let finite_vertices = count - at_infinity_ids.len();
+    let mut last = count;
+    for &v in at_infinity_ids.iter().take_while(|&&v| v < finite_vertices) {
+        last -= 1;
+        while store.is_at_infinity(VertexId::from_index(last)) {
+            last -= 1;
         }
-        v += 1;
+        store.swap_vertices(VertexId::from_index(v), VertexId::from_index(last));
     }
-    let finite_vertices =
-        (0..store.vertex_count()).find(|&v| store.is_at_infinity(VertexId::from_index(v))).unwrap_or(store.vertex_count());
 
     for v in 0..finite_vertices {
         // A vertex beyond the range of f64 keeps its coordinates saturated

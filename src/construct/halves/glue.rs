@@ -37,23 +37,29 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
     // then each half renames its cells and finds what it keeps.
     let BuiltHalf { construction: lc, points: lp, segments: ls, site_of_point: lsp, site_of_segment: lss, .. } = left;
     let BuiltHalf { construction: rc, points: rp, segments: rs, site_of_point: rsp, site_of_segment: rss, .. } = right;
-    let sites_and_ends = |c: &Construction, map: &[u32]| sites_and_ends(c, map, &ranges);
+    // Both halves write their owned sites' geometry into their own ranges.
+    let mut sites = vec![Point::new(f64::NAN, f64::NAN); ranges.count];
+    let mut segment_ends = vec![[SiteId(NONE); 2]; ranges.count - ranges.first_segment as usize];
+    let (left_points, rest) = sites.split_at_mut(ranges.left_points_end as usize);
+    let right_points = &mut rest[..(ranges.first_segment - ranges.left_points_end) as usize];
+    let (left_ends, right_ends) = segment_ends.split_at_mut((ranges.left_segments_end - ranges.first_segment) as usize);
+    let ranges_ref = &ranges;
+    let (of_point_ref, of_segment_ref) = (&of_point, &of_segment);
     let (right_side, left_side) = run_beside(
-        || {
-            let map = names_right.complete(&rp, &rsp, &rs, &rss, &of_point, &of_segment)?;
-            let geometry = sites_and_ends(&rc, &map);
+        move || {
+            let map = names_right.complete(&rp, &rsp, &rs, &rss, of_point_ref, of_segment_ref)?;
+            write_geometry(&rc, &map, ranges_ref, Side::Right, right_points, right_ends);
             let store = rc.into_parts().store;
-            Some((Renamed::of(store, &map, &ranges, Side::Right), geometry))
+            Some(Renamed::of(store, map, ranges_ref, Side::Right))
         },
-        || {
-            let map = names_left.complete(&lp, &lsp, &ls, &lss, &of_point, &of_segment)?;
-            let geometry = sites_and_ends(&lc, &map);
+        move || {
+            let map = names_left.complete(&lp, &lsp, &ls, &lss, of_point_ref, of_segment_ref)?;
+            write_geometry(&lc, &map, ranges_ref, Side::Left, left_points, left_ends);
             let store = lc.into_parts().store;
-            Some((Renamed::of(store, &map, &ranges, Side::Left), geometry))
+            Some(Renamed::of(store, map, ranges_ref, Side::Left))
         },
     );
-    let ((mut left, left_geometry), (right, right_geometry)) = (left_side?, right_side?);
-    let (sites, segment_ends) = merge_geometry(&ranges, left_geometry, right_geometry);
+    let (mut left, right) = (left_side?, right_side?);
 
     // Pair the vertices on both sides of the cut.
     let mut partner_of_left: HashMap<u32, u32> = HashMap::with_capacity(left.across.len());
@@ -93,23 +99,46 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
     );
     let (from_right, from_left) = (from_right?, from_left?);
 
-    // Cells: each site's edge from the half that owns it.
+    // Cells: each site's edge from the half that owns it, both at once.
     let mut cell_edge = vec![NONE; ranges.count];
-    for (local, &f) in left.map.iter().enumerate() {
-        if f != NONE && ranges.owned(SiteId(f), Side::Left) {
-            let h = left.store.cell_edge[local];
-            if h == NONE || !left.keep[HalfEdgeId(h).origin().index()] {
-                return None;
+    let (left_low, rest) = cell_edge.split_at_mut(ranges.left_points_end as usize);
+    let (right_low, rest) = rest.split_at_mut((ranges.first_segment - ranges.left_points_end) as usize);
+    let (left_high, right_high) = rest.split_at_mut((ranges.left_segments_end - ranges.first_segment) as usize);
+    let cells_of_right = || -> Option<()> {
+        let (low, high) = (ranges.left_points_end, ranges.left_segments_end);
+        for (local, &f) in right.map.iter().enumerate() {
+            if ranges.owned(SiteId(f), Side::Right) {
+                let h = *right.store.cell_edge.get(local).filter(|&&h| h != NONE)?;
+                let slot = if f < ranges.first_segment {
+                    &mut right_low[(f - low) as usize]
+                } else {
+                    &mut right_high[(f - high) as usize]
+                };
+                *slot = right.across_to(HalfEdgeId(h), n1, &partner_of_right, &left.store)?.0;
             }
-            cell_edge[f as usize] = h;
         }
-    }
-    for (local, &f) in right.map.iter().enumerate() {
-        if f != NONE && ranges.owned(SiteId(f), Side::Right) {
-            let h = *right.store.cell_edge.get(local).filter(|&&h| h != NONE)?;
-            cell_edge[f as usize] = right.across_to(HalfEdgeId(h), n1, &partner_of_right, &left.store)?.0;
+        Some(())
+    };
+    let cells_of_left = || -> Option<()> {
+        for (local, &f) in left.map.iter().enumerate() {
+            if ranges.owned(SiteId(f), Side::Left) {
+                let h = left.store.cell_edge[local];
+                if h == NONE || !left.keep[HalfEdgeId(h).origin().index()] {
+                    return None;
+                }
+                let slot = if f < ranges.first_segment {
+                    &mut left_low[f as usize]
+                } else {
+                    &mut left_high[(f - ranges.first_segment) as usize]
+                };
+                *slot = h;
+            }
         }
-    }
+        Some(())
+    };
+    let (right_cells, left_cells) = run_beside(cells_of_right, cells_of_left);
+    right_cells?;
+    left_cells?;
     let n1_kept_any = |h: HalfEdgeId| h.origin().index() >= n1 || left.keep[h.origin().index()];
     cell_edge[INFINITE.index()] = (0..left.store.twin.len())
         .map(HalfEdgeId::from_index)
@@ -271,33 +300,23 @@ fn inputs_named(points: usize, segments: usize, names: [&Names; 2]) -> Option<(V
     Some((of_point, of_segment))
 }
 
-/// A half's owned sites' coordinates and segment ends, by final id.
-type Geometry = (Vec<(u32, Point)>, Vec<(u32, [SiteId; 2])>);
-
-fn sites_and_ends(c: &Construction, map: &[u32], ranges: &Ranges) -> Geometry {
-    let (mut points, mut ends) = (Vec::new(), Vec::new());
+/// Writes a half's owned sites' coordinates into `points` (its owned
+/// points' range of the site table, from its first id) and its owned
+/// segments' ends into `ends` (its range of the segments' ends).
+fn write_geometry(c: &Construction, map: &[u32], ranges: &Ranges, side: Side, points: &mut [Point], ends: &mut [[SiteId; 2]]) {
+    let (first_point, first_segment) = ranges.starts(side);
+    // (the left's points start at the point at infinity's slot: 0)
+    let first_point = if side == Side::Left { 0 } else { first_point };
     for (local, &f) in map.iter().enumerate().skip(1) {
-        if f == NONE || !ranges.owned(SiteId(f), Side::Left) && !ranges.owned(SiteId(f), Side::Right) {
+        if !ranges.owned(SiteId(f), side) {
             continue;
         }
         let s = SiteId::from_index(local);
         match c.ends_of(s) {
-            Some(e) => ends.push((f, e.map(|e| SiteId(map[e.index()])))),
-            None => points.push((f, c.site_points(s).0[0])),
+            Some(e) => ends[(f - first_segment) as usize] = e.map(|e| SiteId(map[e.index()])),
+            None => points[(f - first_point) as usize] = c.site_points(s).0[0],
         }
     }
-    (points, ends)
-}
-
-/// Both halves' geometry in one site table (each site once: the owner's).
-fn merge_geometry(ranges: &Ranges, left: Geometry, right: Geometry) -> (Vec<Point>, Vec<[SiteId; 2]>) {
-    let mut sites = vec![Point::new(f64::NAN, f64::NAN); ranges.count];
-    let mut ends = vec![[SiteId(NONE); 2]; ranges.count - ranges.first_segment as usize];
-    for (points, segment_ends) in [left, right] {
-        points.into_iter().for_each(|(f, p)| sites[f as usize] = p);
-        segment_ends.into_iter().for_each(|(f, e)| ends[(f - ranges.first_segment) as usize] = e);
-    }
-    (sites, ends)
 }
 
 /// A half's store renamed to final ids, with what the glue keeps of it.
@@ -318,7 +337,7 @@ struct Renamed {
 }
 
 impl Renamed {
-    fn of(mut store: Store, map: &[u32], ranges: &Ranges, side: Side) -> Renamed {
+    fn of(mut store: Store, map: Vec<u32>, ranges: &Ranges, side: Side) -> Renamed {
         for r in store.right.iter_mut() {
             *r = SiteId(map[r.index()]);
         }
@@ -351,7 +370,7 @@ impl Renamed {
             }
             kept_count += usize::from(keep[v]);
         }
-        Renamed { store, map: map.to_vec(), keep, kept_count, rank, across, across_by_sites }
+        Renamed { store, map, keep, kept_count, rank, across, across_by_sites }
     }
 
     /// Right: the glued half-edge for its half-edge `h`: its own, appended
