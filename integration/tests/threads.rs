@@ -121,7 +121,10 @@ fn builds_in_halves_give_the_one_thread_diagram_on_every_family() {
     let canonical = TopologyOptions::default().with_canonical_cuts(true).with_voronoi_pairs(true);
     let (mut glued, mut again, mut compared) = (0, 0, 0);
     set_halves_from(Some(64));
-    for (k, name) in names.iter().enumerate() {
+    // (debug builds, CI's, validate every build and run some five times
+    // slower: they take every other family)
+    let stride = if cfg!(debug_assertions) { 2 } else { 1 };
+    for (k, name) in names.iter().enumerate().step_by(stride) {
         for seed in [1] {
             let Some(made) = generate(name, 240, seed) else { continue };
             // each family as made and one other way, in turn (all six ways
@@ -145,7 +148,10 @@ fn builds_in_halves_give_the_one_thread_diagram_on_every_family() {
                     }
                     (a, b) => panic!("{what}: one thread {:?}, two {:?}", a.err(), b.err()),
                 };
-                two.validate().unwrap_or_else(|e| panic!("{what}: {e:?}"));
+                if !cfg!(debug_assertions) {
+                    // (debug builds validate every diagram they return)
+                    two.validate().unwrap_or_else(|e| panic!("{what}: {e:?}"));
+                }
                 assert!(one.topology(canonical) == two.topology(canonical), "{what}: another topology in halves");
                 let key = |v: &segvoronoi::Vertex| site_key(v.sites);
                 let at: std::collections::HashMap<_, _> = one.vertices().map(|v| (key(&v), v)).collect();

@@ -105,7 +105,9 @@ pub(super) fn check_input(points: &[Point], segments: &[[Point; 2]], rings: &[Ri
 fn build_points(input: &[Point]) -> (Diagram, Outcome) {
     let scale = input_scale(input, &[]);
     let points = to_internal(input, scale);
-    let (diagram, site_of_input, _, outcome) = insert_all(&points, &[]);
+    // in halves on two threads when large and a thread is spare
+    let built = halves::insert_all_in_halves(&points, &[]).unwrap_or_else(|| insert_all(&points, &[]));
+    let (diagram, site_of_input, _, outcome) = built;
     (renumber::renumber(diagram, &site_of_input, input, &[], &[], scale), outcome)
 }
 

@@ -58,9 +58,6 @@ fn restart_budget() -> usize {
 /// the diagram in internal site ids, per input point the internal site it
 /// became, and per segment its internal site.
 pub(super) fn insert_all(points: &[Point], segments: &[[usize; 2]]) -> (Construction, Vec<SiteId>, Vec<SiteId>, Outcome) {
-    if let Some(built) = super::halves::insert_all_in_halves(points, segments) {
-        return built;
-    }
     insert_all_from(insert_points(points, segments.len()), points, segments)
 }
 
