@@ -1055,11 +1055,11 @@ static void query_domain_pieces(ctx *c, const segvoronoi_diagram *d, rng *r, siz
     expect(c, "segvoronoi_diagram_stats", "small struct_size", segvoronoi_diagram_stats(d, &st), SEGVORONOI_STATUS_INVALID_ARGUMENT, NULL);
     /* topology */
     {
-        uint32_t flags = below(r, 4);
+        uint32_t flags = below(r, 8);
         char *text = NULL;
         size_t len = 0;
         if (chance(r, 10)) {
-            flags = 4u << below(r, 20);
+            flags = 8u << below(r, 20);
             expect(c, "segvoronoi_diagram_topology", "unknown flag", segvoronoi_diagram_topology(d, flags, &text, &len), SEGVORONOI_STATUS_INVALID_ARGUMENT, NULL);
             if (text != NULL) inconsistent(c, "segvoronoi_diagram_topology", "text on error", "text not NULL");
         } else if (segvoronoi_diagram_edge_count(d) < 200 &&

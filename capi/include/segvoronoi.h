@@ -72,6 +72,12 @@
 // zero-length (by default only edges whose sites are exactly cocircular).
 #define SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE 2
 
+// Flag for `segvoronoi_diagram_topology`: in `EDGES` and `FACES`, cut every
+// degenerate vertex (four or more sites on one circle) one way, the same
+// whatever the input's order or the build's thread count (by default they
+// list the diagram's own vertices, which depend on both).
+#define SEGVORONOI_TOPOLOGY_CANONICAL_CUTS 4
+
 // `segvoronoi_site.kind` of a point site.
 #define SEGVORONOI_SITE_POINT 0
 
@@ -1038,8 +1044,10 @@ enum segvoronoi_status segvoronoi_diagram_extent(const struct segvoronoi_diagram
 // The canonical topology text (`EDGES`, `FACES`, and with
 // `SEGVORONOI_TOPOLOGY_VORONOI_PAIRS` in `flags` also `VPAIRS`,
 // `VVERTICES`, with zero length decided exactly unless
-// `SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE` is set too): NUL-terminated in `*text`, its length without the NUL in
-// `*length` (`length` may be NULL).
+// `SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE` is set too; with
+// `SEGVORONOI_TOPOLOGY_CANONICAL_CUTS`, degenerate vertices cut one way):
+// NUL-terminated in `*text`, its length without the NUL in `*length`
+// (`length` may be NULL).
 //
 // Ownership: the caller owns `*text` and frees it with
 // `segvoronoi_string_free`. On error `*text` is set to NULL.

@@ -26,6 +26,12 @@ pub const SEGVORONOI_TOPOLOGY_VORONOI_PAIRS: u32 = 1;
 /// zero-length (by default only edges whose sites are exactly cocircular).
 pub const SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE: u32 = 2;
 
+/// Flag for `segvoronoi_diagram_topology`: in `EDGES` and `FACES`, cut every
+/// degenerate vertex (four or more sites on one circle) one way, the same
+/// whatever the input's order or the build's thread count (by default they
+/// list the diagram's own vertices, which depend on both).
+pub const SEGVORONOI_TOPOLOGY_CANONICAL_CUTS: u32 = 4;
+
 /// A built Voronoi diagram. Opaque and immutable. Free with
 /// `segvoronoi_diagram_free`.
 ///
@@ -621,8 +627,10 @@ pub unsafe extern "C" fn segvoronoi_diagram_extent(diagram: *const segvoronoi_di
 /// The canonical topology text (`EDGES`, `FACES`, and with
 /// `SEGVORONOI_TOPOLOGY_VORONOI_PAIRS` in `flags` also `VPAIRS`,
 /// `VVERTICES`, with zero length decided exactly unless
-/// `SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE` is set too): NUL-terminated in `*text`, its length without the NUL in
-/// `*length` (`length` may be NULL).
+/// `SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE` is set too; with
+/// `SEGVORONOI_TOPOLOGY_CANONICAL_CUTS`, degenerate vertices cut one way):
+/// NUL-terminated in `*text`, its length without the NUL in `*length`
+/// (`length` may be NULL).
 ///
 /// Ownership: the caller owns `*text` and frees it with
 /// `segvoronoi_string_free`. On error `*text` is set to NULL.
@@ -637,14 +645,17 @@ pub unsafe extern "C" fn segvoronoi_diagram_topology(
     require_non_null!(text);
     // SAFETY: text is non-null and writable.
     unsafe { *text = std::ptr::null_mut() };
-    let unknown = flags & !(SEGVORONOI_TOPOLOGY_VORONOI_PAIRS | SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE);
+    let known =
+        SEGVORONOI_TOPOLOGY_VORONOI_PAIRS | SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE | SEGVORONOI_TOPOLOGY_CANONICAL_CUTS;
+    let unknown = flags & !known;
     if unknown != 0 {
         return fail(segvoronoi_status::InvalidArgument, format!("unknown flag bits {unknown:#x} in `flags`"));
     }
     with_diagram(diagram, |d| {
         let options = TopologyOptions::default()
             .with_voronoi_pairs(flags & SEGVORONOI_TOPOLOGY_VORONOI_PAIRS != 0)
-            .with_zero_length_tolerance((flags & SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE != 0).then_some(ZERO_LENGTH));
+            .with_zero_length_tolerance((flags & SEGVORONOI_TOPOLOGY_ZERO_LENGTH_TOLERANCE != 0).then_some(ZERO_LENGTH))
+            .with_canonical_cuts(flags & SEGVORONOI_TOPOLOGY_CANONICAL_CUTS != 0);
         let (ptr, len) = into_c_string(d.topology(options));
         if !length.is_null() {
             write_out(length, len);
