@@ -377,10 +377,11 @@ impl Half<'_> {
     /// The half's points inserted (the left's with room for the right
     /// half's vertices: its store is the glued one, and grows in place;
     /// memory not touched is not taken).
-    fn insert_points(&self, points: &[Point], segments: usize) -> PointStage {
+    /// Returns them too, in the half's order (its local points).
+    fn insert_points(&self, points: &[Point], segments: usize) -> (PointStage, Vec<Point>) {
         let local: Vec<Point> = self.points.iter().map(|&i| points[i as usize]).collect();
         let room = if self.side == Side::Left { points.len() + segments } else { segments };
-        insert_points(&local, room)
+        (insert_points(&local, room), local)
     }
 
     /// Builds the half on this thread and checks its owned cells; `None`
@@ -393,17 +394,14 @@ impl Half<'_> {
 
     /// [`build`](Self::build) after the points: the segments it holds of
     /// `segments` (which `select` saw, or fewer), then the checks.
-    fn finish(mut self, stage: PointStage, points: &[Point], segments: &[[usize; 2]]) -> Option<BuiltHalf> {
+    fn finish(
+        mut self,
+        (stage, local_points): (PointStage, Vec<Point>),
+        points: &[Point],
+        segments: &[[usize; 2]],
+    ) -> Option<BuiltHalf> {
         let mut local_of = vec![NONE; points.len()];
-        let local_points: Vec<Point> = self
-            .points
-            .iter()
-            .enumerate()
-            .map(|(local, &i)| {
-                local_of[i as usize] = local as u32;
-                points[i as usize]
-            })
-            .collect();
+        self.points.iter().enumerate().for_each(|(local, &i)| local_of[i as usize] = local as u32);
         self.segments = (0..segments.len() as u32)
             .filter(|&k| Half::holds_segment(self.side, self.plan, self.band, points, segments[k as usize]))
             .collect();
