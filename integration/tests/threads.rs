@@ -78,7 +78,8 @@ fn the_same_error_at_every_thread_count() {
 /// and every vertex (named by its three sites) at the same position and
 /// clearance, bit for bit. On every generated family (degenerate ones
 /// included: lattices, cocircular points, collinear runs), every chain
-/// family with straight and nudged (an ulp off) joints, each as made and
+/// family with straight and nudged (an ulp off) joints, every ring family
+/// (rings touching at a point, the glyphs of DejaVu Sans), each as made and
 /// one of: reversed, shuffled, mirrored, scaled, moved far from the origin.
 /// Where the halves cannot be glued (a degenerate vertex cut two ways
 /// across the cut) the build runs again on one thread: the answer is the
@@ -91,6 +92,7 @@ fn builds_in_halves_give_the_one_thread_diagram_on_every_family() {
     for f in CHAIN_FAMILIES {
         names.extend(VARIANTS.iter().map(|(v, _)| format!("{f}{v}")));
     }
+    names.extend(segvoronoi_testgen::rings::RING_FAMILIES.iter().map(|f| f.to_string()));
     let transforms: [(&str, fn(&mut Input)); 6] = [
         ("as made", |_| {}),
         ("reversed", |i| {
@@ -126,7 +128,19 @@ fn builds_in_halves_give_the_one_thread_diagram_on_every_family() {
     let stride = if cfg!(debug_assertions) { 2 } else { 1 };
     for (k, name) in names.iter().enumerate().step_by(stride) {
         for seed in [1] {
-            let Some(made) = generate(name, 240, seed) else { continue };
+            // ring families as their segments: rings touching at a point,
+            // and the glyphs of DejaVu Sans (Debian's fonts-dejavu)
+            let rings = segvoronoi_testgen::rings::generate_rings(name, 240, seed);
+            let made = match rings {
+                // (inscribed rings are cocircular: degenerate vertices may be cut otherwise)
+                Some(rings) => {
+                    Input { segments: segvoronoi_testgen::rings::ring_segments(&rings), degenerate: true, ..Input::default() }
+                }
+                None => match generate(name, 240, seed) {
+                    Some(made) => made,
+                    None => continue,
+                },
+            };
             // each family as made and one other way, in turn (all six ways
             // for every family take minutes)
             for (how, transform) in [&transforms[0], &transforms[1 + k % 5]] {
@@ -201,5 +215,22 @@ fn a_straight_fan_far_out_has_one_text_however_its_vertices_are_numbered() {
     let glued = take_halves_report().is_some_and(|r| r.glued);
     set_halves_from(None);
     assert!(glued);
+    assert!(one == two);
+}
+
+/// A point exactly on a segment (the build cuts the segment there): that
+/// build does not run in halves, and gives the one-thread diagram.
+#[test]
+fn a_point_exactly_on_a_segment_builds_as_one_thread_does() {
+    use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
+    let mut b = Builder::new();
+    b.add_segments((0..200).map(|k| [[k as f64, 0.0], [k as f64 + 0.5, 1.0]])).unwrap();
+    b.add_point([0.25, 0.5]).unwrap(); // on segment 0, exactly
+    set_halves_from(Some(64));
+    let one = fingerprint(&b.threads(1).build().unwrap());
+    let two = fingerprint(&b.threads(2).build().unwrap());
+    let glued = take_halves_report().is_some_and(|r| r.glued);
+    set_halves_from(None);
+    assert!(!glued);
     assert!(one == two);
 }
