@@ -5,9 +5,9 @@
 use super::input_check::CheckedInput;
 use super::state::{Construction, Parts, INFINITE};
 use super::threads::run_beside;
-use crate::diagram::{BuildStats, Diagram, HalfEdgeId, SiteId, VertexId, NONE};
+use crate::diagram::{BuildStats, Diagram, HalfEdgeId, SiteId, SiteTable, VertexId, NONE};
 use crate::geometry::scale::Scale;
-use crate::geometry::{Point, Site};
+use crate::geometry::Point;
 
 /// From this many vertices on, the renaming of the cells and the list of
 /// edges run on two threads by halves (when the build may start one):
@@ -48,13 +48,13 @@ pub(super) fn renumber(
     // Public site ids: points in order of first appearance in the input,
     // then the segments.
     let mut public_of = vec![NONE; internal_sites.len()];
-    let mut sites: Vec<Site> = Vec::with_capacity(internal_sites.len().saturating_sub(1));
+    let mut sites = SiteTable::with_capacity(site_of_input.len().min(internal_sites.len()), segments.len(), arcs.len());
     let mut input_site = Vec::with_capacity(input.len());
     for (i, s) in site_of_input.iter().enumerate() {
         let slot = &mut public_of[s.index()];
         if *slot == NONE {
             *slot = sites.len() as u32;
-            sites.push(Site::Point(input[i].canonical_zero()));
+            sites.push_point(input[i].canonical_zero());
         }
         input_site.push(SiteId(*slot));
     }
@@ -63,13 +63,13 @@ pub(super) fn renumber(
     for seg in segments {
         public_of[seg.internal.index()] = sites.len() as u32;
         let [a, b] = seg.ends;
-        sites.push(Site::Segment { a: a.canonical_zero(), b: b.canonical_zero() });
+        sites.push_segment(a.canonical_zero(), b.canonical_zero());
         segment_input.push(seg.input as u32);
     }
     let mut arc_input = Vec::with_capacity(arcs.len());
     for arc in arcs {
         public_of[arc.internal.index()] = sites.len() as u32;
-        sites.push(Site::Arc(arc.arc));
+        sites.push_arc(arc.arc);
         arc_input.push(arc.input as u32);
     }
     let internals = segments.iter().map(|seg| seg.internal).chain(arcs.iter().map(|arc| arc.internal));
@@ -160,7 +160,7 @@ pub(super) fn renumber(
         edges_in(0..store.twin.len())
     };
 
-    let extent = bounding_box_diagonal(&sites[..point_sites]);
+    let extent = bounding_box_diagonal(sites.points());
     let stats = BuildStats {
         input_points: input.len(),
         input_segments: 0,
@@ -196,8 +196,8 @@ pub(super) fn renumber(
     }
 }
 
-fn bounding_box_diagonal(point_sites: &[Site]) -> f64 {
-    let mut points = point_sites.iter().filter_map(Site::as_point);
+fn bounding_box_diagonal(point_sites: &[Point]) -> f64 {
+    let mut points = point_sites.iter().copied();
     let Some(first) = points.next() else { return 0.0 };
     let (lo, hi) = points
         .fold((first, first), |(lo, hi), p| (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y))));

@@ -267,9 +267,9 @@ fn directions_at_infinity_turn_once(diagram: &Diagram) -> Result<(), Error> {
     let refuse = |k: usize, what: &str| {
         let (d, [x, _]) = ring[k];
         let first_arc = diagram.sites.len() - diagram.arc_sites;
-        let near = diagram.sites.get(x.index()).map_or(Point::new(0.0, 0.0), Site::midpoint);
+        let near = diagram.sites.get(x.index()).map_or(Point::new(0.0, 0.0), |s| s.midpoint());
         let arc = (first_arc..diagram.sites.len())
-            .min_by(|&a, &b| diagram.sites[a].distance(near).total_cmp(&diagram.sites[b].distance(near)))
+            .min_by(|&a, &b| diagram.sites.at(a).distance(near).total_cmp(&diagram.sites.at(b).distance(near)))
             .map_or(0, |s| diagram.arc_input.get(s - first_arc).copied().unwrap_or(0) as usize);
         Err(Error::new(
             ErrorKind::Internal,
@@ -290,7 +290,7 @@ fn directions_at_infinity_turn_once(diagram: &Diagram) -> Result<(), Error> {
             Site::Arc(arc) => (arc.centre().x * d.x).abs() + (arc.centre().y * d.y).abs() + arc.radius(),
             _ => s.support(d).0.abs(),
         };
-        let tolerance = 1e-9 * (size(x) + size(y) + diagram.extent);
+        let tolerance = 1e-9 * (size(&x) + size(&y) + diagram.extent);
         if !((rx - ry).abs() <= tolerance) {
             return refuse(k, "has sites that do not reach equally far that way");
         }
@@ -351,7 +351,8 @@ fn misses_its_sites(diagram: &Diagram, v: &Vertex) -> Result<(), Error> {
     // larger than the whole input (an arc of an ulp's length at 0.5)
     let rounding = 8.0 * f64::EPSILON * (v.position.x.abs() + v.position.y.abs());
     let tolerance = 1e-7 * (diagram.extent + v.clearance) + rounding;
-    let miss = v.sites.iter().map(|&s| (diagram.sites[s.index()].distance(v.position) - v.clearance).abs()).fold(0.0, f64::max);
+    let miss =
+        v.sites.iter().map(|&s| (diagram.sites.at(s.index()).distance(v.position) - v.clearance).abs()).fold(0.0, f64::max);
     if miss <= tolerance {
         return Ok(());
     }
@@ -394,7 +395,7 @@ fn has_a_nearer_site(diagram: &Diagram, around: &Neighbourhoods, v: &Vertex) -> 
         return Ok(());
     };
     let arc = arc_of(diagram, v);
-    let by = v.clearance - diagram.sites[t.index()].distance(v.position);
+    let by = v.clearance - diagram.sites.at(t.index()).distance(v.position);
     Err(Error::new(
         ErrorKind::Internal,
         format!(
@@ -454,7 +455,7 @@ impl Neighbourhoods {
                 filled[b.index()] += 1;
             }
         }
-        let bounds = diagram.sites.iter().map(Bound::of).collect();
+        let bounds = diagram.sites.iter().map(|s| Bound::of(&s)).collect();
         Neighbourhoods { start, neighbours, bounds }
     }
 
@@ -465,7 +466,7 @@ impl Neighbourhoods {
     /// Whether site `t` is nearer to `p` than `reach`: out of reach by
     /// its bound (most neighbours are far), else by its distance.
     fn nearer(&self, diagram: &Diagram, t: SiteId, p: Point, reach: f64) -> bool {
-        let site = || &diagram.sites[t.index()];
+        let site = || diagram.sites.at(t.index());
         // `squared` (a squared distance, normal: within a few roundings
         // of the true one) clearly beyond `r`
         let beyond = |squared: f64, r: f64| squared >= (r * r * (1.0 + 1e-9)).max(f64::MIN_POSITIVE);

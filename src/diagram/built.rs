@@ -4,7 +4,6 @@
 
 use super::ids::{HalfEdgeId, SiteId};
 use super::store::Store;
-use crate::geometry::Site;
 
 /// Counts from one build. More counts may come: read the fields, but do not
 /// build or destructure the struct whole outside this crate.
@@ -84,7 +83,7 @@ pub struct Diagram {
     /// infinity.
     pub(crate) store: Store,
     /// Each site in input coordinates: the points first, then the segments.
-    pub(crate) sites: Vec<Site>,
+    pub(crate) sites: super::SiteTable,
     /// Number of point sites (`sites[..point_sites]`).
     pub(crate) point_sites: usize,
     /// Per segment site (id minus `point_sites`): its input index.

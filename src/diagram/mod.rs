@@ -21,6 +21,7 @@
 mod built;
 mod ids;
 mod pieces;
+mod site_table;
 mod store;
 mod validate;
 
@@ -28,5 +29,6 @@ pub use built::{BuildStats, Diagram};
 pub(crate) use ids::NONE;
 pub use ids::{EdgeId, HalfEdgeId, SiteId, VertexId};
 pub(crate) use pieces::SplitPieces;
+pub(crate) use site_table::SiteTable;
 pub(crate) use store::Store;
 pub use validate::ValidationError;

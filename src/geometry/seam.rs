@@ -55,8 +55,7 @@ pub(crate) fn edge_to_infinity_clears(direction: Point, sites: &[Point], outside
 /// [`edge_to_infinity_clears`] needs of the sites left out, in a few
 /// points where they are many.
 pub(crate) fn hull_candidates(points: &[Point]) -> Vec<Point> {
-    let octagon = Extremes::of(points);
-    points.iter().copied().filter(|&p| octagon.may_be_on_the_hull(p)).collect()
+    Extremes::of(points.iter().copied()).hull_candidates(points.iter().copied())
 }
 
 /// The extreme points of a set in eight directions (mergeable, so that
@@ -72,10 +71,10 @@ const EIGHT: [(f64, f64); 8] =
     [(1.0, 0.0), (1.0, 1.0), (0.0, 1.0), (-1.0, 1.0), (-1.0, 0.0), (-1.0, -1.0), (0.0, -1.0), (1.0, -1.0)];
 
 impl Extremes {
-    pub(crate) fn of(points: &[Point]) -> Extremes {
+    pub(crate) fn of(points: impl IntoIterator<Item = Point>) -> Extremes {
         let mut best = [(f64::NEG_INFINITY, Point::new(f64::NAN, f64::NAN)); 8];
         let mut size: f64 = 0.0;
-        for &p in points {
+        for p in points {
             size = size.max(p.x.abs() + p.y.abs());
             for (k, &(dx, dy)) in EIGHT.iter().enumerate() {
                 let v = p.x * dx + p.y * dy;
@@ -96,6 +95,17 @@ impl Extremes {
             }
         }
         Extremes { best, size: self.size.max(other.size) }
+    }
+
+    /// The least and the greatest x of the set (`∞` and `-∞` when empty).
+    pub(crate) fn x_range(&self) -> (f64, f64) {
+        (-self.best[4].0, self.best[0].0)
+    }
+
+    /// The points of the set (all of `points`) that
+    /// [may be vertices of its hull](Self::may_be_on_the_hull).
+    pub(crate) fn hull_candidates(&self, points: impl IntoIterator<Item = Point>) -> Vec<Point> {
+        points.into_iter().filter(|&p| self.may_be_on_the_hull(p)).collect()
     }
 
     /// Whether `p` (of the set) may be a vertex of its convex hull: it is

@@ -72,7 +72,7 @@ impl<'a> Cell<'a> {
 
     /// The site.
     pub fn geometry(&self) -> Site {
-        self.diagram.sites[self.site.index()]
+        self.diagram.sites.at(self.site.index())
     }
 
     /// The edges around the cell, counter-clockwise. An unbounded cell has
@@ -115,7 +115,7 @@ impl Diagram {
 
     /// A site, in input coordinates, or `None` if the id is out of range.
     pub fn site(&self, site: SiteId) -> Option<Site> {
-        self.sites.get(site.index()).copied()
+        self.sites.get(site.index())
     }
 
     /// The input index of a segment site (what the topology text calls
@@ -150,9 +150,9 @@ impl Diagram {
         let k = site.index().checked_sub(self.point_sites)?;
         let [p, q] = *self.segment_ends.get(k)?;
         // The construction keeps the two ends in either order.
-        let first_is_a = match self.sites[site.index()] {
-            Site::Segment { a, .. } => self.sites[p.index()] == Site::Point(a),
-            Site::Arc(arc) => self.sites[p.index()] == Site::Point(arc.start()),
+        let first_is_a = match self.sites.at(site.index()) {
+            Site::Segment { a, .. } => self.sites.at(p.index()) == Site::Point(a),
+            Site::Arc(arc) => self.sites.at(p.index()) == Site::Point(arc.start()),
             _ => true,
         };
         Some(if first_is_a { [p, q] } else { [q, p] })
@@ -221,7 +221,7 @@ impl Diagram {
         // the input may still overflow there: then in input coordinates).
         let f = if p.scaled(self.scale.to_internal).is_finite() { self.scale.to_internal } else { 1.0 };
         let (sites, p) = (&self.sites, p.scaled(f));
-        let site = |s: SiteId| match sites[s.index()] {
+        let site = |s: SiteId| match sites.at(s.index()) {
             Site::Point(q) => q.scaled(f),
             other => other.ends()[0].scaled(f), // not reached: points only here
         };
@@ -240,7 +240,7 @@ impl Diagram {
     fn nearest_among_segments(&self, p: Point, start: SiteId) -> SiteId {
         let n = self.sites.len();
         let distance = |s: SiteId| {
-            let d = self.sites[s.index()].distance(p);
+            let d = self.sites.at(s.index()).distance(p);
             if d.is_nan() {
                 f64::INFINITY
             } else {

@@ -18,14 +18,14 @@ use crate::{Builder, Diagram, Site};
 pub(crate) fn audit(diagram: &Diagram, print: bool) -> Vec<String> {
     let mut bad = Vec::new();
     for v in diagram.vertices() {
-        let geometry = v.sites.map(|s| diagram.sites[s.index()]);
+        let geometry = v.sites.map(|s| diagram.sites.at(s.index()));
         let of_points = geometry.iter().all(Site::is_point);
         if print && !of_points {
             eprintln!("vertex {:?} {:?} at {:?} r {}", v.id, v.sites, v.position, v.clearance);
         }
         let mut centre_checked = false;
         for s in diagram.site_ids().filter(|s| !v.sites.contains(s)) {
-            let other = diagram.sites[s.index()];
+            let other = diagram.sites.at(s.index());
             if of_points && other.is_point() {
                 continue;
             }
@@ -61,7 +61,7 @@ fn audit_file() {
     let builder = builder_of(&std::fs::read_to_string(path).expect("a readable input"));
     let diagram = builder.build().expect("a diagram");
     for s in diagram.site_ids() {
-        eprintln!("site {s:?}: {:?}", diagram.sites[s.index()]);
+        eprintln!("site {s:?}: {:?}", diagram.sites.at(s.index()));
     }
     let bad = audit(&diagram, true);
     for line in &bad {

@@ -419,7 +419,7 @@ impl Diagram {
                     // corner, in to the centre of the arc's circle: that
                     // separator passes through the corner as at a
                     // straight one, located by its ends
-                    let arc = matches!(self.sites[s.index()], Site::Arc(_));
+                    let arc = matches!(self.sites.at(s.index()), Site::Arc(_));
                     let at = self.point_of(corner);
                     let through = arc
                         && !from
@@ -459,7 +459,7 @@ impl Diagram {
     /// from the corner lies.
     fn tangent_join_edges(&self, rings: &[Ring], role: &[Role]) -> Vec<(EdgeId, JoinEdge)> {
         let tolerance = 1e-7 * self.extent.max(f64::MIN_POSITIVE);
-        let arc = |t: SiteId| matches!(self.sites[t.index()], Site::Arc(_));
+        let arc = |t: SiteId| matches!(self.sites.at(t.index()), Site::Arc(_));
         // per site: the tangent-join corner it belongs to
         let mut join_of: std::collections::HashMap<SiteId, Vec<SiteId>> = std::collections::HashMap::new();
         for ring in rings.iter().filter(|r| r.curved) {
@@ -510,7 +510,7 @@ impl Diagram {
             let either_side = along_separator.map(|q| either_side_of(at, q, [p0, p1]));
             let passes = !near(ends[0]) && !near(ends[1]) && either_side.unwrap_or_else(|| self.edge_reach(e, at) <= tolerance);
             // along the join's normal: the line from an arc's centre there
-            let normal = [u, v].iter().find_map(|&t| match self.sites[t.index()] {
+            let normal = [u, v].iter().find_map(|&t| match self.sites.at(t.index()) {
                 Site::Arc(a) => Some(a.centre()),
                 _ => None,
             });
@@ -562,7 +562,7 @@ impl Diagram {
     /// arc is among the two (segments always leave the corner's cell
     /// between them). `None` when there is none.
     fn join_edge(&self, s: SiteId, corner: SiteId, around: &[crate::HalfEdge], role: &[Role]) -> Option<usize> {
-        let arc = |t: SiteId| matches!(self.sites[t.index()], Site::Arc(_));
+        let arc = |t: SiteId| matches!(self.sites.at(t.index()), Site::Arc(_));
         let at = self.point_of(corner);
         let candidates = around.iter().enumerate().filter_map(|(k, h)| {
             let t = self.half_edge_cell(h.twin())?;
@@ -616,7 +616,7 @@ impl Diagram {
         // arc's concave side has vertices among its own ends away from
         // them (the circle's centre): with an arc, the vertex must also be
         // at the corner (to the arcs' vertex solver's precision).
-        let arc = sites.iter().any(|s| matches!(self.sites[s.index()], Site::Arc(_)));
+        let arc = sites.iter().any(|s| matches!(self.sites.at(s.index()), Site::Arc(_)));
         ends_there
             && (!arc || self.store.position[v.index()].distance(self.point_of(p)) <= 1e-9 * self.extent.max(f64::MIN_POSITIVE))
     }
@@ -682,7 +682,7 @@ impl Diagram {
                         .collect(),
                     None => input.segments.clone().map(|j| self.segment_site[j]).collect(),
                 };
-                let curved = segments.iter().any(|s| matches!(self.sites[s.index()], Site::Arc(_)));
+                let curved = segments.iter().any(|s| matches!(self.sites.at(s.index()), Site::Arc(_)));
                 let n = segments.len();
                 // corner k joins segment k - 1 and segment k
                 let corners = (0..n)
@@ -773,7 +773,7 @@ impl Diagram {
     /// touches the rings only there): where it leaves its first end, by
     /// exact orientations against the rings' corners there.
     fn obstacle_location(&self, rings: &[Ring], s: SiteId) -> Location {
-        if let Site::Arc(arc) = self.sites[s.index()] {
+        if let Site::Arc(arc) = self.sites.at(s.index()) {
             // an arc obstacle meets the rings at its ends at most
             return [arc.midpoint(), arc.start(), arc.end()]
                 .into_iter()
@@ -781,7 +781,7 @@ impl Diagram {
                 .find(|&l| l != Location::Boundary)
                 .unwrap_or(Location::Boundary);
         }
-        let Site::Segment { a, b } = self.sites[s.index()] else { return self.point_location(rings, self.point_of(s)) };
+        let Site::Segment { a, b } = self.sites.at(s.index()) else { return self.point_location(rings, self.point_of(s)) };
         for p in [a, b] {
             let at = self.point_location(rings, p);
             if at != Location::Boundary {
@@ -859,7 +859,7 @@ impl Diagram {
     /// or out of range.
     fn curved_corner_holds(&self, ring: &Ring, k: usize, p: Point, q: Point) -> Option<bool> {
         let n = ring.corners.len();
-        let piece = |s: SiteId| self.sites[s.index()];
+        let piece = |s: SiteId| self.sites.at(s.index());
         let (before, after) = (piece(ring.segments[(k + n - 1) % n]), piece(ring.segments[k]));
         // the region's wedge runs counter-clockwise from `from` to `to`
         let (from, to) = if self.is_counter_clockwise(ring) { (after, before) } else { (before, after) };
@@ -921,7 +921,7 @@ impl Diagram {
 
     /// The arc of an arc site; `None` for any other.
     fn arc_of(&self, s: SiteId) -> Option<crate::geometry::CircularArc> {
-        match self.sites[s.index()] {
+        match self.sites.at(s.index()) {
             Site::Arc(arc) => Some(arc),
             _ => None,
         }
@@ -932,7 +932,7 @@ impl Diagram {
     /// point along an arc's tangent there, as far out as its chord is long.
     fn toward(&self, s: SiteId, corner: SiteId) -> Point {
         let at = self.point_of(corner);
-        match self.sites[s.index()] {
+        match self.sites.at(s.index()) {
             Site::Arc(arc) => {
                 let t = arc.tangent_into(at);
                 let length = arc.start().distance(arc.end());
@@ -969,7 +969,7 @@ impl Diagram {
         let cross = -back.x * ahead.y + back.y * ahead.x;
         let dot = -back.x * ahead.x - back.y * ahead.y;
         let chord = |s: SiteId| {
-            let [a, b] = self.sites[s.index()].ends();
+            let [a, b] = self.sites.at(s.index()).ends();
             a.distance(b)
         };
         let rounding = 8.0 * f64::EPSILON * at.x.abs().max(at.y.abs()) / chord(before).min(chord(after));
@@ -980,7 +980,7 @@ impl Diagram {
             return Orientation::Collinear;
         }
         let other = |s: SiteId| {
-            let [a, b] = self.sites[s.index()].ends();
+            let [a, b] = self.sites.at(s.index()).ends();
             if a == at {
                 b
             } else {
@@ -1063,7 +1063,7 @@ impl Diagram {
 
     /// The coordinates of a point site.
     fn point_of(&self, s: SiteId) -> Point {
-        match self.sites[s.index()] {
+        match self.sites.at(s.index()) {
             other => other.ends()[0],
         }
     }

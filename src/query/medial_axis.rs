@@ -257,7 +257,7 @@ impl Diagram {
         } else {
             q
         };
-        let left = self.sites[self.edge(piece.edge)?.sites[0].index()];
+        let left = self.sites.at(self.edge(piece.edge)?.sites[0].index());
         Some([q.x, q.y, left.distance(q)])
     }
 
@@ -476,7 +476,7 @@ impl SampledPiece {
             let p = d.store.position[v];
             [p.x, p.y, d.store.clearance[v]]
         };
-        let site = d.sites[self.left.index()];
+        let site = d.sites.at(self.left.index());
         let mut k = 0usize;
         self.for_each_edge_point(d, |p| {
             let value = match k {

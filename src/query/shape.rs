@@ -125,7 +125,7 @@ impl Diagram {
         if !any_arc && (sites[0].index() < self.point_sites) == (sites[1].index() < self.point_sites) {
             return EdgeShape::Line;
         }
-        let [first, second] = sites.map(|s| self.sites[s.index()]);
+        let [first, second] = sites.map(|s| self.sites.at(s.index()));
         EdgeShape::between(first, second, |a, b, c| self.turn(a, b, c))
     }
 
@@ -333,7 +333,7 @@ impl Diagram {
                 .sites_of(crate::diagram::VertexId(v as u32))
                 .iter()
                 .filter(|s| s.index() < self.sites.len())
-                .map(|s| self.sites[s.index()])
+                .map(|s| self.sites.at(s.index()))
                 .find(|w| !sites.contains(w))
         })
     }
@@ -366,7 +366,7 @@ impl Diagram {
         let edge = self.edge(id)?;
         let ends = self.finite_end_vertices(&edge)?;
         let f = self.scale.to_internal;
-        let sites = edge.sites.map(|s| self.sites[s.index()]);
+        let sites = edge.sites.map(|s| self.sites.at(s.index()));
         let witnesses = self.end_witnesses(&sites, ends).map(|w| w.map(|w| w.scaled(f)));
         let [first, second] = sites.map(|s| s.scaled(f));
         let [start, end] = ends.map(|v| self.store.position[v].scaled(f));

@@ -189,7 +189,7 @@ impl Diagram {
             let cut = if at_a_point || !self.decided_at_every_scale(&triangles) {
                 None
             } else {
-                canonical_cut(&triangles, |s| self.sites.get(s.index()).map(site_key))
+                canonical_cut(&triangles, |s| self.sites.get(s.index()).map(|s| site_key(&s)))
             };
             match cut {
                 Some((fan, cuts)) => {
@@ -222,7 +222,7 @@ impl Diagram {
     fn decided_at_every_scale(&self, triangles: &[[SiteId; 3]]) -> bool {
         let (mut least, mut most) = (f64::INFINITY, 0f64);
         for s in triangles.iter().flatten() {
-            for p in self.sites[s.index()].ends() {
+            for p in self.sites.at(s.index()).ends() {
                 for c in [p.x.abs(), p.y.abs()].into_iter().filter(|&c| c > 0.0) {
                     least = least.min(c);
                     most = most.max(c);
@@ -265,8 +265,8 @@ impl Diagram {
         // tangent at its endpoint, on either side): the vertices must also be
         // one point as far as rounding can tell.
         let near = va.position.distance(vb.position) <= 1e-6 * va.clearance.max(vb.clearance);
-        let sites = va.sites.map(|s| self.sites[s.index()]);
-        near && oracle::on_circle(&sites, va.position, va.clearance, &self.sites[fourth.index()])
+        let sites = va.sites.map(|s| self.sites.at(s.index()));
+        near && oracle::on_circle(&sites, va.position, va.clearance, &self.sites.at(fourth.index()))
     }
 
     fn write_voronoi_pairs(&self, out: &mut String, tolerance: Option<f64>) {

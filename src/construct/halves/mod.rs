@@ -33,7 +33,7 @@ use super::restart::{insert_all_from, Outcome};
 use super::state::{infinite_rotation, Construction, INFINITE};
 use super::threads::run_beside;
 use crate::diagram::{SiteId, VertexId, NONE};
-use crate::geometry::seam::{edge_to_infinity_clears, hull_candidates, vertex_stays_short_of, Enclosure, Extremes};
+use crate::geometry::seam::{edge_to_infinity_clears, vertex_stays_short_of, Enclosure, Extremes};
 use crate::geometry::Point;
 
 /// From this many sites on (points and segments), a build with a spare
@@ -245,7 +245,7 @@ impl Plan {
     fn of(points: &[Point], segments: usize, left_share: f64) -> Option<Plan> {
         // two passes over the points, each on both threads by halves
         let (low, high) = points.split_at(points.len() / 2);
-        let bounds = |part: &[Point]| (Enclosure::of(part), Extremes::of(part));
+        let bounds = |part: &[Point]| (Enclosure::of(part), Extremes::of(part.iter().copied()));
         let ((enclosure_high, extremes_high), (enclosure_low, extremes_low)) = run_beside(|| bounds(high), || bounds(low));
         let (enclosure, extremes) = (enclosure_low.merge(enclosure_high), extremes_low.merge(extremes_high));
         let spacing = (enclosure.box_area() / (points.len() + segments) as f64).sqrt();
@@ -436,13 +436,17 @@ impl Half<'_> {
     fn outside(&self, points: &[Point], segments: &[[usize; 2]]) -> Option<Outside> {
         let mut held_segment = vec![false; segments.len()];
         self.segments.iter().for_each(|&k| held_segment[k as usize] = true);
-        let left_out = (0..points.len())
-            .filter(|&i| !self.held[i])
-            .map(|i| points[i])
-            .chain(segments.iter().zip(&held_segment).filter(|(_, &held)| !held).flat_map(|(&[a, b], _)| [points[a], points[b]]));
-        let t = self.side.toward_outside();
-        let line = left_out.clone().map(|p| p.x * t).fold(f64::INFINITY, f64::min) * t;
-        line.is_finite().then(|| Outside { line, hull: hull_candidates(&left_out.collect::<Vec<Point>>()) })
+        let left_out = || {
+            let ends = segments.iter().zip(&held_segment).filter(|(_, &held)| !held).flat_map(|(&[a, b], _)| [points[a], points[b]]);
+            (0..points.len()).filter(|&i| !self.held[i]).map(|i| points[i]).chain(ends)
+        };
+        // (two passes, nothing gathered: the extremes, then the points outside their octagon)
+        let extremes = Extremes::of(left_out());
+        let line = match self.side {
+            Side::Left => extremes.x_range().0,
+            Side::Right => extremes.x_range().1,
+        };
+        line.is_finite().then(|| Outside { line, hull: extremes.hull_candidates(left_out()) })
     }
 
     /// `None` when every cell this half owns is final (no site left out

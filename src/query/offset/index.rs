@@ -175,7 +175,7 @@ impl OffsetIndex {
                 lowest = lowest.min(low[h.edge().index()]);
                 first.get_or_insert(h);
             }
-            if matches!(diagram.sites[s.index()], Site::Point(_)) && diagram.offset_may_circle(s, side) {
+            if matches!(diagram.sites.at(s.index()), Site::Point(_)) && diagram.offset_may_circle(s, side) {
                 let leaf = first.and_then(|h| diagram.target_vertex(h)).map_or(infinity, |v| v.index() as u32);
                 circles.push((lowest, s, leaf));
             }
@@ -302,7 +302,7 @@ impl Diagram {
         let edge = self.edge(e)?;
         let EdgeShape::Conic { .. } = self.shape_of(&edge) else { return None };
         let f = self.scale.to_internal;
-        let sites = edge.sites.map(|s| self.sites[s.index()].scaled(f));
+        let sites = edge.sites.map(|s| self.sites.at(s.index()).scaled(f));
         let end = |end: EdgeEnd| match end {
             EdgeEnd::Vertex(v) => ConicEnd::At(self.store.position[v.index()].scaled(f)),
             EdgeEnd::Infinite { direction } => ConicEnd::Towards(direction),
@@ -346,7 +346,7 @@ impl Diagram {
     pub(super) fn edge_track(&self, e: EdgeId) -> Option<EdgeTrack> {
         let edge = self.edge(e)?;
         let f = self.scale.to_internal;
-        let [a, b] = edge.sites.map(|s| self.sites[s.index()].scaled(f));
+        let [a, b] = edge.sites.map(|s| self.sites.at(s.index()).scaled(f));
         let end = |end: EdgeEnd| match end {
             EdgeEnd::Vertex(v) => TrackEnd::At(self.store.position[v.index()].scaled(f)),
             EdgeEnd::Infinite { direction } => TrackEnd::Towards(direction),

@@ -288,7 +288,7 @@ impl Diagram {
         let refuse = |what: String, end: Point| {
             let first_arc = self.sites.len() - self.arc_sites;
             let nearest = (first_arc..self.sites.len())
-                .min_by(|&a, &b| self.sites[a].distance(end).total_cmp(&self.sites[b].distance(end)))
+                .min_by(|&a, &b| self.sites.at(a).distance(end).total_cmp(&self.sites.at(b).distance(end)))
                 .map_or(0, |s| self.arc_input.get(s - first_arc).copied().unwrap_or(0) as usize);
             Err(Error::new(
                 ErrorKind::Internal,
@@ -405,7 +405,7 @@ impl Diagram {
         // Whole circles in cells the level never leaves.
         let first_circle = index.circles.partition_point(|c| side.in_band(c.0, threshold));
         for &(_, site, leaf) in &index.circles[first_circle..] {
-            let centre = self.sites[site.index()].as_point().expect("a point site");
+            let centre = self.sites.at(site.index()).as_point().expect("a point site");
             let at = Point::new(centre.x + r, centre.y);
             loops.push((
                 vec![OffsetPiece::Arc { centre, radius: r, from: at, to: at, counter_clockwise: true, site }],
@@ -452,7 +452,7 @@ impl Diagram {
             if from.distance(to) > near {
                 continue;
             }
-            let centre = self.sites[span.site.index()].as_point();
+            let centre = self.sites.at(span.site.index()).as_point();
             // Only an isolated point's cell can hold a whole circle: the
             // cell of a segment's endpoint lies in the half-plane beyond
             // that segment's perpendicular there, so a span of it sweeps at
@@ -507,7 +507,7 @@ impl Diagram {
     /// (counter-clockwise), minus `r` on its concave side (clockwise: the
     /// band lies outside that circle). `None` for a segment site.
     fn circle_of_span(&self, site: SiteId, from: Point, to: Point, r: f64) -> Option<(Point, f64, bool)> {
-        match self.sites[site.index()] {
+        match self.sites.at(site.index()) {
             Site::Point(centre) => Some((centre, r, true)),
             Site::Arc(arc) => {
                 let c = arc.centre();

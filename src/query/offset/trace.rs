@@ -171,7 +171,7 @@ impl Diagram {
     /// unit direction from the arc's centre, in input coordinates.
     fn radial_separator(&self, e: EdgeId) -> Option<(Point, Point)> {
         let edge = self.edge(e)?;
-        let [a, b] = edge.sites.map(|s| self.sites[s.index()]);
+        let [a, b] = edge.sites.map(|s| self.sites.at(s.index()));
         let (arc, end) = match (a, b) {
             (Site::Arc(arc), Site::Point(p)) | (Site::Point(p), Site::Arc(arc)) => (arc, p),
             _ => return None,
@@ -319,7 +319,7 @@ impl Diagram {
             Point::new(centre.x - dy, centre.y + dx),
             Point::new(centre.x + dy, centre.y - dx),
         ];
-        let neighbours: Vec<&Site> = self
+        let neighbours: Vec<Site> = self
             .cell_half_edges(site)
             .filter_map(|h| self.edge(h.edge()))
             .flat_map(|e| e.sites)
