@@ -120,23 +120,15 @@ pub(super) fn renumber(
         store.swap_vertices(VertexId::from_index(v), VertexId::from_index(last));
     }
 
-    for v in 0..finite_vertices {
-        // A vertex beyond the range of f64 keeps its coordinates saturated
-        // at ±f64::MAX (internally too); one within it may still leave it when
-        // scaled back (an input near f64::MAX scaled down), or have
-        // overflowed on the way (an internal coordinate of ±∞), and
-        // saturates the same way, with an infinite clearance.
-        let p = store.position[v];
-        if scale.is_identity() && p.x.is_finite() && p.y.is_finite() {
-            continue;
-        }
-        let unscaled = |x: f64| if x.abs() == f64::MAX { x } else { (x * scale.to_input).clamp(-f64::MAX, f64::MAX) };
-        let q = Point::new(unscaled(p.x), unscaled(p.y));
-        store.position[v] = q;
-        store.clearance[v] *= scale.to_input;
-        if store.clearance[v].is_nan() && (q.x.abs() == f64::MAX || q.y.abs() == f64::MAX) {
-            store.clearance[v] = f64::INFINITY;
-        }
+    // (large stores on two threads, by halves)
+    let (positions, clearances) = (&mut store.position[..finite_vertices], &mut store.clearance[..finite_vertices]);
+    let (low_positions, high_positions) = positions.split_at_mut(finite_vertices / 2);
+    let (low_clearances, high_clearances) = clearances.split_at_mut(finite_vertices / 2);
+    if large {
+        run_beside(|| to_input(high_positions, high_clearances, scale), || to_input(low_positions, low_clearances, scale));
+    } else {
+        to_input(low_positions, low_clearances, scale);
+        to_input(high_positions, high_clearances, scale);
     }
 
     // Public edges: one per pair of twins, between two real sites.
@@ -196,11 +188,47 @@ pub(super) fn renumber(
     }
 }
 
+/// Finite vertices' positions and clearances back in input coordinates.
+fn to_input(positions: &mut [Point], clearances: &mut [f64], scale: Scale) {
+    for (position, clearance) in positions.iter_mut().zip(clearances) {
+        // A vertex beyond the range of f64 keeps its coordinates saturated
+        // at ±f64::MAX (internally too); one within it may still leave it when
+        // scaled back (an input near f64::MAX scaled down), or have
+        // overflowed on the way (an internal coordinate of ±∞), and
+        // saturates the same way, with an infinite clearance.
+        let p = *position;
+        if scale.is_identity() && p.x.is_finite() && p.y.is_finite() {
+            continue;
+        }
+        let unscaled = |x: f64| if x.abs() == f64::MAX { x } else { (x * scale.to_input).clamp(-f64::MAX, f64::MAX) };
+        let q = Point::new(unscaled(p.x), unscaled(p.y));
+        *position = q;
+        *clearance *= scale.to_input;
+        if clearance.is_nan() && (q.x.abs() == f64::MAX || q.y.abs() == f64::MAX) {
+            *clearance = f64::INFINITY;
+        }
+    }
+}
+
+/// The diagonal of the points' bounding box (0 for none); large sets on
+/// two threads, by halves.
 fn bounding_box_diagonal(point_sites: &[Point]) -> f64 {
-    let mut points = point_sites.iter().copied();
-    let Some(first) = points.next() else { return 0.0 };
-    let (lo, hi) = points
-        .fold((first, first), |(lo, hi), p| (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y))));
+    let bounds = |part: &[Point]| {
+        part.iter()
+            .fold((Point::new(f64::INFINITY, f64::INFINITY), Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY)), |(lo, hi), p| {
+                (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y)))
+            })
+    };
+    let (low, high) = point_sites.split_at(point_sites.len() / 2);
+    let ((lo_high, hi_high), (lo, hi)) = if point_sites.len() >= PARALLEL_FROM {
+        run_beside(|| bounds(high), || bounds(low))
+    } else {
+        (bounds(high), bounds(low))
+    };
+    if point_sites.is_empty() {
+        return 0.0;
+    }
+    let (lo, hi) = (Point::new(lo.x.min(lo_high.x), lo.y.min(lo_high.y)), Point::new(hi.x.max(hi_high.x), hi.y.max(hi_high.y)));
     // halve first so that the extent of huge inputs does not overflow;
     // a diagonal beyond f64 (a box from -f64::MAX to f64::MAX) saturates
     let (dx, dy) = (hi.x / 2.0 - lo.x / 2.0, hi.y / 2.0 - lo.y / 2.0);

@@ -49,15 +49,6 @@ pub(crate) fn edge_to_infinity_clears(direction: Point, sites: &[Point], outside
     support.is_finite() && !beyond.is_nan() && beyond + MARGIN * size < support
 }
 
-/// The points of `points` that may be vertices of their convex hull: all
-/// but those strictly inside the octagon of their extremes in eight
-/// directions (with a margin: a point kept is never wrong). What
-/// [`edge_to_infinity_clears`] needs of the sites left out, in a few
-/// points where they are many.
-pub(crate) fn hull_candidates(points: &[Point]) -> Vec<Point> {
-    Extremes::of(points.iter().copied()).hull_candidates(points.iter().copied())
-}
-
 /// The extreme points of a set in eight directions (mergeable, so that
 /// two threads can each take half the set).
 #[derive(Clone, Copy)]
@@ -102,28 +93,46 @@ impl Extremes {
         (-self.best[4].0, self.best[0].0)
     }
 
-    /// The points of the set (all of `points`) that
-    /// [may be vertices of its hull](Self::may_be_on_the_hull).
+    /// The points of the set (all of `points`) that may be vertices of
+    /// their convex hull: all but those strictly inside the octagon of the
+    /// extremes, with a margin (a point kept is never wrong). What
+    /// [`edge_to_infinity_clears`] needs of the sites left out, in a few
+    /// points where they are many.
     pub(crate) fn hull_candidates(&self, points: impl IntoIterator<Item = Point>) -> Vec<Point> {
-        points.into_iter().filter(|&p| self.may_be_on_the_hull(p)).collect()
+        let octagon = self.octagon();
+        points.into_iter().filter(|&p| octagon.may_hold_on_its_boundary(p)).collect()
     }
 
-    /// Whether `p` (of the set) may be a vertex of its convex hull: it is
-    /// not strictly inside the octagon of the extremes, by a margin.
-    pub(crate) fn may_be_on_the_hull(&self, p: Point) -> bool {
-        let margin = MARGIN * self.size * self.size;
-        let mut edges = 0;
+    /// The octagon of the extremes, its edges worked out once.
+    pub(crate) fn octagon(&self) -> Octagon {
+        let mut edges = [(Point::new(0.0, 0.0), 0.0, 0.0); 8];
+        let mut count = 0;
         for k in 0..8 {
             let (a, b) = (self.best[k].1, self.best[(k + 1) % 8].1);
             if a == b || !(a.x.is_finite() && b.x.is_finite()) {
                 continue;
             }
-            edges += 1;
-            if (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) <= margin {
-                return true;
-            }
+            edges[count] = (a, b.x - a.x, b.y - a.y);
+            count += 1;
         }
-        edges < 3
+        Octagon { edges, count, margin: MARGIN * self.size * self.size }
+    }
+}
+
+/// The octagon of a set's [`Extremes`]: its edges from a corner, along
+/// `(dx, dy)` counter-clockwise, the degenerate ones left out.
+pub(crate) struct Octagon {
+    edges: [(Point, f64, f64); 8],
+    count: usize,
+    margin: f64,
+}
+
+impl Octagon {
+    /// Whether `p` (of the set) may be a vertex of its convex hull: it is
+    /// not strictly inside every edge by the margin (or there are fewer
+    /// than three edges).
+    pub(crate) fn may_hold_on_its_boundary(&self, p: Point) -> bool {
+        self.count < 3 || self.edges[..self.count].iter().any(|&(a, dx, dy)| dx * (p.y - a.y) - dy * (p.x - a.x) <= self.margin)
     }
 }
 
@@ -263,7 +272,7 @@ mod tests {
         let mut points = vec![Point::new(0.0, 0.0), Point::new(4.0, 0.0), Point::new(4.0, 4.0), Point::new(0.0, 4.0)];
         points.extend((1..4).flat_map(|i| (1..4).map(move |j| Point::new(i as f64, j as f64))));
         points.push(Point::new(2.0, 0.0)); // on the hull, not a vertex: may stay
-        let kept = hull_candidates(&points);
+        let kept = Extremes::of(points.iter().copied()).hull_candidates(points.iter().copied());
         for corner in &points[..4] {
             assert!(kept.contains(corner));
         }

@@ -74,30 +74,45 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
         }
     }
 
-    // The left store grown by the right's kept vertices, filled on both threads.
+    // The left store grown by the right's kept vertices: its arrays grown
+    // on both threads, two each, then the right's vertices written by
+    // halves, one per thread; then the few edges from the left across.
     let n1 = left.store.vertex_count();
     let total = n1 + right.kept_count;
-    let s = &mut left.store;
-    s.right.resize(3 * total, SiteId(NONE));
-    s.twin.resize(3 * total, HalfEdgeId(NONE));
-    s.position.resize(total, Point::default());
-    s.clearance.resize(total, 0.0);
-    let (sites_low, sites_high) = s.right.split_at_mut(3 * n1);
-    let (twin_low, twin_high) = s.twin.split_at_mut(3 * n1);
-    let (position_high, clearance_high) = (&mut s.position[n1..], &mut s.clearance[n1..]);
-    let sites_low: &[SiteId] = sites_low;
-    let (from_right, from_left) = run_beside(
+    let Store { right: cells, twin, position, clearance, .. } = &mut left.store;
+    run_beside(
         || {
-            right.fill(
-                sites_low,
-                n1,
-                &partner_of_right,
-                Appended { sites: sites_high, twin: twin_high, position: position_high, clearance: clearance_high },
-            )
+            position.resize(total, Point::default());
+            clearance.resize(total, 0.0);
         },
-        || relink_left(&left.keep, sites_low, twin_low, &partner_of_left, &right, n1),
+        || {
+            cells.resize(3 * total, SiteId(NONE));
+            twin.resize(3 * total, HalfEdgeId(NONE));
+        },
     );
-    let (from_right, from_left) = (from_right?, from_left?);
+    let (sites_low, sites_high) = cells.split_at_mut(3 * n1);
+    let sites_low: &[SiteId] = sites_low;
+    let twin_high = &mut twin[3 * n1..];
+    let (position_high, clearance_high) = (&mut position[n1..], &mut clearance[n1..]);
+    let middle = right.store.vertex_count() / 2;
+    let split = right.keep[..middle].iter().filter(|&&k| k).count();
+    let (sites_a, sites_b) = sites_high.split_at_mut(3 * split);
+    let (twin_a, twin_b) = twin_high.split_at_mut(3 * split);
+    let (position_a, position_b) = position_high.split_at_mut(split);
+    let (clearance_a, clearance_b) = clearance_high.split_at_mut(split);
+    let (from_b, from_a) = run_beside(
+        || {
+            let out = Appended { sites: sites_b, twin: twin_b, position: position_b, clearance: clearance_b };
+            right.fill(middle..right.store.vertex_count(), split, sites_low, n1, &partner_of_right, out)
+        },
+        || {
+            let out = Appended { sites: sites_a, twin: twin_a, position: position_a, clearance: clearance_a };
+            right.fill(0..middle, 0, sites_low, n1, &partner_of_right, out)
+        },
+    );
+    let mut from_right = from_a?;
+    from_right.extend_from_slice(&from_b?);
+    let from_left = relink_left(&left.keep, &left.across, &left.store.right, &mut left.store.twin, &partner_of_left, &right, n1)?;
 
     // Cells: each site's edge from the half that owns it, both at once.
     let mut cell_edge = vec![NONE; ranges.count];
@@ -338,26 +353,20 @@ struct Renamed {
 
 impl Renamed {
     fn of(mut store: Store, map: Vec<u32>, ranges: &Ranges, side: Side) -> Renamed {
-        for r in store.right.iter_mut() {
-            *r = SiteId(map[r.index()]);
-        }
-        let owned_left = |s: SiteId| ranges.owned(s, Side::Left);
-        let owned_right = |s: SiteId| ranges.owned(s, Side::Right);
         let count = store.vertex_count();
-        let keep: Vec<bool> = (0..count)
-            .map(|v| {
-                let any_left = store.sites_of(VertexId::from_index(v)).iter().any(|&s| owned_left(s));
-                any_left == (side == Side::Left)
-            })
-            .collect();
-        let (mut across, mut across_by_sites, mut rank) = (Vec::new(), HashMap::new(), Vec::new());
+        let (mut keep, mut rank) = (Vec::with_capacity(count), Vec::with_capacity(if side == Side::Right { count } else { 0 }));
+        let (mut across, mut across_by_sites) = (Vec::new(), HashMap::new());
         let mut kept_count = 0;
-        for v in 0..count {
-            let sites = store.sites_of(VertexId::from_index(v));
-            let has_right = sites.iter().any(|&s| owned_right(s));
+        // one pass: each vertex's sites renamed, then what the glue keeps of it
+        for (v, cells) in store.right.chunks_exact_mut(3).enumerate() {
+            cells.iter_mut().for_each(|r| *r = SiteId(map[r.index()]));
+            let sites = [cells[0], cells[1], cells[2]];
+            let any_left = sites.iter().any(|&s| ranges.owned(s, Side::Left));
+            let has_right = sites.iter().any(|&s| ranges.owned(s, Side::Right));
+            let kept = any_left == (side == Side::Left);
             match side {
-                Side::Left if keep[v] && has_right => across.push(v as u32),
-                Side::Right if !keep[v] && has_right => {
+                Side::Left if kept && has_right => across.push(v as u32),
+                Side::Right if !kept && has_right => {
                     let slot = across_by_sites.entry(key(sites)).or_insert(v as u32);
                     if *slot != v as u32 {
                         *slot = NONE; // two vertices of these sites: ambiguous
@@ -366,9 +375,10 @@ impl Renamed {
                 _ => {}
             }
             if side == Side::Right {
-                rank.push(if keep[v] { kept_count as u32 } else { NONE });
+                rank.push(if kept { kept_count as u32 } else { NONE });
             }
-            kept_count += usize::from(keep[v]);
+            keep.push(kept);
+            kept_count += usize::from(kept);
         }
         Renamed { store, map, keep, kept_count, rank, across, across_by_sites }
     }
@@ -397,12 +407,22 @@ impl Renamed {
         Some(VertexId(w).half_edge(slot))
     }
 
-    /// Right: writes its kept vertices into the glued store's appended part.
-    /// Returns the half-edges it linked to the left's vertices.
-    fn fill(&self, left_sites: &[SiteId], n1: usize, partner: &HashMap<u32, u32>, out: Appended<'_>) -> Option<Vec<HalfEdgeId>> {
+    /// Right: writes its kept vertices among `vertices` into their part of
+    /// the glued store's appended arrays (which starts at the kept vertex
+    /// of rank `first_rank`). Returns the half-edges it linked to the
+    /// left's vertices.
+    fn fill(
+        &self,
+        vertices: std::ops::Range<usize>,
+        first_rank: usize,
+        left_sites: &[SiteId],
+        n1: usize,
+        partner: &HashMap<u32, u32>,
+        out: Appended<'_>,
+    ) -> Option<Vec<HalfEdgeId>> {
         let mut across = Vec::new();
-        for v in (0..self.store.vertex_count()).filter(|&v| self.keep[v]) {
-            let at = self.rank[v] as usize;
+        for v in vertices.filter(|&v| self.keep[v]) {
+            let at = self.rank[v] as usize - first_rank;
             let from = VertexId::from_index(v);
             out.sites[3 * at..3 * at + 3].copy_from_slice(&self.store.sites_of(from));
             out.position[at] = self.store.position[v];
@@ -411,7 +431,7 @@ impl Renamed {
                 let t = self.store.twin(from.half_edge(k));
                 out.twin[3 * at + k as usize] = self.across_to_sites(t, n1, partner, left_sites)?;
                 if !self.keep[t.origin().index()] {
-                    across.push(VertexId::from_index(n1 + at).half_edge(k));
+                    across.push(VertexId::from_index(n1 + first_rank + at).half_edge(k));
                 }
             }
         }
@@ -428,9 +448,12 @@ struct Appended<'a> {
 }
 
 /// Left: relinks the edges from its kept vertices into dropped ones, to
-/// the right partner's twins there.
+/// the right partner's twins there. Such an edge separates two sites of
+/// the dropped vertex, neither the left's, so its kept end has a site of
+/// the right: it is one of `across`.
 fn relink_left(
     keep: &[bool],
+    across: &[u32],
     sites: &[SiteId],
     twin: &mut [HalfEdgeId],
     partner: &HashMap<u32, u32>,
@@ -438,13 +461,13 @@ fn relink_left(
     n1: usize,
 ) -> Option<Vec<HalfEdgeId>> {
     let mut relinked = Vec::new();
-    for v in (0..keep.len()).filter(|&v| keep[v]) {
+    for &v in across {
         for k in 0..3 {
-            let h = 3 * v + k;
+            let h = 3 * v as usize + k;
             if keep[twin[h].origin().index()] {
                 continue;
             }
-            let w = *partner.get(&(v as u32))?;
+            let w = *partner.get(&v)?;
             let j = (0..3).find(|&j| right.store.right(VertexId(w).half_edge(j)) == sites[h])?;
             let t = right.store.twin(VertexId(w).half_edge(j));
             if !right.keep[t.origin().index()] {

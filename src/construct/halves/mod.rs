@@ -253,12 +253,13 @@ impl Plan {
             return None;
         }
         let (band, rim) = (FIRST_BAND * spacing, RIM * spacing);
+        let octagon = extremes.octagon();
         let held = |part: &[Point]| -> (Vec<bool>, usize, usize) {
             let (mut on_hull, mut count) = (0, 0);
             let both = part
                 .iter()
                 .map(|&p| {
-                    let hull = extremes.may_be_on_the_hull(p);
+                    let hull = octagon.may_hold_on_its_boundary(p);
                     let held = hull || enclosure.near_a_side(p, rim);
                     on_hull += usize::from(hull);
                     count += usize::from(held);
@@ -437,7 +438,8 @@ impl Half<'_> {
         let mut held_segment = vec![false; segments.len()];
         self.segments.iter().for_each(|&k| held_segment[k as usize] = true);
         let left_out = || {
-            let ends = segments.iter().zip(&held_segment).filter(|(_, &held)| !held).flat_map(|(&[a, b], _)| [points[a], points[b]]);
+            let ends =
+                segments.iter().zip(&held_segment).filter(|(_, &held)| !held).flat_map(|(&[a, b], _)| [points[a], points[b]]);
             (0..points.len()).filter(|&i| !self.held[i]).map(|i| points[i]).chain(ends)
         };
         // (two passes, nothing gathered: the extremes, then the points outside their octagon)
