@@ -17,27 +17,7 @@
 mod common;
 
 use segvoronoi::{Builder, Diagram, Location, Point};
-use segvoronoi_testgen::rings::read_rings;
-
-/// The outlines of `tests/data`, or of the directory in
-/// `SEGVORONOI_OUTLINES` (to try others: `scripts/country_rings.py CODE
-/// --out DIR`).
-fn countries() -> Vec<(String, Vec<Vec<[f64; 2]>>)> {
-    let dir =
-        std::env::var("SEGVORONOI_OUTLINES").unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data").into());
-    let mut out = Vec::new();
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let path = entry.unwrap().path();
-        let name = path.file_name().unwrap().to_str().unwrap().to_string();
-        if (name.starts_with("dcw_") || name.starts_with("gshhg_islands_")) && name.ends_with(".rings") {
-            let rings = read_rings(&std::fs::read_to_string(&path).unwrap()).unwrap_or_else(|e| panic!("{name}: {e}"));
-            out.push((name, rings));
-        }
-    }
-    out.sort_by(|a, b| a.0.cmp(&b.0));
-    assert!(out.len() >= 3, "the country outlines are missing");
-    out
-}
+use segvoronoi_testgen::rings::real_outlines;
 
 /// The distance from `p` to the nearest of `segments`.
 fn nearest(segments: &[segvoronoi::Site], p: Point) -> f64 {
@@ -135,7 +115,7 @@ fn check_country(name: &str, rings: &[Vec<[f64; 2]>]) -> usize {
 #[test]
 fn country_outlines_medial_axis_and_offsets() {
     let mut cancelled = 0;
-    for (name, rings) in countries() {
+    for (name, rings) in real_outlines() {
         cancelled += check_country(&name, &rings);
     }
     // Denmark and Switzerland share borders between their rings (an island
@@ -151,7 +131,7 @@ fn country_outlines_medial_axis_and_offsets() {
 fn country_outlines_have_straight_and_nearly_straight_vertices() {
     use segvoronoi_testgen::exact::orient;
     let (mut straight, mut nearly) = (0, 0);
-    for (_, rings) in countries() {
+    for (_, rings) in real_outlines() {
         for r in &rings {
             for k in 0..r.len() {
                 let (a, b, c) = (r[(k + r.len() - 1) % r.len()], r[k], r[(k + 1) % r.len()]);

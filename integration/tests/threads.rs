@@ -234,3 +234,39 @@ fn a_point_exactly_on_a_segment_builds_as_one_thread_does() {
     assert!(!glued);
     assert!(one == two);
 }
+
+/// Real outlines in halves: the countries of Debian's gmt-dcw and the
+/// Aegean islands of GSHHG (`tests/data`: straight and nearly straight
+/// vertices, enclaves, islands, stretches two countries share) as
+/// polygons, as given and mirrored 2^30 from the origin, each built in
+/// halves from 64 sites on: the one-thread diagram (canonical text, every
+/// vertex bit for bit) with the same place against the polygons for every
+/// vertex.
+#[test]
+fn real_outlines_in_halves_give_the_one_thread_diagram() {
+    use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
+    let (mut glued, mut compared) = (0, 0);
+    set_halves_from(Some(64));
+    for (name, rings) in segvoronoi_testgen::rings::real_outlines() {
+        let o = 2f64.powi(30);
+        let far: Vec<Vec<[f64; 2]>> = rings.iter().map(|r| r.iter().map(|p| [o - p[0], p[1] - o]).collect()).collect();
+        for (how, rings) in [("as given", &rings), ("mirrored 2^30 out", &far)] {
+            let mut b = Builder::new();
+            b.add_polygon(rings).unwrap_or_else(|e| panic!("{name}: {e}"));
+            let one = b.threads(1).build().unwrap_or_else(|e| panic!("{name} {how}: {e}"));
+            let two = b.threads(2).build().unwrap_or_else(|e| panic!("{name} {how} in halves: {e}"));
+            glued += usize::from(take_halves_report().is_some_and(|r| r.glued));
+            compared += 1;
+            assert!(fingerprint(&one) == fingerprint(&two), "{name} {how}: another diagram in halves");
+            let places = |d: &Diagram| {
+                let mut p: Vec<_> = d.vertices().map(|v| (site_key(v.sites), d.vertex_location(v.id))).collect();
+                p.sort_by_key(|(k, _)| *k);
+                p
+            };
+            assert!(places(&one) == places(&two), "{name} {how}: vertices placed otherwise against the polygons");
+        }
+    }
+    set_halves_from(None);
+    eprintln!("{compared} real outlines compared: {glued} glued from halves");
+    assert!(glued * 2 > compared, "only {glued} of {compared} glued");
+}

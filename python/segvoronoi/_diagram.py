@@ -362,13 +362,26 @@ class Diagram:
         """``(E,)`` where each edge lies (codes as :meth:`locate`)."""
         return self._locations[1]
 
-    def topology(self, voronoi_pairs: bool = False) -> str:
+    def topology(self, voronoi_pairs: bool = False, canonical_cuts: bool = False) -> str:
         """The canonical topology text of the Rust library (``EDGES`` and
         ``FACES`` sections naming sites ``P<site>`` and ``S<segment>``
         (an open arc, for now, by its site id as ``P<site>``),
         sorted; the same for every valid answer on the same input), with
-        ``VPAIRS`` and ``VVERTICES`` when ``voronoi_pairs``."""
-        return self._d.topology(bool(voronoi_pairs))
+        ``VPAIRS`` and ``VVERTICES`` when ``voronoi_pairs``.
+
+        With ``canonical_cuts``, a degenerate vertex (four or more sites on
+        one empty circle) is cut the one way its sites' coordinates decide,
+        not the way the build happened to: the text of every build of the
+        same input is then the same whatever the thread count (a large
+        build on several threads numbers and cuts such vertices otherwise).
+
+        >>> import numpy as np, segvoronoi
+        >>> grid = np.array([[x, y] for x in range(3) for y in range(3)], dtype=float)
+        >>> one = segvoronoi.voronoi(points=grid, threads=1).topology(canonical_cuts=True)
+        >>> one == segvoronoi.voronoi(points=grid, threads=2).topology(canonical_cuts=True)
+        True
+        """
+        return self._d.topology(bool(voronoi_pairs), bool(canonical_cuts))
 
     def medial_axis(
         self,

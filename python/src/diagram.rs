@@ -224,10 +224,11 @@ impl PyDiagram {
         (v.into_pyarray(py), e.into_pyarray(py))
     }
 
-    #[pyo3(signature = (voronoi_pairs=false))]
-    fn topology(&self, py: Python<'_>, voronoi_pairs: bool) -> String {
+    #[pyo3(signature = (voronoi_pairs=false, canonical_cuts=false))]
+    fn topology(&self, py: Python<'_>, voronoi_pairs: bool, canonical_cuts: bool) -> String {
         let d = &self.inner;
-        py.detach(|| d.topology(TopologyOptions::default().with_voronoi_pairs(voronoi_pairs)))
+        let options = TopologyOptions::default().with_voronoi_pairs(voronoi_pairs).with_canonical_cuts(canonical_cuts);
+        py.detach(|| d.topology(options))
     }
 
     /// `(xyz, line_offsets)` of the medial axis.

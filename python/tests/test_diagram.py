@@ -170,3 +170,20 @@ def test_geometry_inputs():
     assert d.point_sites.tolist() == [0] and d.has_domain
     assert repr(d).startswith("<segvoronoi.Diagram:")
     assert d.stats["input_points"] == 1
+
+
+def test_threads_give_one_canonical_text():
+    """A build large enough to run in halves on two threads (60k sites and
+    more) gives the one-thread diagram: the canonical text with the
+    Voronoi pairs, byte for byte, on random points and on a lattice
+    (cocircular sites across the cut), and the same vertex positions."""
+    rng = np.random.default_rng(5)
+    lattice = np.array([[x, y] for x in range(300) for y in range(220)], dtype=float)
+    for pts in (rng.random((70_000, 2)), lattice):
+        one = segvoronoi.voronoi(points=pts, threads=1)
+        two = segvoronoi.voronoi(points=pts, threads=2)
+        texts = [d.topology(voronoi_pairs=True, canonical_cuts=True) for d in (one, two)]
+        assert texts[0] == texts[1]
+        assert one.vertices.shape == two.vertices.shape
+        rows = [d.vertices[np.lexsort(d.vertices.T[::-1])] for d in (one, two)]
+        assert np.array_equal(rows[0], rows[1])

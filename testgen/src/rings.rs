@@ -102,6 +102,28 @@ pub fn write_rings(out: &mut impl Write, rings: &[Vec<Point>]) -> io::Result<()>
     Ok(())
 }
 
+/// The real outlines of `tests/data` (or of the directory in
+/// `SEGVORONOI_OUTLINES`, to try others: `scripts/country_rings.py CODE
+/// --out DIR`): countries of the World from Debian's gmt-dcw
+/// (`dcw_*.rings`) and islands of GSHHG (`gshhg_islands_*.rings`), by file
+/// name, in name order.
+pub fn real_outlines() -> Vec<(String, Vec<Vec<Point>>)> {
+    let dir =
+        std::env::var("SEGVORONOI_OUTLINES").unwrap_or_else(|_| concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data").into());
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir(&dir).unwrap_or_else(|e| panic!("{dir}: {e}")) {
+        let path = entry.unwrap_or_else(|e| panic!("{dir}: {e}")).path();
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_string();
+        if (name.starts_with("dcw_") || name.starts_with("gshhg_islands_")) && name.ends_with(".rings") {
+            let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
+            out.push((name.clone(), read_rings(&text).unwrap_or_else(|e| panic!("{name}: {e}"))));
+        }
+    }
+    out.sort_by(|a, b| a.0.cmp(&b.0));
+    assert!(out.len() >= 3, "the real outlines are missing from {dir}");
+    out
+}
+
 /// Reads the rings format; the error says what is wrong where.
 pub fn read_rings(text: &str) -> Result<Vec<Vec<Point>>, String> {
     let mut words = text.lines().filter(|l| !l.trim_start().starts_with('#')).flat_map(str::split_whitespace);
