@@ -270,3 +270,49 @@ fn real_outlines_in_halves_give_the_one_thread_diagram() {
     eprintln!("{compared} real outlines compared: {glued} glued from halves");
     assert!(glued * 2 > compared, "only {glued} of {compared} glued");
 }
+
+/// Lattices, where every vertex is degenerate and each half cuts those on
+/// the cut in its own insertion order: the halves pair up by their edges
+/// across and are glued (a build of a raster on two threads once took
+/// longer than on one: the halves were built, failed to pair by vertex,
+/// and the build started over). Points on a square lattice, and the
+/// outline of a random raster (unit edges between filled and empty
+/// pixels: collinear runs, rings touching at corners): the canonical
+/// text (degenerate vertices cut one way) and the vertex count of one
+/// thread, and a valid diagram.
+#[test]
+fn lattices_glue_from_halves() {
+    use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
+    let mut points = Builder::new();
+    points.add_points((0..120 * 100).map(|i| [f64::from(i % 120), f64::from(i / 120)])).unwrap();
+    let mut raster = Builder::new();
+    let mut rng = SplitMix64(5);
+    let (w, h) = (90, 80);
+    let filled: Vec<bool> = (0..w * h).map(|_| rng.unit() < 0.5).collect();
+    let at = |x: i32, y: i32| x >= 0 && y >= 0 && x < w && y < h && filled[(y * w + x) as usize];
+    let mut edges = Vec::new();
+    for y in 0..=h {
+        for x in 0..=w {
+            let (fx, fy) = (f64::from(x), f64::from(y));
+            if at(x, y) != at(x, y - 1) && x < w {
+                edges.push([[fx, fy], [fx + 1.0, fy]]);
+            }
+            if at(x, y) != at(x - 1, y) && y < h {
+                edges.push([[fx, fy], [fx, fy + 1.0]]);
+            }
+        }
+    }
+    raster.add_segments(edges).unwrap();
+    set_halves_from(Some(64));
+    let canonical = TopologyOptions::default().with_canonical_cuts(true).with_voronoi_pairs(true);
+    for (what, b) in [("a square lattice of points", &mut points), ("a raster's outline", &mut raster)] {
+        let one = b.threads(1).build().unwrap_or_else(|e| panic!("{what}: {e}"));
+        let two = b.threads(2).build().unwrap_or_else(|e| panic!("{what} in halves: {e}"));
+        let report = take_halves_report();
+        assert!(report.is_some_and(|r| r.glued), "{what}: not glued from halves: {report:?}");
+        two.validate().unwrap_or_else(|e| panic!("{what}: {e:?}"));
+        assert_eq!(one.vertex_count(), two.vertex_count(), "{what}");
+        assert!(one.topology(canonical) == two.topology(canonical), "{what}: another topology in halves");
+    }
+    set_halves_from(None);
+}

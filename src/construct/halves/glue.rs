@@ -8,8 +8,19 @@
 //! without one is appended; the left diagram's other vertices (its halo's
 //! alone) are dropped, their slots filled from the end. An edge between a
 //! kept vertex and a dropped one leads across the cut: it is relinked to
-//! the twin that the other half's copy of the kept vertex (the vertex of
-//! the same three sites, counter-clockwise in the same order) has there.
+//! the other half's edge between the same two cells, the other way round
+//! (from the vertex that half keeps).
+//!
+//! Why edges and not vertices: a degenerate vertex (four sites or more on
+//! one circle, as in every lattice) is cut into degree-3 vertices in the
+//! order the half inserted its sites, and the two halves may cut one on
+//! the cut two ways, so a vertex of one half may have no copy in the
+//! other. The edges out of such a cluster separate the same cells
+//! whatever the cut, and the cluster comes whole from one half (the
+//! glued cut is that half's). Where two edges across separate the same
+//! two cells (a segment and its endpoint may share two), or an edge has
+//! no partner (a cluster split across the halves' keeps, cut two ways),
+//! the halves are not glued.
 //!
 //! Each step that is linear in the diagram runs on both threads at once,
 //! one per half; what is sequential (the pairing across the cut, the
@@ -23,7 +34,7 @@ use crate::diagram::{HalfEdgeId, SiteId, Store, VertexId, NONE};
 use crate::geometry::Point;
 use std::collections::HashMap;
 
-/// The two halves glued; `None` when their vertices across the cut do not
+/// The two halves glued; `None` when their edges across the cut do not
 /// pair up (then the caller builds on one thread).
 pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: usize, cut: f64) -> Option<Built> {
     debug_assert!(left.side == Side::Left && right.side == Side::Right);
@@ -61,15 +72,17 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
     );
     let (mut left, right) = (left_side?, right_side?);
 
-    // Pair the vertices on both sides of the cut.
-    let mut partner_of_left: HashMap<u32, u32> = HashMap::with_capacity(left.across.len());
-    let mut partner_of_right: HashMap<u32, u32> = HashMap::with_capacity(left.across.len());
-    for &v in &left.across {
-        match right.across_by_sites.get(&key(left.store.sites_of(VertexId(v)))) {
-            Some(&w) if w != NONE => {
-                partner_of_left.insert(v, w);
-                partner_of_right.insert(w, v);
-            }
+    // Pair the edges across the cut: each is the edge between the same
+    // two sites in both halves (a degenerate vertex on the cut may be cut
+    // one way in one half and another in the other: its edges still pair
+    // up, and the glued cut is the one of whichever half keeps them).
+    let crossings = left.crossing.len();
+    if crossings != right.crossing.len() {
+        return None;
+    }
+    for (&[a, b], &h) in &left.crossing {
+        match right.crossing.get(&[b, a]) {
+            Some(&t) if t.0 != NONE && h.0 != NONE => {}
             _ => return None,
         }
     }
@@ -90,8 +103,7 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
             twin.resize(3 * total, HalfEdgeId(NONE));
         },
     );
-    let (sites_low, sites_high) = cells.split_at_mut(3 * n1);
-    let sites_low: &[SiteId] = sites_low;
+    let sites_high = &mut cells[3 * n1..];
     let twin_high = &mut twin[3 * n1..];
     let (position_high, clearance_high) = (&mut position[n1..], &mut clearance[n1..]);
     let middle = right.store.vertex_count() / 2;
@@ -103,16 +115,16 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
     let (from_b, from_a) = run_beside(
         || {
             let out = Appended { sites: sites_b, twin: twin_b, position: position_b, clearance: clearance_b };
-            right.fill(middle..right.store.vertex_count(), split, sites_low, n1, &partner_of_right, out)
+            right.fill(middle..right.store.vertex_count(), split, n1, &left.crossing, out)
         },
         || {
             let out = Appended { sites: sites_a, twin: twin_a, position: position_a, clearance: clearance_a };
-            right.fill(0..middle, 0, sites_low, n1, &partner_of_right, out)
+            right.fill(0..middle, 0, n1, &left.crossing, out)
         },
     );
     let mut from_right = from_a?;
     from_right.extend_from_slice(&from_b?);
-    let from_left = relink_left(&left.keep, &left.across, &left.store.right, &mut left.store.twin, &partner_of_left, &right, n1)?;
+    let from_left = relink_left(&left.crossing, &mut left.store.twin, &right, n1);
 
     // Cells: each site's edge from the half that owns it, both at once.
     let mut cell_edge = vec![NONE; ranges.count];
@@ -129,7 +141,7 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
                 } else {
                     &mut right_high[(f - high) as usize]
                 };
-                *slot = right.across_to(HalfEdgeId(h), n1, &partner_of_right, &left.store)?.0;
+                *slot = right.cell_edge_glued(HalfEdgeId(h), SiteId(f), n1, &left)?.0;
             }
         }
         Some(())
@@ -346,33 +358,58 @@ struct Renamed {
     rank: Vec<u32>,
     /// Left: its kept vertices with a site of the right (the cut's).
     across: Vec<u32>,
-    /// Right: its dropped vertices with a site of its own, by their sites
-    /// (`NONE`: two of them have the same).
-    across_by_sites: HashMap<[SiteId; 3], u32>,
+    /// The edges across the cut: each half-edge from a kept vertex to a
+    /// dropped one, by its cells (on its right, on its left); `NONE` where
+    /// two have the same cells (then the halves are not glued).
+    crossing: HashMap<[SiteId; 2], HalfEdgeId>,
 }
 
 impl Renamed {
     fn of(mut store: Store, map: Vec<u32>, ranges: &Ranges, side: Side) -> Renamed {
         let count = store.vertex_count();
-        let (mut keep, mut rank) = (Vec::with_capacity(count), Vec::with_capacity(if side == Side::Right { count } else { 0 }));
-        let (mut across, mut across_by_sites) = (Vec::new(), HashMap::new());
-        let mut kept_count = 0;
-        // one pass: each vertex's sites renamed, then what the glue keeps of it
+        // One pass: each vertex's sites renamed, and whether it has a site
+        // of the left (then it is the left's) and one of the right.
+        let (mut lefts, mut rights, mut on_the_cut) = (Vec::with_capacity(count), Vec::with_capacity(count), Vec::new());
         for (v, cells) in store.right.chunks_exact_mut(3).enumerate() {
             cells.iter_mut().for_each(|r| *r = SiteId(map[r.index()]));
-            let sites = [cells[0], cells[1], cells[2]];
-            let any_left = sites.iter().any(|&s| ranges.owned(s, Side::Left));
-            let has_right = sites.iter().any(|&s| ranges.owned(s, Side::Right));
-            let kept = any_left == (side == Side::Left);
-            match side {
-                Side::Left if kept && has_right => across.push(v as u32),
-                Side::Right if !kept && has_right => {
-                    let slot = across_by_sites.entry(key(sites)).or_insert(v as u32);
-                    if *slot != v as u32 {
-                        *slot = NONE; // two vertices of these sites: ambiguous
-                    }
+            let any_left = cells.iter().any(|&s| ranges.owned(s, Side::Left));
+            let any_right = cells.iter().any(|&s| ranges.owned(s, Side::Right));
+            lefts.push(any_left);
+            rights.push(any_right);
+            if any_left && any_right {
+                on_the_cut.push(v);
+            }
+        }
+        // A degenerate vertex (its parts at one position, at one finite
+        // clearance) is the left's whole when one part has a site of the
+        // left: the halves may cut it two ways, and its edges out pair up
+        // only when it comes from one half. (Parts that the rounding put
+        // apart are not found: then the edges do not pair and the build
+        // runs on one thread.) A part without a site of the left next to
+        // one with is on the cut: it has a site of the right.
+        while let Some(v) = on_the_cut.pop() {
+            let (at, clearance) = (store.position[v], store.clearance[v]);
+            if !clearance.is_finite() {
+                continue;
+            }
+            for k in 0..3 {
+                let w = store.twin(VertexId::from_index(v).half_edge(k)).origin().index();
+                if !lefts[w] && store.clearance[w] == clearance && store.position[w] == at {
+                    lefts[w] = true;
+                    on_the_cut.push(w);
                 }
-                _ => {}
+            }
+        }
+        // (left: its kept vertices with a site of the right; right: its
+        // dropped ones with a site of its own; either end of every edge
+        // across the cut is one of them: see `crossing_edges`)
+        let mut across = Vec::new();
+        let (mut keep, mut rank) = (Vec::with_capacity(count), Vec::with_capacity(if side == Side::Right { count } else { 0 }));
+        let mut kept_count = 0;
+        for (v, (&left, &has_right)) in lefts.iter().zip(&rights).enumerate() {
+            let kept = left == (side == Side::Left);
+            if has_right && left {
+                across.push(v as u32);
             }
             if side == Side::Right {
                 rank.push(if kept { kept_count as u32 } else { NONE });
@@ -380,31 +417,46 @@ impl Renamed {
             keep.push(kept);
             kept_count += usize::from(kept);
         }
-        Renamed { store, map, keep, kept_count, rank, across, across_by_sites }
-    }
-
-    /// Right: the glued half-edge for its half-edge `h`: its own, appended
-    /// after the left's `n1` vertices, or the left partner's with the same
-    /// cell on the right (`left_sites`: the left store's cells).
-    fn across_to(&self, h: HalfEdgeId, n1: usize, partner: &HashMap<u32, u32>, left: &Store) -> Option<HalfEdgeId> {
-        self.across_to_sites(h, n1, partner, &left.right)
-    }
-
-    fn across_to_sites(
-        &self,
-        h: HalfEdgeId,
-        n1: usize,
-        partner: &HashMap<u32, u32>,
-        left_sites: &[SiteId],
-    ) -> Option<HalfEdgeId> {
-        let v = h.origin().index();
-        if self.keep[v] {
-            return Some(VertexId(n1 as u32 + self.rank[v]).half_edge(h.slot()));
+        let crossing = crossing_edges(&store, &keep, &across, side);
+        if side == Side::Right {
+            across = Vec::new();
         }
-        let w = *partner.get(&(v as u32))?;
-        let site = self.store.right(h);
-        let slot = (0..3).find(|&k| left_sites[3 * w as usize + k as usize] == site)?;
-        Some(VertexId(w).half_edge(slot))
+        Renamed { store, map, keep, kept_count, rank, across, crossing }
+    }
+
+    /// Right: the glued id of its half-edge `h` (whose origin it keeps).
+    fn appended(&self, h: HalfEdgeId, n1: usize) -> HalfEdgeId {
+        VertexId(n1 as u32 + self.rank[h.origin().index()]).half_edge(h.slot())
+    }
+
+    /// Right: the glued twin of its half-edge `h` from a kept vertex: its
+    /// own twin appended, or across the cut the left's half-edge between
+    /// the same cells the other way (`left_crossing`).
+    fn twin_glued(&self, h: HalfEdgeId, n1: usize, left_crossing: &HashMap<[SiteId; 2], HalfEdgeId>) -> Option<HalfEdgeId> {
+        let t = self.store.twin(h);
+        if self.keep[t.origin().index()] {
+            return Some(self.appended(t, n1));
+        }
+        left_crossing.get(&[self.store.left(h), self.store.right(h)]).copied().filter(|g| g.0 != NONE)
+    }
+
+    /// Right: the glued edge of its site `site`'s cell, from its half-edge
+    /// `h` there: the first along the cell whose origin it keeps, else
+    /// (every vertex of the cell has a site of the left) one of the
+    /// left's, on the cut.
+    fn cell_edge_glued(&self, h: HalfEdgeId, site: SiteId, n1: usize, left: &Renamed) -> Option<HalfEdgeId> {
+        let mut g = h;
+        loop {
+            if self.keep[g.origin().index()] {
+                return Some(self.appended(g, n1));
+            }
+            g = self.store.next(g);
+            if g == h {
+                break;
+            }
+        }
+        let on_the_cut = left.across.iter().flat_map(|&v| (0..3).map(move |k| VertexId(v).half_edge(k)));
+        on_the_cut.into_iter().find(|&g| left.store.left(g) == site)
     }
 
     /// Right: writes its kept vertices among `vertices` into their part of
@@ -415,9 +467,8 @@ impl Renamed {
         &self,
         vertices: std::ops::Range<usize>,
         first_rank: usize,
-        left_sites: &[SiteId],
         n1: usize,
-        partner: &HashMap<u32, u32>,
+        left_crossing: &HashMap<[SiteId; 2], HalfEdgeId>,
         out: Appended<'_>,
     ) -> Option<Vec<HalfEdgeId>> {
         let mut across = Vec::new();
@@ -428,15 +479,43 @@ impl Renamed {
             out.position[at] = self.store.position[v];
             out.clearance[at] = self.store.clearance[v];
             for k in 0..3 {
-                let t = self.store.twin(from.half_edge(k));
-                out.twin[3 * at + k as usize] = self.across_to_sites(t, n1, partner, left_sites)?;
-                if !self.keep[t.origin().index()] {
+                let h = from.half_edge(k);
+                out.twin[3 * at + k as usize] = self.twin_glued(h, n1, left_crossing)?;
+                if !self.keep[self.store.twin(h).origin().index()] {
                     across.push(VertexId::from_index(n1 + first_rank + at).half_edge(k));
                 }
             }
         }
         Some(across)
     }
+}
+
+/// A half's edges across the cut (`Renamed::crossing`): on the left from
+/// its kept vertices on the cut (`candidates`: its kept vertices with a
+/// site of the right), on the right to its dropped vertices with a site
+/// of its own (`candidates`). Such an edge separates two sites that both
+/// its ends have, so neither is the left's (its right end has none): one
+/// is the right's (the other may be the point at infinity), and both its
+/// ends have a site of the right.
+fn crossing_edges(store: &Store, keep: &[bool], candidates: &[u32], side: Side) -> HashMap<[SiteId; 2], HalfEdgeId> {
+    let mut crossing = HashMap::with_capacity(candidates.len());
+    for &v in candidates {
+        for k in 0..3 {
+            // (the half-edge from the kept end)
+            let h = match side {
+                Side::Left => VertexId(v).half_edge(k),
+                Side::Right => store.twin(VertexId(v).half_edge(k)),
+            };
+            if !keep[h.origin().index()] || keep[store.twin(h).origin().index()] {
+                continue;
+            }
+            let slot = crossing.entry([store.right(h), store.left(h)]).or_insert(h);
+            if *slot != h {
+                *slot = HalfEdgeId(NONE); // two edges between the same cells: ambiguous
+            }
+        }
+    }
+    crossing
 }
 
 /// The appended part of the glued store's arrays.
@@ -447,44 +526,23 @@ struct Appended<'a> {
     clearance: &'a mut [f64],
 }
 
-/// Left: relinks the edges from its kept vertices into dropped ones, to
-/// the right partner's twins there. Such an edge separates two sites of
-/// the dropped vertex, neither the left's, so its kept end has a site of
-/// the right: it is one of `across`.
+/// Left: relinks its edges across the cut (`crossing`, checked to pair
+/// up with the right's) to the right's half-edges between the same cells
+/// the other way, appended after its `n1` vertices. Returns them.
 fn relink_left(
-    keep: &[bool],
-    across: &[u32],
-    sites: &[SiteId],
+    crossing: &HashMap<[SiteId; 2], HalfEdgeId>,
     twin: &mut [HalfEdgeId],
-    partner: &HashMap<u32, u32>,
     right: &Renamed,
     n1: usize,
-) -> Option<Vec<HalfEdgeId>> {
-    let mut relinked = Vec::new();
-    for &v in across {
-        for k in 0..3 {
-            let h = 3 * v as usize + k;
-            if keep[twin[h].origin().index()] {
-                continue;
-            }
-            let w = *partner.get(&v)?;
-            let j = (0..3).find(|&j| right.store.right(VertexId(w).half_edge(j)) == sites[h])?;
-            let t = right.store.twin(VertexId(w).half_edge(j));
-            if !right.keep[t.origin().index()] {
-                return None;
-            }
-            twin[h] = VertexId(n1 as u32 + right.rank[t.origin().index()]).half_edge(t.slot());
-            relinked.push(HalfEdgeId::from_index(h));
+) -> Vec<HalfEdgeId> {
+    let mut relinked = Vec::with_capacity(crossing.len());
+    for (&[a, b], &h) in crossing {
+        if let Some(&t) = right.crossing.get(&[b, a]) {
+            twin[h.index()] = right.appended(t, n1);
+            relinked.push(h);
         }
     }
-    Some(relinked)
-}
-
-/// A vertex's sites, rotated to start at the smallest id (counter-clockwise
-/// order kept): the same key for the same vertex in both halves.
-fn key(sites: [SiteId; 3]) -> [SiteId; 3] {
-    let k = (0..3).min_by_key(|&k| sites[k]).unwrap_or(0);
-    [sites[k], sites[(k + 1) % 3], sites[(k + 2) % 3]]
+    relinked
 }
 
 /// Removes the left diagram's vertices not kept (`keep`, per vertex below

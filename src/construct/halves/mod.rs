@@ -19,12 +19,15 @@
 //! nearer to any of its points (`geometry::seam`, asked of every vertex of
 //! such a cell). The glue (`glue.rs`) takes the owned cells of each half:
 //! every vertex with a site the left half owns from the left, every other
-//! from the right, and links the edges across by the vertices both halves
-//! hold (the same three sites). Where a check fails, the band is widened
+//! from the right, and links each edge across to the other half's edge
+//! between the same two cells. Where a check fails, the band is widened
 //! once to what the failing vertices need; where it fails again, or the
-//! halves' vertices do not pair up (a degenerate vertex cut two ways
-//! across the cut), the build starts over on one thread. So the answer is
-//! always the single thread's; only the time differs.
+//! halves' edges do not pair up (two edges across between the same cells,
+//! or a degenerate vertex cut two ways and split between the halves'
+//! keeps), the build starts over on one thread. So the answer is always
+//! the single thread's (a degenerate vertex on the cut may be cut as the
+//! other half would have: the canonical text, which cuts them one way,
+//! is the same); only the time differs.
 
 mod glue;
 
