@@ -5,8 +5,13 @@
 //! `diagnostics::take_halves_report` times (the plan, the halves with the
 //! input check beside them, the glue) and the sites each half held.
 //!
-//! `cargo run --release --example halves_scaling -- [points|segments] [SIZE ...]`
-//! (default: both, 1M).
+//! Also `lattice` (a square lattice of points: every vertex degenerate,
+//! those on the cut cut two ways by the halves) and `raster` (the outline
+//! of a random raster, unit edges between filled and empty pixels, SIZE
+//! pixels).
+//!
+//! `cargo run --release --example halves_scaling -- [points|segments|lattice|raster] [SIZE ...]`
+//! (default: points and segments, 1M).
 
 use segvoronoi::diagnostics::take_halves_report;
 use segvoronoi::splitmix::SplitMix64;
@@ -16,7 +21,7 @@ use std::time::Instant;
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let kinds: Vec<&str> = match args.first().map(String::as_str) {
-        Some(k @ ("points" | "segments")) => vec![k],
+        Some(k @ ("points" | "segments" | "lattice" | "raster")) => vec![k],
         _ => vec!["points", "segments"],
     };
     let sizes: Vec<usize> = args.iter().filter_map(|a| a.parse().ok()).collect();
@@ -29,6 +34,11 @@ fn main() {
             let mut rng = SplitMix64(7);
             if kind == "points" {
                 b.add_points((0..n).map(|_| [rng.unit(), rng.unit()])).expect("finite");
+            } else if kind == "lattice" {
+                let k = (n as f64).sqrt().ceil() as usize;
+                b.add_points((0..n).map(|i| [(i % k) as f64, (i / k) as f64])).expect("finite");
+            } else if kind == "raster" {
+                b.add_segments(raster_outline((n as f64).sqrt().ceil() as i64, &mut rng)).expect("finite");
             } else {
                 // one segment of length 0.3 per unit cell, starting in its
                 // lower left 0.3 x 0.3: none meet
@@ -67,4 +77,25 @@ fn time(mut build: impl FnMut() -> Result<(), segvoronoi::Error>) -> f64 {
             start.elapsed().as_secs_f64()
         })
         .fold(f64::INFINITY, f64::min)
+}
+
+/// The outline of a random `k` x `k` raster, each pixel filled with
+/// probability 1/2: a unit edge between every filled pixel and an empty
+/// one (or the outside).
+fn raster_outline(k: i64, rng: &mut SplitMix64) -> Vec<[[f64; 2]; 2]> {
+    let filled: Vec<bool> = (0..k * k).map(|_| rng.unit() < 0.5).collect();
+    let at = |x: i64, y: i64| x >= 0 && y >= 0 && x < k && y < k && filled[(y * k + x) as usize];
+    let mut edges = Vec::new();
+    for y in 0..=k {
+        for x in 0..=k {
+            let (fx, fy) = (x as f64, y as f64);
+            if x < k && at(x, y) != at(x, y - 1) {
+                edges.push([[fx, fy], [fx + 1.0, fy]]);
+            }
+            if y < k && at(x, y) != at(x - 1, y) {
+                edges.push([[fx, fy], [fx, fy + 1.0]]);
+            }
+        }
+    }
+    edges
 }

@@ -46,8 +46,7 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
 
     // Held sites of the other side take the names their owner gave them;
     // then each half renames its cells and finds what it keeps.
-    let BuiltHalf { construction: lc, points: lp, segments: ls, site_of_point: lsp, site_of_segment: lss, .. } = left;
-    let BuiltHalf { construction: rc, points: rp, segments: rs, site_of_point: rsp, site_of_segment: rss, .. } = right;
+    let (lc, rc) = (left.into_construction(), right.into_construction());
     // Both halves write their owned sites' geometry into their own ranges.
     let mut sites = vec![Point::new(f64::NAN, f64::NAN); ranges.count];
     let mut segment_ends = vec![[SiteId(NONE); 2]; ranges.count - ranges.first_segment as usize];
@@ -58,13 +57,13 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
     let (of_point_ref, of_segment_ref) = (&of_point, &of_segment);
     let (right_side, left_side) = run_beside(
         move || {
-            let map = names_right.complete(&rp, &rsp, &rs, &rss, of_point_ref, of_segment_ref)?;
+            let map = names_right.complete(of_point_ref, of_segment_ref)?;
             write_geometry(&rc, &map, ranges_ref, Side::Right, right_points, right_ends);
             let store = rc.into_parts().store;
             Some(Renamed::of(store, map, ranges_ref, Side::Right))
         },
         move || {
-            let map = names_left.complete(&lp, &lsp, &ls, &lss, of_point_ref, of_segment_ref)?;
+            let map = names_left.complete(of_point_ref, of_segment_ref)?;
             write_geometry(&lc, &map, ranges_ref, Side::Left, left_points, left_ends);
             let store = lc.into_parts().store;
             Some(Renamed::of(store, map, ranges_ref, Side::Left))
@@ -268,16 +267,26 @@ impl Owned {
             map[local] = *next;
             *next += 1;
         }
-        let named_points = named(&half.points, &half.site_of_point, &map);
-        let named_segments = named(&half.segments, &half.site_of_segment, &map);
-        Names { map, named_points, named_segments }
+        let (named_points, halo_points) = named(&half.points, &half.site_of_point, &map);
+        let (named_segments, halo_segments) = named(&half.segments, &half.site_of_segment, &map);
+        Names { map, named_points, named_segments, halo_points, halo_segments }
     }
 }
 
-/// Per input (point or segment) a half holds, with an owned site: the
-/// input's index and the site's final id.
-fn named(inputs: &[u32], site_of: &[SiteId], map: &[u32]) -> Vec<(u32, u32)> {
-    inputs.iter().zip(site_of).filter(|(_, s)| s.0 != NONE && map[s.index()] != NONE).map(|(&i, s)| (i, map[s.index()])).collect()
+/// The inputs (points or segments) a half holds: those with an owned site
+/// as (input, the site's final id), the others (its halo) as (input, its
+/// site). One pass: the sites are in the half's insertion order, so each
+/// look-up in `map` is a cache miss on large inputs.
+#[allow(clippy::type_complexity)]
+fn named(inputs: &[u32], site_of: &[SiteId], map: &[u32]) -> (Vec<(u32, u32)>, Vec<(u32, SiteId)>) {
+    let (mut owned, mut halo) = (Vec::with_capacity(inputs.len()), Vec::new());
+    for (&i, &s) in inputs.iter().zip(site_of) {
+        match map.get(s.index()) {
+            Some(&f) if f != NONE => owned.push((i, f)),
+            _ => halo.push((i, s)),
+        }
+    }
+    (owned, halo)
 }
 
 /// A half's final ids so far.
@@ -285,23 +294,17 @@ struct Names {
     map: Vec<u32>,
     named_points: Vec<(u32, u32)>,
     named_segments: Vec<(u32, u32)>,
+    halo_points: Vec<(u32, SiteId)>,
+    halo_segments: Vec<(u32, SiteId)>,
 }
 
 impl Names {
-    /// The map with the held sites of the other side named too; `None`
-    /// when a held input has no site.
-    fn complete(
-        self,
-        points: &[u32],
-        site_of_point: &[SiteId],
-        segments: &[u32],
-        site_of_segment: &[SiteId],
-        of_point: &[SiteId],
-        of_segment: &[SiteId],
-    ) -> Option<Vec<u32>> {
+    /// The map with the held sites of the other side (the halo) named
+    /// too; `None` when a held input has no site.
+    fn complete(self, of_point: &[SiteId], of_segment: &[SiteId]) -> Option<Vec<u32>> {
         let mut map = self.map;
-        for (inputs, site_of, of) in [(points, site_of_point, of_point), (segments, site_of_segment, of_segment)] {
-            for (&i, &s) in inputs.iter().zip(site_of) {
+        for (halo, of) in [(&self.halo_points, of_point), (&self.halo_segments, of_segment)] {
+            for &(i, s) in halo {
                 let slot = map.get_mut(s.index())?;
                 if *slot == NONE {
                     *slot = of[i as usize].0;

@@ -345,6 +345,11 @@ impl BuiltHalf {
     fn held_sites(&self) -> usize {
         self.points.len() + self.segments.len()
     }
+
+    /// Its construction, the rest dropped.
+    fn into_construction(self) -> Construction {
+        self.construction
+    }
 }
 
 impl Half<'_> {
