@@ -404,8 +404,10 @@ pub unsafe extern "C" fn segvoronoi_builder_set_split_crossings(builder: *mut se
 /// At most `threads` threads running at once in `segvoronoi_builder_build`
 /// (the calling one included); 0, the default, for as many as the machine
 /// has cores. The diagram is the same for every count (its canonical
-/// topology text byte for byte, every vertex at the same position; vertices
-/// and edges may be numbered otherwise). With a second thread, a build of
+/// topology text with `SEGVORONOI_TOPOLOGY_CANONICAL_CUTS` byte for byte,
+/// every vertex at the same position; vertices and edges may be numbered
+/// otherwise, and a degenerate vertex, four sites or more on one circle,
+/// cut into its degree-3 parts another way). With a second thread, a build of
 /// 60,000 sites or more without arcs runs in two halves built at once and
 /// glued; smaller ones run parts of their work on it (the input check
 /// beside the point insertions, the sort of the insertion order, the check

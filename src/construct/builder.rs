@@ -410,11 +410,13 @@ impl Builder {
     /// and edges (the canonical topology text,
     /// [`TopologyOptions::canonical_cuts`](crate::TopologyOptions::canonical_cuts),
     /// byte for byte), every vertex at the same position, bit for bit;
-    /// vertices and edges may be numbered otherwise.
+    /// vertices and edges may be numbered otherwise, and a degenerate
+    /// vertex (four sites or more on one empty circle) cut into its
+    /// degree-3 parts another way (the canonical text cuts it one way).
     ///
     /// With a second thread, a build of 60,000 sites or more without arcs
     /// runs in two halves, cut at a vertical line, each built on its own
-    /// thread and then glued (about 1.3 to 1.5 times faster on two cores);
+    /// thread and then glued (about 1.4 to 1.8 times faster on two cores);
     /// smaller builds and arcs use it for parts of their work (the input
     /// check beside the point insertions, the sort of the insertion order,
     /// the check of the arcs' vertices). Two threads are the most a build

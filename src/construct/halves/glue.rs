@@ -383,21 +383,20 @@ impl Renamed {
                 on_the_cut.push(v);
             }
         }
-        // A degenerate vertex (its parts at one position, at one finite
-        // clearance) is the left's whole when one part has a site of the
-        // left: the halves may cut it two ways, and its edges out pair up
-        // only when it comes from one half. (Parts that the rounding put
-        // apart are not found: then the edges do not pair and the build
-        // runs on one thread.) A part without a site of the left next to
-        // one with is on the cut: it has a site of the right.
+        // A degenerate vertex (its parts at one position and clearance, but
+        // for the rounding of each part's own three sites) is the left's
+        // whole when one part has a site of the left: the halves may cut it
+        // two ways, and its edges out pair up only when it comes from one
+        // half. A part without a site of the left next to one with is on
+        // the cut: it has a site of the right. (Taking a true vertex that
+        // close as a part is sound: its disk is the part's but for those
+        // roundings, far below the margins of `geometry::seam`, so it is
+        // final in the left half too; parts the rounding put further apart
+        // are not found, and then the edges do not pair up.)
         while let Some(v) = on_the_cut.pop() {
-            let (at, clearance) = (store.position[v], store.clearance[v]);
-            if !clearance.is_finite() {
-                continue;
-            }
             for k in 0..3 {
                 let w = store.twin(VertexId::from_index(v).half_edge(k)).origin().index();
-                if !lefts[w] && store.clearance[w] == clearance && store.position[w] == at {
+                if !lefts[w] && same_place(&store, v, w) {
                     lefts[w] = true;
                     on_the_cut.push(w);
                 }
@@ -491,6 +490,16 @@ impl Renamed {
         }
         Some(across)
     }
+}
+
+/// Whether finite vertices `v` and `w` are at one place: their positions
+/// and clearances within 16 roundings of their size.
+fn same_place(store: &Store, v: usize, w: usize) -> bool {
+    let (p, q) = (store.position[v], store.position[w]);
+    let (r, s) = (store.clearance[v], store.clearance[w]);
+    let size = p.x.abs() + p.y.abs() + r;
+    let within = 16.0 * f64::EPSILON * size;
+    size.is_finite() && (p.x - q.x).abs() <= within && (p.y - q.y).abs() <= within && (r - s).abs() <= within
 }
 
 /// A half's edges across the cut (`Renamed::crossing`): on the left from
