@@ -447,8 +447,9 @@ impl Renamed {
     /// (every vertex of the cell has a site of the left) one of the
     /// left's, on the cut.
     fn cell_edge_glued(&self, h: HalfEdgeId, site: SiteId, n1: usize, left: &Renamed) -> Option<HalfEdgeId> {
+        // (at most every half-edge once: a cell's boundary is a cycle)
         let mut g = h;
-        loop {
+        for _ in 0..self.store.twin.len() {
             if self.keep[g.origin().index()] {
                 return Some(self.appended(g, n1));
             }
