@@ -405,19 +405,20 @@ impl Renamed {
         // (left: its kept vertices with a site of the right; right: its
         // dropped ones with a site of its own; either end of every edge
         // across the cut is one of them: see `crossing_edges`)
+        // (what the side keeps: `lefts` itself on the left, negated in place on the right)
         let mut across = Vec::new();
-        let (mut keep, mut rank) = (Vec::with_capacity(count), Vec::with_capacity(if side == Side::Right { count } else { 0 }));
+        let mut keep = lefts;
+        let mut rank = Vec::with_capacity(if side == Side::Right { count } else { 0 });
         let mut kept_count = 0;
-        for (v, (&left, &has_right)) in lefts.iter().zip(&rights).enumerate() {
-            let kept = left == (side == Side::Left);
-            if has_right && left {
+        for (v, (kept, &has_right)) in keep.iter_mut().zip(&rights).enumerate() {
+            if has_right && *kept {
                 across.push(v as u32);
             }
             if side == Side::Right {
-                rank.push(if kept { kept_count as u32 } else { NONE });
+                *kept = !*kept;
+                rank.push(if *kept { kept_count as u32 } else { NONE });
             }
-            keep.push(kept);
-            kept_count += usize::from(kept);
+            kept_count += usize::from(*kept);
         }
         let crossing = crossing_edges(&store, &keep, &across, side);
         if side == Side::Right {
