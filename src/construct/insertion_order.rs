@@ -7,9 +7,6 @@
 //! conflict regions). Random rounds of doubling size give the second, the
 //! Hilbert order inside each round gives the first. This plays the part of
 //! the bucket quadtree order of Sugihara's survey (seed 004 §3.2).
-//!
-//! Large inputs are keyed and sorted in two halves on two threads and then
-//! merged; the order is the same as on one thread.
 
 use crate::geometry::Point;
 use crate::splitmix::SplitMix64;
@@ -21,13 +18,13 @@ const GRID_BITS: u32 = 16;
 const MAX_LEVEL: u64 = 30;
 
 /// The order in which to insert `points` (indices into it). Deterministic.
+///
+/// Each point gets a round (BRIO) and its position along that round's
+/// curve; the order is by round, then position, then index. The points
+/// are bucketed by round, and each round's are sorted by a radix sort of
+/// position and index packed in one word (a comparison sort of the keys
+/// took as long as a tenth of the whole build).
 pub(crate) fn insertion_order(points: &[Point]) -> Vec<u32> {
-    insertion_order_threaded(points, PARALLEL_FROM)
-}
-
-/// [`insertion_order`], on two threads when there are `parallel_from`
-/// points or more; the answer does not depend on it.
-fn insertion_order_threaded(points: &[Point], parallel_from: usize) -> Vec<u32> {
     let n = points.len();
     if n == 0 {
         return Vec::new();
@@ -52,81 +49,113 @@ fn insertion_order_threaded(points: &[Point], parallel_from: usize) -> Vec<u32> 
     };
 
     let seed = 0x5EED_5EED ^ n as u64;
-    let key = |i: usize, p: &Point| -> (u64, u32) {
+    // Per point: its round, and as one word its position along the
+    // round's curve (high half) and its index (low half).
+    let (mut rounds, mut keys) = (Vec::with_capacity(n), Vec::with_capacity(n));
+    for (i, p) in points.iter().enumerate() {
         // Level k with probability 2^-(k+1): half the points in the last
-        // round. Drawn from the index alone, so any split of the work gives
-        // the same order.
+        // round. Drawn from the index alone.
         let level = (SplitMix64(seed ^ (i as u64).wrapping_mul(0xD1B5_4A32_D192_ED03)).next_u64() | (1 << MAX_LEVEL))
             .trailing_zeros() as u64;
-        let round = MAX_LEVEL - level;
+        let round = (MAX_LEVEL - level) as usize;
         let mut h = hilbert_index(grid(p.x, lo.x), grid(p.y, lo.y));
         if round % 2 == 1 {
             // run the curve backwards so consecutive rounds meet end to start
             h = (1u64 << (2 * GRID_BITS)) - 1 - h;
         }
-        ((round << (2 * GRID_BITS)) | h, i as u32)
-    };
-    let keyed_sorted = |start: usize, chunk: &[Point]| -> Vec<(u64, u32)> {
-        let mut keyed: Vec<(u64, u32)> = chunk.iter().enumerate().map(|(k, p)| key(start + k, p)).collect();
-        keyed.sort_unstable();
-        keyed
-    };
-    // Large inputs: key and sort the two halves on two threads, then merge
-    // (the construction itself is sequential; this is its one parallel step).
-    if n < parallel_from {
-        return keyed_sorted(0, points).into_iter().map(|(_, i)| i).collect();
+        rounds.push(round as u8);
+        keys.push(h << 32 | i as u64);
     }
-    let half = n / 2;
-    let (second, first) = super::run_beside(|| keyed_sorted(half, &points[half..]), || keyed_sorted(0, &points[..half]));
-    merge_indices(&first, &second)
+    ordered(&rounds, keys)
 }
 
-/// Below this many points one thread orders faster than two.
-const PARALLEL_FROM: usize = 100_000;
-
-/// The indices of two sorted runs of `(key, index)`, merged by key.
-fn merge_indices(a: &[(u64, u32)], b: &[(u64, u32)]) -> Vec<u32> {
-    let mut out = Vec::with_capacity(a.len() + b.len());
-    let (mut i, mut j) = (0, 0);
-    while i < a.len() && j < b.len() {
-        if b[j] < a[i] {
-            out.push(b[j].1);
-            j += 1;
-        } else {
-            out.push(a[i].1);
-            i += 1;
-        }
+/// The indices of `keys` (low halves) by round (`rounds`, per key), then
+/// by key: bucketed by round in the keys' order, then each bucket sorted.
+fn ordered(rounds: &[u8], mut keys: Vec<u64>) -> Vec<u32> {
+    let mut per_round = [0usize; ROUNDS + 1];
+    rounds.iter().for_each(|&r| per_round[r as usize + 1] += 1);
+    for r in 0..ROUNDS {
+        per_round[r + 1] += per_round[r];
     }
-    out.extend(a[i..].iter().map(|&(_, k)| k));
-    out.extend(b[j..].iter().map(|&(_, k)| k));
-    out
+    let mut next = per_round;
+    let mut bucketed = vec![0u64; keys.len()];
+    for (&key, &round) in keys.iter().zip(rounds) {
+        bucketed[next[round as usize]] = key;
+        next[round as usize] += 1;
+    }
+    let scratch = &mut keys;
+    for r in 0..ROUNDS {
+        let (from, to) = (per_round[r], per_round[r + 1]);
+        sort_keys(&mut bucketed[from..to], &mut scratch[from..to]);
+    }
+    bucketed.into_iter().map(|key| key as u32).collect()
+}
+
+/// Rounds of the BRIO: levels `0..=MAX_LEVEL`.
+const ROUNDS: usize = MAX_LEVEL as usize + 1;
+
+/// From this many keys on, [`sort_keys`] sorts by radix.
+const RADIX_FROM: usize = 1 << 12;
+
+/// Sorts `keys` (position along the curve, then index: see
+/// [`insertion_order`]), using `scratch` (as long) as room. Long runs by
+/// radix, a byte of the position at a time from the lowest (stable, and
+/// the keys come in index order, so ties in position stay by index);
+/// passes whose byte is the same for every key are skipped.
+fn sort_keys(keys: &mut [u64], scratch: &mut [u64]) {
+    if keys.len() < RADIX_FROM {
+        keys.sort_unstable();
+        return;
+    }
+    let mut in_scratch = false;
+    for shift in [32, 40, 48, 56] {
+        let (from, to): (&mut [u64], &mut [u64]) = if in_scratch { (scratch, keys) } else { (keys, scratch) };
+        let mut count = [0usize; 256];
+        from.iter().for_each(|&k| count[(k >> shift) as usize & 255] += 1);
+        if count.contains(&from.len()) {
+            continue;
+        }
+        let mut at = [0usize; 256];
+        for d in 1..256 {
+            at[d] = at[d - 1] + count[d - 1];
+        }
+        for &k in from.iter() {
+            let d = (k >> shift) as usize & 255;
+            to[at[d]] = k;
+            at[d] += 1;
+        }
+        in_scratch = !in_scratch;
+    }
+    if in_scratch {
+        keys.copy_from_slice(scratch);
+    }
 }
 
 /// Position of grid cell `(x, y)` along the Hilbert curve of side
-/// `2^GRID_BITS`: two bits of each coordinate at a time, through
+/// `2^GRID_BITS`: four bits of each coordinate at a time, through
 /// [`HILBERT_STEPS`]. (The curve's own recursion, one bit at a time with
 /// a branch on each, kept in the tests as the reference, spent more on
 /// mispredicted branches than the whole sort of the keys.)
 fn hilbert_index(x: u32, y: u32) -> u64 {
     let (mut d, mut state) = (0u64, 0usize);
-    for level in (0..GRID_BITS / 2).rev() {
-        let bits = (((x >> (2 * level)) & 3) << 2 | ((y >> (2 * level)) & 3)) as usize;
-        let (digits, next) = HILBERT_STEPS[state << 4 | bits];
-        d = d << 4 | digits as u64;
+    for level in (0..GRID_BITS / 4).rev() {
+        let bits = (((x >> (4 * level)) & 15) << 4 | ((y >> (4 * level)) & 15)) as usize;
+        let (digits, next) = HILBERT_STEPS[state << 8 | bits];
+        d = d << 8 | digits as u64;
         state = next as usize;
     }
     d
 }
 
-/// The Hilbert curve's recursion two levels at a time. The curve's
+/// The Hilbert curve's recursion four levels at a time. The curve's
 /// orientation in a cell is one of four states, which say how the cell's
 /// coordinates are seen: swapped (bit 0), both complemented (bit 1). Per
-/// state and two bits each of `x` and `y` (`state << 4 | x1 x0 y1 y0`):
-/// the two base-4 digits of the position along the curve, and the state
+/// state and four bits each of `x` and `y` (`state << 8 | x3..x0 y3..y0`):
+/// the four base-4 digits of the position along the curve, and the state
 /// of the sub-cell reached.
-const HILBERT_STEPS: [(u8, u8); 64] = hilbert_steps();
+const HILBERT_STEPS: [(u8, u8); 1024] = hilbert_steps();
 
-const fn hilbert_steps() -> [(u8, u8); 64] {
+const fn hilbert_steps() -> [(u8, u8); 1024] {
     // One level: in state (swap, complement), the cell's bits (bx, by) seen
     // as (rx, ry); the digit is 3·rx xor ry; the lower left and lower
     // right quarters (ry = 0) turn the curve: swap, and complement too on
@@ -139,13 +168,19 @@ const fn hilbert_steps() -> [(u8, u8); 64] {
         let next = if ry == 0 { (swap ^ 1) | ((complement ^ rx) << 1) } else { state };
         (digit, next)
     }
-    let mut table = [(0u8, 0u8); 64];
+    let mut table = [(0u8, 0u8); 1024];
     let mut i = 0;
-    while i < 64 {
-        let (state, x2, y2) = (i >> 4, (i >> 2) & 3, i & 3);
-        let (high, middle) = one_level(state, x2 >> 1, y2 >> 1);
-        let (low, next) = one_level(middle, x2 & 1, y2 & 1);
-        table[i] = ((high << 2 | low) as u8, next as u8);
+    while i < 1024 {
+        let (mut state, x4, y4) = (i >> 8, (i >> 4) & 15, i & 15);
+        let mut digits = 0;
+        let mut bit = 4;
+        while bit > 0 {
+            bit -= 1;
+            let (digit, next) = one_level(state, (x4 >> bit) & 1, (y4 >> bit) & 1);
+            digits = digits << 2 | digit;
+            state = next;
+        }
+        table[i] = (digits as u8, state as u8);
         i += 1;
     }
     table
@@ -185,7 +220,7 @@ mod tests {
     }
 
     #[test]
-    fn hilbert_by_two_bits_is_the_curve_by_one() {
+    fn hilbert_by_four_bits_is_the_curve_by_one() {
         // every cell of a 256 x 256 grid at each of three scales, and
         // random cells of the whole grid
         for shift in [0, 4, 8] {
@@ -221,23 +256,20 @@ mod tests {
     }
 
     #[test]
-    fn two_threads_give_the_single_thread_order() {
-        let n = 5001;
-        let pts: Vec<Point> = (0..n).map(|i| Point::new((i * 7919 % 10007) as f64, (i * 104729 % 9973) as f64)).collect();
-        let one = insertion_order_threaded(&pts, usize::MAX);
-        assert_eq!(insertion_order_threaded(&pts, 2), one);
-        assert_eq!(insertion_order_threaded(&pts[..4], 2), insertion_order_threaded(&pts[..4], usize::MAX));
-        let mut sorted = one;
-        sorted.sort_unstable();
-        assert_eq!(sorted, (0..n as u32).collect::<Vec<u32>>());
-    }
-
-    #[test]
-    fn merge_keeps_key_order() {
-        let a = [(1u64, 10u32), (4, 11), (9, 12)];
-        let b = [(2u64, 20u32), (3, 21), (10, 22)];
-        assert_eq!(merge_indices(&a, &b), vec![10, 20, 21, 11, 12, 22]);
-        assert_eq!(merge_indices(&[], &b), vec![20, 21, 22]);
+    fn buckets_and_radix_give_the_order_of_a_plain_sort() {
+        // keys with many ties in position (the index, in the low half,
+        // breaks them), rounds skewed as the BRIO's are, below and above
+        // the radix threshold
+        let mut random = SplitMix64(7);
+        for n in [0, 1, 5, 300, RADIX_FROM - 1, RADIX_FROM, 3 * RADIX_FROM + 17, 200_000] {
+            let rounds: Vec<u8> = (0..n).map(|_| (ROUNDS as u32 - 1 - (random.next_u64() | 1 << 30).trailing_zeros().min(30)) as u8).collect();
+            let spread = if n % 2 == 0 { 1 << 32 } else { 1000 };
+            let keys: Vec<u64> = (0..n).map(|i| (random.next_u64() % spread) << 32 | i as u64).collect();
+            let mut expected: Vec<(u8, u64)> = rounds.iter().copied().zip(keys.iter().copied()).collect();
+            expected.sort_unstable();
+            let expected: Vec<u32> = expected.into_iter().map(|(_, k)| k as u32).collect();
+            assert_eq!(ordered(&rounds, keys), expected, "{n} keys");
+        }
     }
 
     #[test]

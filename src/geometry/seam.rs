@@ -66,7 +66,8 @@ impl Extremes {
         let mut best = [(f64::NEG_INFINITY, Point::new(f64::NAN, f64::NAN)); 8];
         let mut size: f64 = 0.0;
         for p in points {
-            size = size.max(p.x.abs() + p.y.abs());
+            let l1 = p.x.abs() + p.y.abs();
+            size = if l1 > size { l1 } else { size };
             for (k, &(dx, dy)) in EIGHT.iter().enumerate() {
                 let v = p.x * dx + p.y * dy;
                 if v > best[k].0 {
@@ -182,10 +183,14 @@ impl Enclosure {
     pub(crate) fn of(points: &[Point]) -> Enclosure {
         let mut support = [f64::NEG_INFINITY; SIDES];
         let mut size: f64 = 0.0;
+        // (comparisons, not `f64::max`: a NaN is skipped alike, and
+        // without its checks the sixteen sides run side by side)
         for &p in points {
-            size = size.max(p.x.abs() + p.y.abs());
+            let l1 = p.x.abs() + p.y.abs();
+            size = if l1 > size { l1 } else { size };
             for (k, s) in support.iter_mut().enumerate() {
-                *s = s.max(along(p, k));
+                let v = along(p, k);
+                *s = if v > *s { v } else { *s };
             }
         }
         Enclosure { support, slack: MARGIN * size }

@@ -36,9 +36,9 @@ use std::collections::HashMap;
 
 /// The two halves glued; `None` when their edges across the cut do not
 /// pair up (then the caller builds on one thread).
-pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: usize, cut: f64) -> Option<Built> {
+pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: usize) -> Option<Built> {
     debug_assert!(left.side == Side::Left && right.side == Side::Right);
-    let (owned_right, owned_left) = run_beside(|| Owned::of(&right, cut), || Owned::of(&left, cut));
+    let (owned_right, owned_left) = run_beside(|| Owned::of(&right), || Owned::of(&left));
     let ranges = Ranges::of(&owned_left, &owned_right);
     let (names_right, names_left) =
         run_beside(|| owned_right.name(&right, &ranges, Side::Right), || owned_left.name(&left, &ranges, Side::Left));
@@ -227,32 +227,25 @@ impl Ranges {
     }
 }
 
-/// Which of a half's sites it owns.
+/// How many points and segments a half owns (which ones:
+/// `BuiltHalf::owned`).
 struct Owned {
-    /// Per local site.
-    owned: Vec<bool>,
     points: u32,
     segments: u32,
 }
 
 impl Owned {
-    fn of(half: &BuiltHalf, cut: f64) -> Owned {
+    fn of(half: &BuiltHalf) -> Owned {
         let c = &half.construction;
-        let count = c.store().site_count();
-        let mut owned = vec![false; count];
         let (mut points, mut segments) = (0, 0);
-        for s in (1..count).map(SiteId::from_index) {
-            let (pts, n) = c.site_points(s);
-            if half.side.owns(&pts[..n], cut) {
-                owned[s.index()] = true;
-                if n == 1 {
-                    points += 1;
-                } else {
-                    segments += 1;
-                }
+        for (s, _) in half.owned.iter().enumerate().filter(|(_, &owned)| owned) {
+            if c.ends_of(SiteId::from_index(s)).is_none() {
+                points += 1;
+            } else {
+                segments += 1;
             }
         }
-        Owned { owned, points, segments }
+        Owned { points, segments }
     }
 
     /// Final ids for the owned sites, in local order: a map per local site
@@ -260,9 +253,9 @@ impl Owned {
     fn name(&self, half: &BuiltHalf, ranges: &Ranges, side: Side) -> Names {
         let c = &half.construction;
         let (mut next_point, mut next_segment) = ranges.starts(side);
-        let mut map = vec![NONE; self.owned.len()];
+        let mut map = vec![NONE; half.owned.len()];
         map[INFINITE.index()] = INFINITE.0;
-        for (local, _) in self.owned.iter().enumerate().filter(|(_, &o)| o) {
+        for (local, _) in half.owned.iter().enumerate().filter(|(_, &o)| o) {
             let next = if c.ends_of(SiteId::from_index(local)).is_none() { &mut next_point } else { &mut next_segment };
             map[local] = *next;
             *next += 1;
