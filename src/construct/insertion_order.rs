@@ -226,7 +226,7 @@ mod tests {
         for shift in [0, 4, 8] {
             for x in 0..256u32 {
                 for y in 0..256u32 {
-                    let (x, y) = (x << shift | (x & 7), y << shift | (y * 5 & 7));
+                    let (x, y) = (x << shift | (x & 7), y << shift | ((y * 5) & 7));
                     assert_eq!(hilbert_index(x, y), hilbert_index_by_bits(x, y), "cell ({x}, {y})");
                 }
             }
@@ -262,7 +262,8 @@ mod tests {
         // the radix threshold
         let mut random = SplitMix64(7);
         for n in [0, 1, 5, 300, RADIX_FROM - 1, RADIX_FROM, 3 * RADIX_FROM + 17, 200_000] {
-            let rounds: Vec<u8> = (0..n).map(|_| (ROUNDS as u32 - 1 - (random.next_u64() | 1 << 30).trailing_zeros().min(30)) as u8).collect();
+            let rounds: Vec<u8> =
+                (0..n).map(|_| (ROUNDS as u32 - 1 - (random.next_u64() | 1 << 30).trailing_zeros().min(30)) as u8).collect();
             let spread = if n % 2 == 0 { 1 << 32 } else { 1000 };
             let keys: Vec<u64> = (0..n).map(|i| (random.next_u64() % spread) << 32 | i as u64).collect();
             let mut expected: Vec<(u8, u64)> = rounds.iter().copied().zip(keys.iter().copied()).collect();
