@@ -190,7 +190,12 @@ impl Construction {
                 let direction = vertex_placement::direction_at_infinity(self.site_geometry(x), self.site_geometry(y));
                 (direction, f64::INFINITY)
             }
-            None if self.has_segment(sites) => vertex_placement::circle_of_sites_on(&sites.map(|s| self.site_geometry(s)), on),
+            None if self.has_segment(sites) => {
+                // (built in place: `array::map` moved the three sites, each as
+                // large as an arc, through a copy per vertex)
+                let [a, b, c] = sites;
+                vertex_placement::circle_of_sites_on(&[self.site_geometry(a), self.site_geometry(b), self.site_geometry(c)], on)
+            }
             None => {
                 let [a, b, c] = sites.map(|s| self.sites[s.index()]);
                 vertex_placement::circle_of_points(a, b, c)

@@ -246,7 +246,7 @@ impl Construction {
             (false, false) => EdgeContact::NoEnd,
             _ => EdgeContact::OneEnd,
         };
-        let [left, right] = sides.map(|s| self.site_geometry(s));
+        let (left, right) = (self.site_geometry(sides[0]), self.site_geometry(sides[1]));
         let (from, to) = (self.store.position[h.origin().index()], self.store.position[self.store.target(h).index()]);
         if let Some(arc) = self.inserting_arc {
             if self.is_ray(h) {
