@@ -463,12 +463,20 @@ impl Half<'_> {
     fn outside(&self, points: &[Point], segments: &[[usize; 2]]) -> Option<Outside> {
         let mut held_segment = vec![false; segments.len()];
         self.segments.iter().for_each(|&k| held_segment[k as usize] = true);
-        let left_out = || {
-            let ends =
-                segments.iter().zip(&held_segment).filter(|(_, &held)| !held).flat_map(|(&[a, b], _)| [points[a], points[b]]);
-            (0..points.len()).filter(|&i| !self.held[i]).map(|i| points[i]).chain(ends)
-        };
-        // (two passes, nothing gathered: the extremes, then the points outside their octagon)
+        // The ends of the segments left out that this half holds as points
+        // (an end it does not hold is among the points left out): few,
+        // where segments that share an end meet the band.
+        let held_ends: Vec<Point> = segments
+            .iter()
+            .zip(&held_segment)
+            .filter(|(_, &held)| !held)
+            .flat_map(|(&ends, _)| ends)
+            .filter(|&e| self.held[e])
+            .map(|e| points[e])
+            .collect();
+        let left_out = || (0..points.len()).filter(|&i| !self.held[i]).map(|i| points[i]).chain(held_ends.iter().copied());
+        // (two passes over the points, nothing gathered: the extremes, then
+        // the points outside their octagon)
         let extremes = Extremes::of(left_out());
         let line = match self.side {
             Side::Left => extremes.x_range().0,
