@@ -46,32 +46,43 @@ pub(super) fn renumber(
     let first_internal_segment = internal_sites.len() - internal_ends.len();
 
     // Public site ids: points in order of first appearance in the input,
-    // then the segments.
+    // then the segments, then the arcs. Naming the points and naming the
+    // segments touch disjoint parts of `public_of` (internal point ids
+    // come before the segments'), so large builds name them on two
+    // threads: the segments from 0, moved after the points once those are
+    // counted.
+    let large = store.vertex_count() >= PARALLEL_FROM;
     let mut public_of = vec![NONE; internal_sites.len()];
-    let mut sites = SiteTable::with_capacity(site_of_input.len().min(internal_sites.len()), segments.len(), arcs.len());
-    let mut input_site = Vec::with_capacity(input.len());
-    for (i, s) in site_of_input.iter().enumerate() {
-        let slot = &mut public_of[s.index()];
-        if *slot == NONE {
-            *slot = sites.len() as u32;
-            sites.push_point(input[i].canonical_zero());
+    let (point_ids, segment_ids) = public_of.split_at_mut(first_internal_segment);
+    let mut name_points = || {
+        let mut points = Vec::with_capacity(site_of_input.len().min(point_ids.len()));
+        let mut input_site = Vec::with_capacity(input.len());
+        for (i, s) in site_of_input.iter().enumerate() {
+            let slot = &mut point_ids[s.index()];
+            if *slot == NONE {
+                *slot = points.len() as u32;
+                points.push(input[i].canonical_zero());
+            }
+            input_site.push(SiteId(*slot));
         }
-        input_site.push(SiteId(*slot));
-    }
-    let point_sites = sites.len();
-    let mut segment_input = Vec::with_capacity(segments.len());
-    for seg in segments {
-        public_of[seg.internal.index()] = sites.len() as u32;
-        let [a, b] = seg.ends;
-        sites.push_segment(a.canonical_zero(), b.canonical_zero());
-        segment_input.push(seg.input as u32);
-    }
-    let mut arc_input = Vec::with_capacity(arcs.len());
-    for arc in arcs {
-        public_of[arc.internal.index()] = sites.len() as u32;
-        sites.push_arc(arc.arc);
-        arc_input.push(arc.input as u32);
-    }
+        (points, input_site)
+    };
+    let mut name_segments = || {
+        let internals = segments.iter().map(|seg| seg.internal).chain(arcs.iter().map(|arc| arc.internal));
+        for (k, internal) in internals.enumerate() {
+            segment_ids[internal.index() - first_internal_segment] = k as u32;
+        }
+        let ends = segments.iter().map(|seg| seg.ends.map(Point::canonical_zero)).collect::<Vec<_>>();
+        let segment_input = segments.iter().map(|seg| seg.input as u32).collect::<Vec<_>>();
+        let arc_input = arcs.iter().map(|arc| arc.input as u32).collect::<Vec<_>>();
+        (ends, segment_input, arc_input)
+    };
+    let ((segment_sites, segment_input, arc_input), (point_sites, input_site)) =
+        if large { run_beside(name_segments, name_points) } else { (name_segments(), name_points()) };
+    let point_count = point_sites.len() as u32;
+    segment_ids.iter_mut().filter(|id| **id != NONE).for_each(|id| *id += point_count);
+    let sites = SiteTable::from_parts(point_sites, segment_sites, arcs.iter().map(|arc| arc.arc).collect());
+    let point_sites = point_count as usize;
     let internals = segments.iter().map(|seg| seg.internal).chain(arcs.iter().map(|arc| arc.internal));
     let segment_ends: Vec<[SiteId; 2]> = internals
         .map(|internal| internal_ends[internal.index() - first_internal_segment].map(|e| SiteId(public_of[e.index()])))
@@ -79,7 +90,7 @@ pub(super) fn renumber(
     let infinite = SiteId(sites.len() as u32);
     public_of[INFINITE.index()] = infinite.0;
     // (large stores on two threads, by halves, when the build may start one)
-    let (half, large) = (store.right.len() / 2, store.vertex_count() >= PARALLEL_FROM);
+    let half = store.right.len() / 2;
     let (low, high) = store.right.split_at_mut(half);
     let rename = |part: &mut [SiteId]| part.iter_mut().for_each(|r| *r = SiteId(public_of[r.index()]));
     if large {

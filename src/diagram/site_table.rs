@@ -17,26 +17,9 @@ pub(crate) struct SiteTable {
 }
 
 impl SiteTable {
-    /// An empty table with room for these many sites of each kind.
-    pub(crate) fn with_capacity(points: usize, segments: usize, arcs: usize) -> SiteTable {
-        SiteTable { points: Vec::with_capacity(points), segments: Vec::with_capacity(segments), arcs: Vec::with_capacity(arcs) }
-    }
-
-    /// Appends a point site (before any segment or arc).
-    pub(crate) fn push_point(&mut self, p: Point) {
-        debug_assert!(self.segments.is_empty() && self.arcs.is_empty(), "points come first");
-        self.points.push(p);
-    }
-
-    /// Appends the open segment `a`–`b` (before any arc).
-    pub(crate) fn push_segment(&mut self, a: Point, b: Point) {
-        debug_assert!(self.arcs.is_empty(), "segments come before arcs");
-        self.segments.push([a, b]);
-    }
-
-    /// Appends an open arc.
-    pub(crate) fn push_arc(&mut self, arc: CircularArc) {
-        self.arcs.push(arc);
+    /// The table of these sites: points, segments, arcs (each in id order).
+    pub(crate) fn from_parts(points: Vec<Point>, segments: Vec<[Point; 2]>, arcs: Vec<CircularArc>) -> SiteTable {
+        SiteTable { points, segments, arcs }
     }
 
     /// The number of sites.
@@ -86,11 +69,7 @@ mod tests {
     fn sites_come_back_by_id_in_kind_order() {
         let (p, q, r) = (Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(0.0, 1.0));
         let arc = CircularArc::through(q, Point::new(0.6, 0.8), r).expect("an arc");
-        let mut t = SiteTable::with_capacity(2, 1, 1);
-        t.push_point(p);
-        t.push_point(q);
-        t.push_segment(p, r);
-        t.push_arc(arc);
+        let t = SiteTable::from_parts(vec![p, q], vec![[p, r]], vec![arc]);
         assert_eq!(t.len(), 4);
         let all: Vec<Site> = t.iter().collect();
         assert_eq!(all, vec![Site::Point(p), Site::Point(q), Site::Segment { a: p, b: r }, Site::Arc(arc)]);
