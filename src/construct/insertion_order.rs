@@ -22,8 +22,10 @@ const MAX_LEVEL: u64 = 30;
 /// Each point gets a round (BRIO) and its position along that round's
 /// curve; the order is by round, then position, then index. The points
 /// are bucketed by round, and each round's are sorted by a radix sort of
-/// position and index packed in one word (a comparison sort of the keys
-/// took as long as a tenth of the whole build).
+/// position and index packed in one word. (A comparison sort of the keys
+/// and the curve's branches took 7 % of a build of a million points; now
+/// under 5 %, on one thread where the halves of a parallel build order
+/// their points, each on its own.)
 pub(crate) fn insertion_order(points: &[Point]) -> Vec<u32> {
     let n = points.len();
     if n == 0 {

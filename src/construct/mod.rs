@@ -59,7 +59,7 @@ pub(crate) use input_check::Conflict;
 use input_check::{check_segments, first_conflict, CheckedInput, Vertex};
 use insert_point::insert_points;
 use polygon_input::RingInput;
-use renumber::SegmentSite;
+use renumber::SegmentSites;
 use restart::{insert_all, insert_all_from, Outcome, Stuck};
 pub(crate) use threads::run_beside;
 
@@ -108,7 +108,7 @@ fn build_points(input: &[Point]) -> (Diagram, Outcome) {
     // in halves on two threads when large and a thread is spare
     let built = halves::insert_all_in_halves(&points, &[]).unwrap_or_else(|| insert_all(&points, &[]));
     let (diagram, site_of_input, _, outcome) = built;
-    (renumber::renumber(diagram, &site_of_input, input, &[], &[], scale), outcome)
+    (renumber::renumber(diagram, &site_of_input, input, SegmentSites::NONE, &[], scale), outcome)
 }
 
 /// What [`build_sites`] made.
@@ -211,10 +211,10 @@ fn build_sites_and_arcs(
             insert_all_from(stage, &scaled, &pairs)
         }
     };
-    let described: Vec<SegmentSite> =
-        kept.iter().zip(segment_sites).map(|(&j, internal)| SegmentSite { input: j, internal, ends: segments[j] }).collect();
     let arc_sites = with_arcs::insert_arcs(&mut built, &site_of_input, points.len() - 2 * arcs.len(), arcs, scale, &outcome)?;
-    let mut diagram = renumber::renumber(built, &site_of_input, &all, &described, &arc_sites, scale);
+    let input_and_ends = |k: usize| (kept[k], segments[kept[k]]);
+    let described = SegmentSites { internal: &segment_sites, input_and_ends: &input_and_ends };
+    let mut diagram = renumber::renumber(built, &site_of_input, &all, described, &arc_sites, scale);
     renumber::number_segment_inputs(&mut diagram, &checked, points.len(), segments.len());
     Ok(Sites::Built(Box::new(diagram), outcome))
 }
@@ -243,13 +243,12 @@ fn build_split(
     let pairs: Vec<[usize; 2]> = pieces.kept.iter().map(|&p| pieces.ends[p]).collect();
     let (mut built, site_of_input, segment_sites, outcome) = insert_all_from(stage, scaled, &pairs);
     let arc_sites = with_arcs::insert_arcs(&mut built, &site_of_input, points.len() - 2 * arcs.len(), arcs, scale, &outcome)?;
-    let described: Vec<SegmentSite> = pieces
-        .kept
-        .iter()
-        .zip(segment_sites)
-        .map(|(&p, internal)| SegmentSite { input: p, internal, ends: pieces.ends[p].map(|k| all[k]) })
-        .collect();
-    let mut diagram = renumber::renumber(built, &site_of_input, all, &described, &arc_sites, scale);
+    let input_and_ends = |k: usize| {
+        let p = pieces.kept[k];
+        (p, pieces.ends[p].map(|i| all[i]))
+    };
+    let described = SegmentSites { internal: &segment_sites, input_and_ends: &input_and_ends };
+    let mut diagram = renumber::renumber(built, &site_of_input, all, described, &arc_sites, scale);
     let first_segment_site = diagram.point_sites;
     diagram.segment_site = (0..pieces.ends.len())
         .map(|p| match pieces.kept_of[p] {
