@@ -61,7 +61,7 @@ pub(super) fn renumber(
     let large = store.vertex_count() >= PARALLEL_FROM;
     let mut public_of = vec![NONE; internal_sites.len()];
     let (point_ids, segment_ids) = public_of.split_at_mut(first_internal_segment);
-    let mut name_points = || {
+    let name_points = || {
         let mut points = Vec::with_capacity(site_of_input.len().min(point_ids.len()));
         let mut input_site = Vec::with_capacity(input.len());
         for (i, s) in site_of_input.iter().enumerate() {
@@ -74,19 +74,21 @@ pub(super) fn renumber(
         }
         (points, input_site)
     };
-    let mut name_segments = || {
+    let name_segments = || {
         let internals = segments.internal.iter().copied().chain(arcs.iter().map(|arc| arc.internal));
         for (k, internal) in internals.enumerate() {
             segment_ids[internal.index() - first_internal_segment] = k as u32;
         }
-        let count = segments.internal.len();
-        let ends = (0..count).map(|k| (segments.input_and_ends)(k).1.map(Point::canonical_zero)).collect::<Vec<_>>();
-        let segment_input = (0..count).map(|k| (segments.input_and_ends)(k).0 as u32).collect::<Vec<_>>();
+        let (ends, segment_input): (Vec<[Point; 2]>, Vec<u32>) = (0..segments.internal.len())
+            .map(|k| {
+                let (input, ends) = (segments.input_and_ends)(k);
+                (ends.map(Point::canonical_zero), input as u32)
+            })
+            .unzip();
         let arc_input = arcs.iter().map(|arc| arc.input as u32).collect::<Vec<_>>();
         (ends, segment_input, arc_input)
     };
-    let ((segment_sites, segment_input, arc_input), (point_sites, input_site)) =
-        if large { run_beside(name_segments, name_points) } else { (name_segments(), name_points()) };
+    let ((segment_sites, segment_input, arc_input), (point_sites, input_site)) = beside_if(large, name_segments, name_points);
     let point_count = point_sites.len() as u32;
     segment_ids.iter_mut().filter(|id| **id != NONE).for_each(|id| *id += point_count);
     let sites = SiteTable::from_parts(point_sites, segment_sites, arcs.iter().map(|arc| arc.arc).collect());
@@ -101,12 +103,7 @@ pub(super) fn renumber(
     let half = store.right.len() / 2;
     let (low, high) = store.right.split_at_mut(half);
     let rename = |part: &mut [SiteId]| part.iter_mut().for_each(|r| *r = SiteId(public_of[r.index()]));
-    if large {
-        run_beside(|| rename(high), || rename(low));
-    } else {
-        rename(low);
-        rename(high);
-    }
+    beside_if(large, || rename(high), || rename(low));
     let mut cell_edge = vec![NONE; internal_sites.len()];
     for (internal, &e) in store.cell_edge.iter().enumerate() {
         cell_edge[public_of[internal] as usize] = e;
@@ -122,13 +119,8 @@ pub(super) fn renumber(
     let at_infinity = |range: std::ops::Range<usize>| -> Vec<usize> {
         range.filter(|&v| store.is_at_infinity(VertexId::from_index(v))).collect()
     };
-    let at_infinity_ids = if large {
-        let (high, mut low) = run_beside(|| at_infinity(count / 2..count), || at_infinity(0..count / 2));
-        low.extend_from_slice(&high);
-        low
-    } else {
-        at_infinity(0..count)
-    };
+    let (high, mut at_infinity_ids) = beside_if(large, || at_infinity(count / 2..count), || at_infinity(0..count / 2));
+    at_infinity_ids.extend_from_slice(&high);
     let finite_vertices = count - at_infinity_ids.len();
     let mut last = count;
     for &v in at_infinity_ids.iter().take_while(|&&v| v < finite_vertices) {
@@ -143,12 +135,7 @@ pub(super) fn renumber(
     let (positions, clearances) = (&mut store.position[..finite_vertices], &mut store.clearance[..finite_vertices]);
     let (low_positions, high_positions) = positions.split_at_mut(finite_vertices / 2);
     let (low_clearances, high_clearances) = clearances.split_at_mut(finite_vertices / 2);
-    if large {
-        run_beside(|| to_input(high_positions, high_clearances, scale), || to_input(low_positions, low_clearances, scale));
-    } else {
-        to_input(low_positions, low_clearances, scale);
-        to_input(high_positions, high_clearances, scale);
-    }
+    beside_if(large, || to_input(high_positions, high_clearances, scale), || to_input(low_positions, low_clearances, scale));
 
     // Public edges: one per pair of twins, between two real sites.
     let edges_in = |range: std::ops::Range<usize>| -> Vec<HalfEdgeId> {
@@ -161,15 +148,10 @@ pub(super) fn renumber(
         }
         edges
     };
-    let edges = if large {
-        let middle = 3 * (store.vertex_count() / 2);
-        let (high, mut low) = run_beside(|| edges_in(middle..store.twin.len()), || edges_in(0..middle));
-        low.reserve_exact(high.len());
-        low.extend_from_slice(&high);
-        low
-    } else {
-        edges_in(0..store.twin.len())
-    };
+    let middle = 3 * (store.vertex_count() / 2);
+    let (high, mut edges) = beside_if(large, || edges_in(middle..store.twin.len()), || edges_in(0..middle));
+    edges.reserve_exact(high.len());
+    edges.extend_from_slice(&high);
 
     let extent = bounding_box_diagonal(sites.points());
     let stats = BuildStats {
@@ -207,6 +189,18 @@ pub(super) fn renumber(
     }
 }
 
+/// `run_beside(beside, here)` when `parallel` (a large store), else both
+/// here, one after the other: below [`PARALLEL_FROM`] starting a thread
+/// costs more than it saves.
+fn beside_if<A: Send, B>(parallel: bool, beside: impl FnOnce() -> A + Send, here: impl FnOnce() -> B) -> (A, B) {
+    if parallel {
+        run_beside(beside, here)
+    } else {
+        let b = here();
+        (beside(), b)
+    }
+}
+
 /// Finite vertices' positions and clearances back in input coordinates.
 fn to_input(positions: &mut [Point], clearances: &mut [f64], scale: Scale) {
     for (position, clearance) in positions.iter_mut().zip(clearances) {
@@ -239,11 +233,7 @@ fn bounding_box_diagonal(point_sites: &[Point]) -> f64 {
             })
     };
     let (low, high) = point_sites.split_at(point_sites.len() / 2);
-    let ((lo_high, hi_high), (lo, hi)) = if point_sites.len() >= PARALLEL_FROM {
-        run_beside(|| bounds(high), || bounds(low))
-    } else {
-        (bounds(high), bounds(low))
-    };
+    let ((lo_high, hi_high), (lo, hi)) = beside_if(point_sites.len() >= PARALLEL_FROM, || bounds(high), || bounds(low));
     if point_sites.is_empty() {
         return 0.0;
     }
