@@ -138,19 +138,39 @@ pub(super) fn renumber(
     beside_if(large, || to_input(high_positions, high_clearances, scale), || to_input(low_positions, low_clearances, scale));
 
     // Public edges: one per pair of twins, between two real sites.
-    let edges_in = |range: std::ops::Range<usize>| -> Vec<HalfEdgeId> {
-        let mut edges = Vec::with_capacity(range.len() / 2);
-        for h in range.map(HalfEdgeId::from_index) {
-            let t = store.twin(h);
-            if h < t && store.left(h) != infinite && store.right(h) != infinite {
-                edges.push(h);
+    // (`room`: the edges to make room for, the whole list's in the low
+    // half's, which the high half's are appended to)
+    let edges_in = |vertices: std::ops::Range<usize>, room: usize| -> Vec<HalfEdgeId> {
+        let mut edges = Vec::with_capacity(room);
+        // (a vertex's three half-edges at once, gathered without a branch
+        // into a short buffer: whether a half-edge comes before its twin is
+        // a coin toss, which a branch per half-edge would mispredict)
+        const BATCH: usize = 32;
+        let mut batch = [HalfEdgeId(NONE); 3 * BATCH];
+        let (right, twin) =
+            (&store.right[3 * vertices.start..3 * vertices.end], &store.twin[3 * vertices.start..3 * vertices.end]);
+        let first = 3 * vertices.start;
+        for (chunk, (right, twin)) in right.chunks(3 * BATCH).zip(twin.chunks(3 * BATCH)).enumerate() {
+            let mut n = 0;
+            for (v, (r, t)) in right.chunks_exact(3).zip(twin.chunks_exact(3)).enumerate() {
+                let real = [r[0] != infinite, r[1] != infinite, r[2] != infinite];
+                for k in 0..3 {
+                    let h = HalfEdgeId((first + 3 * (chunk * BATCH + v) + k) as u32);
+                    batch[n] = h;
+                    // (the edge's left is the vertex's next cell)
+                    n += usize::from((h < t[k]) & real[k] & real[(k + 1) % 3]);
+                }
             }
+            edges.extend_from_slice(&batch[..n]);
         }
         edges
     };
-    let middle = 3 * (store.vertex_count() / 2);
-    let (high, mut edges) = beside_if(large, || edges_in(middle..store.twin.len()), || edges_in(0..middle));
-    edges.reserve_exact(high.len());
+    let vertices = store.vertex_count();
+    let (high, mut edges) = beside_if(
+        large,
+        || edges_in(vertices / 2..vertices, 3 * (vertices - vertices / 2) / 2),
+        || edges_in(0..vertices / 2, 3 * vertices / 2),
+    );
     edges.extend_from_slice(&high);
 
     let extent = bounding_box_diagonal(sites.points());

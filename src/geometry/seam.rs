@@ -62,20 +62,26 @@ const EIGHT: [(f64, f64); 8] =
     [(1.0, 0.0), (1.0, 1.0), (0.0, 1.0), (-1.0, 1.0), (-1.0, 0.0), (-1.0, -1.0), (0.0, -1.0), (1.0, -1.0)];
 
 impl Extremes {
+    /// The extremes of no point (`add` them one by one).
+    pub(crate) const NONE: Extremes = Extremes { best: [(f64::NEG_INFINITY, Point::new(f64::NAN, f64::NAN)); 8], size: 0.0 };
+
     pub(crate) fn of(points: impl IntoIterator<Item = Point>) -> Extremes {
-        let mut best = [(f64::NEG_INFINITY, Point::new(f64::NAN, f64::NAN)); 8];
-        let mut size: f64 = 0.0;
-        for p in points {
-            let l1 = p.x.abs() + p.y.abs();
-            size = if l1 > size { l1 } else { size };
-            for (k, &(dx, dy)) in EIGHT.iter().enumerate() {
-                let v = p.x * dx + p.y * dy;
-                if v > best[k].0 {
-                    best[k] = (v, p);
-                }
+        let mut extremes = Extremes::NONE;
+        points.into_iter().for_each(|p| extremes.add(p));
+        extremes
+    }
+
+    /// The extremes of the set with `p` added.
+    #[inline]
+    pub(crate) fn add(&mut self, p: Point) {
+        let l1 = p.x.abs() + p.y.abs();
+        self.size = if l1 > self.size { l1 } else { self.size };
+        for (best, &(dx, dy)) in self.best.iter_mut().zip(&EIGHT) {
+            let v = p.x * dx + p.y * dy;
+            if v > best.0 {
+                *best = (v, p);
             }
         }
-        Extremes { best, size }
     }
 
     /// The extremes of the union of the two sets.
@@ -162,7 +168,10 @@ impl Polygon {
     /// not strictly inside every edge by the margin (or there are fewer
     /// than three edges).
     pub(crate) fn may_hold_on_its_boundary(&self, p: Point) -> bool {
-        self.edges.len() < 3 || self.edges.iter().any(|&(a, dx, dy)| dx * (p.y - a.y) - dy * (p.x - a.x) <= self.margin)
+        // (every edge asked, without a branch: most points are inside all)
+        let outside_an_edge =
+            self.edges.iter().fold(false, |out, &(a, dx, dy)| out | (dx * (p.y - a.y) - dy * (p.x - a.x) <= self.margin));
+        self.edges.len() < 3 || outside_an_edge
     }
 }
 
@@ -212,7 +221,8 @@ impl Enclosure {
     /// Whether `p` lies within `band` of a side (or near enough that
     /// rounding cannot tell): such points are held by both halves.
     pub(crate) fn near_a_side(&self, p: Point, band: f64) -> bool {
-        (0..SIDES).any(|k| along(p, k) > self.support[k] - band - self.slack)
+        // (every side asked, without a branch: most points are near none)
+        (0..SIDES).fold(false, |near, k| near | (along(p, k) > self.support[k] - band - self.slack))
     }
 
     /// Whether the disk of a finite vertex (centre `position`, radius

@@ -157,7 +157,7 @@ pub(super) fn insert_all_in_halves_after(
             let (right, left) = run_beside(
                 move || {
                     let plan = shared_plan;
-                    let half = Half::select(points, raw, plan, plan.band, Side::Right);
+                    let half = Half::select(points, raw, plan, (plan.band, &plan.outside), Side::Right);
                     let stage = half.insert_points(points, raw.len());
                     let segments = rx.recv().ok().flatten()?;
                     half.finish(stage, points, &segments)
@@ -167,7 +167,7 @@ pub(super) fn insert_all_in_halves_after(
                     // (the other thread stops at its points when the send fails or sends none)
                     let _ = tx.send(segments.clone());
                     let segments = segments?;
-                    let half = Half::select(points, raw, &plan, plan.band, Side::Left);
+                    let half = Half::select(points, raw, &plan, (plan.band, &plan.outside), Side::Left);
                     let stage = half.insert_points(points, raw.len());
                     let built = half.finish(stage, points, &segments);
                     Some((segments, built))
@@ -194,9 +194,10 @@ pub(super) fn insert_all_in_halves_after(
     if !(band.is_finite() && (band < plan.band * WIDEST_BAND || forced())) {
         return None;
     }
+    let outside = Outside::at(points, &plan.both, plan.cut, band);
     let (right, left) = super::threads::run_beside(
-        || Half::select(points, &segments, &plan, band, Side::Right).build(points, &segments),
-        || Half::select(points, &segments, &plan, band, Side::Left).build(points, &segments),
+        || Half::select(points, &segments, &plan, (band, &outside), Side::Right).build(points, &segments),
+        || Half::select(points, &segments, &plan, (band, &outside), Side::Left).build(points, &segments),
     );
     let (left, right) = (left?, right?);
     report(|r| {
@@ -240,6 +241,9 @@ struct Plan {
     /// input's `enclosure` (cells along the hull reach along it, far across
     /// the cut: their huge circles are checked against the enclosure).
     both: Vec<bool>,
+    /// What each half leaves out at the first band (`Outside::at`), per
+    /// [`Side`] (left, right).
+    outside: [Option<Outside>; 2],
 }
 
 impl Plan {
@@ -256,9 +260,12 @@ impl Plan {
             return None;
         }
         let (band, rim) = (FIRST_BAND * spacing, RIM * spacing);
+        let cut = quantile_x(points, left_share)?;
         let octagon = extremes.octagon();
-        let held = |part: &[Point]| -> (Vec<bool>, usize, usize) {
-            let (mut on_hull, mut count) = (0, 0);
+        // (with the extremes of what each half leaves out at the first
+        // band, in the same pass: see `Outside::at`)
+        let held = |part: &[Point]| -> (Vec<bool>, usize, usize, [Extremes; 2]) {
+            let (mut on_hull, mut count, mut beyond) = (0, 0, [Extremes::NONE; 2]);
             let both = part
                 .iter()
                 .map(|&p| {
@@ -266,20 +273,23 @@ impl Plan {
                     let held = hull || enclosure.near_a_side(p, rim);
                     on_hull += usize::from(hull);
                     count += usize::from(held);
+                    Outside::add(&mut beyond, p, held, cut, band);
                     held
                 })
                 .collect();
-            (both, on_hull, count)
+            (both, on_hull, count, beyond)
         };
-        let ((both_high, hull_high, count_high), (mut both, hull_low, count_low)) = run_beside(|| held(high), || held(low));
+        let ((both_high, hull_high, count_high, beyond_high), (mut both, hull_low, count_low, beyond_low)) =
+            run_beside(|| held(high), || held(low));
         both.extend_from_slice(&both_high);
         // Both halves hold these: too many, and halves would not pay.
         let too_many = hull_low + hull_high > points.len() / 64 || count_low + count_high > points.len() / 16;
         if too_many && !forced() {
             return None;
         }
-        let cut = quantile_x(points, left_share)?;
-        Some(Plan { cut, band, rim, enclosure, both })
+        let beyond = [0, 1].map(|k| beyond_low[k].merge(beyond_high[k]));
+        let outside = Outside::from_extremes(points, &both, cut, band, beyond);
+        Some(Plan { cut, band, rim, enclosure, both, outside })
     }
 }
 
@@ -317,8 +327,8 @@ struct Half<'a> {
     points: Vec<u32>,
     /// Segments it holds (indices into the build's segments).
     segments: Vec<u32>,
-    /// Per input point: whether it holds it.
-    held: Vec<bool>,
+    /// What it leaves out at its band.
+    outside: Option<&'a Outside>,
 }
 
 /// What a half knows of the sites it leaves out: every one lies at or
@@ -327,6 +337,77 @@ struct Half<'a> {
 struct Outside {
     line: f64,
     hull: Vec<Point>,
+}
+
+impl Outside {
+    /// What each half (left, right) leaves out at `band`, or more: the
+    /// points not held by both (`both`) that lie beyond the band on the
+    /// other side of the cut (`Half::beyond_band`). Every site a half
+    /// leaves out has all its points there (a segment left out has both
+    /// ends beyond the band); the ends there of segments it holds only make
+    /// its checks stricter. `None` for a half that leaves nothing out.
+    /// Two passes over the points, each on both threads by halves (the
+    /// plan does the first in its own pass: `Outside::add`).
+    fn at(points: &[Point], both: &[bool], cut: f64, band: f64) -> [Option<Outside>; 2] {
+        let middle = points.len() / 2;
+        let ((points_low, points_high), (both_low, both_high)) = (points.split_at(middle), both.split_at(middle));
+        let extremes = |part: &[Point], both: &[bool]| {
+            let mut beyond = [Extremes::NONE; 2];
+            part.iter().zip(both).for_each(|(&p, &both)| Outside::add(&mut beyond, p, both, cut, band));
+            beyond
+        };
+        let (e_high, e_low) = run_beside(|| extremes(points_high, both_high), || extremes(points_low, both_low));
+        Outside::from_extremes(points, both, cut, band, [0, 1].map(|k| e_low[k].merge(e_high[k])))
+    }
+
+    /// Adds point `p` (held by both halves or not) to the extremes of what
+    /// each half leaves out ([`Outside::at`]).
+    #[inline]
+    fn add(beyond: &mut [Extremes; 2], p: Point, both: bool, cut: f64, band: f64) {
+        // (the sets are disjoint: `p` is added to the one that may hold
+        // it, as NaN, extreme in no direction, when neither does; selects,
+        // where branches would be taken at random)
+        let (k, member) = Outside::which(p, both, cut, band);
+        beyond[k].add(if member { p } else { Point::new(f64::NAN, f64::NAN) });
+    }
+
+    /// Which half's set of [`Outside::at`] may hold `p` (0: the left's, 1:
+    /// the right's), and whether it does.
+    #[inline]
+    fn which(p: Point, both: bool, cut: f64, band: f64) -> (usize, bool) {
+        let left = Half::beyond_band(Side::Left, cut, band, p);
+        (usize::from(!left), !both & (left | Half::beyond_band(Side::Right, cut, band, p)))
+    }
+
+    /// [`Outside::at`] from the extremes of each half's set: the second
+    /// pass, for the points of each that may be vertices of its hull.
+    fn from_extremes(points: &[Point], both: &[bool], cut: f64, band: f64, beyond: [Extremes; 2]) -> [Option<Outside>; 2] {
+        let octagons = beyond.map(|e| e.octagon());
+        let candidates = |part: &[Point], both: &[bool]| {
+            let mut kept = [Vec::new(), Vec::new()];
+            for (&p, &both) in part.iter().zip(both) {
+                let (k, member) = Outside::which(p, both, cut, band);
+                if octagons[k].may_hold_on_its_boundary(p) & member {
+                    kept[k].push(p);
+                }
+            }
+            kept
+        };
+        let middle = points.len() / 2;
+        let (high, mut low) =
+            run_beside(|| candidates(&points[middle..], &both[middle..]), || candidates(&points[..middle], &both[..middle]));
+        let mut k = 0;
+        [Side::Left, Side::Right].map(|side| {
+            let (extremes, mut kept) = (beyond[k], std::mem::take(&mut low[k]));
+            kept.extend_from_slice(&high[k]);
+            k += 1;
+            let line = match side {
+                Side::Left => extremes.x_range().0,
+                Side::Right => extremes.x_range().1,
+            };
+            line.is_finite().then(|| Outside { line, hull: extremes.hull_candidates(kept) })
+        })
+    }
 }
 
 /// A half built: its construction, per held point and segment its site,
@@ -359,7 +440,13 @@ impl Half<'_> {
     /// cut, with both ends of each of `segments` that it holds (a segment
     /// of the other side is held when its end nearest the cut is in the
     /// band, or an end is held by both halves).
-    fn select<'a>(points: &[Point], segments: &[[usize; 2]], plan: &'a Plan, band: f64, side: Side) -> Half<'a> {
+    fn select<'a>(
+        points: &[Point],
+        segments: &[[usize; 2]],
+        plan: &'a Plan,
+        (band, outside): (f64, &'a [Option<Outside>; 2]),
+        side: Side,
+    ) -> Half<'a> {
         let mut held: Vec<bool> =
             points.iter().zip(&plan.both).map(|(p, &both)| both || Half::near(side, plan, band, &[*p])).collect();
         let mut chosen = Vec::new();
@@ -371,14 +458,22 @@ impl Half<'_> {
             }
         }
         let held_points: Vec<u32> = (0..points.len() as u32).filter(|&i| held[i as usize]).collect();
-        Half { side, plan, band, points: held_points, segments: chosen, held }
+        let outside = outside[usize::from(side == Side::Right)].as_ref();
+        Half { side, plan, band, points: held_points, segments: chosen, outside }
     }
 
     /// Whether a site with these points is `side`'s, or within `band` of
     /// the cut on the other side (a segment by its end nearest the cut).
     fn near(side: Side, plan: &Plan, band: f64, points: &[Point]) -> bool {
+        side.owns(points, plan.cut) || points.iter().any(|&p| !Half::beyond_band(side, plan.cut, band, p))
+    }
+
+    /// Whether `p` lies beyond `band` of the cut on the far side from
+    /// `side` (then it is not `side`'s).
+    #[inline]
+    fn beyond_band(side: Side, cut: f64, band: f64, p: Point) -> bool {
         let t = side.toward_outside();
-        side.owns(points, plan.cut) || points.iter().any(|p| p.x * t < plan.cut * t + band)
+        !(p.x * t < cut * t + band)
     }
 
     fn holds_segment(side: Side, plan: &Plan, band: f64, points: &[Point], [a, b]: [usize; 2]) -> bool {
@@ -430,8 +525,7 @@ impl Half<'_> {
             return None;
         }
         let owned = self.owned_sites(&construction);
-        let outside = self.outside(points, segments);
-        let needed_band = outside.and_then(|outside| self.band_needed(&construction, &owned, &outside));
+        let needed_band = self.outside.and_then(|outside| self.band_needed(&construction, &owned, outside));
         Some(BuiltHalf {
             side: self.side,
             construction,
@@ -456,33 +550,6 @@ impl Half<'_> {
                 s != INFINITE && self.side.owns(&points[..n], self.plan.cut)
             })
             .collect()
-    }
-
-    /// The sites this half leaves out (`None`: none): the points it does
-    /// not hold and the ends of the segments it does not hold.
-    fn outside(&self, points: &[Point], segments: &[[usize; 2]]) -> Option<Outside> {
-        let mut held_segment = vec![false; segments.len()];
-        self.segments.iter().for_each(|&k| held_segment[k as usize] = true);
-        // The ends of the segments left out that this half holds as points
-        // (an end it does not hold is among the points left out): few,
-        // where segments that share an end meet the band.
-        let held_ends: Vec<Point> = segments
-            .iter()
-            .zip(&held_segment)
-            .filter(|(_, &held)| !held)
-            .flat_map(|(&ends, _)| ends)
-            .filter(|&e| self.held[e])
-            .map(|e| points[e])
-            .collect();
-        let left_out = || (0..points.len()).filter(|&i| !self.held[i]).map(|i| points[i]).chain(held_ends.iter().copied());
-        // (two passes over the points, nothing gathered: the extremes, then
-        // the points outside their octagon)
-        let extremes = Extremes::of(left_out());
-        let line = match self.side {
-            Side::Left => extremes.x_range().0,
-            Side::Right => extremes.x_range().1,
-        };
-        line.is_finite().then(|| Outside { line, hull: extremes.hull_candidates(left_out()) })
     }
 
     /// `None` when every cell this half owns is final (no site left out
@@ -535,3 +602,70 @@ fn quantile_x(points: &[Point], share: f64) -> Option<f64> {
 /// The most points [`quantile_x`] looks at: within a tenth of a percent
 /// of the share on uniform input.
 const CUT_SAMPLE: usize = 1 << 18;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::splitmix::SplitMix64;
+
+    /// Points: uniform, a lattice with repeats (ties on the band's edges),
+    /// and a line of points on the cut.
+    fn inputs() -> Vec<Vec<Point>> {
+        let mut rng = SplitMix64(33);
+        let uniform: Vec<Point> = (0..20_000).map(|_| Point::new(rng.unit(), rng.unit())).collect();
+        let lattice: Vec<Point> = (0..20_000).map(|i| Point::new((i % 150) as f64, ((i / 150) % 90) as f64)).collect();
+        let mut on_the_cut = uniform.clone();
+        on_the_cut.extend((0..500).map(|i| Point::new(0.5, i as f64 / 500.0)));
+        vec![uniform, lattice, on_the_cut]
+    }
+
+    /// The points a half leaves out (of points alone: those it does not
+    /// select), as `Half::select` decides.
+    fn left_out(points: &[Point], plan: &Plan, band: f64, side: Side) -> Vec<Point> {
+        let outside = [None, None];
+        let half = Half::select(points, &[], plan, (band, &outside), side);
+        let mut held = vec![false; points.len()];
+        half.points.iter().for_each(|&i| held[i as usize] = true);
+        (0..points.len()).filter(|&i| !held[i]).map(|i| points[i]).collect()
+    }
+
+    #[test]
+    fn what_a_half_leaves_out_is_known_exactly() {
+        set_halves_from(Some(1)); // (a plan whatever the boundary holds)
+        for points in inputs() {
+            let plan = Plan::of(&points, 0, 0.5).expect("halves pay");
+            for band in [plan.band, 3.0 * plan.band] {
+                let at = Outside::at(&points, &plan.both, plan.cut, band);
+                if band == plan.band {
+                    // the plan's own pass gives the same
+                    for (a, b) in at.iter().zip(&plan.outside) {
+                        assert_eq!(a.as_ref().map(|o| (o.line, o.hull.clone())), b.as_ref().map(|o| (o.line, o.hull.clone())));
+                    }
+                }
+                for (side, outside) in [Side::Left, Side::Right].into_iter().zip(&at) {
+                    let out = left_out(&points, &plan, band, side);
+                    let Some(outside) = outside else {
+                        assert!(out.is_empty());
+                        continue;
+                    };
+                    let xs = out.iter().map(|p| p.x);
+                    let line = match side {
+                        Side::Left => xs.fold(f64::INFINITY, f64::min),
+                        Side::Right => xs.fold(f64::NEG_INFINITY, f64::max),
+                    };
+                    assert_eq!(outside.line, line);
+                    assert!(outside.hull.iter().all(|p| out.contains(p)));
+                    // every vertex of their hull is kept: each is the
+                    // farthest along some direction, and so is a kept one
+                    for k in 0..720 {
+                        let a = std::f64::consts::TAU * k as f64 / 720.0;
+                        let along = |p: &Point| p.x * a.cos() + p.y * a.sin();
+                        let farthest = out.iter().map(along).fold(f64::NEG_INFINITY, f64::max);
+                        let kept = outside.hull.iter().map(along).fold(f64::NEG_INFINITY, f64::max);
+                        assert_eq!(kept, farthest, "direction {k}");
+                    }
+                }
+            }
+        }
+    }
+}
