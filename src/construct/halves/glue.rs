@@ -86,40 +86,30 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
         }
     }
 
-    // The left store grown by the right's kept vertices: its arrays grown
-    // on both threads, two each, then the right's vertices written by
-    // halves, one per thread; then the few edges from the left across.
+    // The left store grown by the right's kept vertices: their sites,
+    // positions and clearances appended as they are, on both threads (each
+    // array written once), the twins made room for; then the twins written
+    // by halves, one per thread; then the few edges from the left across.
     let n1 = left.store.vertex_count();
     let total = n1 + right.kept_count;
     let Store { right: cells, twin, position, clearance, .. } = &mut left.store;
+    let kept = || (0..right.keep.len()).filter(|&v| right.keep[v]);
     run_beside(
         || {
-            position.resize(total, Point::default());
-            clearance.resize(total, 0.0);
+            position.extend(kept().map(|v| right.store.position[v]));
+            clearance.extend(kept().map(|v| right.store.clearance[v]));
         },
         || {
-            cells.resize(3 * total, SiteId(NONE));
+            cells.extend(kept().flat_map(|v| right.store.sites_of(VertexId::from_index(v))));
             twin.resize(3 * total, HalfEdgeId(NONE));
         },
     );
-    let sites_high = &mut cells[3 * n1..];
-    let twin_high = &mut twin[3 * n1..];
-    let (position_high, clearance_high) = (&mut position[n1..], &mut clearance[n1..]);
     let middle = right.store.vertex_count() / 2;
     let split = right.keep[..middle].iter().filter(|&&k| k).count();
-    let (sites_a, sites_b) = sites_high.split_at_mut(3 * split);
-    let (twin_a, twin_b) = twin_high.split_at_mut(3 * split);
-    let (position_a, position_b) = position_high.split_at_mut(split);
-    let (clearance_a, clearance_b) = clearance_high.split_at_mut(split);
+    let (twin_a, twin_b) = twin[3 * n1..].split_at_mut(3 * split);
     let (from_b, from_a) = run_beside(
-        || {
-            let out = Appended { sites: sites_b, twin: twin_b, position: position_b, clearance: clearance_b };
-            right.fill(middle..right.store.vertex_count(), split, n1, &left.crossing, out)
-        },
-        || {
-            let out = Appended { sites: sites_a, twin: twin_a, position: position_a, clearance: clearance_a };
-            right.fill(0..middle, 0, n1, &left.crossing, out)
-        },
+        || right.fill_twins(middle..right.store.vertex_count(), split, n1, &left.crossing, twin_b),
+        || right.fill_twins(0..middle, 0, n1, &left.crossing, twin_a),
     );
     let mut from_right = from_a?;
     from_right.extend_from_slice(&from_b?);
@@ -170,22 +160,31 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
         .map(HalfEdgeId::from_index)
         .find(|&h| n1_kept_any(h) && left.store.left(h) == INFINITE)
         .map_or(NONE, |h| h.0);
-    drop(right);
     let mut store = left.store;
     store.cell_edge = cell_edge;
 
     // Every edge relinked across the cut leads back (those within a half
-    // are the half's own, renumbered one to one).
+    // are the half's own, renumbered one to one). (The right's store is
+    // freed meanwhile on the other thread: 50 MB at 1M points.)
     let keep = &left.keep;
     let kept = |v: usize| v >= n1 || keep[v];
-    let back = |h: &HalfEdgeId| {
-        let t = store.twin(*h);
-        t.0 != NONE && kept(t.origin().index()) && store.twin(t) == *h
-    };
-    if !from_right.iter().chain(&from_left).all(back) {
+    let ((), glued) = run_beside(
+        move || drop(right),
+        || {
+            let back = |h: &HalfEdgeId| {
+                let t = store.twin(*h);
+                t.0 != NONE && kept(t.origin().index()) && store.twin(t) == *h
+            };
+            let glued = from_right.iter().chain(&from_left).all(back);
+            if glued {
+                drop_vertices(&mut store, keep);
+            }
+            glued
+        },
+    );
+    if !glued {
         return None;
     }
-    drop_vertices(&mut store, keep);
 
     let first_segment = if ranges.first_segment as usize == ranges.count { u32::MAX } else { ranges.first_segment };
     let construction = Construction::assembled(store, sites, first_segment, segment_ends);
@@ -212,10 +211,14 @@ impl Ranges {
         Ranges { left_points_end, first_segment, left_segments_end, count: (left_segments_end + right.segments) as usize }
     }
 
+    #[inline]
     fn owned(&self, s: SiteId, side: Side) -> bool {
-        let left = (s.0 >= 1 && s.0 < self.left_points_end) || (s.0 >= self.first_segment && s.0 < self.left_segments_end);
-        let real = s.0 != INFINITE.0 && s.0 != NONE;
-        real && (left == (side == Side::Left))
+        // (without a branch: asked of each site of every vertex; a
+        // wrapping difference is below a range's length only inside it)
+        let within = |start: u32, end: u32| s.0.wrapping_sub(start) < end.wrapping_sub(start);
+        let left = within(1, self.left_points_end) | within(self.first_segment, self.left_segments_end);
+        let real = (s.0 != INFINITE.0) & (s.0 != NONE);
+        real & (left == (side == Side::Left))
     }
 
     /// The first id of `side`'s points and of its segments.
@@ -368,8 +371,8 @@ impl Renamed {
         let (mut lefts, mut rights, mut on_the_cut) = (Vec::with_capacity(count), Vec::with_capacity(count), Vec::new());
         for (v, cells) in store.right.chunks_exact_mut(3).enumerate() {
             cells.iter_mut().for_each(|r| *r = SiteId(map[r.index()]));
-            let any_left = cells.iter().any(|&s| ranges.owned(s, Side::Left));
-            let any_right = cells.iter().any(|&s| ranges.owned(s, Side::Right));
+            let any_left = cells.iter().fold(false, |any, &s| any | ranges.owned(s, Side::Left));
+            let any_right = cells.iter().fold(false, |any, &s| any | ranges.owned(s, Side::Right));
             lefts.push(any_left);
             rights.push(any_right);
             if any_left && any_right {
@@ -456,28 +459,25 @@ impl Renamed {
         on_the_cut.into_iter().find(|&g| left.store.left(g) == site)
     }
 
-    /// Right: writes its kept vertices among `vertices` into their part of
-    /// the glued store's appended arrays (which starts at the kept vertex
-    /// of rank `first_rank`). Returns the half-edges it linked to the
-    /// left's vertices.
-    fn fill(
+    /// Right: writes the twins of its kept vertices among `vertices` into
+    /// their part of the glued store's appended twins (which starts at the
+    /// kept vertex of rank `first_rank`). Returns the half-edges it linked
+    /// to the left's vertices.
+    fn fill_twins(
         &self,
         vertices: std::ops::Range<usize>,
         first_rank: usize,
         n1: usize,
         left_crossing: &HashMap<[SiteId; 2], HalfEdgeId>,
-        out: Appended<'_>,
+        twin: &mut [HalfEdgeId],
     ) -> Option<Vec<HalfEdgeId>> {
         let mut across = Vec::new();
         for v in vertices.filter(|&v| self.keep[v]) {
             let at = self.rank[v] as usize - first_rank;
             let from = VertexId::from_index(v);
-            out.sites[3 * at..3 * at + 3].copy_from_slice(&self.store.sites_of(from));
-            out.position[at] = self.store.position[v];
-            out.clearance[at] = self.store.clearance[v];
             for k in 0..3 {
                 let h = from.half_edge(k);
-                out.twin[3 * at + k as usize] = self.twin_glued(h, n1, left_crossing)?;
+                twin[3 * at + k as usize] = self.twin_glued(h, n1, left_crossing)?;
                 if !self.keep[self.store.twin(h).origin().index()] {
                     across.push(VertexId::from_index(n1 + first_rank + at).half_edge(k));
                 }
@@ -523,14 +523,6 @@ fn crossing_edges(store: &Store, keep: &[bool], candidates: &[u32], side: Side) 
         }
     }
     crossing
-}
-
-/// The appended part of the glued store's arrays.
-struct Appended<'a> {
-    sites: &'a mut [SiteId],
-    twin: &'a mut [HalfEdgeId],
-    position: &'a mut [Point],
-    clearance: &'a mut [f64],
 }
 
 /// Left: relinks its edges across the cut (`crossing`, checked to pair
@@ -594,4 +586,29 @@ fn move_vertex(store: &mut Store, from: VertexId, to: VertexId) {
     }
     store.position[to.index()] = store.position[from.index()];
     store.clearance[to.index()] = store.clearance[from.index()];
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `Ranges::owned` without branches answers as the plain comparisons.
+    #[test]
+    fn owned_ids_are_those_of_the_plain_comparisons() {
+        let plain = |r: &Ranges, s: SiteId, side: Side| {
+            let left = (s.0 >= 1 && s.0 < r.left_points_end) || (s.0 >= r.first_segment && s.0 < r.left_segments_end);
+            let real = s.0 != INFINITE.0 && s.0 != NONE;
+            real && (left == (side == Side::Left))
+        };
+        // (owned counts: left points, right points, left segments, right segments; some empty)
+        for (lp, rp, ls, rs) in [(3, 4, 5, 6), (0, 4, 0, 6), (3, 0, 5, 0), (0, 0, 0, 0), (7, 7, 0, 0), (1, 1, 1, 1)] {
+            let r = Ranges::of(&Owned { points: lp, segments: ls }, &Owned { points: rp, segments: rs });
+            let ids = (0..r.count as u32 + 3).chain([NONE - 1, NONE]);
+            for s in ids.map(SiteId) {
+                for side in [Side::Left, Side::Right] {
+                    assert_eq!(r.owned(s, side), plain(&r, s, side), "{s:?} {side:?} in {lp} {rp} {ls} {rs}");
+                }
+            }
+        }
+    }
 }

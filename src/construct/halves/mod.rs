@@ -481,12 +481,23 @@ impl Half<'_> {
     }
 
     /// The half's points inserted (the left's with room for the right
-    /// half's vertices: its store is the glued one, and grows in place;
-    /// memory not touched is not taken).
+    /// half's vertices: its store is the glued one, and grows in place).
     /// Returns them too, in the half's order (its local points).
     fn insert_points(&self, points: &[Point], segments: usize) -> (PointStage, Vec<Point>) {
         let local: Vec<Point> = self.points.iter().map(|&i| points[i as usize]).collect();
-        let room = if self.side == Side::Left { points.len() + segments } else { segments };
+        // Room for the sites to come: its segments, and on the left the
+        // right half's sites, and its own halo's (whose vertices stay in
+        // the store until the glue fills their slots): every site but the
+        // points it owns. No more: an array past the allocator's
+        // threshold for its own mapping (32 MB in glibc) is mapped afresh
+        // and its pages faulted in at every build.
+        let room = match self.side {
+            Side::Left => {
+                let owned = local.iter().filter(|&&p| self.side.owns(&[p], self.plan.cut)).count();
+                points.len() + segments - owned
+            }
+            Side::Right => segments,
+        };
         (insert_points(&local, room), local)
     }
 
