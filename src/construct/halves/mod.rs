@@ -252,7 +252,7 @@ impl Plan {
     fn of(points: &[Point], segments: usize, left_share: f64) -> Option<Plan> {
         // two passes over the points, each on both threads by halves
         let (low, high) = points.split_at(points.len() / 2);
-        let bounds = |part: &[Point]| (Enclosure::of(part), Extremes::of(part.iter().copied()));
+        let bounds = |part: &[Point]| (Enclosure::of(part), Extremes::of_slice(part));
         let ((enclosure_high, extremes_high), (enclosure_low, extremes_low)) = run_beside(|| bounds(high), || bounds(low));
         let (enclosure, extremes) = (enclosure_low.merge(enclosure_high), extremes_low.merge(extremes_high));
         let spacing = (enclosure.box_area() / (points.len() + segments) as f64).sqrt();
