@@ -62,7 +62,7 @@ fn main() {
                 r.held[1],
                 r.sites,
                 100.0 * ((r.held[0] + r.held[1]) as f64 / r.sites as f64 - 1.0),
-                if r.glued { "" } else { ", not glued" },
+                if r.glued { if r.attempts > 1 { ", 2 attempts" } else { "" } } else { ", not glued" },
             );
         }
     }
