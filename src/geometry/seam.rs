@@ -65,17 +65,12 @@ impl Extremes {
     /// The extremes of no point (`add` them one by one).
     pub(crate) const NONE: Extremes = Extremes { best: [(f64::NEG_INFINITY, Point::new(f64::NAN, f64::NAN)); 8], size: 0.0 };
 
-    pub(crate) fn of(points: impl IntoIterator<Item = Point>) -> Extremes {
-        let mut extremes = Extremes::NONE;
-        points.into_iter().for_each(|p| extremes.add(p));
-        extremes
-    }
-
-    /// [`Extremes::of`] a slice, the same answer faster: by blocks, each
-    /// point's values along the directions taken without a branch, and a
-    /// block added point by point only where it holds a new extreme (on
-    /// most input, a few blocks at the start).
-    pub(crate) fn of_slice(points: &[Point]) -> Extremes {
+    /// The extremes of `points`: those [`add`](Self::add) gives, one by
+    /// one, found faster by blocks: each point's values along the
+    /// directions taken without a branch, and a block added point by point
+    /// only where it holds a new extreme (on most input, a few blocks at
+    /// the start).
+    pub(crate) fn of(points: &[Point]) -> Extremes {
         let mut extremes = Extremes::NONE;
         for block in points.chunks(64) {
             let (mut top, mut largest) = ([f64::NEG_INFINITY; 8], 0.0);
@@ -307,7 +302,9 @@ mod tests {
         let mut with_nan = uniform[..300].to_vec();
         with_nan[100] = Point::new(f64::NAN, 1e9);
         for points in [uniform, sorted, lattice, with_nan, Vec::new(), vec![Point::new(-0.0, 0.0)]] {
-            let (a, b) = (Extremes::of(points.iter().copied()), Extremes::of_slice(&points));
+            let mut a = Extremes::NONE;
+            points.iter().for_each(|&p| a.add(p));
+            let b = Extremes::of(&points);
             let bits = |e: &Extremes| (e.size.to_bits(), e.best.map(|(v, p)| [v.to_bits(), p.x.to_bits(), p.y.to_bits()]));
             assert_eq!(bits(&a), bits(&b));
         }
@@ -356,7 +353,7 @@ mod tests {
         let mut points = vec![Point::new(0.0, 0.0), Point::new(4.0, 0.0), Point::new(4.0, 4.0), Point::new(0.0, 4.0)];
         points.extend((1..4).flat_map(|i| (1..4).map(move |j| Point::new(i as f64, j as f64))));
         points.push(Point::new(2.0, 0.0)); // on the hull, not a vertex: may stay
-        let kept = Extremes::of(points.iter().copied()).hull_candidates(points.iter().copied());
+        let kept = Extremes::of(&points).hull_candidates(points.iter().copied());
         for corner in &points[..4] {
             assert!(kept.contains(corner));
         }
@@ -383,7 +380,7 @@ mod tests {
                 Point::new(10.0 * t + 5.0 * (3.1 * t).sin(), 300.0 * (0.7 * t).sin() + 20.0 * (5.3 * t).cos())
             })
             .collect();
-        let extremes = Extremes::of(points.iter().copied());
+        let extremes = Extremes::of(&points);
         let octagon = extremes.octagon();
         let coarse = points.iter().filter(|&&p| octagon.may_hold_on_its_boundary(p)).count();
         let kept = extremes.hull_candidates(points.iter().copied());

@@ -94,14 +94,21 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
     let total = n1 + right.kept_count;
     let Store { right: cells, twin, position, clearance, .. } = &mut left.store;
     let kept = || (0..right.keep.len()).filter(|&v| right.keep[v]);
+    // (each array grown exactly, should the room the left half made fall
+    // short: they are hundreds of megabytes on large inputs, and doubled
+    // they would take as much again)
+    fn grown<T>(v: &mut Vec<T>, len: usize) -> &mut Vec<T> {
+        v.reserve_exact(len.saturating_sub(v.len()));
+        v
+    }
     run_beside(
         || {
-            position.extend(kept().map(|v| right.store.position[v]));
-            clearance.extend(kept().map(|v| right.store.clearance[v]));
+            grown(position, total).extend(kept().map(|v| right.store.position[v]));
+            grown(clearance, total).extend(kept().map(|v| right.store.clearance[v]));
         },
         || {
-            cells.extend(kept().flat_map(|v| right.store.sites_of(VertexId::from_index(v))));
-            twin.resize(3 * total, HalfEdgeId(NONE));
+            grown(cells, 3 * total).extend(kept().flat_map(|v| right.store.sites_of(VertexId::from_index(v))));
+            grown(twin, 3 * total).resize(3 * total, HalfEdgeId(NONE));
         },
     );
     let middle = right.store.vertex_count() / 2;

@@ -252,7 +252,7 @@ impl Plan {
     fn of(points: &[Point], segments: usize, left_share: f64) -> Option<Plan> {
         // two passes over the points, each on both threads by halves
         let (low, high) = points.split_at(points.len() / 2);
-        let bounds = |part: &[Point]| (Enclosure::of(part), Extremes::of_slice(part));
+        let bounds = |part: &[Point]| (Enclosure::of(part), Extremes::of(part));
         let ((enclosure_high, extremes_high), (enclosure_low, extremes_low)) = run_beside(|| bounds(high), || bounds(low));
         let (enclosure, extremes) = (enclosure_low.merge(enclosure_high), extremes_low.merge(extremes_high));
         let spacing = (enclosure.box_area() / (points.len() + segments) as f64).sqrt();
@@ -485,16 +485,21 @@ impl Half<'_> {
     /// Returns them too, in the half's order (its local points).
     fn insert_points(&self, points: &[Point], segments: usize) -> (PointStage, Vec<Point>) {
         let local: Vec<Point> = self.points.iter().map(|&i| points[i as usize]).collect();
-        // Room for the sites to come: its segments, and on the left the
-        // right half's sites, and its own halo's (whose vertices stay in
-        // the store until the glue fills their slots): every site but the
-        // points it owns. No more: an array past the allocator's
+        // Room for the sites to come: its segments, and on the left what
+        // the glue appends: the right half's vertices but those of the
+        // left's cells, about two per site the right holds (its sites, and
+        // its halo, taken as large as the left's); the left's own halo's
+        // vertices stay in the store until the glue fills their slots. A
+        // store of n sites has room for 2n + 2 vertices, the most a
+        // diagram of them has. No more: an array past the allocator's
         // threshold for its own mapping (32 MB in glibc) is mapped afresh
         // and its pages faulted in at every build.
         let room = match self.side {
             Side::Left => {
                 let owned = local.iter().filter(|&&p| self.side.owns(&[p], self.plan.cut)).count();
-                points.len() + segments - owned
+                let halo = local.len() - owned;
+                // (the sites the right holds: all but those the left owns, and a halo)
+                points.len() + segments - owned + halo + halo / 16
             }
             Side::Right => segments,
         };
