@@ -316,3 +316,34 @@ fn lattices_glue_from_halves() {
     }
     set_halves_from(None);
 }
+
+/// Short segments on a grid whose last row is partial, as the benchmarks
+/// lay out any count that is not a square: the cells along the top near
+/// the step have huge circles that reach over the step, deeper into the
+/// input than a side of its enclosure allows, and round its corners.
+/// Each size once took longer on two threads than on one: the halves
+/// were built, their checks asked a band as wide as the input, and the
+/// build started over on one thread. They glue, and give the one-thread
+/// diagram.
+#[test]
+fn grids_with_a_step_glue_from_halves() {
+    use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
+    set_halves_from(Some(64));
+    for n in [2_000, 4_700, 9_950] {
+        let mut rng = SplitMix64(n as u64);
+        let k = (n as f64).sqrt().ceil() as usize;
+        let mut b = Builder::new();
+        b.add_segments((0..n).map(|i| {
+            let (x, y) = ((i % k) as f64 + 0.3 * rng.unit(), (i / k) as f64 + 0.3 * rng.unit());
+            let a = rng.unit() * std::f64::consts::TAU;
+            [[x, y], [x + 0.3 * a.cos(), y + 0.3 * a.sin()]]
+        }))
+        .unwrap();
+        let one = b.threads(1).build().unwrap_or_else(|e| panic!("{n} segments: {e}"));
+        let two = b.threads(2).build().unwrap_or_else(|e| panic!("{n} segments in halves: {e}"));
+        let report = take_halves_report();
+        assert!(report.is_some_and(|r| r.glued && r.attempts == 1), "{n} segments: not glued at once: {report:?}");
+        assert!(fingerprint(&one) == fingerprint(&two), "{n} segments: another diagram in halves");
+    }
+    set_halves_from(None);
+}

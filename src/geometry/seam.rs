@@ -248,10 +248,85 @@ impl Enclosure {
     /// `clearance`) lies wholly beyond some side moved in by `band`: then
     /// it holds no point that is not [`near_a_side`](Self::near_a_side).
     pub(crate) fn vertex_beyond_a_side(&self, position: Point, clearance: f64, band: f64) -> bool {
-        let margin = self.slack + MARGIN * clearance.min(1.0) + 1e-12 * clearance;
+        let margin = self.vertex_margin(clearance);
         clearance >= 0.0
             && clearance.is_finite()
             && (0..SIDES).any(|k| along(position, k) - clearance > self.support[k] - band + margin)
+    }
+
+    /// The margin of a vertex's disk of radius `clearance` against the
+    /// sides: far above the rounding of the support, of a point along a
+    /// side, and of the disk's stored centre and radius.
+    fn vertex_margin(&self, clearance: f64) -> f64 {
+        self.slack + MARGIN * clearance.min(1.0) + 1e-12 * clearance
+    }
+
+    /// A convex polygon (corners counter-clockwise; none when it is empty)
+    /// that holds every point near no side moved in by `band` (every
+    /// point [`near_a_side`](Self::near_a_side) does not take): the
+    /// sides' half-planes moved in by `band`, intersected, and let out by
+    /// the slack, far more than the rounding of the clipping.
+    pub(crate) fn inside(&self, band: f64) -> Vec<Point> {
+        let limit = |k: usize| self.support[k] - band;
+        let (right, top, left, bottom) = (limit(0), limit(SIDES / 4), -limit(SIDES / 2), -limit(3 * SIDES / 4));
+        if !(left <= right && bottom <= top) {
+            return Vec::new();
+        }
+        let mut corners =
+            vec![Point::new(left, bottom), Point::new(right, bottom), Point::new(right, top), Point::new(left, top)];
+        for k in (0..SIDES).filter(|k| k % (SIDES / 4) != 0) {
+            // (Sutherland and Hodgman: the corners within the side, and
+            // where the polygon's edges cross it)
+            let over = |p: Point| along(p, k) - limit(k);
+            let mut clipped = Vec::with_capacity(corners.len() + 1);
+            for (i, &a) in corners.iter().enumerate() {
+                let b = corners[(i + 1) % corners.len()];
+                let (da, db) = (over(a), over(b));
+                if da <= 0.0 {
+                    clipped.push(a);
+                }
+                if (da <= 0.0) != (db <= 0.0) {
+                    let t = da / (da - db);
+                    clipped.push(Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)));
+                }
+            }
+            corners = clipped;
+            if corners.is_empty() {
+                break;
+            }
+        }
+        corners
+    }
+
+    /// Whether the disk of a finite vertex (centre `position`, radius
+    /// `clearance`) misses the polygon `inside` (from
+    /// [`inside`](Self::inside), for the band the points near a side were
+    /// taken with): then every point in it is near a side. It holds where
+    /// [`vertex_beyond_a_side`](Self::vertex_beyond_a_side) does, and also
+    /// for the disks that reach beyond two sides at once (round a corner
+    /// of the input, where no single side has them all).
+    pub(crate) fn vertex_misses(&self, inside: &[Point], position: Point, clearance: f64) -> bool {
+        if !(clearance >= 0.0 && clearance.is_finite() && position.x.is_finite() && position.y.is_finite()) {
+            return false;
+        }
+        if inside.is_empty() {
+            return true; // (every point is near a side)
+        }
+        // The distance from the centre to the polygon, if outside it: the
+        // centre to the right of an edge is outside (a point is taken for
+        // the polygon's whole when it has fewer than three corners).
+        let mut outside = inside.len() < 3;
+        let mut nearest = f64::INFINITY;
+        for (i, &a) in inside.iter().enumerate() {
+            let b = inside[(i + 1) % inside.len()];
+            let (ex, ey, px, py) = (b.x - a.x, b.y - a.y, position.x - a.x, position.y - a.y);
+            outside |= ex * py - ey * px < 0.0;
+            let length = ex * ex + ey * ey;
+            let t = if length > 0.0 { ((px * ex + py * ey) / length).clamp(0.0, 1.0) } else { 0.0 };
+            let (dx, dy) = (px - t * ex, py - t * ey);
+            nearest = nearest.min(dx * dx + dy * dy);
+        }
+        outside && nearest.sqrt() > clearance + self.vertex_margin(clearance)
     }
 }
 
@@ -291,6 +366,69 @@ const DIRECTIONS: [(f64, f64); SIDES] = {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `inside` holds every point not near a side, and a disk that
+    /// `vertex_misses` passes holds none of them: on a square, a disk and
+    /// a lattice (corners, straight sides, ties), far from the origin too,
+    /// with disks round the corners and along the sides, nearly touching.
+    #[test]
+    fn a_disk_that_misses_the_inside_holds_only_points_near_a_side() {
+        let mut rng = crate::splitmix::SplitMix64(9);
+        let square: Vec<Point> = (0..4000).map(|_| Point::new(rng.unit(), rng.unit())).collect();
+        let disk: Vec<Point> = (0..4000)
+            .map(|_| {
+                let (a, r) = (rng.unit() * std::f64::consts::TAU, rng.unit().sqrt());
+                Point::new(r * a.cos(), r * a.sin())
+            })
+            .collect();
+        let lattice: Vec<Point> = (0..3000).map(|i| Point::new((i % 60) as f64, (i / 60) as f64)).collect();
+        let far: Vec<Point> = square.iter().map(|p| Point::new(p.x + 2f64.powi(30), p.y - 2f64.powi(30))).collect();
+        let (mut passed, mut failed) = (0, 0);
+        for points in [square, disk, lattice, far] {
+            let enclosure = Enclosure::of(&points);
+            let (lo, hi) = points.iter().fold((points[0], points[0]), |(lo, hi), p| {
+                (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y)))
+            });
+            let size = (hi.x - lo.x).max(hi.y - lo.y);
+            for band in [0.01 * size, 0.05 * size, 0.3 * size] {
+                let inside = enclosure.inside(band);
+                let not_near: Vec<Point> = points.iter().copied().filter(|&p| !enclosure.near_a_side(p, band)).collect();
+                // every such point is in the polygon (all its edges keep it on their left)
+                for p in &not_near {
+                    let n = inside.len();
+                    assert!(n >= 3);
+                    assert!((0..n).all(|i| {
+                        let (a, b) = (inside[i], inside[(i + 1) % n]);
+                        (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) >= 0.0
+                    }));
+                }
+                for _ in 0..3000 {
+                    // a disk through a random point of the set's boundary region, out to the side
+                    let a = rng.unit() * std::f64::consts::TAU;
+                    let r = size * [0.01, 0.1, 1.0, 30.0][(rng.unit() * 4.0) as usize];
+                    let centre = Point::new(
+                        (lo.x + hi.x) / 2.0 + a.cos() * (0.5 * size + r * (0.9 + 0.2 * rng.unit())),
+                        (lo.y + hi.y) / 2.0 + a.sin() * (0.5 * size + r * (0.9 + 0.2 * rng.unit())),
+                    );
+                    let nearest = not_near
+                        .iter()
+                        .map(|p| ((p.x - centre.x).powi(2) + (p.y - centre.y).powi(2)).sqrt())
+                        .fold(f64::INFINITY, f64::min);
+                    if enclosure.vertex_misses(&inside, centre, r) {
+                        assert!(nearest > r, "a disk passed with a point not near a side in it");
+                        passed += 1;
+                    } else {
+                        failed += 1;
+                    }
+                    // a side's own test passes only disks the polygon's passes
+                    if enclosure.vertex_beyond_a_side(centre, r, band) {
+                        assert!(enclosure.vertex_misses(&inside, centre, r));
+                    }
+                }
+            }
+        }
+        assert!(passed > 1000 && failed > 1000, "{passed} passed, {failed} failed: disks not on both sides");
+    }
 
     #[test]
     fn extremes_by_blocks_are_those_point_by_point() {
