@@ -142,7 +142,8 @@ pub(super) fn insert_all_in_halves(points: &[Point], segments: &[[usize; 2]]) ->
 /// inserts its half's points: an input check that runs beside the build.
 /// `raw` are all segments the check may return (their ends are held by
 /// the halves from the start). `check` runs exactly once, unless there is
-/// no spare thread or the input is small (then not at all).
+/// no spare thread, the input is small or the plan finds that halves
+/// would not pay (then not at all).
 pub(super) fn insert_all_in_halves_after(
     points: &[Point],
     raw: &[[usize; 2]],
@@ -184,7 +185,9 @@ pub(super) fn insert_all_in_halves_after(
             let (segments, left) = left?;
             (segments, Some((plan, left, right)))
         }
-        None => (std::sync::Arc::new(check()?), None),
+        // (halves would not pay: the check is left to the caller, which
+        // runs it beside the point insertions)
+        None => return None,
     };
     let (plan, left, right) = first?;
     let (left, right) = (left?, right?);
