@@ -265,12 +265,16 @@ impl Enclosure {
     /// that holds every point near no side moved in by `band` (every
     /// point [`near_a_side`](Self::near_a_side) does not take): the
     /// sides' half-planes moved in by `band`, intersected, and let out by
-    /// the slack, far more than the rounding of the clipping.
-    pub(crate) fn inside(&self, band: f64) -> Vec<Point> {
+    /// the slack, far more than the rounding of the clipping. `None` where
+    /// a side or a corner is not finite (then no disk is taken to miss it).
+    pub(crate) fn inside(&self, band: f64) -> Option<Vec<Point>> {
         let limit = |k: usize| self.support[k] - band;
+        if !(0..SIDES).all(|k| limit(k).is_finite()) || !self.slack.is_finite() {
+            return None;
+        }
         let (right, top, left, bottom) = (limit(0), limit(SIDES / 4), -limit(SIDES / 2), -limit(3 * SIDES / 4));
         if !(left <= right && bottom <= top) {
-            return Vec::new();
+            return Some(Vec::new());
         }
         let mut corners =
             vec![Point::new(left, bottom), Point::new(right, bottom), Point::new(right, top), Point::new(left, top)];
@@ -295,7 +299,7 @@ impl Enclosure {
                 break;
             }
         }
-        corners
+        corners.iter().all(|p| p.x.is_finite() && p.y.is_finite()).then_some(corners)
     }
 
     /// Whether the disk of a finite vertex (centre `position`, radius
@@ -305,10 +309,11 @@ impl Enclosure {
     /// [`vertex_beyond_a_side`](Self::vertex_beyond_a_side) does, and also
     /// for the disks that reach beyond two sides at once (round a corner
     /// of the input, where no single side has them all).
-    pub(crate) fn vertex_misses(&self, inside: &[Point], position: Point, clearance: f64) -> bool {
-        if !(clearance >= 0.0 && clearance.is_finite() && position.x.is_finite() && position.y.is_finite()) {
+    pub(crate) fn vertex_misses(&self, inside: Option<&[Point]>, position: Point, clearance: f64) -> bool {
+        let finite = clearance >= 0.0 && clearance.is_finite() && position.x.is_finite() && position.y.is_finite();
+        let Some(inside) = inside.filter(|_| finite) else {
             return false;
-        }
+        };
         if inside.is_empty() {
             return true; // (every point is near a side)
         }
@@ -391,7 +396,7 @@ mod tests {
             });
             let size = (hi.x - lo.x).max(hi.y - lo.y);
             for band in [0.01 * size, 0.05 * size, 0.3 * size] {
-                let inside = enclosure.inside(band);
+                let inside = enclosure.inside(band).expect("finite sides");
                 let not_near: Vec<Point> = points.iter().copied().filter(|&p| !enclosure.near_a_side(p, band)).collect();
                 // every such point is in the polygon (all its edges keep it on their left)
                 for p in &not_near {
@@ -414,7 +419,7 @@ mod tests {
                         .iter()
                         .map(|p| ((p.x - centre.x).powi(2) + (p.y - centre.y).powi(2)).sqrt())
                         .fold(f64::INFINITY, f64::min);
-                    if enclosure.vertex_misses(&inside, centre, r) {
+                    if enclosure.vertex_misses(Some(&inside), centre, r) {
                         assert!(nearest > r, "a disk passed with a point not near a side in it");
                         passed += 1;
                     } else {
@@ -422,12 +427,16 @@ mod tests {
                     }
                     // a side's own test passes only disks the polygon's passes
                     if enclosure.vertex_beyond_a_side(centre, r, band) {
-                        assert!(enclosure.vertex_misses(&inside, centre, r));
+                        assert!(enclosure.vertex_misses(Some(&inside), centre, r));
                     }
                 }
             }
         }
         assert!(passed > 1000 && failed > 1000, "{passed} passed, {failed} failed: disks not on both sides");
+        // sides beyond the range of f64: nothing known, and no disk passes
+        let huge = Enclosure::of(&[Point::new(f64::MAX, f64::MAX), Point::new(-f64::MAX, -f64::MAX), Point::new(0.0, 1.0)]);
+        assert!(huge.inside(1.0).is_none());
+        assert!(!huge.vertex_misses(None, Point::new(0.0, 1e300), 1.0));
     }
 
     #[test]

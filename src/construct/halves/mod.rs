@@ -247,8 +247,8 @@ struct Plan {
     rim: f64,
     enclosure: Enclosure,
     /// What holds every point not within `rim` of the enclosure
-    /// (`Enclosure::inside`).
-    inside: Vec<Point>,
+    /// (`Enclosure::inside`; `None`: not known).
+    inside: Option<Vec<Point>>,
     /// Per point: held by both halves, whatever the band: every point that
     /// may be a vertex of the hull (so that the edges to infinity of both
     /// halves are the whole diagram's) and every point within `rim` of the
@@ -607,7 +607,7 @@ impl Half<'_> {
                 }
                 None => (!vertex_stays_short_of(position, clearance, outside.line, t)
                     && !self.plan.enclosure.vertex_beyond_a_side(position, clearance, self.plan.rim)
-                    && !self.plan.enclosure.vertex_misses(&self.plan.inside, position, clearance))
+                    && !self.plan.enclosure.vertex_misses(self.plan.inside.as_deref(), position, clearance))
                 .then(|| (position.x - self.plan.cut) * t + clearance),
             };
             if let Some(want) = want {
