@@ -411,16 +411,14 @@ impl Outside {
         let middle = points.len() / 2;
         let (high, mut low) =
             run_beside(|| candidates(&points[middle..], &both[middle..]), || candidates(&points[..middle], &both[..middle]));
-        let mut k = 0;
-        [Side::Left, Side::Right].map(|side| {
-            let (extremes, mut kept) = (beyond[k], std::mem::take(&mut low[k]));
+        // (per side, 0 the left's: the line is its set's least x, the
+        // right's its greatest)
+        [0, 1].map(|k| {
+            let mut kept = std::mem::take(&mut low[k]);
             kept.extend_from_slice(&high[k]);
-            k += 1;
-            let line = match side {
-                Side::Left => extremes.x_range().0,
-                Side::Right => extremes.x_range().1,
-            };
-            line.is_finite().then(|| Outside { line, hull: extremes.hull_candidates(kept) })
+            let (least, greatest) = beyond[k].x_range();
+            let line = if k == 0 { least } else { greatest };
+            line.is_finite().then(|| Outside { line, hull: beyond[k].hull_candidates(kept) })
         })
     }
 }
