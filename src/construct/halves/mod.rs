@@ -158,38 +158,32 @@ pub(super) fn insert_all_in_halves_after(
     let started = std::time::Instant::now();
     let plan = Plan::of(points, raw.len(), left_share);
     report(|r| r.times[0] = started.elapsed());
+    // (halves would not pay: the check is left to the caller, which runs
+    // it beside the point insertions)
+    let plan = plan?;
     let started = std::time::Instant::now();
-    let (segments, first) = match plan {
-        Some(plan) => {
-            let (tx, rx) = std::sync::mpsc::channel::<Option<std::sync::Arc<Vec<[usize; 2]>>>>();
-            let shared_plan = &plan;
-            let (right, left) = run_beside(
-                move || {
-                    let plan = shared_plan;
-                    let half = Half::select(points, raw, plan, (plan.band, &plan.outside), Side::Right);
-                    let stage = half.insert_points(points, raw.len());
-                    let segments = rx.recv().ok().flatten()?;
-                    half.finish(stage, points, &segments)
-                },
-                || {
-                    let segments = check().map(std::sync::Arc::new);
-                    // (the other thread stops at its points when the send fails or sends none)
-                    let _ = tx.send(segments.clone());
-                    let segments = segments?;
-                    let half = Half::select(points, raw, &plan, (plan.band, &plan.outside), Side::Left);
-                    let stage = half.insert_points(points, raw.len());
-                    let built = half.finish(stage, points, &segments);
-                    Some((segments, built))
-                },
-            );
-            let (segments, left) = left?;
-            (segments, Some((plan, left, right)))
-        }
-        // (halves would not pay: the check is left to the caller, which
-        // runs it beside the point insertions)
-        None => return None,
-    };
-    let (plan, left, right) = first?;
+    let (tx, rx) = std::sync::mpsc::channel::<Option<std::sync::Arc<Vec<[usize; 2]>>>>();
+    let shared_plan = &plan;
+    let (right, left) = run_beside(
+        move || {
+            let plan = shared_plan;
+            let half = Half::select(points, raw, plan, (plan.band, &plan.outside), Side::Right);
+            let stage = half.insert_points(points, raw.len());
+            let segments = rx.recv().ok().flatten()?;
+            half.finish(stage, points, &segments)
+        },
+        || {
+            let segments = check().map(std::sync::Arc::new);
+            // (the other thread stops at its points when the send fails or sends none)
+            let _ = tx.send(segments.clone());
+            let segments = segments?;
+            let half = Half::select(points, raw, &plan, (plan.band, &plan.outside), Side::Left);
+            let stage = half.insert_points(points, raw.len());
+            let built = half.finish(stage, points, &segments);
+            Some((segments, built))
+        },
+    );
+    let (segments, left) = left?;
     let (left, right) = (left?, right?);
     report(|r| {
         r.times[1] = started.elapsed();
