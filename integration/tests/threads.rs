@@ -332,18 +332,25 @@ fn grids_with_a_step_glue_from_halves() {
     for n in [2_000, 4_700, 9_950] {
         let mut rng = SplitMix64(n as u64);
         let k = (n as f64).sqrt().ceil() as usize;
-        let mut b = Builder::new();
-        b.add_segments((0..n).map(|i| {
-            let (x, y) = ((i % k) as f64 + 0.3 * rng.unit(), (i / k) as f64 + 0.3 * rng.unit());
-            let a = rng.unit() * std::f64::consts::TAU;
-            [[x, y], [x + 0.3 * a.cos(), y + 0.3 * a.sin()]]
-        }))
-        .unwrap();
-        let one = b.threads(1).build().unwrap_or_else(|e| panic!("{n} segments: {e}"));
-        let two = b.threads(2).build().unwrap_or_else(|e| panic!("{n} segments in halves: {e}"));
-        let report = take_halves_report();
-        assert!(report.is_some_and(|r| r.glued && r.attempts == 1), "{n} segments: not glued at once: {report:?}");
-        assert!(fingerprint(&one) == fingerprint(&two), "{n} segments: another diagram in halves");
+        let segments: Vec<[[f64; 2]; 2]> = (0..n)
+            .map(|i| {
+                let (x, y) = ((i % k) as f64 + 0.3 * rng.unit(), (i / k) as f64 + 0.3 * rng.unit());
+                let a = rng.unit() * std::f64::consts::TAU;
+                [[x, y], [x + 0.3 * a.cos(), y + 0.3 * a.sin()]]
+            })
+            .collect();
+        // as made, and mirrored 2^30 out (the step then on the bottom right)
+        let o = 2f64.powi(30);
+        let far: Vec<[[f64; 2]; 2]> = segments.iter().map(|s| s.map(|p| [o - p[0], -o - p[1]])).collect();
+        for (how, segments) in [("as made", segments), ("mirrored 2^30 out", far)] {
+            let mut b = Builder::new();
+            b.add_segments(segments).unwrap();
+            let one = b.threads(1).build().unwrap_or_else(|e| panic!("{n} segments {how}: {e}"));
+            let two = b.threads(2).build().unwrap_or_else(|e| panic!("{n} segments {how} in halves: {e}"));
+            let report = take_halves_report();
+            assert!(report.is_some_and(|r| r.glued && r.attempts == 1), "{n} segments {how}: not glued at once: {report:?}");
+            assert!(fingerprint(&one) == fingerprint(&two), "{n} segments {how}: another diagram in halves");
+        }
     }
     set_halves_from(None);
 }
