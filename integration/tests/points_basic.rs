@@ -154,3 +154,35 @@ fn nearly_collinear_triples_get_accurate_vertices() {
         assert!(spread <= 1e-12 * v.clearance.max(1.0), "vertex {v:?}: distances {r:?}");
     }
 }
+
+/// Point sites are numbered by first appearance in the input, with repeats
+/// and without, on one thread and two, on inputs large enough that the
+/// renumbering runs by halves (its distinct case names point `i` site `i`
+/// straight away; with repeats, it counts): brute force on the public ids.
+#[test]
+fn point_sites_are_numbered_by_first_appearance() {
+    let distinct = uniform(90_000, 5);
+    // every seventh point repeats an earlier one, some more than once
+    let repeated: Vec<[f64; 2]> =
+        (0..90_000).map(|i| if i % 7 == 6 { distinct[(i * 31) % (i - 3)] } else { distinct[i] }).collect();
+    for points in [&distinct, &repeated] {
+        let mut first_seen = std::collections::HashMap::new();
+        let expected: Vec<usize> = points
+            .iter()
+            .map(|p| {
+                let next = first_seen.len();
+                *first_seen.entry((p[0].to_bits(), p[1].to_bits())).or_insert(next)
+            })
+            .collect();
+        for threads in [1, 2] {
+            let mut b = Builder::new();
+            b.threads(threads);
+            b.add_points(points.iter().copied()).unwrap();
+            let d = b.build().unwrap();
+            assert_eq!(d.site_count(), first_seen.len());
+            for (i, &want) in expected.iter().enumerate() {
+                assert_eq!(d.site_of_input(i).map(|s| s.index()), Some(want), "point {i}, {threads} threads");
+            }
+        }
+    }
+}

@@ -61,7 +61,25 @@ pub(super) fn renumber(
     let large = store.vertex_count() >= PARALLEL_FROM;
     let mut public_of = vec![NONE; internal_sites.len()];
     let (point_ids, segment_ids) = public_of.split_at_mut(first_internal_segment);
+    // Where every input point has a site of its own (no repeats: most
+    // builds of points), a point's public id is its input index: the site
+    // table and the map are the input's, made on the other thread
+    // (`own_sites`) while this one fills `public_of`. (As many sites as
+    // inputs, none met twice: then each site has exactly one input.)
+    let distinct = point_ids.len() == site_of_input.len() + 1;
     let name_points = || {
+        if distinct {
+            let mut repeats = false;
+            for (i, s) in site_of_input.iter().enumerate() {
+                let slot = &mut point_ids[s.index()];
+                repeats |= *slot != NONE;
+                *slot = i as u32;
+            }
+            if !repeats {
+                return None;
+            }
+            point_ids.fill(NONE);
+        }
         let mut points = Vec::with_capacity(site_of_input.len().min(point_ids.len()));
         let mut input_site = Vec::with_capacity(input.len());
         for (i, s) in site_of_input.iter().enumerate() {
@@ -72,9 +90,16 @@ pub(super) fn renumber(
             }
             input_site.push(SiteId(*slot));
         }
-        (points, input_site)
+        Some((points, input_site))
     };
-    let name_segments = || {
+    let own_sites = || {
+        if !distinct {
+            return (Vec::new(), Vec::new());
+        }
+        let points: Vec<Point> = input.iter().map(|p| p.canonical_zero()).collect();
+        (points, (0..input.len() as u32).map(SiteId).collect::<Vec<_>>())
+    };
+    let mut name_segments = || {
         let internals = segments.internal.iter().copied().chain(arcs.iter().map(|arc| arc.internal));
         for (k, internal) in internals.enumerate() {
             segment_ids[internal.index() - first_internal_segment] = k as u32;
@@ -88,7 +113,9 @@ pub(super) fn renumber(
         let arc_input = arcs.iter().map(|arc| arc.input as u32).collect::<Vec<_>>();
         (ends, segment_input, arc_input)
     };
-    let ((segment_sites, segment_input, arc_input), (point_sites, input_site)) = beside_if(large, name_segments, name_points);
+    let (((segment_sites, segment_input, arc_input), own), named) =
+        beside_if(large, move || (name_segments(), own_sites()), name_points);
+    let (point_sites, input_site) = named.unwrap_or(own);
     let point_count = point_sites.len() as u32;
     segment_ids.iter_mut().filter(|id| **id != NONE).for_each(|id| *id += point_count);
     let sites = SiteTable::from_parts(point_sites, segment_sites, arcs.iter().map(|arc| arc.arc).collect());
