@@ -455,7 +455,7 @@ impl Half<'_> {
         side: Side,
     ) -> Half<'a> {
         let mut held: Vec<bool> =
-            points.iter().zip(&plan.both).map(|(p, &both)| both || Half::near(side, plan, band, &[*p])).collect();
+            points.iter().zip(&plan.both).map(|(&p, &both)| both | Half::near_point(side, plan.cut, band, p)).collect();
         let mut chosen = Vec::new();
         for (k, &[a, b]) in segments.iter().enumerate() {
             if Half::holds_segment(side, plan, band, points, [a, b]) {
@@ -464,7 +464,7 @@ impl Half<'_> {
                 held[b] = true;
             }
         }
-        let held_points: Vec<u32> = (0..points.len() as u32).filter(|&i| held[i as usize]).collect();
+        let held_points = indices_of(&held);
         let outside = outside[usize::from(side == Side::Right)].as_ref();
         Half { side, plan, band, points: held_points, segments: chosen, outside }
     }
@@ -473,6 +473,13 @@ impl Half<'_> {
     /// the cut on the other side (a segment by its end nearest the cut).
     fn near(side: Side, plan: &Plan, band: f64, points: &[Point]) -> bool {
         side.owns(points, plan.cut) || points.iter().any(|&p| !Half::beyond_band(side, plan.cut, band, p))
+    }
+
+    /// [`near`](Self::near) of a point, without a branch: about half the
+    /// points are the side's, in no order.
+    #[inline]
+    fn near_point(side: Side, cut: f64, band: f64, p: Point) -> bool {
+        ((p.x < cut) == (side == Side::Left)) | !Half::beyond_band(side, cut, band, p)
     }
 
     /// Whether `p` lies beyond `band` of the cut on the far side from
@@ -529,20 +536,21 @@ impl Half<'_> {
         points: &[Point],
         segments: &[[usize; 2]],
     ) -> Option<BuiltHalf> {
-        let mut local_of = vec![NONE; points.len()];
-        self.points.iter().enumerate().for_each(|(local, &i)| local_of[i as usize] = local as u32);
         self.segments = (0..segments.len() as u32)
             .filter(|&k| Half::holds_segment(self.side, self.plan, self.band, points, segments[k as usize]))
             .collect();
         let mut pairs = Vec::with_capacity(self.segments.len());
-        for &k in &self.segments {
-            let [a, b] = segments[k as usize].map(|i| local_of[i]);
-            if a == NONE || b == NONE {
-                return None; // (an end not held: `segments` was not what `select` saw)
+        if !self.segments.is_empty() {
+            let mut local_of = vec![NONE; points.len()];
+            self.points.iter().enumerate().for_each(|(local, &i)| local_of[i as usize] = local as u32);
+            for &k in &self.segments {
+                let [a, b] = segments[k as usize].map(|i| local_of[i]);
+                if a == NONE || b == NONE {
+                    return None; // (an end not held: `segments` was not what `select` saw)
+                }
+                pairs.push([a as usize, b as usize]);
             }
-            pairs.push([a as usize, b as usize]);
         }
-        drop(local_of);
         let (construction, site_of_point, site_of_segment, outcome) = insert_all_from(stage, &local_points, &pairs);
         if outcome.restarts > 0 || outcome.stuck.is_some() {
             return None;
@@ -610,6 +618,20 @@ impl Half<'_> {
     }
 }
 
+/// The indices of the `true` flags, in order, without a branch a flag
+/// (the held points of a half come in no order: a branch on each would be
+/// mispredicted half the time).
+fn indices_of(flags: &[bool]) -> Vec<u32> {
+    let mut indices = vec![0u32; flags.len()];
+    let mut n = 0;
+    for (i, &f) in flags.iter().enumerate() {
+        indices[n] = i as u32;
+        n += usize::from(f);
+    }
+    indices.truncate(n);
+    indices
+}
+
 /// The x that about `share` of the points lie left of (the cut): the
 /// quantile of a sample of at most [`CUT_SAMPLE`] points at an even
 /// stride, which balances the halves as well as the exact one (any cut
@@ -651,6 +673,39 @@ mod tests {
         let mut held = vec![false; points.len()];
         half.points.iter().for_each(|&i| held[i as usize] = true);
         (0..points.len()).filter(|&i| !held[i]).map(|i| points[i]).collect()
+    }
+
+    #[test]
+    fn a_point_is_near_as_a_site_of_one_point_is() {
+        let cut = 0.5;
+        let band = 0.125;
+        let mut xs = vec![f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 0.0, -0.0, cut, cut + band, cut - band, 1.0, -1.0];
+        xs.extend([cut, cut + band, cut - band].iter().flat_map(|&x| [x.next_up(), x.next_down()]));
+        let mut rng = crate::splitmix::SplitMix64(9);
+        xs.extend((0..1000).map(|_| rng.unit()));
+        set_halves_from(Some(1)); // (a plan whatever the boundary holds)
+        let plan = Plan::of(&inputs()[0], 0, 0.5).expect("halves pay");
+        set_halves_from(None);
+        let plan = Plan { cut, band, ..plan };
+        // (with no band too, where only the side's own test answers)
+        for band in [band, 0.0] {
+            for &x in &xs {
+                let p = Point::new(x, 0.25);
+                for side in [Side::Left, Side::Right] {
+                    assert_eq!(Half::near_point(side, cut, band, p), Half::near(side, &plan, band, &[p]), "{x} {side:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn indices_of_flags_are_those_a_filter_takes() {
+        let mut rng = crate::splitmix::SplitMix64(4);
+        for (n, share) in [(0, 0.5), (1, 1.0), (1, 0.0), (1000, 0.5), (1000, 0.99), (1000, 0.0)] {
+            let flags: Vec<bool> = (0..n).map(|_| rng.unit() < share).collect();
+            let plain: Vec<u32> = (0..n as u32).filter(|&i| flags[i as usize]).collect();
+            assert_eq!(indices_of(&flags), plain);
+        }
     }
 
     #[test]
