@@ -835,7 +835,8 @@ enum segvoronoi_status segvoronoi_builder_set_split_crossings(struct segvoronoi_
 // otherwise, and a degenerate vertex, four sites or more on one circle,
 // cut into its degree-3 parts another way). With a second thread, a build of
 // 60,000 sites or more without arcs runs in two halves built at once and
-// glued; smaller ones run parts of their work on it (the input check
+// glued (with four threads or more, each half of 60,000 sites or more in
+// halves in turn); smaller ones run parts of their work on it (the input check
 // beside the point insertions, the sort of the insertion order, the check
 // of the arcs' vertices). 1 starts no thread at all, for programs that
 // run many builds on threads of their own.

@@ -181,7 +181,7 @@ struct Cli {
     #[arg(long)]
     split_crossings: bool,
 
-    /// At most N threads at once in the build, this one included (default: as many as the machine has cores; 1 starts none). Builds of 60,000 sites or more run in two halves at once. The diagram is the same for every N (vertices may be numbered, and degenerate ones cut, otherwise: compare with --canonical-cuts)
+    /// At most N threads at once in the build, this one included (default: as many as the machine has cores; 1 starts none). Builds of 60,000 sites or more run in two halves at once (with 4 or more, each half in halves in turn). The diagram is the same for every N (vertices may be numbered, and degenerate ones cut, otherwise: compare with --canonical-cuts)
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
     threads: Option<u32>,
 

@@ -30,7 +30,7 @@ fn site_key(mut sites: [SiteId; 3]) -> [SiteId; 3] {
 
 fn same_for_every_thread_count(what: &str, b: &mut Builder) {
     let one = fingerprint(&b.threads(1).build().unwrap_or_else(|e| panic!("{what}: {e}")));
-    for n in [2, 3, 0] {
+    for n in [2, 3, 4, 0] {
         let other = fingerprint(&b.threads(n).build().unwrap_or_else(|e| panic!("{what} at {n} threads: {e}")));
         assert!(one == other, "{what}: another diagram at {n} threads than at one");
     }
@@ -122,6 +122,7 @@ fn builds_in_halves_give_the_one_thread_diagram_on_every_family() {
     ];
     let canonical = TopologyOptions::default().with_canonical_cuts(true).with_voronoi_pairs(true);
     let (mut glued, mut again, mut compared) = (0, 0, 0);
+    let (mut nested, mut again_nested) = (0, 0);
     set_halves_from(Some(64));
     // (debug builds, CI's, validate every build and run some five times
     // slower: they take every other family)
@@ -152,49 +153,54 @@ fn builds_in_halves_give_the_one_thread_diagram_on_every_family() {
                 b.add_segments(input.segments.iter().copied()).unwrap();
                 let one = b.threads(1).build();
                 assert!(take_halves_report().is_none(), "{what}: one thread ran halves");
-                let two = b.threads(2).build();
-                let report = take_halves_report();
-                let (one, two) = match (one, two) {
-                    (Ok(one), Ok(two)) => (one, two),
-                    (Err(a), Err(b)) => {
-                        assert_eq!(a.to_string(), b.to_string(), "{what}");
-                        continue;
+                // in halves, and (as made) each half in halves in turn
+                let counts: &[usize] = if *how == "as made" { &[2, 4] } else { &[2] };
+                for &threads in counts {
+                    let many = b.threads(threads).build();
+                    let report = take_halves_report();
+                    let what = format!("{what}, {threads} threads");
+                    let (one, many) = match (&one, many) {
+                        (Ok(one), Ok(many)) => (one, many),
+                        (Err(a), Err(b)) => {
+                            assert_eq!(a.to_string(), b.to_string(), "{what}");
+                            continue;
+                        }
+                        (a, b) => panic!("{what}: one thread {:?}, many {:?}", a.as_ref().err(), b.err()),
+                    };
+                    if !cfg!(debug_assertions) {
+                        // (debug builds validate every diagram they return)
+                        many.validate().unwrap_or_else(|e| panic!("{what}: {e:?}"));
                     }
-                    (a, b) => panic!("{what}: one thread {:?}, two {:?}", a.err(), b.err()),
-                };
-                if !cfg!(debug_assertions) {
-                    // (debug builds validate every diagram they return)
-                    two.validate().unwrap_or_else(|e| panic!("{what}: {e:?}"));
-                }
-                assert!(one.topology(canonical) == two.topology(canonical), "{what}: another topology in halves");
-                let key = |v: &segvoronoi::Vertex| site_key(v.sites);
-                let at: std::collections::HashMap<_, _> = one.vertices().map(|v| (key(&v), v)).collect();
-                assert_eq!(one.vertex_count(), two.vertex_count(), "{what}");
-                for v in two.vertices() {
-                    // (a degenerate vertex may be cut another way: its parts are elsewhere named)
-                    if let Some(w) = at.get(&key(&v)) {
-                        assert_eq!(
-                            (v.position.x.to_bits(), v.position.y.to_bits(), v.clearance.to_bits()),
-                            (w.position.x.to_bits(), w.position.y.to_bits(), w.clearance.to_bits()),
-                            "{what}: vertex {:?} moved",
-                            v.sites
-                        );
-                    } else {
-                        assert!(made.degenerate, "{what}: vertex {:?} only in halves", v.sites);
+                    assert!(one.topology(canonical) == many.topology(canonical), "{what}: another topology in halves");
+                    let key = |v: &segvoronoi::Vertex| site_key(v.sites);
+                    let at: std::collections::HashMap<_, _> = one.vertices().map(|v| (key(&v), v)).collect();
+                    assert_eq!(one.vertex_count(), many.vertex_count(), "{what}");
+                    for v in many.vertices() {
+                        // (a degenerate vertex may be cut another way: its parts are elsewhere named)
+                        if let Some(w) = at.get(&key(&v)) {
+                            assert_eq!(
+                                (v.position.x.to_bits(), v.position.y.to_bits(), v.clearance.to_bits()),
+                                (w.position.x.to_bits(), w.position.y.to_bits(), w.clearance.to_bits()),
+                                "{what}: vertex {:?} moved",
+                                v.sites
+                            );
+                        } else {
+                            assert!(made.degenerate, "{what}: vertex {:?} only in halves", v.sites);
+                        }
                     }
+                    let (glued, again) = if threads == 2 { (&mut glued, &mut again) } else { (&mut nested, &mut again_nested) };
+                    *glued += usize::from(report.is_some_and(|r| r.glued && (threads == 2 || r.nested == [true, true])));
+                    *again += usize::from(report.is_some_and(|r| !r.glued));
                 }
                 compared += 1;
-                match report {
-                    Some(r) if r.glued => glued += 1,
-                    Some(_) => again += 1,
-                    None => {}
-                }
             }
         }
     }
     set_halves_from(None);
     eprintln!("{compared} inputs compared: {glued} glued from halves, {again} built again on one thread");
+    eprintln!("at 4 threads: {nested} glued from halves built in halves, {again_nested} built again on one thread");
     assert!(glued * 4 > compared * 3, "only {glued} of {compared} glued");
+    assert!(nested * 4 > compared, "only {nested} of {compared} glued from halves built in halves");
 }
 
 /// Found by the test above: a fan of segments with straight joints moved
@@ -245,7 +251,7 @@ fn a_point_exactly_on_a_segment_builds_as_one_thread_does() {
 #[test]
 fn real_outlines_in_halves_give_the_one_thread_diagram() {
     use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
-    let (mut glued, mut compared) = (0, 0);
+    let (mut glued, mut nested, mut compared) = (0, 0, 0);
     set_halves_from(Some(64));
     for (name, rings) in segvoronoi_testgen::rings::real_outlines() {
         let o = 2f64.powi(30);
@@ -258,6 +264,10 @@ fn real_outlines_in_halves_give_the_one_thread_diagram() {
             glued += usize::from(take_halves_report().is_some_and(|r| r.glued));
             compared += 1;
             assert!(fingerprint(&one) == fingerprint(&two), "{name} {how}: another diagram in halves");
+            // and each half in halves in turn
+            let four = b.threads(4).build().unwrap_or_else(|e| panic!("{name} {how} in quarters: {e}"));
+            nested += usize::from(take_halves_report().is_some_and(|r| r.glued && r.nested == [true, true]));
+            assert!(fingerprint(&one) == fingerprint(&four), "{name} {how}: another diagram in quarters");
             let places = |d: &Diagram| {
                 let mut p: Vec<_> = d.vertices().map(|v| (site_key(v.sites), d.vertex_location(v.id))).collect();
                 p.sort_by_key(|(k, _)| *k);
@@ -267,8 +277,9 @@ fn real_outlines_in_halves_give_the_one_thread_diagram() {
         }
     }
     set_halves_from(None);
-    eprintln!("{compared} real outlines compared: {glued} glued from halves");
+    eprintln!("{compared} real outlines compared: {glued} glued from halves, {nested} from halves built in halves");
     assert!(glued * 2 > compared, "only {glued} of {compared} glued");
+    assert!(nested * 4 > compared, "only {nested} of {compared} glued from halves built in halves");
 }
 
 /// Lattices, where every vertex is degenerate and each half cuts those on
@@ -353,4 +364,60 @@ fn grids_with_a_step_glue_from_halves() {
         }
     }
     set_halves_from(None);
+}
+
+/// With four threads or more, each half is built in halves in turn on the
+/// threads its own thread may start (vertical strips, glued pairwise):
+/// the one-thread diagram, bit for bit, at 4 and 8 threads (on this
+/// machine's cores or more: the budget, not the cores, decides), for
+/// points, segments, a lattice (ties on every cut) and mirrored far out.
+#[test]
+fn halves_built_in_halves_give_the_one_thread_diagram() {
+    use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
+    set_halves_from(Some(500));
+    let o = 2f64.powi(30);
+    let mut rng = SplitMix64(12);
+    let points: Vec<[f64; 2]> = (0..6_000).map(|_| [rng.unit(), rng.unit()]).collect();
+    let lattice: Vec<[f64; 2]> = (0..90 * 70).map(|i| [f64::from(i % 90), f64::from(i / 90)]).collect();
+    let segments: Vec<[[f64; 2]; 2]> = generate(Method::Short, 5_000, 3)
+        .segments
+        .iter()
+        .map(|s| [[s[0], s[1]], [s[2], s[3]]].map(|p| p.map(f64::from)))
+        .collect();
+    let far = |p: [f64; 2]| [o - 1e3 * p[0], -o - 1e3 * p[1]];
+    // (a lattice's degenerate vertices are cut as the half that keeps them
+    // inserted its sites: its canonical text is the one thread's, the
+    // vertices' sites need not be)
+    let canonical = TopologyOptions::default().with_canonical_cuts(true).with_voronoi_pairs(true);
+    let inputs: Vec<(&str, Builder)> = vec![
+        ("uniform points", builder_of(&points, &[])),
+        ("a lattice of points", builder_of(&lattice, &[])),
+        ("short segments", builder_of(&[], &segments)),
+        ("points mirrored far out", builder_of(&points.iter().map(|&p| far(p)).collect::<Vec<_>>(), &[])),
+        ("segments mirrored far out", builder_of(&[], &segments.iter().map(|s| s.map(far)).collect::<Vec<_>>())),
+    ];
+    for (what, mut b) in inputs {
+        let one = b.threads(1).build().unwrap_or_else(|e| panic!("{what}: {e}"));
+        let degenerate = what.contains("lattice");
+        let one = if degenerate { (one.topology(canonical), Vec::new()) } else { fingerprint(&one) };
+        for threads in [4, 8] {
+            let many = b.threads(threads).build().unwrap_or_else(|e| panic!("{what} at {threads} threads: {e}"));
+            let report = take_halves_report();
+            assert!(
+                report.is_some_and(|r| r.glued && r.nested == [true, true]),
+                "{what} at {threads} threads: halves not built in halves and glued: {report:?}"
+            );
+            many.validate().unwrap_or_else(|e| panic!("{what} at {threads} threads: {e:?}"));
+            let many = if degenerate { (many.topology(canonical), Vec::new()) } else { fingerprint(&many) };
+            assert!(one == many, "{what}: another diagram at {threads} threads");
+        }
+    }
+    set_halves_from(None);
+}
+
+fn builder_of(points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) -> Builder {
+    let mut b = Builder::new();
+    b.add_points(points.iter().copied()).unwrap();
+    b.add_segments(segments.iter().copied()).unwrap();
+    b
 }

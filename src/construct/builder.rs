@@ -416,12 +416,14 @@ impl Builder {
     ///
     /// With a second thread, a build of 60,000 sites or more without arcs
     /// runs in two halves, cut at a vertical line, each built on its own
-    /// thread and then glued (about 1.4 to 1.8 times faster on two cores);
-    /// smaller builds and arcs use it for parts of their work (the input
-    /// check beside the point insertions, the sort of the insertion order,
-    /// the check of the arcs' vertices). Two threads are the most a build
-    /// uses today. `threads(1)` starts none, for callers that run many
-    /// builds on threads of their own.
+    /// thread and then glued (about 1.6 to 1.8 times faster on two cores);
+    /// with four threads or more, each half of 60,000 sites or more is
+    /// built in halves in turn (vertical strips, glued pairwise: four
+    /// strips with four threads, eight with eight). Smaller builds and
+    /// arcs use a second thread for parts of their work (the input check
+    /// beside the point insertions, the sort of the insertion order, the
+    /// check of the arcs' vertices). `threads(1)` starts none, for callers
+    /// that run many builds on threads of their own.
     ///
     /// ```
     /// use segvoronoi::{Builder, TopologyOptions};

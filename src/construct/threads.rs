@@ -4,12 +4,14 @@
 //! The budget is per build and per calling thread: `with_threads` sets how
 //! many threads the build on this thread may have running at once
 //! (itself included) while it runs. `run_beside` takes one of them for its
-//! second thread and gives it back at the join; with none left, both
-//! tasks run here, one after the other, with the same results. A helper
-//! thread itself never starts another. So a build never has more threads
-//! running than its budget, and with a budget of one it starts none: what
-//! a caller that runs many builds on its own threads (the Python package's
-//! vectorised functions) asks for.
+//! second thread and splits the rest between the two sides (the helper
+//! the smaller share: with two threads in all, it starts none), each
+//! side's given back at the join; with none left, both tasks run here,
+//! one after the other, with the same results. So a build never has more
+//! threads running than its budget (a build in halves, each half built in
+//! halves in turn, uses four with four), and with a budget of one it
+//! starts none: what a caller that runs many builds on its own threads
+//! (the Python package's vectorised functions) asks for.
 
 use std::cell::Cell;
 
@@ -63,10 +65,12 @@ pub(crate) fn run_beside<A: Send, B>(beside: impl FnOnce() -> A + Send, here: im
     // no other), or this one if the thread could not start.
     let task = std::sync::Mutex::new(Some(beside));
     let take_and_run = || task.lock().ok().and_then(|mut t| t.take()).map(|f| f());
+    // (the thread started holds one of the budget until the join, and
+    // may start `helper_spare` more)
+    let helper_spare = (spare - 1) / 2;
     std::thread::scope(|scope| {
-        let handle = std::thread::Builder::new().spawn_scoped(scope, || with_spare(0, take_and_run)).ok();
-        // (the thread started holds one of the budget until the join)
-        let b = with_spare(spare - usize::from(handle.is_some()), here);
+        let handle = std::thread::Builder::new().spawn_scoped(scope, || with_spare(helper_spare, take_and_run)).ok();
+        let b = with_spare(if handle.is_some() { spare - 1 - helper_spare } else { spare }, here);
         let a = handle.and_then(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).or_else(take_and_run);
         (a.expect("the task ran on one of the two threads"), b)
     })
@@ -103,6 +107,30 @@ mod tests {
         assert_eq!((b, inner_here), (here, (here, here)));
         // and the budget is back after
         assert_eq!(with_threads(2, spare), 1);
+        assert!(SPARE.with(|s| s.get()).is_none());
+    }
+
+    #[test]
+    fn four_threads_let_each_side_start_one_more_and_no_more() {
+        let here = std::thread::current().id();
+        let id = || std::thread::current().id();
+        // each side: the thread it runs on, and where its own two tasks
+        // ran, each of those with a third task nested in it
+        let side = || {
+            let (a, b) = run_beside(|| (id(), run_beside(id, id)), || (id(), run_beside(id, id)));
+            (id(), a, b)
+        };
+        let ((helper, (a, (a1, a2)), (b, (b1, b2))), (this, (c, (c1, c2)), (d, (d1, d2)))) =
+            with_threads(4, || run_beside(side, side));
+        assert_eq!(this, here);
+        assert_ne!(helper, here);
+        // each side started one thread, whose own tasks ran on it alone
+        assert_eq!((b, d), (helper, here));
+        assert!(a != helper && a != here && c != helper && c != here && a != c);
+        assert_eq!((a1, a2, c1, c2), (a, a, c, c));
+        // the sides' own threads, once their helpers were joined, started none
+        assert_eq!((b1, b2, d1, d2), (helper, helper, here, here));
+        assert_eq!(with_threads(4, spare), 3);
         assert!(SPARE.with(|s| s.get()).is_none());
     }
 

@@ -28,6 +28,14 @@
 //! the single thread's (a degenerate vertex on the cut may be cut as the
 //! other half would have: the canonical text, which cuts them one way,
 //! is the same); only the time differs.
+//!
+//! With four threads or more, a half whose thread may start another is
+//! built in halves in turn (`insert_all_nested`: the same plan, cut and
+//! glue on its local input, its own halves on the threads its budget
+//! holds), so the input is built in vertical strips glued pairwise. The
+//! glued half is the diagram of its local input, as the sequential build
+//! of it is, and goes on to its checks and the outer glue unchanged;
+//! where its own halves fail, it is built on its thread.
 
 mod glue;
 
@@ -108,6 +116,9 @@ pub struct HalvesReport {
     /// Whether the halves were glued; otherwise the build ran again on one
     /// thread.
     pub glued: bool,
+    /// Per half (left, right): whether it was built in halves in turn, and
+    /// glued (with threads to spare: four or more in all).
+    pub nested: [bool; 2],
     /// Wall time of the plan (the cut, the sites both halves hold), of the
     /// halves' builds (with the input check beside them), and of the glue.
     pub times: [std::time::Duration; 3],
@@ -149,12 +160,23 @@ pub(super) fn insert_all_in_halves_after(
     raw: &[[usize; 2]],
     check: impl FnOnce() -> Option<Vec<[usize; 2]>>,
 ) -> Option<Built> {
+    // The left half also runs the check, so it takes fewer sites.
+    let left_share = if raw.is_empty() { 0.5 } else { LEFT_SHARE_BESIDE_THE_CHECK };
+    insert_all_in_halves_with(points, raw, check, left_share)
+}
+
+/// [`insert_all_in_halves_after`] with the left half taking `left_share`
+/// of the points.
+fn insert_all_in_halves_with(
+    points: &[Point],
+    raw: &[[usize; 2]],
+    check: impl FnOnce() -> Option<Vec<[usize; 2]>>,
+    left_share: f64,
+) -> Option<Built> {
     if !worth_it(points.len() + raw.len()) {
         return None;
     }
     report(|r| *r = HalvesReport { sites: points.len() + raw.len(), ..HalvesReport::default() });
-    // The left half also runs the check, so it takes fewer sites.
-    let left_share = if raw.is_empty() { 0.5 } else { LEFT_SHARE_BESIDE_THE_CHECK };
     let started = std::time::Instant::now();
     let plan = Plan::of(points, raw.len(), left_share);
     report(|r| r.times[0] = started.elapsed());
@@ -164,11 +186,15 @@ pub(super) fn insert_all_in_halves_after(
     let started = std::time::Instant::now();
     let (tx, rx) = std::sync::mpsc::channel::<Option<std::sync::Arc<Vec<[usize; 2]>>>>();
     let shared_plan = &plan;
+    let halves_from = HALVES_FROM_HERE.with(|h| h.get());
     let (right, left) = run_beside(
         move || {
+            set_halves_from(halves_from);
             let plan = shared_plan;
             let half = Half::select(points, raw, plan, (plan.band, &plan.outside), Side::Right);
-            let stage = half.insert_points(points, raw.len());
+            // (its points first, while the other thread checks the input,
+            // unless the half is built in halves in turn)
+            let stage = (!half.nests()).then(|| half.insert_points(points, raw.len()));
             let segments = rx.recv().ok().flatten()?;
             half.finish(stage, points, &segments)
         },
@@ -178,8 +204,7 @@ pub(super) fn insert_all_in_halves_after(
             let _ = tx.send(segments.clone());
             let segments = segments?;
             let half = Half::select(points, raw, &plan, (plan.band, &plan.outside), Side::Left);
-            let stage = half.insert_points(points, raw.len());
-            let built = half.finish(stage, points, &segments);
+            let built = half.build(points, &segments);
             Some((segments, built))
         },
     );
@@ -189,6 +214,7 @@ pub(super) fn insert_all_in_halves_after(
         r.times[1] = started.elapsed();
         r.attempts = 1;
         r.held = [left.held_sites(), right.held_sites()];
+        r.nested = [left.nested, right.nested];
     });
     let band = match (left.needed_band, right.needed_band) {
         (None, None) => return glued(left, right, points.len(), segments.len()),
@@ -201,18 +227,38 @@ pub(super) fn insert_all_in_halves_after(
     }
     let outside = Outside::at(points, &plan.both, plan.cut, band);
     let (right, left) = super::threads::run_beside(
-        || Half::select(points, &segments, &plan, (band, &outside), Side::Right).build(points, &segments),
+        || {
+            set_halves_from(halves_from);
+            Half::select(points, &segments, &plan, (band, &outside), Side::Right).build(points, &segments)
+        },
         || Half::select(points, &segments, &plan, (band, &outside), Side::Left).build(points, &segments),
     );
     let (left, right) = (left?, right?);
     report(|r| {
         r.attempts = 2;
         r.held = [left.held_sites(), right.held_sites()];
+        r.nested = [left.nested, right.nested];
     });
     match (left.needed_band, right.needed_band) {
         (None, None) => glued(left, right, points.len(), segments.len()),
         _ => None,
     }
+}
+
+/// A half's diagram (of its local `points` and `segments`) built in halves
+/// in turn, on the threads its own thread may start: `None` when it may
+/// start none, the half is small, or its halves could not be glued (the
+/// caller builds it on its thread). Its halves take equal shares (the
+/// input is checked already), and the build's report stays the outer
+/// build's.
+fn insert_all_nested(points: &[Point], segments: &[[usize; 2]]) -> Option<Built> {
+    if !worth_it(points.len() + segments.len()) {
+        return None;
+    }
+    let outer = LAST_REPORT.with(|r| r.take());
+    let built = insert_all_in_halves_with(points, segments, || Some(segments.to_vec()), 0.5);
+    LAST_REPORT.with(|r| r.set(outer));
+    built
 }
 
 /// The halves glued (`glue::glue`), recorded in the report.
@@ -429,6 +475,8 @@ pub(super) struct BuiltHalf {
     /// Per site of the construction: whether this half owns it.
     owned: Vec<bool>,
     needed_band: Option<f64>,
+    /// Built in halves in turn (`insert_all_nested`).
+    nested: bool,
 }
 
 impl BuiltHalf {
@@ -498,7 +546,13 @@ impl Half<'_> {
     /// half's vertices: its store is the glued one, and grows in place).
     /// Returns them too, in the half's order (its local points).
     fn insert_points(&self, points: &[Point], segments: usize) -> (PointStage, Vec<Point>) {
-        let local: Vec<Point> = self.points.iter().map(|&i| points[i as usize]).collect();
+        let local = self.local_points(points);
+        (insert_points(&local, self.room(&local, points.len(), segments)), local)
+    }
+
+    /// The room its store makes for sites after its `local` points (of
+    /// `points` in all, with `segments`): see `insert_points`.
+    fn room(&self, local: &[Point], points: usize, segments: usize) -> usize {
         // Room for the sites to come: its segments, and on the left what
         // the glue appends: the right half's vertices but those of the
         // left's cells, about two per site the right holds (its sites, and
@@ -508,34 +562,45 @@ impl Half<'_> {
         // diagram of them has. No more: an array past the allocator's
         // threshold for its own mapping (32 MB in glibc) is mapped afresh
         // and its pages faulted in at every build.
-        let room = match self.side {
+        match self.side {
             Side::Left => {
                 let owned = local.iter().filter(|&&p| self.side.owns(&[p], self.plan.cut)).count();
                 let halo = local.len() - owned;
                 // (the sites the right holds: all but those the left owns, and a halo)
-                points.len() + segments - owned + halo + halo / 16
+                points + segments - owned + halo + halo / 16
             }
             Side::Right => segments,
-        };
-        (insert_points(&local, room), local)
+        }
     }
 
-    /// Builds the half on this thread and checks its owned cells; `None`
-    /// when its construction restarted or gave up (the single thread's
-    /// build then decides what to report).
+    /// The points it holds, in its order (its local points).
+    fn local_points(&self, points: &[Point]) -> Vec<Point> {
+        self.points.iter().map(|&i| points[i as usize]).collect()
+    }
+
+    /// Whether this half is built in halves in turn: it is large, and its
+    /// thread may start another.
+    fn nests(&self) -> bool {
+        worth_it(self.held_sites())
+    }
+
+    fn held_sites(&self) -> usize {
+        self.points.len() + self.segments.len()
+    }
+
+    /// Builds the half on this thread (in halves in turn where it
+    /// [`nests`](Self::nests)) and checks its owned cells; `None` when its
+    /// construction restarted or gave up (the single thread's build then
+    /// decides what to report).
     fn build(self, points: &[Point], segments: &[[usize; 2]]) -> Option<BuiltHalf> {
-        let stage = self.insert_points(points, segments.len());
+        let stage = (!self.nests()).then(|| self.insert_points(points, segments.len()));
         self.finish(stage, points, segments)
     }
 
-    /// [`build`](Self::build) after the points: the segments it holds of
-    /// `segments` (which `select` saw, or fewer), then the checks.
-    fn finish(
-        mut self,
-        (stage, local_points): (PointStage, Vec<Point>),
-        points: &[Point],
-        segments: &[[usize; 2]],
-    ) -> Option<BuiltHalf> {
+    /// [`build`](Self::build) after the points where `stage` has them (else
+    /// in halves in turn, or all here when those fail): the segments it
+    /// holds of `segments` (which `select` saw, or fewer), then the checks.
+    fn finish(mut self, stage: Option<(PointStage, Vec<Point>)>, points: &[Point], segments: &[[usize; 2]]) -> Option<BuiltHalf> {
         self.segments = (0..segments.len() as u32)
             .filter(|&k| Half::holds_segment(self.side, self.plan, self.band, points, segments[k as usize]))
             .collect();
@@ -551,7 +616,21 @@ impl Half<'_> {
                 pairs.push([a as usize, b as usize]);
             }
         }
-        let (construction, site_of_point, site_of_segment, outcome) = insert_all_from(stage, &local_points, &pairs);
+        // (a half built in halves in turn makes no room for the glue: its
+        // glued store grows there)
+        let ((construction, site_of_point, site_of_segment, outcome), nested) = match stage {
+            Some((stage, local)) => (insert_all_from(stage, &local, &pairs), false),
+            None => {
+                let local = self.local_points(points);
+                match insert_all_nested(&local, &pairs) {
+                    Some(built) => (built, true),
+                    None => {
+                        let room = self.room(&local, points.len(), segments.len());
+                        (insert_all_from(insert_points(&local, room), &local, &pairs), false)
+                    }
+                }
+            }
+        };
         if outcome.restarts > 0 || outcome.stuck.is_some() {
             return None;
         }
@@ -566,6 +645,7 @@ impl Half<'_> {
             site_of_segment,
             owned,
             needed_band,
+            nested,
         })
     }
 
