@@ -145,14 +145,26 @@ fn build_sites_and_arcs(
     arcs: &[CircularArc],
     check_arcs: &(dyn Fn() -> Result<(), Error> + Sync),
 ) -> Result<Sites, Error> {
-    // P<k> numbers the distinct points of this list by first appearance.
-    let mut all: Vec<Point> = Vec::with_capacity(points.len() + 2 * segments.len());
-    all.extend_from_slice(points);
-    for s in segments {
-        all.extend_from_slice(s);
-    }
+    // P<k> numbers the distinct points of this list by first appearance;
+    // the construction takes it scaled. (Both made at once on large
+    // inputs: each is a pass over all the points, and fresh memory.)
     let scale = input_scale(points, segments);
-    let scaled = to_internal(&all, scale);
+    let listed = || {
+        let mut all: Vec<Point> = Vec::with_capacity(points.len() + 2 * segments.len());
+        all.extend_from_slice(points);
+        segments.iter().for_each(|s| all.extend_from_slice(s));
+        all
+    };
+    let listed_scaled = || {
+        let mut scaled = Vec::with_capacity(points.len() + 2 * segments.len());
+        scaled.extend(points.iter().chain(segments.iter().flatten()).map(|p| internal(p, scale)));
+        scaled
+    };
+    let (scaled, all) = if points.len() + 2 * segments.len() >= PARALLEL_LIST_FROM {
+        run_beside(listed_scaled, listed)
+    } else {
+        (listed_scaled(), listed())
+    };
 
     // With a spare thread and no arcs, a large build runs in halves
     // (`halves/`): the check runs first on one thread, while the other
@@ -199,7 +211,6 @@ fn build_sites_and_arcs(
         return Ok(Sites::Shared(checked, pieces));
     }
     let kept: Vec<usize> = checked.segments.iter().map(|&(j, _)| j).collect();
-    let pairs = kept_pairs(&checked);
     let (mut built, site_of_input, segment_sites, outcome) = match built_in_halves {
         Some(built) => built,
         None => {
@@ -208,7 +219,7 @@ fn build_sites_and_arcs(
                 let (diagram, outcome) = build_split(stage, &checked, points, segments, &all, &scaled, scale, arcs)?;
                 return Ok(Sites::Built(Box::new(diagram), outcome));
             }
-            insert_all_from(stage, &scaled, &pairs)
+            insert_all_from(stage, &scaled, &kept_pairs(&checked))
         }
     };
     let arc_sites = with_arcs::insert_arcs(&mut built, &site_of_input, points.len() - 2 * arcs.len(), arcs, scale, &outcome)?;
@@ -348,6 +359,10 @@ fn endpoint_index(points: usize, j: usize) -> [usize; 2] {
 /// insertions (below, a thread costs more than it saves).
 const PARALLEL_CHECK_FROM: usize = 20_000;
 
+/// From this many points (with each segment's two ends) on, the list of
+/// the input's points and its scaled copy are made on two threads at once.
+const PARALLEL_LIST_FROM: usize = 1 << 16;
+
 /// The one power-of-two scale of a build (`Scale::for_points` of every
 /// coordinate, points and segment endpoints): the input check and the
 /// insertions both work in the coordinates it makes.
@@ -355,9 +370,14 @@ fn input_scale(points: &[Point], segments: &[[Point; 2]]) -> Scale {
     Scale::for_points(points.iter().chain(segments.iter().flatten()))
 }
 
-/// `input` in the construction's coordinates (scaled, with `-0` made `+0`).
+/// `input` in the construction's coordinates ([`internal`]).
 fn to_internal(input: &[Point], scale: Scale) -> Vec<Point> {
-    input.iter().map(|p| p.scaled(scale.to_internal).canonical_zero()).collect()
+    input.iter().map(|p| internal(p, scale)).collect()
+}
+
+/// `p` in the construction's coordinates (scaled, with `-0` made `+0`).
+fn internal(p: &Point, scale: Scale) -> Point {
+    p.scaled(scale.to_internal).canonical_zero()
 }
 
 /// The builder's error for an input conflict, naming both input indices

@@ -62,12 +62,13 @@ pub(super) fn renumber(
     let mut public_of = vec![NONE; internal_sites.len()];
     let (point_ids, segment_ids) = public_of.split_at_mut(first_internal_segment);
     // Where every input point has a site of its own (no repeats: most
-    // builds of points), a point's public id is its input index: the site
-    // table and the map are the input's, made on the other thread
-    // (`own_sites`) while this one fills `public_of`. (As many sites as
-    // inputs, none met twice: then each site has exactly one input.)
+    // builds of points, and of disjoint segments), a point's public id is
+    // its input index: the site table and the map are the input's
+    // (`own_sites`), made beside the filling of `public_of` or after it.
+    // (As many sites as inputs, none met twice: then each site has
+    // exactly one input.)
     let distinct = point_ids.len() == site_of_input.len() + 1;
-    let name_points = || {
+    let mut name_points = || {
         if distinct {
             let mut repeats = false;
             for (i, s) in site_of_input.iter().enumerate() {
@@ -113,9 +114,16 @@ pub(super) fn renumber(
         let arc_input = arcs.iter().map(|arc| arc.input as u32).collect::<Vec<_>>();
         (ends, segment_input, arc_input)
     };
+    // (the input's own tables beside the map, or after it where the
+    // other thread names segments: whichever side has less to do)
+    let own_beside = segments.internal.is_empty() && arcs.is_empty();
+    let here = move || match name_points() {
+        None if !own_beside => Some(own_sites()),
+        named => named,
+    };
     let (((segment_sites, segment_input, arc_input), own), named) =
-        beside_if(large, move || (name_segments(), own_sites()), name_points);
-    let (point_sites, input_site) = named.unwrap_or(own);
+        beside_if(large, move || (name_segments(), own_beside.then(own_sites)), here);
+    let (point_sites, input_site) = named.or(own).unwrap_or_default();
     let point_count = point_sites.len() as u32;
     segment_ids.iter_mut().filter(|id| **id != NONE).for_each(|id| *id += point_count);
     let sites = SiteTable::from_parts(point_sites, segment_sites, arcs.iter().map(|arc| arc.arc).collect());
