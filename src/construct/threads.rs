@@ -128,7 +128,7 @@ mod tests {
         assert_eq!((b, d), (helper, here));
         assert!(a != helper && a != here && c != helper && c != here && a != c);
         assert_eq!((a1, a2, c1, c2), (a, a, c, c));
-        // the sides' own threads, once their helpers were joined, started none
+        // the sides' own tasks, their budget held by their helpers, started none
         assert_eq!((b1, b2, d1, d2), (helper, helper, here, here));
         assert_eq!(with_threads(4, spare), 3);
         assert!(SPARE.with(|s| s.get()).is_none());
