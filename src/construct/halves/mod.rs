@@ -702,7 +702,10 @@ impl Half<'_> {
 /// (the held points of a half come in no order: a branch on each would be
 /// mispredicted half the time).
 fn indices_of(flags: &[bool]) -> Vec<u32> {
-    let mut indices = vec![0u32; flags.len()];
+    // (counted first: the list lives as long as the half, and room for
+    // every flag was megabytes more at the peak of a build)
+    let count = flags.iter().filter(|&&f| f).count();
+    let mut indices = vec![0u32; count + 1];
     let mut n = 0;
     for (i, &f) in flags.iter().enumerate() {
         indices[n] = i as u32;
