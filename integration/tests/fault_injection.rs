@@ -417,22 +417,32 @@ fn split_crossings_under_lying_arithmetic() {
 }
 
 /// Builds in halves on two threads (`diagnostics::set_halves_from`, from
-/// 64 sites on) under lying arithmetic (on the calling thread: the fault
-/// mode is per thread, so the left half and the check lie, the right half
-/// does not): a valid diagram or `Internal`, never an invalid one. Points,
-/// a lattice and segments, each with noise and with random numbers.
+/// 64 sites on), and on four (each half in halves in turn), under lying
+/// arithmetic (on the calling thread: the fault mode is per thread, so
+/// the left half or the left quarter and the check lie, the others do
+/// not): a valid diagram or `Internal`, never an invalid one. Points, a
+/// lattice and segments, each with noise and with random numbers.
 #[test]
 fn builds_in_halves_with_lying_arithmetic() {
     use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
     set_halves_from(Some(64));
-    let mut tried = 0;
+    let (mut tried, mut nested) = (0, 0);
     for (mode, seed) in [(FaultMode::Noise(1e-3), 11), (FaultMode::Random, 12), (FaultMode::Noise(1e-9), 13)] {
         let (pts, segs) = segment_grid(30, seed, 0.7);
         for (points, segments) in [(uniform(3000, seed), Vec::new()), (lattice(40), Vec::new()), (pts, segs)] {
-            let _ = try_build_under(mode, seed, &points, &segments);
-            tried += usize::from(take_halves_report().is_some());
+            for threads in [2, 4] {
+                let mut b = Builder::new();
+                b.add_points(points.iter().copied()).unwrap();
+                b.add_segments(segments.iter().copied()).unwrap();
+                b.threads(threads);
+                let _ = try_build_with(mode, seed, &b);
+                let report = take_halves_report();
+                tried += usize::from(report.is_some());
+                nested += usize::from(report.is_some_and(|r| r.nested.contains(&true)));
+            }
         }
     }
     set_halves_from(None);
-    assert_eq!(tried, 9, "every build tried halves");
+    assert_eq!(tried, 18, "every build tried halves");
+    assert!(nested >= 6, "only {nested} of 9 builds on four threads built a half in halves");
 }
