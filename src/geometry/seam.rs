@@ -21,7 +21,7 @@
 //! solutions, to a few ulps): `false` is always allowed (the build then
 //! takes a wider halo or one thread), `true` must never be wrong.
 
-use crate::geometry::Point;
+use crate::geometry::{Point, Site};
 
 /// The relative margin of both questions.
 const MARGIN: f64 = 1e-7;
@@ -324,14 +324,10 @@ impl Enclosure {
         let mut nearest = f64::INFINITY;
         for (i, &a) in inside.iter().enumerate() {
             let b = inside[(i + 1) % inside.len()];
-            let (ex, ey, px, py) = (b.x - a.x, b.y - a.y, position.x - a.x, position.y - a.y);
-            outside |= ex * py - ey * px < 0.0;
-            let length = ex * ex + ey * ey;
-            let t = if length > 0.0 { ((px * ex + py * ey) / length).clamp(0.0, 1.0) } else { 0.0 };
-            let (dx, dy) = (px - t * ex, py - t * ey);
-            nearest = nearest.min(dx * dx + dy * dy);
+            outside |= (b.x - a.x) * (position.y - a.y) - (b.y - a.y) * (position.x - a.x) < 0.0;
+            nearest = nearest.min(Site::Segment { a, b }.distance(position));
         }
-        outside && nearest.sqrt() > clearance + self.vertex_margin(clearance)
+        outside && nearest > clearance + self.vertex_margin(clearance)
     }
 }
 
