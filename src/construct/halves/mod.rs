@@ -247,14 +247,11 @@ fn insert_all_in_halves_with(
 
 /// A half's diagram (of its local `points` and `segments`) built in halves
 /// in turn, on the threads its own thread may start: `None` when it may
-/// start none, the half is small, or its halves could not be glued (the
-/// caller builds it on its thread). Its halves take equal shares (the
-/// input is checked already), and the build's report stays the outer
-/// build's.
+/// start none, the half is small (`insert_all_in_halves_with` asks), or
+/// its halves could not be glued (the caller builds it on its thread).
+/// Its halves take equal shares (the input is checked already), and the
+/// build's report stays the outer build's.
 fn insert_all_nested(points: &[Point], segments: &[[usize; 2]]) -> Option<Built> {
-    if !worth_it(points.len() + segments.len()) {
-        return None;
-    }
     let outer = LAST_REPORT.with(|r| r.take());
     let built = insert_all_in_halves_with(points, segments, || Some(segments.to_vec()), 0.5);
     LAST_REPORT.with(|r| r.set(outer));
