@@ -225,7 +225,8 @@ fn a_straight_fan_far_out_has_one_text_however_its_vertices_are_numbered() {
 }
 
 /// A point exactly on a segment (the build cuts the segment there): that
-/// build does not run in halves, and gives the one-thread diagram.
+/// build does not run in halves, and gives the one-thread diagram, on two
+/// threads and on four (where halves would be built in halves).
 #[test]
 fn a_point_exactly_on_a_segment_builds_as_one_thread_does() {
     use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
@@ -234,11 +235,13 @@ fn a_point_exactly_on_a_segment_builds_as_one_thread_does() {
     b.add_point([0.25, 0.5]).unwrap(); // on segment 0, exactly
     set_halves_from(Some(64));
     let one = fingerprint(&b.threads(1).build().unwrap());
-    let two = fingerprint(&b.threads(2).build().unwrap());
-    let glued = take_halves_report().is_some_and(|r| r.glued);
+    for threads in [2, 4] {
+        let many = fingerprint(&b.threads(threads).build().unwrap());
+        let glued = take_halves_report().is_some_and(|r| r.glued);
+        assert!(!glued, "{threads} threads");
+        assert!(one == many, "{threads} threads");
+    }
     set_halves_from(None);
-    assert!(!glued);
-    assert!(one == two);
 }
 
 /// Real outlines in halves: the countries of Debian's gmt-dcw and the
