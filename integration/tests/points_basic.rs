@@ -186,3 +186,15 @@ fn point_sites_are_numbered_by_first_appearance() {
         }
     }
 }
+
+/// Found by `properties.rs::brute_force_geometry_holds` (a random case):
+/// three nearly collinear points make a vertex 4.7e16 out, whose three
+/// distances differ by an ulp (8 at that size), more than the check's
+/// old tolerance of a billionth of the input's extent.
+#[test]
+fn far_vertex_of_nearly_collinear_points_is_equidistant_to_its_size() {
+    let d = build(&[[0.0, 1.0], [2.0, -1.0], [1.0, -3e-17]]);
+    assert_eq!(d.vertex_count(), 1);
+    assert!(d.vertices().all(|v| v.clearance > 1e16));
+    check_empty_circles(&d, 1e-9);
+}
