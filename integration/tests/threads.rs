@@ -424,3 +424,54 @@ fn builder_of(points: &[[f64; 2]], segments: &[[[f64; 2]; 2]]) -> Builder {
     b.add_segments(segments.iter().copied()).unwrap();
     b
 }
+
+/// The sites' coordinates, bit for bit (a `-0` shows here where the
+/// topology and the vertices would not tell).
+fn site_bits(d: &Diagram) -> Vec<[u64; 2]> {
+    let bits = |p: segvoronoi::Point| [p.x.to_bits(), p.y.to_bits()];
+    (0..d.site_count())
+        .filter_map(|s| match d.site(SiteId::from_index(s))? {
+            segvoronoi::Site::Point(p) => Some(bits(p)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// A build takes its input as the construction's coordinates where
+/// scaling changes nothing, and a copy with `+0` for `-0` where an input
+/// has one: a `-0` builds as `+0` does (a repeat of its `+0` twin, and a
+/// site at `+0`), on one thread and in halves, for points and segments.
+#[test]
+fn negative_zero_builds_as_positive_zero() {
+    let with_zero = |zero: f64| {
+        // uniform points with some on the axes, one of them twice
+        let mut points = float_points(120_000, 5);
+        for (k, p) in points.iter_mut().enumerate().step_by(997) {
+            p[k % 2] = zero;
+        }
+        points.extend([[zero, 0.5], [0.0, 0.5], [0.25, zero]]);
+        let mut b = Builder::new();
+        b.add_points(points).unwrap();
+        // and short segments, with one along the y-axis below them all
+        let segments = generate(Method::Short, 25_000, 9).segments;
+        let mut s = Builder::new();
+        s.add_segments(segments.iter().map(|s| [[f64::from(s[0]), f64::from(s[1])], [f64::from(s[2]), f64::from(s[3])]]))
+            .unwrap();
+        s.add_segment([[zero, -20.0], [zero, -10.0]]).unwrap();
+        s.add_points([[zero, -30.0]]).unwrap();
+        // points all on the y-axis (a collinear build sorts them)
+        let mut c = Builder::new();
+        c.add_points([[zero, 2.0], [0.0, 1.0], [zero, 3.0], [0.0, 0.5], [zero, -1.0]]).unwrap();
+        [b, s, c]
+    };
+    let (mut negative, mut positive) = (with_zero(-0.0), with_zero(0.0));
+    for (what, (n, p)) in ["points", "segments", "points on the y-axis"].iter().zip(negative.iter_mut().zip(positive.iter_mut()))
+    {
+        for threads in [1, 2] {
+            let (dn, dp) = (n.threads(threads).build().unwrap(), p.threads(threads).build().unwrap());
+            assert!(fingerprint(&dn) == fingerprint(&dp), "{what} at {threads} threads: -0 builds another diagram than +0");
+            assert_eq!(site_bits(&dn), site_bits(&dp), "{what} at {threads} threads: a site keeps its -0");
+            assert_eq!(dn.stats().duplicate_points, dp.stats().duplicate_points, "{what}");
+        }
+    }
+}
