@@ -168,6 +168,9 @@ const FINE: usize = 64;
 pub(crate) struct Polygon {
     edges: Vec<(Point, f64, f64)>,
     margin: f64,
+    /// Its points strictly inside every edge by twice the margin: no
+    /// vertex of the hull.
+    deep: InnerBox,
 }
 
 impl Polygon {
@@ -175,22 +178,134 @@ impl Polygon {
     /// finite ones skipped).
     fn through(corners: impl Iterator<Item = Point> + Clone, margin: f64) -> Polygon {
         let next = corners.clone().cycle().skip(1);
-        let edges = corners
+        let edges: Vec<(Point, f64, f64)> = corners
             .zip(next)
             .filter(|(a, b)| a != b && a.x.is_finite() && b.x.is_finite())
             .map(|(a, b)| (a, b.x - a.x, b.y - a.y))
             .collect();
-        Polygon { edges, margin }
+        let (lo, hi) = bounds(edges.iter().map(|e| e.0));
+        let inside_every_edge = |c: Point| edges.iter().all(|&(a, dx, dy)| dx * (c.y - a.y) - dy * (c.x - a.x) > 2.0 * margin);
+        // (the margin far above the rounding of an edge's value: see `InnerBox`)
+        let deep = if edges.len() >= 3 && margin.is_finite() && margin > TINY {
+            InnerBox::within(lo, hi, inside_every_edge)
+        } else {
+            InnerBox::EMPTY
+        };
+        Polygon { edges, margin, deep }
     }
 
     /// Whether `p` (of the set) may be a vertex of its convex hull: it is
     /// not strictly inside every edge by the margin (or there are fewer
     /// than three edges).
+    #[inline]
     pub(crate) fn may_hold_on_its_boundary(&self, p: Point) -> bool {
-        // (every edge asked, without a branch: most points are inside all)
+        // (most points are deep inside: a box answers for them)
+        !self.deep.holds(p) && self.asked_of_every_edge(p)
+    }
+
+    /// [`may_hold_on_its_boundary`](Self::may_hold_on_its_boundary)
+    /// without the box.
+    fn asked_of_every_edge(&self, p: Point) -> bool {
+        // (every edge asked, without a branch)
         let outside_an_edge =
             self.edges.iter().fold(false, |out, &(a, dx, dy)| out | (dx * (p.y - a.y) - dy * (p.x - a.x) <= self.margin));
         self.edges.len() < 3 || outside_an_edge
+    }
+}
+
+/// The least margin [`InnerBox`] builds on: far above the absolute
+/// rounding of subnormal numbers.
+const TINY: f64 = 1e-280;
+
+/// The bounding box of `points` (empty: `∞` to `-∞`).
+fn bounds(points: impl Iterator<Item = Point>) -> (Point, Point) {
+    let empty = (Point::new(f64::INFINITY, f64::INFINITY), Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY));
+    points.fold(empty, |(lo, hi), p| (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y))))
+}
+
+/// A box whose points all answer a test alike, found once, so that the
+/// test is asked only of the few points outside it (most points of a
+/// large set lie deep inside its hull, far from the boundary both
+/// [`Polygon::may_hold_on_its_boundary`] and [`NearSides::holds`] look
+/// for).
+///
+/// Both tests are linear in the point (a value along a direction, from a
+/// side or an edge, against a threshold), so a box passes one when its four
+/// corners do: its points are averages of them. The corners are asked with
+/// twice the test's margin, and the margins (`MARGIN` of the set's size,
+/// or its square for a polygon's edges) are far above the rounding of the
+/// values (a few ulps of the size), so a point strictly inside the box
+/// passes the test as computed, not only exactly.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct InnerBox {
+    lo: Point,
+    hi: Point,
+}
+
+impl InnerBox {
+    /// The box of no point.
+    pub(crate) const EMPTY: InnerBox =
+        InnerBox { lo: Point::new(f64::INFINITY, f64::INFINITY), hi: Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY) };
+
+    /// Whether `p` lies strictly inside (`false` for NaN).
+    #[inline]
+    pub(crate) fn holds(&self, p: Point) -> bool {
+        (p.x > self.lo.x) & (p.x < self.hi.x) & (p.y > self.lo.y) & (p.y < self.hi.y)
+    }
+
+    /// The box `lo..hi` shrunk about its centre as little as bisection
+    /// finds with all four corners passing `deep` (a convex region holding
+    /// the centre holds the corners up to some factor, and none beyond);
+    /// empty where the centre fails or anything is not finite.
+    fn within(lo: Point, hi: Point, deep: impl Fn(Point) -> bool) -> InnerBox {
+        let centre = Point::new(0.5 * lo.x + 0.5 * hi.x, 0.5 * lo.y + 0.5 * hi.y);
+        let (half_x, half_y) = (0.5 * hi.x - 0.5 * lo.x, 0.5 * hi.y - 0.5 * lo.y);
+        if !(centre.x.is_finite() && centre.y.is_finite() && half_x.is_finite() && half_y.is_finite()) {
+            return InnerBox::EMPTY;
+        }
+        let shrunk = |t: f64| InnerBox {
+            lo: Point::new(centre.x - t * half_x, centre.y - t * half_y),
+            hi: Point::new(centre.x + t * half_x, centre.y + t * half_y),
+        };
+        let passes = |t: f64| {
+            let b = shrunk(t);
+            [b.lo, b.hi, Point::new(b.lo.x, b.hi.y), Point::new(b.hi.x, b.lo.y)].into_iter().all(&deep)
+        };
+        if !passes(0.0) {
+            return InnerBox::EMPTY;
+        }
+        let (mut good, mut bad) = (0.0, 1.0);
+        if passes(bad) {
+            good = bad;
+        } else {
+            for _ in 0..20 {
+                let t = 0.5 * (good + bad);
+                if passes(t) {
+                    good = t;
+                } else {
+                    bad = t;
+                }
+            }
+        }
+        // (the same corners as asked: `shrunk` is a pure function of `t`)
+        shrunk(good)
+    }
+}
+
+/// [`Enclosure::near_a_side`] for one band ([`Enclosure::near_sides`]).
+pub(crate) struct NearSides<'a> {
+    enclosure: &'a Enclosure,
+    band: f64,
+    /// Its points are near no side.
+    deep: InnerBox,
+}
+
+impl NearSides<'_> {
+    /// Whether `p` lies within the band of a side (as
+    /// [`Enclosure::near_a_side`] answers).
+    #[inline]
+    pub(crate) fn holds(&self, p: Point) -> bool {
+        !self.deep.holds(p) && self.enclosure.near_a_side(p, self.band)
     }
 }
 
@@ -235,6 +350,22 @@ impl Enclosure {
     pub(crate) fn box_area(&self) -> f64 {
         let s = &self.support;
         (s[0] + s[SIDES / 2]) * (s[SIDES / 4] + s[3 * SIDES / 4])
+    }
+
+    /// [`near_a_side`](Self::near_a_side) for one `band`, asked of many
+    /// points: those deep inside are answered by a box.
+    pub(crate) fn near_sides(&self, band: f64) -> NearSides<'_> {
+        let s = &self.support;
+        let (lo, hi) = (Point::new(-s[SIDES / 2], -s[3 * SIDES / 4]), Point::new(s[0], s[SIDES / 4]));
+        // (inside every side moved in by the band, by twice the slack; the
+        // slack far above the rounding of a value along a side: see `InnerBox`)
+        let short_of_every_side = |c: Point| (0..SIDES).all(|k| along(c, k) <= (s[k] - band - self.slack) - self.slack);
+        let deep = if self.slack.is_finite() && self.slack > TINY {
+            InnerBox::within(lo, hi, short_of_every_side)
+        } else {
+            InnerBox::EMPTY
+        };
+        NearSides { enclosure: self, band, deep }
     }
 
     /// Whether `p` lies within `band` of a side (or near enough that
@@ -535,5 +666,113 @@ mod tests {
             let some = kept.iter().map(along).fold(f64::NEG_INFINITY, f64::max);
             assert_eq!(all, some, "direction {k}");
         }
+    }
+
+    /// `x` moved by `ulps` units in the last place (toward +∞ for positive
+    /// `ulps`), through zero.
+    fn nudged(x: f64, ulps: i64) -> f64 {
+        let mut y = x;
+        for _ in 0..ulps.unsigned_abs() {
+            let up = ulps > 0;
+            y = if y == 0.0 {
+                if up {
+                    f64::from_bits(1)
+                } else {
+                    -f64::from_bits(1)
+                }
+            } else if (y > 0.0) == up {
+                f64::from_bits(y.to_bits() + 1)
+            } else {
+                f64::from_bits(y.to_bits() - 1)
+            };
+        }
+        y
+    }
+
+    /// The boxes answer as the whole tests do: for the octagon and the
+    /// fine polygon of a set's extremes and for the enclosure's sides at
+    /// several bands, on the set's points, random points round it, and
+    /// points on, just inside and just outside each box's edges and
+    /// corners; on a square, a disk, a lattice, a sliver, points on a line,
+    /// one point, far from the origin, and tiny and huge magnitudes. On the
+    /// square the boxes hold most points (the quick answer is taken).
+    #[test]
+    fn inner_boxes_answer_as_the_whole_tests() {
+        let mut rng = crate::splitmix::SplitMix64(17);
+        let square: Vec<Point> = (0..3000).map(|_| Point::new(rng.unit(), rng.unit())).collect();
+        let disk: Vec<Point> = (0..3000)
+            .map(|_| {
+                let (a, r) = (rng.unit() * std::f64::consts::TAU, rng.unit().sqrt());
+                Point::new(r * a.cos(), r * a.sin())
+            })
+            .collect();
+        let lattice: Vec<Point> = (0..2500).map(|i| Point::new((i % 50) as f64, (i / 50) as f64)).collect();
+        let sliver: Vec<Point> = (0..1000).map(|_| Point::new(rng.unit(), 1e-9 * rng.unit())).collect();
+        let line: Vec<Point> = (0..500).map(|i| Point::new(i as f64, 2.0 * i as f64)).collect();
+        let one = vec![Point::new(3.0, 4.0)];
+        let moved =
+            |points: &[Point], f: &dyn Fn(f64) -> f64| points.iter().map(|p| Point::new(f(p.x), f(p.y))).collect::<Vec<_>>();
+        let far = moved(&square, &|v| v + 2f64.powi(30));
+        let tiny = moved(&square, &|v| v * 1e-150);
+        let huge = moved(&disk, &|v| v * 1e150);
+        let mut quick = 0;
+        for (name, points) in [
+            ("square", &square),
+            ("disk", &disk),
+            ("lattice", &lattice),
+            ("sliver", &sliver),
+            ("line", &line),
+            ("one", &one),
+            ("far", &far),
+            ("tiny", &tiny),
+            ("huge", &huge),
+        ] {
+            let (lo, hi) = bounds(points.iter().copied());
+            let size = (hi.x - lo.x).max(hi.y - lo.y);
+            let mut queries: Vec<Point> = points.clone();
+            for _ in 0..3000 {
+                let (u, v) = (1.4 * rng.unit() - 0.2, 1.4 * rng.unit() - 0.2);
+                queries.push(Point::new(lo.x + u * (hi.x - lo.x), lo.y + v * (hi.y - lo.y)));
+            }
+            queries.extend([Point::new(f64::NAN, lo.y), Point::new(f64::INFINITY, f64::NEG_INFINITY)]);
+            let around = |b: &InnerBox| {
+                let mut at = Vec::new();
+                for x in [b.lo.x, b.hi.x, 0.5 * b.lo.x + 0.5 * b.hi.x] {
+                    for y in [b.lo.y, b.hi.y, 0.5 * b.lo.y + 0.5 * b.hi.y] {
+                        for (dx, dy) in [(0, 0), (1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, -1), (3, -3)] {
+                            at.push(Point::new(nudged(x, dx), nudged(y, dy)));
+                        }
+                    }
+                }
+                at.into_iter().filter(|p| p.x.is_finite() && p.y.is_finite()).collect::<Vec<_>>()
+            };
+            let extremes = Extremes::of(points);
+            for polygon in [extremes.octagon(), extremes.fine_polygon(points)] {
+                let mut asked = queries.clone();
+                asked.extend(around(&polygon.deep));
+                for &p in &asked {
+                    assert_eq!(polygon.may_hold_on_its_boundary(p), polygon.asked_of_every_edge(p), "{name}: {p:?}");
+                }
+                if name == "square" {
+                    assert!(points.iter().filter(|&&p| polygon.deep.holds(p)).count() > points.len() * 9 / 10, "{name}");
+                    quick += 1;
+                }
+            }
+            let enclosure = Enclosure::of(points);
+            for band in [0.0, 0.003 * size, 0.05 * size, 0.4 * size, 3.0 * size] {
+                let near = enclosure.near_sides(band);
+                let mut asked = queries.clone();
+                asked.extend(around(&near.deep));
+                for &p in &asked {
+                    assert_eq!(near.holds(p), enclosure.near_a_side(p, band), "{name}, band {band}: {p:?}");
+                }
+                if name == "square" && band <= 0.05 * size {
+                    // (the box inside the sides moved in by the band: about (1 - 2 band)^2 of the square)
+                    assert!(points.iter().filter(|&&p| near.deep.holds(p)).count() > points.len() * 7 / 10, "{name} {band}");
+                    quick += 1;
+                }
+            }
+        }
+        assert_eq!(quick, 5);
     }
 }

@@ -312,7 +312,7 @@ impl Plan {
         }
         let (band, rim) = (FIRST_BAND * spacing, RIM * spacing);
         let cut = quantile_x(points, left_share)?;
-        let octagon = extremes.octagon();
+        let (octagon, near_rim) = (extremes.octagon(), enclosure.near_sides(rim));
         // (with the extremes of what each half leaves out at the first
         // band, in the same pass: see `Outside::at`)
         let held = |part: &[Point]| -> (Vec<bool>, usize, usize, [Extremes; 2]) {
@@ -321,7 +321,7 @@ impl Plan {
                 .iter()
                 .map(|&p| {
                     let hull = octagon.may_hold_on_its_boundary(p);
-                    let held = hull || enclosure.near_a_side(p, rim);
+                    let held = hull || near_rim.holds(p);
                     on_hull += usize::from(hull);
                     count += usize::from(held);
                     Outside::add(&mut beyond, p, held, cut, band);
