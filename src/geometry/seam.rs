@@ -499,6 +499,18 @@ const DIRECTIONS: [(f64, f64); SIDES] = {
 mod tests {
     use super::*;
 
+    /// `n` uniform random points in the unit square, and `n` in the unit disk.
+    fn square_and_disk(rng: &mut crate::splitmix::SplitMix64, n: usize) -> (Vec<Point>, Vec<Point>) {
+        let square = (0..n).map(|_| Point::new(rng.unit(), rng.unit())).collect();
+        let disk = (0..n)
+            .map(|_| {
+                let (a, r) = (rng.unit() * std::f64::consts::TAU, rng.unit().sqrt());
+                Point::new(r * a.cos(), r * a.sin())
+            })
+            .collect();
+        (square, disk)
+    }
+
     /// `inside` holds every point not near a side, and a disk that
     /// `vertex_misses` passes holds none of them: on a square, a disk and
     /// a lattice (corners, straight sides, ties), far from the origin too,
@@ -506,13 +518,7 @@ mod tests {
     #[test]
     fn a_disk_that_misses_the_inside_holds_only_points_near_a_side() {
         let mut rng = crate::splitmix::SplitMix64(9);
-        let square: Vec<Point> = (0..4000).map(|_| Point::new(rng.unit(), rng.unit())).collect();
-        let disk: Vec<Point> = (0..4000)
-            .map(|_| {
-                let (a, r) = (rng.unit() * std::f64::consts::TAU, rng.unit().sqrt());
-                Point::new(r * a.cos(), r * a.sin())
-            })
-            .collect();
+        let (square, disk) = square_and_disk(&mut rng, 4000);
         let lattice: Vec<Point> = (0..3000).map(|i| Point::new((i % 60) as f64, (i / 60) as f64)).collect();
         let far: Vec<Point> = square.iter().map(|p| Point::new(p.x + 2f64.powi(30), p.y - 2f64.powi(30))).collect();
         let (mut passed, mut failed) = (0, 0);
@@ -699,13 +705,7 @@ mod tests {
     #[test]
     fn inner_boxes_answer_as_the_whole_tests() {
         let mut rng = crate::splitmix::SplitMix64(17);
-        let square: Vec<Point> = (0..3000).map(|_| Point::new(rng.unit(), rng.unit())).collect();
-        let disk: Vec<Point> = (0..3000)
-            .map(|_| {
-                let (a, r) = (rng.unit() * std::f64::consts::TAU, rng.unit().sqrt());
-                Point::new(r * a.cos(), r * a.sin())
-            })
-            .collect();
+        let (square, disk) = square_and_disk(&mut rng, 3000);
         let lattice: Vec<Point> = (0..2500).map(|i| Point::new((i % 50) as f64, (i / 50) as f64)).collect();
         let sliver: Vec<Point> = (0..1000).map(|_| Point::new(rng.unit(), 1e-9 * rng.unit())).collect();
         let line: Vec<Point> = (0..500).map(|i| Point::new(i as f64, 2.0 * i as f64)).collect();
