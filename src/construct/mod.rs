@@ -147,32 +147,13 @@ fn build_sites_and_arcs(
     check_arcs: &(dyn Fn() -> Result<(), Error> + Sync),
 ) -> Result<Sites, Error> {
     // P<k> numbers the distinct points of this list by first appearance;
-    // the construction takes it scaled. (Both made at once on large
-    // inputs: each is a pass over all the points, and fresh memory.)
+    // the construction takes it scaled (the list itself where scaling
+    // changes no point, the usual case: see `to_internal`).
     let scale = input_scale(points, segments);
-    let listed = || {
-        let mut all: Vec<Point> = Vec::with_capacity(points.len() + 2 * segments.len());
-        all.extend_from_slice(points);
-        segments.iter().for_each(|s| all.extend_from_slice(s));
-        all
-    };
-    let listed_scaled = || {
-        let mut scaled = Vec::with_capacity(points.len() + 2 * segments.len());
-        scaled.extend(points.iter().chain(segments.iter().flatten()).map(|p| internal(p, scale)));
-        scaled
-    };
-    // (where scaling changes no point, the construction takes the list
-    // itself: 32 MB less at a million segments)
-    let unchanged = internal_is_input(points.iter().chain(segments.iter().flatten()), scale);
-    let (scaled, all) = if unchanged {
-        (None, listed())
-    } else if points.len() + 2 * segments.len() >= PARALLEL_LIST_FROM {
-        let (scaled, all) = run_beside(listed_scaled, listed);
-        (Some(scaled), all)
-    } else {
-        (Some(listed_scaled()), listed())
-    };
-    let scaled: &[Point] = scaled.as_deref().unwrap_or(&all);
+    let mut all: Vec<Point> = Vec::with_capacity(points.len() + 2 * segments.len());
+    all.extend_from_slice(points);
+    segments.iter().for_each(|s| all.extend_from_slice(s));
+    let scaled = to_internal(&all, scale);
 
     // With a spare thread and no arcs, a large build runs in halves
     // (`halves/`): the check runs first on one thread, while the other
@@ -367,10 +348,6 @@ fn endpoint_index(points: usize, j: usize) -> [usize; 2] {
 /// insertions (below, a thread costs more than it saves).
 const PARALLEL_CHECK_FROM: usize = 20_000;
 
-/// From this many points (with each segment's two ends) on, the list of
-/// the input's points and its scaled copy are made on two threads at once.
-const PARALLEL_LIST_FROM: usize = 1 << 16;
-
 /// The one power-of-two scale of a build (`Scale::for_points` of every
 /// coordinate, points and segment endpoints): the input check and the
 /// insertions both work in the coordinates it makes.
@@ -378,29 +355,19 @@ fn input_scale(points: &[Point], segments: &[[Point; 2]]) -> Scale {
     Scale::for_points(points.iter().chain(segments.iter().flatten()))
 }
 
-/// `input` in the construction's coordinates ([`internal`]): the input
-/// itself where that changes nothing (the identity scale, and no `-0`),
-/// which spares a copy as large as the input and its fresh pages (16 MB
-/// and 5 ms at a million points).
+/// `input` in the construction's coordinates (scaled, with `-0` made
+/// `+0`): the input itself where that changes nothing (the identity
+/// scale, and no `-0`), which spares a copy as large as the input and
+/// its fresh pages (16 MB and 5 ms at a million points).
 fn to_internal(input: &[Point], scale: Scale) -> Cow<'_, [Point]> {
-    if internal_is_input(input, scale) {
-        Cow::Borrowed(input)
-    } else {
-        Cow::Owned(input.iter().map(|p| internal(p, scale)).collect())
-    }
-}
-
-/// Whether [`internal`] leaves every point of `input` as it is.
-fn internal_is_input<'a>(input: impl IntoIterator<Item = &'a Point>, scale: Scale) -> bool {
     // (one pass without a branch; `-0.0 == 0.0`, hence the bits)
     const NEGATIVE_ZERO: u64 = 1 << 63;
     let negative_zero = |p: &Point| (p.x.to_bits() == NEGATIVE_ZERO) | (p.y.to_bits() == NEGATIVE_ZERO);
-    scale.is_identity() && !input.into_iter().fold(false, |any, p| any | negative_zero(p))
-}
-
-/// `p` in the construction's coordinates (scaled, with `-0` made `+0`).
-fn internal(p: &Point, scale: Scale) -> Point {
-    p.scaled(scale.to_internal).canonical_zero()
+    if scale.is_identity() && !input.iter().fold(false, |any, p| any | negative_zero(p)) {
+        Cow::Borrowed(input)
+    } else {
+        Cow::Owned(input.iter().map(|p| p.scaled(scale.to_internal).canonical_zero()).collect())
+    }
 }
 
 /// The builder's error for an input conflict, naming both input indices
