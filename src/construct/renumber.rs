@@ -6,6 +6,7 @@ use super::input_check::CheckedInput;
 use super::state::{Construction, Parts, INFINITE};
 use super::threads::run_beside;
 use crate::diagram::{BuildStats, Diagram, HalfEdgeId, SiteId, SiteTable, VertexId, NONE};
+use crate::geometry::point::bounding_box;
 use crate::geometry::scale::Scale;
 use crate::geometry::Point;
 
@@ -281,12 +282,7 @@ fn to_input(positions: &mut [Point], clearances: &mut [f64], scale: Scale) {
 /// The diagonal of the points' bounding box (0 for none); large sets on
 /// two threads, by halves.
 fn bounding_box_diagonal(point_sites: &[Point]) -> f64 {
-    let bounds = |part: &[Point]| {
-        part.iter()
-            .fold((Point::new(f64::INFINITY, f64::INFINITY), Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY)), |(lo, hi), p| {
-                (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y)))
-            })
-    };
+    let bounds = |part: &[Point]| bounding_box(part.iter().copied());
     let (low, high) = point_sites.split_at(point_sites.len() / 2);
     let ((lo_high, hi_high), (lo, hi)) = beside_if(point_sites.len() >= PARALLEL_FROM, || bounds(high), || bounds(low));
     if point_sites.is_empty() {

@@ -68,6 +68,15 @@ impl Point {
     }
 }
 
+/// The bounding box of `points`, lowest and highest corner (no point:
+/// `∞` to `-∞`; NaN coordinates are passed over).
+pub(crate) fn bounding_box(points: impl IntoIterator<Item = Point>) -> (Point, Point) {
+    let empty = (Point::new(f64::INFINITY, f64::INFINITY), Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY));
+    points
+        .into_iter()
+        .fold(empty, |(lo, hi), p| (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y))))
+}
+
 impl From<[f64; 2]> for Point {
     fn from(p: [f64; 2]) -> Self {
         Point::new(p[0], p[1])

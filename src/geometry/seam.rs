@@ -21,6 +21,7 @@
 //! solutions, to a few ulps): `false` is always allowed (the build then
 //! takes a wider halo or one thread), `true` must never be wrong.
 
+use crate::geometry::point::bounding_box;
 use crate::geometry::{Point, Site};
 
 /// The relative margin of both questions.
@@ -183,7 +184,7 @@ impl Polygon {
             .filter(|(a, b)| a != b && a.x.is_finite() && b.x.is_finite())
             .map(|(a, b)| (a, b.x - a.x, b.y - a.y))
             .collect();
-        let (lo, hi) = bounds(edges.iter().map(|e| e.0));
+        let (lo, hi) = bounding_box(edges.iter().map(|e| e.0));
         let inside_every_edge = |c: Point| edges.iter().all(|&(a, dx, dy)| dx * (c.y - a.y) - dy * (c.x - a.x) > 2.0 * margin);
         // (the margin far above the rounding of an edge's value: see `InnerBox`)
         let deep = if edges.len() >= 3 && margin.is_finite() && margin > TINY {
@@ -216,12 +217,6 @@ impl Polygon {
 /// The least margin [`InnerBox`] builds on: far above the absolute
 /// rounding of subnormal numbers.
 const TINY: f64 = 1e-280;
-
-/// The bounding box of `points` (empty: `∞` to `-∞`).
-fn bounds(points: impl Iterator<Item = Point>) -> (Point, Point) {
-    let empty = (Point::new(f64::INFINITY, f64::INFINITY), Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY));
-    points.fold(empty, |(lo, hi), p| (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y))))
-}
 
 /// A box whose points all answer a test alike, found once, so that the
 /// test is asked only of the few points outside it (most points of a
@@ -524,9 +519,7 @@ mod tests {
         let (mut passed, mut failed) = (0, 0);
         for points in [square, disk, lattice, far] {
             let enclosure = Enclosure::of(&points);
-            let (lo, hi) = points.iter().fold((points[0], points[0]), |(lo, hi), p| {
-                (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y)))
-            });
+            let (lo, hi) = bounding_box(points.iter().copied());
             let size = (hi.x - lo.x).max(hi.y - lo.y);
             for band in [0.01 * size, 0.05 * size, 0.3 * size] {
                 let inside = enclosure.inside(band).expect("finite sides");
@@ -727,7 +720,7 @@ mod tests {
             ("tiny", &tiny),
             ("huge", &huge),
         ] {
-            let (lo, hi) = bounds(points.iter().copied());
+            let (lo, hi) = bounding_box(points.iter().copied());
             let size = (hi.x - lo.x).max(hi.y - lo.y);
             let mut queries: Vec<Point> = points.clone();
             for _ in 0..3000 {
