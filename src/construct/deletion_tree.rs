@@ -158,6 +158,9 @@ impl Construction {
             self.vertex_mark[v.index()] = 0;
         }
         self.store.cell_edge[s.index()] = self.new_vertices[0].half_edge(1).0;
+        if self.placement_deferred {
+            return;
+        }
         for j in 0..k {
             let on = cut_edges.get(j).copied().flatten();
             self.place_vertex_on(self.new_vertices[j], on);

@@ -57,6 +57,14 @@ pub(super) enum PointStage {
 
 /// Inserts every point (with room for `segment_count` segments after them).
 pub(super) fn insert_points(points: &[Point], segment_count: usize) -> PointStage {
+    // (where fault injection makes the predicates lie, seeds are chosen by
+    // their circles, which are then placed as they come: see `seed_vertex`)
+    insert_points_placing(points, segment_count, !crate::geometry::fault::active())
+}
+
+/// [`insert_points`], placing the vertices once all points are in
+/// (`defer`) or as they come.
+fn insert_points_placing(points: &[Point], segment_count: usize, defer: bool) -> PointStage {
     let n = points.len();
     let mut site_of = vec![SiteId(NONE); n];
     let mut diagram = Construction::new(n + segment_count);
@@ -90,6 +98,7 @@ pub(super) fn insert_points(points: &[Point], segment_count: usize) -> PointStag
         .map(|i| (i, points[i as usize]))
         .collect();
     drop(order);
+    diagram.placement_deferred = defer;
     for (i, p) in rest {
         match diagram.insert(p, last) {
             Inserted::New(s) => {
@@ -99,6 +108,7 @@ pub(super) fn insert_points(points: &[Point], segment_count: usize) -> PointStag
             Inserted::Duplicate(s) => site_of[i as usize] = s,
         }
     }
+    diagram.place_deferred();
     PointStage::Inserted(diagram, site_of)
 }
 
@@ -163,7 +173,22 @@ impl Construction {
     /// The vertex of `g`'s cell whose circle most clearly contains `p`,
     /// checked exactly; if the numbers found none on `g`'s cell (the walk
     /// stopped one cell short), a bounded search around it.
+    ///
+    /// While placement is deferred (the circles are not known yet), the
+    /// first vertex of `g`'s cell in conflict: with exact predicates any
+    /// vertex in conflict seeds the same tree (the set of vertices whose
+    /// circles strictly contain `p`, connected); the choice by depth only
+    /// matters where the predicates lie (fault injection).
     fn seed_vertex(&mut self, g: SiteId, p: Point) -> VertexId {
+        if self.placement_deferred {
+            if let Some(v) = self.store.cell_boundary(g).map(|h| h.origin()).find(|&v| self.in_conflict(v, p)) {
+                return v;
+            }
+            let found = self.search_seed_around(g, p);
+            self.fresh_epoch();
+            let first = self.store.cell_boundary(g).next().map(|h| h.origin());
+            return found.or(first).expect("a cell with a boundary has vertices");
+        }
         let mut best = None;
         let mut best_depth = f64::INFINITY;
         for h in self.store.cell_boundary(g) {
@@ -246,6 +271,61 @@ impl Construction {
                 self.cell_mark[third.index()] = epoch;
                 self.tree.push(w);
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::splitmix::SplitMix64;
+
+    /// Each vertex by its sites (rotated to start at the least), with its
+    /// position and clearance bit for bit: the same for the same diagram
+    /// however its vertices are numbered.
+    fn vertices_by_sites(c: &Construction) -> Vec<([SiteId; 3], [u64; 3])> {
+        let store = c.store();
+        let mut vertices: Vec<_> = (0..store.vertex_count())
+            .map(VertexId::from_index)
+            .map(|v| {
+                let mut sites = store.sites_of(v);
+                let k = (0..3).min_by_key(|&k| sites[k]).unwrap_or(0);
+                sites.rotate_left(k);
+                let (p, r) = (store.position[v.index()], store.clearance[v.index()]);
+                (sites, [p.x.to_bits(), p.y.to_bits(), r.to_bits()])
+            })
+            .collect();
+        vertices.sort();
+        vertices
+    }
+
+    /// Vertices placed once the points are in are the diagram's placed as
+    /// they come, bit for bit, and the first-in-conflict seeds grow the
+    /// same diagram as the deepest: on points in general position, on a
+    /// lattice with repeats (four and more on a circle everywhere), on
+    /// points all on one circle, and far from the origin.
+    #[test]
+    fn deferred_placement_places_as_at_creation() {
+        let mut rng = SplitMix64(21);
+        let uniform: Vec<Point> = (0..6000).map(|_| Point::new(rng.unit(), rng.unit())).collect();
+        let lattice: Vec<Point> = (0..4000).map(|i| Point::new((i % 70) as f64, ((i / 70) % 45) as f64)).collect();
+        let circle: Vec<Point> = (0..720)
+            .map(|k| {
+                let a = std::f64::consts::TAU * k as f64 / 720.0;
+                Point::new((1e6 * a.cos()).round(), (1e6 * a.sin()).round())
+            })
+            .collect();
+        let far: Vec<Point> = uniform.iter().map(|p| Point::new(p.x + 1e9, p.y - 3e8)).collect();
+        for (name, points) in [("uniform", uniform), ("lattice", lattice), ("circle", circle), ("far", far)] {
+            let (PointStage::Inserted(eager, eager_sites), PointStage::Inserted(deferred, deferred_sites)) =
+                (insert_points_placing(&points, 0, false), insert_points_placing(&points, 0, true))
+            else {
+                panic!("{name}: not built by insertions");
+            };
+            assert!(!deferred.placement_deferred, "{name}: placement still deferred");
+            assert_eq!(eager_sites, deferred_sites, "{name}");
+            assert_eq!(eager.store().vertex_count(), deferred.store().vertex_count(), "{name}");
+            assert!(vertices_by_sites(&eager) == vertices_by_sites(&deferred), "{name}: another diagram");
         }
     }
 }
