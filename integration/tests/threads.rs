@@ -369,6 +369,43 @@ fn grids_with_a_step_glue_from_halves() {
     set_halves_from(None);
 }
 
+/// Crossing segments five to ten spacings long, split: their ends stick
+/// out of the dense middle, so the input thins out toward each side, and
+/// the huge circles through the sparse ends there dip deeper into it than
+/// three mean spacings. With a rim of three spacings, every size failed
+/// its first attempt (and a build of 30,000 such segments took 1.3 times
+/// as long on two threads as on one); the rim now reaches as deep as the
+/// input thins. They glue at once, and give the one-thread diagram.
+#[test]
+fn crossing_segments_split_glue_from_halves_at_once() {
+    use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
+    set_halves_from(Some(64));
+    for (n, length) in [(3_000, 0.04), (6_000, 0.025)] {
+        let mut rng = SplitMix64(n as u64 + 7);
+        let segments: Vec<[[f64; 2]; 2]> = (0..n)
+            .map(|_| {
+                let (x, y) = (rng.unit(), rng.unit());
+                let a = rng.unit() * std::f64::consts::TAU;
+                [[x, y], [x + length * a.cos(), y + length * a.sin()]]
+            })
+            .collect();
+        // as made, and mirrored 2^30 out
+        let o = 2f64.powi(30);
+        let far: Vec<[[f64; 2]; 2]> = segments.iter().map(|s| s.map(|p| [o - p[0], -o - p[1]])).collect();
+        for (how, segments) in [("as made", segments), ("mirrored 2^30 out", far)] {
+            let mut b = Builder::new();
+            b.split_crossings(true).add_segments(segments).unwrap();
+            let one = b.threads(1).build().unwrap_or_else(|e| panic!("{n} segments {how}: {e}"));
+            let two = b.threads(2).build().unwrap_or_else(|e| panic!("{n} segments {how} in halves: {e}"));
+            let report = take_halves_report();
+            assert!(one.stats().pieces > 2 * n, "{n} segments {how}: too few crossings to test");
+            assert!(report.is_some_and(|r| r.glued && r.attempts == 1), "{n} segments {how}: not glued at once: {report:?}");
+            assert!(fingerprint(&one) == fingerprint(&two), "{n} segments {how}: another diagram in halves");
+        }
+    }
+    set_halves_from(None);
+}
+
 /// With four threads or more, each half is built in halves in turn on the
 /// threads its own thread may start (vertical strips, glued pairwise):
 /// the one-thread diagram, bit for bit, at 4 and 8 threads (on this

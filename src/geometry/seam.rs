@@ -347,6 +347,37 @@ impl Enclosure {
         (s[0] + s[SIDES / 2]) * (s[SIDES / 4] + s[3 * SIDES / 4])
     }
 
+    /// The depth from a side of the set's bounding box that holds as many
+    /// of `sample` (points of the set at an even stride) as a strip
+    /// `depth` deep along that side would at their mean density over the
+    /// box, at the deepest of the four sides, and `depth` at least. About
+    /// `depth` where the points spread evenly; deeper where they thin out
+    /// toward a side, as segments' ends sticking out of a dense region
+    /// do, to the depth of the segments' length (the circles through
+    /// the sparse points there dip that deep into the set).
+    pub(crate) fn depth_holding(&self, sample: &[Point], depth: f64) -> f64 {
+        let s = &self.support;
+        let (width, height) = (s[0] + s[SIDES / 2], s[SIDES / 4] + s[3 * SIDES / 4]);
+        let area = width * height;
+        let mut deepest = depth;
+        if !(area > 0.0 && area.is_finite() && depth >= 0.0) {
+            return deepest;
+        }
+        let mut depths = Vec::with_capacity(sample.len());
+        for (k, side_length) in [(0, height), (SIDES / 4, width), (SIDES / 2, height), (3 * SIDES / 4, width)] {
+            // (how many an even spread puts within `depth` of this side)
+            let expected = sample.len() as f64 * (depth * side_length / area);
+            if !(expected >= 1.0 && expected < sample.len() as f64) {
+                continue;
+            }
+            depths.clear();
+            depths.extend(sample.iter().map(|&p| s[k] - along(p, k)));
+            let (_, &mut d, _) = depths.select_nth_unstable_by(expected as usize, f64::total_cmp);
+            deepest = if d > deepest { d } else { deepest };
+        }
+        deepest
+    }
+
     /// [`near_a_side`](Self::near_a_side) for one `band`, asked of many
     /// points: those deep inside are answered by a box.
     pub(crate) fn near_sides(&self, band: f64) -> NearSides<'_> {
@@ -504,6 +535,38 @@ mod tests {
             })
             .collect();
         (square, disk)
+    }
+
+    /// `depth_holding`: about the depth asked where the points spread
+    /// evenly (a square, a lattice, far out too), at least the depth asked
+    /// where a side is thinly held (a disk: its box's sides touch it at one
+    /// point each), and as deep as the thin fringe below a dense square
+    /// where its points thin out toward the bottom (as far as a tenth of
+    /// the square, as segments' ends sticking out of it do).
+    #[test]
+    fn the_rim_is_as_deep_as_the_input_thins() {
+        let mut rng = crate::splitmix::SplitMix64(12);
+        let (square, disk) = square_and_disk(&mut rng, 30_000);
+        let lattice: Vec<Point> = (0..30_000).map(|i| Point::new((i % 200) as f64, (i / 200) as f64)).collect();
+        let far: Vec<Point> = square.iter().map(|p| Point::new(p.x + 2f64.powi(30), p.y - 2f64.powi(30))).collect();
+        let spacing = |points: &[Point]| (Enclosure::of(points).box_area() / points.len() as f64).sqrt();
+        for (name, points) in [("square", &square), ("lattice", &lattice), ("far", &far)] {
+            let depth = 3.0 * spacing(points);
+            let rim = Enclosure::of(points).depth_holding(points, depth);
+            assert!(rim >= depth && rim < 1.5 * depth, "{name}: {rim} for {depth}");
+        }
+        let depth = 3.0 * spacing(&disk);
+        assert!(Enclosure::of(&disk).depth_holding(&disk, depth) >= depth);
+        // below the square, a fringe a tenth deep whose density falls from
+        // the square's to none
+        let mut fringed = square.clone();
+        fringed.extend((0..1_500).map(|_| Point::new(rng.unit(), -0.1 * (1.0 - rng.unit().sqrt()))));
+        let depth = 3.0 * spacing(&fringed);
+        let rim = Enclosure::of(&fringed).depth_holding(&fringed, depth);
+        assert!(rim > 2.0 * depth && rim < 0.1 + depth, "fringed: {rim} for {depth}");
+        // nothing to measure: the depth asked
+        assert_eq!(Enclosure::of(&square).depth_holding(&[], depth), depth);
+        assert_eq!(Enclosure::of(&[Point::new(1.0, 2.0)]).depth_holding(&[Point::new(1.0, 2.0)], depth), depth);
     }
 
     /// `inside` holds every point not near a side, and a disk that
