@@ -375,12 +375,15 @@ fn grids_with_a_step_glue_from_halves() {
 /// three mean spacings. With a rim of three spacings, every size failed
 /// its first attempt (and a build of 30,000 such segments took 1.3 times
 /// as long on two threads as on one); the rim now reaches as deep as the
-/// input thins. They glue at once, and give the one-thread diagram.
+/// input thins. Segments twenty spacings long (a dozen crossings each)
+/// have pieces reaching further across the cut than the first band:
+/// their cells are the left half's and reach as far, and the band now
+/// does too. They glue at once, and give the one-thread diagram.
 #[test]
 fn crossing_segments_split_glue_from_halves_at_once() {
     use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
     set_halves_from(Some(64));
-    for (n, length) in [(3_000, 0.04), (6_000, 0.025)] {
+    for (n, length) in [(3_000, 0.04), (6_000, 0.025), (2_000, 0.1)] {
         let mut rng = SplitMix64(n as u64 + 7);
         let segments: Vec<[[f64; 2]; 2]> = (0..n)
             .map(|_| {

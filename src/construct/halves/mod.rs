@@ -189,7 +189,7 @@ fn insert_all_in_halves_with(
     }
     report(|r| *r = HalvesReport { sites: points.len() + raw.len(), ..HalvesReport::default() });
     let started = std::time::Instant::now();
-    let plan = Plan::of(points, raw.len(), left_share);
+    let plan = Plan::of(points, raw, left_share);
     report(|r| r.times[0] = started.elapsed());
     // (halves would not pay: the check is left to the caller, which runs
     // it beside the point insertions)
@@ -280,6 +280,34 @@ fn glued(left: BuiltHalf, right: BuiltHalf, points: usize, segments: usize) -> O
     built
 }
 
+/// The widest first band, as a share of the input's width: each half
+/// then holds over five eighths of it, and the glue costs as much as the
+/// second thread saves.
+const WIDEST_FIRST_BAND: f64 = 1.0 / 8.0;
+
+/// How far beyond the cut `x = cut` the segments with an end left of it
+/// (the left half's) reach, at most (0 for none). Both halves hold their
+/// cells: a band narrower fails the left half's check.
+fn reach_across(points: &[Point], segments: &[[usize; 2]], cut: f64) -> f64 {
+    let reach = |part: &[[usize; 2]]| {
+        part.iter().fold(0.0, |reach: f64, &[a, b]| {
+            let (xa, xb) = (points[a].x, points[b].x);
+            let (low, high) = if xa < xb { (xa, xb) } else { (xb, xa) };
+            if low < cut && high - cut > reach {
+                high - cut
+            } else {
+                reach
+            }
+        })
+    };
+    if segments.is_empty() {
+        return 0.0;
+    }
+    let (low, high) = segments.split_at(segments.len() / 2);
+    let (reach_high, reach_low) = run_beside(|| reach(high), || reach(low));
+    reach_high.max(reach_low)
+}
+
 /// The share of the sites the left half takes when it runs the input
 /// check first (the check costs about a tenth of a build with segments).
 const LEFT_SHARE_BESIDE_THE_CHECK: f64 = 0.45;
@@ -309,23 +337,30 @@ struct Plan {
 }
 
 impl Plan {
-    /// `None` when halves would not pay (points all on a line, or too
-    /// many on the boundary).
-    fn of(points: &[Point], segments: usize, left_share: f64) -> Option<Plan> {
+    /// `None` when halves would not pay (points all on a line, too many
+    /// on the boundary, or segments reaching far across the cut).
+    fn of(points: &[Point], segments: &[[usize; 2]], left_share: f64) -> Option<Plan> {
         // two passes over the points, each on both threads by halves
         let (low, high) = points.split_at(points.len() / 2);
         let bounds = |part: &[Point]| (Enclosure::of(part), Extremes::of(part));
         let ((enclosure_high, extremes_high), (enclosure_low, extremes_low)) = run_beside(|| bounds(high), || bounds(low));
         let (enclosure, extremes) = (enclosure_low.merge(enclosure_high), extremes_low.merge(extremes_high));
-        let spacing = (enclosure.box_area() / (points.len() + segments) as f64).sqrt();
+        let spacing = (enclosure.box_area() / (points.len() + segments.len()) as f64).sqrt();
         if !(spacing.is_finite() && spacing > 0.0) {
             return None;
         }
         // (the rim deeper where the input thins out toward its boundary)
         let stride = points.len().div_ceil(RIM_SAMPLE).max(1);
         let sample: Vec<Point> = points.iter().step_by(stride).copied().collect();
-        let (band, rim) = (FIRST_BAND * spacing, enclosure.depth_holding(&sample, RIM * spacing));
+        let rim = enclosure.depth_holding(&sample, RIM * spacing);
         let cut = quantile_x(points, left_share)?;
+        // (the band reaches as far beyond the cut as the left's segments
+        // do: their cells are the left's, and reach as far)
+        let band = FIRST_BAND * spacing + reach_across(points, segments, cut);
+        let (lowest, highest) = extremes.x_range();
+        if band > (highest - lowest) * WIDEST_FIRST_BAND && !forced() {
+            return None;
+        }
         let (octagon, near_rim) = (extremes.octagon(), enclosure.near_sides(rim));
         // (with the extremes of what each half leaves out at the first
         // band, in the same pass: see `Outside::at`)
@@ -778,7 +813,7 @@ mod tests {
         let mut rng = crate::splitmix::SplitMix64(9);
         xs.extend((0..1000).map(|_| rng.unit()));
         set_halves_from(Some(1)); // (a plan whatever the boundary holds)
-        let plan = Plan::of(&inputs()[0], 0, 0.5).expect("halves pay");
+        let plan = Plan::of(&inputs()[0], &[], 0.5).expect("halves pay");
         set_halves_from(None);
         let plan = Plan { cut, band, ..plan };
         // (with no band too, where only the side's own test answers)
@@ -790,6 +825,30 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// `reach_across` is the furthest x beyond the cut of the segments the
+    /// left half owns (as `Side::owns` decides), either way round, none
+    /// counted that lie wholly at or right of the cut.
+    #[test]
+    fn the_reach_across_the_cut_is_the_left_segments_furthest() {
+        let mut rng = SplitMix64(41);
+        let points: Vec<Point> = (0..3000).map(|_| Point::new(rng.unit(), rng.unit())).collect();
+        let mut segments: Vec<[usize; 2]> = (0..1000).map(|k| [3 * k, 3 * k + 1]).collect();
+        segments.extend((0..500).map(|k| [3 * k + 2, 3 * k + 1])); // reversed ends
+        for cut in [0.5, 0.0, 1.0, points[7].x, points[8].x] {
+            let plain = segments
+                .iter()
+                .filter(|&&[a, b]| Side::Left.owns(&[points[a], points[b]], cut))
+                .map(|&[a, b]| points[a].x.max(points[b].x) - cut)
+                .fold(0.0, f64::max);
+            assert_eq!(reach_across(&points, &segments, cut), plain, "cut {cut}");
+        }
+        assert_eq!(reach_across(&points, &[], 0.5), 0.0);
+        // a segment from the cut rightward is the right's: no reach
+        let on_cut = [Point::new(0.5, 0.0), Point::new(0.9, 0.0)];
+        assert_eq!(reach_across(&on_cut, &[[0, 1]], 0.5), 0.0);
+        assert!((reach_across(&on_cut, &[[1, 0]], 0.6) - 0.3).abs() < 1e-15);
     }
 
     #[test]
@@ -806,7 +865,7 @@ mod tests {
     fn what_a_half_leaves_out_is_known_exactly() {
         set_halves_from(Some(1)); // (a plan whatever the boundary holds)
         for points in inputs() {
-            let plan = Plan::of(&points, 0, 0.5).expect("halves pay");
+            let plan = Plan::of(&points, &[], 0.5).expect("halves pay");
             for band in [plan.band, 3.0 * plan.band] {
                 let at = Outside::at(&points, &plan.both, plan.cut, band);
                 if band == plan.band {
