@@ -537,6 +537,16 @@ mod tests {
         (square, disk)
     }
 
+    /// `n` points of the integer lattice, `columns` a row.
+    fn lattice(n: usize, columns: usize) -> Vec<Point> {
+        (0..n).map(|i| Point::new((i % columns) as f64, (i / columns) as f64)).collect()
+    }
+
+    /// `points` moved 2^30 out, right and down.
+    fn far_out(points: &[Point]) -> Vec<Point> {
+        points.iter().map(|p| Point::new(p.x + 2f64.powi(30), p.y - 2f64.powi(30))).collect()
+    }
+
     /// `depth_holding`: about the depth asked where the points spread
     /// evenly (a square, a lattice, far out too), at least the depth asked
     /// where a side is thinly held (a disk: its box's sides touch it at one
@@ -547,8 +557,7 @@ mod tests {
     fn the_rim_is_as_deep_as_the_input_thins() {
         let mut rng = crate::splitmix::SplitMix64(12);
         let (square, disk) = square_and_disk(&mut rng, 30_000);
-        let lattice: Vec<Point> = (0..30_000).map(|i| Point::new((i % 200) as f64, (i / 200) as f64)).collect();
-        let far: Vec<Point> = square.iter().map(|p| Point::new(p.x + 2f64.powi(30), p.y - 2f64.powi(30))).collect();
+        let (lattice, far) = (lattice(30_000, 200), far_out(&square));
         let spacing = |points: &[Point]| (Enclosure::of(points).box_area() / points.len() as f64).sqrt();
         for (name, points) in [("square", &square), ("lattice", &lattice), ("far", &far)] {
             let depth = 3.0 * spacing(points);
@@ -577,8 +586,7 @@ mod tests {
     fn a_disk_that_misses_the_inside_holds_only_points_near_a_side() {
         let mut rng = crate::splitmix::SplitMix64(9);
         let (square, disk) = square_and_disk(&mut rng, 4000);
-        let lattice: Vec<Point> = (0..3000).map(|i| Point::new((i % 60) as f64, (i / 60) as f64)).collect();
-        let far: Vec<Point> = square.iter().map(|p| Point::new(p.x + 2f64.powi(30), p.y - 2f64.powi(30))).collect();
+        let (lattice, far) = (lattice(3000, 60), far_out(&square));
         let (mut passed, mut failed) = (0, 0);
         for points in [square, disk, lattice, far] {
             let enclosure = Enclosure::of(&points);
@@ -762,7 +770,7 @@ mod tests {
     fn inner_boxes_answer_as_the_whole_tests() {
         let mut rng = crate::splitmix::SplitMix64(17);
         let (square, disk) = square_and_disk(&mut rng, 3000);
-        let lattice: Vec<Point> = (0..2500).map(|i| Point::new((i % 50) as f64, (i / 50) as f64)).collect();
+        let lattice = lattice(2500, 50);
         let sliver: Vec<Point> = (0..1000).map(|_| Point::new(rng.unit(), 1e-9 * rng.unit())).collect();
         let line: Vec<Point> = (0..500).map(|i| Point::new(i as f64, 2.0 * i as f64)).collect();
         let one = vec![Point::new(3.0, 4.0)];
