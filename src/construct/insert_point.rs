@@ -171,24 +171,35 @@ impl Construction {
     }
 
     /// The vertex of `g`'s cell whose circle most clearly contains `p`,
-    /// checked exactly; if the numbers found none on `g`'s cell (the walk
-    /// stopped one cell short), a bounded search around it.
+    /// checked exactly; else the first of the cell in conflict; if the
+    /// numbers found none on `g`'s cell (the walk stopped one cell short),
+    /// a bounded search around it.
     ///
-    /// While placement is deferred (the circles are not known yet), the
-    /// first vertex of `g`'s cell in conflict: with exact predicates any
-    /// vertex in conflict seeds the same tree (the set of vertices whose
-    /// circles strictly contain `p`, connected); the choice by depth only
-    /// matters where the predicates lie (fault injection).
+    /// While placement is deferred (the circles are not known yet), no
+    /// deepest one is asked: with exact predicates any vertex in conflict
+    /// seeds the same tree (the set of vertices whose circles strictly
+    /// contain `p`, connected); the choice by depth only matters where the
+    /// predicates lie (fault injection).
     fn seed_vertex(&mut self, g: SiteId, p: Point) -> VertexId {
-        if self.placement_deferred {
-            if let Some(v) = self.store.cell_boundary(g).map(|h| h.origin()).find(|&v| self.in_conflict(v, p)) {
-                return v;
-            }
-            let found = self.search_seed_around(g, p);
-            self.fresh_epoch();
-            let first = self.store.cell_boundary(g).next().map(|h| h.origin());
-            return found.or(first).expect("a cell with a boundary has vertices");
+        let deepest = if self.placement_deferred { None } else { self.deepest_on_cell(g, p) };
+        if let Some(v) = deepest.filter(|&v| self.in_conflict(v, p)) {
+            return v;
         }
+        if let Some(v) = self.store.cell_boundary(g).map(|h| h.origin()).find(|&v| self.in_conflict(v, p)) {
+            return v;
+        }
+        // Breadth-first search outwards from g's cell, bounded; it uses the
+        // vertex marks, so a fresh round follows it.
+        let found = self.search_seed_around(g, p);
+        self.fresh_epoch();
+        // None only when the predicates lie: the topology still decides.
+        let first = || self.store.cell_boundary(g).next().map(|h| h.origin());
+        found.or(deepest).or_else(first).expect("a cell with a boundary has vertices")
+    }
+
+    /// The vertex of `g`'s cell whose circle holds `p` deepest, by the
+    /// numbers (`None` for a cell without a boundary).
+    fn deepest_on_cell(&self, g: SiteId, p: Point) -> Option<VertexId> {
         let mut best = None;
         let mut best_depth = f64::INFINITY;
         for h in self.store.cell_boundary(g) {
@@ -199,19 +210,7 @@ impl Construction {
                 best_depth = d;
             }
         }
-        let best = best.expect("a cell with a boundary has vertices");
-        if self.in_conflict(best, p) {
-            return best;
-        }
-        if let Some(v) = self.store.cell_boundary(g).map(|h| h.origin()).find(|&v| self.in_conflict(v, p)) {
-            return v;
-        }
-        // Breadth-first search outwards from g's cell, bounded; it uses the
-        // vertex marks, so a fresh round follows it.
-        let found = self.search_seed_around(g, p);
-        self.fresh_epoch();
-        // None only when the predicates lie: the topology still decides.
-        found.unwrap_or(best)
+        best
     }
 
     fn search_seed_around(&mut self, g: SiteId, p: Point) -> Option<VertexId> {
