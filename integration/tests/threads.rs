@@ -378,26 +378,42 @@ fn grids_with_a_step_glue_from_halves() {
 /// input thins. Segments twenty spacings long (a dozen crossings each)
 /// have pieces reaching further across the cut than the first band:
 /// their cells are the left half's and reach as far, and the band now
-/// does too. They glue at once, and give the one-thread diagram.
+/// does too. With a straight vertex, two squares touching at a corner and
+/// a point exactly on a segment among them, as made and mirrored 2^30
+/// out, they glue at once, and give the one-thread diagram.
 #[test]
 fn crossing_segments_split_glue_from_halves_at_once() {
     use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
     set_halves_from(Some(64));
     for (n, length) in [(3_000, 0.04), (6_000, 0.025), (2_000, 0.1)] {
         let mut rng = SplitMix64(n as u64 + 7);
-        let segments: Vec<[[f64; 2]; 2]> = (0..n)
+        let mut segments: Vec<[[f64; 2]; 2]> = (0..n)
             .map(|_| {
                 let (x, y) = (rng.unit(), rng.unit());
                 let a = rng.unit() * std::f64::consts::TAU;
                 [[x, y], [x + length * a.cos(), y + length * a.sin()]]
             })
             .collect();
+        // a straight (180-degree) vertex, two squares touching at a corner,
+        // and (below) a point exactly on a segment, among the crossings
+        segments.extend([[[0.2, 0.5], [0.5, 0.5]], [[0.5, 0.5], [0.8, 0.5]]]);
+        let square = |x: f64, y: f64| {
+            [
+                [[x, y], [x + 0.1, y]],
+                [[x + 0.1, y], [x + 0.1, y + 0.1]],
+                [[x + 0.1, y + 0.1], [x, y + 0.1]],
+                [[x, y + 0.1], [x, y]],
+            ]
+        };
+        segments.extend(square(0.3, 0.2).into_iter().chain(square(0.4, 0.3)));
+        let on_a_segment = [0.25, 0.5];
         // as made, and mirrored 2^30 out
         let o = 2f64.powi(30);
         let far: Vec<[[f64; 2]; 2]> = segments.iter().map(|s| s.map(|p| [o - p[0], -o - p[1]])).collect();
-        for (how, segments) in [("as made", segments), ("mirrored 2^30 out", far)] {
+        for (how, segments, point) in [("as made", segments, on_a_segment), ("mirrored 2^30 out", far, [o - 0.25, -o - 0.5])] {
             let mut b = Builder::new();
             b.split_crossings(true).add_segments(segments).unwrap();
+            b.add_points([point]).unwrap();
             let one = b.threads(1).build().unwrap_or_else(|e| panic!("{n} segments {how}: {e}"));
             let two = b.threads(2).build().unwrap_or_else(|e| panic!("{n} segments {how} in halves: {e}"));
             let report = take_halves_report();
