@@ -66,16 +66,100 @@ impl ContactCounts {
     }
 }
 
+/// From this many pieces and points on, a search with a spare thread runs
+/// in two slabs (`in_slabs`): below, the second thread costs more than it
+/// saves.
+const SLABS_FROM: usize = 1 << 14;
+
 /// The pixels where the pieces of `layout` and its points meet other than
 /// at common endpoints, appended to `hot` (with repeats), and the counts.
+/// Large searches with a spare thread run in two slabs, with the same
+/// counts and pixels.
 pub(super) fn contact_pixels(layout: &Layout, pixels: &PixelGrid, hot: &mut Vec<Pixel>) -> ContactCounts {
+    let (segments, lone) = events_of(layout);
+    let large = segments.len() + lone.len() >= SLABS_FROM && crate::construct::threads::spare() > 0;
+    // (cut at the middle piece's first point: each slab has about half the pieces)
+    match segments.get(segments.len() / 2).map(|s| s[0]).filter(|_| large) {
+        Some(cut) => in_slabs(segments, &lone, cut, pixels, hot),
+        None => sweep(segments, &lone, Slab::WHOLE, pixels, hot),
+    }
+}
+
+/// The sweep's input: the pieces of nonzero length, first point first
+/// (lexicographically), in the order of their first points; the isolated
+/// points, in order.
+pub(super) fn events_of(layout: &Layout) -> (Vec<[Point; 2]>, Vec<Point>) {
     let first_point_first = |[a, b]: [Point; 2]| if lex_cmp(a, b) == Ordering::Greater { [b, a] } else { [a, b] };
     let mut segments: Vec<[Point; 2]> = layout.proper.iter().map(|&(_, s)| first_point_first(s)).collect();
     segments.sort_unstable_by(|s, t| lex_cmp(s[0], t[0]));
-    let mut ends: Vec<u32> = (0..segments.len() as u32).collect();
-    ends.sort_unstable_by(|&i, &j| lex_cmp(segments[i as usize][1], segments[j as usize][1]));
     let mut lone = layout.lone.clone();
     lone.sort_unstable_by(|p, q| lex_cmp(*p, *q));
+    (segments, lone)
+}
+
+/// [`contact_pixels`] of `segments` and `lone` (as [`events_of`] gives
+/// them) in two slabs, one per thread, cut at the point `cut`: the events
+/// before it (lexicographically) and those from it on. A contact is found
+/// at one event (an overlap at the first of its common part): its slab's.
+///
+/// Why the slabs find the whole sweep's contacts, no more and no fewer:
+/// the low slab sweeps the pieces that start before `cut`, up to it; every
+/// piece through an event before `cut` starts before it. The high slab
+/// sweeps every piece that ends at `cut` or after, and the points from
+/// `cut` on, from the first event of those pieces: every piece through an
+/// event at or after `cut` ends there or later. A sweep of a subset of the
+/// pieces orders them as the whole sweep does, and pairs two of them at
+/// the same events. Before `cut` the high slab counts nothing (the low
+/// slab counts those contacts) but notes the overlaps it meets, so that it
+/// does not count again an overlap whose common part runs across `cut`.
+/// Its extra work is the pieces running across `cut`, and their crossings
+/// before it: few where pieces are short.
+pub(super) fn in_slabs(
+    segments: Vec<[Point; 2]>,
+    lone: &[Point],
+    cut: Point,
+    pixels: &PixelGrid,
+    hot: &mut Vec<Pixel>,
+) -> ContactCounts {
+    let before_cut = |p: Point| lex_cmp(p, cut) == Ordering::Less;
+    let high: Vec<[Point; 2]> = segments.iter().filter(|s| !before_cut(s[1])).copied().collect();
+    let mut low = segments;
+    low.truncate(low.partition_point(|s| before_cut(s[0])));
+    let (lone_low, lone_high) = lone.split_at(lone.partition_point(|&p| before_cut(p)));
+    let slab = |segments: Vec<[Point; 2]>, lone: &[Point], slab: Slab| {
+        let mut found = Vec::new();
+        (sweep(segments, lone, slab, pixels, &mut found), found)
+    };
+    let ((high_counts, high_hot), (low_counts, low_hot)) = crate::construct::threads::run_beside(
+        || slab(high, lone_high, Slab { from: Some(cut), until: None }),
+        || slab(low, lone_low, Slab { from: None, until: Some(cut) }),
+    );
+    hot.extend(low_hot);
+    hot.extend(high_hot);
+    ContactCounts {
+        crossings: low_counts.crossings + high_counts.crossings,
+        overlaps: low_counts.overlaps + high_counts.overlaps,
+        touchings: low_counts.touchings + high_counts.touchings,
+    }
+}
+
+/// The events a sweep counts: those from `from` on (the earlier ones only
+/// keep its status and note overlaps), before `until` (where it stops).
+#[derive(Clone, Copy)]
+struct Slab {
+    from: Option<Point>,
+    until: Option<Point>,
+}
+
+impl Slab {
+    const WHOLE: Slab = Slab { from: None, until: None };
+}
+
+/// The sweep of `segments` and `lone` (as [`events_of`] gives them) over
+/// `slab`: its contacts' pixels appended to `hot`, and their counts.
+fn sweep(segments: Vec<[Point; 2]>, lone: &[Point], slab: Slab, pixels: &PixelGrid, hot: &mut Vec<Pixel>) -> ContactCounts {
+    let mut ends: Vec<u32> = (0..segments.len() as u32).collect();
+    ends.sort_unstable_by(|&i, &j| lex_cmp(segments[i as usize][1], segments[j as usize][1]));
     let mut sweep = ContactSweep {
         status: Treap::new(segments.iter().copied()),
         segments,
@@ -86,6 +170,7 @@ pub(super) fn contact_pixels(layout: &Layout, pixels: &PixelGrid, hot: &mut Vec<
         pixels,
         hot,
         counts: ContactCounts::default(),
+        silent: false,
         through: Vec::new(),
         interior: Vec::new(),
         ending: Vec::new(),
@@ -115,6 +200,11 @@ pub(super) fn contact_pixels(layout: &Layout, pixels: &PixelGrid, hot: &mut Vec<
                 c
             }
         };
+        let before = |point: Option<Point>| point.is_some_and(|p| q.cmp(&ContactPoint::At(p)) == Ordering::Less);
+        if slab.until.is_some() && !before(slab.until) {
+            break;
+        }
+        sweep.silent = before(slab.from);
         while sweep.crossings.peek().is_some_and(|Reverse(Queued(c, ..))| c.cmp(&q) == Ordering::Equal) {
             let Reverse(Queued(_, i, j)) = sweep.crossings.pop().expect("peeked");
             sweep.known_on.extend([sweep.segments[i as usize], sweep.segments[j as usize]]);
@@ -186,6 +276,9 @@ struct ContactSweep<'a> {
     pixels: &'a PixelGrid,
     hot: &'a mut Vec<Pixel>,
     counts: ContactCounts,
+    /// At an event before its slab (`Slab::from`): contacts are not
+    /// counted, overlaps only noted.
+    silent: bool,
     /// Scratch space, kept from event to event: the run through the event
     /// point, its pieces with the point inside and those ending there, the
     /// pieces entering.
@@ -244,7 +337,7 @@ impl ContactSweep<'_> {
         // Step 2: the contacts at q.
         for x in 0..self.interior.len() {
             let i = self.interior[x];
-            if let ContactPoint::At(p) = q {
+            if let (ContactPoint::At(p), false) = (q, self.silent) {
                 for _ in 0..lone_here {
                     self.counts.touchings += 1;
                     self.hot.push(self.pixels.pixel_of(*p));
@@ -308,7 +401,7 @@ impl ContactSweep<'_> {
     fn pair(&mut self, i: u32, j: u32) {
         let (s, t) = (self.segment(i), self.segment(j));
         let Some(contact) = segment_contact(s, t) else { return };
-        if contact == SegmentContact::Overlap && !self.overlaps.insert((i.min(j), i.max(j))) {
+        if (contact == SegmentContact::Overlap && !self.overlaps.insert((i.min(j), i.max(j)))) || self.silent {
             return;
         }
         pair_pixels(s, t, contact, self.pixels, self.hot, &mut self.counts);

@@ -41,19 +41,53 @@ pub(super) fn route(pieces: Vec<Piece>, hot: &HotPixels, pixels: &PixelGrid) -> 
     route_also_through(pieces, hot, pixels, &HashMap::new())
 }
 
+/// From this many pieces on, a round with a spare thread routes them in
+/// two halves, one per thread.
+const HALVES_FROM: usize = 1 << 13;
+
 /// [`route`], each piece also bent through the centres of its pixels in
 /// `also` (by piece index): a contact with an arc, whose pixel holds a
 /// rounded point that the piece may pass a hair beside.
+///
+/// Large rounds with a spare thread route the first and the second half of
+/// the pieces apart and merge the second's into the first's: the pieces
+/// come out as from one thread (in order of first appearance, merged ones
+/// with the sorted union of their input segments).
 pub(super) fn route_also_through(
     pieces: Vec<Piece>,
     hot: &HotPixels,
     pixels: &PixelGrid,
     also: &HashMap<usize, Vec<Pixel>>,
 ) -> Vec<Piece> {
-    let mut out = Merged::default();
     // Built here, per round that routes: the last round's contact search
     // finds nothing and routes nothing.
     let tree = PixelTree::new(hot.set.iter().copied().collect());
+    let routed = |pieces: Vec<Piece>, first: usize| {
+        let mut out = Merged::default();
+        route_into(&mut out, pieces, first, (hot, &tree), pixels, also);
+        out
+    };
+    if pieces.len() < HALVES_FROM || crate::construct::threads::spare() == 0 {
+        return routed(pieces, 0).pieces;
+    }
+    let mut pieces = pieces;
+    let middle = pieces.len() / 2;
+    let second = pieces.split_off(middle);
+    let (second, mut out) = crate::construct::threads::run_beside(|| routed(second, middle), || routed(pieces, 0));
+    second.pieces.into_iter().for_each(|piece| out.push(piece.ends, piece.origins));
+    out.pieces
+}
+
+/// Routes `pieces` (the first of them is piece `first` of the round) into
+/// `out`: each bent through the centres of the hot pixels it meets.
+fn route_into(
+    out: &mut Merged,
+    pieces: Vec<Piece>,
+    first: usize,
+    (hot, tree): (&HotPixels, &PixelTree),
+    pixels: &PixelGrid,
+    also: &HashMap<usize, Vec<Pixel>>,
+) {
     let mut met: Vec<Pixel> = Vec::new();
     for (k, piece) in pieces.into_iter().enumerate() {
         let [a, b] = piece.ends;
@@ -64,7 +98,7 @@ pub(super) fn route_also_through(
         }
         met.clear();
         tree.met_by(pixels, a, b, &mut met);
-        if let Some(extra) = also.get(&k) {
+        if let Some(extra) = also.get(&(first + k)) {
             met.extend(extra.iter().filter(|x| !met.contains(x)).copied().collect::<Vec<_>>());
         }
         let (pa, pb) = (pixels.pixel_of(a), pixels.pixel_of(b));
@@ -88,7 +122,6 @@ pub(super) fn route_also_through(
             out.push([w[0], w[1]], piece.origins.clone());
         }
     }
-    out.pieces
 }
 
 /// Pieces with equal ends (either direction) merged.

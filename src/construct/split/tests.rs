@@ -238,6 +238,28 @@ fn sweep_agrees_with_brute_force(segments: &[[Point; 2]], points: &[Point]) -> R
     if counts != expected || swept != brute {
         return Err(format!("sweep {counts:?} {swept:?}, brute force {expected:?} {brute:?}"));
     }
+    slabs_agree_with_the_whole_sweep(&layout, &pixels)
+}
+
+/// The search in two slabs (`contacts::in_slabs`), cut at every first
+/// point of a piece and every point, and beyond them all, finds what the
+/// whole sweep finds: the same counts and the same pixels, as often.
+fn slabs_agree_with_the_whole_sweep(layout: &Layout, pixels: &PixelGrid) -> Result<(), String> {
+    use contacts::{events_of, in_slabs};
+    let (segments, lone) = events_of(layout);
+    let mut whole = Vec::new();
+    let counts = contact_pixels(layout, pixels, &mut whole); // (small: one sweep)
+    whole.sort_unstable();
+    let beyond = [p(f64::NEG_INFINITY, 0.0), p(f64::INFINITY, 0.0)];
+    let cuts = segments.iter().map(|s| s[0]).chain(lone.iter().copied()).chain(beyond);
+    for cut in cuts {
+        let mut found = Vec::new();
+        let in_two = in_slabs(segments.clone(), &lone, cut, pixels, &mut found);
+        found.sort_unstable();
+        if in_two != counts || found != whole {
+            return Err(format!("cut at {cut:?}: slabs {in_two:?} {found:?}, whole sweep {counts:?} {whole:?}"));
+        }
+    }
     Ok(())
 }
 
@@ -286,4 +308,54 @@ fn the_sweep_finds_crossings_of_long_nearly_parallel_pieces() {
         (0..60).map(|k| [p(0.0, k as f64 * 1e-7 + rng.unit() * 1e-9), p(1000.0, 60.0 - k as f64 + rng.unit())]).collect();
     segments.extend((0..6).map(|k| [p(100.0 * k as f64 + 3.0, -5.0), p(100.0 * k as f64 + 40.0, 80.0)]));
     sweep_agrees_with_brute_force(&segments, &[p(500.0, 30.0)]).unwrap();
+}
+
+/// Splitting on two threads (the contact search in slabs, the routing in
+/// halves) gives what one thread gives, piece for piece, on inputs large
+/// enough for both: random short crossings with what users have among them
+/// (collinear overlaps running across the middle, repeated and reversed
+/// pieces, points on pieces and on crossings, a straight vertex, rings
+/// touching at a corner), as made and mirrored far from the origin.
+#[test]
+fn splitting_on_two_threads_gives_one_threads_pieces() {
+    let mut rng = SplitMix64(33);
+    let mut segments: Vec<[Point; 2]> = (0..18_000)
+        .map(|_| {
+            let (x, y, a) = (rng.unit(), rng.unit(), rng.unit() * std::f64::consts::TAU);
+            [p(x, y), p(x + 0.01 * a.cos(), y + 0.01 * a.sin())]
+        })
+        .collect();
+    // overlapping runs along y = 0.5 and x = 0.5, across every cut
+    segments.extend((0..40).map(|k| [p(k as f64 / 50.0, 0.5), p(k as f64 / 50.0 + 0.3, 0.5)]));
+    segments.extend((0..40).map(|k| [p(0.5, k as f64 / 50.0 + 0.3), p(0.5, k as f64 / 50.0)]));
+    // repeats, one reversed, from the first half among the second's
+    let repeated: Vec<[Point; 2]> =
+        segments[..200].iter().enumerate().map(|(k, &[a, b])| if k % 2 == 0 { [a, b] } else { [b, a] }).collect();
+    segments.extend(repeated);
+    // a straight vertex, two squares touching at a corner
+    segments.extend([[p(0.2, 0.7), p(0.3, 0.7)], [p(0.3, 0.7), p(0.4, 0.7)]]);
+    let square = |x: f64, y: f64| {
+        [
+            [p(x, y), p(x + 0.1, y)],
+            [p(x + 0.1, y), p(x + 0.1, y + 0.1)],
+            [p(x + 0.1, y + 0.1), p(x, y + 0.1)],
+            [p(x, y + 0.1), p(x, y)],
+        ]
+    };
+    segments.extend(square(0.6, 0.6).into_iter().chain(square(0.7, 0.7)));
+    let mut points: Vec<Point> = (0..600).map(|_| p(rng.unit(), rng.unit())).collect();
+    points.extend([p(0.25, 0.5), p(0.5, 0.5), segments[3][0], segments[7][1]]);
+    let far = |q: Point| p(-q.x + 1e9, q.y - 1e9);
+    let mirrored: Vec<[Point; 2]> = segments.iter().map(|s| s.map(far)).collect();
+    let mirrored_points: Vec<Point> = points.iter().map(|&q| far(q)).collect();
+    for (points, segments) in [(&points, &segments), (&mirrored_points, &mirrored)] {
+        let [one, two] =
+            [1, 2].map(|threads| crate::construct::threads::with_threads(threads, || split(points, segments).expect("splits")));
+        let counts = |s: &SplitInput| (s.crossings, s.overlaps, s.touchings, s.rounds, s.max_displacement.to_bits());
+        assert!(one.crossings > 10_000 && one.overlaps > 100 && one.touchings > 0, "{:?}", counts(&one));
+        assert_eq!(counts(&one), counts(&two));
+        assert_eq!(one.points, two.points);
+        let pieces = |s: &SplitInput| s.pieces.iter().map(|q| (q.ends, q.origins.clone())).collect::<Vec<_>>();
+        assert_eq!(pieces(&one), pieces(&two));
+    }
 }
