@@ -74,7 +74,7 @@ pub(super) fn route_also_through(
     let middle = pieces.len() / 2;
     let second = pieces.split_off(middle);
     let (second, mut out) = crate::construct::threads::run_beside(|| routed(second, middle), || routed(pieces, 0));
-    second.pieces.into_iter().for_each(|piece| out.push(piece.ends, piece.origins));
+    out.append_merged(second);
     out.pieces
 }
 
@@ -135,16 +135,31 @@ impl Merged {
     fn push(&mut self, ends: [Point; 2], origins: Vec<u32>) {
         let full = Point::segment_key(ends[0], ends[1]);
         match self.index.get(&full) {
-            Some(&k) => {
-                let merged = &mut self.pieces[k].origins;
-                merged.extend(origins);
-                merged.sort_unstable();
-                merged.dedup();
-            }
+            Some(&k) => self.pieces[k].merge(origins),
             None => {
                 self.index.insert(full, self.pieces.len());
                 self.pieces.push(Piece { ends, origins });
             }
         }
+    }
+
+    /// The pieces of `later` (merged among themselves) pushed after these,
+    /// the last pushes: `later`'s new pieces are not indexed.
+    fn append_merged(&mut self, later: Merged) {
+        for piece in later.pieces {
+            match self.index.get(&Point::segment_key(piece.ends[0], piece.ends[1])) {
+                Some(&k) => self.pieces[k].merge(piece.origins),
+                None => self.pieces.push(piece),
+            }
+        }
+    }
+}
+
+impl Piece {
+    /// Adds `origins` to the piece's input segments (sorted, each once).
+    fn merge(&mut self, origins: Vec<u32>) {
+        self.origins.extend(origins);
+        self.origins.sort_unstable();
+        self.origins.dedup();
     }
 }
