@@ -68,12 +68,36 @@ pub(crate) use threads::run_beside;
 /// the input segments; none: no domain), or the error that
 /// [`Builder::build`] returns (see there).
 pub(super) fn diagram_of(points: &[Point], segments: &[[Point; 2]], rings: &[RingInput]) -> Result<Diagram, Error> {
+    diagram_of_known(points, segments, rings, None)
+}
+
+/// [`diagram_of`] the pieces and points of a split (no rings), known to
+/// meet only at common endpoints in the coordinates that `contact_free_in`
+/// makes (`split::SplitInput::contact_free_in`): where the build works in
+/// those, its check only normalises (the search for conflicts would find
+/// none), and a build in halves shares the input evenly.
+pub(crate) fn diagram_of_contact_free(
+    points: &[Point],
+    segments: &[[Point; 2]],
+    contact_free_in: Option<Scale>,
+) -> Result<Diagram, Error> {
+    diagram_of_known(points, segments, &[], contact_free_in)
+}
+
+/// [`diagram_of`], the input known free of contacts in the coordinates of
+/// `contact_free_in` (see [`diagram_of_contact_free`]; `None`: not known).
+fn diagram_of_known(
+    points: &[Point],
+    segments: &[[Point; 2]],
+    rings: &[RingInput],
+    contact_free_in: Option<Scale>,
+) -> Result<Diagram, Error> {
     if segments.is_empty() {
         let (diagram, outcome) = build_points(points);
         return accept(diagram, outcome, points, segments);
     }
     let ring = polygon_input::ring_segments(rings, segments.len());
-    let (diagram, outcome) = match build_sites(points, segments, &ring)? {
+    let (diagram, outcome) = match build_sites(points, segments, &ring, contact_free_in)? {
         Sites::Built(diagram, outcome) => (*diagram, outcome),
         Sites::Shared(checked, pieces) => {
             return shared_stretches::diagram_of_shared(points, segments, rings, &checked, pieces);
@@ -131,20 +155,24 @@ enum Sites {
 /// every point in the naming order (isolated points, then each segment's
 /// first and second endpoint), insert the points and then the segments,
 /// renumber.
-fn build_sites(points: &[Point], segments: &[[Point; 2]], ring: &[bool]) -> Result<Sites, Error> {
-    build_sites_and_arcs(points, segments, ring, &[], &|| Ok(()))
+///
+/// `contact_free_in`: the coordinates in which the input is known to meet
+/// only at common endpoints (a split's pieces), if any.
+fn build_sites(points: &[Point], segments: &[[Point; 2]], ring: &[bool], contact_free_in: Option<Scale>) -> Result<Sites, Error> {
+    build_sites_and_arcs(points, segments, ring, (&[], &|| Ok(())), contact_free_in)
 }
 
 /// [`build_sites`] with circular arcs too, inserted after the segments:
 /// `points` ends with each arc's start and end (`with_arcs`).
 /// `check_arcs` is the arcs' input check, run beside the point insertions
 /// with the segments' (its error first: it is the check asked first).
+#[allow(clippy::type_complexity)]
 fn build_sites_and_arcs(
     points: &[Point],
     segments: &[[Point; 2]],
     ring: &[bool],
-    arcs: &[CircularArc],
-    check_arcs: &(dyn Fn() -> Result<(), Error> + Sync),
+    (arcs, check_arcs): (&[CircularArc], &(dyn Fn() -> Result<(), Error> + Sync)),
+    contact_free_in: Option<Scale>,
 ) -> Result<Sites, Error> {
     // P<k> numbers the distinct points of this list by first appearance;
     // the construction takes it scaled (the list itself where scaling
@@ -154,6 +182,13 @@ fn build_sites_and_arcs(
     all.extend_from_slice(points);
     segments.iter().for_each(|s| all.extend_from_slice(s));
     let scaled = to_internal(&all, scale);
+    // (a split's pieces, in the coordinates its contact search verified:
+    // the check only normalises them)
+    let contact_free = contact_free_in == Some(scale);
+    let check_segments = |points: &[Point], segments: &[[Point; 2]], ring: &[bool], scale: Scale| match contact_free {
+        true => Ok(input_check::normalise_contact_free(points, segments, scale)),
+        false => check_segments(points, segments, ring, scale),
+    };
 
     // With a spare thread and no arcs, a large build runs in halves
     // (`halves/`): the check runs first on one thread, while the other
@@ -164,7 +199,7 @@ fn build_sites_and_arcs(
     let mut checked_beside_halves = None;
     let built_in_halves = if arcs.is_empty() && halves::worth_it(scaled.len() + segments.len()) {
         let raw: Vec<[usize; 2]> = (0..segments.len()).map(|j| endpoint_index(points.len(), j)).collect();
-        halves::insert_all_in_halves_after(&scaled, &raw, || {
+        halves::insert_all_in_halves_after(&scaled, &raw, contact_free, || {
             let checked = check_segments(points, segments, ring, scale);
             let shared = checked.as_ref().ok().and_then(|c| shared_stretches::shared_pieces(c, points, segments, ring));
             // only plain input goes on in halves: no error, shared stretches or split

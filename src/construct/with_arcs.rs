@@ -86,7 +86,7 @@ pub(super) fn diagram_with_arcs(
         all.push(arc.start());
         all.push(arc.end());
     }
-    let (mut diagram, outcome) = match super::build_sites_and_arcs(&all, segments, &[], arcs, &check_arcs)? {
+    let (mut diagram, outcome) = match super::build_sites_and_arcs(&all, segments, &[], (arcs, &check_arcs), None)? {
         Sites::Built(diagram, outcome) => (*diagram, outcome),
         Sites::Shared(..) => unreachable!("stretches are shared only by polygon rings"),
     };

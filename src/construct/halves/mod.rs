@@ -156,7 +156,7 @@ pub(super) fn insert_all_in_halves(points: &[Point], segments: &[[usize; 2]]) ->
     if !worth_it(points.len() + segments.len()) {
         return None;
     }
-    insert_all_in_halves_after(points, segments, || Some(segments.to_vec()))
+    insert_all_in_halves_after(points, segments, true, || Some(segments.to_vec()))
 }
 
 /// [`insert_all_in_halves`] of the segments that `check` returns (`None`:
@@ -165,14 +165,16 @@ pub(super) fn insert_all_in_halves(points: &[Point], segments: &[[usize; 2]]) ->
 /// `raw` are all segments the check may return (their ends are held by
 /// the halves from the start). `check` runs exactly once, unless there is
 /// no spare thread, the input is small or the plan finds that halves
-/// would not pay (then not at all).
+/// would not pay (then not at all). `light`: the check only normalises
+/// (no search for conflicts: a split's pieces).
 pub(super) fn insert_all_in_halves_after(
     points: &[Point],
     raw: &[[usize; 2]],
+    light: bool,
     check: impl FnOnce() -> Option<Vec<[usize; 2]>>,
 ) -> Option<Built> {
     // The left half also runs the check, so it takes fewer sites.
-    let left_share = if raw.is_empty() { 0.5 } else { LEFT_SHARE_BESIDE_THE_CHECK };
+    let left_share = if raw.is_empty() || light { 0.5 } else { LEFT_SHARE_BESIDE_THE_CHECK };
     insert_all_in_halves_with(points, raw, check, left_share)
 }
 

@@ -191,7 +191,22 @@ pub(crate) fn check_segments(
     if let Some((conflict, _)) = conflict {
         return Err(conflict);
     }
-    Ok(CheckedInput {
+    Ok(checked_input(norm, points, segments, splits))
+}
+
+/// [`check_segments`] of an input known to meet only at common endpoints
+/// in the coordinates that `scale` makes, with no ring segments: the
+/// pieces and points of a split, which its exact contact search found so
+/// there (`split::SplitInput::contact_free_in`). Normalised alone: the
+/// search for conflicts and splits would find none.
+pub(crate) fn normalise_contact_free(points: &[Point], segments: &[[Point; 2]], scale: Scale) -> CheckedInput {
+    checked_input(normalise_scaled(points, segments, &[], scale), points, segments, Vec::new())
+}
+
+/// The checked input of `points` and `segments` from their normalised
+/// form and the splits found.
+fn checked_input(norm: normalise::Normalised, points: &[Point], segments: &[[Point; 2]], splits: Vec<Split>) -> CheckedInput {
+    CheckedInput {
         points: norm.points.iter().map(|&(src, _)| (src, input_point(points, segments, src))).collect(),
         segments: norm
             .segments
@@ -203,7 +218,7 @@ pub(crate) fn check_segments(
         degenerate_segments: norm.degenerate_segments,
         kept_of_input: norm.kept_of_input,
         splits,
-    })
+    }
 }
 
 /// The conflict [`check_segments`] would report, without building the

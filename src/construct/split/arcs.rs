@@ -108,6 +108,8 @@ pub(crate) fn split_with_arcs(points: &[Point], segments: &[[Point; 2]], arcs: &
             rounds,
             pixel: pixels.size() * scale.to_input,
             max_displacement: displacement * scale.to_input,
+            // (a build with arcs checks its pieces afresh)
+            contact_free_in: None,
         },
         arcs: arc_pieces.into_iter().map(|a| ArcPiece { arc: a.arc.scaled(scale.to_input), origins: a.origins }).collect(),
     })

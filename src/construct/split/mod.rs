@@ -90,6 +90,12 @@ pub(crate) struct SplitInput {
     /// The largest distance from a piece to an input segment it came from,
     /// in input coordinates.
     pub max_displacement: f64,
+    /// The coordinates in which the last contact search found the pieces
+    /// and points meeting only at common endpoints: those of this scale,
+    /// into which `points` and `pieces` go back exactly. `None` where one
+    /// does not (saturated past `f64::MAX`, or rounded below the normal
+    /// numbers): then the build checks them afresh.
+    pub contact_free_in: Option<Scale>,
 }
 
 /// Splits `segments` (finite coordinates) against each other and against
@@ -127,12 +133,9 @@ pub(crate) fn split(points: &[Point], segments: &[[Point; 2]]) -> Result<SplitIn
     // coordinate can lie past f64::MAX (an input reaching f64::MAX); the
     // nearest representable point is f64::MAX, within the pixel as every
     // snapped point is.
-    let saturate = |v: f64| v.clamp(-f64::MAX, f64::MAX);
-    let external = |p: Point| {
-        let q = p.scaled(scale.to_input);
-        Point::new(saturate(q.x), saturate(q.y))
-    };
+    let external = |p: Point| scale.point_to_input(p);
     let counts = first.unwrap_or_default();
+    let contact_free_in = contact_free_in(scale, &moved, &pieces);
     Ok(SplitInput {
         points: moved.into_iter().map(external).collect(),
         pieces: pieces.into_iter().map(|p| Piece { ends: p.ends.map(external), origins: p.origins }).collect(),
@@ -142,7 +145,18 @@ pub(crate) fn split(points: &[Point], segments: &[[Point; 2]]) -> Result<SplitIn
         rounds,
         pixel: pixels.size() * scale.to_input,
         max_displacement,
+        contact_free_in,
     })
+}
+
+/// `Some(scale)` when every one of `points` and of the `pieces`' ends
+/// (internal coordinates of `scale`, where the last contact search found
+/// nothing) comes back to itself from input coordinates: the build then
+/// works on exactly what was searched (`SplitInput::contact_free_in`).
+fn contact_free_in(scale: Scale, points: &[Point], pieces: &[Piece]) -> Option<Scale> {
+    // (as the result is made: saturated at f64::MAX)
+    let comes_back = |p: Point| scale.point_to_input(p).scaled(scale.to_internal).canonical_zero() == p;
+    points.iter().copied().chain(pieces.iter().flat_map(|p| p.ends)).all(comes_back).then_some(scale)
 }
 
 /// The error for `contacts` still found after [`MAX_ROUNDS`] rounds.

@@ -359,3 +359,52 @@ fn splitting_on_two_threads_gives_one_threads_pieces() {
         assert_eq!(pieces(&one), pieces(&two));
     }
 }
+
+/// A split's pieces and points, known free of contacts where they go back
+/// exactly into the coordinates searched, need only normalising: the full
+/// check of them (normalisation, then the search for conflicts and splits)
+/// gives the same checked input. With what users have among random
+/// crossings: repeated and zero-length segments, points on segments and
+/// at their ends, a straight vertex; as made, tiny and huge.
+#[test]
+fn split_pieces_need_only_normalising() {
+    use crate::construct::input_check::{check_segments, normalise_contact_free};
+    let mut rng = SplitMix64(8);
+    let mut segments: Vec<[Point; 2]> = (0..3000)
+        .map(|_| {
+            let (x, y, a) = (rng.unit(), rng.unit(), rng.unit() * std::f64::consts::TAU);
+            [p(x, y), p(x + 0.05 * a.cos(), y + 0.05 * a.sin())]
+        })
+        .collect();
+    segments.extend([segments[5], [segments[6][1], segments[6][0]], [p(0.3, 0.3), p(0.3, 0.3)]]);
+    segments.extend([[p(0.1, 0.9), p(0.2, 0.9)], [p(0.2, 0.9), p(0.3, 0.9)]]);
+    let mut points: Vec<Point> = (0..300).map(|_| p(rng.unit(), rng.unit())).collect();
+    points.extend([p(0.15, 0.9), segments[9][0], segments[9][0], p(0.3, 0.3)]);
+    for factor in [1.0, 1e-200, 1e250] {
+        let scaled: Vec<[Point; 2]> = segments.iter().map(|s| s.map(|q| p(q.x * factor, q.y * factor))).collect();
+        let scaled_points: Vec<Point> = points.iter().map(|q| p(q.x * factor, q.y * factor)).collect();
+        let out = split(&scaled_points, &scaled).expect("splits");
+        let scale = out.contact_free_in.expect("every piece comes back exactly");
+        let ends: Vec<[Point; 2]> = out.pieces.iter().map(|q| q.ends).collect();
+        // (the build works in this scale, so it takes the light check)
+        assert_eq!(Scale::for_points(out.points.iter().chain(ends.iter().flatten())), scale, "factor {factor}");
+        let checked = check_segments(&out.points, &ends, &[], scale).expect("no conflict");
+        assert!(checked.duplicate_points > 0 && checked.degenerate_segments > 0, "factor {factor}");
+        assert_eq!(checked, normalise_contact_free(&out.points, &ends, scale), "factor {factor}");
+    }
+}
+
+/// Where a point saturates at f64::MAX on its way back to input
+/// coordinates, the pieces are not known free of contacts.
+#[test]
+fn a_point_past_f64_max_is_not_known_contact_free() {
+    let near_max = Scale::to_unit(f64::MAX);
+    let piece = |a: Point, b: Point| Piece { ends: [a, b], origins: vec![0] };
+    // (the scale is 2^1022: internal coordinates up to f64::MAX / 2^1022, about 4)
+    assert_eq!(near_max.to_input, 2f64.powi(1022));
+    let inside = [p(3.5, -1.0), p(1.0, 3.999_999)];
+    assert_eq!(contact_free_in(near_max, &inside, &[piece(inside[0], inside[1])]), Some(near_max));
+    // (4 · 2^1022 is past f64::MAX: it comes back as f64::MAX, below 4)
+    assert_eq!(contact_free_in(near_max, &[p(4.0, 0.0)], &[]), None);
+    assert_eq!(contact_free_in(near_max, &inside, &[piece(inside[0], p(-1.0, -4.0))]), None);
+}
