@@ -76,31 +76,50 @@ const SLABS_FROM: usize = 1 << 14;
 /// Large searches with a spare thread run in two slabs, with the same
 /// counts and pixels.
 pub(super) fn contact_pixels(layout: &Layout, pixels: &PixelGrid, hot: &mut Vec<Pixel>) -> ContactCounts {
-    let (segments, lone) = events_of(layout);
-    let large = segments.len() + lone.len() >= SLABS_FROM && crate::construct::threads::spare() > 0;
-    // (cut at the middle piece's first point: each slab has about half the pieces)
-    match segments.get(segments.len() / 2).map(|s| s[0]).filter(|_| large) {
-        Some(cut) => in_slabs(segments, &lone, cut, pixels, hot),
-        None => sweep(segments, &lone, Slab::WHOLE, pixels, hot),
+    let segments = first_point_first(layout);
+    let large = segments.len() + layout.lone.len() >= SLABS_FROM && crate::construct::threads::spare() > 0;
+    match middle_first_point(&segments).filter(|_| large) {
+        Some(cut) => in_slabs(&segments, &layout.lone, cut, pixels, hot),
+        None => {
+            let (segments, lone) = in_sweep_order(segments, layout.lone.clone());
+            sweep(segments, &lone, Slab::WHOLE, pixels, hot)
+        }
     }
 }
 
-/// The sweep's input: the pieces of nonzero length, first point first
-/// (lexicographically), in the order of their first points; the isolated
-/// points, in order.
-pub(super) fn events_of(layout: &Layout) -> (Vec<[Point; 2]>, Vec<Point>) {
+/// The pieces of nonzero length, each from its first point
+/// (lexicographically).
+pub(super) fn first_point_first(layout: &Layout) -> Vec<[Point; 2]> {
     let first_point_first = |[a, b]: [Point; 2]| if lex_cmp(a, b) == Ordering::Greater { [b, a] } else { [a, b] };
-    let mut segments: Vec<[Point; 2]> = layout.proper.iter().map(|&(_, s)| first_point_first(s)).collect();
+    layout.proper.iter().map(|&(_, s)| first_point_first(s)).collect()
+}
+
+/// The sweep's input: `segments` (first point first) in the order of their
+/// first points, and the isolated points `lone` in order.
+fn in_sweep_order(mut segments: Vec<[Point; 2]>, mut lone: Vec<Point>) -> (Vec<[Point; 2]>, Vec<Point>) {
     segments.sort_unstable_by(|s, t| lex_cmp(s[0], t[0]));
-    let mut lone = layout.lone.clone();
     lone.sort_unstable_by(|p, q| lex_cmp(*p, *q));
     (segments, lone)
 }
 
-/// [`contact_pixels`] of `segments` and `lone` (as [`events_of`] gives
-/// them) in two slabs, one per thread, cut at the point `cut`: the events
-/// before it (lexicographically) and those from it on. A contact is found
-/// at one event (an overlap at the first of its common part): its slab's.
+/// The most first points [`middle_first_point`] looks at: the slabs then
+/// differ by about a percent of the pieces.
+const CUT_SAMPLE: usize = 1 << 14;
+
+/// About the middle first point of `segments` (first point first), in the
+/// sweep's order: the median of a sample at an even stride. `None` for no
+/// segment.
+fn middle_first_point(segments: &[[Point; 2]]) -> Option<Point> {
+    let stride = segments.len().div_ceil(CUT_SAMPLE).max(1);
+    let mut firsts: Vec<Point> = segments.iter().step_by(stride).map(|s| s[0]).collect();
+    let middle = firsts.len() / 2;
+    (!firsts.is_empty()).then(|| *firsts.select_nth_unstable_by(middle, |p, q| lex_cmp(*p, *q)).1)
+}
+
+/// [`contact_pixels`] of `segments` (first point first) and `lone` in two
+/// slabs, one per thread, cut at the point `cut`: the events before it
+/// (lexicographically) and those from it on. A contact is found at one
+/// event (an overlap at the first of its common part): its slab's.
 ///
 /// Why the slabs find the whole sweep's contacts, no more and no fewer:
 /// the low slab sweeps the pieces that start before `cut`, up to it; every
@@ -113,26 +132,25 @@ pub(super) fn events_of(layout: &Layout) -> (Vec<[Point; 2]>, Vec<Point>) {
 /// slab counts those contacts) but notes the overlaps it meets, so that it
 /// does not count again an overlap whose common part runs across `cut`.
 /// Its extra work is the pieces running across `cut`, and their crossings
-/// before it: few where pieces are short.
+/// before it: few where pieces are short. Each slab picks and sorts its
+/// own pieces.
 pub(super) fn in_slabs(
-    segments: Vec<[Point; 2]>,
+    segments: &[[Point; 2]],
     lone: &[Point],
     cut: Point,
     pixels: &PixelGrid,
     hot: &mut Vec<Pixel>,
 ) -> ContactCounts {
     let before_cut = |p: Point| lex_cmp(p, cut) == Ordering::Less;
-    let high: Vec<[Point; 2]> = segments.iter().filter(|s| !before_cut(s[1])).copied().collect();
-    let mut low = segments;
-    low.truncate(low.partition_point(|s| before_cut(s[0])));
-    let (lone_low, lone_high) = lone.split_at(lone.partition_point(|&p| before_cut(p)));
-    let slab = |segments: Vec<[Point; 2]>, lone: &[Point], slab: Slab| {
+    let slab = |in_slab: &dyn Fn(&[Point; 2]) -> bool, point_in_slab: &dyn Fn(Point) -> bool, slab: Slab| {
+        let picked = segments.iter().filter(|s| in_slab(s)).copied().collect();
+        let (picked, lone) = in_sweep_order(picked, lone.iter().copied().filter(|&p| point_in_slab(p)).collect());
         let mut found = Vec::new();
-        (sweep(segments, lone, slab, pixels, &mut found), found)
+        (sweep(picked, &lone, slab, pixels, &mut found), found)
     };
     let ((high_counts, high_hot), (low_counts, low_hot)) = crate::construct::threads::run_beside(
-        || slab(high, lone_high, Slab { from: Some(cut), until: None }),
-        || slab(low, lone_low, Slab { from: None, until: Some(cut) }),
+        || slab(&|s| !before_cut(s[1]), &|p| !before_cut(p), Slab { from: Some(cut), until: None }),
+        || slab(&|s| before_cut(s[0]), &|p| before_cut(p), Slab { from: None, until: Some(cut) }),
     );
     hot.extend(low_hot);
     hot.extend(high_hot);
@@ -155,7 +173,7 @@ impl Slab {
     const WHOLE: Slab = Slab { from: None, until: None };
 }
 
-/// The sweep of `segments` and `lone` (as [`events_of`] gives them) over
+/// The sweep of `segments` and `lone` (as [`in_sweep_order`] gives them) over
 /// `slab`: its contacts' pixels appended to `hot`, and their counts.
 fn sweep(segments: Vec<[Point; 2]>, lone: &[Point], slab: Slab, pixels: &PixelGrid, hot: &mut Vec<Pixel>) -> ContactCounts {
     let mut ends: Vec<u32> = (0..segments.len() as u32).collect();

@@ -241,20 +241,21 @@ fn sweep_agrees_with_brute_force(segments: &[[Point; 2]], points: &[Point]) -> R
     slabs_agree_with_the_whole_sweep(&layout, &pixels)
 }
 
-/// The search in two slabs (`contacts::in_slabs`), cut at every first
-/// point of a piece and every point, and beyond them all, finds what the
-/// whole sweep finds: the same counts and the same pixels, as often.
+/// The search in two slabs (`contacts::in_slabs`), cut at every end of a
+/// piece and every point, and beyond them all, finds what the whole sweep
+/// finds: the same counts and the same pixels, as often.
 fn slabs_agree_with_the_whole_sweep(layout: &Layout, pixels: &PixelGrid) -> Result<(), String> {
-    use contacts::{events_of, in_slabs};
-    let (segments, lone) = events_of(layout);
+    use contacts::{first_point_first, in_slabs};
+    let segments = first_point_first(layout);
+    let lone = &layout.lone;
     let mut whole = Vec::new();
     let counts = contact_pixels(layout, pixels, &mut whole); // (small: one sweep)
     whole.sort_unstable();
     let beyond = [p(f64::NEG_INFINITY, 0.0), p(f64::INFINITY, 0.0)];
-    let cuts = segments.iter().map(|s| s[0]).chain(lone.iter().copied()).chain(beyond);
+    let cuts = segments.iter().flatten().chain(lone).copied().chain(beyond);
     for cut in cuts {
         let mut found = Vec::new();
-        let in_two = in_slabs(segments.clone(), &lone, cut, pixels, &mut found);
+        let in_two = in_slabs(&segments, lone, cut, pixels, &mut found);
         found.sort_unstable();
         if in_two != counts || found != whole {
             return Err(format!("cut at {cut:?}: slabs {in_two:?} {found:?}, whole sweep {counts:?} {whole:?}"));
