@@ -311,6 +311,17 @@ fn the_sweep_finds_crossings_of_long_nearly_parallel_pieces() {
     sweep_agrees_with_brute_force(&segments, &[p(500.0, 30.0)]).unwrap();
 }
 
+/// `n` segments of length `length` from random points of the unit square,
+/// in random directions.
+fn random_segments(rng: &mut SplitMix64, n: usize, length: f64) -> Vec<[Point; 2]> {
+    (0..n)
+        .map(|_| {
+            let (x, y, a) = (rng.unit(), rng.unit(), rng.unit() * std::f64::consts::TAU);
+            [p(x, y), p(x + length * a.cos(), y + length * a.sin())]
+        })
+        .collect()
+}
+
 /// Splitting on two threads (the contact search in slabs, the routing in
 /// halves) gives what one thread gives, piece for piece, on inputs large
 /// enough for both: random short crossings with what users have among them
@@ -320,12 +331,7 @@ fn the_sweep_finds_crossings_of_long_nearly_parallel_pieces() {
 #[test]
 fn splitting_on_two_threads_gives_one_threads_pieces() {
     let mut rng = SplitMix64(33);
-    let mut segments: Vec<[Point; 2]> = (0..18_000)
-        .map(|_| {
-            let (x, y, a) = (rng.unit(), rng.unit(), rng.unit() * std::f64::consts::TAU);
-            [p(x, y), p(x + 0.01 * a.cos(), y + 0.01 * a.sin())]
-        })
-        .collect();
+    let mut segments = random_segments(&mut rng, 18_000, 0.01);
     // overlapping runs along y = 0.5 and x = 0.5, across every cut
     segments.extend((0..40).map(|k| [p(k as f64 / 50.0, 0.5), p(k as f64 / 50.0 + 0.3, 0.5)]));
     segments.extend((0..40).map(|k| [p(0.5, k as f64 / 50.0 + 0.3), p(0.5, k as f64 / 50.0)]));
@@ -371,12 +377,7 @@ fn splitting_on_two_threads_gives_one_threads_pieces() {
 fn split_pieces_need_only_normalising() {
     use crate::construct::input_check::{check_segments, normalise_contact_free};
     let mut rng = SplitMix64(8);
-    let mut segments: Vec<[Point; 2]> = (0..3000)
-        .map(|_| {
-            let (x, y, a) = (rng.unit(), rng.unit(), rng.unit() * std::f64::consts::TAU);
-            [p(x, y), p(x + 0.05 * a.cos(), y + 0.05 * a.sin())]
-        })
-        .collect();
+    let mut segments = random_segments(&mut rng, 3000, 0.05);
     segments.extend([segments[5], [segments[6][1], segments[6][0]], [p(0.3, 0.3), p(0.3, 0.3)]]);
     segments.extend([[p(0.1, 0.9), p(0.2, 0.9)], [p(0.2, 0.9), p(0.3, 0.9)]]);
     let mut points: Vec<Point> = (0..300).map(|_| p(rng.unit(), rng.unit())).collect();
