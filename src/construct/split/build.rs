@@ -18,6 +18,8 @@ pub(crate) fn diagram_of_split(points: &[Point], segments: &[[Point; 2]], rings:
         (split.pieces, split_rings_over_pieces, cancelled) = (pieces, new_rings, dropped);
     }
     let ends: Vec<[Point; 2]> = split.pieces.iter().map(|p| p.ends).collect();
+    // (the rings' pieces are some of the split's, reordered and some
+    // reversed: still meeting only at common endpoints)
     let mut diagram = crate::construct::diagram_of_contact_free(&split.points, &ends, split.contact_free_in)
         .map_err(|e| in_input_terms(e, &split))?;
     if !rings.is_empty() {

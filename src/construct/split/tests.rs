@@ -327,7 +327,8 @@ fn random_segments(rng: &mut SplitMix64, n: usize, length: f64) -> Vec<[Point; 2
 /// enough for both: random short crossings with what users have among them
 /// (collinear overlaps running across the middle, repeated and reversed
 /// pieces, points on pieces and on crossings, a straight vertex, rings
-/// touching at a corner), as made and mirrored far from the origin.
+/// touching at a corner), as made, mirrored far from the origin, scaled
+/// and reversed and shuffled.
 #[test]
 fn splitting_on_two_threads_gives_one_threads_pieces() {
     let mut rng = SplitMix64(33);
@@ -352,10 +353,22 @@ fn splitting_on_two_threads_gives_one_threads_pieces() {
     segments.extend(square(0.6, 0.6).into_iter().chain(square(0.7, 0.7)));
     let mut points: Vec<Point> = (0..600).map(|_| p(rng.unit(), rng.unit())).collect();
     points.extend([p(0.25, 0.5), p(0.5, 0.5), segments[3][0], segments[7][1]]);
-    let far = |q: Point| p(-q.x + 1e9, q.y - 1e9);
-    let mirrored: Vec<[Point; 2]> = segments.iter().map(|s| s.map(far)).collect();
-    let mirrored_points: Vec<Point> = points.iter().map(|&q| far(q)).collect();
-    for (points, segments) in [(&points, &segments), (&mirrored_points, &mirrored)] {
+    // mirrored far out; scaled by 2^-30; reversed (the list and each
+    // segment) and shuffled
+    let moved = |f: &dyn Fn(Point) -> Point| {
+        (points.iter().map(|&q| f(q)).collect::<Vec<_>>(), segments.iter().map(|s| s.map(f)).collect::<Vec<_>>())
+    };
+    let mut reversed: Vec<[Point; 2]> = segments.iter().rev().map(|&[a, b]| [b, a]).collect();
+    for k in (1..reversed.len()).rev() {
+        reversed.swap(k, (rng.next_u64() % (k as u64 + 1)) as usize);
+    }
+    let variants = [
+        (points.clone(), segments.clone()),
+        moved(&|q| p(-q.x + 1e9, q.y - 1e9)),
+        moved(&|q| p(q.x * 2f64.powi(-30), q.y * 2f64.powi(-30))),
+        (points.iter().rev().copied().collect(), reversed),
+    ];
+    for (points, segments) in &variants {
         let [one, two] =
             [1, 2].map(|threads| crate::construct::threads::with_threads(threads, || split(points, segments).expect("splits")));
         let counts = |s: &SplitInput| (s.crossings, s.overlaps, s.touchings, s.rounds, s.max_displacement.to_bits());
