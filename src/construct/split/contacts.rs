@@ -66,25 +66,17 @@ impl ContactCounts {
     }
 }
 
-/// From this many pieces and points on, a search with a spare thread runs
-/// in two slabs (`in_slabs`): below, the second thread costs more than it
-/// saves.
+/// From this many pieces and points on, a search (or a slab of one) with
+/// a spare thread runs in two slabs (`in_slabs`): below, the second thread
+/// costs more than it saves.
 const SLABS_FROM: usize = 1 << 14;
 
 /// The pixels where the pieces of `layout` and its points meet other than
 /// at common endpoints, appended to `hot` (with repeats), and the counts.
-/// Large searches with a spare thread run in two slabs, with the same
-/// counts and pixels.
+/// Large searches with a spare thread run in slabs, with the same counts
+/// and pixels.
 pub(super) fn contact_pixels(layout: &Layout, pixels: &PixelGrid, hot: &mut Vec<Pixel>) -> ContactCounts {
-    let segments = first_point_first(layout);
-    let large = segments.len() + layout.lone.len() >= SLABS_FROM && crate::construct::threads::spare() > 0;
-    match middle_first_point(&segments).filter(|_| large) {
-        Some(cut) => in_slabs(&segments, &layout.lone, cut, pixels, hot),
-        None => {
-            let (segments, lone) = in_sweep_order(segments, layout.lone.clone());
-            sweep(segments, &lone, Slab::WHOLE, pixels, hot)
-        }
-    }
+    slab_search(first_point_first(layout), layout.lone.clone(), Slab::WHOLE, pixels, hot)
 }
 
 /// The pieces of nonzero length, each from its first point
@@ -102,55 +94,79 @@ fn in_sweep_order(mut segments: Vec<[Point; 2]>, mut lone: Vec<Point>) -> (Vec<[
     (segments, lone)
 }
 
+/// The contacts of `slab`, among `segments` (first point first, in any
+/// order) and the points `lone`, which it picks (`Slab::picks`,
+/// `Slab::holds`): swept on this thread, or where the slab is large and a
+/// thread is spare, in two slabs cut at about its middle first point, each
+/// searched the same way on its own thread (so that a build with 2^k
+/// threads searches in up to 2^k slabs).
+pub(super) fn slab_search(
+    segments: Vec<[Point; 2]>,
+    lone: Vec<Point>,
+    slab: Slab,
+    pixels: &PixelGrid,
+    hot: &mut Vec<Pixel>,
+) -> ContactCounts {
+    let large = segments.len() + lone.len() >= SLABS_FROM && crate::construct::threads::spare() > 0;
+    match middle_first_point(&segments, slab).filter(|_| large) {
+        Some(cut) => in_slabs(&segments, &lone, slab, cut, pixels, hot),
+        None => {
+            let (segments, lone) = in_sweep_order(segments, lone);
+            sweep(segments, &lone, slab, pixels, hot)
+        }
+    }
+}
+
 /// The most first points [`middle_first_point`] looks at: the slabs then
 /// differ by about a percent of the pieces.
 const CUT_SAMPLE: usize = 1 << 14;
 
-/// About the middle first point of `segments` (first point first), in the
-/// sweep's order: the median of a sample at an even stride. `None` for no
-/// segment.
-fn middle_first_point(segments: &[[Point; 2]]) -> Option<Point> {
+/// About the middle first point of the `segments` (first point first) that
+/// start inside `slab`, in the sweep's order: the median of a sample at an
+/// even stride. `None` where none starts inside it past its start (a cut
+/// there would leave its low part empty).
+fn middle_first_point(segments: &[[Point; 2]], slab: Slab) -> Option<Point> {
     let stride = segments.len().div_ceil(CUT_SAMPLE).max(1);
-    let mut firsts: Vec<Point> = segments.iter().step_by(stride).map(|s| s[0]).collect();
+    let mut firsts: Vec<Point> = segments.iter().step_by(stride).map(|s| s[0]).filter(|&p| slab.after_its_start(p)).collect();
     let middle = firsts.len() / 2;
     (!firsts.is_empty()).then(|| *firsts.select_nth_unstable_by(middle, |p, q| lex_cmp(*p, *q)).1)
 }
 
-/// [`contact_pixels`] of `segments` (first point first) and `lone` in two
-/// slabs, one per thread, cut at the point `cut`: the events before it
-/// (lexicographically) and those from it on. A contact is found at one
-/// event (an overlap at the first of its common part): its slab's.
+/// [`slab_search`] of `slab` cut in two at the point `cut` (inside it),
+/// one part per thread: the events before `cut` (lexicographically) and
+/// those from it on. `segments` (first point first) and `lone` hold at
+/// least what `slab` picks. A contact is found at one event (an overlap at
+/// the first of its common part): its part's.
 ///
-/// Why the slabs find the whole sweep's contacts, no more and no fewer:
-/// the low slab sweeps the pieces that start before `cut`, up to it; every
-/// piece through an event before `cut` starts before it. The high slab
-/// sweeps every piece that ends at `cut` or after, and the points from
-/// `cut` on, from the first event of those pieces: every piece through an
-/// event at or after `cut` ends there or later. A sweep of a subset of the
-/// pieces orders them as the whole sweep does, and pairs two of them at
-/// the same events. Before `cut` the high slab counts nothing (the low
-/// slab counts those contacts) but notes the overlaps it meets, so that it
-/// does not count again an overlap whose common part runs across `cut`.
-/// Its extra work is the pieces running across `cut`, and their crossings
-/// before it: few where pieces are short. Each slab picks and sorts its
-/// own pieces.
+/// Why the parts find the slab's contacts, no more and no fewer: the low
+/// part sweeps the pieces that start before `cut`, up to it; every piece
+/// through an event before `cut` starts before it. The high part sweeps
+/// every piece that ends at `cut` or after, and the points from `cut` on,
+/// from the first event of those pieces: every piece through an event at
+/// or after `cut` ends there or later. A sweep of a subset of the pieces
+/// orders them as the whole sweep does, and pairs two of them at the same
+/// events. Before `cut` the high part counts nothing (the low part counts
+/// those contacts) but notes the overlaps it meets, so that it does not
+/// count again an overlap whose common part runs across `cut`. Its extra
+/// work is the pieces running across `cut`, and their crossings before it:
+/// few where pieces are short. Each part picks and sorts its own pieces.
 pub(super) fn in_slabs(
     segments: &[[Point; 2]],
     lone: &[Point],
+    slab: Slab,
     cut: Point,
     pixels: &PixelGrid,
     hot: &mut Vec<Pixel>,
 ) -> ContactCounts {
-    let before_cut = |p: Point| lex_cmp(p, cut) == Ordering::Less;
-    let slab = |in_slab: &dyn Fn(&[Point; 2]) -> bool, point_in_slab: &dyn Fn(Point) -> bool, slab: Slab| {
-        let picked = segments.iter().filter(|s| in_slab(s)).copied().collect();
-        let (picked, lone) = in_sweep_order(picked, lone.iter().copied().filter(|&p| point_in_slab(p)).collect());
+    let search = |part: Slab| {
+        let picked = segments.iter().filter(|s| part.picks(s)).copied().collect();
+        let lone = lone.iter().copied().filter(|&p| part.holds(p)).collect();
         let mut found = Vec::new();
-        (sweep(picked, &lone, slab, pixels, &mut found), found)
+        (slab_search(picked, lone, part, pixels, &mut found), found)
     };
     let ((high_counts, high_hot), (low_counts, low_hot)) = crate::construct::threads::run_beside(
-        || slab(&|s| !before_cut(s[1]), &|p| !before_cut(p), Slab { from: Some(cut), until: None }),
-        || slab(&|s| before_cut(s[0]), &|p| before_cut(p), Slab { from: None, until: Some(cut) }),
+        || search(Slab { from: Some(cut), ..slab }),
+        || search(Slab { until: Some(cut), ..slab }),
     );
     hot.extend(low_hot);
     hot.extend(high_hot);
@@ -163,14 +179,33 @@ pub(super) fn in_slabs(
 
 /// The events a sweep counts: those from `from` on (the earlier ones only
 /// keep its status and note overlaps), before `until` (where it stops).
-#[derive(Clone, Copy)]
-struct Slab {
-    from: Option<Point>,
-    until: Option<Point>,
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Slab {
+    pub(super) from: Option<Point>,
+    pub(super) until: Option<Point>,
 }
 
 impl Slab {
-    const WHOLE: Slab = Slab { from: None, until: None };
+    pub(super) const WHOLE: Slab = Slab { from: None, until: None };
+
+    /// Whether the slab's sweep takes the piece `s` (first point first):
+    /// it starts before the slab's end and ends at or after its start.
+    pub(super) fn picks(&self, s: &[Point; 2]) -> bool {
+        self.until.map_or(true, |u| lex_cmp(s[0], u) == Ordering::Less)
+            && self.from.map_or(true, |f| lex_cmp(s[1], f) != Ordering::Less)
+    }
+
+    /// Whether the point `p` lies in the slab: at or after its start,
+    /// before its end.
+    pub(super) fn holds(&self, p: Point) -> bool {
+        self.from.map_or(true, |f| lex_cmp(p, f) != Ordering::Less)
+            && self.until.map_or(true, |u| lex_cmp(p, u) == Ordering::Less)
+    }
+
+    /// Whether `p` lies in the slab past its start.
+    fn after_its_start(&self, p: Point) -> bool {
+        self.holds(p) && self.from.map_or(true, |f| lex_cmp(p, f) == Ordering::Greater)
+    }
 }
 
 /// The sweep of `segments` and `lone` (as [`in_sweep_order`] gives them) over

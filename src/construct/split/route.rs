@@ -41,8 +41,8 @@ pub(super) fn route(pieces: Vec<Piece>, hot: &HotPixels, pixels: &PixelGrid) -> 
     route_also_through(pieces, hot, pixels, &HashMap::new())
 }
 
-/// From this many pieces on, a round with a spare thread routes them in
-/// two halves, one per thread.
+/// From this many pieces on, a round (or a half of one) with a spare
+/// thread routes them in two halves, one per thread.
 const HALVES_FROM: usize = 1 << 13;
 
 /// [`route`], each piece also bent through the centres of its pixels in
@@ -50,9 +50,10 @@ const HALVES_FROM: usize = 1 << 13;
 /// rounded point that the piece may pass a hair beside.
 ///
 /// Large rounds with a spare thread route the first and the second half of
-/// the pieces apart and merge the second's into the first's: the pieces
-/// come out as from one thread (in order of first appearance, merged ones
-/// with the sorted union of their input segments).
+/// the pieces apart (each half in halves again while threads are spare)
+/// and merge the second's into the first's: the pieces come out as from
+/// one thread (in order of first appearance, merged ones with the sorted
+/// union of their input segments).
 pub(super) fn route_also_through(
     pieces: Vec<Piece>,
     hot: &HotPixels,
@@ -62,20 +63,35 @@ pub(super) fn route_also_through(
     // Built here, per round that routes: the last round's contact search
     // finds nothing and routes nothing.
     let tree = PixelTree::new(hot.set.iter().copied().collect());
-    let routed = |pieces: Vec<Piece>, first: usize| {
-        let mut out = Merged::default();
-        route_into(&mut out, pieces, first, (hot, &tree), pixels, also);
-        out
-    };
+    routed(pieces, 0, &(hot, &tree), pixels, also, false).pieces
+}
+
+/// `pieces` (the first of them is piece `first` of the round) routed and
+/// merged: on this thread, or in halves (see [`route_also_through`]).
+/// `indexed`: every piece of the result is in its index, as merging
+/// others into it needs (else those of a second half may not be).
+fn routed(
+    mut pieces: Vec<Piece>,
+    first: usize,
+    hot: &(&HotPixels, &PixelTree),
+    pixels: &PixelGrid,
+    also: &HashMap<usize, Vec<Pixel>>,
+    indexed: bool,
+) -> Merged {
     if pieces.len() < HALVES_FROM || crate::construct::threads::spare() == 0 {
-        return routed(pieces, 0).pieces;
+        let mut out = Merged::default();
+        route_into(&mut out, pieces, first, *hot, pixels, also);
+        return out;
     }
-    let mut pieces = pieces;
     let middle = pieces.len() / 2;
     let second = pieces.split_off(middle);
-    let (second, mut out) = crate::construct::threads::run_beside(|| routed(second, middle), || routed(pieces, 0));
-    out.append_merged(second);
-    out.pieces
+    // (the first half's pieces are looked up by the second's: indexed)
+    let (second, mut out) = crate::construct::threads::run_beside(
+        || routed(second, first + middle, hot, pixels, also, false),
+        || routed(pieces, first, hot, pixels, also, true),
+    );
+    out.append_merged(second, indexed);
+    out
 }
 
 /// Routes `pieces` (the first of them is piece `first` of the round) into
@@ -143,13 +159,20 @@ impl Merged {
         }
     }
 
-    /// The pieces of `later` (merged among themselves) pushed after these,
-    /// the last pushes: `later`'s new pieces are not indexed.
-    fn append_merged(&mut self, later: Merged) {
+    /// The pieces of `later` (merged among themselves) pushed after these;
+    /// its new pieces indexed only where `index` says (not for the last
+    /// pushes: a look-up each is then all it costs).
+    fn append_merged(&mut self, later: Merged, index: bool) {
         for piece in later.pieces {
-            match self.index.get(&Point::segment_key(piece.ends[0], piece.ends[1])) {
+            let key = Point::segment_key(piece.ends[0], piece.ends[1]);
+            match self.index.get(&key) {
                 Some(&k) => self.pieces[k].merge(piece.origins),
-                None => self.pieces.push(piece),
+                None => {
+                    if index {
+                        self.index.insert(key, self.pieces.len());
+                    }
+                    self.pieces.push(piece);
+                }
             }
         }
     }

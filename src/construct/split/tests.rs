@@ -1,5 +1,5 @@
 use super::*;
-use crate::geometry::input::segment_contact::{inside_segment, segment_contact};
+use crate::geometry::input::segment_contact::{inside_segment, lex_cmp, segment_contact};
 use crate::splitmix::SplitMix64;
 
 fn p(x: f64, y: f64) -> Point {
@@ -243,22 +243,47 @@ fn sweep_agrees_with_brute_force(segments: &[[Point; 2]], points: &[Point]) -> R
 
 /// The search in two slabs (`contacts::in_slabs`), cut at every end of a
 /// piece and every point, and beyond them all, finds what the whole sweep
-/// finds: the same counts and the same pixels, as often.
+/// finds: the same counts and the same pixels, as often. So does a slab
+/// (from a third of those points to two thirds) cut in two again, at every
+/// point inside it, against its own sweep: the slabs nested, as four
+/// threads or more run them.
 fn slabs_agree_with_the_whole_sweep(layout: &Layout, pixels: &PixelGrid) -> Result<(), String> {
-    use contacts::{first_point_first, in_slabs};
+    use contacts::{first_point_first, in_slabs, slab_search, Slab};
     let segments = first_point_first(layout);
     let lone = &layout.lone;
-    let mut whole = Vec::new();
-    let counts = contact_pixels(layout, pixels, &mut whole); // (small: one sweep)
-    whole.sort_unstable();
-    let beyond = [p(f64::NEG_INFINITY, 0.0), p(f64::INFINITY, 0.0)];
-    let cuts = segments.iter().flatten().chain(lone).copied().chain(beyond);
-    for cut in cuts {
+    let found_in = |slab: Slab, cut: Option<Point>| {
         let mut found = Vec::new();
-        let in_two = in_slabs(&segments, lone, cut, pixels, &mut found);
+        let counts = match cut {
+            Some(cut) => in_slabs(&segments, lone, slab, cut, pixels, &mut found),
+            None => {
+                let picked = segments.iter().filter(|s| slab.picks(s)).copied().collect();
+                let held = lone.iter().copied().filter(|&q| slab.holds(q)).collect();
+                slab_search(picked, held, slab, pixels, &mut found) // (small: one sweep)
+            }
+        };
         found.sort_unstable();
-        if in_two != counts || found != whole {
-            return Err(format!("cut at {cut:?}: slabs {in_two:?} {found:?}, whole sweep {counts:?} {whole:?}"));
+        (counts, found)
+    };
+    let mut cuts: Vec<Point> = segments.iter().flatten().chain(lone).copied().collect();
+    cuts.sort_unstable_by(|a, b| lex_cmp(*a, *b));
+    cuts.dedup_by(|a, b| lex_cmp(*a, *b) == std::cmp::Ordering::Equal);
+    let whole = found_in(Slab::WHOLE, None);
+    let beyond = [p(f64::NEG_INFINITY, 0.0), p(f64::INFINITY, 0.0)];
+    for &cut in cuts.iter().chain(&beyond) {
+        let in_two = found_in(Slab::WHOLE, Some(cut));
+        if in_two != whole {
+            return Err(format!("cut at {cut:?}: slabs {in_two:?}, whole sweep {whole:?}"));
+        }
+    }
+    let (first, last) = (cuts.len() / 3, 2 * cuts.len() / 3);
+    if let (Some(&from), Some(&until)) = (cuts.get(first), cuts.get(last)) {
+        let slab = Slab { from: Some(from), until: Some(until) };
+        let own = found_in(slab, None);
+        for &cut in cuts.get(first + 1..last).unwrap_or_default() {
+            let in_two = found_in(slab, Some(cut));
+            if in_two != own {
+                return Err(format!("{slab:?} cut at {cut:?}: {in_two:?}, its own sweep {own:?}"));
+            }
         }
     }
     Ok(())
@@ -323,8 +348,8 @@ fn random_segments(rng: &mut SplitMix64, n: usize, length: f64) -> Vec<[Point; 2
 }
 
 /// Splitting on two threads (the contact search in slabs, the routing in
-/// halves) gives what one thread gives, piece for piece, on inputs large
-/// enough for both: random short crossings with what users have among them
+/// halves) and on four (slabs of slabs) gives what one thread gives,
+/// piece for piece, on inputs large enough for both: random short crossings with what users have among them
 /// (collinear overlaps running across the middle, repeated and reversed
 /// pieces, points on pieces and on crossings, a straight vertex, rings
 /// touching at a corner), as made, mirrored far from the origin, scaled
@@ -369,14 +394,17 @@ fn splitting_on_two_threads_gives_one_threads_pieces() {
         (points.iter().rev().copied().collect(), reversed),
     ];
     for (points, segments) in &variants {
-        let [one, two] =
-            [1, 2].map(|threads| crate::construct::threads::with_threads(threads, || split(points, segments).expect("splits")));
+        // (four threads: slabs of slabs)
+        let [one, two, four] = [1, 2, 4]
+            .map(|threads| crate::construct::threads::with_threads(threads, || split(points, segments).expect("splits")));
         let counts = |s: &SplitInput| (s.crossings, s.overlaps, s.touchings, s.rounds, s.max_displacement.to_bits());
         assert!(one.crossings > 10_000 && one.overlaps > 100 && one.touchings > 0, "{:?}", counts(&one));
-        assert_eq!(counts(&one), counts(&two));
-        assert_eq!(one.points, two.points);
         let pieces = |s: &SplitInput| s.pieces.iter().map(|q| (q.ends, q.origins.clone())).collect::<Vec<_>>();
-        assert_eq!(pieces(&one), pieces(&two));
+        for other in [&two, &four] {
+            assert_eq!(counts(&one), counts(other));
+            assert_eq!(one.points, other.points);
+            assert_eq!(pieces(&one), pieces(other));
+        }
     }
 }
 
