@@ -185,9 +185,12 @@ fn build_sites_and_arcs(
     // (a split's pieces, in the coordinates its contact search verified:
     // the check only normalises them)
     let contact_free = contact_free_in == Some(scale);
-    let check_segments = |points: &[Point], segments: &[[Point; 2]], ring: &[bool], scale: Scale| match contact_free {
-        true => Ok(input_check::normalise_contact_free(points, segments, scale)),
-        false => check_segments(points, segments, ring, scale),
+    let check_or_normalise = || {
+        if contact_free {
+            Ok(input_check::normalise_contact_free(points, segments, scale))
+        } else {
+            check_segments(points, segments, ring, scale)
+        }
     };
 
     // With a spare thread and no arcs, a large build runs in halves
@@ -200,7 +203,7 @@ fn build_sites_and_arcs(
     let built_in_halves = if arcs.is_empty() && halves::worth_it(scaled.len() + segments.len()) {
         let raw: Vec<[usize; 2]> = (0..segments.len()).map(|j| endpoint_index(points.len(), j)).collect();
         halves::insert_all_in_halves_after(&scaled, &raw, contact_free, || {
-            let checked = check_segments(points, segments, ring, scale);
+            let checked = check_or_normalise();
             let shared = checked.as_ref().ok().and_then(|c| shared_stretches::shared_pieces(c, points, segments, ring));
             // only plain input goes on in halves: no error, shared stretches or split
             let plain = match &checked {
@@ -217,7 +220,7 @@ fn build_sites_and_arcs(
     // The points go in whatever the input check finds (a repeated or
     // zero-length segment only repeats points), so on large inputs the
     // check runs on a second thread meanwhile; an error discards the points.
-    let check = || (check_arcs(), check_segments(points, segments, ring, scale));
+    let check = || (check_arcs(), check_or_normalise());
     let ((arcs_checked, checked), stage, shared) = match checked_beside_halves {
         Some((checked, shared)) => ((check_arcs(), checked), None, Some(shared)),
         None if built_in_halves.is_none() && segments.len() + arcs.len() >= PARALLEL_CHECK_FROM => {

@@ -149,30 +149,27 @@ struct Merged {
 
 impl Merged {
     fn push(&mut self, ends: [Point; 2], origins: Vec<u32>) {
-        let full = Point::segment_key(ends[0], ends[1]);
-        match self.index.get(&full) {
-            Some(&k) => self.pieces[k].merge(origins),
-            None => {
-                self.index.insert(full, self.pieces.len());
-                self.pieces.push(Piece { ends, origins });
-            }
-        }
+        self.add(Piece { ends, origins }, true);
     }
 
     /// The pieces of `later` (merged among themselves) pushed after these;
     /// its new pieces indexed only where `index` says (not for the last
     /// pushes: a look-up each is then all it costs).
     fn append_merged(&mut self, later: Merged, index: bool) {
-        for piece in later.pieces {
-            let key = Point::segment_key(piece.ends[0], piece.ends[1]);
-            match self.index.get(&key) {
-                Some(&k) => self.pieces[k].merge(piece.origins),
-                None => {
-                    if index {
-                        self.index.insert(key, self.pieces.len());
-                    }
-                    self.pieces.push(piece);
+        later.pieces.into_iter().for_each(|piece| self.add(piece, index));
+    }
+
+    /// `piece` merged into the equal one here, or added after the others
+    /// (and indexed where `index` says).
+    fn add(&mut self, piece: Piece, index: bool) {
+        let key = Point::segment_key(piece.ends[0], piece.ends[1]);
+        match self.index.get(&key) {
+            Some(&k) => self.pieces[k].merge(piece.origins),
+            None => {
+                if index {
+                    self.index.insert(key, self.pieces.len());
                 }
+                self.pieces.push(piece);
             }
         }
     }
