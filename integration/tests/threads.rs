@@ -425,6 +425,62 @@ fn crossing_segments_split_glue_from_halves_at_once() {
     set_halves_from(None);
 }
 
+/// A real outline split on two and four threads: GSHHG's coasts and
+/// borders of Europe (`tests/data/`, from Debian's gmt-gshhg), tiled 6x6
+/// with the tiles overlapping (their coasts and borders cross), with a
+/// straight (180-degree) vertex, a point exactly on a segment and two
+/// squares touching at a corner, 2^30 from the origin. Large enough for
+/// the contact search in slabs (and slabs of slabs at four threads) and
+/// the routing in halves: the pieces, their counts and the diagram of one
+/// thread.
+#[test]
+fn real_coasts_tiled_split_the_same_at_every_thread_count() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/gshhg_coast_borders_c_europe.txt");
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let coast = segvoronoi::boost_text::parse(&text).unwrap_or_else(|e| panic!("{path}: {e}")).segments;
+    let xs = coast.iter().flat_map(|s| [s[0], s[2]]);
+    let ys = coast.iter().flat_map(|s| [s[1], s[3]]);
+    let (x0, x1) = xs.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
+    let (y0, y1) = ys.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| (a.min(y), b.max(y)));
+    // (steps of nine tenths of the extent, whole numbers: every coordinate
+    // stays an exact integer 2^30 out)
+    let (dx, dy) = ((0.9 * (x1 - x0)).round(), (0.9 * (y1 - y0)).round());
+    let o = 2f64.powi(30);
+    let mut segments: Vec<[[f64; 2]; 2]> = Vec::new();
+    for (i, j) in (0..6).flat_map(|i| (0..6).map(move |j| (i as f64, j as f64))) {
+        segments.extend(coast.iter().map(|s| [[o + s[0] + i * dx, o + s[1] + j * dy], [o + s[2] + i * dx, o + s[3] + j * dy]]));
+    }
+    // below the tiles: a straight vertex with a point exactly on one of
+    // its segments, and two squares touching at a corner
+    let (px, py) = (o + x0, o + y0 - 20_000.0);
+    segments.extend([[[px, py], [px + 5_000.0, py]], [[px + 5_000.0, py], [px + 10_000.0, py]]]);
+    let square = |x: f64, y: f64| {
+        [
+            [[x, y], [x + 4_000.0, y]],
+            [[x + 4_000.0, y], [x + 4_000.0, y + 4_000.0]],
+            [[x + 4_000.0, y + 4_000.0], [x, y + 4_000.0]],
+            [[x, y + 4_000.0], [x, y]],
+        ]
+    };
+    segments.extend(square(px + 20_000.0, py).into_iter().chain(square(px + 24_000.0, py + 4_000.0)));
+    let mut b = Builder::new();
+    b.split_crossings(true).add_segments(segments.iter().copied()).unwrap();
+    b.add_points([[px + 1_250.0, py]]).unwrap();
+    let one = b.threads(1).build().unwrap_or_else(|e| panic!("tiled coasts: {e}"));
+    let split = |d: &Diagram| {
+        let s = d.stats();
+        (s.pieces, s.crossings, s.overlaps, s.touchings, s.snap_rounds)
+    };
+    eprintln!("tiled coasts: {} segments; pieces, crossings, overlaps, touchings, rounds: {:?}", segments.len(), split(&one));
+    assert!(one.stats().crossings > 1_000 && one.stats().pieces > 40_000, "too few crossings to test: {:?}", split(&one));
+    assert!(one.stats().touchings > 0, "the point on a segment was not met");
+    for n in [2, 4] {
+        let other = b.threads(n).build().unwrap_or_else(|e| panic!("tiled coasts at {n} threads: {e}"));
+        assert_eq!(split(&one), split(&other), "tiled coasts at {n} threads");
+        assert!(fingerprint(&one) == fingerprint(&other), "tiled coasts: another diagram at {n} threads");
+    }
+}
+
 /// With four threads or more, each half is built in halves in turn on the
 /// threads its own thread may start (vertical strips, glued pairwise):
 /// the one-thread diagram, bit for bit, at 4 and 8 threads (on this
