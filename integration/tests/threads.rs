@@ -587,3 +587,76 @@ fn negative_zero_builds_as_positive_zero() {
         }
     }
 }
+
+/// A sheet of star-shaped parts with a hole each (the headline's
+/// polygons): along its lumpy boundary the circles of the cells by the
+/// hull dip between the parts far deeper than a rim the halves could both
+/// hold, and such a rim held too many points: the plan refused the sheet,
+/// and forced, it took a second attempt with each half holding the whole.
+/// Both halves now hold the skyline and a shallow rim, and ask the disks
+/// the seam's tests cannot clear of the left-out sites themselves. With a
+/// straight vertex (an edge of a part cut in two) and one an ulp off
+/// straight among them; as made, mirrored 2^30 out, and reversed and
+/// shuffled: the halves glue at once, and give the one-thread diagram
+/// (with a point exactly on an edge too, the one-thread diagram: such a
+/// build does not run in halves). At the headline's size (200 parts, 100k
+/// segments) the plan takes the sheet without being forced.
+#[test]
+fn a_sheet_of_parts_glues_from_halves_at_once() {
+    use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
+    use segvoronoi_testgen::shapes::star_ring;
+    use segvoronoi_testgen::Rng;
+    let sheet = |parts: usize, outer: usize, hole: usize| {
+        let mut rng = Rng(1);
+        let side = (parts as f64).sqrt().ceil() as usize;
+        let mut segments: Vec<[[f64; 2]; 2]> = Vec::new();
+        for k in 0..parts {
+            let (cx, cy) = ((k % side) as f64 * 2.2, (k / side) as f64 * 2.2);
+            for ring in [star_ring(outer, cx, cy, 0.8, 1.0, &mut rng), star_ring(hole, cx, cy, 0.2, 0.35, &mut rng)] {
+                let ring: Vec<[f64; 2]> = ring.iter().map(|p| p.map(|v| (v * 32768.0).round() / 32768.0)).collect();
+                segments.extend((0..ring.len()).map(|i| [ring[i], ring[(i + 1) % ring.len()]]));
+            }
+        }
+        segments
+    };
+    let mut segments = sheet(36, 120, 30);
+    // a straight vertex, one an ulp off straight, and a point on an edge
+    let [a, b] = segments[5];
+    let middle = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+    segments.splice(5..6, [[a, middle], [middle, b]]);
+    let [a, b] = segments[200];
+    let middle = [0.5 * (a[0] + b[0]), f64::from_bits((0.5 * (a[1] + b[1])).to_bits() + 1)];
+    segments.splice(200..201, [[a, middle], [middle, b]]);
+    let [a, b] = segments[400];
+    let on_edge = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+    let o = 2f64.powi(30);
+    let far: Vec<[[f64; 2]; 2]> = segments.iter().map(|s| s.map(|p| [o - p[0], -o - p[1]])).collect();
+    let mut shuffled: Vec<[[f64; 2]; 2]> = segments.iter().map(|&[a, b]| [b, a]).rev().collect();
+    let mut rng = SplitMix64(6);
+    for i in (1..shuffled.len()).rev() {
+        shuffled.swap(i, (rng.unit() * (i + 1) as f64) as usize % (i + 1));
+    }
+    set_halves_from(Some(64));
+    let mut with_point = Builder::new();
+    with_point.add_segments(segments.iter().copied()).unwrap();
+    with_point.add_point(on_edge).unwrap();
+    let (one, two) = (with_point.threads(1).build().unwrap(), with_point.threads(2).build().unwrap());
+    assert!(fingerprint(&one) == fingerprint(&two), "sheet with a point on an edge: another diagram on two threads");
+    for (how, segments) in [("as made", segments), ("mirrored 2^30 out", far), ("reversed and shuffled", shuffled)] {
+        let mut b = Builder::new();
+        b.add_segments(segments).unwrap();
+        let one = b.threads(1).build().unwrap_or_else(|e| panic!("sheet {how}: {e}"));
+        let two = b.threads(2).build().unwrap_or_else(|e| panic!("sheet {how} in halves: {e}"));
+        let report = take_halves_report();
+        assert!(report.is_some_and(|r| r.skyline && r.glued && r.attempts == 1), "sheet {how}: not glued at once: {report:?}");
+        assert!(fingerprint(&one) == fingerprint(&two), "sheet {how}: another diagram in halves");
+    }
+    set_halves_from(None);
+    let mut b = Builder::new();
+    b.add_segments(sheet(200, 400, 100)).unwrap();
+    let one = b.threads(1).build().unwrap();
+    let two = b.threads(2).build().unwrap();
+    let report = take_halves_report();
+    assert!(report.is_some_and(|r| r.skyline && r.glued && r.attempts == 1), "the headline's sheet: {report:?}");
+    assert!(fingerprint(&one) == fingerprint(&two), "the headline's sheet: another diagram in halves");
+}

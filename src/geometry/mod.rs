@@ -29,12 +29,14 @@ mod arithmetic;
 pub(crate) mod curves;
 pub(crate) mod fault;
 pub(crate) mod input;
+pub(crate) mod left_out;
 pub mod point;
 pub mod predicates;
 pub(crate) mod scale;
 pub(crate) mod seam;
 pub(crate) mod segments;
 pub mod site;
+pub(crate) mod skyline;
 pub mod solvers;
 
 pub use arc::CircularArc;

@@ -341,6 +341,13 @@ impl Enclosure {
         Enclosure { support, slack: self.slack.max(other.slack) }
     }
 
+    /// The set's bounding box (the sides along the axes): its lower-left
+    /// and upper-right corners.
+    pub(crate) fn bounding_box(&self) -> (Point, Point) {
+        let s = &self.support;
+        (Point::new(-s[SIDES / 2], -s[3 * SIDES / 4]), Point::new(s[0], s[SIDES / 4]))
+    }
+
     /// The area of the set's bounding box (the sides along the axes).
     pub(crate) fn box_area(&self) -> f64 {
         let s = &self.support;
@@ -382,7 +389,7 @@ impl Enclosure {
     /// points: those deep inside are answered by a box.
     pub(crate) fn near_sides(&self, band: f64) -> NearSides<'_> {
         let s = &self.support;
-        let (lo, hi) = (Point::new(-s[SIDES / 2], -s[3 * SIDES / 4]), Point::new(s[0], s[SIDES / 4]));
+        let (lo, hi) = self.bounding_box();
         // (inside every side moved in by the band, by twice the slack; the
         // slack far above the rounding of a value along a side: see `InnerBox`)
         let short_of_every_side = |c: Point| (0..SIDES).all(|k| along(c, k) <= (s[k] - band - self.slack) - self.slack);

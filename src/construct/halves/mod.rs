@@ -44,7 +44,9 @@ use super::restart::{insert_all_from, Outcome};
 use super::state::{infinite_rotation, Construction, INFINITE};
 use super::threads::run_beside;
 use crate::diagram::{SiteId, VertexId, NONE};
+use crate::geometry::left_out::LeftOut;
 use crate::geometry::seam::{edge_to_infinity_clears, vertex_stays_short_of, Enclosure, Extremes};
+use crate::geometry::skyline::Skyline;
 use crate::geometry::Point;
 
 /// From this many sites on (points and segments), a build with a spare
@@ -130,6 +132,9 @@ pub struct HalvesReport {
     /// Per half (left, right): whether it was built in halves in turn, and
     /// glued (with threads to spare: four or more in all).
     pub nested: [bool; 2],
+    /// Whether both halves held the input's skyline and a shallow rim
+    /// instead of a deep rim (a lumpy boundary: a sheet of parts, a coast).
+    pub skyline: bool,
     /// Wall time of the plan (the cut, the sites both halves hold), of the
     /// halves' builds (with the input check beside them), and of the glue.
     pub times: [std::time::Duration; 3],
@@ -196,6 +201,7 @@ fn insert_all_in_halves_with(
     // (halves would not pay: the check is left to the caller, which runs
     // it beside the point insertions)
     let plan = plan?;
+    report(|r| r.skyline = plan.skyline);
     let started = std::time::Instant::now();
     let (tx, rx) = std::sync::mpsc::channel::<Option<std::sync::Arc<Vec<[usize; 2]>>>>();
     let shared_plan = &plan;
@@ -331,8 +337,11 @@ struct Plan {
     /// may be a vertex of the hull (so that the edges to infinity of both
     /// halves are the whole diagram's) and every point within `rim` of the
     /// input's `enclosure` (cells along the hull reach along it, far across
-    /// the cut: their huge circles are checked against the enclosure).
+    /// the cut: their huge circles are checked against the enclosure);
+    /// along a lumpy boundary also every point near its skyline.
     both: Vec<bool>,
+    /// Both hold the skyline (`Plan::along_a_lumpy_boundary`).
+    skyline: bool,
     /// What each half leaves out at the first band (`Outside::at`), per
     /// [`Side`] (left, right).
     outside: [Option<Outside>; 2],
@@ -385,15 +394,82 @@ impl Plan {
             run_beside(|| held(high), || held(low));
         both.extend_from_slice(&both_high);
         // Both halves hold these: too many, and halves would not pay.
-        let too_many = hull_low + hull_high > points.len() / 64 || count_low + count_high > points.len() / 16;
-        if too_many && !forced() {
-            return None;
+        if hull_low + hull_high > points.len() / 64 || count_low + count_high > points.len() / 16 {
+            // (a rim as deep as the boundary's dips: its skyline instead)
+            let hull = |p: Point| octagon.may_hold_on_its_boundary(p);
+            return Plan::along_a_lumpy_boundary(points, (cut, band, spacing), enclosure, hull);
         }
         let beyond = [0, 1].map(|k| beyond_low[k].merge(beyond_high[k]));
         let outside = Outside::from_extremes(points, &both, cut, band, beyond);
         let inside = enclosure.inside(rim);
-        Some(Plan { cut, band, rim, enclosure, inside, both, outside })
+        Some(Plan { cut, band, rim, enclosure, inside, both, outside, skyline: false })
     }
+}
+
+/// The rim of a lumpy boundary, in mean spacings: the skyline (`Plan::along_a_lumpy_boundary`)
+/// follows the bumps, so a shallow rim is enough.
+const LUMPY_RIM: f64 = 1.0;
+
+/// The skyline's buckets, in mean spacings.
+const SKYLINE_BUCKET: f64 = 2.0;
+
+/// The share of the points that both halves may hold along a lumpy
+/// boundary (a deep rim may hold a sixteenth).
+const LUMPY_SHARE: f64 = 1.0 / 8.0;
+
+impl Plan {
+    /// The plan where a rim of even depth would hold too many points: the
+    /// boundary is lumpy (a sheet of parts, a coast), and the circles of
+    /// the cells along the hull dip between its bumps. Both halves then
+    /// hold a shallow rim and every point near the skyline (within the
+    /// rim's depth of the outermost point of its column or row of the
+    /// bounding box: `Skyline`); the disks the seam's tests cannot clear
+    /// are asked of the sites left out themselves (`Half::band_needed`).
+    /// `None` where that would still hold too many, or where the cut runs
+    /// through an empty stretch wider than twice the band (an ocean, a
+    /// hole: the cells across it reach further than the band, and the
+    /// first attempt would be wasted).
+    fn along_a_lumpy_boundary(
+        points: &[Point],
+        (cut, band, spacing): (f64, f64, f64),
+        enclosure: Enclosure,
+        hull: impl Fn(Point) -> bool + Sync,
+    ) -> Option<Plan> {
+        if !forced() && 0.5 * widest_gap_along_the_cut(points, cut, band) > band {
+            return None;
+        }
+        let rim = LUMPY_RIM * spacing;
+        let (lo, hi) = enclosure.bounding_box();
+        let (low, high) = points.split_at(points.len() / 2);
+        let skyline_of = |part: &[Point]| {
+            let mut skyline = Skyline::empty(lo, hi, SKYLINE_BUCKET * spacing);
+            skyline.add(part);
+            skyline
+        };
+        let (skyline_high, skyline_low) = run_beside(|| skyline_of(high), || skyline_of(low));
+        let skyline = skyline_low.merge(&skyline_high);
+        let near_rim = enclosure.near_sides(rim);
+        let held = |part: &[Point]| -> Vec<bool> {
+            part.iter().map(|&p| hull(p) || near_rim.holds(p) || skyline.near(p, rim)).collect()
+        };
+        let (both_high, mut both) = run_beside(|| held(high), || held(low));
+        both.extend_from_slice(&both_high);
+        let count = both.iter().filter(|&&b| b).count();
+        if count as f64 > LUMPY_SHARE * points.len() as f64 && !forced() {
+            return None;
+        }
+        let outside = Outside::at(points, &both, cut, band);
+        let inside = enclosure.inside(rim);
+        Some(Plan { cut, band, rim, enclosure, inside, both, outside, skyline: true })
+    }
+}
+
+/// The longest stretch of the cut `x = cut` with no point within `band`
+/// of it (between two such points; 0 for fewer than two).
+fn widest_gap_along_the_cut(points: &[Point], cut: f64, band: f64) -> f64 {
+    let mut ys: Vec<f64> = points.iter().filter(|p| (p.x - cut).abs() <= band).map(|p| p.y).collect();
+    ys.sort_unstable_by(f64::total_cmp);
+    ys.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max)
 }
 
 /// Which half: the left one owns the points with x below the cut and the
@@ -683,7 +759,7 @@ impl Half<'_> {
             return None;
         }
         let owned = self.owned_sites(&construction);
-        let needed_band = self.outside.and_then(|outside| self.band_needed(&construction, &owned, outside));
+        let needed_band = self.outside.and_then(|outside| self.band_needed(&construction, &owned, outside, points, segments));
         Some(BuiltHalf {
             side: self.side,
             construction,
@@ -715,8 +791,22 @@ impl Half<'_> {
     /// can come nearer to any of its points); otherwise the band that the
     /// failing vertices would need (infinite when no band helps: an edge
     /// to infinity whose supporting line a site left out reaches).
-    fn band_needed(&self, c: &Construction, owned: &[bool], outside: &Outside) -> Option<f64> {
+    /// `points` and `segments` are the build's (those `finish` took).
+    fn band_needed(
+        &self,
+        c: &Construction,
+        owned: &[bool],
+        outside: &Outside,
+        points: &[Point],
+        segments: &[[usize; 2]],
+    ) -> Option<f64> {
         let t = self.side.toward_outside();
+        // (the sites left out, asked of the disks that the quick tests
+        // below cannot clear; gathered at the first such disk)
+        let mut left_out: Option<LeftOut> = None;
+        let mut left_out_holds = |position: Point, clearance: f64| {
+            left_out.get_or_insert_with(|| self.left_out(points, segments)).disk_may_hold_one(position, clearance)
+        };
         let owned = |s: SiteId| owned[s.index()];
         let store = c.store();
         let mut needed: Option<f64> = None;
@@ -735,7 +825,8 @@ impl Half<'_> {
                 }
                 None => (!vertex_stays_short_of(position, clearance, outside.line, t)
                     && !self.plan.enclosure.vertex_beyond_a_side(position, clearance, self.plan.rim)
-                    && !self.plan.enclosure.vertex_misses(self.plan.inside.as_deref(), position, clearance))
+                    && !self.plan.enclosure.vertex_misses(self.plan.inside.as_deref(), position, clearance)
+                    && left_out_holds(position, clearance))
                 .then(|| (position.x - self.plan.cut) * t + clearance),
             };
             if let Some(want) = want {
@@ -743,6 +834,20 @@ impl Half<'_> {
             }
         }
         needed
+    }
+}
+
+impl Half<'_> {
+    /// The sites of the build (its `points`, and its `segments` by their
+    /// ends) that this half does not hold.
+    fn left_out(&self, points: &[Point], segments: &[[usize; 2]]) -> LeftOut {
+        let mut held = vec![false; points.len()];
+        self.points.iter().for_each(|&i| held[i as usize] = true);
+        let mut sites: Vec<[Point; 2]> = (0..points.len()).filter(|&i| !held[i]).map(|i| [points[i]; 2]).collect();
+        let mut held = vec![false; segments.len()];
+        self.segments.iter().for_each(|&k| held[k as usize] = true);
+        sites.extend((0..segments.len()).filter(|&k| !held[k]).map(|k| segments[k].map(|i| points[i])));
+        LeftOut::new(sites)
     }
 }
 
