@@ -31,9 +31,16 @@ pub(crate) struct LeftOut {
     /// at the end.
     starts: Vec<u32>,
     sites: Vec<[Point; 2]>,
+    /// The segments whose bounding box meets more than [`LONG_SPAN`]
+    /// cells, asked of every disk instead (a segment across the grid
+    /// would fill every cell's list).
+    long: Vec<[Point; 2]>,
     /// A margin above the rounding of a coordinate of any site.
     slack: f64,
 }
+
+/// The most cells a segment is listed in.
+const LONG_SPAN: usize = 16;
 
 impl LeftOut {
     /// The grid of `sites` (a point as `[p, p]`), with about two per cell.
@@ -52,8 +59,16 @@ impl LeftOut {
         }
         let slack = MARGIN * size;
         let (width, height) = (hi.x - lo.x, hi.y - lo.y);
-        let mut grid =
-            LeftOut { origin: lo, cell: f64::INFINITY, columns: 1, rows: 1, starts: vec![0, 0], sites: Vec::new(), slack };
+        let mut grid = LeftOut {
+            origin: lo,
+            cell: f64::INFINITY,
+            columns: 1,
+            rows: 1,
+            starts: vec![0, 0],
+            sites: Vec::new(),
+            long: Vec::new(),
+            slack,
+        };
         if sites.is_empty() {
             return grid;
         }
@@ -73,6 +88,10 @@ impl LeftOut {
             grid.rows = ((height / side) as usize + 1).min(2048);
         }
         let spans: Vec<[usize; 4]> = sites.iter().map(|s| grid.cells_under(s)).collect();
+        let listed = |&[c0, c1, r0, r1]: &[usize; 4]| (c1 - c0 + 1) * (r1 - r0 + 1) <= LONG_SPAN;
+        grid.long = sites.iter().zip(&spans).filter(|(_, span)| !listed(span)).map(|(s, _)| *s).collect();
+        let (sites, spans): (Vec<[Point; 2]>, Vec<[usize; 4]>) =
+            sites.into_iter().zip(spans).filter(|(_, span)| listed(span)).unzip();
         let mut counts = vec![0u32; grid.columns * grid.rows + 1];
         for &[c0, c1, r0, r1] in &spans {
             for r in r0..=r1 {
@@ -114,7 +133,7 @@ impl LeftOut {
     /// left-out site (a point of it nearer `centre` than `radius`, or not
     /// clearly farther).
     pub(crate) fn disk_may_hold_one(&self, centre: Point, radius: f64) -> bool {
-        if self.sites.is_empty() {
+        if self.sites.is_empty() && self.long.is_empty() {
             return false;
         }
         let finite = centre.x.is_finite() && centre.y.is_finite() && radius.is_finite() && radius >= 0.0;
@@ -123,6 +142,9 @@ impl LeftOut {
         }
         let size = centre.x.abs() + centre.y.abs();
         let reach = radius + self.slack + MARGIN * (size + radius.min(1.0)) + 1e-12 * radius;
+        if self.long.iter().any(|s| distance_to(centre, s) < reach) {
+            return true;
+        }
         // (the cells the disk's box meets; none where it misses the grid)
         let (x0, x1) = (centre.x - reach - self.origin.x, centre.x + reach - self.origin.x);
         let (y0, y1) = (centre.y - reach - self.origin.y, centre.y + reach - self.origin.y);
@@ -215,6 +237,10 @@ mod tests {
         cases.push(vec![[Point::new(0.5, 0.5); 2]; 20]);
         cases.push((0..100).map(|k| [Point::new(k as f64, 2.0), Point::new(k as f64 + 0.5, 2.0)]).collect());
         cases.push(Vec::new());
+        // (long segments across the grid among short ones)
+        let mut crossing = random_sites(&mut rng, 500, 0.01, Point::new(0.0, 0.0), 1.0);
+        crossing.extend((0..40).map(|k| [Point::new(0.0, k as f64 / 40.0), Point::new(1.0, 1.0 - k as f64 / 40.0)]));
+        cases.push(crossing);
         for sites in &cases {
             let grid = LeftOut::new(sites.clone());
             let (lo, hi) = sites

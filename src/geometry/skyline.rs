@@ -34,7 +34,7 @@ impl Skyline {
         let count = |extent: f64| {
             let n = extent / bucket;
             if n.is_finite() && n >= 0.0 {
-                (n as usize + 1).min(MOST_BUCKETS)
+                (n.min(MOST_BUCKETS as f64) as usize).saturating_add(1).min(MOST_BUCKETS)
             } else {
                 1
             }
@@ -139,5 +139,10 @@ mod tests {
         assert_eq!(wide.columns.len(), 1);
         let fine = Skyline::empty(Point::new(0.0, 0.0), Point::new(1e9, 1.0), 1.0);
         assert_eq!(fine.columns.len(), MOST_BUCKETS);
+        // (more buckets than a usize counts)
+        let mut tiny = Skyline::empty(Point::new(0.0, 0.0), Point::new(1.0, 1.0), 1e-300);
+        tiny.add(&[Point::new(1.0, 0.5), Point::new(0.25, 1.0)]);
+        assert_eq!((tiny.columns.len(), tiny.rows.len()), (MOST_BUCKETS, MOST_BUCKETS));
+        assert!(tiny.near(Point::new(1.0, 0.5), 0.0) && tiny.near(Point::new(0.25, 1.0), 0.0));
     }
 }
