@@ -14,10 +14,8 @@
 //! vertex and of the distances: `true` is always allowed (the build then
 //! takes a wider halo or one thread), `false` must never be wrong.
 
-use crate::geometry::Point;
-
-/// The relative margin (as `seam`'s).
-const MARGIN: f64 = 1e-7;
+use crate::geometry::seam::MARGIN;
+use crate::geometry::{Point, Site};
 
 /// Left-out sites per cell of a grid: each point as a segment of length
 /// zero, each segment in every cell its bounding box meets.
@@ -177,15 +175,11 @@ impl LeftOut {
     }
 }
 
-/// The distance from `p` to the segment `s` (a point where its ends are
-/// equal), in floating point.
-fn distance_to(p: Point, s: &[Point; 2]) -> f64 {
-    let [a, b] = *s;
-    let (dx, dy) = (b.x - a.x, b.y - a.y);
-    let length2 = dx * dx + dy * dy;
-    let t = if length2 > 0.0 { (((p.x - a.x) * dx + (p.y - a.y) * dy) / length2).clamp(0.0, 1.0) } else { 0.0 };
-    let (qx, qy) = (a.x + t * dx, a.y + t * dy);
-    (qx - p.x).hypot(qy - p.y)
+/// The distance from `p` to `site` (a segment, or a point where its ends
+/// are equal): [`Site::distance`].
+fn distance_to(p: Point, &[a, b]: &[Point; 2]) -> f64 {
+    let site = if a == b { Site::Point(a) } else { Site::Segment { a, b } };
+    site.distance(p)
 }
 
 #[cfg(test)]

@@ -24,8 +24,8 @@
 use crate::geometry::point::bounding_box;
 use crate::geometry::{Point, Site};
 
-/// The relative margin of both questions.
-const MARGIN: f64 = 1e-7;
+/// The relative margin of both questions (and of `left_out`'s).
+pub(crate) const MARGIN: f64 = 1e-7;
 
 /// Whether the disk of a finite vertex (centre `position`, radius
 /// `clearance`) stays strictly short of the vertical line `x = line`, on

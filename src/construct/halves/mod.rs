@@ -835,9 +835,7 @@ impl Half<'_> {
         }
         needed
     }
-}
 
-impl Half<'_> {
     /// The sites of the build (its `points`, and its `segments` by their
     /// ends) that this half does not hold.
     fn left_out(&self, points: &[Point], segments: &[[usize; 2]]) -> LeftOut {
