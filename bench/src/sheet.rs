@@ -1,12 +1,12 @@
 //! The polygon input of the medial-axis, offsets and headline benchmarks:
-//! a sheet of star-shaped parts with a hole each (testgen's `star_ring`,
+//! a sheet of star-shaped parts with a hole each (testgen's `star_sheet`,
 //! random radii, so no two corners are cocircular by construction), 400
 //! corners outside (radii 0.8..1) and 100 around the hole (radii
 //! 0.2..0.35), 2.2 apart on a square grid, disjoint. The wall between hole
 //! and outer ring is 0.45 to 0.8 wide, so the inscribed radius is at most
 //! 0.4.
 
-use segvoronoi_testgen::{shapes::star_ring, Rng};
+use segvoronoi_testgen::shapes::star_sheet;
 
 /// Corners of a part's outer ring.
 pub const OUTER: usize = 400;
@@ -17,19 +17,9 @@ pub const HOLE: usize = 100;
 /// as Clipper wants holes).
 pub type Polygon = [Vec<[f64; 2]>; 2];
 
-/// `polygons` parts on a square grid.
+/// `polygons` parts on a square grid (testgen's `star_sheet`).
 pub fn polygons(polygons: usize, seed: u64) -> Vec<Polygon> {
-    let mut rng = Rng(seed);
-    let side = (polygons as f64).sqrt().ceil() as usize;
-    (0..polygons)
-        .map(|k| {
-            let (cx, cy) = ((k % side) as f64 * 2.2, (k / side) as f64 * 2.2);
-            let outer = star_ring(OUTER, cx, cy, 0.8, 1.0, &mut rng);
-            let mut hole = star_ring(HOLE, cx, cy, 0.2, 0.35, &mut rng);
-            hole.reverse();
-            [outer, hole]
-        })
-        .collect()
+    star_sheet(polygons, OUTER, HOLE, seed)
 }
 
 /// The parts for about `segments` segments in all (rounded up to whole

@@ -79,3 +79,22 @@ pub fn star_ring(n: usize, cx: f64, cy: f64, r0: f64, r1: f64, rng: &mut Rng) ->
         })
         .collect()
 }
+
+/// A sheet of `parts` star-shaped parts with a hole each, on a square grid
+/// 2.2 apart: per part its outer ring of `outer` corners (radii 0.8..1,
+/// counter-clockwise) and its hole of `hole` corners (radii 0.2..0.35,
+/// clockwise), both from [`star_ring`]. Disjoint; the benchmarks' polygons
+/// (`bench/src/sheet.rs`), and a lumpy boundary for the parallel build.
+pub fn star_sheet(parts: usize, outer: usize, hole: usize, seed: u64) -> Vec<[Vec<Point>; 2]> {
+    let mut rng = Rng(seed);
+    let side = (parts as f64).sqrt().ceil() as usize;
+    (0..parts)
+        .map(|k| {
+            let (cx, cy) = ((k % side) as f64 * 2.2, (k / side) as f64 * 2.2);
+            let outer = star_ring(outer, cx, cy, 0.8, 1.0, &mut rng);
+            let mut hole = star_ring(hole, cx, cy, 0.2, 0.35, &mut rng);
+            hole.reverse();
+            [outer, hole]
+        })
+        .collect()
+}
