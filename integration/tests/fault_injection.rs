@@ -419,8 +419,8 @@ fn split_crossings_under_lying_arithmetic() {
 /// Builds in halves on two threads (`diagnostics::set_halves_from`, from
 /// 64 sites on), and on four (each half in halves in turn), under lying
 /// arithmetic (on the calling thread: the fault mode is per thread, so
-/// the left half or the left quarter and the check lie, the others do
-/// not): a valid diagram or `Internal`, never an invalid one. Points, a
+/// the right half or the right quarter and the glue lie, the others and
+/// the check do not): a valid diagram or `Internal`, never an invalid one. Points, a
 /// lattice and segments, each with noise and with random numbers.
 #[test]
 fn builds_in_halves_with_lying_arithmetic() {

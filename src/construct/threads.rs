@@ -53,13 +53,14 @@ pub(crate) fn spare() -> usize {
 
 /// Runs `beside` on a second thread while `here` runs on this one, and
 /// returns both results. With no thread left in the build's budget, or
-/// when none can be had (resource limits), both run here, one after the
-/// other. A panic in `beside` is passed on.
+/// when none can be had (resource limits), both run here, `beside` first
+/// (so `here` may wait for what `beside` sends it). A panic in `beside`
+/// is passed on.
 pub(crate) fn run_beside<A: Send, B>(beside: impl FnOnce() -> A + Send, here: impl FnOnce() -> B) -> (A, B) {
     let spare = spare();
     if spare == 0 {
-        let b = here();
-        return (beside(), b);
+        let a = beside();
+        return (a, here());
     }
     // Whichever side gets to it runs the task: the thread (which starts
     // no other), or this one if the thread could not start.
@@ -70,8 +71,11 @@ pub(crate) fn run_beside<A: Send, B>(beside: impl FnOnce() -> A + Send, here: im
     let helper_spare = (spare - 1) / 2;
     std::thread::scope(|scope| {
         let handle = std::thread::Builder::new().spawn_scoped(scope, || with_spare(helper_spare, take_and_run)).ok();
+        // (no thread: the task first, as without a budget)
+        let first = if handle.is_none() { take_and_run() } else { None };
         let b = with_spare(if handle.is_some() { spare - 1 - helper_spare } else { spare }, here);
-        let a = handle.and_then(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).or_else(take_and_run);
+        let joined = || handle.and_then(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)));
+        let a = first.or_else(joined).or_else(take_and_run);
         (a.expect("the task ran on one of the two threads"), b)
     })
 }
@@ -89,6 +93,15 @@ mod tests {
         let here = std::thread::current().id();
         let ((a, x), (b, y)) = with_threads(1, || run_beside(|| thread_of(|| 1), || thread_of(|| 2)));
         assert_eq!((a, b, x, y), (here, here, 1, 2));
+    }
+
+    /// Without a thread, `beside` runs first: `here` may wait for what it
+    /// sends (the build in halves does).
+    #[test]
+    fn one_thread_runs_beside_first() {
+        let (tx, rx) = std::sync::mpsc::channel();
+        let ((), received) = with_threads(1, || run_beside(move || tx.send(7).unwrap(), || rx.try_recv().ok()));
+        assert_eq!(received, Some(7));
     }
 
     #[test]

@@ -3,11 +3,12 @@
 //! Site ids of the glued construction: the point at infinity, the points
 //! the left half owns (in its order), those the right half owns, then the
 //! left half's segments and the right half's. Vertices: the glued store is
-//! the left diagram's, grown. Every vertex of the left diagram with a site
-//! the left half owns keeps its id; every vertex of the right diagram
-//! without one is appended; the left diagram's other vertices (its halo's
-//! alone) are dropped, their slots filled from the end. An edge between a
-//! kept vertex and a dropped one leads across the cut: it is relinked to
+//! the left diagram's with the right's appended whole (its ids moved by the
+//! left's count, a copy with no look-up). Every vertex of the left diagram
+//! with a site the left half owns is kept, and every vertex of the right
+//! diagram without one; the others (each half's halo's alone, a few in a
+//! hundred) are dropped, their slots filled from the end. An edge between
+//! a kept vertex and a dropped one leads across the cut: it is relinked to
 //! the other half's edge between the same two cells, the other way round
 //! (from the vertex that half keeps).
 //!
@@ -23,8 +24,8 @@
 //! the halves are not glued.
 //!
 //! Each step that is linear in the diagram runs on both threads at once,
-//! one per half; what is sequential (the pairing across the cut, the
-//! dropped slots) is linear in the cut's length.
+//! one per half; what is sequential is linear in the cut's length (the
+//! pairing across it) or in the halos' vertices (the dropped slots).
 
 use super::super::restart::Outcome;
 use super::super::state::{Construction, INFINITE};
@@ -86,16 +87,19 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
         }
     }
 
-    // The left store grown by the right's kept vertices: their sites,
-    // positions and clearances appended as they are, on both threads (each
-    // array written once), the twins made room for; then the twins written
-    // by halves, one per thread; then the few edges from the left across.
+    // The left store grown by the right's whole store, its dropped
+    // vertices too (a few in a hundred: its halo's), on both threads (each
+    // array written once): sites, positions and clearances as they are,
+    // twins moved past the left's `n1` vertices. Then the edges across the
+    // cut relinked both ways; the dropped vertices' slots are filled last.
+    // (every edge across the cut listed: never otherwise with sound halves)
+    if left.edges_to_dropped() != crossings || right.edges_to_dropped() != crossings {
+        return None;
+    }
     let n1 = left.store.vertex_count();
-    let total = n1 + right.kept_count;
+    let total = n1 + right.store.vertex_count();
+    let offset = u32::try_from(3 * n1).ok().filter(|_| 3 * total < NONE as usize)?;
     let Store { right: cells, twin, position, clearance, .. } = &mut left.store;
-    // (by runs of kept vertices, each copied whole: the right half drops
-    // only its halo's vertices, a few in a hundred)
-    let runs = &right.kept_runs;
     // (each array grown exactly, should the room the left half made fall
     // short: they are hundreds of megabytes on large inputs, and doubled
     // they would take as much again)
@@ -105,27 +109,24 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
     }
     run_beside(
         || {
-            let position = grown(position, total);
-            runs.iter().for_each(|run| position.extend_from_slice(&right.store.position[run.clone()]));
-            let clearance = grown(clearance, total);
-            runs.iter().for_each(|run| clearance.extend_from_slice(&right.store.clearance[run.clone()]));
+            grown(position, total).extend_from_slice(&right.store.position);
+            grown(clearance, total).extend_from_slice(&right.store.clearance);
         },
         || {
-            let cells = grown(cells, 3 * total);
-            runs.iter().for_each(|run| cells.extend_from_slice(&right.store.right[3 * run.start..3 * run.end]));
-            grown(twin, 3 * total).resize(3 * total, HalfEdgeId(NONE));
+            grown(cells, 3 * total).extend_from_slice(&right.store.right);
+            // (a half-edge's twin within the right half: the same, moved)
+            let moved = right.store.twin.iter().map(|t| HalfEdgeId(t.0.wrapping_add(offset)));
+            grown(twin, 3 * total).extend(moved);
         },
     );
-    let middle = right.store.vertex_count() / 2;
-    let split = right.keep[..middle].iter().filter(|&&k| k).count();
-    let (twin_a, twin_b) = twin[3 * n1..].split_at_mut(3 * split);
-    let (from_b, from_a) = run_beside(
-        || right.fill_twins(middle..right.store.vertex_count(), split, n1, &left.crossing, twin_b),
-        || right.fill_twins(0..middle, 0, n1, &left.crossing, twin_a),
-    );
-    let mut from_right = from_a?;
-    from_right.extend_from_slice(&from_b?);
-    let from_left = relink_left(&left.crossing, &mut left.store.twin, &right, n1);
+    let mut from_right = Vec::with_capacity(crossings);
+    let mut from_left = Vec::with_capacity(crossings);
+    for (&[a, b], &h) in &left.crossing {
+        let t = right.appended(*right.crossing.get(&[b, a])?, n1);
+        left.store.link(h, t);
+        from_left.push(h);
+        from_right.push(t);
+    }
 
     // Cells: each site's edge from the half that owns it, both at once.
     let mut cell_edge = vec![NONE; ranges.count];
@@ -167,19 +168,21 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
     let (right_cells, left_cells) = run_beside(cells_of_right, cells_of_left);
     right_cells?;
     left_cells?;
-    let n1_kept_any = |h: HalfEdgeId| h.origin().index() >= n1 || left.keep[h.origin().index()];
+    // (what the glued store keeps: the left's kept vertices, then the right's)
+    let mut keep = left.keep;
+    keep.extend_from_slice(&right.keep);
     cell_edge[INFINITE.index()] = (0..left.store.twin.len())
         .map(HalfEdgeId::from_index)
-        .find(|&h| n1_kept_any(h) && left.store.left(h) == INFINITE)
+        .find(|&h| keep[h.origin().index()] && left.store.left(h) == INFINITE)
         .map_or(NONE, |h| h.0);
     let mut store = left.store;
     store.cell_edge = cell_edge;
 
     // Every edge relinked across the cut leads back (those within a half
-    // are the half's own, renumbered one to one). (The right's store is
-    // freed meanwhile on the other thread: 50 MB at 1M points.)
-    let keep = &left.keep;
-    let kept = |v: usize| v >= n1 || keep[v];
+    // are the half's own, moved one to one). (The right's store is freed
+    // meanwhile on the other thread: 50 MB at 1M points.)
+    let kept = |v: usize| keep[v];
+    let keep = &keep;
     let ((), glued) = run_beside(
         move || drop(right),
         || {
@@ -363,12 +366,6 @@ struct Renamed {
     map: Vec<u32>,
     /// Per vertex: kept (left: has an owned site; right: has none of the left's).
     keep: Vec<bool>,
-    kept_count: usize,
-    /// Right: the new id of each kept vertex, from 0 (offset by the left
-    /// store's length when appended).
-    rank: Vec<u32>,
-    /// Right: its kept vertices, as runs of consecutive ids.
-    kept_runs: Vec<std::ops::Range<usize>>,
     /// Left: its kept vertices with a site of the right (the cut's).
     across: Vec<u32>,
     /// The edges across the cut: each half-edge from a kept vertex to a
@@ -418,41 +415,32 @@ impl Renamed {
         // (what the side keeps: `lefts` itself on the left, negated in place on the right)
         let mut across = Vec::new();
         let mut keep = lefts;
-        let mut rank = Vec::with_capacity(if side == Side::Right { count } else { 0 });
-        let mut kept_count = 0;
         for (v, (kept, &has_right)) in keep.iter_mut().zip(&rights).enumerate() {
             if has_right && *kept {
                 across.push(v as u32);
             }
             if side == Side::Right {
                 *kept = !*kept;
-                rank.push(if *kept { kept_count as u32 } else { NONE });
             }
-            kept_count += usize::from(*kept);
         }
         let crossing = crossing_edges(&store, &keep, &across, side);
-        let mut kept_runs = Vec::new();
         if side == Side::Right {
             across = Vec::new();
-            kept_runs = runs_of(&keep);
         }
-        Renamed { store, map, keep, kept_count, rank, kept_runs, across, crossing }
+        Renamed { store, map, keep, across, crossing }
     }
 
-    /// Right: the glued id of its half-edge `h` (whose origin it keeps).
+    /// Right: the glued id of its half-edge `h` (its store appended after
+    /// the left's `n1` vertices).
     fn appended(&self, h: HalfEdgeId, n1: usize) -> HalfEdgeId {
-        VertexId(n1 as u32 + self.rank[h.origin().index()]).half_edge(h.slot())
+        VertexId::from_index(n1 + h.origin().index()).half_edge(h.slot())
     }
 
-    /// Right: the glued twin of its half-edge `h` from a kept vertex: its
-    /// own twin appended, or across the cut the left's half-edge between
-    /// the same cells the other way (`left_crossing`).
-    fn twin_glued(&self, h: HalfEdgeId, n1: usize, left_crossing: &HashMap<[SiteId; 2], HalfEdgeId>) -> Option<HalfEdgeId> {
-        let t = self.store.twin(h);
-        if self.keep[t.origin().index()] {
-            return Some(self.appended(t, n1));
-        }
-        left_crossing.get(&[self.store.left(h), self.store.right(h)]).copied().filter(|g| g.0 != NONE)
+    /// How many half-edges lead from a vertex it keeps to one it drops.
+    fn edges_to_dropped(&self) -> usize {
+        let dropped = self.keep.iter().enumerate().filter(|(_, &k)| !k);
+        let into = |(v, _): (usize, &bool)| (0..3).map(move |k| VertexId::from_index(v).half_edge(k));
+        dropped.flat_map(into).filter(|&h| self.keep[self.store.twin(h).origin().index()]).count()
     }
 
     /// Right: the glued edge of its site `site`'s cell, from its half-edge
@@ -474,45 +462,6 @@ impl Renamed {
         let on_the_cut = left.across.iter().flat_map(|&v| (0..3).map(move |k| VertexId(v).half_edge(k)));
         on_the_cut.into_iter().find(|&g| left.store.left(g) == site)
     }
-
-    /// Right: writes the twins of its kept vertices among `vertices` into
-    /// their part of the glued store's appended twins (which starts at the
-    /// kept vertex of rank `first_rank`). Returns the half-edges it linked
-    /// to the left's vertices.
-    fn fill_twins(
-        &self,
-        vertices: std::ops::Range<usize>,
-        first_rank: usize,
-        n1: usize,
-        left_crossing: &HashMap<[SiteId; 2], HalfEdgeId>,
-        twin: &mut [HalfEdgeId],
-    ) -> Option<Vec<HalfEdgeId>> {
-        let mut across = Vec::new();
-        for v in vertices.filter(|&v| self.keep[v]) {
-            let at = self.rank[v] as usize - first_rank;
-            let from = VertexId::from_index(v);
-            for k in 0..3 {
-                let h = from.half_edge(k);
-                twin[3 * at + k as usize] = self.twin_glued(h, n1, left_crossing)?;
-                if !self.keep[self.store.twin(h).origin().index()] {
-                    across.push(VertexId::from_index(n1 + first_rank + at).half_edge(k));
-                }
-            }
-        }
-        Some(across)
-    }
-}
-
-/// The runs of consecutive `true`s in `flags`, in order.
-fn runs_of(flags: &[bool]) -> Vec<std::ops::Range<usize>> {
-    let mut runs = Vec::new();
-    let mut at = 0;
-    while let Some(start) = flags[at..].iter().position(|&f| f).map(|k| at + k) {
-        let end = flags[start..].iter().position(|&f| !f).map_or(flags.len(), |k| start + k);
-        runs.push(start..end);
-        at = end;
-    }
-    runs
 }
 
 /// Whether finite vertices `v` and `w` are at one place: their positions
@@ -553,38 +502,23 @@ fn crossing_edges(store: &Store, keep: &[bool], candidates: &[u32], side: Side) 
     crossing
 }
 
-/// Left: relinks its edges across the cut (`crossing`, checked to pair
-/// up with the right's) to the right's half-edges between the same cells
-/// the other way, appended after its `n1` vertices. Returns them.
-fn relink_left(
-    crossing: &HashMap<[SiteId; 2], HalfEdgeId>,
-    twin: &mut [HalfEdgeId],
-    right: &Renamed,
-    n1: usize,
-) -> Vec<HalfEdgeId> {
-    let mut relinked = Vec::with_capacity(crossing.len());
-    for (&[a, b], &h) in crossing {
-        if let Some(&t) = right.crossing.get(&[b, a]) {
-            twin[h.index()] = right.appended(t, n1);
-            relinked.push(h);
-        }
-    }
-    relinked
-}
-
-/// Removes the left diagram's vertices not kept (`keep`, per vertex below
+/// Removes the glued store's vertices not kept (`keep`, per vertex below
 /// its length; those after it are all kept), filling each slot with the
 /// last kept vertex and relinking its edges and cells.
 fn drop_vertices(store: &mut Store, keep: &[bool]) {
     let is_hole = |v: usize| v < keep.len() && !keep[v];
     let mut count = store.vertex_count();
     // Holes in increasing order, each filled with the last vertex kept:
-    // that one always lies beyond every hole filled so far.
+    // that one always lies beyond every hole filled so far. (The holes at
+    // the end are passed over, down to the one being filled: those below
+    // it are filled already.)
     for hole in (0..keep.len()).filter(|&v| !keep[v]) {
-        while count > 0 && is_hole(count - 1) {
+        while count > hole + 1 && is_hole(count - 1) {
             count -= 1;
         }
-        if hole >= count {
+        if hole + 1 >= count {
+            // (this hole is the last slot or beyond it, and so is every other)
+            count = count.min(hole);
             break;
         }
         move_vertex(store, VertexId::from_index(count - 1), VertexId::from_index(hole));
@@ -620,30 +554,6 @@ fn move_vertex(store: &mut Store, from: VertexId, to: VertexId) {
 mod tests {
     use super::*;
 
-    /// The runs cover exactly the `true` flags, in order, each maximal.
-    #[test]
-    fn runs_are_the_true_flags_in_order() {
-        let mut rng = crate::splitmix::SplitMix64(3);
-        let patterns: Vec<Vec<bool>> = vec![
-            vec![],
-            vec![false; 5],
-            vec![true; 5],
-            vec![true, false, true],
-            vec![false, true, true, false, false, true],
-            (0..2000).map(|_| rng.unit() < 0.97).collect(),
-            (0..2000).map(|_| rng.unit() < 0.3).collect(),
-        ];
-        for flags in patterns {
-            let runs = runs_of(&flags);
-            let listed: Vec<usize> = runs.iter().flat_map(|r| r.clone()).collect();
-            let plain: Vec<usize> = (0..flags.len()).filter(|&v| flags[v]).collect();
-            assert_eq!(listed, plain);
-            // (maximal: no two runs touch, and each is non-empty)
-            assert!(runs.iter().all(|r| r.start < r.end));
-            assert!(runs.windows(2).all(|w| w[0].end < w[1].start));
-        }
-    }
-
     /// `Ranges::owned` without branches answers as the plain comparisons.
     #[test]
     fn owned_ids_are_those_of_the_plain_comparisons() {
@@ -661,6 +571,68 @@ mod tests {
                     assert_eq!(r.owned(s, side), plain(&r, s, side), "{s:?} {side:?} in {lp} {rp} {ls} {rs}");
                 }
             }
+        }
+    }
+
+    /// Dropping vertices keeps exactly the kept ones, with their edges,
+    /// sites and cells, wherever the holes are (at the start, between,
+    /// at the end, all of them, none).
+    #[test]
+    fn dropped_vertices_leave_the_kept_ones_linked_as_they_were() {
+        let mut rng = crate::splitmix::SplitMix64(11);
+        let mut patterns: Vec<Vec<bool>> = vec![
+            vec![false, false, true, true],
+            vec![true, true, false, false],
+            vec![false, true, false, true, false, false],
+            vec![false; 6],
+            vec![true; 6],
+        ];
+        for share in [0.03, 0.5, 0.97] {
+            patterns.extend((0..20).map(|k| (0..4 + 30 * k).map(|_| rng.unit() > share).collect()));
+        }
+        for mut keep in patterns {
+            // (an even count of kept half-edges, paired among themselves)
+            if keep.iter().filter(|&&k| k).count() % 2 == 1 {
+                keep.push(true);
+            }
+            let n = keep.len();
+            let mut store = Store::new(3 * n, SiteId(0), n);
+            store.right = (0..3 * n as u32).map(SiteId).collect();
+            store.position = (0..n).map(|v| Point::new(v as f64, 0.0)).collect();
+            store.clearance = (0..n).map(|v| v as f64).collect();
+            store.twin = vec![HalfEdgeId(NONE); 3 * n];
+            for part in [true, false] {
+                let mut ends: Vec<usize> = (0..3 * n).filter(|&h| keep[h / 3] == part).collect();
+                // (shuffled, then paired in order: twins from anywhere)
+                for i in (1..ends.len()).rev() {
+                    ends.swap(i, (rng.next_u64() % (i as u64 + 1)) as usize);
+                }
+                for pair in ends.chunks_exact(2) {
+                    store.link(HalfEdgeId::from_index(pair[0]), HalfEdgeId::from_index(pair[1]));
+                }
+            }
+            for h in (0..3 * n).filter(|&h| keep[h / 3]).map(HalfEdgeId::from_index) {
+                let cell = store.left(h).index();
+                store.cell_edge[cell] = h.0;
+            }
+            let before = store.clone();
+            drop_vertices(&mut store, &keep);
+
+            // Each vertex left is a kept one (its position says which), once.
+            let kept: Vec<usize> = (0..n).filter(|&v| keep[v]).collect();
+            let mut old_of: Vec<usize> = store.position.iter().map(|p| p.x as usize).collect();
+            assert_eq!(store.vertex_count(), kept.len(), "{keep:?}");
+            assert_eq!(store.twin.len(), 3 * kept.len());
+            assert_eq!(store.right.len(), 3 * kept.len());
+            assert_eq!(store.clearance, old_of.iter().map(|&v| v as f64).collect::<Vec<_>>());
+            let old = |h: HalfEdgeId| VertexId::from_index(old_of[h.origin().index()]).half_edge(h.slot());
+            for h in (0..store.twin.len()).map(HalfEdgeId::from_index) {
+                assert_eq!(store.right(h), before.right(old(h)));
+                assert_eq!(old(store.twin(h)), before.twin(old(h)), "{keep:?}");
+                assert_eq!(store.cell_edge[store.left(h).index()], h.0);
+            }
+            old_of.sort_unstable();
+            assert_eq!(old_of, kept);
         }
     }
 }
