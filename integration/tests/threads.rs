@@ -348,6 +348,43 @@ fn lattices_glue_from_halves() {
     set_halves_from(None);
 }
 
+/// Points and short segments a million wide, as made, mirrored 2^30 out,
+/// and 7.8 km wide at a UTM zone's northing (five million: each input
+/// scaled by 2^-7, exactly): the plan takes all three unforced, the halves
+/// glue at once and give the one-thread diagram. The plan's hull test
+/// once took its margin from the coordinates' magnitude, not their spread:
+/// 2^30 out it counted every point as a possible vertex of the hull, and
+/// the build ran on one thread.
+#[test]
+fn inputs_far_from_the_origin_build_in_halves_unforced() {
+    use segvoronoi::diagnostics::take_halves_report;
+    let o = 2f64.powi(30);
+    let placements: [(&str, &dyn Fn([f64; 2]) -> [f64; 2]); 3] = [
+        ("as made", &|p| p),
+        ("mirrored 2^30 out", &|p| [o - p[0], p[1] - o]),
+        ("at a UTM northing", &|p| [500_000.0 + p[0] / 128.0, 5_000_000.0 + p[1] / 128.0]),
+    ];
+    let points = float_points(80_000, 13);
+    let segments: Vec<[[f64; 2]; 2]> = generate(Method::Short, 70_000, 17)
+        .segments
+        .iter()
+        .map(|s| [[f64::from(s[0]), f64::from(s[1])], [f64::from(s[2]), f64::from(s[3])]])
+        .collect();
+    for (how, place) in placements {
+        let mut with_points = Builder::new();
+        with_points.add_points(points.iter().map(|&p| place(p))).unwrap();
+        let mut with_segments = Builder::new();
+        with_segments.add_segments(segments.iter().map(|s| s.map(place))).unwrap();
+        for (what, b) in [("80k points", &mut with_points), ("70k short segments", &mut with_segments)] {
+            let one = b.threads(1).build().unwrap_or_else(|e| panic!("{what} {how}: {e}"));
+            let two = b.threads(2).build().unwrap_or_else(|e| panic!("{what} {how} in halves: {e}"));
+            let report = take_halves_report();
+            assert!(report.is_some_and(|r| r.glued && r.attempts == 1), "{what} {how}: not glued at once: {report:?}");
+            assert!(fingerprint(&one) == fingerprint(&two), "{what} {how}: another diagram in halves");
+        }
+    }
+}
+
 /// Short segments on a grid whose last row is partial, as the benchmarks
 /// lay out any count that is not a square: the cells along the top near
 /// the step have huge circles that reach over the step, deeper into the
@@ -448,8 +485,11 @@ fn crossing_segments_split_glue_from_halves_at_once() {
 /// straight (180-degree) vertex, a point exactly on a segment and two
 /// squares touching at a corner, 2^30 from the origin. Large enough for
 /// the contact search in slabs (and slabs of slabs at four threads) and
-/// the routing in halves: the pieces, their counts and the diagram of one
-/// thread.
+/// the routing in halves (the plan takes it unforced; 2^30 out it once
+/// refused every input, see `inputs_far_from_the_origin_build_in_halves_unforced`):
+/// the pieces, their counts and the diagram of one thread (the canonical
+/// text, and every vertex at the same place bit for bit: the squares'
+/// centres are degenerate vertices, which the halves may cut otherwise).
 #[test]
 fn real_coasts_tiled_split_the_same_at_every_thread_count() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/gshhg_coast_borders_c_europe.txt");
@@ -493,8 +533,10 @@ fn real_coasts_tiled_split_the_same_at_every_thread_count() {
     assert!(one.stats().touchings > 0, "the point on a segment was not met");
     for n in [2, 4] {
         let other = b.threads(n).build().unwrap_or_else(|e| panic!("tiled coasts at {n} threads: {e}"));
+        let report = segvoronoi::diagnostics::take_halves_report();
+        assert!(report.is_some_and(|r| r.glued), "tiled coasts at {n} threads: not glued from halves: {report:?}");
         assert_eq!(split(&one), split(&other), "tiled coasts at {n} threads");
-        assert!(fingerprint(&one) == fingerprint(&other), "tiled coasts: another diagram at {n} threads");
+        assert!(fingerprint_of_places(&one) == fingerprint_of_places(&other), "tiled coasts: another diagram at {n} threads");
     }
 }
 

@@ -55,7 +55,6 @@ pub(crate) fn edge_to_infinity_clears(direction: Point, sites: &[Point], outside
 #[derive(Clone, Copy)]
 pub(crate) struct Extremes {
     best: [(f64, Point); 8],
-    size: f64,
 }
 
 /// The eight directions of [`Extremes`], counter-clockwise.
@@ -64,7 +63,7 @@ const EIGHT: [(f64, f64); 8] =
 
 impl Extremes {
     /// The extremes of no point (`add` them one by one).
-    pub(crate) const NONE: Extremes = Extremes { best: [(f64::NEG_INFINITY, Point::new(f64::NAN, f64::NAN)); 8], size: 0.0 };
+    pub(crate) const NONE: Extremes = Extremes { best: [(f64::NEG_INFINITY, Point::new(f64::NAN, f64::NAN)); 8] };
 
     /// The extremes of `points`: those [`add`](Self::add) gives, one by
     /// one, found faster by blocks: each point's values along the
@@ -74,17 +73,15 @@ impl Extremes {
     pub(crate) fn of(points: &[Point]) -> Extremes {
         let mut extremes = Extremes::NONE;
         for block in points.chunks(64) {
-            let (mut top, mut largest) = ([f64::NEG_INFINITY; 8], 0.0);
+            let mut top = [f64::NEG_INFINITY; 8];
             for p in block {
                 for (t, &(dx, dy)) in top.iter_mut().zip(&EIGHT) {
                     let v = p.x * dx + p.y * dy;
                     *t = if v > *t { v } else { *t };
                 }
-                let l1 = p.x.abs() + p.y.abs();
-                largest = if l1 > largest { l1 } else { largest };
             }
-            // (a NaN point is in neither, and no extreme, as in `add`)
-            if top.iter().zip(&extremes.best).any(|(t, b)| *t > b.0) || largest > extremes.size {
+            // (a NaN point is no extreme, as in `add`)
+            if top.iter().zip(&extremes.best).any(|(t, b)| *t > b.0) {
                 block.iter().for_each(|&p| extremes.add(p));
             }
         }
@@ -94,8 +91,6 @@ impl Extremes {
     /// The extremes of the set with `p` added.
     #[inline]
     pub(crate) fn add(&mut self, p: Point) {
-        let l1 = p.x.abs() + p.y.abs();
-        self.size = if l1 > self.size { l1 } else { self.size };
         for (best, &(dx, dy)) in self.best.iter_mut().zip(&EIGHT) {
             let v = p.x * dx + p.y * dy;
             if v > best.0 {
@@ -112,7 +107,7 @@ impl Extremes {
                 *b = o;
             }
         }
-        Extremes { best, size: self.size.max(other.size) }
+        Extremes { best }
     }
 
     /// The least and the greatest x of the set (`∞` and `-∞` when empty).
@@ -151,12 +146,33 @@ impl Extremes {
                 }
             }
         }
-        Polygon::through(best.iter().map(|b| b.1), MARGIN * self.size * self.size)
+        Polygon::through(best.iter().map(|b| b.1), self.edge_margin())
     }
 
     /// The octagon of the extremes, its edges worked out once.
     pub(crate) fn octagon(&self) -> Polygon {
-        Polygon::through(self.best.iter().map(|b| b.1), MARGIN * self.size * self.size)
+        Polygon::through(self.best.iter().map(|b| b.1), self.edge_margin())
+    }
+
+    /// The margin of a [`Polygon`]'s edges through points of the set,
+    /// asked of points of the set: `MARGIN` of the square of its spread
+    /// (its bounding box's width and height together). An edge's value at
+    /// a point is a cross product of differences of coordinates of the
+    /// set, each rounded to half an ulp of itself (not of the coordinates:
+    /// a difference is exact or rounded relative to its result), so its
+    /// rounding is a few ulps of the spread squared, whatever the
+    /// coordinates' magnitude: points a million wide 2^30 out are asked
+    /// at the margin of the same points at the origin. At least [`TINY`]
+    /// (far above the absolute rounding of subnormal products), and
+    /// infinite for an empty set.
+    fn edge_margin(&self) -> f64 {
+        let (least_x, greatest_x) = self.x_range();
+        let spread = (greatest_x - least_x) + (self.best[2].0 + self.best[6].0);
+        if spread.is_finite() {
+            (MARGIN * spread * spread).max(TINY)
+        } else {
+            f64::INFINITY
+        }
     }
 }
 
@@ -228,8 +244,8 @@ const TINY: f64 = 1e-280;
 /// side or an edge, against a threshold), so a box passes one when its four
 /// corners do: its points are averages of them. The corners are asked with
 /// twice the test's margin, and the margins (`MARGIN` of the set's size,
-/// or its square for a polygon's edges) are far above the rounding of the
-/// values (a few ulps of the size), so a point strictly inside the box
+/// or of its spread squared for a polygon's edges) are far above the
+/// rounding of the values (a few ulps of those), so a point strictly inside the box
 /// passes the test as computed, not only exactly.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct InnerBox {
@@ -656,7 +672,7 @@ mod tests {
             let mut a = Extremes::NONE;
             points.iter().for_each(|&p| a.add(p));
             let b = Extremes::of(&points);
-            let bits = |e: &Extremes| (e.size.to_bits(), e.best.map(|(v, p)| [v.to_bits(), p.x.to_bits(), p.y.to_bits()]));
+            let bits = |e: &Extremes| e.best.map(|(v, p)| [v.to_bits(), p.x.to_bits(), p.y.to_bits()]);
             assert_eq!(bits(&a), bits(&b));
         }
     }
@@ -736,6 +752,31 @@ mod tests {
         let coarse = points.iter().filter(|&&p| octagon.may_hold_on_its_boundary(p)).count();
         let kept = extremes.hull_candidates(points.iter().copied());
         assert!(kept.len() * 2 < coarse, "{} of {coarse}", kept.len());
+        for k in 0..720 {
+            let a = f64::from(k) * std::f64::consts::TAU / 720.0;
+            let along = |p: &Point| p.x * a.cos() + p.y * a.sin();
+            let all = points.iter().map(along).fold(f64::NEG_INFINITY, f64::max);
+            let some = kept.iter().map(along).fold(f64::NEG_INFINITY, f64::max);
+            assert_eq!(all, some, "direction {k}");
+        }
+    }
+
+    /// The margin of the hull's polygons follows the points' spread, not
+    /// their magnitude: integer points a million wide keep the same
+    /// candidates 2^30 out as at the origin (the differences, and so the
+    /// edges' values, are exact in both), a few hundred of 20,000, every
+    /// vertex of the hull among them. It once followed the magnitude, and
+    /// 2^30 out kept every point.
+    #[test]
+    fn hull_candidates_far_out_are_those_at_the_origin() {
+        let mut rng = crate::splitmix::SplitMix64(29);
+        let points: Vec<Point> =
+            (0..20_000).map(|_| Point::new((rng.unit() * 1e6).floor(), (rng.unit() * 1e6).floor())).collect();
+        let far = far_out(&points);
+        let kept = Extremes::of(&points).hull_candidates(points.iter().copied());
+        let kept_far = Extremes::of(&far).hull_candidates(far.iter().copied());
+        assert!(kept.len() < 1000, "{} kept", kept.len());
+        assert_eq!(far_out(&kept), kept_far);
         for k in 0..720 {
             let a = f64::from(k) * std::f64::consts::TAU / 720.0;
             let along = |p: &Point| p.x * a.cos() + p.y * a.sin();
