@@ -349,20 +349,27 @@ fn lattices_glue_from_halves() {
 }
 
 /// Points and short segments a million wide, as made, mirrored 2^30 out,
-/// and 7.8 km wide at a UTM zone's northing (five million: each input
-/// scaled by 2^-7, exactly): the plan takes all three unforced, the halves
+/// 7.8 km wide at a UTM zone's northing (five million: each input scaled
+/// by 2^-7, exactly) and 2^30 out (a spread of 7e-6 of the magnitude), and
+/// 15 m wide at the northing: the plan takes them all unforced, the halves
 /// glue at once and give the one-thread diagram. The plan's hull test
-/// once took its margin from the coordinates' magnitude, not their spread:
-/// 2^30 out it counted every point as a possible vertex of the hull, and
-/// the build ran on one thread.
+/// once took its margin from the coordinates' magnitude, not their spread
+/// (2^30 out it counted every point as a possible vertex of the hull, and
+/// the build ran on one thread), and the seam's margins were 1e-7 of the
+/// magnitude (the halves of the 7.8 km 2^30 out failed their checks, and
+/// were built for nothing). Points a millimetre apart 2^30 out (a spacing
+/// of 1e-12 of the magnitude, below the margins): the plan refuses them
+/// before building halves, and one thread builds them.
 #[test]
 fn inputs_far_from_the_origin_build_in_halves_unforced() {
     use segvoronoi::diagnostics::take_halves_report;
     let o = 2f64.powi(30);
-    let placements: [(&str, &dyn Fn([f64; 2]) -> [f64; 2]); 3] = [
+    let placements: [(&str, &dyn Fn([f64; 2]) -> [f64; 2]); 5] = [
         ("as made", &|p| p),
         ("mirrored 2^30 out", &|p| [o - p[0], p[1] - o]),
         ("at a UTM northing", &|p| [500_000.0 + p[0] / 128.0, 5_000_000.0 + p[1] / 128.0]),
+        ("7.8 km wide 2^30 out", &|p| [o + p[0] / 128.0, p[1] / 128.0 - o]),
+        ("15 m wide at a UTM northing", &|p| [500_000.0 + p[0] / 65536.0, 5_000_000.0 + p[1] / 65536.0]),
     ];
     let points = float_points(80_000, 13);
     let segments: Vec<[[f64; 2]; 2]> = generate(Method::Short, 70_000, 17)
@@ -383,6 +390,13 @@ fn inputs_far_from_the_origin_build_in_halves_unforced() {
             assert!(fingerprint(&one) == fingerprint(&two), "{what} {how}: another diagram in halves");
         }
     }
+    let mut dense = Builder::new();
+    dense.add_points(points.iter().map(|p| [o + p[0] / 1_048_576.0, p[1] / 1_048_576.0 - o])).unwrap();
+    let one = dense.threads(1).build().unwrap();
+    let two = dense.threads(2).build().unwrap();
+    let report = take_halves_report();
+    assert!(report.is_some_and(|r| r.attempts == 0), "points a millimetre apart 2^30 out: halves tried: {report:?}");
+    assert!(fingerprint(&one) == fingerprint(&two), "points a millimetre apart 2^30 out: another diagram");
 }
 
 /// Short segments on a grid whose last row is partial, as the benchmarks
@@ -433,8 +447,11 @@ fn grids_with_a_step_glue_from_halves() {
 /// have pieces reaching further across the cut than the first band:
 /// their cells are the left half's and reach as far, and the band now
 /// does too. With a straight vertex, two squares touching at a corner and
-/// a point exactly on a segment among them, as made and mirrored 2^30
-/// out, they glue at once, and give the one-thread diagram.
+/// a point exactly on a segment among them, as made and mirrored 2^20
+/// out, they glue at once, and give the one-thread diagram. (A unit-wide
+/// input 2^30 out has a spacing below the seam's margins, which follow
+/// the magnitude: the plan refuses it unless forced; see
+/// `inputs_far_from_the_origin_build_in_halves_unforced`.)
 #[test]
 fn crossing_segments_split_glue_from_halves_at_once() {
     use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
@@ -461,10 +478,10 @@ fn crossing_segments_split_glue_from_halves_at_once() {
         };
         segments.extend(square(0.3, 0.2).into_iter().chain(square(0.4, 0.3)));
         let on_a_segment = [0.25, 0.5];
-        // as made, and mirrored 2^30 out
-        let o = 2f64.powi(30);
+        // as made, and mirrored 2^20 out
+        let o = 2f64.powi(20);
         let far: Vec<[[f64; 2]; 2]> = segments.iter().map(|s| s.map(|p| [o - p[0], -o - p[1]])).collect();
-        for (how, segments, point) in [("as made", segments, on_a_segment), ("mirrored 2^30 out", far, [o - 0.25, -o - 0.5])] {
+        for (how, segments, point) in [("as made", segments, on_a_segment), ("mirrored 2^20 out", far, [o - 0.25, -o - 0.5])] {
             let mut b = Builder::new();
             b.split_crossings(true).add_segments(segments).unwrap();
             b.add_points([point]).unwrap();

@@ -369,6 +369,13 @@ impl Plan {
         if !(spacing.is_finite() && spacing > 0.0) {
             return None;
         }
+        // (the seam's margins, of the coordinates' magnitude, wider than
+        // the points' spacing: its checks would fail along the whole cut,
+        // after both halves were built; a width a billionth of the
+        // distance from the origin, 2^30 out)
+        if enclosure.slack() > spacing && !forced() {
+            return None;
+        }
         // (the rim deeper where the input thins out toward its boundary)
         let stride = points.len().div_ceil(RIM_SAMPLE).max(1);
         let sample: Vec<Point> = points.iter().step_by(stride).copied().collect();
