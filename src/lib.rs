@@ -90,7 +90,7 @@ pub mod fault_injection {
 /// makes small builds run so, for tests). Rust only; not part of the C
 /// API.
 pub mod diagnostics {
-    pub use crate::construct::{set_halves_from, take_halves_report, HalvesReport};
+    pub use crate::construct::{set_halves_from, set_halves_left_share, take_halves_report, HalvesReport};
     pub use crate::geometry::segments::oracle::{take_predicate_counts, PredicateCounts};
 }
 

@@ -679,7 +679,8 @@ fn negative_zero_builds_as_positive_zero() {
 /// vertices, which a half may cut otherwise). With a point exactly on an
 /// edge too, the one-thread diagram (such a build does not run in
 /// halves). At the headline's size (200 parts, 100k
-/// segments) the plan takes the sheet without being forced.
+/// segments) the plan takes the sheet without being forced, and glues it
+/// at once wherever the cut falls (shares of 0.40 to 0.60).
 #[test]
 fn a_sheet_of_parts_glues_from_halves_at_once() {
     use segvoronoi::diagnostics::{set_halves_from, take_halves_report};
@@ -739,5 +740,18 @@ fn a_sheet_of_parts_glues_from_halves_at_once() {
     let two = b.threads(2).build().unwrap();
     let report = take_halves_report();
     assert!(report.is_some_and(|r| r.skyline && r.glued && r.attempts == 1), "the headline's sheet: {report:?}");
-    assert!(fingerprint(&one) == fingerprint(&two), "the headline's sheet: another diagram in halves");
+    let one = fingerprint(&one);
+    assert!(one == fingerprint(&two), "the headline's sheet: another diagram in halves");
+    // Wherever the cut falls: beside a column of parts or a gap between
+    // two, the band reaches as far as the empty disks between the parts.
+    // (A band of spacings took a second attempt at five of these shares,
+    // and two threads took longer than one.)
+    for share in [0.40, 0.42, 0.48, 0.54, 0.56, 0.60] {
+        segvoronoi::diagnostics::set_halves_left_share(Some(share));
+        let two = b.threads(2).build().unwrap();
+        let report = take_halves_report();
+        assert!(report.is_some_and(|r| r.glued && r.attempts == 1), "the headline's sheet cut at {share}: {report:?}");
+        assert!(one == fingerprint(&two), "the headline's sheet cut at {share}: another diagram in halves");
+    }
+    segvoronoi::diagnostics::set_halves_left_share(None);
 }

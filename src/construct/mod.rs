@@ -45,7 +45,7 @@ mod threads;
 mod with_arcs;
 
 pub use builder::{Builder, MAX_POINTS};
-pub use halves::{set_halves_from, take_halves_report, HalvesReport};
+pub use halves::{set_halves_from, set_halves_left_share, take_halves_report, HalvesReport};
 pub use polygon_input::ChainPiece;
 #[cfg(feature = "fault-injection")]
 pub use restart::set_restart_budget;

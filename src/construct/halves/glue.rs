@@ -93,7 +93,7 @@ pub(super) fn glue(left: BuiltHalf, right: BuiltHalf, points: usize, segments: u
     // twins moved past the left's `n1` vertices. Then the edges across the
     // cut relinked both ways; the dropped vertices' slots are filled last.
     // (every edge across the cut listed: never otherwise with sound halves)
-    if left.edges_to_dropped() != crossings || right.edges_to_dropped() != crossings {
+    if left.edges_to_dropped != crossings || right.edges_to_dropped != crossings {
         return None;
     }
     let n1 = left.store.vertex_count();
@@ -372,6 +372,9 @@ struct Renamed {
     /// dropped one, by its cells (on its right, on its left); `NONE` where
     /// two have the same cells (then the halves are not glued).
     crossing: HashMap<[SiteId; 2], HalfEdgeId>,
+    /// How many half-edges lead from a vertex it keeps to one it drops
+    /// (counted here, on the half's own thread: a scan of the store).
+    edges_to_dropped: usize,
 }
 
 impl Renamed {
@@ -427,20 +430,14 @@ impl Renamed {
         if side == Side::Right {
             across = Vec::new();
         }
-        Renamed { store, map, keep, across, crossing }
+        let edges_to_dropped = edges_to_dropped(&store, &keep);
+        Renamed { store, map, keep, across, crossing, edges_to_dropped }
     }
 
     /// Right: the glued id of its half-edge `h` (its store appended after
     /// the left's `n1` vertices).
     fn appended(&self, h: HalfEdgeId, n1: usize) -> HalfEdgeId {
         VertexId::from_index(n1 + h.origin().index()).half_edge(h.slot())
-    }
-
-    /// How many half-edges lead from a vertex it keeps to one it drops.
-    fn edges_to_dropped(&self) -> usize {
-        let dropped = self.keep.iter().enumerate().filter(|(_, &k)| !k);
-        let into = |(v, _): (usize, &bool)| (0..3).map(move |k| VertexId::from_index(v).half_edge(k));
-        dropped.flat_map(into).filter(|&h| self.keep[self.store.twin(h).origin().index()]).count()
     }
 
     /// Right: the glued edge of its site `site`'s cell, from its half-edge
@@ -462,6 +459,14 @@ impl Renamed {
         let on_the_cut = left.across.iter().flat_map(|&v| (0..3).map(move |k| VertexId(v).half_edge(k)));
         on_the_cut.into_iter().find(|&g| left.store.left(g) == site)
     }
+}
+
+/// How many half-edges of `store` lead from a vertex it keeps to one it
+/// drops (counted from the dropped vertices' side: the twins of theirs).
+fn edges_to_dropped(store: &Store, keep: &[bool]) -> usize {
+    let dropped = keep.iter().enumerate().filter(|(_, &k)| !k);
+    let into = |(v, _): (usize, &bool)| (0..3).map(move |k| VertexId::from_index(v).half_edge(k));
+    dropped.flat_map(into).filter(|&h| keep[store.twin(h).origin().index()]).count()
 }
 
 /// Whether finite vertices `v` and `w` are at one place: their positions

@@ -38,6 +38,7 @@
 //! where its own halves fail, it is built on its thread.
 
 mod glue;
+mod neighbours;
 
 use super::insert_point::{insert_points, PointStage};
 use super::restart::{insert_all_from, Outcome};
@@ -98,6 +99,7 @@ pub(super) fn worth_it(sites: usize) -> bool {
 
 thread_local! {
     static HALVES_FROM_HERE: std::cell::Cell<Option<usize>> = const { std::cell::Cell::new(None) };
+    static LEFT_SHARE_HERE: std::cell::Cell<Option<f64>> = const { std::cell::Cell::new(None) };
     static LAST_REPORT: std::cell::Cell<Option<HalvesReport>> = const { std::cell::Cell::new(None) };
 }
 
@@ -107,6 +109,14 @@ thread_local! {
 /// inputs, and benchmarks.
 pub fn set_halves_from(sites: Option<usize>) {
     HALVES_FROM_HERE.with(|h| h.set(sites));
+}
+
+/// Builds on this thread cut their halves with this share of the points
+/// on the left (clamped to 0.05..0.95); `None` restores the default
+/// (0.45 where the left half also checks the input, else 0.5). For tests
+/// and studies of where the cut falls.
+pub fn set_halves_left_share(share: Option<f64>) {
+    LEFT_SHARE_HERE.with(|h| h.set(share));
 }
 
 /// How the last build on this thread that tried halves went (taken: the
@@ -179,7 +189,8 @@ pub(super) fn insert_all_in_halves_after(
     check: impl FnOnce() -> Option<Vec<[usize; 2]>> + Send,
 ) -> Option<Built> {
     // The left half also runs the check, so it takes fewer sites.
-    let left_share = if raw.is_empty() || light { 0.5 } else { LEFT_SHARE_BESIDE_THE_CHECK };
+    let default = if raw.is_empty() || light { 0.5 } else { LEFT_SHARE_BESIDE_THE_CHECK };
+    let left_share = LEFT_SHARE_HERE.with(|h| h.get()).map_or(default, |share| share.clamp(0.05, 0.95));
     insert_all_in_halves_with(points, raw, check, left_share)
 }
 
@@ -413,7 +424,7 @@ impl Plan {
         if hull_low + hull_high > points.len() / 64 || count_low + count_high > points.len() / 16 {
             // (a rim as deep as the boundary's dips: its skyline instead)
             let hull = |p: Point| octagon.may_hold_on_its_boundary(p);
-            return Plan::along_a_lumpy_boundary(points, (cut, band, spacing), enclosure, hull);
+            return Plan::along_a_lumpy_boundary((points, segments), (cut, band, spacing), enclosure, hull);
         }
         let beyond = [0, 1].map(|k| beyond_low[k].merge(beyond_high[k]));
         let outside = Outside::from_extremes(points, &both, cut, band, beyond);
@@ -441,21 +452,27 @@ impl Plan {
     /// rim's depth of the outermost point of its column or row of the
     /// bounding box: `Skyline`); the disks the seam's tests cannot clear
     /// are asked of the sites left out themselves (`Half::band_needed`).
-    /// `None` where that would still hold too many, or where the cut runs
-    /// through an empty stretch wider than twice the band (an ocean, a
-    /// hole: the cells across it reach further than the band, and the
-    /// first attempt would be wasted).
+    /// The band reaches as far across the cut as the neighbours of the
+    /// sites beside it lie (`neighbours`: across a gap between parts, a
+    /// band of spacings fell short and the first attempt was wasted). `None` where
+    /// that would still hold too many, or the band would be wider than
+    /// [`WIDEST_FIRST_BAND`] (the cut runs through an ocean, a hole).
     fn along_a_lumpy_boundary(
-        points: &[Point],
+        (points, segments): (&[Point], &[[usize; 2]]),
         (cut, band, spacing): (f64, f64, f64),
         enclosure: Enclosure,
         hull: impl Fn(Point) -> bool + Sync,
     ) -> Option<Plan> {
-        if !forced() && 0.5 * widest_gap_along_the_cut(points, cut, band) > band {
-            return None;
-        }
-        let rim = LUMPY_RIM * spacing;
         let (lo, hi) = enclosure.bounding_box();
+        let widest = (hi.x - lo.x) * WIDEST_FIRST_BAND;
+        let wanted = band.max(neighbours::reach_across(points, segments, cut, (lo, hi), spacing, widest));
+        // (forced, too wide a band is left at its spacings: the checks decide)
+        let band = match wanted <= widest {
+            true => wanted,
+            false if forced() => band,
+            false => return None,
+        };
+        let rim = LUMPY_RIM * spacing;
         let (low, high) = points.split_at(points.len() / 2);
         let skyline_of = |part: &[Point]| {
             let mut skyline = Skyline::empty(lo, hi, SKYLINE_BUCKET * spacing);
@@ -478,14 +495,6 @@ impl Plan {
         let inside = enclosure.inside(rim);
         Some(Plan { cut, band, rim, enclosure, inside, both, outside, skyline: true })
     }
-}
-
-/// The longest stretch of the cut `x = cut` with no point within `band`
-/// of it (between two such points; 0 for fewer than two).
-fn widest_gap_along_the_cut(points: &[Point], cut: f64, band: f64) -> f64 {
-    let mut ys: Vec<f64> = points.iter().filter(|p| (p.x - cut).abs() <= band).map(|p| p.y).collect();
-    ys.sort_unstable_by(f64::total_cmp);
-    ys.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max)
 }
 
 /// Which half: the left one owns the points with x below the cut and the
