@@ -52,6 +52,10 @@
 #![deny(missing_docs)]
 // The `unsafe` of the C API is in its own crate (`capi/`).
 #![forbid(unsafe_code)]
+// `!(a < b)` is how this crate says "not less, or not comparable": a NaN
+// takes the negated branch on purpose (the refusals and fallbacks), which
+// `a >= b` would not, and `partial_cmp` would bury.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 #[doc(hidden)]
 pub mod boost_text;

@@ -852,7 +852,7 @@ impl Half<'_> {
                     && !self.plan.enclosure.vertex_beyond_a_side(position, clearance, self.plan.rim)
                     && !self.plan.enclosure.vertex_misses(self.plan.inside.as_deref(), position, clearance)
                     && left_out_holds(position, clearance))
-                .then(|| (position.x - self.plan.cut) * t + clearance),
+                .then_some((position.x - self.plan.cut) * t + clearance),
             };
             if let Some(want) = want {
                 needed = Some(needed.map_or(want, |w: f64| w.max(want)));

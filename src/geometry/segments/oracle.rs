@@ -270,8 +270,20 @@ pub(crate) fn misses_its_sites(sites: &[Site; 3], centre: Point, radius: f64) ->
     }
     // (an infinite size, from an infinite radius or centre, misses too)
     let size = radius.abs() + reach;
-    !(miss <= POLISH_TOLERANCE * size && size < f64::INFINITY)
+    // No polish does better than the centre's own rounding to `f64`, at
+    // its magnitude: far from the origin (2^30 out, sites a few units
+    // apart) that is far above `POLISH_TOLERANCE` of the size, and every
+    // vertex was polished to the same rounded centre again (at 3,000
+    // crossing segments split, 76,000 polishes for 45,000 vertices: 90
+    // times the build's time at the origin).
+    let rounding = CENTRE_ROUNDING * f64::EPSILON * (centre.x.abs() + centre.y.abs());
+    !(miss <= POLISH_TOLERANCE * size + rounding && size < f64::INFINITY)
 }
+
+/// The misses the rounding of a centre to `f64` alone may leave, in ulps
+/// of its coordinates' magnitude, summed over three sites (each at most
+/// about one, with the rounding of its distance).
+const CENTRE_ROUNDING: f64 = 8.0;
 
 /// The last Newton step, relative to the size, below which a polish has
 /// converged (well below what rounding to `f64` keeps).
