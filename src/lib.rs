@@ -91,8 +91,8 @@ pub mod fault_injection {
 /// the builds on this thread were decided (the `f64` filter, or one of the
 /// refinement stages of `geometry::segments::oracle`), and how a build ran
 /// in halves on two threads (`take_halves_report`; `set_halves_from`
-/// makes small builds run so, for tests). Rust only; not part of the C
-/// API.
+/// makes small builds run so, and `set_halves_left_share` moves the cut,
+/// for tests). Rust only; not part of the C API.
 pub mod diagnostics {
     pub use crate::construct::{set_halves_from, set_halves_left_share, take_halves_report, HalvesReport};
     pub use crate::geometry::segments::oracle::{take_predicate_counts, PredicateCounts};
