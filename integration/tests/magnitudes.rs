@@ -390,37 +390,65 @@ fn polyline_to_minus_max_crossing_a_triangle() {
 /// few units 2^30 out, that rounding is far above the polish's tolerance
 /// relative to the sites' size, and every vertex was polished again to
 /// the same rounded centre (3,000 crossing segments split: 76,000 polishes
-/// for 45,000 vertices, 7.3 s against 62 ms at the origin). The same
-/// segments (random, crossing, split) translated exactly 2^20 and 2^30
-/// out are polished about as often as at the origin, and give the same
-/// topology.
+/// for 45,000 vertices, 7.3 s against 62 ms at the origin). Random
+/// crossing segments, and GSHHG's coasts and borders of Europe (from
+/// Debian's gmt-gshhg, crossing too) with a straight (180-degree) vertex,
+/// a point exactly on a segment and two squares touching at a corner,
+/// all split, translated exactly 2^20 and 2^30 out: polished about as
+/// often as at the origin, with the same pieces and the same topology.
 #[test]
 fn segments_far_from_the_origin_are_polished_as_at_the_origin() {
     use segvoronoi::diagnostics::take_predicate_counts;
     let mut rng = Rng(31);
     // (coordinates on a grid of 2^-12 in a square of 16: exact 2^30 out)
     let mut at = || (rng.below(1 << 16) as f64) / 4096.0;
-    let segments: Vec<Segment> = (0..600)
+    let random: Vec<Segment> = (0..600)
         .map(|_| {
             let (x, y) = (at(), at());
             let (dx, dy) = (at() / 4.0 - 2.0, at() / 4.0 - 2.0);
             [[x, y], [x + dx, y + dy]]
         })
         .collect();
-    let mut counted = Vec::new();
-    for o in [0.0, 2f64.powi(20), 2f64.powi(30)] {
-        let moved: Vec<Segment> = segments.iter().map(|s| s.map(|p| [o + p[0], o - p[1]])).collect();
-        let mut b = Builder::new();
-        b.threads(1).split_crossings(true).add_segments(moved).unwrap();
-        let _ = take_predicate_counts();
-        let d = b.build().unwrap_or_else(|e| panic!("{o}: {e}"));
-        d.validate().unwrap_or_else(|e| panic!("{o}: {e:?}"));
-        counted.push((o, take_predicate_counts().polished_vertices, d.stats().pieces, d.vertex_count()));
+    // (the outline's coordinates are integers: exact 2^30 out)
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/gshhg_coast_borders_c_europe.txt");
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let parsed = segvoronoi::boost_text::parse(&text).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let mut europe: Vec<Segment> = parsed.segments.iter().map(|s| [[s[0], s[1]], [s[2], s[3]]]).collect();
+    let (x0, y0) = europe.iter().flatten().fold((f64::INFINITY, f64::INFINITY), |(x, y), p| (x.min(p[0]), y.min(p[1])));
+    let (px, py) = (x0, y0 - 20_000.0);
+    europe.extend([[[px, py], [px + 5_000.0, py]], [[px + 5_000.0, py], [px + 10_000.0, py]]]);
+    for (x, y) in [(px + 20_000.0, py), (px + 24_000.0, py + 4_000.0)] {
+        let c = [[x, y], [x + 4_000.0, y], [x + 4_000.0, y + 4_000.0], [x, y + 4_000.0]];
+        europe.extend((0..4).map(|k| [c[k], c[(k + 1) % 4]]));
     }
-    let (_, at_origin, pieces, vertices) = counted[0];
-    assert!(pieces > 1500, "too few crossings to test: {counted:?}");
-    for &(o, polished, p, v) in &counted[1..] {
-        assert!(polished <= at_origin + at_origin / 4 + 20, "{o} out: {polished} polishes, {at_origin} at the origin");
-        assert_eq!((p, v), (pieces, vertices), "{o} out: another split or diagram");
+    let canonical = TopologyOptions::default().with_canonical_cuts(true).with_voronoi_pairs(true);
+    for (what, segments, points, crossings) in
+        [("random segments", random, vec![], 400), ("Europe's outline", europe, vec![[px + 1_250.0, py]], 1)]
+    {
+        let mut counted = Vec::new();
+        for o in [0.0, 2f64.powi(20), 2f64.powi(30)] {
+            let moved = |p: [f64; 2]| [o + p[0], o - p[1]];
+            let mut b = Builder::new();
+            b.threads(1).split_crossings(true).add_segments(segments.iter().map(|s| s.map(moved))).unwrap();
+            b.add_points(points.iter().map(|&p| moved(p))).unwrap();
+            let _ = take_predicate_counts();
+            let d = b.build().unwrap_or_else(|e| panic!("{what} {o} out: {e}"));
+            d.validate().unwrap_or_else(|e| panic!("{what} {o} out: {e:?}"));
+            let stats = d.stats();
+            assert!(stats.crossings >= crossings, "{what}: too few crossings to test: {}", stats.crossings);
+            if !points.is_empty() {
+                assert!(stats.touchings > 0, "{what} {o} out: the point on a segment was not met");
+            }
+            counted.push((o, take_predicate_counts().polished_vertices, (stats.pieces, d.vertex_count()), d.topology(canonical)));
+        }
+        let (_, at_origin, sizes, topology) = &counted[0];
+        for (o, polished, other_sizes, other_topology) in &counted[1..] {
+            assert!(
+                *polished <= at_origin + at_origin / 4 + 20,
+                "{what} {o} out: {polished} polishes, {at_origin} at the origin"
+            );
+            assert_eq!(other_sizes, sizes, "{what} {o} out: another split or diagram");
+            assert!(other_topology == topology, "{what} {o} out: another topology");
+        }
     }
 }
